@@ -1,0 +1,27 @@
+// Camera matrices (conventions.md, "Space and camera"): right-handed world, +Y up,
+// OpenGL clip space, window depth in [0,1], pixel (i,j) centred at (i+0.5, j+0.5) with
+// row 0 at the top of the image.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scenes/scene.h"
+
+namespace shadowlab {
+
+glm::mat4 viewFromWorld(const Camera& camera);
+glm::mat4 clipFromView(const Camera& camera);
+glm::dmat4 clipFromWorldD(const Camera& camera);   // the same product in double precision
+
+inline glm::mat4 clipFromWorld(const Camera& camera) {
+    return glm::mat4(clipFromWorldD(camera));
+}
+
+// World-space ray through the centre of pixel (i, j), in double precision: origin at the
+// eye, direction not normalised.
+struct RayD {
+    glm::dvec3 origin, direction;
+};
+RayD pixelRay(const Camera& camera, int i, int j);
+
+}  // namespace shadowlab

@@ -1,0 +1,29 @@
+// The G-buffer (conventions.md, "Buffers written to disk"): what the camera sees through
+// each pixel centre. The rasterizer writes the visible triangle per pixel (a visibility
+// buffer); buildGBuffer() then intersects the pixel-centre ray with that triangle's plane
+// in double precision, so P is the exact surface point rather than an interpolation.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadowlab {
+
+inline constexpr uint32_t kNoTriangle = 0xffffffffu;
+
+struct GBuffer {
+    int width = 0, height = 0;
+    std::vector<uint8_t> hit;            // 1 where a surface covers the pixel centre
+    std::vector<glm::vec3> position;     // world space, 0 where hit = 0
+    std::vector<glm::vec3> normal;       // world-space geometric normal facing the camera
+    std::vector<uint32_t> material;      // index into Scene::materials
+    std::vector<uint32_t> triangle;      // index into WorldGeometry::triangles, or kNoTriangle
+    std::vector<float> depth;            // window depth as in the depth buffer (1 = background)
+
+    size_t pixelCount() const { return size_t(width) * size_t(height); }
+    size_t index(int i, int j) const { return size_t(j) * size_t(width) + size_t(i); }
+};
+
+}  // namespace shadowlab
