@@ -1,0 +1,57 @@
+// Depth (float), stencil (8-bit), RGBA colour (float planes) and primitive-id buffers.
+// Storage is block-linear (triangle_setup.h, FramebufferView); the *Image() accessors
+// return ordinary row-major copies with row 0 at the top, as conventions.md requires.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raster/triangle_setup.h"
+
+namespace shadowlab::raster {
+
+struct Attachments {
+    bool stencil = false;
+    bool color = false;         // four float planes R, G, B, A
+    bool primitiveId = false;
+};
+
+class Framebuffer {
+public:
+    // Throws std::invalid_argument unless 1 <= width, height <= kMaxViewport.
+    Framebuffer(int width, int height, Attachments attachments = {});
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int tilesX() const { return tilesX_; }
+    int tilesY() const { return tilesY_; }
+    const Attachments& attachments() const { return attachments_; }
+
+    void clearDepth(float value);
+    void clearStencil(uint8_t value);
+    void clearColor(const glm::vec4& value);
+    void clearPrimitiveId(uint32_t value);
+
+    // Storage index of pixel (x, y).
+    size_t index(int x, int y) const;
+    FramebufferView view();
+
+    std::vector<float> depthImage() const;
+    std::vector<uint8_t> stencilImage() const;
+    std::vector<float> colorImage(int channel) const;
+    std::vector<uint32_t> primitiveIdImage() const;
+
+private:
+    template <class T> std::vector<T> rowMajor(const std::vector<T>& blockLinear) const;
+
+    int width_, height_, tilesX_, tilesY_;
+    Attachments attachments_;
+    std::vector<float> depth_;
+    std::vector<uint8_t> stencil_;
+    std::vector<float> color_[4];
+    std::vector<uint32_t> primitiveId_;
+};
+
+}  // namespace shadowlab::raster

@@ -1,0 +1,23 @@
+// The table of tile kernels one instruction set provides (one per fragment output and
+// stencil use). Plain declarations only: the per-ISA translation units include it.
+#pragma once
+
+#include "raster/triangle_setup.h"
+
+namespace shadowlab::raster {
+
+// Rasterizes one triangle into one tile. tileIndex is row-major over tiles.
+using TileKernel = void (*)(const TriangleSetup&, int tileIndex, const DrawConstants&, const FramebufferView&);
+
+inline constexpr int kFragmentOutputCount = 4;
+
+// One kernel per fragment output and stencil use, compiled for one instruction set.
+struct TileKernels {
+    TileKernel kernel[kFragmentOutputCount][2];
+};
+
+const TileKernels& tileKernelsScalar();
+const TileKernels& tileKernelsAvx2();
+const TileKernels& tileKernelsAvx512();
+
+}  // namespace shadowlab::raster

@@ -1,0 +1,81 @@
+// The fixed-function state of a draw: culling, depth, stencil, polygon offset, colour
+// mask and blending, as OpenGL defines them (OpenGL 4.6 core, sections 14.6.5 "Depth
+// Offset", 17.3.3 "Stencil Test", 17.3.4 "Depth Buffer Test", 17.3.6 "Blending").
+// Plain data only: the per-ISA kernels include this header.
+#pragma once
+
+#include <cstdint>
+
+namespace shadowlab::raster {
+
+enum class CullMode : uint8_t { None, Back, Front };
+
+// Front faces wind counter-clockwise in normalised device coordinates (conventions.md).
+enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+
+enum class StencilOp : uint8_t { Keep, Zero, Replace, Increment, Decrement, IncrementWrap, DecrementWrap, Invert };
+
+struct StencilFace {
+    CompareFunc func = CompareFunc::Always;
+    StencilOp stencilFail = StencilOp::Keep;   // stencil test failed
+    StencilOp depthFail = StencilOp::Keep;     // stencil passed, depth failed
+    StencilOp depthPass = StencilOp::Keep;     // both passed
+    uint8_t reference = 0;
+    uint8_t compareMask = 0xff;                // ANDed with reference and stored value before comparing
+    uint8_t writeMask = 0xff;                  // bits the operation may change
+};
+
+struct StencilState {
+    bool enabled = false;
+    StencilFace front, back;                   // two-sided stencil: chosen by the triangle's facing
+};
+
+struct DepthState {
+    bool test = true;
+    bool write = true;
+    CompareFunc func = CompareFunc::Less;
+};
+
+// Offset added to every fragment's window depth: factor * m + units * r, where m is the
+// triangle's largest depth slope max(|dz/dx|, |dz/dy|) and r the smallest resolvable
+// difference of a float depth buffer at the triangle's largest depth (2^(e - 23)).
+struct PolygonOffset {
+    float factor = 0.0f;
+    float units = 0.0f;
+};
+
+enum class BlendEquation : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+enum class BlendFactor : uint8_t {
+    Zero, One, SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor,
+    SrcAlpha, OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha
+};
+
+// result = equation(src * srcFactor, dst * dstFactor); Min and Max ignore the factors.
+struct BlendState {
+    bool enabled = false;
+    BlendEquation equation = BlendEquation::Add;
+    BlendFactor srcFactor = BlendFactor::One;
+    BlendFactor dstFactor = BlendFactor::Zero;
+};
+
+// What a covered fragment that passes the tests writes besides depth and stencil.
+enum class FragmentOutput : uint8_t {
+    DepthOnly,      // shadow maps, z-prepass, stencil volumes: no varyings are interpolated
+    PrimitiveId,    // visibility buffer: the triangle's id, for a G-buffer built afterwards
+    ConstantColor,  // the draw's colour (planar shadows, penumbra weights, debug views)
+    VaryingColor,   // varyings 0..3 interpolated perspective-correctly as RGBA
+};
+
+struct PipelineState {
+    CullMode cull = CullMode::Back;
+    bool clipFar = true;            // false for an infinite far projection (shadow volumes)
+    bool conservative = false;      // outer-conservative coverage: every pixel the triangle touches
+    DepthState depth;
+    StencilState stencil;
+    PolygonOffset offset;
+    FragmentOutput output = FragmentOutput::DepthOnly;
+    uint8_t colorWriteMask = 0xf;   // bit k enables channel k (R, G, B, A)
+    BlendState blend;
+};
+
+}  // namespace shadowlab::raster

@@ -1,0 +1,151 @@
+#include "raster/rasterizer.h"
+
+#include <stdexcept>
+#include <string>
+
+#include <tbb/parallel_for.h>
+
+#include "raster/clip.h"
+#include "raster/setup.h"
+
+namespace shadowlab::raster {
+namespace {
+
+// Triangles per front-end chunk, and chunks per batch: a batch is set up, binned and
+// rasterized before the next, which bounds the memory a huge draw needs.
+constexpr size_t kChunkTriangles = 4096;
+constexpr size_t kChunksPerBatch = 64;
+
+ClipVertex fetchVertex(const ClipVertices& clip, const VertexStream& stream, uint32_t index) {
+    ClipVertex v;
+    v.position = glm::vec4(clip.x[index], clip.y[index], clip.z[index], clip.w[index]);
+    for (int k = 0; k < stream.varyingCount; ++k) v.varyings[k] = stream.varyings[size_t(index) * stream.varyingCount + k];
+    return v;
+}
+
+void addSetup(SetupChunk& chunk, const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, uint32_t id,
+              const SetupContext& context) {
+    TriangleSetup setup;
+    const auto firstPlane = uint32_t(chunk.planes.size());
+    if (!setupTriangle(a, b, c, id, context, setup, chunk.planes)) return;
+    chunk.triangles.push_back(setup);
+    chunk.planeStart.push_back(firstPlane);
+}
+
+// Clip (only when a vertex is outside the guard band, near or far plane), then set up the
+// triangle, or the fan of triangles the clipped polygon forms.
+void processTriangle(SetupChunk& chunk, RasterStats& stats, const ClipVertex (&corners)[3], uint32_t id,
+                     const ClipVolume& volume, const SetupContext& context) {
+    uint32_t viewportCodes = ~0u, clipCodes = 0;
+    for (const ClipVertex& v : corners) {
+        viewportCodes &= viewportOutcode(v.position, volume);
+        clipCodes |= clipOutcode(v.position, volume);
+    }
+    if (viewportCodes != 0) {
+        ++stats.trianglesTriviallyRejected;
+        return;
+    }
+    if (clipCodes == 0) {
+        addSetup(chunk, corners[0], corners[1], corners[2], id, context);
+        return;
+    }
+    ++stats.trianglesClipped;
+    ClipVertex polygon[kMaxClippedVertices + 1] = {corners[0], corners[1], corners[2]};
+    const int n = clipPolygon(polygon, 3, clipCodes, volume, context.varyingCount);
+    for (int k = 1; k + 1 < n; ++k) addSetup(chunk, polygon[0], polygon[k], polygon[k + 1], id, context);
+}
+
+}  // namespace
+
+Rasterizer::Rasterizer(SimdLevel level) : level_(level), kernels_(&tileKernels(level)) {}
+
+void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) const {
+    const VertexStream& vs = call.vertices;
+    const size_t vertexCount = vs.positions.empty() ? vs.homogeneousPositions.size() : vs.positions.size();
+    if (!vs.positions.empty() && !vs.homogeneousPositions.empty()) {
+        throw std::invalid_argument("draw: give either positions or homogeneous positions, not both");
+    }
+    if (vs.varyingCount < 0 || vs.varyingCount > kMaxVaryings) {
+        throw std::invalid_argument("draw: varyingCount must be in 0.." + std::to_string(kMaxVaryings));
+    }
+    if (vs.varyings.size() != vertexCount * size_t(vs.varyingCount)) {
+        throw std::invalid_argument("draw: varyings must hold varyingCount values per vertex");
+    }
+    for (const glm::uvec3& t : call.triangles) {
+        if (t.x >= vertexCount || t.y >= vertexCount || t.z >= vertexCount) {
+            throw std::invalid_argument("draw: vertex index out of range (" + std::to_string(vertexCount) + " vertices)");
+        }
+    }
+    const Attachments& has = framebuffer.attachments();
+    if (state.stencil.enabled && !has.stencil) throw std::invalid_argument("draw: stencil test on a framebuffer without stencil");
+    if (state.output == FragmentOutput::PrimitiveId && !has.primitiveId) {
+        throw std::invalid_argument("draw: primitive-id output on a framebuffer without a primitive-id buffer");
+    }
+    const bool writesColor = state.output == FragmentOutput::ConstantColor || state.output == FragmentOutput::VaryingColor;
+    if (writesColor && !has.color) throw std::invalid_argument("draw: colour output on a framebuffer without colour");
+}
+
+void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call,
+                             size_t firstTriangle, size_t triangleCount, size_t chunkCount) {
+    const ClipVolume volume = clipVolumeFor(framebuffer.width(), framebuffer.height(), state.clipFar);
+    const SetupContext context = {framebuffer.width(), framebuffer.height(), &state, call.vertices.varyingCount};
+    tbb::parallel_for(size_t(0), chunkCount, [&](size_t c) {
+        SetupChunk& chunk = chunks_[c];
+        RasterStats& stats = chunkStats_[c];
+        chunk.triangles.clear(), chunk.planes.clear(), chunk.planeStart.clear();
+        stats = {};
+        const size_t begin = firstTriangle + c * kChunkTriangles;
+        const size_t end = std::min(begin + kChunkTriangles, firstTriangle + triangleCount);
+        for (size_t i = begin; i < end; ++i) {
+            const glm::uvec3& t = call.triangles[i];
+            const ClipVertex corners[3] = {fetchVertex(clipVertices_, call.vertices, t.x),
+                                           fetchVertex(clipVertices_, call.vertices, t.y),
+                                           fetchVertex(clipVertices_, call.vertices, t.z)};
+            processTriangle(chunk, stats, corners, call.firstPrimitiveId + uint32_t(i), volume, context);
+        }
+        countTiles(chunk, framebuffer.tilesX(), framebuffer.tilesY());
+    });
+}
+
+void Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel) const {
+    const FramebufferView view = framebuffer.view();
+    const int tileCount = framebuffer.tilesX() * framebuffer.tilesY();
+    // One task owns one tile and runs its triangles in submission order.
+    tbb::parallel_for(0, tileCount, [&](int tile) {
+        for (uint32_t e = bins_.start[size_t(tile)]; e < bins_.start[size_t(tile) + 1]; ++e) {
+            kernel(*bins_.entries[e], tile, constants, view);
+        }
+    });
+}
+
+void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) {
+    validate(framebuffer, state, call);
+    if (call.vertices.positions.empty()) {
+        transformVertices(call.vertices.homogeneousPositions, call.clipFromObject, clipVertices_);
+    } else {
+        transformVertices(call.vertices.positions, call.clipFromObject, clipVertices_);
+    }
+    DrawConstants constants = {state, {call.constantColor.r, call.constantColor.g, call.constantColor.b, call.constantColor.a},
+                               call.vertices.varyingCount};
+    const TileKernel kernel = kernels_->kernel[int(state.output)][state.stencil.enabled ? 1 : 0];
+
+    const size_t batchTriangles = kChunkTriangles * kChunksPerBatch;
+    chunks_.resize(kChunksPerBatch);
+    chunkStats_.resize(kChunksPerBatch);
+    for (size_t first = 0; first < call.triangles.size(); first += batchTriangles) {
+        const size_t count = std::min(batchTriangles, call.triangles.size() - first);
+        const size_t chunkCount = (count + kChunkTriangles - 1) / kChunkTriangles;
+        runFrontEnd(framebuffer, state, call, first, count, chunkCount);
+        fillBins(chunks_, chunkCount, framebuffer.tilesX(), framebuffer.tilesY(), bins_);
+        runBackEnd(framebuffer, constants, kernel);
+        for (size_t c = 0; c < chunkCount; ++c) {
+            stats_.trianglesTriviallyRejected += chunkStats_[c].trianglesTriviallyRejected;
+            stats_.trianglesClipped += chunkStats_[c].trianglesClipped;
+            stats_.trianglesSetUp += chunks_[c].triangles.size();
+        }
+        stats_.binEntries += bins_.entries.size();
+    }
+    stats_.trianglesSubmitted += call.triangles.size();
+}
+
+}  // namespace shadowlab::raster

@@ -1,0 +1,75 @@
+// The rasterizer's public entry point: one draw call runs the whole pipeline,
+//   vertex stage -> clipping -> setup -> binning   (front end, parallel over triangle chunks)
+//   per-tile rasterization                          (back end, parallel over tiles)
+// and returns when the framebuffer holds the result. Output is byte-identical for any
+// thread count and any SIMD level (README, "Determinism").
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raster/bin.h"
+#include "raster/framebuffer.h"
+#include "raster/pipeline_state.h"
+#include "raster/tile_kernels.h"
+#include "raster/vertex_stage.h"
+
+namespace shadowlab::raster {
+
+// Vertex positions (either ordinary points or homogeneous ones), plus optional varyings
+// stored vertex by vertex (varyingCount floats per vertex).
+struct VertexStream {
+    std::span<const glm::vec3> positions;
+    std::span<const glm::vec4> homogeneousPositions;
+    std::span<const float> varyings;
+    int varyingCount = 0;
+};
+
+struct DrawCall {
+    VertexStream vertices;
+    glm::mat4 clipFromObject{1.0f};
+    std::span<const glm::uvec3> triangles;
+    uint32_t firstPrimitiveId = 0;       // triangle k writes firstPrimitiveId + k
+    glm::vec4 constantColor{1.0f};       // FragmentOutput::ConstantColor
+};
+
+// Per-stage counters, summed over draws (integers, so independent of thread order).
+struct RasterStats {
+    uint64_t trianglesSubmitted = 0;
+    uint64_t trianglesTriviallyRejected = 0;   // outside one viewport plane
+    uint64_t trianglesClipped = 0;             // needed near/far/guard-band clipping
+    uint64_t trianglesSetUp = 0;               // survived culling and cover some pixel
+    uint64_t binEntries = 0;                   // (triangle, tile) pairs rasterized
+};
+
+class Rasterizer {
+public:
+    explicit Rasterizer(SimdLevel level = bestSimdLevel());
+
+    SimdLevel simdLevel() const { return level_; }
+    // Throws std::invalid_argument for an index out of range, too many varyings, or an
+    // output, stencil or colour state the framebuffer has no buffer for.
+    void draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call);
+
+    const RasterStats& stats() const { return stats_; }
+    void resetStats() { stats_ = {}; }
+
+private:
+    void validate(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) const;
+    void runFrontEnd(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call,
+                     size_t firstTriangle, size_t triangleCount, size_t chunkCount);
+    void runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel) const;
+
+    SimdLevel level_;
+    const TileKernels* kernels_;
+    ClipVertices clipVertices_;
+    std::vector<SetupChunk> chunks_;
+    std::vector<RasterStats> chunkStats_;
+    TileBins bins_;
+    RasterStats stats_;
+};
+
+}  // namespace shadowlab::raster

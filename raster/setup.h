@@ -1,0 +1,27 @@
+// Triangle setup: perspective divide, viewport, snapping to fixed point, culling, the
+// integer edge functions with the top-left rule, pixel bounds, and the depth and varying
+// planes. Everything that decides coverage is integer; see fixed_point.h for the ranges.
+#pragma once
+
+#include <vector>
+
+#include "raster/clip.h"
+#include "raster/pipeline_state.h"
+#include "raster/triangle_setup.h"
+
+namespace shadowlab::raster {
+
+struct SetupContext {
+    int width, height;
+    const PipelineState* state;
+    int varyingCount;
+};
+
+// Sets up the triangle (a, b, c), given in clip space with w > 0. Returns false when it is
+// culled, degenerate after snapping, or covers no pixel centre (no pixel at all, in
+// conservative mode). Its varying planes are appended to `planes`; `out.varyings` is left
+// for the caller to point at them once `planes` stops growing.
+bool setupTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, uint32_t primitiveId,
+                   const SetupContext& context, TriangleSetup& out, std::vector<Plane>& planes);
+
+}  // namespace shadowlab::raster

@@ -1,0 +1,69 @@
+// Eight-lane types on AVX2. Same interface and same lane results as simd_scalar.h.
+// Masks are vectors with all bits of a true lane set (the form compares produce).
+#pragma once
+
+#include <immintrin.h>
+
+#include <cstdint>
+
+namespace shadowlab::simd_avx2 {
+
+inline constexpr int kWidth = 8;
+
+struct F32 { __m256 v; };
+struct I32 { __m256i v; };
+struct Mask { __m256i v; };
+
+inline F32 splat(float x) { return {_mm256_set1_ps(x)}; }
+inline I32 splat(int32_t x) { return {_mm256_set1_epi32(x)}; }
+inline I32 laneIndex() { return {_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)}; }
+
+inline F32 load(const float* p) { return {_mm256_loadu_ps(p)}; }
+inline I32 load(const uint32_t* p) { return {_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p))}; }
+inline I32 loadU8(const uint8_t* p) {
+    return {_mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)))};
+}
+inline void store(float* p, F32 a) { _mm256_storeu_ps(p, a.v); }
+inline void store(uint32_t* p, I32 a) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), a.v); }
+inline void storeU8(uint8_t* p, I32 a) {
+    // Lanes hold 0..255; the unsigned saturating packs then narrow without changing them.
+    const __m128i words = _mm_packus_epi32(_mm256_castsi256_si128(a.v), _mm256_extracti128_si256(a.v, 1));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(p), _mm_packus_epi16(words, words));
+}
+
+inline F32 operator+(F32 a, F32 b) { return {_mm256_add_ps(a.v, b.v)}; }
+inline F32 operator-(F32 a, F32 b) { return {_mm256_sub_ps(a.v, b.v)}; }
+inline F32 operator*(F32 a, F32 b) { return {_mm256_mul_ps(a.v, b.v)}; }
+inline F32 operator/(F32 a, F32 b) { return {_mm256_div_ps(a.v, b.v)}; }
+inline F32 min(F32 a, F32 b) { return {_mm256_min_ps(a.v, b.v)}; }
+inline F32 max(F32 a, F32 b) { return {_mm256_max_ps(a.v, b.v)}; }
+inline F32 toFloat(I32 a) { return {_mm256_cvtepi32_ps(a.v)}; }
+
+inline I32 operator+(I32 a, I32 b) { return {_mm256_add_epi32(a.v, b.v)}; }
+inline I32 operator-(I32 a, I32 b) { return {_mm256_sub_epi32(a.v, b.v)}; }
+inline I32 operator*(I32 a, I32 b) { return {_mm256_mullo_epi32(a.v, b.v)}; }
+inline I32 operator&(I32 a, I32 b) { return {_mm256_and_si256(a.v, b.v)}; }
+inline I32 operator|(I32 a, I32 b) { return {_mm256_or_si256(a.v, b.v)}; }
+inline I32 operator^(I32 a, I32 b) { return {_mm256_xor_si256(a.v, b.v)}; }
+template <int kBits> inline I32 shiftRight(I32 a) { return {_mm256_srai_epi32(a.v, kBits)}; }
+
+// Ordered compares are false on NaN and "not equal" is true on NaN, as in C++.
+inline Mask cmpLt(F32 a, F32 b) { return {_mm256_castps_si256(_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ))}; }
+inline Mask cmpLe(F32 a, F32 b) { return {_mm256_castps_si256(_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ))}; }
+inline Mask cmpEq(F32 a, F32 b) { return {_mm256_castps_si256(_mm256_cmp_ps(a.v, b.v, _CMP_EQ_OQ))}; }
+inline Mask cmpNe(F32 a, F32 b) { return {_mm256_castps_si256(_mm256_cmp_ps(a.v, b.v, _CMP_NEQ_UQ))}; }
+inline Mask cmpGt(I32 a, I32 b) { return {_mm256_cmpgt_epi32(a.v, b.v)}; }
+inline Mask cmpEq(I32 a, I32 b) { return {_mm256_cmpeq_epi32(a.v, b.v)}; }
+
+inline Mask operator&(Mask a, Mask b) { return {_mm256_and_si256(a.v, b.v)}; }
+inline Mask operator|(Mask a, Mask b) { return {_mm256_or_si256(a.v, b.v)}; }
+inline Mask operator!(Mask a) { return {_mm256_xor_si256(a.v, _mm256_set1_epi32(-1))}; }
+inline Mask allLanes() { return {_mm256_set1_epi32(-1)}; }
+inline Mask noLanes() { return {_mm256_setzero_si256()}; }
+inline bool any(Mask a) { return !_mm256_testz_si256(a.v, a.v); }
+inline bool all(Mask a) { return _mm256_movemask_ps(_mm256_castsi256_ps(a.v)) == 0xff; }
+
+inline F32 select(Mask m, F32 a, F32 b) { return {_mm256_blendv_ps(b.v, a.v, _mm256_castsi256_ps(m.v))}; }
+inline I32 select(Mask m, I32 a, I32 b) { return {_mm256_blendv_epi8(b.v, a.v, m.v)}; }
+
+}  // namespace shadowlab::simd_avx2

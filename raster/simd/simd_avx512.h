@@ -1,0 +1,68 @@
+// Sixteen-lane types on AVX-512 (F and BW). Same interface and same lane results as
+// simd_scalar.h. Masks are the k-registers that AVX-512 compares produce.
+#pragma once
+
+#include <immintrin.h>
+
+#include <cstdint>
+
+namespace shadowlab::simd_avx512 {
+
+inline constexpr int kWidth = 16;
+
+struct F32 { __m512 v; };
+struct I32 { __m512i v; };
+struct Mask { __mmask16 v; };
+
+inline F32 splat(float x) { return {_mm512_set1_ps(x)}; }
+inline I32 splat(int32_t x) { return {_mm512_set1_epi32(x)}; }
+inline I32 laneIndex() { return {_mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15)}; }
+
+inline F32 load(const float* p) { return {_mm512_loadu_ps(p)}; }
+inline I32 load(const uint32_t* p) { return {_mm512_loadu_si512(p)}; }
+inline I32 loadU8(const uint8_t* p) {
+    return {_mm512_cvtepu8_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)))};
+}
+inline void store(float* p, F32 a) { _mm512_storeu_ps(p, a.v); }
+inline void store(uint32_t* p, I32 a) { _mm512_storeu_si512(p, a.v); }
+inline void storeU8(uint8_t* p, I32 a) {
+    // Lanes hold 0..255, so truncating each to a byte keeps it.
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm512_cvtepi32_epi8(a.v));
+}
+
+inline F32 operator+(F32 a, F32 b) { return {_mm512_add_ps(a.v, b.v)}; }
+inline F32 operator-(F32 a, F32 b) { return {_mm512_sub_ps(a.v, b.v)}; }
+inline F32 operator*(F32 a, F32 b) { return {_mm512_mul_ps(a.v, b.v)}; }
+inline F32 operator/(F32 a, F32 b) { return {_mm512_div_ps(a.v, b.v)}; }
+inline F32 min(F32 a, F32 b) { return {_mm512_min_ps(a.v, b.v)}; }
+inline F32 max(F32 a, F32 b) { return {_mm512_max_ps(a.v, b.v)}; }
+inline F32 toFloat(I32 a) { return {_mm512_cvtepi32_ps(a.v)}; }
+
+inline I32 operator+(I32 a, I32 b) { return {_mm512_add_epi32(a.v, b.v)}; }
+inline I32 operator-(I32 a, I32 b) { return {_mm512_sub_epi32(a.v, b.v)}; }
+inline I32 operator*(I32 a, I32 b) { return {_mm512_mullo_epi32(a.v, b.v)}; }
+inline I32 operator&(I32 a, I32 b) { return {_mm512_and_si512(a.v, b.v)}; }
+inline I32 operator|(I32 a, I32 b) { return {_mm512_or_si512(a.v, b.v)}; }
+inline I32 operator^(I32 a, I32 b) { return {_mm512_xor_si512(a.v, b.v)}; }
+template <int kBits> inline I32 shiftRight(I32 a) { return {_mm512_srai_epi32(a.v, kBits)}; }
+
+// Ordered compares are false on NaN and "not equal" is true on NaN, as in C++.
+inline Mask cmpLt(F32 a, F32 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_LT_OQ)}; }
+inline Mask cmpLe(F32 a, F32 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_LE_OQ)}; }
+inline Mask cmpEq(F32 a, F32 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_EQ_OQ)}; }
+inline Mask cmpNe(F32 a, F32 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_NEQ_UQ)}; }
+inline Mask cmpGt(I32 a, I32 b) { return {_mm512_cmpgt_epi32_mask(a.v, b.v)}; }
+inline Mask cmpEq(I32 a, I32 b) { return {_mm512_cmpeq_epi32_mask(a.v, b.v)}; }
+
+inline Mask operator&(Mask a, Mask b) { return {__mmask16(a.v & b.v)}; }
+inline Mask operator|(Mask a, Mask b) { return {__mmask16(a.v | b.v)}; }
+inline Mask operator!(Mask a) { return {__mmask16(~a.v)}; }
+inline Mask allLanes() { return {__mmask16(0xffff)}; }
+inline Mask noLanes() { return {__mmask16(0)}; }
+inline bool any(Mask a) { return a.v != 0; }
+inline bool all(Mask a) { return a.v == 0xffff; }
+
+inline F32 select(Mask m, F32 a, F32 b) { return {_mm512_mask_blend_ps(m.v, b.v, a.v)}; }
+inline I32 select(Mask m, I32 a, I32 b) { return {_mm512_mask_blend_epi32(m.v, b.v, a.v)}; }
+
+}  // namespace shadowlab::simd_avx512

@@ -1,0 +1,65 @@
+// One-lane "SIMD" types: the scalar reference twin of simd_avx2.h and simd_avx512.h.
+// The rasterizer's tile kernel is written once against this interface; compiled with
+// these types it is the plain C++ reference that the vector paths are held to, bit for
+// bit (tests/raster/test_determinism.cpp). Every operation is the IEEE operation of the
+// same name on each lane, with no FMA and no approximations, so all three agree exactly.
+#pragma once
+
+#include <cstdint>
+
+namespace shadowlab::simd_scalar {
+
+inline constexpr int kWidth = 1;
+
+struct F32 { float v; };
+struct I32 { int32_t v; };
+struct Mask { bool v; };
+
+inline F32 splat(float x) { return {x}; }
+inline I32 splat(int32_t x) { return {x}; }
+inline I32 laneIndex() { return {0}; }
+
+inline F32 load(const float* p) { return {*p}; }
+inline I32 load(const uint32_t* p) { return {int32_t(*p)}; }
+inline I32 loadU8(const uint8_t* p) { return {int32_t(*p)}; }
+inline void store(float* p, F32 a) { *p = a.v; }
+inline void store(uint32_t* p, I32 a) { *p = uint32_t(a.v); }
+inline void storeU8(uint8_t* p, I32 a) { *p = uint8_t(a.v); }
+
+inline F32 operator+(F32 a, F32 b) { return {a.v + b.v}; }
+inline F32 operator-(F32 a, F32 b) { return {a.v - b.v}; }
+inline F32 operator*(F32 a, F32 b) { return {a.v * b.v}; }
+inline F32 operator/(F32 a, F32 b) { return {a.v / b.v}; }
+// As minps/maxps: the second operand when the lanes are unordered or both zero.
+inline F32 min(F32 a, F32 b) { return {a.v < b.v ? a.v : b.v}; }
+inline F32 max(F32 a, F32 b) { return {a.v > b.v ? a.v : b.v}; }
+inline F32 toFloat(I32 a) { return {float(a.v)}; }
+
+inline I32 operator+(I32 a, I32 b) { return {a.v + b.v}; }
+inline I32 operator-(I32 a, I32 b) { return {a.v - b.v}; }
+inline I32 operator*(I32 a, I32 b) { return {a.v * b.v}; }
+inline I32 operator&(I32 a, I32 b) { return {a.v & b.v}; }
+inline I32 operator|(I32 a, I32 b) { return {a.v | b.v}; }
+inline I32 operator^(I32 a, I32 b) { return {a.v ^ b.v}; }
+template <int kBits> inline I32 shiftRight(I32 a) { return {a.v >> kBits}; }
+
+// Comparisons return masks, so they are named functions rather than operators.
+inline Mask cmpLt(F32 a, F32 b) { return {a.v < b.v}; }
+inline Mask cmpLe(F32 a, F32 b) { return {a.v <= b.v}; }
+inline Mask cmpEq(F32 a, F32 b) { return {a.v == b.v}; }
+inline Mask cmpNe(F32 a, F32 b) { return {a.v != b.v}; }
+inline Mask cmpGt(I32 a, I32 b) { return {a.v > b.v}; }
+inline Mask cmpEq(I32 a, I32 b) { return {a.v == b.v}; }
+
+inline Mask operator&(Mask a, Mask b) { return {a.v && b.v}; }
+inline Mask operator|(Mask a, Mask b) { return {a.v || b.v}; }
+inline Mask operator!(Mask a) { return {!a.v}; }
+inline Mask allLanes() { return {true}; }
+inline Mask noLanes() { return {false}; }
+inline bool any(Mask a) { return a.v; }
+inline bool all(Mask a) { return a.v; }
+
+inline F32 select(Mask m, F32 a, F32 b) { return m.v ? a : b; }
+inline I32 select(Mask m, I32 a, I32 b) { return m.v ? a : b; }
+
+}  // namespace shadowlab::simd_scalar
