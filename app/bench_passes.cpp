@@ -1,0 +1,147 @@
+#include "app/bench_passes.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+
+#include "app/render.h"
+#include "raster/rasterizer.h"
+#include "scenes/camera.h"
+#include "scenes/scene_file.h"
+#include "shadows/reference.h"
+
+namespace shadowlab {
+namespace {
+
+struct Timing {
+    double medianMs, minMs;
+};
+
+Timing timeRuns(const BenchOptions& options, const std::function<void()>& run) {
+    for (int k = 0; k < options.warmupRuns; ++k) run();
+    std::vector<double> ms;
+    for (int k = 0; k < options.runs; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        run();
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    const size_t n = ms.size();
+    const double median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+    return {median, ms.front()};
+}
+
+// The point light's view of the scene: perspective towards the origin, fovy 90 degrees,
+// near 0.5, far 50 (the fixed protocol).
+glm::mat4 lightClipFromWorld(const Scene& scene) {
+    const glm::vec3 light = scene.lights.at(0).position;
+    const glm::vec3 toOrigin = glm::normalize(-light);
+    const glm::vec3 up = std::abs(toOrigin.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    return glm::perspective(glm::radians(90.0f), 1.0f, 0.5f, 50.0f) * glm::lookAt(light, glm::vec3(0.0f), up);
+}
+
+PassTiming timeDepthPass(const BenchOptions& options, const WorldGeometry& world, const glm::mat4& clipFromWorld,
+                         int width, int height) {
+    raster::Framebuffer fb(width, height);
+    raster::Rasterizer rasterizer(options.simd);
+    raster::PipelineState state;   // depth-only, less, back faces culled
+    raster::DrawCall call;
+    call.vertices.positions = world.positions;
+    call.triangles = world.triangles;
+    call.clipFromObject = clipFromWorld;
+    const Timing t = timeRuns(options, [&] {
+        fb.clearDepth(1.0f);
+        rasterizer.draw(fb, state, call);
+    });
+    PassTiming row;
+    row.simd = raster::simdLevelName(options.simd);
+    row.triangles = world.triangles.size();
+    row.pixels = size_t(width) * size_t(height);
+    row.medianMs = t.medianMs;
+    row.minMs = t.minMs;
+    return row;
+}
+
+RayTiming timeReference(const BenchOptions& options, const Scene& scene, const WorldGeometry& world) {
+    const GBuffer gbuffer = renderGBuffer(world, scene.camera, options.simd);
+    const ReferenceVisibility reference(world);
+    const Light light = pointLightFor(scene.lights.at(0));
+    uint64_t raysPerRun = 0;
+    const Timing t = timeRuns(options, [&] {
+        const uint64_t before = reference.raysCast();
+        reference.visibility(gbuffer, light);
+        raysPerRun = reference.raysCast() - before;
+    });
+    return {scene.name, 1, raysPerRun, t.medianMs, t.minMs};
+}
+
+}  // namespace
+
+BenchResults runBench(const BenchOptions& options) {
+    BenchResults results;
+    for (const std::string& name : options.scenes) {
+        const Scene scene = loadScene(name);
+        const WorldGeometry world = flatten(scene);
+        for (int threads : options.threads) {
+            tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+            PassTiming light = timeDepthPass(options, world, lightClipFromWorld(scene), 2048, 2048);
+            light.scene = name, light.pass = "light 2048x2048", light.threads = threads;
+            results.passes.push_back(light);
+            PassTiming camera = timeDepthPass(options, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
+            camera.scene = name, camera.threads = threads;
+            camera.pass = "camera " + std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height);
+            results.passes.push_back(camera);
+            RayTiming rays = timeReference(options, scene, world);
+            rays.threads = threads;
+            results.rays.push_back(rays);
+        }
+    }
+    return results;
+}
+
+std::string formatBenchText(const BenchResults& r) {
+    std::string out;
+    char line[256];
+    std::snprintf(line, sizeof line, "%-11s %-17s %7s %6s %10s %10s %9s %9s %9s\n", "scene", "pass", "threads", "simd",
+                  "triangles", "median ms", "min ms", "Mtris/s", "Mpix/s");
+    out += line;
+    for (const PassTiming& p : r.passes) {
+        std::snprintf(line, sizeof line, "%-11s %-17s %7d %6s %10zu %10.2f %9.2f %9.1f %9.1f\n", p.scene.c_str(),
+                      p.pass.c_str(), p.threads, p.simd.c_str(), p.triangles, p.medianMs, p.minMs, p.mtrisPerSecond(),
+                      p.mpixelsPerSecond());
+        out += line;
+    }
+    std::snprintf(line, sizeof line, "\n%-11s %7s %10s %10s %9s %9s\n", "scene", "threads", "rays", "median ms", "min ms",
+                  "Mrays/s");
+    out += line;
+    for (const RayTiming& t : r.rays) {
+        std::snprintf(line, sizeof line, "%-11s %7d %10llu %10.2f %9.2f %9.2f\n", t.scene.c_str(), t.threads,
+                      static_cast<unsigned long long>(t.rays), t.medianMs, t.minMs, t.mraysPerSecond());
+        out += line;
+    }
+    return out;
+}
+
+std::string formatBenchJson(const BenchResults& r) {
+    nlohmann::json j;
+    j["passes"] = nlohmann::json::array();
+    for (const PassTiming& p : r.passes) {
+        j["passes"].push_back({{"scene", p.scene}, {"pass", p.pass}, {"threads", p.threads}, {"simd", p.simd},
+                               {"triangles", p.triangles}, {"pixels", p.pixels}, {"median_ms", p.medianMs},
+                               {"min_ms", p.minMs}, {"mtris_per_s", p.mtrisPerSecond()},
+                               {"mpixels_per_s", p.mpixelsPerSecond()}});
+    }
+    j["reference"] = nlohmann::json::array();
+    for (const RayTiming& t : r.rays) {
+        j["reference"].push_back({{"scene", t.scene}, {"threads", t.threads}, {"rays", t.rays},
+                                  {"median_ms", t.medianMs}, {"min_ms", t.minMs}, {"mrays_per_s", t.mraysPerSecond()}});
+    }
+    return j.dump(2) + "\n";
+}
+
+}  // namespace shadowlab

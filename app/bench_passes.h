@@ -1,0 +1,51 @@
+// `shadowlab bench`: the speed of the depth-only passes every shadow technique is built
+// from, on the built-in scenes, and of the exact reference's shadow rays.
+//
+// Protocol (style.md, "benchmarks are repeatable protocols"): fixed scenes and cameras,
+// warm-up runs first, then `runs` measured runs; the median and the minimum are reported.
+// A pass is a depth clear plus one depth-only draw of every triangle with back faces culled.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "raster/tile_kernels.h"
+
+namespace shadowlab {
+
+struct PassTiming {
+    std::string scene, pass;   // pass: "light 2048x2048" or "camera 1280x800"
+    int threads = 1;
+    std::string simd;
+    size_t triangles = 0, pixels = 0;
+    double medianMs = 0.0, minMs = 0.0;
+    double mtrisPerSecond() const { return double(triangles) / (medianMs * 1e3); }
+    double mpixelsPerSecond() const { return double(pixels) / (medianMs * 1e3); }
+};
+
+struct RayTiming {
+    std::string scene;
+    int threads = 1;
+    uint64_t rays = 0;
+    double medianMs = 0.0, minMs = 0.0;
+    double mraysPerSecond() const { return double(rays) / (medianMs * 1e3); }
+};
+
+struct BenchOptions {
+    std::vector<std::string> scenes = {"sphere-box", "bunny", "throughput"};
+    std::vector<int> threads = {1, 2};
+    int warmupRuns = 2;
+    int runs = 15;
+    raster::SimdLevel simd = raster::bestSimdLevel();
+};
+
+struct BenchResults {
+    std::vector<PassTiming> passes;
+    std::vector<RayTiming> rays;
+};
+
+BenchResults runBench(const BenchOptions& options);
+std::string formatBenchText(const BenchResults& results);
+std::string formatBenchJson(const BenchResults& results);
+
+}  // namespace shadowlab

@@ -1,0 +1,160 @@
+// shadowlab: renders, compares and benchmarks shadow techniques (README, "Commands").
+// Every command exits non-zero with a one-line error on bad input, and writes its output
+// files whole or not at all.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
+
+#include "app/bench_passes.h"
+#include "app/render.h"
+#include "scenes/obj_writer.h"
+#include "scenes/scene_file.h"
+#include "shading/compare.h"
+#include "shading/image_io.h"
+#include "shading/tonemap.h"
+
+using namespace shadowlab;
+
+namespace {
+
+// "x,y,z" -> vec3; CLI11 reports the message on failure.
+std::string parseVec3(const std::string& text, glm::vec3& out) {
+    std::istringstream in(text);
+    char comma1 = 0, comma2 = 0;
+    if (!(in >> out.x >> comma1 >> out.y >> comma2 >> out.z) || comma1 != ',' || comma2 != ',' || !in.eof()) {
+        return "expected three numbers as x,y,z, got '" + text + "'";
+    }
+    if (!std::isfinite(out.x) || !std::isfinite(out.y) || !std::isfinite(out.z)) return "values must be finite";
+    return {};
+}
+
+void addVec3Option(CLI::App* cmd, const std::string& name, std::optional<glm::vec3>& target, const std::string& help) {
+    cmd->add_option_function<std::string>(name, [&target, name](const std::string& text) {
+        glm::vec3 v;
+        if (const std::string error = parseVec3(text, v); !error.empty()) throw CLI::ValidationError(name, error);
+        target = v;
+    }, help)->type_name("X,Y,Z");
+}
+
+std::unique_ptr<tbb::global_control> limitThreads(int threads) {
+    if (threads <= 0) return nullptr;
+    return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(threads));
+}
+
+struct RenderArgs {
+    std::string scene, technique = "none", png, aov, debugDir, simd = "auto";
+    int threads = 0;
+    float exposure = 0.0f;
+    SceneOverrides overrides;
+};
+
+void runRender(const RenderArgs& a) {
+    if (a.png.empty() && a.aov.empty()) throw std::invalid_argument("render: give -o OUT.png and/or --aov OUT.exr");
+    const auto threads = limitThreads(a.threads);
+    Scene scene = loadScene(a.scene);
+    applyOverrides(scene, a.overrides);
+    const WorldGeometry world = flatten(scene);
+    const Technique& technique = findTechnique(a.technique);
+    const Frame frame = renderFrame(scene, world, technique, raster::parseSimdLevel(a.simd), a.debugDir);
+    const int w = scene.camera.width, h = scene.camera.height;
+    if (!a.png.empty()) writePng(a.png, w, h, toSrgb8Image(frame.radiance, {a.exposure, ToneOperator::Reinhard}));
+    if (!a.aov.empty()) {
+        ImageChannels aov;
+        aov.width = w, aov.height = h;
+        setRadiance(aov, frame.radiance);
+        setGBuffer(aov, frame.gbuffer);
+        aov.set(channel::V, frame.shadow.visibility);
+        if (!frame.shadow.stencil.empty()) aov.set(channel::stencil, frame.shadow.stencil);
+        writeExr(a.aov, aov);
+    }
+}
+
+struct CompareArgs {
+    std::string reference, test, channel = "V", heatmap, json;
+};
+
+void runCompare(const CompareArgs& a) {
+    CompareOptions options;
+    options.channel = a.channel;
+    const ImageChannels reference = readExr(a.reference), test = readExr(a.test);
+    const ErrorFigures figures = compareImages(reference, test, options);
+    std::cout << formatText(figures);
+    const std::string heatmap = a.heatmap.empty() ? std::filesystem::path(a.test).replace_extension("").string() + "-diff.png" : a.heatmap;
+    writePng(heatmap, reference.width, reference.height, errorHeatMap(reference, test, options));
+    std::cout << "heat map: " << heatmap << "\n";
+    if (!a.json.empty()) writeTextFile(a.json, formatJson(figures));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"shadowlab: a deterministic CPU rasterizer for studying real-time shadows"};
+    app.require_subcommand(1);
+    app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + std::string(e.what()) + "\n"; });
+
+    RenderArgs render;
+    CLI::App* r = app.add_subcommand("render", "render a scene with a shadow technique");
+    r->add_option("scene", render.scene, "built-in scene name or scene file (.json)")->required();
+    r->add_option("--technique", render.technique, "shadow technique (none, reference)")->capture_default_str();
+    r->add_option("-o,--output", render.png, "tone-mapped sRGB PNG to write");
+    r->add_option("--aov", render.aov, "OpenEXR file with R G B, P.*, N.*, hit, V, depth (and stencil)");
+    r->add_option("--width", render.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+    r->add_option("--height", render.overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+    r->add_option("--threads", render.threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+    r->add_option("--simd", render.simd, "scalar, avx2, avx512 or auto")->capture_default_str();
+    addVec3Option(r, "--eye", render.overrides.eye, "camera position, overriding the scene's");
+    addVec3Option(r, "--target", render.overrides.target, "point the camera looks at");
+    r->add_option("--fovy", render.overrides.fovyDeg, "vertical field of view in degrees");
+    addVec3Option(r, "--light-pos", render.overrides.lightPosition, "position (centre) of the scene's first light");
+    r->add_option("--debug-buffers", render.debugDir, "directory for the technique's intermediate buffers");
+    r->add_option("--exposure", render.exposure, "exposure in stops for the PNG")->capture_default_str();
+    r->callback([&] { runRender(render); });
+
+    CompareArgs compare;
+    CLI::App* c = app.add_subcommand("compare", "error figures of a test image against a reference (conventions.md)");
+    c->add_option("reference", compare.reference, "reference EXR (its hit channel selects the pixels)")->required()->check(CLI::ExistingFile);
+    c->add_option("test", compare.test, "EXR to score")->required()->check(CLI::ExistingFile);
+    c->add_option("--channel", compare.channel, "channel to compare")->capture_default_str();
+    c->add_option("--heatmap", compare.heatmap, "diff heat-map PNG (default: TEST-diff.png)");
+    c->add_option("--json", compare.json, "also write the figures as JSON");
+    c->callback([&] { runCompare(compare); });
+
+    BenchOptions bench;
+    std::string benchJson, benchSimd = "auto";
+    CLI::App* b = app.add_subcommand("bench", "time depth-only passes and reference rays on the built-in scenes");
+    b->add_option("--scenes", bench.scenes, "scenes to measure")->delimiter(',')->capture_default_str();
+    b->add_option("--threads", bench.threads, "thread counts")->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
+    b->add_option("--runs", bench.runs, "measured runs per row")->capture_default_str()->check(CLI::Range(1, 10000));
+    b->add_option("--warmup", bench.warmupRuns, "warm-up runs per row")->capture_default_str()->check(CLI::Range(0, 1000));
+    b->add_option("--simd", benchSimd, "scalar, avx2, avx512 or auto")->capture_default_str();
+    b->add_option("--json", benchJson, "also write the rows as JSON");
+    b->callback([&] {
+        bench.simd = raster::parseSimdLevel(benchSimd);
+        const BenchResults results = runBench(bench);
+        std::cout << formatBenchText(results);
+        if (!benchJson.empty()) writeTextFile(benchJson, formatBenchJson(results));
+    });
+
+    std::string exportScene, exportPath;
+    CLI::App* e = app.add_subcommand("export-obj", "write every triangle of a scene in world space as OBJ");
+    e->add_option("scene", exportScene, "built-in scene name or scene file")->required();
+    e->add_option("out", exportPath, "OBJ file to write")->required();
+    e->callback([&] { writeObj(flatten(loadScene(exportScene)), exportPath); });
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        return app.exit(error);
+    } catch (const std::exception& error) {
+        std::cerr << "shadowlab: error: " << error.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

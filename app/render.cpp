@@ -1,0 +1,66 @@
+#include "app/render.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "raster/rasterizer.h"
+#include "scenes/camera.h"
+#include "shading/gbuffer_build.h"
+#include "shading/shade.h"
+
+namespace shadowlab {
+namespace {
+
+void requireFinite(const glm::vec3& v, const char* what) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+        throw std::invalid_argument(std::string(what) + " must be three finite numbers");
+    }
+}
+
+}  // namespace
+
+void applyOverrides(Scene& scene, const SceneOverrides& o) {
+    Camera& c = scene.camera;
+    if (o.width) c.width = *o.width;
+    if (o.height) c.height = *o.height;
+    if (o.eye) requireFinite(*o.eye, "--eye"), c.eye = *o.eye;
+    if (o.target) requireFinite(*o.target, "--target"), c.target = *o.target;
+    if (o.fovyDeg) c.fovyDeg = *o.fovyDeg;
+    if (c.width < 1 || c.height < 1 || c.width > raster::kMaxViewport || c.height > raster::kMaxViewport) {
+        throw std::invalid_argument("image size must be within 1.." + std::to_string(raster::kMaxViewport));
+    }
+    if (!(c.fovyDeg > 0.0f && c.fovyDeg < 180.0f)) throw std::invalid_argument("--fovy must be in (0, 180) degrees");
+    if (c.eye == c.target) throw std::invalid_argument("the eye and the target must differ");
+    if (o.lightPosition) {
+        requireFinite(*o.lightPosition, "--light-pos");
+        if (scene.lights.empty()) throw std::invalid_argument("--light-pos: the scene has no light");
+        scene.lights[0].position = *o.lightPosition;
+    }
+}
+
+GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd) {
+    raster::Framebuffer fb(camera.width, camera.height, {.primitiveId = true});
+    fb.clearPrimitiveId(kNoTriangle);
+    raster::PipelineState state;
+    state.cull = raster::CullMode::None;
+    state.output = raster::FragmentOutput::PrimitiveId;
+    raster::DrawCall call;
+    call.vertices.positions = world.positions;
+    call.triangles = world.triangles;
+    call.clipFromObject = clipFromWorld(camera);
+    raster::Rasterizer rasterizer(simd);
+    rasterizer.draw(fb, state, call);
+    return buildGBuffer(world, camera, fb.primitiveIdImage(), fb.depthImage());
+}
+
+Frame renderFrame(const Scene& scene, const WorldGeometry& world, const Technique& technique,
+                  raster::SimdLevel simd, const std::filesystem::path& debugDir) {
+    if (scene.lights.empty()) throw std::invalid_argument("the scene has no light to cast shadows");
+    Frame frame;
+    frame.gbuffer = renderGBuffer(world, scene.camera, simd);
+    frame.shadow = technique.run({scene, world, frame.gbuffer, scene.lights[0], simd, debugDir});
+    frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
+    return frame;
+}
+
+}  // namespace shadowlab

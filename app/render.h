@@ -1,0 +1,43 @@
+// One frame: the camera pass (visibility buffer), the G-buffer, the shadow technique's
+// visibility V, and shading. Used by `shadowlab render`, the golden tests and the bench.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raster/tile_kernels.h"
+#include "scenes/scene.h"
+#include "shading/gbuffer.h"
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+// Command-line overrides of the scene's camera and first light.
+struct SceneOverrides {
+    std::optional<int> width, height;
+    std::optional<glm::vec3> eye, target, lightPosition;
+    std::optional<float> fovyDeg;
+};
+
+// Applies the overrides; throws std::invalid_argument for a size outside 1..8192, a fovy
+// outside (0, 180), a non-finite vector, or an eye equal to the target.
+void applyOverrides(Scene& scene, const SceneOverrides& overrides);
+
+// The camera pass: every pixel's nearest triangle (no culling, so open meshes show both
+// sides), then the exact G-buffer from it (shading/gbuffer_build.h).
+GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd);
+
+struct Frame {
+    GBuffer gbuffer;
+    ShadowOutputs shadow;
+    std::vector<glm::vec3> radiance;   // linear, row-major
+};
+
+Frame renderFrame(const Scene& scene, const WorldGeometry& world, const Technique& technique,
+                  raster::SimdLevel simd, const std::filesystem::path& debugDir = {});
+
+}  // namespace shadowlab

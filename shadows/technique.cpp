@@ -1,0 +1,48 @@
+#include "shadows/technique.h"
+
+#include <stdexcept>
+
+#include "shadows/reference.h"
+
+namespace shadowlab {
+namespace {
+
+ShadowOutputs unshadowed(const ShadowInputs& in) {
+    ShadowOutputs out;
+    out.visibility.resize(in.gbuffer.pixelCount());
+    for (size_t k = 0; k < out.visibility.size(); ++k) out.visibility[k] = in.gbuffer.hit[k] ? 1.0f : 0.0f;
+    return out;
+}
+
+ShadowOutputs exactReference(const ShadowInputs& in) {
+    const ReferenceVisibility reference(in.world);
+    return {reference.visibility(in.gbuffer, pointLightFor(in.light)), {}};
+}
+
+}  // namespace
+
+const std::vector<Technique>& techniques() {
+    static const std::vector<Technique> all = {
+        {"none", "no shadows: V = 1 on every surface", unshadowed},
+        {"reference", "exact hard shadows: one Embree shadow ray per pixel to the light's centre", exactReference},
+    };
+    return all;
+}
+
+const Technique& findTechnique(const std::string& name) {
+    std::string known;
+    for (const Technique& t : techniques()) {
+        if (t.name == name) return t;
+        known += (known.empty() ? "" : ", ") + t.name;
+    }
+    throw std::invalid_argument("unknown technique '" + name + "' (known: " + known + ")");
+}
+
+Light pointLightFor(const Light& light) {
+    if (light.type != LightType::Disk && light.type != LightType::Rectangle) return light;
+    Light point = light;
+    point.type = LightType::Point;
+    return point;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,45 @@
+// The shadow techniques `shadowlab render --technique NAME` can run. Each takes the
+// G-buffer of the camera view and the selected light and returns the visibility V of that
+// light at every pixel (conventions.md), plus any intermediate buffers it can show.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "raster/tile_kernels.h"
+#include "scenes/scene.h"
+#include "shading/gbuffer.h"
+
+namespace shadowlab {
+
+struct ShadowInputs {
+    const Scene& scene;
+    const WorldGeometry& world;
+    const GBuffer& gbuffer;
+    const Light& light;                    // the selected light
+    raster::SimdLevel simd;
+    std::filesystem::path debugDir;        // empty: write no intermediate buffers
+};
+
+struct ShadowOutputs {
+    std::vector<float> visibility;         // V per pixel, row-major, 0 where hit = 0
+    std::vector<float> stencil;            // per pixel, empty if the technique uses no stencil
+};
+
+struct Technique {
+    std::string name;
+    std::string description;
+    std::function<ShadowOutputs(const ShadowInputs&)> run;
+};
+
+const std::vector<Technique>& techniques();
+// Throws std::invalid_argument naming the known techniques.
+const Technique& findTechnique(const std::string& name);
+
+// Hard-shadow techniques see a light as a point: an area light's centre stands in for it.
+// The result is for visibility only (its intensity keeps the area light's units).
+Light pointLightFor(const Light& light);
+
+}  // namespace shadowlab
