@@ -59,6 +59,9 @@ PassTiming timeDepthPass(const BenchOptions& options, const WorldGeometry& world
         rasterizer.draw(fb, state, call);
     });
     PassTiming row;
+    rasterizer.resetStats();
+    rasterizer.draw(fb, state, call);
+    row.stats = rasterizer.stats();
     row.simd = raster::simdLevelName(options.simd);
     row.triangles = world.triangles.size();
     row.pixels = size_t(width) * size_t(height);
@@ -107,13 +110,14 @@ BenchResults runBench(const BenchOptions& options) {
 std::string formatBenchText(const BenchResults& r) {
     std::string out;
     char line[256];
-    std::snprintf(line, sizeof line, "%-11s %-17s %7s %6s %10s %10s %9s %9s %9s\n", "scene", "pass", "threads", "simd",
-                  "triangles", "median ms", "min ms", "Mtris/s", "Mpix/s");
+    std::snprintf(line, sizeof line, "%-11s %-17s %7s %6s %10s %10s %9s %9s %9s %10s %10s\n", "scene", "pass", "threads",
+                  "simd", "triangles", "median ms", "min ms", "Mtris/s", "Mpix/s", "set up", "tile pairs");
     out += line;
     for (const PassTiming& p : r.passes) {
-        std::snprintf(line, sizeof line, "%-11s %-17s %7d %6s %10zu %10.2f %9.2f %9.1f %9.1f\n", p.scene.c_str(),
-                      p.pass.c_str(), p.threads, p.simd.c_str(), p.triangles, p.medianMs, p.minMs, p.mtrisPerSecond(),
-                      p.mpixelsPerSecond());
+        std::snprintf(line, sizeof line, "%-11s %-17s %7d %6s %10zu %10.2f %9.2f %9.1f %9.1f %10llu %10llu\n",
+                      p.scene.c_str(), p.pass.c_str(), p.threads, p.simd.c_str(), p.triangles, p.medianMs, p.minMs,
+                      p.mtrisPerSecond(), p.mpixelsPerSecond(), static_cast<unsigned long long>(p.stats.trianglesSetUp),
+                      static_cast<unsigned long long>(p.stats.binEntries));
         out += line;
     }
     std::snprintf(line, sizeof line, "\n%-11s %7s %10s %10s %9s %9s\n", "scene", "threads", "rays", "median ms", "min ms",
@@ -134,7 +138,9 @@ std::string formatBenchJson(const BenchResults& r) {
         j["passes"].push_back({{"scene", p.scene}, {"pass", p.pass}, {"threads", p.threads}, {"simd", p.simd},
                                {"triangles", p.triangles}, {"pixels", p.pixels}, {"median_ms", p.medianMs},
                                {"min_ms", p.minMs}, {"mtris_per_s", p.mtrisPerSecond()},
-                               {"mpixels_per_s", p.mpixelsPerSecond()}});
+                               {"mpixels_per_s", p.mpixelsPerSecond()},
+                               {"triangles_set_up", p.stats.trianglesSetUp}, {"triangles_clipped", p.stats.trianglesClipped},
+                               {"tile_pairs", p.stats.binEntries}});
     }
     j["reference"] = nlohmann::json::array();
     for (const RayTiming& t : r.rays) {

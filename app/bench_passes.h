@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "raster/tile_kernels.h"
+#include "raster/rasterizer.h"
 
 namespace shadowlab {
 
@@ -18,6 +18,7 @@ struct PassTiming {
     int threads = 1;
     std::string simd;
     size_t triangles = 0, pixels = 0;
+    raster::RasterStats stats;   // of one run: how many triangles each stage kept
     double medianMs = 0.0, minMs = 0.0;
     double mtrisPerSecond() const { return double(triangles) / (medianMs * 1e3); }
     double mpixelsPerSecond() const { return double(pixels) / (medianMs * 1e3); }

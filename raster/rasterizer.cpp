@@ -16,43 +16,44 @@ namespace {
 constexpr size_t kChunkTriangles = 4096;
 constexpr size_t kChunksPerBatch = 64;
 
-ClipVertex fetchVertex(const ClipVertices& clip, const VertexStream& stream, uint32_t index) {
-    ClipVertex v;
-    v.position = glm::vec4(clip.x[index], clip.y[index], clip.z[index], clip.w[index]);
-    for (int k = 0; k < stream.varyingCount; ++k) v.varyings[k] = stream.varyings[size_t(index) * stream.varyingCount + k];
-    return v;
-}
-
-void addSetup(SetupChunk& chunk, const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, uint32_t id,
-              const SetupContext& context) {
+void addSetup(SetupChunk& chunk, const SetupVertex (&corners)[3], uint32_t id, const SetupContext& context) {
     TriangleSetup setup;
     const auto firstPlane = uint32_t(chunk.planes.size());
-    if (!setupTriangle(a, b, c, id, context, setup, chunk.planes)) return;
+    if (!setupTriangle(corners, id, context, setup, chunk.planes)) return;
     chunk.triangles.push_back(setup);
     chunk.planeStart.push_back(firstPlane);
 }
 
-// Clip (only when a vertex is outside the guard band, near or far plane), then set up the
-// triangle, or the fan of triangles the clipped polygon forms.
-void processTriangle(SetupChunk& chunk, RasterStats& stats, const ClipVertex (&corners)[3], uint32_t id,
-                     const ClipVolume& volume, const SetupContext& context) {
-    uint32_t viewportCodes = ~0u, clipCodes = 0;
-    for (const ClipVertex& v : corners) {
-        viewportCodes &= viewportOutcode(v.position, volume);
-        clipCodes |= clipOutcode(v.position, volume);
+const float* varyingsOf(const VertexStream& stream, uint32_t index) {
+    return stream.varyingCount == 0 ? nullptr : stream.varyings.data() + size_t(index) * size_t(stream.varyingCount);
+}
+
+ClipVertex clipVertex(const TransformedVertices& v, const VertexStream& stream, uint32_t index) {
+    ClipVertex c;
+    c.position = v.clipPosition(index);
+    for (int k = 0; k < stream.varyingCount; ++k) c.varyings[k] = stream.varyings[size_t(index) * stream.varyingCount + k];
+    return c;
+}
+
+// The slow path, for a triangle with a vertex outside the guard band, near or far plane:
+// clip it, then set up the fan of triangles the clipped polygon forms.
+void clipAndSetup(SetupChunk& chunk, const TransformedVertices& v, const VertexStream& stream, const glm::uvec3& t,
+                  uint32_t id, const Viewport& viewport, const SetupContext& context) {
+    ClipVertex polygon[kMaxClippedVertices + 1] = {clipVertex(v, stream, t.x), clipVertex(v, stream, t.y),
+                                                   clipVertex(v, stream, t.z)};
+    const uint32_t codes = (v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) & ~uint32_t(kBadW);
+    const int n = clipPolygon(polygon, 3, codes, viewport.volume, stream.varyingCount);
+    SetupVertex window[kMaxClippedVertices];
+    for (int k = 0; k < n; ++k) {
+        // Only a projection that puts points in front of the near plane at w <= 0 gets here.
+        if (!(polygon[k].position.w > 0.0f)) return;
+        window[k] = {toWindow(polygon[k].position, viewport.width, viewport.height), polygon[k].varyings};
     }
-    if (viewportCodes != 0) {
-        ++stats.trianglesTriviallyRejected;
-        return;
-    }
-    if (clipCodes == 0) {
-        addSetup(chunk, corners[0], corners[1], corners[2], id, context);
-        return;
-    }
-    ++stats.trianglesClipped;
-    ClipVertex polygon[kMaxClippedVertices + 1] = {corners[0], corners[1], corners[2]};
-    const int n = clipPolygon(polygon, 3, clipCodes, volume, context.varyingCount);
-    for (int k = 1; k + 1 < n; ++k) addSetup(chunk, polygon[0], polygon[k], polygon[k + 1], id, context);
+    for (int k = 1; k + 1 < n; ++k) addSetup(chunk, {window[0], window[k], window[k + 1]}, id, context);
+}
+
+Viewport viewportFor(const Framebuffer& fb, const PipelineState& state) {
+    return {fb.width(), fb.height(), clipVolumeFor(fb.width(), fb.height(), state.clipFar)};
 }
 
 }  // namespace
@@ -87,7 +88,7 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
 
 void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call,
                              size_t firstTriangle, size_t triangleCount, size_t chunkCount) {
-    const ClipVolume volume = clipVolumeFor(framebuffer.width(), framebuffer.height(), state.clipFar);
+    const Viewport viewport = viewportFor(framebuffer, state);
     const SetupContext context = {framebuffer.width(), framebuffer.height(), &state, call.vertices.varyingCount};
     tbb::parallel_for(size_t(0), chunkCount, [&](size_t c) {
         SetupChunk& chunk = chunks_[c];
@@ -96,12 +97,19 @@ void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const PipelineState
         stats = {};
         const size_t begin = firstTriangle + c * kChunkTriangles;
         const size_t end = std::min(begin + kChunkTriangles, firstTriangle + triangleCount);
+        const TransformedVertices& v = vertices_;
         for (size_t i = begin; i < end; ++i) {
             const glm::uvec3& t = call.triangles[i];
-            const ClipVertex corners[3] = {fetchVertex(clipVertices_, call.vertices, t.x),
-                                           fetchVertex(clipVertices_, call.vertices, t.y),
-                                           fetchVertex(clipVertices_, call.vertices, t.z)};
-            processTriangle(chunk, stats, corners, call.firstPrimitiveId + uint32_t(i), volume, context);
+            const uint32_t id = call.firstPrimitiveId + uint32_t(i);
+            if (v.viewportCode[t.x] & v.viewportCode[t.y] & v.viewportCode[t.z]) {
+                ++stats.trianglesTriviallyRejected;   // wholly outside one side of the view volume
+            } else if ((v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) == 0) {
+                addSetup(chunk, {{v.window[t.x], varyingsOf(call.vertices, t.x)}, {v.window[t.y], varyingsOf(call.vertices, t.y)},
+                                 {v.window[t.z], varyingsOf(call.vertices, t.z)}}, id, context);
+            } else {
+                ++stats.trianglesClipped;
+                clipAndSetup(chunk, v, call.vertices, t, id, viewport, context);
+            }
         }
         countTiles(chunk, framebuffer.tilesX(), framebuffer.tilesY());
     });
@@ -120,10 +128,11 @@ void Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& const
 
 void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) {
     validate(framebuffer, state, call);
+    const Viewport viewport = viewportFor(framebuffer, state);
     if (call.vertices.positions.empty()) {
-        transformVertices(call.vertices.homogeneousPositions, call.clipFromObject, clipVertices_);
+        transformVertices(call.vertices.homogeneousPositions, call.clipFromObject, viewport, vertices_);
     } else {
-        transformVertices(call.vertices.positions, call.clipFromObject, clipVertices_);
+        transformVertices(call.vertices.positions, call.clipFromObject, viewport, vertices_);
     }
     DrawConstants constants = {state, {call.constantColor.r, call.constantColor.g, call.constantColor.b, call.constantColor.a},
                                call.vertices.varyingCount};

@@ -65,7 +65,7 @@ private:
 
     SimdLevel level_;
     const TileKernels* kernels_;
-    ClipVertices clipVertices_;
+    TransformedVertices vertices_;
     std::vector<SetupChunk> chunks_;
     std::vector<RasterStats> chunkStats_;
     TileBins bins_;

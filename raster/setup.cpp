@@ -34,31 +34,16 @@ namespace {
 int64_t floorDiv(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 int64_t ceilDiv(int64_t a, int64_t b) { return -floorDiv(-a, b); }
 
-struct WindowVertex {
-    int32_t x, y;        // snapped, sub-pixel units
-    double z;            // window depth
-    double inverseW;
-    const float* varyings;
-};
-
-WindowVertex toWindow(const ClipVertex& v, int width, int height) {
-    const double inverseW = 1.0 / double(v.position.w);
-    const double x = (double(v.position.x) * inverseW + 1.0) * 0.5 * width;
-    const double y = (1.0 - double(v.position.y) * inverseW) * 0.5 * height;   // row 0 at the top
-    const double z = (double(v.position.z) * inverseW + 1.0) * 0.5;
-    return {int32_t(std::nearbyint(x * kSubpixelOne)), int32_t(std::nearbyint(y * kSubpixelOne)), z, inverseW,
-            v.varyings};
-}
-
 // Rotate so the vertex with the smallest (y, x) comes first: the planes are then computed
 // from the same base vertex however the triangle was submitted (llvmpipe warns that the
 // same primitive rotated otherwise gives different z).
-void canonicalRotation(WindowVertex v[3]) {
+void canonicalRotation(SetupVertex v[3]) {
     int first = 0;
     for (int k = 1; k < 3; ++k) {
-        if (v[k].y < v[first].y || (v[k].y == v[first].y && v[k].x < v[first].x)) first = k;
+        const WindowVertex &a = v[k].window, &b = v[first].window;
+        if (a.y < b.y || (a.y == b.y && a.x < b.x)) first = k;
     }
-    const WindowVertex r[3] = {v[first], v[(first + 1) % 3], v[(first + 2) % 3]};
+    const SetupVertex r[3] = {v[first], v[(first + 1) % 3], v[(first + 2) % 3]};
     for (int k = 0; k < 3; ++k) v[k] = r[k];
 }
 
@@ -66,11 +51,11 @@ struct PixelBounds {
     int32_t minX, minY, maxX, maxY;
 };
 
-PixelBounds pixelBounds(const WindowVertex v[3], bool conservative, int width, int height) {
-    int64_t lo[2] = {v[0].x, v[0].y}, hi[2] = {v[0].x, v[0].y};
+PixelBounds pixelBounds(const SetupVertex c[3], bool conservative, int width, int height) {
+    int64_t lo[2] = {c[0].window.x, c[0].window.y}, hi[2] = {c[0].window.x, c[0].window.y};
     for (int k = 1; k < 3; ++k) {
-        lo[0] = std::min<int64_t>(lo[0], v[k].x), hi[0] = std::max<int64_t>(hi[0], v[k].x);
-        lo[1] = std::min<int64_t>(lo[1], v[k].y), hi[1] = std::max<int64_t>(hi[1], v[k].y);
+        lo[0] = std::min<int64_t>(lo[0], c[k].window.x), hi[0] = std::max<int64_t>(hi[0], c[k].window.x);
+        lo[1] = std::min<int64_t>(lo[1], c[k].window.y), hi[1] = std::max<int64_t>(hi[1], c[k].window.y);
     }
     int64_t first[2], end[2];
     for (int axis = 0; axis < 2; ++axis) {
@@ -88,10 +73,10 @@ PixelBounds pixelBounds(const WindowVertex v[3], bool conservative, int width, i
             int32_t(std::min<int64_t>(end[0], width)), int32_t(std::min<int64_t>(end[1], height))};
 }
 
-void setupEdges(const WindowVertex v[3], int64_t sign, bool conservative, TriangleSetup& out) {
+void setupEdges(const SetupVertex c[3], int64_t sign, bool conservative, TriangleSetup& out) {
     for (int k = 0; k < 3; ++k) {
-        const WindowVertex& a = v[k];
-        const WindowVertex& b = v[(k + 1) % 3];
+        const WindowVertex& a = c[k].window;
+        const WindowVertex& b = c[(k + 1) % 3].window;
         const int64_t A = -sign * (int64_t(b.y) - a.y);
         const int64_t B = sign * (int64_t(b.x) - a.x);
         const int64_t C = -(A * a.x + B * a.y);
@@ -100,16 +85,17 @@ void setupEdges(const WindowVertex v[3], int64_t sign, bool conservative, Triang
                                        : kSubpixelHalf * (A + B) + C - (topLeft ? 0 : 1);
         out.edgeA[k] = int32_t(A);
         out.edgeB[k] = int32_t(B);
-        out.edgeC[k] = floorDiv(K, kSubpixelOne);
+        out.edgeC[k] = K >> kSubpixelBits;   // floor(K / 256): C++20 shifts are arithmetic
     }
 }
 
 // The affine function of window (x, y) taking values q[k] at the three vertices, evaluated
 // in double and handed to the kernels as float at the centre of the reference pixel.
-Plane planeThrough(const WindowVertex v[3], const double q[3], int32_t refX, int32_t refY, double offset = 0.0) {
-    const double x0 = v[0].x / double(kSubpixelOne), y0 = v[0].y / double(kSubpixelOne);
-    const double x1 = v[1].x / double(kSubpixelOne) - x0, y1 = v[1].y / double(kSubpixelOne) - y0;
-    const double x2 = v[2].x / double(kSubpixelOne) - x0, y2 = v[2].y / double(kSubpixelOne) - y0;
+Plane planeThrough(const SetupVertex c[3], const double q[3], int32_t refX, int32_t refY, double offset = 0.0) {
+    const WindowVertex *v0 = &c[0].window, *v1 = &c[1].window, *v2 = &c[2].window;
+    const double x0 = v0->x / double(kSubpixelOne), y0 = v0->y / double(kSubpixelOne);
+    const double x1 = v1->x / double(kSubpixelOne) - x0, y1 = v1->y / double(kSubpixelOne) - y0;
+    const double x2 = v2->x / double(kSubpixelOne) - x0, y2 = v2->y / double(kSubpixelOne) - y0;
     const double det = x1 * y2 - x2 * y1;
     const double perX = ((q[1] - q[0]) * y2 - (q[2] - q[0]) * y1) / det;
     const double perY = ((q[2] - q[0]) * x1 - (q[1] - q[0]) * x2) / det;
@@ -119,43 +105,41 @@ Plane planeThrough(const WindowVertex v[3], const double q[3], int32_t refX, int
 
 // OpenGL 4.6 section 14.6.5: factor * max slope + units * r, where for a float depth
 // buffer r = 2^(e - 23) and e is the exponent of the triangle's largest depth.
-double polygonOffset(const PolygonOffset& offset, const WindowVertex v[3], const Plane& depth) {
+double polygonOffset(const PolygonOffset& offset, const SetupVertex c[3], const Plane& depth) {
     if (offset.factor == 0.0f && offset.units == 0.0f) return 0.0;
     const double maxSlope = std::max(std::abs(double(depth.perX)), std::abs(double(depth.perY)));
-    const double maxZ = std::max({std::abs(v[0].z), std::abs(v[1].z), std::abs(v[2].z)});
+    const double maxZ = std::max({std::abs(c[0].window.z), std::abs(c[1].window.z), std::abs(c[2].window.z)});
     int exponent = 0;
     std::frexp(maxZ, &exponent);   // maxZ = m 2^exponent, m in [0.5, 1): IEEE exponent is exponent - 1
     const double r = std::ldexp(1.0, exponent - 1 - 23);
     return offset.factor * maxSlope + offset.units * r;
 }
 
-void setupPlanes(const WindowVertex v[3], const SetupContext& context, TriangleSetup& out,
+void setupPlanes(const SetupVertex v[3], const SetupContext& context, TriangleSetup& out,
                  std::vector<Plane>& planes) {
-    const double z[3] = {v[0].z, v[1].z, v[2].z};
+    const double z[3] = {v[0].window.z, v[1].window.z, v[2].window.z};
     out.depth = planeThrough(v, z, out.minX, out.minY);
     const double offset = polygonOffset(context.state->offset, v, out.depth);
     if (offset != 0.0) out.depth = planeThrough(v, z, out.minX, out.minY, offset);
     if (context.state->output != FragmentOutput::VaryingColor) return;
     // Perspective-correct interpolation: 1/w and a/w are affine in window space.
-    const double inverseW[3] = {v[0].inverseW, v[1].inverseW, v[2].inverseW};
+    const double inverseW[3] = {v[0].window.inverseW, v[1].window.inverseW, v[2].window.inverseW};
     planes.push_back(planeThrough(v, inverseW, out.minX, out.minY));
     for (int k = 0; k < context.varyingCount; ++k) {
-        const double q[3] = {v[0].varyings[k] * v[0].inverseW, v[1].varyings[k] * v[1].inverseW,
-                             v[2].varyings[k] * v[2].inverseW};
+        const double q[3] = {v[0].varyings[k] * inverseW[0], v[1].varyings[k] * inverseW[1],
+                             v[2].varyings[k] * inverseW[2]};
         planes.push_back(planeThrough(v, q, out.minX, out.minY));
     }
 }
 
 }  // namespace
 
-bool setupTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, uint32_t primitiveId,
-                   const SetupContext& context, TriangleSetup& out, std::vector<Plane>& planes) {
-    if (!(a.position.w > 0.0f && b.position.w > 0.0f && c.position.w > 0.0f)) return false;
-    WindowVertex v[3] = {toWindow(a, context.width, context.height), toWindow(b, context.width, context.height),
-                         toWindow(c, context.width, context.height)};
+bool setupTriangle(const SetupVertex (&corners)[3], uint32_t primitiveId, const SetupContext& context,
+                   TriangleSetup& out, std::vector<Plane>& planes) {
+    SetupVertex v[3] = {corners[0], corners[1], corners[2]};
     canonicalRotation(v);
-    const int64_t det = (int64_t(v[1].x) - v[0].x) * (int64_t(v[2].y) - v[0].y) -
-                        (int64_t(v[2].x) - v[0].x) * (int64_t(v[1].y) - v[0].y);
+    const WindowVertex &a = v[0].window, &b = v[1].window, &c = v[2].window;
+    const int64_t det = (int64_t(b.x) - a.x) * (int64_t(c.y) - a.y) - (int64_t(c.x) - a.x) * (int64_t(b.y) - a.y);
     if (det == 0) return false;
     // Counter-clockwise in NDC (y up) is clockwise in window space (y down): det < 0.
     out.frontFacing = det < 0;

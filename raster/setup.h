@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "raster/clip.h"
 #include "raster/pipeline_state.h"
 #include "raster/triangle_setup.h"
+#include "raster/window.h"
 
 namespace shadowlab::raster {
 
@@ -17,11 +17,17 @@ struct SetupContext {
     int varyingCount;
 };
 
-// Sets up the triangle (a, b, c), given in clip space with w > 0. Returns false when it is
-// culled, degenerate after snapping, or covers no pixel centre (no pixel at all, in
-// conservative mode). Its varying planes are appended to `planes`; `out.varyings` is left
-// for the caller to point at them once `planes` stops growing.
-bool setupTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, uint32_t primitiveId,
-                   const SetupContext& context, TriangleSetup& out, std::vector<Plane>& planes);
+// A triangle corner after the viewport transform, with its varyings (null when none).
+struct SetupVertex {
+    WindowVertex window;
+    const float* varyings;
+};
+
+// Sets up one triangle. Returns false when it is culled, degenerate after snapping, or
+// covers no pixel centre (no pixel at all, in conservative mode). Its varying planes are
+// appended to `planes`; `out.varyings` is left for the caller to point at them once
+// `planes` stops growing.
+bool setupTriangle(const SetupVertex (&corners)[3], uint32_t primitiveId, const SetupContext& context,
+                   TriangleSetup& out, std::vector<Plane>& planes);
 
 }  // namespace shadowlab::raster

@@ -1,23 +1,44 @@
-// The vertex stage: object-space positions to clip space, structure-of-arrays, so the
-// loop is a plain multiply-add over arrays that the compiler vectorises (each lane the
-// same IEEE operations in the same order, so the result does not depend on the width).
+// The vertex stage: object space to clip space and, for every vertex that needs no
+// clipping, on to snapped window coordinates, once per vertex rather than once per
+// triangle that uses it. Structure-of-arrays loops: each lane the same IEEE operations in
+// the same order, so the result does not depend on how the compiler vectorises them.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "raster/clip.h"
+#include "raster/window.h"
+
 namespace shadowlab::raster {
 
-struct ClipVertices {
-    std::vector<float> x, y, z, w;
+struct TransformedVertices {
+    std::vector<float> x, y, z, w;            // clip space
+    std::vector<uint8_t> clipCode;            // clipOutcode(), plus kBadW when !(w > 0)
+    std::vector<uint8_t> viewportCode;        // viewportOutcode()
+    std::vector<WindowVertex> window;         // valid where clipCode == 0
+
     size_t size() const { return x.size(); }
+    glm::vec4 clipPosition(uint32_t i) const { return {x[i], y[i], z[i], w[i]}; }
+};
+
+// Bit set in clipCode for a vertex whose w is not positive (or NaN): such a vertex cannot
+// be divided by w, so its triangles take the clipping path, where setup drops what is left.
+inline constexpr uint8_t kBadW = 0x80;
+
+struct Viewport {
+    int width, height;
+    ClipVolume volume;
 };
 
 // Positions with w = 1 (ordinary points).
-void transformVertices(std::span<const glm::vec3> positions, const glm::mat4& clipFromObject, ClipVertices& out);
+void transformVertices(std::span<const glm::vec3> positions, const glm::mat4& clipFromObject,
+                       const Viewport& viewport, TransformedVertices& out);
 // Homogeneous positions (w = 0 for points at infinity, as shadow-volume extrusion needs).
-void transformVertices(std::span<const glm::vec4> positions, const glm::mat4& clipFromObject, ClipVertices& out);
+void transformVertices(std::span<const glm::vec4> positions, const glm::mat4& clipFromObject,
+                       const Viewport& viewport, TransformedVertices& out);
 
 }  // namespace shadowlab::raster
