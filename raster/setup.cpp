@@ -96,9 +96,9 @@ Plane planeThrough(const SetupVertex c[3], const double q[3], int32_t refX, int3
     const double x0 = v0->x / double(kSubpixelOne), y0 = v0->y / double(kSubpixelOne);
     const double x1 = v1->x / double(kSubpixelOne) - x0, y1 = v1->y / double(kSubpixelOne) - y0;
     const double x2 = v2->x / double(kSubpixelOne) - x0, y2 = v2->y / double(kSubpixelOne) - y0;
-    const double det = x1 * y2 - x2 * y1;
-    const double perX = ((q[1] - q[0]) * y2 - (q[2] - q[0]) * y1) / det;
-    const double perY = ((q[2] - q[0]) * x1 - (q[1] - q[0]) * x2) / det;
+    const double inverseDet = 1.0 / (x1 * y2 - x2 * y1);
+    const double perX = ((q[1] - q[0]) * y2 - (q[2] - q[0]) * y1) * inverseDet;
+    const double perY = ((q[2] - q[0]) * x1 - (q[1] - q[0]) * x2) * inverseDet;
     const double atRef = q[0] + perX * (refX + 0.5 - x0) + perY * (refY + 0.5 - y0) + offset;
     return {float(atRef), float(perX), float(perY)};
 }

@@ -175,44 +175,48 @@ inline void shadeFragments(const TriangleSetup& tri, const DrawConstants& draw, 
     }
 }
 
-// An edge that crosses the current tile, in int32: A, B and its value at a reference pixel.
+// An edge that crosses the current tile, in int32: A, B, its value at the tile's origin,
+// and A * x + B * y for the pixels of every vector of a block, relative to the block's
+// origin (so a pixel's edge value is one add: the block's value plus the lane offset).
 struct CrossingEdge {
-    int32_t a, b, value;
+    int32_t a, b, atTile;
+    I32 laneOffset[kPixelsPerBlock / simd::kWidth];
 };
 
 struct PixelRect {
     int x0, y0, x1, y1;   // half-open
 };
 
+// Lane k of vector v of a block is the block's pixel v * W + k (row-major, 8 per row).
+inline I32 blockLaneX(int v) { return (simd::splat(int32_t(v * simd::kWidth)) + simd::laneIndex()) & simd::splat(int32_t(kBlockSize - 1)); }
+inline I32 blockLaneY(int v) { return simd::shiftRight<kBlockShift>(simd::splat(int32_t(v * simd::kWidth)) + simd::laneIndex()); }
+
 template <FragmentOutput kOutput, bool kStencil>
 void rasterizeBlock(const TriangleSetup& tri, const DrawConstants& draw, const FramebufferView& fb,
                     const CrossingEdge* tileEdges, int tileEdgeCount, int tileX, int tileY,
                     int blockX, int blockY, const PixelRect& region, size_t blockOffset) {
     // Coarse test: the extreme corners of the 8x8 block decide reject, accept or test.
-    CrossingEdge edges[3];
+    const CrossingEdge* edges[3];
+    int32_t atBlock[3];
     int edgeCount = 0;
     constexpr int32_t kLast = kBlockSize - 1;
     for (int k = 0; k < tileEdgeCount; ++k) {
         const CrossingEdge& e = tileEdges[k];
-        const int32_t atBlock = e.value + e.a * (blockX - tileX) + e.b * (blockY - tileY);
-        const int32_t highest = atBlock + positivePart(e.a) * kLast + positivePart(e.b) * kLast;
-        const int32_t lowest = atBlock + negativePart(e.a) * kLast + negativePart(e.b) * kLast;
+        const int32_t value = e.atTile + e.a * (blockX - tileX) + e.b * (blockY - tileY);
+        const int32_t highest = value + positivePart(e.a) * kLast + positivePart(e.b) * kLast;
+        const int32_t lowest = value + negativePart(e.a) * kLast + negativePart(e.b) * kLast;
         if (highest < 0) return;
-        if (lowest < 0) edges[edgeCount++] = {e.a, e.b, atBlock};
+        if (lowest < 0) edges[edgeCount] = &e, atBlock[edgeCount++] = value;
     }
     const bool blockInsideRegion = blockX >= region.x0 && blockX + kBlockSize <= region.x1 &&
                                    blockY >= region.y0 && blockY + kBlockSize <= region.y1;
     const I32 minusOne = simd::splat(int32_t(-1));
     for (int v = 0; v < kPixelsPerBlock / simd::kWidth; ++v) {
-        const I32 position = simd::splat(int32_t(v * simd::kWidth)) + simd::laneIndex();
-        const I32 laneX = position & simd::splat(int32_t(kBlockSize - 1));
-        const I32 laneY = simd::shiftRight<kBlockShift>(position);
         Mask covered = simd::allLanes();
         for (int k = 0; k < edgeCount; ++k) {
-            const I32 e = simd::splat(edges[k].value) + simd::splat(edges[k].a) * laneX + simd::splat(edges[k].b) * laneY;
-            covered = covered & simd::cmpGt(e, minusOne);
+            covered = covered & simd::cmpGt(simd::splat(atBlock[k]) + edges[k]->laneOffset[v], minusOne);
         }
-        const I32 x = simd::splat(int32_t(blockX)) + laneX, y = simd::splat(int32_t(blockY)) + laneY;
+        const I32 x = simd::splat(int32_t(blockX)) + blockLaneX(v), y = simd::splat(int32_t(blockY)) + blockLaneY(v);
         if (!blockInsideRegion) {
             covered = covered & simd::cmpGt(x, simd::splat(int32_t(region.x0 - 1))) & simd::cmpGt(simd::splat(int32_t(region.x1)), x) &
                       simd::cmpGt(y, simd::splat(int32_t(region.y0 - 1))) & simd::cmpGt(simd::splat(int32_t(region.y1)), y);
@@ -239,7 +243,11 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const Draw
         const int64_t highest = c + a * (a > 0 ? region.x1 - 1 : region.x0) + b * (b > 0 ? region.y1 - 1 : region.y0);
         if (highest < 0) return;
         if (lowest >= 0) continue;
-        edges[edgeCount++] = {int32_t(a), int32_t(b), int32_t(c + a * tileX + b * tileY)};
+        CrossingEdge& e = edges[edgeCount++];
+        e.a = int32_t(a), e.b = int32_t(b), e.atTile = int32_t(c + a * tileX + b * tileY);
+        for (int v = 0; v < kPixelsPerBlock / simd::kWidth; ++v) {
+            e.laneOffset[v] = simd::splat(e.a) * blockLaneX(v) + simd::splat(e.b) * blockLaneY(v);
+        }
     }
 
     const size_t tileOffset = size_t(tileIndex) * kPixelsPerTile;

@@ -1,0 +1,181 @@
+// Micro-benchmarks of the rasterizer's stages on the `bunny` scene seen from its light
+// (the depth-only shadow-map pass): vertex stage, setup, binning, and per-tile
+// rasterization for each SIMD level; and a fill-rate sweep by triangle size (as Masked
+// Occlusion Culling's FillrateTest). Run: build/bench/bench_stages (Google Benchmark flags
+// apply, e.g. --benchmark_repetitions=10 --benchmark_report_aggregates_only=true).
+#include <benchmark/benchmark.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <tbb/global_control.h>
+
+#include "raster/bin.h"
+#include "raster/rasterizer.h"
+#include "raster/setup.h"
+#include "scenes/scene_file.h"
+
+using namespace shadowlab;
+using namespace shadowlab::raster;
+
+namespace {
+
+constexpr int kMapSize = 2048;
+
+struct LightPass {
+    WorldGeometry world;
+    glm::mat4 clipFromWorld;
+    PipelineState state;   // depth-only, back faces culled
+    Viewport viewport{kMapSize, kMapSize, clipVolumeFor(kMapSize, kMapSize, true)};
+
+    LightPass() : world(flatten(loadScene("bunny"))) {
+        const glm::vec3 light(4, 8, 3);
+        clipFromWorld = glm::perspective(glm::radians(90.0f), 1.0f, 0.5f, 50.0f) * glm::lookAt(light, glm::vec3(0), glm::vec3(0, 1, 0));
+    }
+};
+
+const LightPass& lightPass() {
+    static const LightPass pass;
+    return pass;
+}
+
+// The front end up to setup, on one thread, for triangles that need no clipping.
+SetupChunk setUp(const LightPass& p, const TransformedVertices& v) {
+    SetupChunk chunk;
+    const SetupContext context = {kMapSize, kMapSize, &p.state, 0};
+    for (const glm::uvec3& t : p.world.triangles) {
+        if ((v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) != 0) continue;
+        TriangleSetup s;
+        if (setupTriangle({{v.window[t.x], nullptr}, {v.window[t.y], nullptr}, {v.window[t.z], nullptr}}, 0, context, s, chunk.planes)) {
+            chunk.triangles.push_back(s);
+            chunk.planeStart.push_back(0);
+        }
+    }
+    return chunk;
+}
+
+void BM_VertexStage(benchmark::State& state) {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const LightPass& p = lightPass();
+    TransformedVertices v;
+    for (auto _ : state) {
+        transformVertices(std::span<const glm::vec3>(p.world.positions), p.clipFromWorld, p.viewport, v);
+        benchmark::DoNotOptimize(v.window.data());
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(p.world.positions.size()));
+}
+
+void BM_Setup(benchmark::State& state) {
+    const LightPass& p = lightPass();
+    TransformedVertices v;
+    transformVertices(std::span<const glm::vec3>(p.world.positions), p.clipFromWorld, p.viewport, v);
+    for (auto _ : state) {
+        SetupChunk chunk = setUp(p, v);
+        benchmark::DoNotOptimize(chunk.triangles.data());
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(p.world.triangles.size()));
+}
+
+void BM_Binning(benchmark::State& state) {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const LightPass& p = lightPass();
+    TransformedVertices v;
+    transformVertices(std::span<const glm::vec3>(p.world.positions), p.clipFromWorld, p.viewport, v);
+    std::vector<SetupChunk> chunks = {setUp(p, v)};
+    const int tiles = kMapSize / kTileSize;
+    TileBins bins;
+    for (auto _ : state) {
+        countTiles(chunks[0], tiles, tiles);
+        fillBins(chunks, 1, tiles, tiles, bins);
+        benchmark::DoNotOptimize(bins.entries.data());
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(chunks[0].triangles.size()));
+}
+
+// Per-tile rasterization of the binned triangles, one thread; argument: SIMD level.
+void BM_RasterTiles(benchmark::State& state) {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const auto level = SimdLevel(state.range(0));
+    if (!simdLevelSupported(level)) {
+        state.SkipWithError("SIMD level not supported on this CPU");
+        return;
+    }
+    const LightPass& p = lightPass();
+    TransformedVertices v;
+    transformVertices(std::span<const glm::vec3>(p.world.positions), p.clipFromWorld, p.viewport, v);
+    std::vector<SetupChunk> chunks = {setUp(p, v)};
+    const int tiles = kMapSize / kTileSize;
+    countTiles(chunks[0], tiles, tiles);
+    TileBins bins;
+    fillBins(chunks, 1, tiles, tiles, bins);
+    Framebuffer fb(kMapSize, kMapSize);
+    const DrawConstants constants = {p.state, {1, 1, 1, 1}, 0};
+    const TileKernel kernel = tileKernels(level).kernel[int(FragmentOutput::DepthOnly)][0];
+    const FramebufferView view = fb.view();
+    for (auto _ : state) {
+        fb.clearDepth(1.0f);
+        for (int tile = 0; tile < tiles * tiles; ++tile) {
+            for (uint32_t e = bins.start[size_t(tile)]; e < bins.start[size_t(tile) + 1]; ++e) kernel(*bins.entries[e], tile, constants, view);
+        }
+        benchmark::DoNotOptimize(view.depth);
+    }
+    state.SetLabel(simdLevelName(level));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(bins.entries.size()));
+}
+
+// Fill rate by triangle size: a grid of right triangles of the given leg in pixels
+// covering a 1024x1024 target twice (two layers, the second behind the first), depth-only.
+void BM_FillRate(benchmark::State& state) {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const int leg = int(state.range(0));
+    const auto level = SimdLevel(state.range(1));
+    if (!simdLevelSupported(level)) {
+        state.SkipWithError("SIMD level not supported on this CPU");
+        return;
+    }
+    constexpr int kSize = 1024;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::uvec3> triangles;
+    for (float z : {0.25f, 0.75f}) {
+        for (int y = 0; y + leg <= kSize; y += leg) {
+            for (int x = 0; x + leg <= kSize; x += leg) {
+                const auto base = uint32_t(positions.size());
+                for (glm::vec2 c : {glm::vec2(x, y), glm::vec2(x, y + leg), glm::vec2(x + leg, y + leg), glm::vec2(x + leg, y)}) {
+                    positions.push_back(glm::vec3(2.0f * c.x / kSize - 1.0f, 1.0f - 2.0f * c.y / kSize, 2.0f * z - 1.0f));
+                }
+                triangles.push_back({base, base + 1, base + 2});
+                triangles.push_back({base, base + 2, base + 3});
+            }
+        }
+    }
+    Framebuffer fb(kSize, kSize);
+    Rasterizer r(level);
+    PipelineState s;
+    DrawCall call;
+    call.vertices.positions = positions;
+    call.triangles = triangles;
+    for (auto _ : state) {
+        fb.clearDepth(1.0f);
+        r.draw(fb, s, call);
+    }
+    state.SetLabel(simdLevelName(level));
+    state.counters["Mtris/s"] = benchmark::Counter(double(triangles.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["Mpix/s"] = benchmark::Counter(2.0 * kSize * kSize * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void simdLevels(benchmark::internal::Benchmark* b) {
+    for (SimdLevel l : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) b->Arg(int(l));
+}
+
+void fillRateSizes(benchmark::internal::Benchmark* b) {
+    for (int leg : {2, 4, 8, 16, 32, 64, 128, 256}) {
+        for (SimdLevel l : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) b->Args({leg, int(l)});
+    }
+}
+
+}  // namespace
+
+BENCHMARK(BM_VertexStage)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Setup)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Binning)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RasterTiles)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();
