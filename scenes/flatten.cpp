@@ -1,0 +1,41 @@
+// flatten(): the world-space triangle list that every technique renders (scene.h).
+#include "scenes/scene.h"
+
+namespace shadowlab {
+namespace {
+
+void reserveFor(const Scene& scene, WorldGeometry& world) {
+    size_t vertices = 0, triangles = 0;
+    for (const MeshInstance& instance : scene.instances) {
+        vertices += scene.meshes[instance.mesh].positions.size();
+        triangles += scene.meshes[instance.mesh].triangles.size();
+    }
+    world.positions.reserve(vertices);
+    world.triangles.reserve(triangles);
+    world.triangleMaterial.reserve(triangles);
+    world.triangleInstance.reserve(triangles);
+}
+
+}  // namespace
+
+WorldGeometry flatten(const Scene& scene) {
+    WorldGeometry world;
+    reserveFor(scene, world);
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const MeshInstance& instance = scene.instances[i];
+        const Mesh& mesh = scene.meshes[instance.mesh];
+        const uint32_t base = uint32_t(world.positions.size());
+        // Plain float mat4 * vec4, so that anyone can reproduce these positions bit for
+        // bit; instance transforms are affine (the loader checks), so w stays 1.
+        for (const glm::vec3& p : mesh.positions)
+            world.positions.emplace_back(instance.worldFromObject * glm::vec4(p, 1.0f));
+        for (const glm::uvec3& t : mesh.triangles) {
+            world.triangles.push_back(t + base);
+            world.triangleMaterial.push_back(instance.material);
+            world.triangleInstance.push_back(i);
+        }
+    }
+    return world;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,114 @@
+#include "scenes/obj_reader.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <string_view>
+
+#include <tiny_obj_loader.h>
+
+#include "scenes/float_range.h"
+#include "scenes/read_file.h"
+#include "scenes/scene_file.h"
+
+namespace shadowlab {
+namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+// True for a statement "<keyword> ..." the way tinyobjloader recognises it.
+bool isStatement(std::string_view line, char keyword) {
+    return line.size() >= 2 && line[0] == keyword && isBlank(line[1]);
+}
+
+bool isFiniteFloat(std::string_view token) {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return error == std::errc() && end == token.data() + token.size() && roundsToFiniteFloat(value);
+}
+
+void checkVertexLine(std::string_view line, size_t lineNumber, const std::string& file) {
+    std::istringstream words{std::string(line.substr(1))};
+    std::string token;
+    for (const char* axis : {"x", "y", "z"}) {
+        if (!(words >> token))
+            throw SceneError(file + ": line " + std::to_string(lineNumber) + ": vertex has no " + axis);
+        if (!isFiniteFloat(token))
+            throw SceneError(file + ": line " + std::to_string(lineNumber) + ": vertex " + axis + " \"" +
+                             token + "\" is not a finite float");
+    }
+}
+
+// tinyobjloader reads a coordinate it cannot parse ("nan", "1,5", a missing z) as 0
+// without a word, and drops faces with fewer than 3 vertices with only a warning. Such a
+// file would render plausibly and wrongly, so the text is checked first: every "v" line
+// must hold three finite numbers. Returns the number of "f" lines, so that any face
+// tinyobjloader dropped can be noticed.
+size_t checkObjText(const std::string& text, const std::string& file) {
+    size_t faceLines = 0, lineNumber = 0;
+    for (size_t pos = 0; pos < text.size(); ++lineNumber) {
+        size_t end = text.find('\n', pos);
+        if (end == std::string::npos) end = text.size();
+        std::string_view line = std::string_view(text).substr(pos, end - pos);
+        pos = end + 1;
+        while (!line.empty() && isBlank(line.front())) line.remove_prefix(1);
+        if (isStatement(line, 'v')) checkVertexLine(line, lineNumber + 1, file);
+        faceLines += isStatement(line, 'f');
+    }
+    return faceLines;
+}
+
+std::string trimmed(std::string text) {
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+    return text;
+}
+
+// Fan-triangulates every face, checking its indices; faces are counted from 0 in file order.
+void addFaces(const tinyobj::shape_t& shape, size_t vertexCount, size_t& face, Mesh& mesh, const std::string& file) {
+    size_t next = 0;
+    for (const unsigned char cornerCount : shape.mesh.num_face_vertices) {
+        const tinyobj::index_t* corners = &shape.mesh.indices[next];
+        next += cornerCount;
+        for (size_t c = 0; c < cornerCount; ++c) {
+            const int index = corners[c].vertex_index;
+            if (index < 0 || size_t(index) >= vertexCount)
+                throw SceneError(file + ": face " + std::to_string(face) + ": vertex index " +
+                                 std::to_string(int64_t(index) + 1) + " (1-based) is out of range (the file has " +
+                                 std::to_string(vertexCount) + " vertices)");
+        }
+        for (size_t c = 1; c + 1 < cornerCount; ++c)
+            mesh.triangles.emplace_back(corners[0].vertex_index, corners[c].vertex_index, corners[c + 1].vertex_index);
+        ++face;
+    }
+    // tinyobjloader stores corner counts as unsigned char, so a larger face leaves
+    // indices over.
+    if (next != shape.mesh.indices.size())
+        throw SceneError(file + ": a face has more than 255 vertices, which tinyobjloader cannot represent");
+}
+
+}  // namespace
+
+Mesh readObj(const std::string& path) {
+    const std::string text = readWholeFile(path);
+    const size_t faceLines = checkObjText(text, path);
+
+    // Parsing from a string skips "mtllib": materials come from the scene file.
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = false;   // fans below, the same rule as for PLY
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromString(text, "", config)) throw SceneError(path + ": " + trimmed(reader.Error()));
+
+    Mesh mesh;
+    mesh.source = path;
+    const std::vector<tinyobj::real_t>& xyz = reader.GetAttrib().vertices;
+    for (size_t i = 0; i + 2 < xyz.size(); i += 3) mesh.positions.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+    size_t face = 0;
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) addFaces(shape, mesh.positions.size(), face, mesh, path);
+    if (face != faceLines)
+        throw SceneError(path + ": " + std::to_string(faceLines - face) + " face(s) with fewer than 3 vertices");
+    return mesh;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,16 @@
+// Reading triangle meshes from Wavefront OBJ files.
+#pragma once
+
+#include <string>
+
+#include "scenes/scene.h"
+
+namespace shadowlab {
+
+// Positions ("v") and polygons ("f", triangulated as fans) of every object and group;
+// normals, texture coordinates, lines, points and materials are ignored. Throws
+// SceneError naming the file and the line or face for non-finite or unparsable
+// coordinates, indices out of range and faces with fewer than 3 vertices.
+Mesh readObj(const std::string& path);
+
+}  // namespace shadowlab

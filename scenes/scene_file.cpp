@@ -1,0 +1,159 @@
+// Finding and reading scene files (docs/scene-format.md): the top level, materials,
+// camera and environment; meshes, instances and lights have a file each.
+#include "scenes/scene_file.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+
+#include "scenes/read_file.h"
+#include "scenes/scene_file_parts.h"
+
+namespace shadowlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::array<std::pair<std::string_view, MaterialModel>, 2> kMaterialModels{{
+    {"lambert", MaterialModel::Lambert}, {"blinn-phong", MaterialModel::BlinnPhong}}};
+
+constexpr Interval kFovyDeg{0.0, 180.0, true, true};
+constexpr Interval kImageSize{1.0, 16384.0, false, false};
+
+// Vectors whose angle has a sine below this count as parallel (a camera "up" along the
+// viewing direction leaves the image's roll undefined).
+constexpr double kParallelSine = 1e-6;
+
+// Specular terms exist only for Blinn-Phong; accepting them on a Lambert material would
+// silently ignore them.
+void readMaterial(const JsonField& field, Scene& scene, SceneNames& names) {
+    const JsonObject object = field.object();
+    Material material;
+    const JsonField nameField = object["name"];
+    material.name = nameField.string();
+    if (std::ranges::find(names.materials, material.name) != names.materials.end())
+        nameField.fail("another material is already named \"" + material.name + "\"");
+    if (const auto model = object.optional("model")) material.model = model->choice(kMaterialModels);
+    if (material.model == MaterialModel::Lambert) object.allowOnly({"name", "model", "albedo"});
+    else object.allowOnly({"name", "model", "albedo", "specular", "shininess"});
+    if (const auto albedo = object.optional("albedo")) material.albedo = albedo->vec3(kUnitInterval);
+    if (const auto specular = object.optional("specular")) material.specular = specular->vec3(kUnitInterval);
+    if (const auto shininess = object.optional("shininess")) material.shininess = shininess->number(kPositive);
+    scene.materials.push_back(material);
+    names.materials.push_back(material.name);
+}
+
+void checkViewFrame(const JsonObject& object, const Camera& camera) {
+    const glm::dvec3 forward = glm::dvec3(camera.target) - glm::dvec3(camera.eye);
+    const glm::dvec3 up(camera.up);
+    if (!(glm::length(forward) > 0.0)) object["target"].fail("must differ from eye");
+    const JsonField upField = object.has("up") ? object["up"] : object.field();
+    if (!(glm::length(glm::cross(forward, up)) > kParallelSine * glm::length(forward) * glm::length(up)))
+        upField.fail("up must not be zero or parallel to the viewing direction");
+}
+
+Camera readCamera(const JsonField& field) {
+    const JsonObject object = field.object({"eye", "target", "up", "fovy", "width", "height", "near", "far"});
+    Camera camera;
+    camera.eye = object["eye"].vec3();
+    camera.target = object["target"].vec3();
+    if (const auto up = object.optional("up")) camera.up = up->vec3();
+    camera.fovyDeg = object["fovy"].number(kFovyDeg);
+    camera.width = object["width"].integer(kImageSize);
+    camera.height = object["height"].integer(kImageSize);
+    if (const auto zNear = object.optional("near")) camera.zNear = zNear->number(kPositive);
+    if (const auto zFar = object.optional("far")) camera.zFar = zFar->number(kPositive);
+    if (!(camera.zFar > camera.zNear))
+        (object.has("far") ? object["far"] : object["near"])
+            .fail("near must be less than far, got near " + std::to_string(camera.zNear) + ", far " +
+                  std::to_string(camera.zFar));
+    checkViewFrame(object, camera);
+    return camera;
+}
+
+Environment readEnvironment(const JsonField& field) {
+    const JsonObject object = field.object({"ambient"});
+    Environment environment;
+    if (const auto ambient = object.optional("ambient")) environment.ambient = ambient->vec3(kNonNegative);
+    return environment;
+}
+
+// Nothing to render is a mistake, and WorldGeometry indexes all vertices with 32 bits.
+void checkSize(const JsonField& root, const Scene& scene) {
+    uint64_t vertices = 0, triangles = 0;
+    for (const MeshInstance& instance : scene.instances) {
+        vertices += scene.meshes[instance.mesh].positions.size();
+        triangles += scene.meshes[instance.mesh].triangles.size();
+    }
+    if (triangles == 0) root.fail("the scene has no triangles");
+    if (vertices > std::numeric_limits<uint32_t>::max())
+        root.fail("the scene has " + std::to_string(vertices) + " world-space vertices, more than 32-bit indices can address");
+}
+
+Scene readScene(const JsonField& root, const std::string& directory, const std::string& name) {
+    const JsonObject object =
+        root.object({"description", "meshes", "materials", "instances", "lights", "camera", "environment"});
+    if (const auto description = object.optional("description")) description->string();   // for readers only
+    Scene scene;
+    scene.name = name;
+    SceneNames names;
+    readMeshes(object["meshes"], directory, scene, names);
+    for (const JsonField& material : object["materials"].elements()) readMaterial(material, scene, names);
+    for (const JsonField& instance : object["instances"].elements()) readInstance(instance, names, scene);
+    for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light));
+    if (scene.lights.empty()) object["lights"].fail("needs at least one light");
+    scene.camera = readCamera(object["camera"]);
+    if (const auto environment = object.optional("environment")) scene.environment = readEnvironment(*environment);
+    checkSize(root, scene);
+    return scene;
+}
+
+bool looksLikePath(const std::string& nameOrPath) {
+    return nameOrPath.find('/') != std::string::npos || fs::path(nameOrPath).extension() == ".json";
+}
+
+std::string joinedNames(const std::vector<std::string>& names) {
+    std::string joined;
+    for (const std::string& name : names) joined += (joined.empty() ? "" : ", ") + name;
+    return joined;
+}
+
+std::string scenePath(const std::string& nameOrPath) {
+    if (looksLikePath(nameOrPath)) return nameOrPath;
+    const fs::path path = fs::path(builtinSceneDir()) / (nameOrPath + ".json");
+    if (!fs::is_regular_file(path))
+        throw SceneError("unknown scene \"" + nameOrPath + "\" (built-in scenes: " + joinedNames(builtinSceneNames()) +
+                         "; a scene file path must end in .json or contain a '/')");
+    return path.string();
+}
+
+}  // namespace
+
+std::string builtinSceneDir() {
+    const char* override = std::getenv("SHADOWLAB_SCENE_DIR");
+    return override && *override ? override : SHADOWLAB_SCENE_DIR;
+}
+
+std::vector<std::string> builtinSceneNames() {
+    std::vector<std::string> names;
+    std::error_code error;
+    for (const fs::directory_entry& entry : fs::directory_iterator(builtinSceneDir(), error)) {
+        if (entry.is_regular_file() && entry.path().extension() == ".json")
+            names.push_back(entry.path().stem().string());
+    }
+    std::ranges::sort(names);
+    return names;
+}
+
+Scene loadScene(const std::string& nameOrPath) {
+    const std::string path = scenePath(nameOrPath);
+    const std::string text = readWholeFile(path);
+    const nlohmann::json document = parseJson(text, path);
+    const std::string directory = fs::path(path).parent_path().string();
+    return readScene(JsonField(document, path, ""), directory, fs::path(path).stem().string());
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,28 @@
+// Readers for the parts of a scene file (docs/scene-format.md), one file per part:
+// scene_meshes.cpp, scene_instances.cpp, scene_lights.cpp; scene_file.cpp reads the rest
+// and puts them together. Each throws SceneError naming the file and the field path.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scenes/json_fields.h"
+#include "scenes/scene.h"
+
+namespace shadowlab {
+
+// The names the file gives to meshes and materials, parallel to Scene::meshes and
+// Scene::materials; instances refer to them by name.
+struct SceneNames {
+    std::vector<std::string> meshes, materials;
+};
+
+// Appends every mesh of the "meshes" array; file paths are relative to directory.
+void readMeshes(const JsonField& field, const std::string& directory, Scene& scene, SceneNames& names);
+
+// Appends the instances one entry describes: one, or a lattice of copies with "repeat".
+void readInstance(const JsonField& field, const SceneNames& names, Scene& scene);
+
+Light readLight(const JsonField& field);
+
+}  // namespace shadowlab

@@ -1,0 +1,84 @@
+// The "lights" array of a scene file (conventions.md, "Lights"; scene.h, Light).
+#include <array>
+#include <cmath>
+
+#include "scenes/scene_file_parts.h"
+
+namespace shadowlab {
+namespace {
+
+constexpr std::array<std::pair<std::string_view, LightType>, 5> kLightTypes{{
+    {"point", LightType::Point},
+    {"spot", LightType::Spot},
+    {"directional", LightType::Directional},
+    {"disk", LightType::Disk},
+    {"rectangle", LightType::Rectangle}}};
+
+// A spot's half-angle: beyond 90 degrees it would no longer be a cone in front of it.
+constexpr Interval kConeAngleDeg{0.0, 90.0, true, false};
+
+// Two vectors count as perpendicular when the cosine of their angle is below this; it
+// allows for the rounding of hand-typed decimals such as 0.7071.
+constexpr double kPerpendicularCosine = 1e-4;
+
+std::vector<std::string_view> keysFor(LightType type) {
+    switch (type) {
+        case LightType::Point: return {"type", "position", "color", "power"};
+        case LightType::Spot: return {"type", "position", "direction", "coneAngle", "color", "power"};
+        case LightType::Directional: return {"type", "direction", "color", "power"};
+        case LightType::Disk: return {"type", "position", "normal", "radius", "color", "power"};
+        case LightType::Rectangle: return {"type", "position", "halfEdgeU", "halfEdgeV", "color", "power"};
+    }
+    return {};   // unreachable: every enumerator is handled above
+}
+
+// Normalised in double: a tiny but non-zero vector would underflow in float.
+glm::vec3 unitDirection(const JsonField& field) {
+    const glm::dvec3 v(field.vec3());
+    const double length = glm::length(v);
+    if (!(length > 0.0)) field.fail("must not be the zero vector");
+    return glm::vec3(v / length);
+}
+
+void readRectangle(const JsonObject& object, Light& light) {
+    light.halfEdgeU = object["halfEdgeU"].vec3();
+    light.halfEdgeV = object["halfEdgeV"].vec3();
+    const glm::dvec3 u(light.halfEdgeU), v(light.halfEdgeV);
+    if (!(glm::length(glm::cross(u, v)) > 0.0))
+        object["halfEdgeV"].fail("the rectangle has zero area (a half-edge is zero or they are parallel)");
+    if (std::abs(glm::dot(u, v)) > kPerpendicularCosine * glm::length(u) * glm::length(v))
+        object["halfEdgeV"].fail("must be perpendicular to halfEdgeU");
+}
+
+void readShape(const JsonObject& object, Light& light) {
+    switch (light.type) {
+        case LightType::Point: break;
+        case LightType::Spot:
+            light.direction = unitDirection(object["direction"]);
+            light.coneAngleDeg = object["coneAngle"].number(kConeAngleDeg);
+            break;
+        case LightType::Directional: light.direction = unitDirection(object["direction"]); break;
+        case LightType::Disk:
+            light.direction = unitDirection(object["normal"]);
+            light.radius = object["radius"].number(kPositive);
+            break;
+        case LightType::Rectangle: readRectangle(object, light); break;
+    }
+}
+
+}  // namespace
+
+Light readLight(const JsonField& field) {
+    const JsonObject object = field.object();
+    Light light;
+    light.type = object["type"].choice(kLightTypes);
+    object.allowOnly(keysFor(light.type));
+    if (light.type != LightType::Directional) light.position = object["position"].vec3();
+    readShape(object, light);
+    const glm::vec3 color = object.has("color") ? object["color"].vec3(kNonNegative) : glm::vec3(1.0f);
+    light.intensity = color * object["power"].number(kNonNegative);
+    if (glm::any(glm::isinf(light.intensity))) object["power"].fail("color * power overflows float");
+    return light;
+}
+
+}  // namespace shadowlab

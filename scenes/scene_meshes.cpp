@@ -1,0 +1,100 @@
+// The "meshes" array of a scene file: procedural meshes and OBJ/PLY files.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <filesystem>
+
+#include "scenes/obj_reader.h"
+#include "scenes/ply_reader.h"
+#include "scenes/procedural.h"
+#include "scenes/scene_file.h"
+#include "scenes/scene_file_parts.h"
+
+namespace shadowlab {
+namespace {
+
+// Caps divisions, slices and stacks so that every procedural mesh's vertex count
+// (at most 16385^2) fits the 32-bit indices of Mesh::triangles.
+constexpr Interval kDivisions{1.0, 16384.0, false, false};
+constexpr Interval kSlices{3.0, 16384.0, false, false};
+constexpr Interval kStacks{2.0, 16384.0, false, false};
+
+enum class Procedural { Grid, UvSphere, Box };
+constexpr std::array<std::pair<std::string_view, Procedural>, 3> kProcedurals{{
+    {"grid", Procedural::Grid}, {"uv-sphere", Procedural::UvSphere}, {"box", Procedural::Box}}};
+
+Mesh readGrid(const JsonObject& object) {
+    object.allowOnly({"name", "procedural", "size", "divisions"});
+    const std::vector<JsonField> size = object["size"].elements(2);
+    const std::vector<JsonField> divisions = object["divisions"].elements(2);
+    return makeGrid({size[0].number(kPositive), size[1].number(kPositive)},
+                    {divisions[0].integer(kDivisions), divisions[1].integer(kDivisions)});
+}
+
+Mesh readUvSphere(const JsonObject& object) {
+    object.allowOnly({"name", "procedural", "radius", "slices", "stacks"});
+    return makeUvSphere(object["radius"].number(kPositive), object["slices"].integer(kSlices),
+                        object["stacks"].integer(kStacks));
+}
+
+Mesh readBox(const JsonObject& object) {
+    object.allowOnly({"name", "procedural", "min", "max"});
+    const glm::vec3 min = object["min"].vec3(), max = object["max"].vec3();
+    if (!glm::all(glm::lessThan(min, max)))
+        object["max"].fail("must be greater than min in x, y and z (a flat box has no inside)");
+    return makeBox(min, max);
+}
+
+Mesh readProcedural(const JsonObject& object) {
+    switch (object["procedural"].choice(kProcedurals)) {
+        case Procedural::Grid: return readGrid(object);
+        case Procedural::UvSphere: return readUvSphere(object);
+        case Procedural::Box: return readBox(object);
+    }
+    return {};   // unreachable: every enumerator is handled above
+}
+
+std::string lowercaseExtension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return extension;
+}
+
+// Reader errors already name the mesh file; prefixing the field tells which entry of
+// the scene file pointed at it.
+Mesh readMeshFile(const JsonObject& object, const std::string& directory) {
+    object.allowOnly({"name", "file"});
+    const JsonField field = object["file"];
+    const std::string path = (std::filesystem::path(directory) / field.string()).string();
+    const std::string extension = lowercaseExtension(path);
+    if (extension != ".obj" && extension != ".ply")
+        field.fail("unknown mesh format \"" + extension + "\" (allowed: .obj, .ply)");
+    try {
+        return extension == ".obj" ? readObj(path) : readPly(path);
+    } catch (const SceneError& error) {
+        field.fail(error.what());
+    }
+}
+
+Mesh readMesh(const JsonObject& object, const std::string& directory) {
+    if (object.has("file") == object.has("procedural"))
+        object.field().fail("needs exactly one of \"file\" and \"procedural\"");
+    return object.has("file") ? readMeshFile(object, directory) : readProcedural(object);
+}
+
+}  // namespace
+
+void readMeshes(const JsonField& field, const std::string& directory, Scene& scene, SceneNames& names) {
+    for (const JsonField& entry : field.elements()) {
+        const JsonObject object = entry.object();
+        const JsonField nameField = object["name"];
+        const std::string name = nameField.string();
+        if (std::ranges::find(names.meshes, name) != names.meshes.end())
+            nameField.fail("another mesh is already named \"" + name + "\"");
+        scene.meshes.push_back(readMesh(object, directory));
+        names.meshes.push_back(name);
+    }
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,68 @@
+// Error figures of a buffer against the exact reference (conventions.md, "Figures and
+// errors"), and a heat map of where they differ.
+//
+// The FIRST image is the reference: `shadowlab compare A.exr B.exr` measures B against A.
+// Pixels are compared where the reference has hit = 1; the test image's hit channel is not
+// consulted, so a technique that loses geometry is charged for it.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shading/image_io.h"
+
+namespace shadowlab {
+
+struct CompareOptions {
+    std::string channel = "V";
+    // A value >= threshold counts as lit, below it as shadowed, for the classification
+    // into false shadow and false light (conventions.md: for binary shadows).
+    float litThreshold = 0.5f;
+    // |error| mapped to full colour intensity in the heat map.
+    float heatMapFullScale = 1.0f;
+};
+
+struct ErrorFigures {
+    std::string channel;
+    uint64_t pixels = 0;         // pixels with hit = 1 in the reference
+    // error = reference - test over those pixels. NaN in either input makes these NaN.
+    double rms = 0.0;
+    double meanAbs = 0.0;
+    double maxAbs = 0.0;
+    // True if every compared value of both images is exactly 0 or 1 (hard shadows), where
+    // the classification below is the natural figure; it is computed in any case.
+    bool binary = true;
+    uint64_t falseShadow = 0;    // lit in the reference, shadowed in the test (acne)
+    uint64_t falseLight = 0;     // shadowed in the reference, lit in the test (leaks)
+    uint64_t misclassified() const { return falseShadow + falseLight; }
+    double percentOfPixels(uint64_t count) const {
+        return pixels == 0 ? 0.0 : 100.0 * double(count) / double(pixels);
+    }
+};
+
+// Throws std::runtime_error if a channel (options.channel, or the reference's hit) is
+// missing or the sizes differ.
+ErrorFigures compareImages(const ImageChannels& reference, const ImageChannels& test,
+                           const CompareOptions& options = {});
+// Reads only the channels needed from both files, then compareImages().
+ErrorFigures compareFiles(const std::filesystem::path& reference, const std::filesystem::path& test,
+                          const CompareOptions& options = {});
+
+// Human-readable, several lines, and a JSON object with the same figures:
+// {"channel","pixels","rms","mean_abs","max_abs","binary","misclassified",
+//  "misclassified_percent","false_shadow","false_shadow_percent","false_light",
+//  "false_light_percent"}.
+std::string formatText(const ErrorFigures& figures);
+std::string formatJson(const ErrorFigures& figures);
+
+// RGB bytes (row 0 at the top) for writePng(). With e = reference - test:
+// red where e > 0 (test darker: false shadow, acne), blue where e < 0 (test brighter:
+// false light, leaks), intensity sRGB-encoded min(|e| / heatMapFullScale, 1) so small
+// errors stay visible; black where equal (and where e is NaN, which the figures report);
+// mid grey (128) where the reference has hit = 0.
+std::vector<uint8_t> errorHeatMap(const ImageChannels& reference, const ImageChannels& test,
+                                  const CompareOptions& options = {});
+
+}  // namespace shadowlab

@@ -1,0 +1,135 @@
+// G-buffer reconstruction: one ray-plane intersection per covered pixel.
+//
+// Interpolating P from vertex attributes would inherit the rasterizer's fixed-point
+// snapping and perspective-correct interpolation error; intersecting the exact pixel-centre
+// ray with the triangle's plane in double gives the surface point to within the final
+// rounding to float (half an ulp per component). The shadow reference relies on that bound
+// for its ray offset (shadows/reference.cpp).
+//
+// Threads own rows (tbb::parallel_for over j); every pixel is written exactly once from
+// inputs no other pixel writes, so the result is the same for any thread count.
+#include "shading/gbuffer_build.h"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "scenes/camera.h"
+
+namespace shadowlab {
+namespace {
+
+struct SurfacePoint {
+    glm::dvec3 position;
+    glm::dvec3 normal;  // unit, facing the ray origin
+};
+
+// Ray-plane intersection (e.g. Shirley & Marschner, Fundamentals of Computer Graphics,
+// 4.4.2): t = n.(v0 - o) / n.d with n the unnormalised triangle normal. Empty when the ray
+// is parallel to the plane (or the triangle degenerate), where no intersection exists.
+std::optional<SurfacePoint> intersectTrianglePlane(const RayD& ray, const glm::dvec3& v0,
+                                    const glm::dvec3& v1, const glm::dvec3& v2) {
+    const glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
+    const double denominator = glm::dot(n, ray.direction);
+    if (denominator == 0.0) {
+        return std::nullopt;
+    }
+    const double t = glm::dot(n, v0 - ray.origin) / denominator;
+    const glm::dvec3 p = ray.origin + t * ray.direction;
+    const glm::dvec3 unitNormal = glm::normalize(n);
+    // The ray arrives against the front of the surface it sees, so the camera-facing
+    // normal points against the ray: dot(N, eye - P) = -t * dot(N, d) > 0 for t > 0.
+    const bool facesCamera = glm::dot(unitNormal, ray.origin - p) > 0.0;
+    return SurfacePoint{p, facesCamera ? unitNormal : -unitNormal};
+}
+
+void writeBackground(GBuffer& g, size_t index) {
+    g.hit[index] = 0;
+    g.position[index] = glm::vec3(0.0f);
+    g.normal[index] = glm::vec3(0.0f);
+    g.material[index] = 0;
+    g.triangle[index] = kNoTriangle;
+    g.depth[index] = 1.0f;
+}
+
+std::string pixelName(int i, int j) {
+    return "pixel (" + std::to_string(i) + ", " + std::to_string(j) + ")";
+}
+
+void writeSurface(GBuffer& g, size_t index, const WorldGeometry& world, const Camera& camera,
+                  int i, int j, uint32_t triangle, float depth) {
+    if (triangle >= world.triangles.size()) {
+        throw std::invalid_argument("buildGBuffer: triangle index " + std::to_string(triangle) +
+                                    " out of range at " + pixelName(i, j));
+    }
+    const glm::uvec3 t = world.triangles[triangle];
+    const std::optional<SurfacePoint> s = intersectTrianglePlane(
+        pixelRay(camera, i, j), glm::dvec3(world.positions[t.x]),
+        glm::dvec3(world.positions[t.y]), glm::dvec3(world.positions[t.z]));
+    if (!s) {
+        throw std::invalid_argument("buildGBuffer: ray of " + pixelName(i, j) +
+                                    " is parallel to triangle " + std::to_string(triangle));
+    }
+    g.hit[index] = 1;
+    g.position[index] = glm::vec3(s->position);
+    g.normal[index] = glm::vec3(s->normal);
+    g.material[index] = world.triangleMaterial[triangle];
+    g.triangle[index] = triangle;
+    g.depth[index] = depth;
+}
+
+}  // namespace
+
+void requireConsistent(const GBuffer& g, const char* who) {
+    const size_t n = g.pixelCount();
+    const bool consistent = g.width >= 0 && g.height >= 0 && g.hit.size() == n && g.position.size() == n &&
+                            g.normal.size() == n && g.material.size() == n && g.triangle.size() == n &&
+                            g.depth.size() == n;
+    if (!consistent) {
+        throw std::invalid_argument(std::string(who) + ": G-buffer arrays do not all have " +
+                                    std::to_string(g.width) + " x " + std::to_string(g.height) + " entries");
+    }
+}
+
+GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
+                     const std::vector<uint32_t>& visibleTriangle,
+                     const std::vector<float>& depth) {
+    GBuffer g;
+    g.width = camera.width;
+    g.height = camera.height;
+    const size_t n = g.pixelCount();
+    if (visibleTriangle.size() != n || depth.size() != n) {
+        throw std::invalid_argument("buildGBuffer: visibility/depth buffers have " +
+                                    std::to_string(visibleTriangle.size()) + "/" +
+                                    std::to_string(depth.size()) + " entries, camera has " +
+                                    std::to_string(n) + " pixels");
+    }
+    if (world.triangleMaterial.size() != world.triangles.size()) {
+        throw std::invalid_argument("buildGBuffer: triangleMaterial size differs from triangles");
+    }
+    g.hit.resize(n);
+    g.position.resize(n);
+    g.normal.resize(n);
+    g.material.resize(n);
+    g.triangle.resize(n);
+    g.depth.resize(n);
+
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        for (int j = rows.begin(); j != rows.end(); ++j) {
+            for (int i = 0; i < g.width; ++i) {
+                const size_t index = g.index(i, j);
+                if (visibleTriangle[index] == kNoTriangle) {
+                    writeBackground(g, index);
+                } else {
+                    writeSurface(g, index, world, camera, i, j, visibleTriangle[index], depth[index]);
+                }
+            }
+        }
+    });
+    return g;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,82 @@
+// Image files: multi-channel float32 OpenEXR for checks, 8-bit sRGB PNG for people
+// (conventions.md, "Buffers written to disk").
+//
+// Every file is written whole or not at all: it is first written to a temporary name in
+// the same directory and then renamed over the destination (rename() within one file
+// system is atomic in POSIX), so a reader never sees a half-written image and a failed
+// write leaves no file behind (a process killed mid-write can leave a hidden temporary
+// ".NAME.tmp.*", never a partial NAME). Errors are std::runtime_error naming the file.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shading/gbuffer.h"
+
+namespace shadowlab {
+
+// Channel names, exactly as conventions.md lists them.
+namespace channel {
+inline constexpr const char* R = "R";
+inline constexpr const char* G = "G";
+inline constexpr const char* B = "B";
+inline constexpr const char* Px = "P.x";
+inline constexpr const char* Py = "P.y";
+inline constexpr const char* Pz = "P.z";
+inline constexpr const char* Nx = "N.x";
+inline constexpr const char* Ny = "N.y";
+inline constexpr const char* Nz = "N.z";
+inline constexpr const char* hit = "hit";
+inline constexpr const char* V = "V";
+inline constexpr const char* depth = "depth";
+inline constexpr const char* stencil = "stencil";
+}  // namespace channel
+
+// A set of named float channels of one size, row-major with row 0 at the top.
+struct ImageChannels {
+    int width = 0, height = 0;
+    std::vector<std::string> names;
+    std::vector<std::vector<float>> data;  // data[k] belongs to names[k]
+    std::string source;                    // file it was read from, for error messages
+
+    size_t pixelCount() const { return size_t(width) * size_t(height); }
+    // The channel's values, or nullptr if there is no channel of that name.
+    const std::vector<float>* find(std::string_view name) const;
+    // The channel's values; throws std::runtime_error naming the channel and source.
+    const std::vector<float>& at(std::string_view name) const;
+    // Adds (or replaces) a channel; throws std::invalid_argument unless it has
+    // width * height values.
+    void set(std::string name, std::vector<float> values);
+};
+
+// Radiance as channels R, G, B.
+void setRadiance(ImageChannels& image, const std::vector<glm::vec3>& radiance);
+// G-buffer as channels P.x P.y P.z N.x N.y N.z hit depth. Sets the size from the G-buffer
+// when the image is still empty.
+void setGBuffer(ImageChannels& image, const GBuffer& gbuffer);
+
+// One FLOAT channel per name, ZIP compression (lossless), scanlines top to bottom.
+void writeExr(const std::filesystem::path& path, const ImageChannels& image);
+// Every channel of the file, converted to float.
+ImageChannels readExr(const std::filesystem::path& path);
+// Only the named channels; throws std::runtime_error if one is missing.
+ImageChannels readExr(const std::filesystem::path& path, const std::vector<std::string>& names);
+
+// 8-bit RGB, 3 bytes per pixel interleaved, row 0 at the top.
+void writePng(const std::filesystem::path& path, int width, int height,
+              const std::vector<uint8_t>& rgb);
+
+// Runs write(temporaryPath), then renames the temporary file to `path`. If write throws or
+// the rename fails, the temporary file is removed and std::runtime_error is thrown.
+void writeFileAtomically(const std::filesystem::path& path,
+                         const std::function<void(const std::filesystem::path&)>& write);
+// A text file (JSON, CSV, reports) written the same way.
+void writeTextFile(const std::filesystem::path& path, std::string_view text);
+
+}  // namespace shadowlab

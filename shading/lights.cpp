@@ -1,0 +1,71 @@
+// Light arrival at a point: inverse-square falloff for positional lights, constant
+// irradiance for directional ones, and the far-field approximation of area lights
+// documented in lights.h. Geometry is evaluated in double and the result rounded once.
+#include "shading/lights.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace shadowlab {
+namespace {
+
+// Radiant intensity (W/sr) that a light sends towards a point at offset `fromLight`,
+// treating area lights as point lights at their centre (lights.h).
+glm::dvec3 intensityTowards(const Light& light, const glm::dvec3& fromLight) {
+    const glm::dvec3 intensity(light.intensity);
+    switch (light.type) {
+        case LightType::Point:
+        case LightType::Spot:
+            return intensity;
+        case LightType::Disk:
+        case LightType::Rectangle: {
+            const double cosAtLight =
+                glm::dot(areaLightNormal(light), fromLight) / glm::length(fromLight);
+            return cosAtLight > 0.0 ? intensity * (areaLightArea(light) * cosAtLight)
+                                    : glm::dvec3(0.0);
+        }
+        case LightType::Directional:
+            break;
+    }
+    return glm::dvec3(0.0);
+}
+
+}  // namespace
+
+bool insideSpotCone(const Light& light, const glm::vec3& point) {
+    const glm::dvec3 axis(light.direction);
+    const glm::dvec3 fromLight = glm::dvec3(point) - glm::dvec3(light.position);
+    // angle(axis, fromLight) <= half-angle  <=>  cos(angle) >= cos(half-angle).
+    const double cosHalfAngle = std::cos(double(light.coneAngleDeg) * std::numbers::pi / 180.0);
+    return glm::dot(axis, fromLight) >= cosHalfAngle * glm::length(axis) * glm::length(fromLight);
+}
+
+glm::dvec3 areaLightNormal(const Light& light) {
+    if (light.type == LightType::Rectangle) {
+        return glm::normalize(glm::cross(glm::dvec3(light.halfEdgeU), glm::dvec3(light.halfEdgeV)));
+    }
+    return glm::normalize(glm::dvec3(light.direction));
+}
+
+double areaLightArea(const Light& light) {
+    if (light.type == LightType::Rectangle) {
+        return 4.0 * glm::length(glm::cross(glm::dvec3(light.halfEdgeU), glm::dvec3(light.halfEdgeV)));
+    }
+    return std::numbers::pi * double(light.radius) * double(light.radius);
+}
+
+LightArrival lightArrival(const Light& light, const glm::vec3& point) {
+    if (light.type == LightType::Directional) {
+        return {glm::normalize(light.direction), light.intensity};
+    }
+    const glm::dvec3 fromLight = glm::dvec3(point) - glm::dvec3(light.position);
+    const double distanceSquared = glm::dot(fromLight, fromLight);
+    // A point on the light itself (or outside a spot's cone) receives nothing.
+    if (distanceSquared == 0.0 || (light.type == LightType::Spot && !insideSpotCone(light, point))) {
+        return {};
+    }
+    const glm::dvec3 irradiance = intensityTowards(light, fromLight) / distanceSquared;
+    return {glm::vec3(-fromLight / std::sqrt(distanceSquared)), glm::vec3(irradiance)};
+}
+
+}  // namespace shadowlab

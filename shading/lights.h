@@ -1,0 +1,42 @@
+// How much light of one source arrives at a surface point, before visibility and the BRDF
+// (conventions.md, "Lights"; units in scenes/scene.h).
+//
+// Area lights (disk, rectangle) are shaded as a point light at their centre whose radiant
+// intensity is that of a small flat emitter, I(theta) = L * A * cos(theta), with L the
+// radiance, A the area and theta the angle between the light's normal and the direction to
+// the point (Lambert's cosine law for a flat Lambertian emitter). This far-field
+// approximation is exact in the limit distance >> light size; nearer it misestimates the
+// unoccluded irradiance (e.g. by a factor 1 + r^2/d^2 on the axis of a disk of radius r at
+// distance d), but it keeps the shadow term separate: how much of the light is visible is
+// the job of the visibility buffer V, not of this function.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scenes/scene.h"
+
+namespace shadowlab {
+
+struct LightArrival {
+    glm::vec3 toLight{0.0f};     // unit vector from the point towards the light (or its centre)
+    glm::vec3 irradiance{0.0f};  // on a plane facing the light, W/m^2; 0 if no light arrives
+};
+
+// Point: I / d^2. Spot: the same inside the cone, 0 outside (a hard cone, no falloff, so
+// that the lit region is exactly the cone the shadow techniques are tested on).
+// Directional: the light's irradiance. Disk, rectangle: the far-field point light above.
+LightArrival lightArrival(const Light& light, const glm::vec3& point);
+
+// True if the point lies inside (or on) a spot light's cone of half-angle coneAngleDeg
+// around its direction; evaluated in double. Used by shading and by the shadow reference.
+bool insideSpotCone(const Light& light, const glm::vec3& point);
+
+// Unit normal of the emitting side: disk: its direction; rectangle: the right-handed
+// normalize(cross(halfEdgeU, halfEdgeV)), i.e. the side from which U turns
+// counter-clockwise into V, like a front face (conventions.md, "Space and camera").
+glm::dvec3 areaLightNormal(const Light& light);
+
+// Emitting area in m^2: pi r^2 for a disk, 4 |U x V| for a rectangle.
+double areaLightArea(const Light& light);
+
+}  // namespace shadowlab

@@ -1,0 +1,89 @@
+// Deferred shading: ambient plus one light, with visibility supplied by a shadow technique
+// (or by the exact reference, shadows/reference.h).
+//
+// The ambient term treats Environment::ambient as a constant radiance arriving from every
+// direction: a Lambertian surface under uniform radiance La reflects albedo * La (the
+// cosine-weighted hemisphere integral of albedo/pi is albedo). Threads own rows; each pixel
+// is written once, so the output does not depend on the thread count.
+#include "shading/shade.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "shading/gbuffer_build.h"
+#include "shading/lights.h"
+
+namespace shadowlab {
+
+glm::vec3 brdf(const Material& material, const glm::vec3& N, const glm::vec3& wi,
+               const glm::vec3& wo) {
+    const float invPi = std::numbers::inv_pi_v<float>;
+    const glm::vec3 diffuse = material.albedo * invPi;
+    if (material.model == MaterialModel::Lambert) {
+        return diffuse;
+    }
+    const glm::vec3 H = glm::normalize(wi + wo);
+    const float cosH = std::max(0.0f, glm::dot(N, H));
+    const float normalisation = (material.shininess + 8.0f) * (invPi / 8.0f);
+    return diffuse + material.specular * (normalisation * std::pow(cosH, material.shininess));
+}
+
+namespace {
+
+glm::vec3 shadePixel(const Scene& scene, const Light& light, const GBuffer& g, size_t index,
+                     float visibility) {
+    if (!g.hit[index]) {
+        return glm::vec3(0.0f);
+    }
+    if (g.material[index] >= scene.materials.size()) {
+        throw std::out_of_range("shade: material index " + std::to_string(g.material[index]) +
+                                " out of range");
+    }
+    const Material& material = scene.materials[g.material[index]];
+    const glm::vec3 P = g.position[index];
+    const glm::vec3 N = g.normal[index];
+    const glm::vec3 ambient = scene.environment.ambient * material.albedo;
+
+    const LightArrival arrival = lightArrival(light, P);
+    const float cosIncidence = glm::dot(N, arrival.toLight);
+    if (cosIncidence <= 0.0f) {
+        return ambient;  // the light is behind the surface
+    }
+    const glm::vec3 wo = glm::normalize(scene.camera.eye - P);
+    const glm::vec3 direct = brdf(material, N, arrival.toLight, wo) * arrival.irradiance * cosIncidence;
+    return ambient + visibility * direct;
+}
+
+}  // namespace
+
+std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, size_t lightIndex,
+                             const std::vector<float>& V) {
+    requireConsistent(gbuffer, "shade");
+    if (lightIndex >= scene.lights.size()) {
+        throw std::out_of_range("shade: light index " + std::to_string(lightIndex) + " but the scene has " +
+                                std::to_string(scene.lights.size()) + " lights");
+    }
+    if (V.size() != gbuffer.pixelCount()) {
+        throw std::invalid_argument("shade: visibility buffer has " + std::to_string(V.size()) +
+                                    " entries, G-buffer has " + std::to_string(gbuffer.pixelCount()));
+    }
+    const Light& light = scene.lights[lightIndex];
+    std::vector<glm::vec3> radiance(gbuffer.pixelCount());
+    tbb::parallel_for(tbb::blocked_range<int>(0, gbuffer.height), [&](const tbb::blocked_range<int>& rows) {
+        for (int j = rows.begin(); j != rows.end(); ++j) {
+            for (int i = 0; i < gbuffer.width; ++i) {
+                const size_t index = gbuffer.index(i, j);
+                radiance[index] = shadePixel(scene, light, gbuffer, index, V[index]);
+            }
+        }
+    });
+    return radiance;
+}
+
+}  // namespace shadowlab

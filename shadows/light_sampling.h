@@ -1,0 +1,56 @@
+// Stratified points on area lights, for the exact reference (and any technique that needs
+// the same samples).
+//
+// The unit square is cut into n x n strata with one uniformly jittered point in each
+// (stratified or "jittered" sampling, Cook, Porter, Carpenter 1984; Pharr, Jakob, Humphreys,
+// Physically Based Rendering, 4th ed., section 8.5). Squares map to the light by
+// area-preserving maps, so every stratum covers the same area of the light and the fraction
+// of visible samples is an unbiased estimate of the visible fraction of the light's area.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "scenes/scene.h"
+
+namespace shadowlab {
+
+// PCG32 (O'Neill, "PCG: A Family of Simple Fast Space-Efficient Statistically Good
+// Algorithms for Random Number Generation", 2014; the pcg32 "minimal C" generator): 64-bit
+// LCG state, 32-bit xorshift-rotate output. `stream` selects one of 2^63 independent
+// sequences, so seeding by (fixed seed, pixel index) gives every pixel its own jitter,
+// independent of which thread computes it.
+class Pcg32 {
+public:
+    Pcg32(uint64_t seed, uint64_t stream);
+    uint32_t next();
+    double nextDouble();  // uniform in [0, 1), multiples of 2^-32
+
+private:
+    uint64_t state_ = 0;
+    uint64_t increment_ = 0;
+};
+
+// Shirley & Chiu, "A Low Distortion Map Between Disk and Square", JGT 2(3), 1997: maps
+// concentric squares of [0,1]^2 to concentric circles of the unit disk, preserving
+// relative area and keeping strata compact (unlike r = sqrt(u), phi = 2 pi v).
+glm::dvec2 concentricSquareToDisk(const glm::dvec2& u);
+
+// An area light as centre + a * axisA + b * axisB: for a rectangle (a, b) in [-1, 1]^2 and
+// the axes are its half-edges; for a disk (a, b) in the unit disk and the axes are an
+// orthonormal basis of the disk's plane scaled by the radius.
+struct AreaLightFrame {
+    bool disk = false;
+    glm::dvec3 centre{0.0}, axisA{0.0}, axisB{0.0};
+};
+// Throws std::invalid_argument unless light.type is Disk or Rectangle.
+AreaLightFrame areaLightFrame(const Light& light);
+
+// The point of the light for a sample u in [0, 1)^2.
+glm::dvec3 areaLightPoint(const AreaLightFrame& frame, const glm::dvec2& u);
+
+// Sample u of stratum (a, b) of n x n, jittered with two draws from rng.
+glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng);
+
+}  // namespace shadowlab

@@ -1,0 +1,271 @@
+// Every kind of mistake in a scene file is a SceneError whose message names the file
+// and the field path. Each case breaks one thing in a scene that otherwise loads.
+#include <cstring>
+#include <filesystem>
+#include <functional>
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include "scene_test_files.h"
+#include "scenes/scene_file.h"
+
+using namespace shadowlab;
+using nlohmann::json;
+
+namespace {
+
+// Uses every mesh kind, material model and light type once.
+json validScene() {
+    return json::parse(R"({
+      "description": "test scene",
+      "meshes": [
+        {"name": "ground", "procedural": "grid", "size": [20, 20], "divisions": [4, 4]},
+        {"name": "tri", "file": "tri.obj"},
+        {"name": "ball", "procedural": "uv-sphere", "radius": 1, "slices": 8, "stacks": 4},
+        {"name": "box", "procedural": "box", "min": [0, 0, 0], "max": [1, 1, 1]}
+      ],
+      "materials": [
+        {"name": "white", "model": "lambert", "albedo": [0.8, 0.8, 0.8]},
+        {"name": "shiny", "model": "blinn-phong", "specular": [0.2, 0.2, 0.2], "shininess": 20}
+      ],
+      "instances": [
+        {"mesh": "ground", "material": "white"},
+        {"mesh": "tri", "material": "shiny", "translate": [0, 1, 0]}
+      ],
+      "lights": [
+        {"type": "disk", "position": [4, 8, 3], "normal": [-4, -8, -3], "radius": 0.5, "power": 400},
+        {"type": "point", "position": [0, 5, 0], "power": 10},
+        {"type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "coneAngle": 30, "power": 10},
+        {"type": "directional", "direction": [1, 1, 0], "color": [1, 0.9, 0.8], "power": 2},
+        {"type": "rectangle", "position": [0, 5, 0], "halfEdgeU": [1, 0, 0], "halfEdgeV": [0, 0, 0.5], "power": 10}
+      ],
+      "camera": {"eye": [0, 4, 9], "target": [0, 0.5, 0], "fovy": 45, "width": 64, "height": 40},
+      "environment": {"ambient": [0.02, 0.02, 0.02]}
+    })");
+}
+
+// Mesh files the cases point meshes[1] at.
+void writeMeshFiles(const test::TempDir& dir) {
+    const std::string corners = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    dir.write("tri.obj", corners + "f 1 2 3\n");
+    dir.write("bad-index.obj", corners + "f 1 2 4\n");
+    dir.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
+    dir.write("no-faces.obj", corners);
+    dir.write("notes.txt", corners);
+    const std::string plyHeader = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                                  "property float y\nproperty float z\nelement face 1\n"
+                                  "property list uchar int vertex_indices\nend_header\n";
+    dir.write("truncated.ply", plyHeader + std::string(20, '\0'));
+    dir.write("bad-index.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                               "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+    std::filesystem::create_directory(dir.path("folder.obj"));
+}
+
+struct Case {
+    std::string what;
+    std::function<void(json&)> change;
+    std::vector<std::string> pieces;   // besides the file name, which every message must contain
+};
+
+// JSON cannot spell infinity; the markers "@HUGE@" and "-@HUGE@" become 1e999 and
+// -1e999 in the file text, numbers too large for a double.
+std::string render(const json& scene) {
+    std::string text = scene.dump(2);
+    for (const auto& [marker, number] : {std::pair{"\"-@HUGE@\"", "-1e999"}, std::pair{"\"@HUGE@\"", "1e999"}})
+        for (size_t at; (at = text.find(marker)) != std::string::npos;) text.replace(at, std::strlen(marker), number);
+    return text;
+}
+
+void checkCases(const std::vector<Case>& cases) {
+    const test::TempDir dir;
+    writeMeshFiles(dir);
+    for (const Case& c : cases) {
+        CAPTURE(c.what);
+        json scene = validScene();
+        c.change(scene);
+        const std::string path = dir.write("scene.json", render(scene));
+        std::vector<std::string> pieces = c.pieces;
+        pieces.push_back(path + ": ");
+        test::checkMessage(test::sceneErrorOf([&] { loadScene(path); }), pieces);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the unbroken test scene loads") {
+    const test::TempDir dir;
+    writeMeshFiles(dir);
+    const Scene scene = loadScene(dir.write("scene.json", render(validScene())));
+    CHECK(scene.meshes.size() == 4);
+    CHECK(scene.lights.size() == 5);
+    CHECK(scene.lights[3].direction == glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f)));
+    CHECK(scene.lights[3].intensity == glm::vec3(2.0f, 1.8f, 1.6f));
+    CHECK(scene.lights[4].halfEdgeV == glm::vec3(0.0f, 0.0f, 0.5f));
+    CHECK(scene.materials[1].model == MaterialModel::BlinnPhong);
+    CHECK(scene.materials[1].albedo == Material{}.albedo);   // default kept
+}
+
+TEST_CASE("missing fields and wrong types") {
+    checkCases({
+        {"no camera", [](json& s) { s.erase("camera"); }, {"missing required field \"camera\""}},
+        {"no eye", [](json& s) { s["camera"].erase("eye"); }, {"camera: missing required field \"eye\""}},
+        {"no power", [](json& s) { s["lights"][1].erase("power"); }, {"lights[1]: missing required field \"power\""}},
+        {"no grid size", [](json& s) { s["meshes"][0].erase("size"); }, {"meshes[0]: missing required field \"size\""}},
+        {"string for number", [](json& s) { s["camera"]["fovy"] = "45"; }, {"camera.fovy: must be a number, got \"45\""}},
+        {"fraction for integer", [](json& s) { s["meshes"][0]["divisions"][0] = 4.5; },
+         {"meshes[0].divisions[0]: must be an integer, got 4.5"}},
+        {"two numbers for a point", [](json& s) { s["camera"]["eye"] = {0, 4}; },
+         {"camera.eye: must be an array of 3 numbers, got [0,4]"}},
+        {"object for array", [](json& s) { s["lights"] = json::object(); }, {"lights: must be an array, got {}"}},
+        {"number for name", [](json& s) { s["instances"][0]["mesh"] = 3; }, {"instances[0].mesh: must be a string, got 3"}},
+        {"string for bool", [](json& s) { s["instances"][1]["fit"] = {{"ground", "yes"}}; },
+         {"instances[1].fit.ground: must be true or false"}},
+        {"number for description", [](json& s) { s["description"] = 1; }, {"description: must be a string"}},
+        {"mesh with file and procedural", [](json& s) { s["meshes"][1]["procedural"] = "box"; },
+         {"meshes[1]: needs exactly one of \"file\" and \"procedural\""}},
+    });
+}
+
+TEST_CASE("non-finite numbers, unknown names, unknown keys") {
+    checkCases({
+        {"infinite near", [](json& s) { s["camera"]["near"] = "@HUGE@"; },
+         {"camera.near: invalid JSON: ", "number overflow parsing '1e999'"}},
+        {"minus infinity in an array", [](json& s) { s["lights"][1]["position"][2] = "-@HUGE@"; },
+         {"lights[1].position[2]: invalid JSON: ", "'-1e999'"}},
+        {"beyond float", [](json& s) { s["materials"][0]["albedo"][1] = 1e39; },
+         {"materials[0].albedo[1]: must be a finite number within float range"}},
+        {"light type", [](json& s) { s["lights"][0]["type"] = "area"; },
+         {"lights[0].type: unknown value \"area\" (allowed: point, spot, directional, disk, rectangle)"}},
+        {"material model", [](json& s) { s["materials"][0]["model"] = "phong"; },
+         {"materials[0].model: unknown value \"phong\" (allowed: lambert, blinn-phong)"}},
+        {"procedural kind", [](json& s) { s["meshes"][0]["procedural"] = "plane"; },
+         {"meshes[0].procedural: unknown value \"plane\""}},
+        {"typo in light", [](json& s) { s["lights"][0]["radus"] = 0.5; },
+         {"lights[0]: unknown key \"radus\" (allowed: type, position, normal, radius, color, power)"}},
+        {"typo at top", [](json& s) { s["camra"] = s["camera"]; }, {"unknown key \"camra\""}},
+        {"typo in camera", [](json& s) { s["camera"]["fov"] = 45; }, {"camera: unknown key \"fov\""}},
+        {"typo in instance", [](json& s) { s["instances"][1]["transalte"] = {0, 1, 0}; },
+         {"instances[1]: unknown key \"transalte\""}},
+        {"specular on lambert", [](json& s) { s["materials"][0]["specular"] = {1, 1, 1}; },
+         {"materials[0]: unknown key \"specular\""}},
+        {"radius on grid", [](json& s) { s["meshes"][0]["radius"] = 1; }, {"meshes[0]: unknown key \"radius\""}},
+        {"field of another light type", [](json& s) { s["lights"][1]["radius"] = 1; },
+         {"lights[1]: unknown key \"radius\""}},
+        {"unknown mesh", [](json& s) { s["instances"][0]["mesh"] = "grnd"; },
+         {"instances[0].mesh: no mesh is named \"grnd\""}},
+        {"unknown material", [](json& s) { s["instances"][0]["material"] = "red"; },
+         {"instances[0].material: no material is named \"red\""}},
+        {"duplicate mesh", [](json& s) { s["meshes"][1]["name"] = "ground"; },
+         {"meshes[1].name: another mesh is already named \"ground\""}},
+        {"duplicate material", [](json& s) { s["materials"][1]["name"] = "white"; },
+         {"materials[1].name: another material is already named \"white\""}},
+    });
+}
+
+TEST_CASE("degenerate lights") {
+    checkCases({
+        {"zero disk normal", [](json& s) { s["lights"][0]["normal"] = {0, 0, 0}; },
+         {"lights[0].normal: must not be the zero vector"}},
+        {"zero spot direction", [](json& s) { s["lights"][2]["direction"] = {0, 0, 0}; },
+         {"lights[2].direction: must not be the zero vector"}},
+        {"zero directional direction", [](json& s) { s["lights"][3]["direction"] = {0, 0, 0}; },
+         {"lights[3].direction: must not be the zero vector"}},
+        {"negative disk radius", [](json& s) { s["lights"][0]["radius"] = -1; },
+         {"lights[0].radius: must be > 0, got -1"}},
+        {"zero disk radius", [](json& s) { s["lights"][0]["radius"] = 0; }, {"lights[0].radius: must be > 0, got 0"}},
+        {"parallel rectangle edges", [](json& s) { s["lights"][4]["halfEdgeV"] = {2, 0, 0}; },
+         {"lights[4].halfEdgeV: the rectangle has zero area"}},
+        {"zero rectangle edge", [](json& s) { s["lights"][4]["halfEdgeU"] = {0, 0, 0}; },
+         {"lights[4].halfEdgeV: the rectangle has zero area"}},
+        {"skewed rectangle", [](json& s) { s["lights"][4]["halfEdgeV"] = {1, 0, 1}; },
+         {"lights[4].halfEdgeV: must be perpendicular to halfEdgeU"}},
+        {"zero cone", [](json& s) { s["lights"][2]["coneAngle"] = 0; },
+         {"lights[2].coneAngle: must be in (0, 90], got 0"}},
+        {"cone beyond 90", [](json& s) { s["lights"][2]["coneAngle"] = 95; },
+         {"lights[2].coneAngle: must be in (0, 90], got 95"}},
+        {"negative power", [](json& s) { s["lights"][1]["power"] = -2; }, {"lights[1].power: must be >= 0, got -2"}},
+        {"negative colour", [](json& s) { s["lights"][3]["color"][2] = -0.5; },
+         {"lights[3].color[2]: must be >= 0, got -0.5"}},
+        {"infinite intensity", [](json& s) { s["lights"][3]["color"] = {3e38, 1, 1}; },
+         {"lights[3].power: color * power overflows float"}},
+        {"no lights", [](json& s) { s["lights"] = json::array(); }, {"lights: needs at least one light"}},
+    });
+}
+
+TEST_CASE("camera, sizes and transforms out of range") {
+    checkCases({
+        {"zero fovy", [](json& s) { s["camera"]["fovy"] = 0; }, {"camera.fovy: must be in (0, 180), got 0"}},
+        {"negative fovy", [](json& s) { s["camera"]["fovy"] = -5; }, {"camera.fovy: must be in (0, 180), got -5"}},
+        {"fovy 180", [](json& s) { s["camera"]["fovy"] = 180; }, {"camera.fovy: must be in (0, 180), got 180"}},
+        {"zero width", [](json& s) { s["camera"]["width"] = 0; }, {"camera.width: must be in [1, 16384], got 0"}},
+        {"near beyond far", [](json& s) { s["camera"]["near"] = 10; s["camera"]["far"] = 5; },
+         {"camera.far: near must be less than far"}},
+        {"near equal to far", [](json& s) { s["camera"]["near"] = 5; s["camera"]["far"] = 5; },
+         {"camera.far: near must be less than far"}},
+        {"near beyond default far", [](json& s) { s["camera"]["near"] = 200; },
+         {"camera.near: near must be less than far"}},
+        {"zero near", [](json& s) { s["camera"]["near"] = 0; }, {"camera.near: must be > 0, got 0"}},
+        {"eye on target", [](json& s) { s["camera"]["target"] = s["camera"]["eye"]; },
+         {"camera.target: must differ from eye"}},
+        {"looking straight down with up +Y", [](json& s) { s["camera"]["eye"] = {0, 9, 0}; s["camera"]["target"] = {0, 0, 0}; },
+         {"camera: up must not be zero or parallel to the viewing direction"}},
+        {"zero grid size", [](json& s) { s["meshes"][0]["size"][0] = 0; }, {"meshes[0].size[0]: must be > 0, got 0"}},
+        {"negative sphere radius", [](json& s) { s["meshes"][2]["radius"] = -1; },
+         {"meshes[2].radius: must be > 0, got -1"}},
+        {"two slices", [](json& s) { s["meshes"][2]["slices"] = 2; }, {"meshes[2].slices: must be in [3, 16384], got 2"}},
+        {"one stack", [](json& s) { s["meshes"][2]["stacks"] = 1; }, {"meshes[2].stacks: must be in [2, 16384], got 1"}},
+        {"flat box", [](json& s) { s["meshes"][3]["max"] = {1, 0, 1}; }, {"meshes[3].max: must be greater than min"}},
+        {"albedo above 1", [](json& s) { s["materials"][0]["albedo"][0] = 1.5; },
+         {"materials[0].albedo[0]: must be in [0, 1], got 1.5"}},
+        {"zero shininess", [](json& s) { s["materials"][1]["shininess"] = 0; },
+         {"materials[1].shininess: must be > 0, got 0"}},
+        {"negative scale", [](json& s) { s["instances"][1]["scale"] = -1; }, {"instances[1].scale: must be > 0, got -1"}},
+        {"zero scale axis", [](json& s) { s["instances"][1]["scale"] = {1, 0, 1}; },
+         {"instances[1].scale[1]: must be > 0, got 0"}},
+        {"matrix and translate", [](json& s) { s["instances"][1]["matrix"] = json::array(); },
+         {"instances[1].matrix: cannot be combined with translate, rotate or scale"}},
+        {"projective matrix", [](json& s) { s["instances"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 1}; },
+         {"instances[0].matrix: the last row must be 0 0 0 1"}},
+        {"mirroring matrix", [](json& s) { s["instances"][0]["matrix"] = {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; },
+         {"instances[0].matrix: the upper-left 3x3 must have a positive determinant"}},
+        {"short matrix", [](json& s) { s["instances"][0]["matrix"] = {1, 0, 0}; },
+         {"instances[0].matrix: must be an array of 16 numbers"}},
+        {"zero repeat", [](json& s) { s["instances"][1]["repeat"] = {{"count", {0, 1, 1}}, {"offset", {1, 0, 0}}}; },
+         {"instances[1].repeat.count[0]: must be in [1, 1024], got 0"}},
+        {"fitting a flat mesh to a height", [](json& s) { s["instances"][0]["fit"] = {{"height", 2}}; },
+         {"instances[0].fit.height: the mesh has no extent in y to scale"}},
+    });
+}
+
+TEST_CASE("mesh files: missing, unreadable, malformed; empty scenes") {
+    auto meshFile = [](const char* file) { return [file](json& s) { s["meshes"][1]["file"] = file; }; };
+    checkCases({
+        {"missing OBJ", meshFile("missing.obj"), {"meshes[1].file: ", "missing.obj: cannot open"}},
+        {"missing PLY", meshFile("missing.ply"), {"meshes[1].file: ", "missing.ply: cannot open"}},
+        {"directory", meshFile("folder.obj"), {"meshes[1].file: ", "folder.obj: is a directory"}},
+        {"unknown format", meshFile("notes.txt"), {"meshes[1].file: unknown mesh format \".txt\" (allowed: .obj, .ply)"}},
+        {"OBJ index out of range", meshFile("bad-index.obj"),
+         {"meshes[1].file: ", "bad-index.obj: face 0: vertex index 4 (1-based) is out of range"}},
+        {"OBJ NaN vertex", meshFile("nan.obj"), {"meshes[1].file: ", "nan.obj: line 2: vertex x \"nan\""}},
+        {"PLY truncated", meshFile("truncated.ply"), {"meshes[1].file: ", "truncated.ply: element vertex 1: truncated"}},
+        {"PLY index out of range", meshFile("bad-index.ply"),
+         {"meshes[1].file: ", "bad-index.ply: element face 0: vertex index 3 is out of range"}},
+        {"no instances", [](json& s) { s["instances"] = json::array(); }, {"the scene has no triangles"}},
+        {"only a mesh without faces", [](json& s) {
+             s["meshes"][1]["file"] = "no-faces.obj";
+             s["instances"].erase(0);
+         }, {"the scene has no triangles"}},
+    });
+}
+
+TEST_CASE("scene files that cannot be read at all") {
+    const test::TempDir dir;
+    const std::string broken = dir.write("broken.json", "{\"meshes\": [{\"name\": \"a\",}]}");
+    test::checkMessage(test::sceneErrorOf([&] { loadScene(broken); }), {broken + ": meshes[0].name: invalid JSON", "line 1, column 26"});
+    const std::string missing = dir.path("absent.json");
+    test::checkMessage(test::sceneErrorOf([&] { loadScene(missing); }), {missing + ": cannot open"});
+    test::checkMessage(test::sceneErrorOf([&] { loadScene("not-a-built-in"); }),
+                       {"unknown scene \"not-a-built-in\"", "sphere-box"});
+}
