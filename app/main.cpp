@@ -50,6 +50,7 @@ std::unique_ptr<tbb::global_control> limitThreads(int threads) {
 
 struct RenderArgs {
     std::string scene, technique = "none", png, aov, debugDir, simd = "auto";
+    std::vector<std::string> params;
     int threads = 0;
     float exposure = 0.0f;
     SceneOverrides overrides;
@@ -62,7 +63,11 @@ void runRender(const RenderArgs& a) {
     applyOverrides(scene, a.overrides);
     const WorldGeometry world = flatten(scene);
     const Technique& technique = findTechnique(a.technique);
-    const Frame frame = renderFrame(scene, world, technique, raster::parseSimdLevel(a.simd), a.debugDir);
+    FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir};
+    for (const std::string& p : a.params) parseParamAssignment(p, settings.params);
+    const Frame frame = renderFrame(scene, world, technique, settings);
+    std::printf("%s: %s in %.2f ms\n", scene.name.c_str(), technique.name.c_str(), frame.techniqueMs);
+    for (const TechniqueStat& s : frame.shadow.stats) std::printf("  %-28s %.6g\n", s.name.c_str(), s.value);
     const int w = scene.camera.width, h = scene.camera.height;
     if (!a.png.empty()) writePng(a.png, w, h, toSrgb8Image(frame.radiance, {a.exposure, ToneOperator::Reinhard}));
     if (!a.aov.empty()) {
@@ -102,7 +107,7 @@ int main(int argc, char** argv) {
     RenderArgs render;
     CLI::App* r = app.add_subcommand("render", "render a scene with a shadow technique");
     r->add_option("scene", render.scene, "built-in scene name or scene file (.json)")->required();
-    r->add_option("--technique", render.technique, "shadow technique (none, reference)")->capture_default_str();
+    r->add_option("--technique", render.technique, "shadow technique (see `shadowlab techniques`)")->capture_default_str();
     r->add_option("-o,--output", render.png, "tone-mapped sRGB PNG to write");
     r->add_option("--aov", render.aov, "OpenEXR file with R G B, P.*, N.*, hit, V, depth (and stencil)");
     r->add_option("--width", render.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
@@ -113,6 +118,7 @@ int main(int argc, char** argv) {
     addVec3Option(r, "--target", render.overrides.target, "point the camera looks at");
     r->add_option("--fovy", render.overrides.fovyDeg, "vertical field of view in degrees");
     addVec3Option(r, "--light-pos", render.overrides.lightPosition, "position (centre) of the scene's first light");
+    r->add_option("--param", render.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
     r->add_option("--debug-buffers", render.debugDir, "directory for the technique's intermediate buffers");
     r->add_option("--exposure", render.exposure, "exposure in stops for the PNG")->capture_default_str();
     r->callback([&] { runRender(render); });
@@ -140,6 +146,14 @@ int main(int argc, char** argv) {
         const BenchResults results = runBench(bench);
         std::cout << formatBenchText(results);
         if (!benchJson.empty()) writeTextFile(benchJson, formatBenchJson(results));
+    });
+
+    CLI::App* t = app.add_subcommand("techniques", "list the shadow techniques and their parameters");
+    t->callback([] {
+        for (const Technique& tech : techniques()) {
+            std::printf("%-16s %s\n", tech.name.c_str(), tech.description.c_str());
+            for (const ParamSpec& p : tech.params) std::printf("    %s=%s  %s\n", p.name.c_str(), p.defaultValue.c_str(), p.help.c_str());
+        }
     });
 
     std::string exportScene, exportPath;

@@ -1,5 +1,6 @@
 #include "app/render.h"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -54,11 +55,14 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
 }
 
 Frame renderFrame(const Scene& scene, const WorldGeometry& world, const Technique& technique,
-                  raster::SimdLevel simd, const std::filesystem::path& debugDir) {
+                  const FrameSettings& settings) {
     if (scene.lights.empty()) throw std::invalid_argument("the scene has no light to cast shadows");
+    const TechniqueParams params(technique.name, technique.params, settings.params);
     Frame frame;
-    frame.gbuffer = renderGBuffer(world, scene.camera, simd);
-    frame.shadow = technique.run({scene, world, frame.gbuffer, scene.lights[0], simd, debugDir});
+    frame.gbuffer = renderGBuffer(world, scene.camera, settings.simd);
+    const auto start = std::chrono::steady_clock::now();
+    frame.shadow = technique.run({scene, world, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir});
+    frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
     return frame;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,9 +36,17 @@ struct Frame {
     GBuffer gbuffer;
     ShadowOutputs shadow;
     std::vector<glm::vec3> radiance;   // linear, row-major
+    double techniqueMs = 0.0;          // wall time of the technique alone
 };
 
+struct FrameSettings {
+    raster::SimdLevel simd = raster::bestSimdLevel();
+    std::map<std::string, std::string> params;   // the technique's --param settings
+    std::filesystem::path debugDir;              // empty: no intermediate buffers
+};
+
+// Throws std::invalid_argument for a parameter the technique does not have.
 Frame renderFrame(const Scene& scene, const WorldGeometry& world, const Technique& technique,
-                  raster::SimdLevel simd, const std::filesystem::path& debugDir = {});
+                  const FrameSettings& settings = {});
 
 }  // namespace shadowlab

@@ -16,15 +16,17 @@ ShadowOutputs unshadowed(const ShadowInputs& in) {
 
 ShadowOutputs exactReference(const ShadowInputs& in) {
     const ReferenceVisibility reference(in.world);
-    return {reference.visibility(in.gbuffer, pointLightFor(in.light)), {}};
+    ShadowOutputs out;
+    out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light));
+    return out;
 }
 
 }  // namespace
 
 const std::vector<Technique>& techniques() {
     static const std::vector<Technique> all = {
-        {"none", "no shadows: V = 1 on every surface", unshadowed},
-        {"reference", "exact hard shadows: one Embree shadow ray per pixel to the light's centre", exactReference},
+        {"none", "no shadows: V = 1 on every surface", {}, unshadowed},
+        {"reference", "exact hard shadows: one Embree shadow ray per pixel to the light's centre", {}, exactReference},
     };
     return all;
 }

@@ -11,6 +11,7 @@
 #include "raster/tile_kernels.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shadows/technique_params.h"
 
 namespace shadowlab {
 
@@ -20,17 +21,26 @@ struct ShadowInputs {
     const GBuffer& gbuffer;
     const Light& light;                    // the selected light
     raster::SimdLevel simd;
+    const TechniqueParams& params;         // the technique's level-of-detail settings
     std::filesystem::path debugDir;        // empty: write no intermediate buffers
+};
+
+// A named figure a technique reports about its own work (texels, fill, list lengths...).
+struct TechniqueStat {
+    std::string name;
+    double value;
 };
 
 struct ShadowOutputs {
     std::vector<float> visibility;         // V per pixel, row-major, 0 where hit = 0
     std::vector<float> stencil;            // per pixel, empty if the technique uses no stencil
+    std::vector<TechniqueStat> stats;
 };
 
 struct Technique {
     std::string name;
     std::string description;
+    std::vector<ParamSpec> params;
     std::function<ShadowOutputs(const ShadowInputs&)> run;
 };
 

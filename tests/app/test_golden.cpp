@@ -45,7 +45,9 @@ std::string hex(uint64_t v) {
 
 // One line per buffer: "<name> <hash>".
 std::string frameHashes(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd) {
-    const Frame frame = renderFrame(scene, world, findTechnique("none"), simd);
+    FrameSettings settings;
+    settings.simd = simd;
+    const Frame frame = renderFrame(scene, world, findTechnique("none"), settings);
     const GBuffer& g = frame.gbuffer;
     auto line = [](const char* name, auto&&... buffers) {
         Fnv1a h;

@@ -1,0 +1,181 @@
+#include "shadows/light_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <tbb/parallel_for.h>
+
+namespace shadowlab {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The frustum's side planes in view space, as (a, b, c) with a x + b y + c z >= 0 inside;
+// they pass through the origin for a perspective view. For an orthographic view the
+// planes are x >= x0 etc., written as (normal, offset).
+struct SidePlanes {
+    glm::dvec4 plane[4];   // (nx, ny, nz, d): inside when dot(n, p) + d >= 0
+};
+
+// Receiver bounds in the view: tangents (perspective) or coordinates (orthographic).
+struct Bounds {
+    double x0 = kInfinity, x1 = -kInfinity, y0 = kInfinity, y1 = -kInfinity;
+    double nearest = kInfinity, farthest = 0.0;
+};
+
+Bounds receiverBounds(const GBuffer& g, const glm::dmat4& viewFromWorld, bool orthographic) {
+    Bounds b;
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (!g.hit[k]) continue;
+        const glm::dvec3 q = glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(g.position[k]), 1.0));
+        const double depth = -q.z;
+        if (!orthographic && !(depth > 0.0)) {
+            throw std::invalid_argument("light view: a receiver lies beside or behind the light; use cube faces");
+        }
+        const double x = orthographic ? q.x : q.x / depth, y = orthographic ? q.y : q.y / depth;
+        b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x), b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
+        b.nearest = std::min(b.nearest, depth), b.farthest = std::max(b.farthest, depth);
+    }
+    if (!(b.farthest > 0.0) && !orthographic) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
+    if (b.x0 > b.x1) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
+    return b;
+}
+
+SidePlanes sidePlanes(const Bounds& b, bool orthographic) {
+    if (orthographic) {
+        return {{{1, 0, 0, -b.x0}, {-1, 0, 0, b.x1}, {0, 1, 0, -b.y0}, {0, -1, 0, b.y1}}};
+    }
+    // x / (-z) >= x0  <=>  x + x0 z >= 0, and so on (depth = -z > 0).
+    return {{{1, 0, b.x0, 0}, {-1, 0, -b.x1, 0}, {0, 1, b.y0, 0}, {0, -1, -b.y1, 0}}};
+}
+
+// The smallest depth (-z) of the triangle's part inside the four side planes, or +inf.
+double nearestInside(const glm::dvec3 (&triangle)[3], const SidePlanes& sides) {
+    glm::dvec3 polygon[8] = {triangle[0], triangle[1], triangle[2]}, next[8];
+    int n = 3;
+    for (const glm::dvec4& p : sides.plane) {
+        int m = 0;
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec3 &a = polygon[i], &b = polygon[(i + 1) % n];
+            const double da = glm::dot(glm::dvec3(p), a) + p.w, db = glm::dot(glm::dvec3(p), b) + p.w;
+            if (da >= 0.0) next[m++] = a;
+            if ((da >= 0.0) != (db >= 0.0)) next[m++] = da >= 0.0 ? a + (b - a) * (da / (da - db)) : b + (a - b) * (db / (db - da));
+        }
+        std::copy(next, next + m, polygon);
+        n = m;
+        if (n == 0) return kInfinity;
+    }
+    double nearest = kInfinity;
+    for (int i = 0; i < n; ++i) nearest = std::min(nearest, -polygon[i].z);
+    return nearest;
+}
+
+// The nearest geometry inside the sides, over all triangles; a minimum is exact and
+// independent of the order, so the per-chunk minima can be combined in any order.
+double nearestGeometry(const WorldGeometry& world, const glm::dmat4& viewFromWorld, const SidePlanes& sides) {
+    constexpr size_t kChunk = 16384;
+    const size_t chunks = (world.triangles.size() + kChunk - 1) / kChunk;
+    std::vector<double> nearest(chunks, kInfinity);
+    tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+        for (size_t t = c * kChunk; t < std::min(world.triangles.size(), (c + 1) * kChunk); ++t) {
+            glm::dvec3 v[3];
+            for (int k = 0; k < 3; ++k) {
+                v[k] = glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(world.positions[world.triangles[t][k]]), 1.0));
+            }
+            nearest[c] = std::min(nearest[c], nearestInside(v, sides));
+        }
+    });
+    return chunks ? *std::min_element(nearest.begin(), nearest.end()) : kInfinity;
+}
+
+glm::dvec3 anyPerpendicular(const glm::dvec3& axis) {
+    return std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+}
+
+void widen(Bounds& b, const LightFitOptions& o) {
+    const double mx = (b.x1 - b.x0) * o.marginTexels / o.resolution, my = (b.y1 - b.y0) * o.marginTexels / o.resolution;
+    b.x0 -= mx, b.x1 += mx, b.y0 -= my, b.y1 += my;
+}
+
+// Near and far from the receivers and the geometry in front of them.
+void fitDepthRange(LightView& view, const Bounds& b, const WorldGeometry& world, const LightFitOptions& o) {
+    view.zFar = b.farthest * (1.0 + 1e-4) + (view.orthographic ? 1e-4 : 0.0);
+    const double occluder = nearestGeometry(world, view.viewFromWorld, sidePlanes(b, view.orthographic));
+    double zNear = std::min(occluder, b.nearest);
+    if (!view.orthographic) zNear = std::max(zNear * (1.0 - 1e-4), view.zFar * o.minNearFraction);
+    else zNear -= 1e-4 * (view.zFar - zNear) + 1e-4;
+    view.zNear = zNear;
+}
+
+LightView perspectiveView(const glm::dvec3& apex, const glm::dvec3& axis, const GBuffer& g, const WorldGeometry& world,
+                          const LightFitOptions& o) {
+    LightView view;
+    view.viewFromWorld = glm::lookAtRH(apex, apex + axis, anyPerpendicular(axis));
+    Bounds b = receiverBounds(g, view.viewFromWorld, false);
+    widen(b, o);
+    fitDepthRange(view, b, world, o);
+    const double n = view.zNear;
+    view.clipFromView = glm::frustumRH_NO(b.x0 * n, b.x1 * n, b.y0 * n, b.y1 * n, n, view.zFar);
+    return view;
+}
+
+}  // namespace
+
+LightView fitLightView(const Light& light, const GBuffer& receivers, const WorldGeometry& world,
+                       const LightFitOptions& options) {
+    if (light.type == LightType::Disk || light.type == LightType::Rectangle) {
+        throw std::invalid_argument("light view: an area light has no single view; use its centre (pointLightFor)");
+    }
+    if (light.type != LightType::Directional) {
+        // Aim at the centre of the receivers' bounding box, then fit the sides around them.
+        glm::dvec3 lo(kInfinity), hi(-kInfinity);
+        for (size_t k = 0; k < receivers.pixelCount(); ++k) {
+            if (receivers.hit[k]) lo = glm::min(lo, glm::dvec3(receivers.position[k])), hi = glm::max(hi, glm::dvec3(receivers.position[k]));
+        }
+        if (lo.x > hi.x) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
+        const glm::dvec3 apex(light.position);
+        return perspectiveView(apex, glm::normalize(0.5 * (lo + hi) - apex), receivers, world, options);
+    }
+    LightView view;
+    view.orthographic = true;
+    const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(light.direction));
+    // The eye sits anywhere on the light's side; depths are then measured from it.
+    view.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, anyPerpendicular(towardsLight));
+    Bounds b = receiverBounds(receivers, view.viewFromWorld, true);
+    widen(b, options);
+    b.farthest = -kInfinity;
+    for (size_t k = 0; k < receivers.pixelCount(); ++k) {
+        if (receivers.hit[k]) b.farthest = std::max(b.farthest, -(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0)).z);
+    }
+    fitDepthRange(view, b, world, options);
+    view.clipFromView = glm::orthoRH_NO(b.x0, b.x1, b.y0, b.y1, view.zNear, view.zFar);
+    return view;
+}
+
+bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const WorldGeometry& world,
+                 const LightFitOptions& options, LightView& view) {
+    static const glm::dvec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::dvec3 kUps[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    const glm::dvec3 apex(light.position);
+    view = {};
+    view.viewFromWorld = glm::lookAtRH(apex, apex + kAxes[face], kUps[face]);
+    // The face's receivers: those inside its 90-degree pyramid.
+    Bounds b;
+    b.x0 = b.y0 = -1.0, b.x1 = b.y1 = 1.0;
+    for (size_t k = 0; k < receivers.pixelCount(); ++k) {
+        if (!receivers.hit[k]) continue;
+        const glm::dvec3 q = glm::dvec3(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0));
+        if (-q.z > 0.0 && std::abs(q.x) <= -q.z && std::abs(q.y) <= -q.z) {
+            b.nearest = std::min(b.nearest, -q.z), b.farthest = std::max(b.farthest, -q.z);
+        }
+    }
+    if (!(b.farthest > 0.0)) return false;
+    fitDepthRange(view, b, world, options);
+    view.clipFromView = glm::frustumRH_NO(-view.zNear, view.zNear, -view.zNear, view.zNear, view.zNear, view.zFar);
+    return true;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,47 @@
+// The light's view for a depth map, fitted tightly to what matters (Real-Time Rendering,
+// 4th ed., section 7.4, Figure 7.11): the sides bound the receivers the camera sees (the
+// G-buffer points with hit = 1), the far plane is the farthest of them, and the near plane
+// is the nearest geometry inside that frustum, since only geometry between the light and
+// the visible receivers can shadow them.
+//
+// Point and spot lights get a perspective frustum with its apex at the light (asymmetric,
+// so it hugs the receivers); directional lights an orthographic box. A point light whose
+// receivers surround it cannot be covered by one frustum: fitLightView throws, and the
+// technique uses six cube faces instead (fitCubeFace).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scenes/scene.h"
+#include "shading/gbuffer.h"
+
+namespace shadowlab {
+
+struct LightView {
+    glm::dmat4 viewFromWorld{1.0};   // OpenGL view space: the light looks down -z
+    glm::dmat4 clipFromView{1.0};
+    double zNear = 0.0, zFar = 1.0;  // view-space distances along -z
+    bool orthographic = false;
+    glm::dmat4 clipFromWorld() const { return clipFromView * viewFromWorld; }
+};
+
+struct LightFitOptions {
+    int resolution = 2048;       // texels per side of the map the view is for
+    double marginTexels = 2.0;   // receivers stay this far inside the sides (filter footprints)
+    // The near plane is never closer than this fraction of the far distance, which bounds
+    // the depth precision a perspective map can lose (window depth resolves ~ z^2 / near).
+    double minNearFraction = 1e-4;
+};
+
+// Throws std::invalid_argument when there are no receivers, the light is an area light
+// (pass pointLightFor(light)), or a point light's receivers span more than a hemisphere.
+LightView fitLightView(const Light& light, const GBuffer& receivers, const WorldGeometry& world,
+                       const LightFitOptions& options = {});
+
+// Face k (0..5: +x, -x, +y, -y, +z, -z) of a cube around a point light: a 90-degree
+// square frustum, with near and far fitted to the receivers and geometry inside it.
+// Returns false when no receiver lies in the face.
+bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const WorldGeometry& world,
+                 const LightFitOptions& options, LightView& view);
+
+}  // namespace shadowlab
