@@ -2,6 +2,7 @@
 // (x, y in pixels with row 0 at the top, z in [0, 1]) and an independent coverage oracle.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -64,6 +65,15 @@ inline bool oracleCovers(const glm::i64vec2 v[3], int i, int j) {
         if (!top && !left) return false;
     }
     return true;
+}
+
+// The SIMD levels this CPU runs (tests run each kernel they can).
+inline std::vector<raster::SimdLevel> supportedLevels() {
+    std::vector<raster::SimdLevel> levels;
+    for (raster::SimdLevel l : {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
+        if (raster::simdLevelSupported(l)) levels.push_back(l);
+    }
+    return levels;
 }
 
 inline glm::i64vec2 snap(const glm::vec3& p) {

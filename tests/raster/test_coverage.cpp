@@ -12,6 +12,7 @@ using namespace shadowlab;
 using namespace shadowlab::raster;
 using shadowlab::test::countingState;
 using shadowlab::test::oracleCovers;
+using shadowlab::test::supportedLevels;
 using shadowlab::test::windowDraw;
 
 namespace {
@@ -22,14 +23,6 @@ std::vector<uint8_t> countCoverage(SimdLevel level, int size, const std::vector<
     Rasterizer r(level);
     r.draw(fb, countingState(), windowDraw(fb, positions, triangles));
     return fb.stencilImage();
-}
-
-std::vector<SimdLevel> supportedLevels() {
-    std::vector<SimdLevel> levels;
-    for (SimdLevel l : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) {
-        if (simdLevelSupported(l)) levels.push_back(l);
-    }
-    return levels;
 }
 
 // A random position on the 1/256 grid, often exactly on a pixel centre or a pixel corner

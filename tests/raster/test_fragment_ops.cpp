@@ -9,6 +9,7 @@
 
 using namespace shadowlab;
 using namespace shadowlab::raster;
+using shadowlab::test::supportedLevels;
 
 namespace {
 
@@ -58,14 +59,6 @@ constexpr CompareFunc kAllFuncs[] = {CompareFunc::Never, CompareFunc::Less, Comp
                                      CompareFunc::Greater, CompareFunc::NotEqual, CompareFunc::GreaterEqual, CompareFunc::Always};
 constexpr StencilOp kAllOps[] = {StencilOp::Keep, StencilOp::Zero, StencilOp::Replace, StencilOp::Increment,
                                  StencilOp::Decrement, StencilOp::IncrementWrap, StencilOp::DecrementWrap, StencilOp::Invert};
-
-std::vector<SimdLevel> supportedLevels() {
-    std::vector<SimdLevel> levels;
-    for (SimdLevel l : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) {
-        if (simdLevelSupported(l)) levels.push_back(l);
-    }
-    return levels;
-}
 
 }  // namespace
 
