@@ -44,7 +44,7 @@ SetupChunk setUp(const LightPass& p, const TransformedVertices& v) {
     for (const glm::uvec3& t : p.world.triangles) {
         if ((v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) != 0) continue;
         TriangleSetup s;
-        if (setupTriangle({{v.window[t.x], nullptr}, {v.window[t.y], nullptr}, {v.window[t.z], nullptr}}, 0, context, s, chunk.planes)) {
+        if (setupTriangle({{v.window[t.x], nullptr}, {v.window[t.y], nullptr}, {v.window[t.z], nullptr}}, {0, 1.0}, context, s, chunk.planes)) {
             chunk.triangles.push_back(s);
             chunk.planeStart.push_back(0);
         }
@@ -84,7 +84,7 @@ void BM_Binning(benchmark::State& state) {
     TileBins bins;
     for (auto _ : state) {
         countTiles(chunks[0], tiles, tiles);
-        fillBins(chunks, 1, tiles, tiles, bins);
+        fillBins(chunks, 0, 1, tiles, tiles, bins);
         benchmark::DoNotOptimize(bins.entries.data());
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(chunks[0].triangles.size()));
@@ -105,7 +105,7 @@ void BM_RasterTiles(benchmark::State& state) {
     const int tiles = kMapSize / kTileSize;
     countTiles(chunks[0], tiles, tiles);
     TileBins bins;
-    fillBins(chunks, 1, tiles, tiles, bins);
+    fillBins(chunks, 0, 1, tiles, tiles, bins);
     Framebuffer fb(kMapSize, kMapSize);
     const DrawConstants constants = {p.state, {1, 1, 1, 1}, 0};
     const TileKernel kernel = tileKernels(level).kernel[int(FragmentOutput::DepthOnly)][0];
@@ -113,7 +113,7 @@ void BM_RasterTiles(benchmark::State& state) {
     for (auto _ : state) {
         fb.clearDepth(1.0f);
         for (int tile = 0; tile < tiles * tiles; ++tile) {
-            for (uint32_t e = bins.start[size_t(tile)]; e < bins.start[size_t(tile) + 1]; ++e) kernel(*bins.entries[e], tile, constants, view);
+            for (size_t e = bins.start[size_t(tile)]; e < bins.start[size_t(tile) + 1]; ++e) kernel(*bins.entries[e], tile, constants, view);
         }
         benchmark::DoNotOptimize(view.depth);
     }

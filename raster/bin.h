@@ -21,17 +21,18 @@ struct SetupChunk {
     std::vector<Plane> planes;            // varying planes, referenced by index until binning
     std::vector<uint32_t> planeStart;     // per triangle, its first plane in `planes`
     std::vector<uint32_t> tileCounts;     // per tile, triangles touching it
+    size_t entryCount = 0;                // sum of tileCounts
 };
 
 struct TileBins {
-    std::vector<uint32_t> start;                 // per tile, first entry; size tiles + 1
+    std::vector<size_t> start;                   // per tile, first entry; size tiles + 1
     std::vector<const TriangleSetup*> entries;   // all tiles' lists, one after another
 };
 
-// Counts the tiles each triangle of the chunk touches (fills chunk.tileCounts).
+// Counts the tiles each triangle of the chunk touches (fills tileCounts and entryCount).
 void countTiles(SetupChunk& chunk, int tilesX, int tilesY);
-// Builds the bins from chunks whose tiles were counted; also points every triangle at its
-// varying planes, which no longer move.
-void fillBins(std::vector<SetupChunk>& chunks, size_t chunkCount, int tilesX, int tilesY, TileBins& bins);
+// Builds the bins from chunks [first, last), whose tiles were counted; also points every
+// triangle at its varying planes, which no longer move.
+void fillBins(std::vector<SetupChunk>& chunks, size_t first, size_t last, int tilesX, int tilesY, TileBins& bins);
 
 }  // namespace shadowlab::raster

@@ -41,6 +41,7 @@ int clipAgainstPlane(int plane, const ClipVertex* in, int n, ClipVertex* out, co
         const ClipVertex& b = in[(i + 1) % n];
         const float da = planeDistance(plane, a.position, volume);
         const float db = planeDistance(plane, b.position, volume);
+        if (count + 2 > kMaxClippedVertices) return 0;   // a degenerate sliver: drop it
         if (da >= 0.0f) out[count++] = a;
         if ((da >= 0.0f) != (db >= 0.0f)) {
             out[count++] = da >= 0.0f ? intersect(a, da, b, db, varyingCount) : intersect(b, db, a, da, varyingCount);
@@ -77,7 +78,7 @@ uint32_t viewportOutcode(const glm::vec4& p, const ClipVolume& volume) {
 }
 
 int clipPolygon(ClipVertex* polygon, int n, uint32_t outcodes, const ClipVolume& volume, int varyingCount) {
-    ClipVertex scratch[kMaxClippedVertices + 1];
+    ClipVertex scratch[kMaxClippedVertices];
     ClipVertex* in = polygon;
     ClipVertex* out = scratch;
     for (int plane = 0; plane < kClipPlaneCount && n > 0; ++plane) {

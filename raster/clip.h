@@ -15,8 +15,10 @@
 namespace shadowlab::raster {
 
 inline constexpr int kMaxVaryings = 8;
-// A triangle clipped by six planes has at most 3 + 6 vertices.
-inline constexpr int kMaxClippedVertices = 9;
+// In exact arithmetic a triangle clipped by six planes keeps at most 3 + 6 vertices; in
+// floating point a polygon lying almost in a plane can cross it more often. Clipping
+// drops a polygon that would outgrow this capacity (only such slivers can).
+inline constexpr int kMaxClippedVertices = 16;
 
 struct ClipVertex {
     glm::vec4 position;
@@ -36,8 +38,9 @@ uint32_t clipOutcode(const glm::vec4& p, const ClipVolume& volume);
 // triangle whose three vertices share a bit cannot be seen.
 uint32_t viewportOutcode(const glm::vec4& p, const ClipVolume& volume);
 
-// Clips the convex polygon `polygon` (n vertices) against the planes set in `outcodes`,
-// in place; returns the new vertex count (0 when nothing is left).
+// Clips the convex polygon `polygon` (n vertices, room for kMaxClippedVertices) against
+// the planes set in `outcodes`, in place; returns the new vertex count (0 when nothing is
+// left, or when the polygon would outgrow kMaxClippedVertices).
 int clipPolygon(ClipVertex* polygon, int n, uint32_t outcodes, const ClipVolume& volume, int varyingCount);
 
 }  // namespace shadowlab::raster

@@ -11,9 +11,11 @@
 //  * an edge coefficient (a difference of two coordinates) is then below 2^23, and the
 //    edge constant (a 2x2 determinant) below 2^46: setup works in int64;
 //  * per pixel, the edge function is evaluated in pixel units, e = A*i + B*j + c (see
-//    setup.cpp for the exact reduction). Inside one 64x64 tile an edge that crosses the
-//    tile changes sign there, so every value it takes is bounded by its variation across
-//    the tile: |A|*63 + |B|*63 < 2^30. The per-pixel tests therefore run in int32 lanes.
+//    setup.cpp for the exact reduction). An edge is tested per pixel only inside a tile
+//    where it takes both signs over the triangle's pixels, so anywhere in that 64x64 tile
+//    (its origin, its blocks' corners, its pixels) e stays within twice its variation
+//    across the tile: |e| <= 2 * 63 * (|A| + |B|) < 2^31. The per-pixel tests therefore run
+//    in int32 lanes.
 //    Edges that do not cross a tile are accepted or rejected for the whole tile first.
 #pragma once
 

@@ -1,5 +1,8 @@
 #include "raster/rasterizer.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -16,10 +19,11 @@ namespace {
 constexpr size_t kChunkTriangles = 4096;
 constexpr size_t kChunksPerBatch = 64;
 
-void addSetup(SetupChunk& chunk, const SetupVertex (&corners)[3], uint32_t id, const SetupContext& context) {
+void addSetup(SetupChunk& chunk, const SetupVertex (&corners)[3], const Primitive& primitive,
+              const SetupContext& context) {
     TriangleSetup setup;
     const auto firstPlane = uint32_t(chunk.planes.size());
-    if (!setupTriangle(corners, id, context, setup, chunk.planes)) return;
+    if (!setupTriangle(corners, primitive, context, setup, chunk.planes)) return;
     chunk.triangles.push_back(setup);
     chunk.planeStart.push_back(firstPlane);
 }
@@ -31,25 +35,43 @@ const float* varyingsOf(const VertexStream& stream, uint32_t index) {
 ClipVertex clipVertex(const TransformedVertices& v, const VertexStream& stream, uint32_t index) {
     ClipVertex c;
     c.position = v.clipPosition(index);
-    for (int k = 0; k < stream.varyingCount; ++k) c.varyings[k] = stream.varyings[size_t(index) * stream.varyingCount + k];
+    const float* varyings = varyingsOf(stream, index);
+    for (int k = 0; k < stream.varyingCount; ++k) c.varyings[k] = varyings[k];
     return c;
 }
 
-// The slow path, for a triangle with a vertex outside the guard band, near or far plane:
-// clip it, then set up the fan of triangles the clipped polygon forms.
-void clipAndSetup(SetupChunk& chunk, const TransformedVertices& v, const VertexStream& stream, const glm::uvec3& t,
+bool projectable(const glm::vec4& p) {
+    return p.w > 0.0f && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+}
+
+// Starting from the smallest vertex index (winding kept) makes the clipped polygon, and so
+// the fan and its planes, the same however the triangle's indices were rotated.
+glm::uvec3 canonicalIndexOrder(const glm::uvec3& t) {
+    if (t.y < t.x && t.y <= t.z) return {t.y, t.z, t.x};
+    if (t.z < t.x && t.z < t.y) return {t.z, t.x, t.y};
+    return t;
+}
+
+// The slow path, for a triangle with a vertex outside the guard band, near or far plane,
+// or one that cannot be projected: clip it, then set up the fan of triangles the clipped
+// polygon forms, all with the polygon's largest depth for the polygon offset.
+void clipAndSetup(SetupChunk& chunk, const TransformedVertices& v, const VertexStream& stream, const glm::uvec3& triangle,
                   uint32_t id, const Viewport& viewport, const SetupContext& context) {
-    ClipVertex polygon[kMaxClippedVertices + 1] = {clipVertex(v, stream, t.x), clipVertex(v, stream, t.y),
-                                                   clipVertex(v, stream, t.z)};
-    const uint32_t codes = (v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) & ~uint32_t(kBadW);
+    const glm::uvec3 t = canonicalIndexOrder(triangle);
+    ClipVertex polygon[kMaxClippedVertices] = {clipVertex(v, stream, t.x), clipVertex(v, stream, t.y),
+                                               clipVertex(v, stream, t.z)};
+    const uint32_t codes = (v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) & ~uint32_t(kNotProjectable);
     const int n = clipPolygon(polygon, 3, codes, viewport.volume, stream.varyingCount);
     SetupVertex window[kMaxClippedVertices];
+    Primitive primitive = {id, 0.0};
     for (int k = 0; k < n; ++k) {
-        // Only a projection that puts points in front of the near plane at w <= 0 gets here.
-        if (!(polygon[k].position.w > 0.0f)) return;
+        // Clipping cannot repair a vertex at w <= 0 in front of the near plane (an unusual
+        // projection) or a non-finite one: the primitive is dropped.
+        if (!projectable(polygon[k].position)) return;
         window[k] = {toWindow(polygon[k].position, viewport.width, viewport.height), polygon[k].varyings};
+        primitive.maxDepth = std::max(primitive.maxDepth, std::abs(window[k].window.z));
     }
-    for (int k = 1; k + 1 < n; ++k) addSetup(chunk, {window[0], window[k], window[k + 1]}, id, context);
+    for (int k = 1; k + 1 < n; ++k) addSetup(chunk, {window[0], window[k], window[k + 1]}, primitive, context);
 }
 
 Viewport viewportFor(const Framebuffer& fb, const PipelineState& state) {
@@ -58,7 +80,8 @@ Viewport viewportFor(const Framebuffer& fb, const PipelineState& state) {
 
 }  // namespace
 
-Rasterizer::Rasterizer(SimdLevel level) : level_(level), kernels_(&tileKernels(level)) {}
+Rasterizer::Rasterizer(SimdLevel level, size_t binEntryBudget)
+    : level_(level), kernels_(&tileKernels(level)), binEntryBudget_(binEntryBudget) {}
 
 void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) const {
     const VertexStream& vs = call.vertices;
@@ -71,6 +94,9 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
     }
     if (vs.varyings.size() != vertexCount * size_t(vs.varyingCount)) {
         throw std::invalid_argument("draw: varyings must hold varyingCount values per vertex");
+    }
+    if (uint64_t(call.firstPrimitiveId) + call.triangles.size() > uint64_t(UINT32_MAX) + 1) {
+        throw std::invalid_argument("draw: primitive ids would pass 2^32 - 1");
     }
     for (const glm::uvec3& t : call.triangles) {
         if (t.x >= vertexCount || t.y >= vertexCount || t.z >= vertexCount) {
@@ -86,9 +112,8 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
     if (writesColor && !has.color) throw std::invalid_argument("draw: colour output on a framebuffer without colour");
 }
 
-void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call,
-                             size_t firstTriangle, size_t triangleCount, size_t chunkCount) {
-    const Viewport viewport = viewportFor(framebuffer, state);
+void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& viewport, const PipelineState& state,
+                             const DrawCall& call, size_t firstTriangle, size_t triangleCount, size_t chunkCount) {
     const SetupContext context = {framebuffer.width(), framebuffer.height(), &state, call.vertices.varyingCount};
     tbb::parallel_for(size_t(0), chunkCount, [&](size_t c) {
         SetupChunk& chunk = chunks_[c];
@@ -104,8 +129,9 @@ void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const PipelineState
             if (v.viewportCode[t.x] & v.viewportCode[t.y] & v.viewportCode[t.z]) {
                 ++stats.trianglesTriviallyRejected;   // wholly outside one side of the view volume
             } else if ((v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) == 0) {
+                const double maxDepth = std::max({std::abs(v.window[t.x].z), std::abs(v.window[t.y].z), std::abs(v.window[t.z].z)});
                 addSetup(chunk, {{v.window[t.x], varyingsOf(call.vertices, t.x)}, {v.window[t.y], varyingsOf(call.vertices, t.y)},
-                                 {v.window[t.z], varyingsOf(call.vertices, t.z)}}, id, context);
+                                 {v.window[t.z], varyingsOf(call.vertices, t.z)}}, {id, maxDepth}, context);
             } else {
                 ++stats.trianglesClipped;
                 clipAndSetup(chunk, v, call.vertices, t, id, viewport, context);
@@ -120,7 +146,7 @@ void Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& const
     const int tileCount = framebuffer.tilesX() * framebuffer.tilesY();
     // One task owns one tile and runs its triangles in submission order.
     tbb::parallel_for(0, tileCount, [&](int tile) {
-        for (uint32_t e = bins_.start[size_t(tile)]; e < bins_.start[size_t(tile) + 1]; ++e) {
+        for (size_t e = bins_.start[size_t(tile)]; e < bins_.start[size_t(tile) + 1]; ++e) {
             kernel(*bins_.entries[e], tile, constants, view);
         }
     });
@@ -144,15 +170,20 @@ void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, cons
     for (size_t first = 0; first < call.triangles.size(); first += batchTriangles) {
         const size_t count = std::min(batchTriangles, call.triangles.size() - first);
         const size_t chunkCount = (count + kChunkTriangles - 1) / kChunkTriangles;
-        runFrontEnd(framebuffer, state, call, first, count, chunkCount);
-        fillBins(chunks_, chunkCount, framebuffer.tilesX(), framebuffer.tilesY(), bins_);
-        runBackEnd(framebuffer, constants, kernel);
+        runFrontEnd(framebuffer, viewport, state, call, first, count, chunkCount);
+        for (size_t group = 0; group < chunkCount;) {
+            size_t end = group + 1, entries = chunks_[group].entryCount;
+            while (end < chunkCount && entries + chunks_[end].entryCount <= binEntryBudget_) entries += chunks_[end++].entryCount;
+            fillBins(chunks_, group, end, framebuffer.tilesX(), framebuffer.tilesY(), bins_);
+            runBackEnd(framebuffer, constants, kernel);
+            stats_.binEntries += entries;
+            group = end;
+        }
         for (size_t c = 0; c < chunkCount; ++c) {
             stats_.trianglesTriviallyRejected += chunkStats_[c].trianglesTriviallyRejected;
             stats_.trianglesClipped += chunkStats_[c].trianglesClipped;
             stats_.trianglesSetUp += chunks_[c].triangles.size();
         }
-        stats_.binEntries += bins_.entries.size();
     }
     stats_.trianglesSubmitted += call.triangles.size();
 }

@@ -41,17 +41,24 @@ struct RasterStats {
     uint64_t trianglesSubmitted = 0;
     uint64_t trianglesTriviallyRejected = 0;   // outside one viewport plane
     uint64_t trianglesClipped = 0;             // needed near/far/guard-band clipping
-    uint64_t trianglesSetUp = 0;               // survived culling and cover some pixel
+    uint64_t trianglesSetUp = 0;               // survived culling; their bounds hold a pixel centre
     uint64_t binEntries = 0;                   // (triangle, tile) pairs rasterized
 };
 
 class Rasterizer {
 public:
-    explicit Rasterizer(SimdLevel level = bestSimdLevel());
+    // Bin entries (8 bytes each) held at once: a batch's chunks of triangles are binned and
+    // rasterized in consecutive groups under this budget, so each tile still sees its
+    // triangles in order. A group holds at least one chunk (4096 triangles), which bounds
+    // the worst case: 4096 entries per tile.
+    static constexpr size_t kDefaultBinEntryBudget = size_t(1) << 24;
+
+    explicit Rasterizer(SimdLevel level = bestSimdLevel(), size_t binEntryBudget = kDefaultBinEntryBudget);
 
     SimdLevel simdLevel() const { return level_; }
-    // Throws std::invalid_argument for an index out of range, too many varyings, or an
-    // output, stencil or colour state the framebuffer has no buffer for.
+    // Throws std::invalid_argument for an index out of range, too many varyings, primitive
+    // ids past 2^32 - 1, or an output, stencil or colour state the framebuffer has no
+    // buffer for.
     void draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call);
 
     const RasterStats& stats() const { return stats_; }
@@ -59,12 +66,13 @@ public:
 
 private:
     void validate(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) const;
-    void runFrontEnd(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call,
-                     size_t firstTriangle, size_t triangleCount, size_t chunkCount);
+    void runFrontEnd(const Framebuffer& framebuffer, const Viewport& viewport, const PipelineState& state,
+                     const DrawCall& call, size_t firstTriangle, size_t triangleCount, size_t chunkCount);
     void runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel) const;
 
     SimdLevel level_;
     const TileKernels* kernels_;
+    size_t binEntryBudget_;
     TransformedVertices vertices_;
     std::vector<SetupChunk> chunks_;
     std::vector<RasterStats> chunkStats_;

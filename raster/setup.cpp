@@ -105,21 +105,22 @@ Plane planeThrough(const SetupVertex c[3], const double q[3], int32_t refX, int3
 
 // OpenGL 4.6 section 14.6.5: factor * max slope + units * r, where for a float depth
 // buffer r = 2^(e - 23) and e is the exponent of the triangle's largest depth.
-double polygonOffset(const PolygonOffset& offset, const SetupVertex c[3], const Plane& depth) {
+double polygonOffset(const PolygonOffset& offset, double maxDepth, const Plane& depth) {
     if (offset.factor == 0.0f && offset.units == 0.0f) return 0.0;
     const double maxSlope = std::max(std::abs(double(depth.perX)), std::abs(double(depth.perY)));
-    const double maxZ = std::max({std::abs(c[0].window.z), std::abs(c[1].window.z), std::abs(c[2].window.z)});
     int exponent = 0;
-    std::frexp(maxZ, &exponent);   // maxZ = m 2^exponent, m in [0.5, 1): IEEE exponent is exponent - 1
+    std::frexp(maxDepth, &exponent);   // maxZ = m 2^exponent, m in [0.5, 1): IEEE exponent is exponent - 1
     const double r = std::ldexp(1.0, exponent - 1 - 23);
     return offset.factor * maxSlope + offset.units * r;
 }
 
-void setupPlanes(const SetupVertex v[3], const SetupContext& context, TriangleSetup& out,
+void setupPlanes(const SetupVertex v[3], double maxDepth, const SetupContext& context, TriangleSetup& out,
                  std::vector<Plane>& planes) {
     const double z[3] = {v[0].window.z, v[1].window.z, v[2].window.z};
     out.depth = planeThrough(v, z, out.minX, out.minY);
-    const double offset = polygonOffset(context.state->offset, v, out.depth);
+    // The offset needs the slope, so the plane is found first; it is then rebuilt with the
+    // offset added in double, rather than adding the offset to the float plane.
+    const double offset = polygonOffset(context.state->offset, maxDepth, out.depth);
     if (offset != 0.0) out.depth = planeThrough(v, z, out.minX, out.minY, offset);
     if (context.state->output != FragmentOutput::VaryingColor) return;
     // Perspective-correct interpolation: 1/w and a/w are affine in window space.
@@ -134,7 +135,7 @@ void setupPlanes(const SetupVertex v[3], const SetupContext& context, TriangleSe
 
 }  // namespace
 
-bool setupTriangle(const SetupVertex (&corners)[3], uint32_t primitiveId, const SetupContext& context,
+bool setupTriangle(const SetupVertex (&corners)[3], const Primitive& primitive, const SetupContext& context,
                    TriangleSetup& out, std::vector<Plane>& planes) {
     SetupVertex v[3] = {corners[0], corners[1], corners[2]};
     canonicalRotation(v);
@@ -151,9 +152,9 @@ bool setupTriangle(const SetupVertex (&corners)[3], uint32_t primitiveId, const 
     if (bounds.minX >= bounds.maxX || bounds.minY >= bounds.maxY) return false;
     out.minX = bounds.minX, out.minY = bounds.minY, out.maxX = bounds.maxX, out.maxY = bounds.maxY;
     setupEdges(v, det > 0 ? 1 : -1, conservative, out);
-    out.primitiveId = primitiveId;
+    out.primitiveId = primitive.id;
     out.varyings = nullptr;
-    setupPlanes(v, context, out, planes);
+    setupPlanes(v, primitive.maxDepth, context, out, planes);
     return true;
 }
 

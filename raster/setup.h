@@ -23,11 +23,19 @@ struct SetupVertex {
     const float* varyings;
 };
 
-// Sets up one triangle. Returns false when it is culled, degenerate after snapping, or
-// covers no pixel centre (no pixel at all, in conservative mode). Its varying planes are
-// appended to `planes`; `out.varyings` is left for the caller to point at them once
-// `planes` stops growing.
-bool setupTriangle(const SetupVertex (&corners)[3], uint32_t primitiveId, const SetupContext& context,
+// What a triangle inherits from the primitive it came from (several, when clipping made a
+// fan): its id, and the largest window depth of the whole primitive, which sets the
+// polygon offset's r (OpenGL 4.6 section 14.6.5 takes it per primitive).
+struct Primitive {
+    uint32_t id;
+    double maxDepth;
+};
+
+// Sets up one triangle. Returns false when it is culled, degenerate after snapping, or its
+// pixel bounds hold no pixel centre (no pixel at all, in conservative mode). Its varying
+// planes are appended to `planes`; `out.varyings` is left for the caller to point at them
+// once `planes` stops growing.
+bool setupTriangle(const SetupVertex (&corners)[3], const Primitive& primitive, const SetupContext& context,
                    TriangleSetup& out, std::vector<Plane>& planes);
 
 }  // namespace shadowlab::raster

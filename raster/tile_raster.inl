@@ -191,6 +191,11 @@ struct PixelRect {
 inline I32 blockLaneX(int v) { return (simd::splat(int32_t(v * simd::kWidth)) + simd::laneIndex()) & simd::splat(int32_t(kBlockSize - 1)); }
 inline I32 blockLaneY(int v) { return simd::shiftRight<kBlockShift>(simd::splat(int32_t(v * simd::kWidth)) + simd::laneIndex()); }
 
+inline Mask insideRect(I32 x, I32 y, const PixelRect& r) {
+    return simd::cmpGt(x, simd::splat(int32_t(r.x0 - 1))) & simd::cmpGt(simd::splat(int32_t(r.x1)), x) &
+           simd::cmpGt(y, simd::splat(int32_t(r.y0 - 1))) & simd::cmpGt(simd::splat(int32_t(r.y1)), y);
+}
+
 template <FragmentOutput kOutput, bool kStencil>
 void rasterizeBlock(const TriangleSetup& tri, const DrawConstants& draw, const FramebufferView& fb,
                     const CrossingEdge* tileEdges, int tileEdgeCount, int tileX, int tileY,
@@ -217,10 +222,7 @@ void rasterizeBlock(const TriangleSetup& tri, const DrawConstants& draw, const F
             covered = covered & simd::cmpGt(simd::splat(atBlock[k]) + edges[k]->laneOffset[v], minusOne);
         }
         const I32 x = simd::splat(int32_t(blockX)) + blockLaneX(v), y = simd::splat(int32_t(blockY)) + blockLaneY(v);
-        if (!blockInsideRegion) {
-            covered = covered & simd::cmpGt(x, simd::splat(int32_t(region.x0 - 1))) & simd::cmpGt(simd::splat(int32_t(region.x1)), x) &
-                      simd::cmpGt(y, simd::splat(int32_t(region.y0 - 1))) & simd::cmpGt(simd::splat(int32_t(region.y1)), y);
-        }
+        if (!blockInsideRegion) covered = covered & insideRect(x, y, region);
         if (!simd::any(covered)) continue;
         shadeFragments<kOutput, kStencil>(tri, draw, fb, {covered, x, y, blockOffset + size_t(v * simd::kWidth)});
     }

@@ -1,5 +1,7 @@
 #include "raster/vertex_stage.h"
 
+#include <cmath>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -27,7 +29,9 @@ void transform(std::span<const Position> positions, const glm::mat4& m, const Vi
         }
         for (size_t i = range.begin(); i != range.end(); ++i) {
             const glm::vec4 p = out.clipPosition(uint32_t(i));
-            const uint8_t code = uint8_t(clipOutcode(p, viewport.volume) | (p.w > 0.0f ? 0 : kBadW));
+            const bool projectable = p.w > 0.0f && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+                                     std::isfinite(p.w);
+            const uint8_t code = uint8_t(clipOutcode(p, viewport.volume) | (projectable ? 0 : kNotProjectable));
             out.clipCode[i] = code;
             out.viewportCode[i] = uint8_t(viewportOutcode(p, viewport.volume));
             if (code == 0) out.window[i] = toWindow(p, viewport.width, viewport.height);

@@ -17,7 +17,7 @@ namespace shadowlab::raster {
 
 struct TransformedVertices {
     std::vector<float> x, y, z, w;            // clip space
-    std::vector<uint8_t> clipCode;            // clipOutcode(), plus kBadW when !(w > 0)
+    std::vector<uint8_t> clipCode;            // clipOutcode(), plus kNotProjectable
     std::vector<uint8_t> viewportCode;        // viewportOutcode()
     std::vector<WindowVertex> window;         // valid where clipCode == 0
 
@@ -25,9 +25,10 @@ struct TransformedVertices {
     glm::vec4 clipPosition(uint32_t i) const { return {x[i], y[i], z[i], w[i]}; }
 };
 
-// Bit set in clipCode for a vertex whose w is not positive (or NaN): such a vertex cannot
-// be divided by w, so its triangles take the clipping path, where setup drops what is left.
-inline constexpr uint8_t kBadW = 0x80;
+// Bit set in clipCode for a vertex that cannot be divided by w: w <= 0, or a coordinate
+// that is not finite (an overflow to infinity in the transform, a NaN). Its triangles
+// take the clipping path, which drops any polygon still holding such a vertex.
+inline constexpr uint8_t kNotProjectable = 0x80;
 
 struct Viewport {
     int width, height;
