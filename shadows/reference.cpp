@@ -54,11 +54,22 @@ constexpr double kFloatUnitRoundoff = 0x1p-24;
 constexpr double kShadowRayOffsetInUnitRoundoffs = 32.0;  // units of u * S, see above
 }  // namespace
 
-double ReferenceVisibility::shadowRayOffset(const glm::vec3& P) const {
+double shadowRayOffset(const glm::vec3& P, double sceneDiagonal) {
     const double largestCoordinate =
         std::max({std::abs(double(P.x)), std::abs(double(P.y)), std::abs(double(P.z))});
-    const double scale = std::max(largestCoordinate, sceneDiagonal_);
+    const double scale = std::max(largestCoordinate, sceneDiagonal);
     return kShadowRayOffsetInUnitRoundoffs * kFloatUnitRoundoff * scale;
+}
+
+double ReferenceVisibility::shadowRayOffset(const glm::vec3& P) const {
+    return shadowlab::shadowRayOffset(P, sceneDiagonal_);
+}
+
+double sceneDiagonal(const WorldGeometry& world) {
+    if (world.positions.empty()) return 0.0;
+    glm::dvec3 lo(world.positions[0]), hi(world.positions[0]);
+    for (const glm::vec3& p : world.positions) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+    return glm::length(hi - lo);
 }
 
 // ---- Embree scene ----------------------------------------------------------------------
@@ -98,17 +109,6 @@ void attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& worl
     rtcAttachGeometry(scene, geometry.get());
 }
 
-double boundingBoxDiagonal(const std::vector<glm::vec3>& positions) {
-    if (positions.empty()) {
-        return 0.0;
-    }
-    glm::dvec3 lo(positions[0]), hi(positions[0]);
-    for (const glm::vec3& p : positions) {
-        lo = glm::min(lo, glm::dvec3(p));
-        hi = glm::max(hi, glm::dvec3(p));
-    }
-    return glm::length(hi - lo);
-}
 
 // ---- Shadow rays -----------------------------------------------------------------------
 // Casts occlusion rays for one task and counts them.
@@ -207,7 +207,7 @@ float pixelVisibility(ShadowRays& rays, const LightQuery& q, const Receiver& r, 
 }  // namespace
 
 ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world)
-    : embree_(std::make_unique<Embree>()), sceneDiagonal_(boundingBoxDiagonal(world.positions)) {
+    : embree_(std::make_unique<Embree>()), sceneDiagonal_(sceneDiagonal(world)) {
     for (const glm::uvec3& t : world.triangles) {
         if (std::max({t.x, t.y, t.z}) >= world.positions.size()) {
             throw std::invalid_argument("ReferenceVisibility: vertex index out of range");

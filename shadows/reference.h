@@ -34,6 +34,14 @@ struct ReferenceOptions {
     uint64_t seed = 0x5eed5eed5eedull;  // jitter; pixel k uses PCG32 stream k
 };
 
+// The diagonal of the bounding box of all vertices (m): the scene scale S below.
+double sceneDiagonal(const WorldGeometry& world);
+// How far a shadow ray's origin moves from P along N: 32 u S with u = 2^-24 and
+// S = max(max_k |P_k|, sceneDiagonal), derived in reference.cpp. Techniques that test
+// visibility exactly (the irregular z-buffer) use the same offset, so they agree with
+// the reference bit for bit on what counts as self-shadowing.
+double shadowRayOffset(const glm::vec3& P, double sceneDiagonal);
+
 class ReferenceVisibility {
 public:
     // Builds the Embree scene (robust mode, one triangle geometry). Throws

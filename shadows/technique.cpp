@@ -2,7 +2,11 @@
 
 #include <stdexcept>
 
+#include "shadows/izb.h"
+#include "shadows/planar.h"
 #include "shadows/reference.h"
+#include "shadows/shadow_map_techniques.h"
+#include "shadows/shadow_volume.h"
 
 namespace shadowlab {
 namespace {
@@ -27,6 +31,11 @@ const std::vector<Technique>& techniques() {
     static const std::vector<Technique> all = {
         {"none", "no shadows: V = 1 on every surface", {}, unshadowed},
         {"reference", "exact hard shadows: one Embree shadow ray per pixel to the light's centre", {}, exactReference},
+        shadowMapTechnique(),
+        cascadedShadowMapTechnique(),
+        {"izb", "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows", irregularZBufferParams(), irregularZBuffer},
+        shadowVolumeTechnique(),
+        planarTechnique(),
     };
     return all;
 }

@@ -1,0 +1,74 @@
+#include "shadows/depth_map.h"
+
+#include <algorithm>
+
+#include "raster/rasterizer.h"
+
+namespace shadowlab {
+namespace {
+
+// One depth-only pass. Culling back faces keeps the surfaces facing the light (the first
+// depth); culling front faces keeps the back faces (the second depth), section 7.4.
+std::vector<float> depthLayer(const WorldGeometry& world, const glm::mat4& clipFromWorld,
+                              const DepthMapSettings& settings, raster::CullMode cull, raster::SimdLevel simd) {
+    raster::Framebuffer framebuffer(settings.size, settings.size);
+    framebuffer.clearDepth(1.0f);
+    raster::PipelineState state;
+    state.cull = cull;
+    state.offset = settings.offset;
+    state.output = raster::FragmentOutput::DepthOnly;
+    raster::DrawCall call;
+    call.vertices.positions = world.positions;
+    call.triangles = world.triangles;
+    call.clipFromObject = clipFromWorld;
+    raster::Rasterizer rasterizer(simd);
+    rasterizer.draw(framebuffer, state, call);
+    return framebuffer.depthImage();
+}
+
+}  // namespace
+
+float DepthMap::at(int x, int y) const {
+    x = std::clamp(x, 0, size - 1), y = std::clamp(y, 0, size - 1);
+    return depth[size_t(y) * size_t(size) + size_t(x)];
+}
+
+glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size) {
+    // x_texel = (x_ndc + 1) s / 2, y_texel = (1 - y_ndc) s / 2 (row 0 on top), z = (z_ndc + 1) / 2,
+    // exactly raster/window.h's toWindow.
+    const double h = 0.5 * size;
+    glm::dmat4 window(1.0);
+    window[0][0] = h, window[1][1] = -h, window[2][2] = 0.5;
+    window[3] = glm::dvec4(h, h, 0.5, 1.0);
+    return window * glm::dmat4(clipFromWorld);
+}
+
+DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
+                        raster::SimdLevel simd) {
+    const glm::mat4 clipFromWorld(view.clipFromWorld());
+    DepthMap map;
+    map.size = settings.size;
+    map.view = view;
+    map.texelFromWorld = texelFromWorldOf(clipFromWorld, settings.size);
+    map.worldFromTexel = glm::inverse(map.texelFromWorld);
+    switch (settings.layer) {
+        case DepthLayer::First:
+            map.depth = depthLayer(world, clipFromWorld, settings, raster::CullMode::Back, simd);
+            break;
+        case DepthLayer::Second:
+            map.depth = depthLayer(world, clipFromWorld, settings, raster::CullMode::Front, simd);
+            break;
+        case DepthLayer::Midpoint: {
+            // Woo's midpoint: halfway (in window depth) between the first and second surface.
+            // Where there is no back face the second depth is the cleared 1, so a single-sided
+            // receiver such as a ground plane stays in front of its own entry.
+            map.depth = depthLayer(world, clipFromWorld, settings, raster::CullMode::Back, simd);
+            const std::vector<float> second = depthLayer(world, clipFromWorld, settings, raster::CullMode::Front, simd);
+            for (size_t k = 0; k < map.depth.size(); ++k) map.depth[k] = 0.5f * (map.depth[k] + second[k]);
+            break;
+        }
+    }
+    return map;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,50 @@
+// The shadow map itself (Real-Time Rendering, 4th ed., section 7.4): the depth of the
+// nearest surface seen from the light through every texel, rendered by the rasterizer
+// with depth-only output. Besides the ordinary first-depth map it can keep the second
+// depth (back faces only, Wang and Molnar's second-depth shadow map) or the midpoint of
+// the two (Woo's dual-depth "midpoint" map), both from section 7.4 and Figure 7.14.
+//
+// Texel space: texel (i, j) covers [i, i+1) x [j, j+1) with its centre at (i+0.5, j+0.5)
+// and row 0 at the top, as every image (conventions.md); depth is OpenGL window depth in
+// [0, 1], 1 where nothing was drawn.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raster/pipeline_state.h"
+#include "raster/tile_kernels.h"
+#include "scenes/scene.h"
+#include "shadows/light_view.h"
+
+namespace shadowlab {
+
+enum class DepthLayer { First, Second, Midpoint };
+
+struct DepthMap {
+    int size = 0;                           // texels per side (square map)
+    LightView view;
+    // World -> (texel x, texel y, window depth, 1), with exactly the float matrix the
+    // rasterizer used, so a lookup lands where the map's triangles were drawn.
+    glm::dmat4 texelFromWorld{1.0};
+    glm::dmat4 worldFromTexel{1.0};         // its inverse, for receiver planes and texel sizes
+    std::vector<float> depth;               // row-major, row 0 at the top
+
+    // The texel's depth; coordinates outside the map are clamped to its border.
+    float at(int x, int y) const;
+};
+
+// The window transform of a size x size map after `clipFromWorld` (float, as drawn).
+glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size);
+
+struct DepthMapSettings {
+    int size = 2048;
+    DepthLayer layer = DepthLayer::First;
+    raster::PolygonOffset offset;           // slope-scaled bias, applied while drawing
+};
+
+DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
+                        raster::SimdLevel simd);
+
+}  // namespace shadowlab

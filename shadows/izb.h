@@ -1,0 +1,169 @@
+// The irregular z-buffer: exact hard shadows by rasterizing occluders at the camera's own
+// samples (Aila and Laine 2004, "Alias-Free Shadow Maps", EGSR; Johnson et al. 2005,
+// "The irregular Z-buffer", ACM TOG 24(4); Real-Time Rendering, 4th ed., section 7.9).
+//
+// A shadow map samples the light's view on a regular grid and then asks it questions at
+// other points, the camera's samples, which is where its aliasing and bias come from. The
+// irregular z-buffer asks the questions at the camera's samples themselves:
+//   1. receivers  (izb_receivers.cpp): every G-buffer point that faces the light becomes a
+//      shadow-ray origin; points facing away are shadowed without a test (Wyman et al.'s
+//      culling, RTR4 7.9);
+//   2. light grid (izb_light_grid.cpp): the light's view fitted to the receivers (one
+//      frustum, or the cube faces around a point light that is surrounded), at a
+//      resolution chosen from the receivers' density;
+//   3. lists      (izb_lists.cpp): each texel lists the receivers that project into it,
+//      built by a counting sort, so every list is in pixel order (RTR4 Figure 7.30, lower
+//      left);
+//   4. coverage   (izb_coverage.cpp): each occluder's conservative footprint in the grid,
+//      every texel whose closed square its projection touches (RTR4 Figure 7.30, lower
+//      right);
+//   5. binning    (izb_binning.cpp): occluders sorted into tiles of the grid;
+//   6. occlusion  (izb_occlusion.cpp): the exact test of one receiver against one triangle
+//      (is the triangle on the segment from the receiver to the light?);
+//   7. traversal  (izb_traversal.cpp): tiles in parallel, each testing its texels' receivers
+//      against the occluders binned to it.
+// The result equals a ray tracer's up to floating-point ties, since it asks the same
+// question per receiver: "It's really just a different ordering of the loops" (Lehtinen,
+// Real-time shadows lecture, 2015).
+//
+// Determinism: a receiver's result is the OR of booleans over triangles, which no order can
+// change; each tile owns its texels' receivers, so no two tasks write the same byte, and
+// every count is an integer sum.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scenes/scene.h"
+#include "shading/gbuffer.h"
+#include "shadows/light_view.h"
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+// The technique's entry in techniques(): its parameters and its run function.
+std::vector<ParamSpec> irregularZBufferParams();
+ShadowOutputs irregularZBuffer(const ShadowInputs& in);
+
+namespace izb {
+
+// ---- 1. Receivers ------------------------------------------------------------------------
+// A point or directional light as a homogeneous point: (L, 1) or (towards-light, 0), so
+// the direction from O to the light is always light.xyz - light.w * O.
+using HomogeneousLight = glm::dvec4;
+HomogeneousLight homogeneousLight(const Light& pointOrDirectional);
+
+// Camera samples that face the light, in pixel order. A receiver is shadowed when a
+// triangle meets the segment origin + t * (light.xyz - light.w * origin), t in [0, tFar].
+struct Receivers {
+    std::vector<uint32_t> pixel;        // index into the G-buffer
+    std::vector<glm::dvec3> origin;     // P moved along N by the reference's offset (reference.cpp)
+    std::vector<double> tFar;           // the reference's end of the segment
+    size_t size() const { return pixel.size(); }
+};
+
+// Fills `visibility` (one float per pixel): 0 where hit = 0, where the light is behind the
+// surface (dot(N, L - P) <= 0) or outside a spot cone; 1 elsewhere, and returns the points
+// still to be tested. A point light nearer than the offset is seen (as by the reference).
+Receivers gatherReceivers(const GBuffer& gbuffer, const Light& pointOrDirectional, double sceneDiagonal,
+                          std::vector<float>& visibility);
+
+// ---- 2. Light grid -------------------------------------------------------------------------
+// One or six light views, each divided into resolution x resolution texels; texel (i, j) of
+// view k has index (k * resolution + j) * resolution + i, so the views stack vertically in
+// the debug images. Texel coordinates (u, v) run over [0, resolution]^2, u right, v down
+// (row 0 at the top, conventions.md).
+struct LightGrid {
+    std::vector<LightView> views;
+    int resolution = 0;
+    // Perspective views drop occluder parts nearer the light than this depth (view-space
+    // -z), a thousandth of the reference's smallest offset (izb_coverage.cpp).
+    double minDepth = 0.0;
+    size_t texelCount() const { return views.size() * size_t(resolution) * size_t(resolution); }
+};
+
+// The views that hold every receiver: fitLightView(), or the cube faces (fitCubeFace)
+// when the receivers surround a point light. Throws std::invalid_argument when there are
+// no receivers.
+std::vector<LightView> fitViews(const Light& pointOrDirectional, const GBuffer& gbuffer, const WorldGeometry& world);
+
+// The resolution whose mean non-empty list holds about `targetListLength` receivers
+// (izb_light_grid.cpp), within [minResolution, maxResolution].
+int chooseResolution(const std::vector<LightView>& views, const Receivers& receivers, double targetListLength);
+inline constexpr int kMinResolution = 16, kMaxResolution = 8192;
+
+LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sceneDiagonal);
+
+// The texel whose closed square holds the receiver's projection; a point on the far edge
+// u = resolution belongs to the last texel. Receivers always lie inside a view.
+uint32_t texelOf(const LightGrid& grid, const glm::dvec3& point);
+
+// ---- 3. Lists ------------------------------------------------------------------------------
+// Items grouped by a key: bucket b holds entry[first[b]] .. entry[first[b + 1] - 1].
+struct Buckets {
+    std::vector<uint32_t> first;    // keyCount + 1 offsets (exclusive prefix sum of the counts)
+    std::vector<uint32_t> entry;
+    uint32_t length(size_t bucket) const { return first[bucket + 1] - first[bucket]; }
+};
+// Counting sort: count per key, exclusive prefix sum, scatter in item order, so each bucket
+// keeps its items in their original order. Entries are value[k], or the item index k
+// itself when `value` is empty.
+Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const std::vector<uint32_t>& value = {});
+
+// A texel's bucket lists its receivers (indices into Receivers), in pixel order.
+using TexelLists = Buckets;
+// texelOf() for every receiver, in parallel.
+std::vector<uint32_t> receiverTexels(const LightGrid& grid, const Receivers& receivers);
+inline TexelLists buildTexelLists(const std::vector<uint32_t>& texelOfReceiver, size_t texelCount) {
+    return countingSort(texelOfReceiver, texelCount);
+}
+
+// ---- 4. Coverage ---------------------------------------------------------------------------
+// A triangle's part in a view, clipped and projected to texel coordinates (a convex polygon
+// of up to 3 + 5 vertices; count 0 when nothing of it lies in the view).
+struct LightPolygon {
+    int count = 0;
+    glm::dvec2 vertex[8];
+};
+LightPolygon projectOccluder(const LightGrid& grid, int view, const glm::dvec3 (&triangle)[3]);
+
+// Half-open range of rows or columns.
+struct TexelRange {
+    int begin = 0, end = 0;
+    bool empty() const { return begin >= end; }
+};
+// Rows whose closed band the polygon touches, within [0, resolution).
+TexelRange coveredRows(const LightPolygon& polygon, int resolution);
+// Columns whose closed squares the polygon touches within the band v in [v0, v1].
+TexelRange coveredColumns(const LightPolygon& polygon, double v0, double v1, int resolution);
+
+// ---- 5. Binning ----------------------------------------------------------------------------
+inline constexpr int kTileSize = 32;   // texels per side of a tile, the unit of parallel work
+
+// Triangle indices per tile (tile index: (view * tilesPerSide + ty) * tilesPerSide + tx), in
+// increasing order, for tiles holding at least one receiver.
+struct TileBins {
+    int tilesPerSide = 0;
+    Buckets triangles;              // one bucket per tile
+};
+TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const WorldGeometry& world);
+
+// ---- 6. Occlusion --------------------------------------------------------------------------
+// True if the triangle meets the segment origin + t * towardsLight, t in [0, tFar].
+bool segmentBlocked(const glm::dvec3& origin, const glm::dvec3& towardsLight, double tFar,
+                    const glm::dvec3 (&triangle)[3]);
+
+// ---- 7. Traversal --------------------------------------------------------------------------
+struct Occlusion {
+    std::vector<uint8_t> blocked;          // per receiver
+    std::vector<uint32_t> occluders;       // per texel: triangles tested against its receivers
+    uint64_t texelPairs = 0;               // (texel with receivers, triangle) pairs visited
+    uint64_t segmentTests = 0;             // segmentBlocked() calls
+};
+Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const Receivers& receivers,
+                            const TexelLists& lists, const TileBins& bins, const WorldGeometry& world);
+
+}  // namespace izb
+}  // namespace shadowlab
