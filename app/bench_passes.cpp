@@ -10,6 +10,7 @@
 #include <tbb/global_control.h>
 
 #include "app/render.h"
+#include "app/timing.h"
 #include "raster/rasterizer.h"
 #include "scenes/camera.h"
 #include "scenes/scene_file.h"
@@ -17,10 +18,6 @@
 
 namespace shadowlab {
 namespace {
-
-struct Timing {
-    double medianMs, minMs;
-};
 
 Timing timeRuns(const BenchOptions& options, const std::function<void()>& run) {
     for (int k = 0; k < options.warmupRuns; ++k) run();
@@ -30,10 +27,7 @@ Timing timeRuns(const BenchOptions& options, const std::function<void()>& run) {
         run();
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
-    std::sort(ms.begin(), ms.end());
-    const size_t n = ms.size();
-    const double median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-    return {median, ms.front()};
+    return summarizeTimes(std::move(ms));
 }
 
 // The point light's view of the scene: perspective towards the origin, fovy 90 degrees,

@@ -14,6 +14,9 @@
 
 #include "app/bench_passes.h"
 #include "app/render.h"
+#include "app/score.h"
+#include "app/sweep.h"
+#include "app/sweep_plot.h"
 #include "scenes/obj_writer.h"
 #include "scenes/scene_file.h"
 #include "shading/compare.h"
@@ -49,15 +52,29 @@ std::unique_ptr<tbb::global_control> limitThreads(int threads) {
 }
 
 struct RenderArgs {
-    std::string scene, technique = "none", png, aov, debugDir, simd = "auto";
+    std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json;
     std::vector<std::string> params;
     int threads = 0;
     float exposure = 0.0f;
     SceneOverrides overrides;
 };
 
+// The technique's frame against the exact reference: the error map, the counts, the JSON.
+void writeErrorMap(const RenderArgs& a, const Scene& scene, const WorldGeometry& world, const Technique& technique,
+                   const FrameSettings& settings, const Frame& frame) {
+    const ImageChannels reference = renderReferenceVisibility(scene, world, settings.simd);
+    const ImageChannels test = visibilityImage(frame);
+    const ErrorFigures figures = compareImages(reference, test);
+    writePng(a.errorMap, scene.camera.width, scene.camera.height, errorMapImage(reference, test, frame.radiance));
+    std::cout << formatText(figures) << "error map: " << a.errorMap << " (red: false shadow, blue: false light)\n";
+    if (a.json.empty()) return;
+    const TechniqueParams params(technique.name, technique.params, settings.params);
+    writeTextFile(a.json, formatScoreJson(scene.name, technique.name, params.values(), frame, figures));
+}
+
 void runRender(const RenderArgs& a) {
-    if (a.png.empty() && a.aov.empty()) throw std::invalid_argument("render: give -o OUT.png and/or --aov OUT.exr");
+    if (a.png.empty() && a.aov.empty() && a.errorMap.empty())
+        throw std::invalid_argument("render: give -o OUT.png, --aov OUT.exr and/or --error-map OUT.png");
     const auto threads = limitThreads(a.threads);
     Scene scene = loadScene(a.scene);
     applyOverrides(scene, a.overrides);
@@ -78,6 +95,29 @@ void runRender(const RenderArgs& a) {
         aov.set(channel::V, frame.shadow.visibility);
         if (!frame.shadow.stencil.empty()) aov.set(channel::stencil, frame.shadow.stencil);
         writeExr(a.aov, aov);
+    }
+    if (!a.errorMap.empty()) writeErrorMap(a, scene, world, technique, settings, frame);
+}
+
+struct SweepArgs {
+    SweepOptions options;
+    std::vector<std::string> techniques, params;
+    std::string simd = "auto", outDir = "out", plotY = "misclassified";
+};
+
+void runSweepCommand(SweepArgs a) {
+    for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
+    for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
+    a.options.simd = raster::parseSimdLevel(a.simd);
+    const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
+    std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
+    const SweepResults results = runSweep(a.options);
+    std::cout << formatSweepText(results);
+    const std::filesystem::path stem = std::filesystem::path(a.outDir) / sweepFileStem(results);
+    for (const auto& [extension, text] : {std::pair{".csv", formatSweepCsv(results)}, {".json", formatSweepJson(results)},
+                                          {".svg", formatSweepSvg(results, plotY)}}) {
+        writeTextFile(stem.string() + extension, text);
+        std::cout << "wrote " << stem.string() + extension << "\n";
     }
 }
 
@@ -121,7 +161,23 @@ int main(int argc, char** argv) {
     r->add_option("--param", render.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
     r->add_option("--debug-buffers", render.debugDir, "directory for the technique's intermediate buffers");
     r->add_option("--exposure", render.exposure, "exposure in stops for the PNG")->capture_default_str();
+    CLI::Option* errorMap = r->add_option("--error-map", render.errorMap,
+        "also render the exact reference; PNG of false shadow (red) and false light (blue) over the dimmed image");
+    r->add_option("--json", render.json, "with --error-map: error figures, technique stats and time as JSON")->needs(errorMap);
     r->callback([&] { runRender(render); });
+
+    SweepArgs sweep;
+    CLI::App* s = app.add_subcommand("sweep", "speed against error over a grid of technique settings (CSV, JSON, SVG plot)");
+    s->add_option("scene", sweep.options.scene, "built-in scene name or scene file (.json)")->required();
+    s->add_option("--technique", sweep.techniques, "techniques to compare, comma-separated")->delimiter(',')->required();
+    s->add_option("--param", sweep.params, "one axis: name=v1,v2,... (repeatable; the cross product is run)");
+    s->add_option("--threads", sweep.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, 1024));
+    s->add_option("--runs", sweep.options.runs, "measured frames per row")->capture_default_str()->check(CLI::Range(1, 10000));
+    s->add_option("--warmup", sweep.options.warmupRuns, "warm-up frames per row")->capture_default_str()->check(CLI::Range(0, 1000));
+    s->add_option("--simd", sweep.simd, "scalar, avx2, avx512 or auto")->capture_default_str();
+    s->add_option("--out", sweep.outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
+    s->add_option("--plot-y", sweep.plotY, "plot's error axis: misclassified (%) or rms")->capture_default_str();
+    s->callback([&] { runSweepCommand(sweep); });
 
     CompareArgs compare;
     CLI::App* c = app.add_subcommand("compare", "error figures of a test image against a reference (conventions.md)");

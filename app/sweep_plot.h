@@ -1,0 +1,32 @@
+// The speed-against-error plot of a sweep, as a small hand-written SVG (no plotting
+// dependency): x is the technique's median time on a log scale, y an error figure; one
+// point per row, labelled with its settings, one colour per technique, and the Pareto
+// front (the rows no other row beats in both time and error) ringed and joined by a
+// staircase.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/sweep.h"
+
+namespace shadowlab {
+
+enum class PlotErrorAxis {
+    Misclassified,   // misclassified pixels, % of the reference's hit pixels
+    Rms,             // RMS error of V
+};
+
+// Throws std::invalid_argument for a name other than "misclassified" or "rms".
+PlotErrorAxis parsePlotErrorAxis(const std::string& name);
+
+double plottedError(const SweepRow& row, PlotErrorAxis axis);
+
+// Indices of the rows on the Pareto front (minimising both median ms and the error), in
+// order of increasing time. Of rows with equal time and error, the first is kept.
+std::vector<size_t> paretoFront(const std::vector<SweepRow>& rows, PlotErrorAxis axis);
+
+// Every row is one <circle class="point">; front rows also get a <circle class="pareto">.
+std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis);
+
+}  // namespace shadowlab

@@ -1,0 +1,220 @@
+// `shadowlab sweep`: the rows cover the cross product of the axes, the reference scores
+// zero against itself, and the CSV, JSON and SVG outputs read back.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/sweep.h"
+#include "app/sweep_plot.h"
+#include "scenes/scene_file.h"
+
+using namespace shadowlab;
+
+namespace {
+
+// The exact reference, dressed up with two parameters it ignores, so that a sweep over
+// it has axes; every setting must then score exactly 0.
+Technique parameterisedReference() {
+    Technique t = findTechnique("reference");
+    t.name = "reference-with-params";
+    t.params = {{"resolution", "1024", "ignored"}, {"bias", "0", "ignored"}};
+    return t;
+}
+
+// A small scene (640 x 400) with shadows, so that `none` has errors to report.
+const std::string& smallScene() {
+    static const std::string path = builtinSceneDir() + "/hard/sun.json";
+    return path;
+}
+
+SweepOptions quickOptions(std::vector<const Technique*> techniques, std::vector<SweepAxis> axes) {
+    SweepOptions options;
+    options.scene = smallScene();
+    options.techniques = std::move(techniques);
+    options.axes = std::move(axes);
+    options.threads = {1, 2};
+    options.warmupRuns = 0;
+    options.runs = 1;
+    return options;
+}
+
+const SweepResults& sharedSweep() {
+    static const Technique reference = parameterisedReference();
+    static const SweepResults results = runSweep(quickOptions(
+        {&findTechnique("none"), &reference}, {{"resolution", {"512", "2048"}}, {"bias", {"0", "0.5", "1"}}}));
+    return results;
+}
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> fields;
+    std::istringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+    return fields;
+}
+
+// Minimal XML well-formedness: every tag closes in order, attribute quotes pair up, and
+// there is one root element.
+bool wellFormedXml(const std::string& xml) {
+    std::vector<std::string> open;
+    int roots = 0;
+    for (size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at + 1)) {
+        const size_t end = xml.find('>', at);
+        if (end == std::string::npos) return false;
+        const std::string tag = xml.substr(at + 1, end - at - 1);
+        if (std::count(tag.begin(), tag.end(), '"') % 2 != 0) return false;
+        const std::string name = tag.substr(tag[0] == '/', tag.find_first_of(" />", 1) - (tag[0] == '/'));
+        if (tag[0] == '/') {
+            if (open.empty() || open.back() != name) return false;
+            open.pop_back();
+        } else if (tag.back() != '/') {
+            roots += open.empty();
+            open.push_back(name);
+        }
+    }
+    return open.empty() && roots == 1;
+}
+
+size_t countOf(const std::string& text, const std::string& pattern) {
+    size_t n = 0;
+    for (size_t at = text.find(pattern); at != std::string::npos; at = text.find(pattern, at + 1)) ++n;
+    return n;
+}
+
+SweepRow rowAt(double ms, double misclassifiedPercent) {
+    SweepRow row;
+    row.medianMs = ms;
+    row.errors.pixels = 1000;
+    row.errors.falseShadow = uint64_t(misclassifiedPercent * 10.0);
+    return row;
+}
+
+}  // namespace
+
+TEST_CASE("sweep: one row per technique, setting of its own axes and thread count") {
+    const SweepResults& results = sharedSweep();
+    CHECK(results.scene == "sun");
+    CHECK(results.techniques == std::vector<std::string>{"none", "reference-with-params"});
+    // none has no parameters: its defaults once per thread count; the other: 2 x 3 x 2.
+    REQUIRE(results.rows.size() == 2 + 12);
+    std::set<std::string> combinations;
+    for (const SweepRow& row : results.rows) {
+        if (row.technique == "none") {
+            CHECK(row.settings.empty());
+            continue;
+        }
+        CHECK(row.settings.size() == 2);
+        combinations.insert(row.settings.at("resolution") + "/" + row.settings.at("bias") + "/" + std::to_string(row.threads));
+    }
+    CHECK(combinations.size() == 12);
+    CHECK(combinations.count("512/0.5/2") == 1);
+    CHECK(results.rows[2].settingsLabel() == "bias=0 resolution=512");   // first axis slowest, then threads
+    CHECK(results.rows[2].threads == 1);
+    CHECK(results.rows[3].threads == 2);
+    CHECK(results.rows[4].settings.at("bias") == "0.5");
+}
+
+TEST_CASE("sweep: the reference scores 0 against itself, none misses the shadows") {
+    for (const SweepRow& row : sharedSweep().rows) {
+        CAPTURE(row.technique);
+        CHECK(row.errors.pixels > 100000);
+        CHECK(row.medianMs >= row.minMs);
+        CHECK(row.minMs >= 0.0);
+        if (row.technique == "none") {
+            CHECK(row.errors.falseLight > 1000);
+            CHECK(row.errors.falseShadow == 0);
+            CHECK(row.errors.rms > 0.0);
+        } else {
+            CHECK(row.errors.rms == 0.0);
+            CHECK(row.errors.maxAbs == 0.0);
+            CHECK(row.errors.misclassified() == 0);
+        }
+    }
+}
+
+TEST_CASE("sweep: typos and bad lists fail before rendering") {
+    const Technique reference = parameterisedReference();
+    CHECK_THROWS_WITH_AS(runSweep(quickOptions({&reference}, {{"resolutoin", {"1"}}})),
+                         doctest::Contains("none of the techniques has this parameter"), std::invalid_argument);
+    CHECK_THROWS_AS(runSweep(quickOptions({&reference, &reference}, {})), std::invalid_argument);
+    CHECK_THROWS_AS(runSweep(quickOptions({}, {})), std::invalid_argument);
+    CHECK_THROWS_AS(parseSweepAxis("resolution=512,,1024"), std::invalid_argument);
+    CHECK_THROWS_AS(parseSweepAxis("=1,2"), std::invalid_argument);
+    CHECK_THROWS_AS(parseSweepAxis("resolution"), std::invalid_argument);
+    const SweepAxis axis = parseSweepAxis("resolution=512,1024,4096");
+    CHECK(axis.name == "resolution");
+    CHECK(axis.values == std::vector<std::string>{"512", "1024", "4096"});
+}
+
+TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
+    const SweepResults& results = sharedSweep();
+    std::istringstream csv(formatSweepCsv(results));
+    std::string line;
+    std::getline(csv, line);
+    const std::vector<std::string> header = splitCsvLine(line);
+    REQUIRE(header.size() == 11);   // neither technique reports stats
+    CHECK(header[0] == "technique");
+    CHECK(header[8] == "misclassified_percent");
+    for (const SweepRow& row : results.rows) {
+        REQUIRE(std::getline(csv, line));
+        const std::vector<std::string> fields = splitCsvLine(line);
+        REQUIRE(fields.size() == header.size());
+        CHECK(fields[0] == row.technique);
+        CHECK(fields[1] == row.settingsLabel());
+        CHECK(std::stoi(fields[2]) == row.threads);
+        CHECK(std::stod(fields[3]) == doctest::Approx(row.medianMs).epsilon(1e-8));
+        CHECK(std::stod(fields[5]) == doctest::Approx(row.errors.rms).epsilon(1e-8));
+        CHECK(std::stod(fields[8]) == doctest::Approx(row.errors.percentOfPixels(row.errors.misclassified())).epsilon(1e-8));
+    }
+    CHECK_FALSE(std::getline(csv, line));
+}
+
+TEST_CASE("sweep JSON: rows with settings, times and error figures") {
+    const SweepResults& results = sharedSweep();
+    const nlohmann::json j = nlohmann::json::parse(formatSweepJson(results));
+    CHECK(j["scene"] == "sun");
+    REQUIRE(j["rows"].size() == results.rows.size());
+    for (size_t k = 0; k < results.rows.size(); ++k) {
+        const nlohmann::json& row = j["rows"][k];
+        CHECK(row["technique"] == results.rows[k].technique);
+        CHECK(row["threads"] == results.rows[k].threads);
+        CHECK(row["settings"].size() == results.rows[k].settings.size());
+        CHECK(row["median_ms"].get<double>() == results.rows[k].medianMs);
+        CHECK(row["errors"]["false_light"].get<uint64_t>() == results.rows[k].errors.falseLight);
+        CHECK(row["stats"].is_object());
+    }
+}
+
+TEST_CASE("sweep SVG: well-formed, one point per row, the Pareto front ringed") {
+    const SweepResults& results = sharedSweep();
+    for (PlotErrorAxis axis : {PlotErrorAxis::Misclassified, PlotErrorAxis::Rms}) {
+        const std::string svg = formatSweepSvg(results, axis);
+        CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
+        CHECK(wellFormedXml(svg));
+        CHECK(countOf(svg, "class=\"point\"") == results.rows.size());
+        CHECK(countOf(svg, "class=\"pareto\"") == paretoFront(results.rows, axis).size());
+        CHECK(countOf(svg, "class=\"label\"") == results.rows.size());
+    }
+    CHECK(parsePlotErrorAxis("rms") == PlotErrorAxis::Rms);
+    CHECK_THROWS_AS(parsePlotErrorAxis("RMS"), std::invalid_argument);
+}
+
+TEST_CASE("Pareto front: the rows no other row beats in both time and error, fastest first") {
+    const std::vector<SweepRow> rows = {rowAt(1, 5), rowAt(2, 3), rowAt(3, 4), rowAt(4, 1), rowAt(2, 3), rowAt(5, 1)};
+    // (3, 4) is beaten by (2, 3); the second (2, 3) ties the first; (5, 1) is slower than (4, 1).
+    CHECK(paretoFront(rows, PlotErrorAxis::Misclassified) == std::vector<size_t>{0, 1, 3});
+    CHECK(paretoFront({}, PlotErrorAxis::Rms).empty());
+}
+
+TEST_CASE("sweep file stem: scene, then the techniques joined by +") {
+    SweepResults results;
+    results.scene = "sphere-box";
+    results.techniques = {"none", "reference"};
+    CHECK(sweepFileStem(results) == "sphere-box-none+reference");
+}
