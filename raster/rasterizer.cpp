@@ -44,11 +44,20 @@ bool projectable(const glm::vec4& p) {
     return p.w > 0.0f && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
-// Starting from the smallest vertex index (winding kept) makes the clipped polygon, and so
-// the fan and its planes, the same however the triangle's indices were rotated.
-glm::uvec3 canonicalIndexOrder(const glm::uvec3& t) {
-    if (t.y < t.x && t.y <= t.z) return {t.y, t.z, t.x};
-    if (t.z < t.x && t.z < t.y) return {t.z, t.x, t.y};
+// Starting from the vertex with the lexicographically smallest clip position (winding
+// kept) makes the clipped polygon, and so the fan and its planes, depend only on the
+// triangle's geometry: not on how its indices are rotated or numbered.
+bool precedes(const glm::vec4& a, const glm::vec4& b) {
+    for (int k = 0; k < 4; ++k) {
+        if (a[k] != b[k]) return a[k] < b[k];
+    }
+    return false;
+}
+
+glm::uvec3 canonicalIndexOrder(const glm::uvec3& t, const TransformedVertices& v) {
+    const glm::vec4 a = v.clipPosition(t.x), b = v.clipPosition(t.y), c = v.clipPosition(t.z);
+    if (precedes(b, a) && !precedes(c, b)) return {t.y, t.z, t.x};
+    if (precedes(c, a) && precedes(c, b)) return {t.z, t.x, t.y};
     return t;
 }
 
@@ -57,7 +66,7 @@ glm::uvec3 canonicalIndexOrder(const glm::uvec3& t) {
 // polygon forms, all with the polygon's largest depth for the polygon offset.
 void clipAndSetup(SetupChunk& chunk, const TransformedVertices& v, const VertexStream& stream, const glm::uvec3& triangle,
                   uint32_t id, const Viewport& viewport, const SetupContext& context) {
-    const glm::uvec3 t = canonicalIndexOrder(triangle);
+    const glm::uvec3 t = canonicalIndexOrder(triangle, v);
     ClipVertex polygon[kMaxClippedVertices] = {clipVertex(v, stream, t.x), clipVertex(v, stream, t.y),
                                                clipVertex(v, stream, t.z)};
     const uint32_t codes = (v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) & ~uint32_t(kNotProjectable);

@@ -68,22 +68,26 @@ TEST_CASE("binning in groups under a tiny entry budget gives the same bytes as o
     CHECK(std::memcmp(da.data(), db.data(), da.size() * sizeof(float)) == 0);
 }
 
-TEST_CASE("a near-clipped triangle gives the same depth bits however its indices are rotated") {
+TEST_CASE("a near-clipped triangle gives the same depth bits however its indices are rotated or numbered") {
     std::mt19937 rng(21);
     std::uniform_real_distribution<float> xy(-3.0f, 3.0f), zz(-6.0f, 2.0f);
     const glm::mat4 proj = glm::perspective(1.0f, 4.0f / 3.0f, 0.5f, 40.0f);
     int clipped = 0;
     for (int trial = 0; trial < 100; ++trial) {
         const std::vector<glm::vec3> p = {{xy(rng), xy(rng), zz(rng)}, {xy(rng), xy(rng), zz(rng)}, {xy(rng), xy(rng), zz(rng)}};
-        std::vector<float> depth[3];
-        for (int rotation = 0; rotation < 3; ++rotation) {
-            const std::vector<glm::uvec3> t = {{uint32_t(rotation), uint32_t((rotation + 1) % 3), uint32_t((rotation + 2) % 3)}};
+        // Rotations 0..2 of the indices into p, and rotation 3: the same triangle stored in
+        // reverse vertex order (so its indices rank differently), drawn as (2, 1, 0).
+        const std::vector<glm::vec3> reversed = {p[2], p[1], p[0]};
+        std::vector<float> depth[4];
+        for (int rotation = 0; rotation < 4; ++rotation) {
+            const std::vector<glm::uvec3> t = {rotation == 3 ? glm::uvec3(2, 1, 0)
+                                                             : glm::uvec3(rotation, (rotation + 1) % 3, (rotation + 2) % 3)};
             Framebuffer fb(256, 192);
             PipelineState s;
             s.cull = CullMode::None;
             s.offset = {1.0f, 4.0f};
             DrawCall call;
-            call.vertices.positions = p;
+            call.vertices.positions = rotation == 3 ? reversed : p;
             call.triangles = t;
             call.clipFromObject = proj;
             Rasterizer r;
@@ -94,6 +98,7 @@ TEST_CASE("a near-clipped triangle gives the same depth bits however its indices
         INFO("trial " << trial);
         CHECK(std::memcmp(depth[0].data(), depth[1].data(), depth[0].size() * sizeof(float)) == 0);
         CHECK(std::memcmp(depth[0].data(), depth[2].data(), depth[0].size() * sizeof(float)) == 0);
+        CHECK(std::memcmp(depth[0].data(), depth[3].data(), depth[0].size() * sizeof(float)) == 0);
     }
     CHECK(clipped > 30);
 }
