@@ -14,6 +14,8 @@
 
 #include "app/bench_passes.h"
 #include "app/render.h"
+#include "app/scaling.h"
+#include "app/scaling_plot.h"
 #include "app/score.h"
 #include "app/sweep.h"
 #include "app/sweep_plot.h"
@@ -46,13 +48,19 @@ void addVec3Option(CLI::App* cmd, const std::string& name, std::optional<glm::ve
     }, help)->type_name("X,Y,Z");
 }
 
+// --light-pos and --light-radius, shared by render and sweep; applyOverrides() checks them.
+void addLightOptions(CLI::App* cmd, SceneOverrides& overrides) {
+    addVec3Option(cmd, "--light-pos", overrides.lightPosition, "position (centre) of the scene's first light");
+    cmd->add_option("--light-radius", overrides.lightRadius, "radius of the scene's first light, which must be a disk (m, > 0)");
+}
+
 std::unique_ptr<tbb::global_control> limitThreads(int threads) {
     if (threads <= 0) return nullptr;
     return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(threads));
 }
 
 struct RenderArgs {
-    std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json;
+    std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json, reference;
     std::vector<std::string> params;
     int threads = 0;
     float exposure = 0.0f;
@@ -62,14 +70,16 @@ struct RenderArgs {
 // The technique's frame against the exact reference: the error map, the counts, the JSON.
 void writeErrorMap(const RenderArgs& a, const Scene& scene, const WorldGeometry& world, const Technique& technique,
                    const FrameSettings& settings, const Frame& frame) {
-    const ImageChannels reference = renderReferenceVisibility(scene, world, settings.simd);
+    const std::string& referenceName = a.reference.empty() ? technique.referenceName : a.reference;
+    const ImageChannels reference = renderReferenceVisibility(scene, world, settings.simd, referenceName);
     const ImageChannels test = visibilityImage(frame);
     const ErrorFigures figures = compareImages(reference, test);
     writePng(a.errorMap, scene.camera.width, scene.camera.height, errorMapImage(reference, test, frame.radiance));
-    std::cout << formatText(figures) << "error map: " << a.errorMap << " (red: false shadow, blue: false light)\n";
+    std::cout << "against " << referenceName << "\n" << formatText(figures) << "error map: " << a.errorMap
+              << " (red: false shadow, blue: false light)\n";
     if (a.json.empty()) return;
     const TechniqueParams params(technique.name, technique.params, settings.params);
-    writeTextFile(a.json, formatScoreJson(scene.name, technique.name, params.values(), frame, figures));
+    writeTextFile(a.json, formatScoreJson(scene.name, technique.name, referenceName, params.values(), frame, figures));
 }
 
 void runRender(const RenderArgs& a) {
@@ -80,6 +90,7 @@ void runRender(const RenderArgs& a) {
     applyOverrides(scene, a.overrides);
     const WorldGeometry world = flatten(scene);
     const Technique& technique = findTechnique(a.technique);
+    if (!a.reference.empty()) findTechnique(a.reference);   // a typo fails before rendering
     FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir};
     for (const std::string& p : a.params) parseParamAssignment(p, settings.params);
     const Frame frame = renderFrame(scene, world, technique, settings);
@@ -99,6 +110,14 @@ void runRender(const RenderArgs& a) {
     if (!a.errorMap.empty()) writeErrorMap(a, scene, world, technique, settings, frame);
 }
 
+// The three files of a sweep or scaling report: STEM.csv, STEM.json and STEM.svg.
+void writeReport(const std::filesystem::path& stem, const std::string& csv, const std::string& json, const std::string& svg) {
+    for (const auto& [extension, text] : {std::pair{".csv", &csv}, {".json", &json}, {".svg", &svg}}) {
+        writeTextFile(stem.string() + extension, *text);
+        std::cout << "wrote " << stem.string() + extension << "\n";
+    }
+}
+
 struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
@@ -113,12 +132,25 @@ void runSweepCommand(SweepArgs a) {
     std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
     const SweepResults results = runSweep(a.options);
     std::cout << formatSweepText(results);
-    const std::filesystem::path stem = std::filesystem::path(a.outDir) / sweepFileStem(results);
-    for (const auto& [extension, text] : {std::pair{".csv", formatSweepCsv(results)}, {".json", formatSweepJson(results)},
-                                          {".svg", formatSweepSvg(results, plotY)}}) {
-        writeTextFile(stem.string() + extension, text);
-        std::cout << "wrote " << stem.string() + extension << "\n";
-    }
+    writeReport(std::filesystem::path(a.outDir) / sweepFileStem(results), formatSweepCsv(results), formatSweepJson(results),
+                formatSweepSvg(results, plotY));
+}
+
+struct ScalingArgs {
+    ScalingOptions options;
+    std::string technique, simd = "auto", outDir = "out";
+    std::vector<std::string> params;
+};
+
+void runScalingCommand(ScalingArgs a) {
+    a.options.technique = &findTechnique(a.technique);
+    for (const std::string& p : a.params) parseParamAssignment(p, a.options.params);
+    a.options.simd = raster::parseSimdLevel(a.simd);
+    std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
+    const ScalingResults results = runScaling(a.options);
+    std::cout << formatScalingText(results);
+    writeReport(std::filesystem::path(a.outDir) / scalingFileStem(results), formatScalingCsv(results),
+                formatScalingJson(results), formatScalingSvg(results));
 }
 
 struct CompareArgs {
@@ -157,13 +189,14 @@ int main(int argc, char** argv) {
     addVec3Option(r, "--eye", render.overrides.eye, "camera position, overriding the scene's");
     addVec3Option(r, "--target", render.overrides.target, "point the camera looks at");
     r->add_option("--fovy", render.overrides.fovyDeg, "vertical field of view in degrees");
-    addVec3Option(r, "--light-pos", render.overrides.lightPosition, "position (centre) of the scene's first light");
+    addLightOptions(r, render.overrides);
     r->add_option("--param", render.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
     r->add_option("--debug-buffers", render.debugDir, "directory for the technique's intermediate buffers");
     r->add_option("--exposure", render.exposure, "exposure in stops for the PNG")->capture_default_str();
     CLI::Option* errorMap = r->add_option("--error-map", render.errorMap,
         "also render the exact reference; PNG of false shadow (red) and false light (blue) over the dimmed image");
     r->add_option("--json", render.json, "with --error-map: error figures, technique stats and time as JSON")->needs(errorMap);
+    r->add_option("--reference", render.reference, "with --error-map: the technique to score against (default: the one the technique names, reference or reference-soft)")->needs(errorMap);
     r->callback([&] { runRender(render); });
 
     SweepArgs sweep;
@@ -176,8 +209,22 @@ int main(int argc, char** argv) {
     s->add_option("--warmup", sweep.options.warmupRuns, "warm-up frames per row")->capture_default_str()->check(CLI::Range(0, 1000));
     s->add_option("--simd", sweep.simd, "scalar, avx2, avx512 or auto")->capture_default_str();
     s->add_option("--out", sweep.outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
-    s->add_option("--plot-y", sweep.plotY, "plot's error axis: misclassified (%) or rms")->capture_default_str();
+    s->add_option("--plot-y", sweep.plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
+    addLightOptions(s, sweep.options.overrides);
+    s->add_option("--reference", sweep.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
     s->callback([&] { runSweepCommand(sweep); });
+
+    ScalingArgs scaling;
+    CLI::App* sc = app.add_subcommand("scaling", "time against triangle count over a series of scenes, fitted as t = a + b n (CSV, JSON, SVG)");
+    sc->add_option("scenes", scaling.options.scenes, "two or more built-in scene names or scene files (e.g. scenes/scaling/*.json)")->required();
+    sc->add_option("--technique", scaling.technique, "the technique to time")->required();
+    sc->add_option("--param", scaling.params, "technique setting name=value (repeatable)");
+    sc->add_option("--threads", scaling.options.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
+    sc->add_option("--runs", scaling.options.runs, "measured frames per scene")->capture_default_str()->check(CLI::Range(1, 10000));
+    sc->add_option("--warmup", scaling.options.warmupRuns, "warm-up frames per scene")->capture_default_str()->check(CLI::Range(0, 1000));
+    sc->add_option("--simd", scaling.simd, "scalar, avx2, avx512 or auto")->capture_default_str();
+    sc->add_option("--out", scaling.outDir, "directory for scaling-TECHNIQUE.csv, .json and .svg")->capture_default_str();
+    sc->callback([&] { runScalingCommand(scaling); });
 
     CompareArgs compare;
     CLI::App* c = app.add_subcommand("compare", "error figures of a test image against a reference (conventions.md)");

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "raster/rasterizer.h"
@@ -16,6 +17,16 @@ void requireFinite(const glm::vec3& v, const char* what) {
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
         throw std::invalid_argument(std::string(what) + " must be three finite numbers");
     }
+}
+
+// Only a disk has a radius: giving one to a point light would silently change nothing.
+void applyLightRadius(Scene& scene, float radius) {
+    if (!(radius > 0.0f && std::isfinite(radius)))
+        throw std::invalid_argument("--light-radius must be a finite number > 0, got " + (std::ostringstream() << radius).str());
+    if (scene.lights.empty()) throw std::invalid_argument("--light-radius: the scene has no light");
+    if (scene.lights[0].type != LightType::Disk)
+        throw std::invalid_argument("--light-radius: the scene's first light is not a disk light");
+    scene.lights[0].radius = radius;
 }
 
 }  // namespace
@@ -37,6 +48,7 @@ void applyOverrides(Scene& scene, const SceneOverrides& o) {
         if (scene.lights.empty()) throw std::invalid_argument("--light-pos: the scene has no light");
         scene.lights[0].position = *o.lightPosition;
     }
+    if (o.lightRadius) applyLightRadius(scene, *o.lightRadius);
 }
 
 GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd) {

@@ -22,10 +22,12 @@ struct SceneOverrides {
     std::optional<int> width, height;
     std::optional<glm::vec3> eye, target, lightPosition;
     std::optional<float> fovyDeg;
+    std::optional<float> lightRadius;   // the first light's disk radius, m
 };
 
 // Applies the overrides; throws std::invalid_argument for a size outside 1..8192, a fovy
-// outside (0, 180), a non-finite vector, or an eye equal to the target.
+// outside (0, 180), a non-finite vector, an eye equal to the target, or a light radius
+// that is not > 0 (and finite) or whose first light is not a disk.
 void applyOverrides(Scene& scene, const SceneOverrides& overrides);
 
 // The camera pass: every pixel's nearest triangle (no culling, so open meshes show both

@@ -28,10 +28,11 @@ ImageChannels visibilityImage(const Frame& frame) {
     return image;
 }
 
-ImageChannels renderReferenceVisibility(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd) {
+ImageChannels renderReferenceVisibility(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd,
+                                        const std::string& referenceName) {
     FrameSettings settings;
     settings.simd = simd;
-    return visibilityImage(renderFrame(scene, world, findTechnique("reference"), settings));
+    return visibilityImage(renderFrame(scene, world, findTechnique(referenceName), settings));
 }
 
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {
@@ -58,7 +59,7 @@ std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageCh
     return rgb;
 }
 
-std::string formatScoreJson(const std::string& sceneName, const std::string& technique,
+std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
                             const std::map<std::string, std::string>& settings, const Frame& frame,
                             const ErrorFigures& figures) {
     nlohmann::ordered_json stats = nlohmann::ordered_json::object();
@@ -66,6 +67,7 @@ std::string formatScoreJson(const std::string& sceneName, const std::string& tec
     nlohmann::ordered_json j;
     j["scene"] = sceneName;
     j["technique"] = technique;
+    j["reference"] = reference;
     j["settings"] = settings;
     j["technique_ms"] = frame.techniqueMs;
     j["stats"] = stats;

@@ -1,6 +1,7 @@
 // Scoring a technique against the exact reference (conventions.md, "Figures and errors"):
 // the work `shadowlab render --error-map` and `shadowlab sweep` share. The reference is
-// the `reference` technique's visibility of the same camera view; a frame is scored by
+// the visibility of the same camera view by the technique's Technique::referenceName
+// (`reference` for hard shadows, `reference-soft` for soft ones); a frame is scored by
 // compareImages() on its V channel over the reference's hit pixels.
 #pragma once
 
@@ -18,8 +19,10 @@ namespace shadowlab {
 // The channels a frame is scored on: hit (from its G-buffer) and V.
 ImageChannels visibilityImage(const Frame& frame);
 
-// Renders the scene with the `reference` technique and returns its visibilityImage().
-ImageChannels renderReferenceVisibility(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd);
+// Renders the scene with the technique named referenceName (at its default settings) and
+// returns its visibilityImage().
+ImageChannels renderReferenceVisibility(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd,
+                                        const std::string& referenceName = "reference");
 
 // The frame's V against the reference's (compareImages with the default options).
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame);
@@ -37,9 +40,9 @@ inline constexpr std::array<uint8_t, 3> kFalseLightColour{0, 160, 255};   // lea
 std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,
                                    const std::vector<glm::vec3>& shaded);
 
-// One JSON object: {"scene", "technique", "settings": {name: value}, "technique_ms",
-// "stats": {name: value}, "errors": formatJson(figures)}.
-std::string formatScoreJson(const std::string& sceneName, const std::string& technique,
+// One JSON object: {"scene", "technique", "reference", "settings": {name: value},
+// "technique_ms", "stats": {name: value}, "errors": formatJson(figures)}.
+std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
                             const std::map<std::string, std::string>& settings, const Frame& frame,
                             const ErrorFigures& figures);
 

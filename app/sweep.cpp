@@ -13,7 +13,6 @@
 
 #include "app/render.h"
 #include "app/score.h"
-#include "app/timing.h"
 #include "scenes/scene_file.h"
 
 namespace shadowlab {
@@ -73,31 +72,24 @@ std::vector<int> threadCounts(const SweepOptions& options) {
     return options.threads;
 }
 
-// Warm-up frames, then the measured ones; errors and stats come from the last frame.
-SweepRow measure(const Scene& scene, const WorldGeometry& world, const ImageChannels& reference,
-                 const Technique& technique, const FrameSettings& settings, const SweepOptions& options) {
-    for (int k = 0; k < options.warmupRuns; ++k) renderFrame(scene, world, technique, settings);
-    std::vector<double> ms;
-    Frame frame;
-    for (int k = 0; k < options.runs; ++k) {
-        frame = renderFrame(scene, world, technique, settings);
-        ms.push_back(frame.techniqueMs);
-    }
-    const Timing timing = summarizeTimes(std::move(ms));
-    SweepRow row;
-    row.technique = technique.name;
-    row.settings = settings.params;
-    row.medianMs = timing.medianMs;
-    row.minMs = timing.minMs;
-    row.errors = scoreFrame(reference, frame);
-    row.stats = frame.shadow.stats;
-    return row;
+// The reference a technique is scored against: the sweep's, or the one it names.
+const std::string& referenceFor(const Technique& technique, const SweepOptions& options) {
+    return options.reference.empty() ? technique.referenceName : options.reference;
 }
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", value);
-    return text;
+// Errors and stats come from the last measured frame.
+SweepRow measure(const Scene& scene, const WorldGeometry& world, const ImageChannels& reference,
+                 const Technique& technique, const FrameSettings& settings, const SweepOptions& options) {
+    const TimedFrames timed = timeFrames(scene, world, technique, settings, options.warmupRuns, options.runs);
+    SweepRow row;
+    row.technique = technique.name;
+    row.reference = referenceFor(technique, options);
+    row.settings = settings.params;
+    row.medianMs = timed.timing.medianMs;
+    row.minMs = timed.timing.minMs;
+    row.errors = scoreFrame(reference, timed.last);
+    row.stats = timed.last.shadow.stats;
+    return row;
 }
 
 // RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
@@ -106,15 +98,6 @@ std::string csvField(const std::string& text) {
     std::string quoted = "\"";
     for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
     return quoted + "\"";
-}
-
-std::string csvLine(const std::vector<std::string>& fields) {
-    std::string line;
-    for (const std::string& field : fields) {
-        if (!line.empty()) line += ',';
-        line += csvField(field);
-    }
-    return line + "\n";
 }
 
 // Every stat name any row reports, in the order first seen.
@@ -128,10 +111,49 @@ std::vector<std::string> statNames(const SweepResults& results) {
 
 std::string statValue(const SweepRow& row, const std::string& name) {
     const auto stat = std::ranges::find(row.stats, name, &TechniqueStat::name);
-    return stat == row.stats.end() ? "" : number(stat->value);
+    return stat == row.stats.end() ? "" : csvNumber(stat->value);
+}
+
+// Each reference the techniques are scored against, rendered once.
+std::map<std::string, ImageChannels> renderReferences(const Scene& scene, const WorldGeometry& world,
+                                                      const std::vector<SweepPlan>& plans, const SweepOptions& options) {
+    std::map<std::string, ImageChannels> references;
+    for (const SweepPlan& plan : plans) {
+        const std::string& name = referenceFor(*plan.technique, options);
+        if (!references.contains(name)) references.emplace(name, renderReferenceVisibility(scene, world, options.simd, name));
+    }
+    return references;
 }
 
 }  // namespace
+
+std::string csvLine(const std::vector<std::string>& fields) {
+    std::string line;
+    for (const std::string& field : fields) {
+        if (!line.empty()) line += ',';
+        line += csvField(field);
+    }
+    return line + "\n";
+}
+
+std::string csvNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    return text;
+}
+
+TimedFrames timeFrames(const Scene& scene, const WorldGeometry& world, const Technique& technique,
+                       const FrameSettings& settings, int warmupRuns, int runs) {
+    if (runs < 1) throw std::invalid_argument("the number of measured runs must be >= 1");
+    for (int k = 0; k < warmupRuns; ++k) renderFrame(scene, world, technique, settings);
+    std::vector<double> ms;
+    Frame frame;
+    for (int k = 0; k < runs; ++k) {
+        frame = renderFrame(scene, world, technique, settings);
+        ms.push_back(frame.techniqueMs);
+    }
+    return {summarizeTimes(std::move(ms)), std::move(frame)};
+}
 
 SweepAxis parseSweepAxis(const std::string& text) {
     std::map<std::string, std::string> assignment;
@@ -154,21 +176,24 @@ std::string SweepRow::settingsLabel() const {
 SweepResults runSweep(const SweepOptions& options) {
     if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
     if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
+    if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
     const std::vector<SweepPlan> plans = planSweep(options);
     const std::vector<int> threads = threadCounts(options);
-    const Scene scene = loadScene(options.scene);
+    Scene scene = loadScene(options.scene);
+    applyOverrides(scene, options.overrides);
     const WorldGeometry world = flatten(scene);
     // One frame per setting first: a value the technique rejects fails before the long part.
     for (const SweepPlan& plan : plans)
         for (const Settings& settings : plan.settings) renderFrame(scene, world, *plan.technique, {options.simd, settings, {}});
-    const ImageChannels reference = renderReferenceVisibility(scene, world, options.simd);
+    const std::map<std::string, ImageChannels> references = renderReferences(scene, world, plans, options);
     SweepResults results{scene.name, {}, {}};
     for (const SweepPlan& plan : plans) results.techniques.push_back(plan.technique->name);
     for (const SweepPlan& plan : plans) {
         for (const Settings& settings : plan.settings) {
             for (int n : threads) {
                 const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(n));
-                SweepRow row = measure(scene, world, reference, *plan.technique, {options.simd, settings, {}}, options);
+                SweepRow row = measure(scene, world, references.at(referenceFor(*plan.technique, options)), *plan.technique,
+                                       {options.simd, settings, {}}, options);
                 row.threads = n;
                 results.rows.push_back(std::move(row));
             }
@@ -186,13 +211,15 @@ std::string sweepFileStem(const SweepResults& results) {
 std::string formatSweepText(const SweepResults& results) {
     std::string text = results.scene + "\n";
     char line[512];
-    std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s %14s %10s\n", "technique", "settings", "threads",
-                  "median ms", "min ms", "misclassified%", "RMS");
+    std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s %14s %10s %10s %11s %13s\n", "technique", "settings",
+                  "threads", "median ms", "min ms", "misclassified%", "RMS", "max", "umbra lit%", "lit shadowed%");
     text += line;
     for (const SweepRow& r : results.rows) {
-        std::snprintf(line, sizeof line, "%-16s %-40s %7d %10.3f %10.3f %14.4f %10.5f\n", r.technique.c_str(),
-                      r.settingsLabel().c_str(), r.threads, r.medianMs, r.minMs,
-                      r.errors.percentOfPixels(r.errors.misclassified()), r.errors.rms);
+        const ErrorFigures& e = r.errors;
+        std::snprintf(line, sizeof line, "%-16s %-40s %7d %10.3f %10.3f %14.4f %10.5f %10.5f %11.4f %13.4f\n",
+                      r.technique.c_str(), r.settingsLabel().c_str(), r.threads, r.medianMs, r.minMs,
+                      e.percentOfPixels(e.misclassified()), e.rms, e.maxAbs, e.percentOfPixels(e.umbraLit),
+                      e.percentOfPixels(e.litShadowed));
         text += line;
     }
     return text;
@@ -201,15 +228,18 @@ std::string formatSweepText(const SweepResults& results) {
 std::string formatSweepCsv(const SweepResults& results) {
     const std::vector<std::string> stats = statNames(results);
     std::vector<std::string> header = {"technique", "settings", "threads", "median_ms", "min_ms", "rms", "mean_abs",
-                                       "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent"};
+                                       "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
+                                       "umbra_lit_percent", "lit_shadowed_percent", "reference"};
     header.insert(header.end(), stats.begin(), stats.end());
     std::string csv = csvLine(header);
     for (const SweepRow& r : results.rows) {
         const ErrorFigures& e = r.errors;
         std::vector<std::string> fields = {r.technique, r.settingsLabel(), std::to_string(r.threads),
-                                           number(r.medianMs), number(r.minMs), number(e.rms), number(e.meanAbs),
-                                           number(e.maxAbs), number(e.percentOfPixels(e.misclassified())),
-                                           number(e.percentOfPixels(e.falseShadow)), number(e.percentOfPixels(e.falseLight))};
+                                           csvNumber(r.medianMs), csvNumber(r.minMs), csvNumber(e.rms), csvNumber(e.meanAbs),
+                                           csvNumber(e.maxAbs), csvNumber(e.percentOfPixels(e.misclassified())),
+                                           csvNumber(e.percentOfPixels(e.falseShadow)), csvNumber(e.percentOfPixels(e.falseLight)),
+                                           csvNumber(e.percentOfPixels(e.umbraLit)), csvNumber(e.percentOfPixels(e.litShadowed)),
+                                           r.reference};
         for (const std::string& name : stats) fields.push_back(statValue(r, name));
         csv += csvLine(fields);
     }
@@ -222,6 +252,7 @@ std::string formatSweepJson(const SweepResults& results) {
         nlohmann::ordered_json stats = nlohmann::ordered_json::object();
         for (const TechniqueStat& s : r.stats) stats[s.name] = s.value;
         rows.push_back({{"technique", r.technique},
+                        {"reference", r.reference},
                         {"settings", r.settings},
                         {"threads", r.threads},
                         {"median_ms", r.medianMs},

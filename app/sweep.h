@@ -4,14 +4,18 @@
 // product of the axes it has (an axis a technique lacks does not multiply its runs), at
 // every thread count. Protocol as in `bench`: warm-up frames, then `runs` measured frames,
 // of which the median and minimum of Frame::techniqueMs (the technique alone, not the
-// G-buffer or shading) are kept. The exact reference is rendered once per sweep; every
-// setting's visibility is scored against it (conventions.md, "Figures and errors").
+// G-buffer or shading) are kept. Each reference the techniques name (Technique::
+// referenceName: `reference` or `reference-soft`) is rendered once per sweep; every
+// setting's visibility is scored against its technique's (conventions.md, "Figures and
+// errors").
 #pragma once
 
 #include <map>
 #include <string>
 #include <vector>
 
+#include "app/render.h"
+#include "app/timing.h"
 #include "raster/rasterizer.h"
 #include "shading/compare.h"
 #include "shadows/technique.h"
@@ -28,6 +32,8 @@ SweepAxis parseSweepAxis(const std::string& text);
 
 struct SweepOptions {
     std::string scene;                      // built-in name or .json path
+    SceneOverrides overrides;               // e.g. the light's position and radius
+    std::string reference;                  // scores every technique against it; empty: each its own referenceName
     std::vector<const Technique*> techniques;   // from findTechnique(), or a test's own
     std::vector<SweepAxis> axes;
     std::vector<int> threads;               // empty: all cores only
@@ -38,6 +44,7 @@ struct SweepOptions {
 
 struct SweepRow {
     std::string technique;
+    std::string reference;                         // the technique it was scored against
     std::map<std::string, std::string> settings;   // this row's axis values (not defaults)
     int threads = 1;
     double medianMs = 0.0, minMs = 0.0;
@@ -52,6 +59,15 @@ struct SweepResults {
     std::vector<SweepRow> rows;   // per technique, settings in axis order (last axis fastest), threads
 };
 
+// The measurement protocol shared with `shadowlab scaling`: warm-up frames, then `runs`
+// measured frames; the median and minimum of Frame::techniqueMs, and the last frame.
+struct TimedFrames {
+    Timing timing;
+    Frame last;
+};
+TimedFrames timeFrames(const Scene& scene, const WorldGeometry& world, const Technique& technique,
+                       const FrameSettings& settings, int warmupRuns, int runs);
+
 // Checks the technique names and that every axis belongs to one of them, then renders one
 // frame per setting (a value a technique rejects fails there, before any measurement);
 // throws std::invalid_argument (or SceneError for the scene).
@@ -63,11 +79,17 @@ std::string sweepFileStem(const SweepResults& results);
 // A table for the terminal: one line per row.
 std::string formatSweepText(const SweepResults& results);
 // One row per SweepRow. CSV columns: technique, settings, threads, median_ms, min_ms, rms,
-// mean_abs, max_abs, misclassified_percent, false_shadow_percent, false_light_percent, then
-// one column per technique stat (empty where a row does not report it).
+// mean_abs, max_abs, misclassified_percent, false_shadow_percent, false_light_percent,
+// umbra_lit_percent, lit_shadowed_percent, reference, then one column per technique stat
+// (empty where a row does not report it).
 std::string formatSweepCsv(const SweepResults& results);
-// {"scene", "rows": [{"technique", "settings": {...}, "threads", "median_ms", "min_ms",
-//  "errors": formatJson(...), "stats": {...}}]}
+// CSV helpers shared with `shadowlab scaling`: one RFC 4180 line (fields with a comma,
+// quote or line break quoted), and a number with 9 significant digits.
+std::string csvLine(const std::vector<std::string>& fields);
+std::string csvNumber(double value);
+
+// {"scene", "rows": [{"technique", "reference", "settings": {...}, "threads", "median_ms",
+//  "min_ms", "errors": formatJson(...), "stats": {...}}]}
 std::string formatSweepJson(const SweepResults& results);
 
 }  // namespace shadowlab

@@ -6,6 +6,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "app/svg.h"
+
 namespace shadowlab {
 namespace {
 
@@ -17,30 +19,11 @@ constexpr double kLeft = 70, kRight = 600, kTop = 40, kBottom = 440;
 // has no place for 0.
 constexpr double kMinPlottedMs = 1e-3;
 
-// Okabe and Ito's colour-blind-safe palette, in order of use.
-constexpr const char* kPalette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000"};
-
 struct Range {
     double lo, hi;
 };
 
-std::string format(const char* pattern, auto... values) {
-    std::string text(size_t(std::snprintf(nullptr, 0, pattern, values...)), '\0');
-    std::snprintf(text.data(), text.size() + 1, pattern, values...);
-    return text;
-}
-
-std::string xmlEscape(const std::string& text) {
-    std::string escaped;
-    for (char c : text) {
-        if (c == '&') escaped += "&amp;";
-        else if (c == '<') escaped += "&lt;";
-        else if (c == '>') escaped += "&gt;";
-        else if (c == '"') escaped += "&quot;";
-        else escaped += c;
-    }
-    return escaped;
-}
+using svg::format;
 
 double plottedMs(const SweepRow& row) { return std::max(row.medianMs, kMinPlottedMs); }
 
@@ -55,15 +38,6 @@ Range decadeRange(const std::vector<SweepRow>& rows) {
     return r;
 }
 
-// A tick step of 1, 2 or 5 times a power of ten giving about five ticks up to the largest error.
-double errorTickStep(double largest) {
-    if (!(largest > 0.0)) return 0.2;
-    const double rough = largest / 5.0, decade = std::pow(10.0, std::floor(std::log10(rough)));
-    for (double m : {1.0, 2.0, 5.0})
-        if (m * decade >= rough) return m * decade;
-    return 10.0 * decade;
-}
-
 struct Axes {
     Range decades;
     double errorStep, errorTop;
@@ -76,7 +50,7 @@ struct Axes {
 Axes fitAxes(const std::vector<SweepRow>& rows, PlotErrorAxis axis) {
     double largest = 0.0;
     for (const SweepRow& row : rows) largest = std::max(largest, plottedError(row, axis));
-    const double step = errorTickStep(largest);
+    const double step = svg::niceTickStep(largest);
     // A little headroom, so that the worst point does not sit on the frame.
     return {decadeRange(rows), step, std::max(step, std::ceil(1.05 * largest / step) * step)};
 }
@@ -90,6 +64,15 @@ std::vector<double> timeTicks(const Range& decades) {
         for (double m : {1.0, 2.0, 5.0})
             if ((m == 1.0 || fine) && d + std::log10(m) <= decades.hi) ticks.push_back(m * std::pow(10.0, d));
     return ticks;
+}
+
+const char* axisTitle(PlotErrorAxis axis) {
+    switch (axis) {
+        case PlotErrorAxis::Rms: return "RMS error of V";
+        case PlotErrorAxis::Umbra: return "umbra errors, both ways (% of pixels)";
+        case PlotErrorAxis::Misclassified: break;
+    }
+    return "misclassified pixels (%)";
 }
 
 std::string axesSvg(const Axes& a, PlotErrorAxis axis) {
@@ -108,7 +91,7 @@ std::string axesSvg(const Axes& a, PlotErrorAxis axis) {
     svg += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">technique median ms (log scale)</text>)" "\n",
                   (kLeft + kRight) / 2, kBottom + 40);
     svg += format(R"svg(<text transform="translate(18 %.1f) rotate(-90)" text-anchor="middle">%s</text>)svg" "\n",
-                  (kTop + kBottom) / 2, axis == PlotErrorAxis::Rms ? "RMS error of V" : "misclassified pixels (%)");
+                  (kTop + kBottom) / 2, axisTitle(axis));
     return svg;
 }
 
@@ -134,42 +117,17 @@ size_t techniqueIndex(const SweepResults& results, const std::string& technique)
     return size_t(std::ranges::find(results.techniques, technique) - results.techniques.begin());
 }
 
+// A row at its technique's defaults is labelled with the technique's name: "defaults"
+// next to every point of a comparison of techniques would say nothing.
 std::string rowLabel(const SweepRow& row, bool severalThreadCounts) {
-    return row.settingsLabel() + (severalThreadCounts ? ", " + std::to_string(row.threads) + " thr" : "");
-}
-
-struct LabelBox {
-    double left, top, right, bottom;
-    bool overlaps(const LabelBox& o) const { return left < o.right && o.left < right && top < o.bottom && o.top < bottom; }
-};
-
-// Labels of nearby points would print over each other: each label takes the nearest
-// baseline, alternately above and below its point, where it stays inside the plot's
-// height and overlaps no label placed before it (or the first one if all are taken).
-double labelBaseline(double x, double y, const std::string& text, std::vector<LabelBox>& placed) {
-    constexpr double kCharWidth = 5.5, kAscent = 9, kDescent = 2, kLineStep = 11;   // 10-unit sans-serif text
-    const auto boxAt = [&](double baseline) {
-        return LabelBox{x + 6, baseline - kAscent, x + 6 + kCharWidth * double(text.size()), baseline + kDescent};
-    };
-    const auto isFree = [&](const LabelBox& box) {
-        return box.top >= kTop && box.bottom <= kBottom &&
-               std::ranges::none_of(placed, [&](const LabelBox& b) { return b.overlaps(box); });
-    };
-    double chosen = y - 6;
-    for (int step = 0; step < 64; ++step) {
-        const double baseline = step % 2 == 0 ? y - 6 - kLineStep * (step / 2) : y + 14 + kLineStep * (step / 2);
-        if (isFree(boxAt(baseline))) {
-            chosen = baseline;
-            break;
-        }
-    }
-    placed.push_back(boxAt(chosen));
-    return chosen;
+    const std::string settings = row.settingsLabel();
+    return (settings == "defaults" ? row.technique : settings) +
+           (severalThreadCounts ? ", " + std::to_string(row.threads) + " thr" : "");
 }
 
 // Labels must not cover the legend or any point.
-std::vector<LabelBox> takenBoxes(const SweepResults& results, const Axes& a, PlotErrorAxis axis) {
-    std::vector<LabelBox> taken = {{kRight + 10, kTop, kWidth, kTop + 20.0 * double(results.techniques.size() + 1)}};
+std::vector<svg::LabelBox> takenBoxes(const SweepResults& results, const Axes& a, PlotErrorAxis axis) {
+    std::vector<svg::LabelBox> taken = {{kRight + 10, kTop, kWidth, kTop + 20.0 * double(results.techniques.size() + 1)}};
     for (const SweepRow& row : results.rows) {
         const double x = a.x(row.medianMs), y = a.y(plottedError(row, axis));
         taken.push_back({x - 4, y - 4, x + 4, y + 4});
@@ -181,19 +139,14 @@ std::string pointsSvg(const SweepResults& results, const Axes& a, PlotErrorAxis 
     std::set<int> threadCounts;
     for (const SweepRow& row : results.rows) threadCounts.insert(row.threads);
     std::string svg;
-    std::vector<LabelBox> placed = takenBoxes(results, a, axis);
+    std::vector<svg::LabelBox> placed = takenBoxes(results, a, axis);
     for (const SweepRow& row : results.rows) {
         const double x = a.x(row.medianMs), y = a.y(plottedError(row, axis));
         const std::string label = rowLabel(row, threadCounts.size() > 1);
         svg += format(R"(<circle class="point" cx="%.1f" cy="%.1f" r="4" fill="%s"><title>%s %s: %.4g ms, %.4g</title></circle>)" "\n",
-                      x, y, kPalette[techniqueIndex(results, row.technique) % std::size(kPalette)],
-                      xmlEscape(row.technique).c_str(), xmlEscape(label).c_str(), row.medianMs, plottedError(row, axis));
-        const double baseline = labelBaseline(x, y, label, placed);
-        if (baseline != y - 6)   // moved away from its point: a leader line shows whose it is
-            svg += format(R"(<line class="leader" x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#bbb"/>)" "\n", x, y,
-                          x + 6, baseline - 3);
-        svg += format(R"(<text class="label" x="%.1f" y="%.1f" font-size="10">%s</text>)" "\n", x + 6, baseline,
-                      xmlEscape(label).c_str());
+                      x, y, svg::kPalette[techniqueIndex(results, row.technique) % std::size(svg::kPalette)],
+                      svg::escape(row.technique).c_str(), svg::escape(label).c_str(), row.medianMs, plottedError(row, axis));
+        svg += svg::label(x, y, label, placed, kTop, kBottom);
     }
     return svg;
 }
@@ -202,8 +155,8 @@ std::string legendSvg(const SweepResults& results) {
     std::string svg;
     double y = kTop + 10;
     for (size_t k = 0; k < results.techniques.size(); ++k, y += 20) {
-        svg += format(R"(<circle cx="%.1f" cy="%.1f" r="4" fill="%s"/>)" "\n", kRight + 20, y, kPalette[k % std::size(kPalette)]);
-        svg += format(R"(<text x="%.1f" y="%.1f">%s</text>)" "\n", kRight + 30, y + 4, xmlEscape(results.techniques[k]).c_str());
+        svg += format(R"(<circle cx="%.1f" cy="%.1f" r="4" fill="%s"/>)" "\n", kRight + 20, y, svg::kPalette[k % std::size(svg::kPalette)]);
+        svg += format(R"(<text x="%.1f" y="%.1f">%s</text>)" "\n", kRight + 30, y + 4, svg::escape(results.techniques[k]).c_str());
     }
     svg += format(R"(<circle cx="%.1f" cy="%.1f" r="7" fill="none" stroke="#000"/>)" "\n", kRight + 20, y);
     svg += format(R"(<text x="%.1f" y="%.1f">Pareto front</text>)" "\n", kRight + 30, y + 4);
@@ -215,11 +168,18 @@ std::string legendSvg(const SweepResults& results) {
 PlotErrorAxis parsePlotErrorAxis(const std::string& name) {
     if (name == "misclassified") return PlotErrorAxis::Misclassified;
     if (name == "rms") return PlotErrorAxis::Rms;
-    throw std::invalid_argument("plot axis must be misclassified or rms, got '" + name + "'");
+    if (name == "umbra") return PlotErrorAxis::Umbra;
+    throw std::invalid_argument("plot axis must be misclassified, rms or umbra, got '" + name + "'");
 }
 
 double plottedError(const SweepRow& row, PlotErrorAxis axis) {
-    return axis == PlotErrorAxis::Rms ? row.errors.rms : row.errors.percentOfPixels(row.errors.misclassified());
+    const ErrorFigures& e = row.errors;
+    switch (axis) {
+        case PlotErrorAxis::Rms: return e.rms;
+        case PlotErrorAxis::Umbra: return e.percentOfPixels(e.umbraErrors());
+        case PlotErrorAxis::Misclassified: break;
+    }
+    return e.percentOfPixels(e.misclassified());
 }
 
 std::vector<size_t> paretoFront(const std::vector<SweepRow>& rows, PlotErrorAxis axis) {
@@ -244,7 +204,7 @@ std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis) {
                              kWidth, kHeight, kWidth, kHeight);
     svg += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", kWidth, kHeight);
     svg += format(R"(<text x="%.1f" y="24" font-size="14">%s: speed against error</text>)" "\n", kLeft,
-                  xmlEscape(results.scene).c_str());
+                  svg::escape(results.scene).c_str());
     svg += axesSvg(a, axis);
     svg += frontSvg(results, paretoFront(results.rows, axis), a, axis);
     svg += pointsSvg(results, a, axis);

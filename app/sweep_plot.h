@@ -15,9 +15,10 @@ namespace shadowlab {
 enum class PlotErrorAxis {
     Misclassified,   // misclassified pixels, % of the reference's hit pixels
     Rms,             // RMS error of V
+    Umbra,           // umbra errors both ways (soft shadows), % of the hit pixels
 };
 
-// Throws std::invalid_argument for a name other than "misclassified" or "rms".
+// Throws std::invalid_argument for a name other than "misclassified", "rms" or "umbra".
 PlotErrorAxis parsePlotErrorAxis(const std::string& name);
 
 double plottedError(const SweepRow& row, PlotErrorAxis axis);

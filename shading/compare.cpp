@@ -49,6 +49,21 @@ std::string formatCount(const char* label, uint64_t count, double percent, const
     return line;
 }
 
+// Umbra errors need a margin on both sides: a reference estimated from n samples puts a
+// point in the umbra only when (almost) no sample sees the light, and a filtered technique
+// may be off by a little everywhere; only gross errors, light in the umbra or shadow in
+// full light, are counted.
+void countUmbraErrors(float ref, float tst, const CompareOptions& options, ErrorFigures& f) {
+    if (ref < options.umbraThreshold) {
+        ++f.umbraPixels;
+        f.umbraLit += tst > options.umbraTolerance;
+    }
+    if (ref > 1.0f - options.umbraThreshold) {
+        ++f.litPixels;
+        f.litShadowed += tst < 1.0f - options.umbraTolerance;
+    }
+}
+
 }  // namespace
 
 ErrorFigures compareImages(const ImageChannels& reference, const ImageChannels& test,
@@ -73,6 +88,7 @@ ErrorFigures compareImages(const ImageChannels& reference, const ImageChannels& 
         const bool refLit = ref >= options.litThreshold, testLit = tst >= options.litThreshold;
         f.falseShadow += refLit && !testLit;
         f.falseLight += !refLit && testLit;
+        countUmbraErrors(ref, tst, options, f);
     }
     if (f.pixels > 0) {
         f.rms = std::sqrt(sumSquares / double(f.pixels));
@@ -98,6 +114,10 @@ std::string formatText(const ErrorFigures& f) {
                         "  lit in the reference, shadowed here (acne)");
     text += formatCount("false light", f.falseLight, f.percentOfPixels(f.falseLight),
                         "  shadowed in the reference, lit here (leaks)");
+    text += formatCount("umbra lit", f.umbraLit, f.percentOfPixels(f.umbraLit),
+                        ("  of " + std::to_string(f.umbraPixels) + " umbra pixels in the reference, lit here").c_str());
+    text += formatCount("lit shadowed", f.litShadowed, f.percentOfPixels(f.litShadowed),
+                        ("  of " + std::to_string(f.litPixels) + " fully lit pixels in the reference, shadowed here").c_str());
     return text;
 }
 
@@ -115,6 +135,14 @@ std::string formatJson(const ErrorFigures& f) {
     j["false_shadow_percent"] = f.percentOfPixels(f.falseShadow);
     j["false_light"] = f.falseLight;
     j["false_light_percent"] = f.percentOfPixels(f.falseLight);
+    j["umbra_pixels"] = f.umbraPixels;
+    j["lit_pixels"] = f.litPixels;
+    j["umbra_lit"] = f.umbraLit;
+    j["umbra_lit_percent"] = f.percentOfPixels(f.umbraLit);
+    j["lit_shadowed"] = f.litShadowed;
+    j["lit_shadowed_percent"] = f.percentOfPixels(f.litShadowed);
+    j["umbra_errors"] = f.umbraErrors();
+    j["umbra_errors_percent"] = f.percentOfPixels(f.umbraErrors());
     return j.dump(2);
 }
 

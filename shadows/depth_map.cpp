@@ -9,7 +9,8 @@ namespace {
 
 // One depth-only pass. Culling back faces keeps the surfaces facing the light (the first
 // depth); culling front faces keeps the back faces (the second depth), section 7.4.
-std::vector<float> depthLayer(const WorldGeometry& world, const glm::mat4& clipFromWorld,
+std::vector<float> depthLayer(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
+                              const glm::mat4& clipFromWorld,
                               const DepthMapSettings& settings, raster::CullMode cull, raster::SimdLevel simd) {
     raster::Framebuffer framebuffer(settings.size, settings.size);
     framebuffer.clearDepth(1.0f);
@@ -18,8 +19,8 @@ std::vector<float> depthLayer(const WorldGeometry& world, const glm::mat4& clipF
     state.offset = settings.offset;
     state.output = raster::FragmentOutput::DepthOnly;
     raster::DrawCall call;
-    call.vertices.positions = world.positions;
-    call.triangles = world.triangles;
+    call.vertices.positions = positions;
+    call.triangles = triangles;
     call.clipFromObject = clipFromWorld;
     raster::Rasterizer rasterizer(simd);
     rasterizer.draw(framebuffer, state, call);
@@ -45,6 +46,11 @@ glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size) {
 
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
                         raster::SimdLevel simd) {
+    return renderDepthMap(world.positions, world.triangles, view, settings, simd);
+}
+
+DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
+                        const LightView& view, const DepthMapSettings& settings, raster::SimdLevel simd) {
     const glm::mat4 clipFromWorld(view.clipFromWorld());
     DepthMap map;
     map.size = settings.size;
@@ -53,17 +59,17 @@ DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const
     map.worldFromTexel = glm::inverse(map.texelFromWorld);
     switch (settings.layer) {
         case DepthLayer::First:
-            map.depth = depthLayer(world, clipFromWorld, settings, raster::CullMode::Back, simd);
+            map.depth = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::Back, simd);
             break;
         case DepthLayer::Second:
-            map.depth = depthLayer(world, clipFromWorld, settings, raster::CullMode::Front, simd);
+            map.depth = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::Front, simd);
             break;
         case DepthLayer::Midpoint: {
             // Woo's midpoint: halfway (in window depth) between the first and second surface.
             // Where there is no back face the second depth is the cleared 1, so a single-sided
             // receiver such as a ground plane stays in front of its own entry.
-            map.depth = depthLayer(world, clipFromWorld, settings, raster::CullMode::Back, simd);
-            const std::vector<float> second = depthLayer(world, clipFromWorld, settings, raster::CullMode::Front, simd);
+            map.depth = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::Back, simd);
+            const std::vector<float> second = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::Front, simd);
             for (size_t k = 0; k < map.depth.size(); ++k) map.depth[k] = 0.5f * (map.depth[k] + second[k]);
             break;
         }

@@ -9,6 +9,7 @@
 // [0, 1], 1 where nothing was drawn.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -46,5 +47,8 @@ struct DepthMapSettings {
 
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
                         raster::SimdLevel simd);
+// The same for some of the world's triangles (indices into positions).
+DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
+                        const LightView& view, const DepthMapSettings& settings, raster::SimdLevel simd);
 
 }  // namespace shadowlab

@@ -4,6 +4,8 @@
 #include <numeric>
 #include <tuple>
 
+#include <tbb/parallel_for.h>
+
 namespace shadowlab {
 namespace {
 
@@ -67,6 +69,16 @@ EdgeAdjacency buildEdgeAdjacency(std::span<const glm::vec3> positions, std::span
         adjacency.openEdges += e.useCount == 1;
         adjacency.nonManifoldEdges += e.useCount > 2;
     }
+    return adjacency;
+}
+
+std::vector<EdgeAdjacency> sceneEdgeAdjacency(const Scene& scene) {
+    std::vector<bool> used(scene.meshes.size(), false);
+    for (const MeshInstance& instance : scene.instances) used[instance.mesh] = true;
+    std::vector<EdgeAdjacency> adjacency(scene.meshes.size());
+    tbb::parallel_for(size_t(0), scene.meshes.size(), [&](size_t m) {
+        if (used[m]) adjacency[m] = buildEdgeAdjacency(scene.meshes[m].positions, scene.meshes[m].triangles);
+    });
     return adjacency;
 }
 

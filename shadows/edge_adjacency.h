@@ -23,6 +23,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scenes/scene.h"
+
 namespace shadowlab {
 
 struct EdgeUse {
@@ -46,5 +48,9 @@ struct EdgeAdjacency {
 
 // Triangles whose welded corners coincide have no area and no edges; they are skipped.
 EdgeAdjacency buildEdgeAdjacency(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles);
+
+// One adjacency per scene mesh that some instance uses (indexed like Scene::meshes, empty
+// for unused meshes), built in parallel.
+std::vector<EdgeAdjacency> sceneEdgeAdjacency(const Scene& scene);
 
 }  // namespace shadowlab

@@ -130,14 +130,16 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
         throw std::invalid_argument("light view: an area light has no single view; use its centre (pointLightFor)");
     }
     if (light.type != LightType::Directional) {
-        // Aim at the centre of the receivers' bounding box, then fit the sides around them.
+        // Aim along options.axis or at the centre of the receivers' bounding box, then fit the
+        // sides around them.
         glm::dvec3 lo(kInfinity), hi(-kInfinity);
         for (size_t k = 0; k < receivers.pixelCount(); ++k) {
             if (receivers.hit[k]) lo = glm::min(lo, glm::dvec3(receivers.position[k])), hi = glm::max(hi, glm::dvec3(receivers.position[k]));
         }
         if (lo.x > hi.x) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
         const glm::dvec3 apex(light.position);
-        return perspectiveView(apex, glm::normalize(0.5 * (lo + hi) - apex), receivers, world, options);
+        const glm::dvec3 axis = options.axis != glm::dvec3(0.0) ? options.axis : 0.5 * (lo + hi) - apex;
+        return perspectiveView(apex, glm::normalize(axis), receivers, world, options);
     }
     LightView view;
     view.orthographic = true;

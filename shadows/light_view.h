@@ -31,6 +31,10 @@ struct LightFitOptions {
     // The near plane is never closer than this fraction of the far distance, which bounds
     // the depth precision a perspective map can lose (window depth resolves ~ z^2 / near).
     double minNearFraction = 1e-4;
+    // Point and spot lights: the direction the view looks along. Zero (the default): towards
+    // the centre of the receivers' bounding box. A disk light's normal makes the depth planes
+    // parallel to the light's plane (what shadow fins measure distances from).
+    glm::dvec3 axis{0.0};
 };
 
 // Throws std::invalid_argument when there are no receivers, the light is an area light

@@ -42,14 +42,6 @@ double grid(const DepthMap& map, const MapReceiver& r, int n) {
     return double(lit) / double(n * n);
 }
 
-double poisson(const DepthMap& map, const MapReceiver& r, const PcfKernel& k, uint64_t pixel) {
-    const double angle = poissonRotation(pixel), c = std::cos(angle), s = std::sin(angle);
-    const double radius = k.settings.poissonRadiusTexels;
-    double lit = 0.0;
-    for (const glm::dvec2& d : k.disk) lit += nearest(map, r, r.texel + radius * glm::dvec2(c * d.x - s * d.y, s * d.x + c * d.y));
-    return lit / double(k.disk.size());
-}
-
 // Mitchell's best-candidate algorithm: each new tap is the candidate farthest from the
 // taps so far, of `kCandidatesPerTap` times as many candidates as taps, drawn uniformly on
 // the unit disk from a fixed hash sequence. It approximates a Poisson-disk distribution.
@@ -93,12 +85,21 @@ double kernelRadiusTexels(const FilterSettings& s) {
 
 double poissonRotation(uint64_t pixel) { return 2.0 * std::numbers::pi * unitInterval(splitMix64(pixel)); }
 
+double poissonVisibility(const DepthMap& map, const MapReceiver& r, const std::vector<glm::dvec2>& disk, uint64_t pixel,
+                         const glm::dvec2& radiusTexels) {
+    const double angle = poissonRotation(pixel);
+    const glm::dvec2 rotation(std::cos(angle), std::sin(angle));
+    double lit = 0.0;
+    for (const glm::dvec2& d : disk) lit += nearest(map, r, r.texel + rotatedTap(d, rotation, radiusTexels));
+    return lit / double(disk.size());
+}
+
 double filteredVisibility(const DepthMap& map, const MapReceiver& r, const PcfKernel& k, uint64_t pixel) {
     switch (k.settings.kind) {
         case FilterKind::Nearest: return nearest(map, r, r.texel);
         case FilterKind::Bilinear: return bilinear(map, r);
         case FilterKind::Grid: return grid(map, r, k.settings.gridSize);
-        case FilterKind::Poisson: return poisson(map, r, k, pixel);
+        case FilterKind::Poisson: return poissonVisibility(map, r, k.disk, pixel, glm::dvec2(k.settings.poissonRadiusTexels));
     }
     return 0.0;
 }

@@ -48,6 +48,16 @@ double kernelRadiusTexels(const FilterSettings& settings);
 // The per-pixel rotation of the poisson kernel, radians in [0, 2 pi).
 double poissonRotation(uint64_t pixel);
 
+// Offset (texels) of unit-disk tap d rotated by (cos, sin) = rotation and scaled by
+// radiusTexels per axis (an ellipse where a map's texels are not square in the world).
+inline glm::dvec2 rotatedTap(const glm::dvec2& d, const glm::dvec2& rotation, const glm::dvec2& radiusTexels) {
+    return radiusTexels * glm::dvec2(rotation.x * d.x - rotation.y * d.y, rotation.y * d.x + rotation.x * d.y);
+}
+
+// The poisson kernel's taps at `radiusTexels` per axis around the receiver (the fraction lit).
+double poissonVisibility(const DepthMap& map, const MapReceiver& receiver, const std::vector<glm::dvec2>& disk,
+                         uint64_t pixel, const glm::dvec2& radiusTexels);
+
 // The fraction of the kernel's weight that is lit, in [0, 1].
 double filteredVisibility(const DepthMap& map, const MapReceiver& receiver, const PcfKernel& kernel, uint64_t pixel);
 

@@ -25,6 +25,7 @@
 //     as the occluder stands on the plane).
 #include "shadows/planar.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "raster/rasterizer.h"

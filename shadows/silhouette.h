@@ -47,6 +47,13 @@ struct CasterSigns {
 };
 CasterSigns casterSigns(bool facesLight, bool closedMesh);
 
+struct InstanceRange;
+// casterSigns() of every triangle of one instance (world = flatten(scene)).
+std::vector<CasterSigns> instanceCasterSigns(const WorldGeometry& world, const InstanceRange& range,
+                                             const glm::dvec4& light, bool closedMesh);
+// The `light` member of each, as silhouetteEdges() takes them.
+std::vector<int8_t> lightSigns(const std::vector<CasterSigns>& signs);
+
 // An edge that needs a volume side, in world vertex indices, walked from -> to as its
 // casting triangles walk it; emitted |multiplicity| times.
 struct SilhouetteEdge {
@@ -57,5 +64,11 @@ struct SilhouetteEdge {
 // indices to world ones. Edges come out in the adjacency's edge order.
 std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, std::span<const int8_t> lightSign,
                                             uint32_t vertexBase);
+
+// The silhouette edges of every instance of the scene (world = flatten(scene), adjacency
+// from sceneEdgeAdjacency), instance by instance: the light signs above per triangle, then
+// silhouetteEdges. Throws std::invalid_argument if world is not flatten(scene).
+std::vector<SilhouetteEdge> sceneSilhouette(const Scene& scene, const WorldGeometry& world,
+                                            const std::vector<EdgeAdjacency>& adjacency, const glm::dvec4& light);
 
 }  // namespace shadowlab

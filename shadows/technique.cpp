@@ -2,11 +2,13 @@
 
 #include <stdexcept>
 
+#include "shadows/fins.h"
 #include "shadows/izb.h"
 #include "shadows/planar.h"
 #include "shadows/reference.h"
 #include "shadows/shadow_map_techniques.h"
 #include "shadows/shadow_volume.h"
+#include "shadows/soft_shadow_techniques.h"
 
 namespace shadowlab {
 namespace {
@@ -25,17 +27,43 @@ ShadowOutputs exactReference(const ShadowInputs& in) {
     return out;
 }
 
+// The soft shadows' reference: the visible fraction of the area light itself, from n x n
+// stratified samples (reference.h); point and directional lights give hard shadows.
+ShadowOutputs exactSoftReference(const ShadowInputs& in) {
+    const ReferenceVisibility reference(in.world);
+    ShadowOutputs out;
+    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis", 1, 256)});
+    return out;
+}
+
+// Soft-shadow techniques are scored against the area light's visible fraction.
+Technique scoredAgainstSoftReference(Technique t) {
+    t.referenceName = "reference-soft";
+    return t;
+}
+
 }  // namespace
 
 const std::vector<Technique>& techniques() {
     static const std::vector<Technique> all = {
         {"none", "no shadows: V = 1 on every surface", {}, unshadowed},
         {"reference", "exact hard shadows: one Embree shadow ray per pixel to the light's centre", {}, exactReference},
+        {"reference-soft", "exact soft shadows: the visible fraction of the area light, n x n stratified Embree rays per pixel",
+         {{"samples-per-axis", "32", "n: n x n samples on the light (1..256)"}}, exactSoftReference, "reference-soft"},
         shadowMapTechnique(),
         cascadedShadowMapTechnique(),
         {"izb", "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows", irregularZBufferParams(), irregularZBuffer},
         shadowVolumeTechnique(),
         planarTechnique(),
+        scoredAgainstSoftReference(pcssTechnique()),
+        scoredAgainstSoftReference(filteredShadowMapTechnique(MomentKind::Variance)),
+        scoredAgainstSoftReference(filteredShadowMapTechnique(MomentKind::Exponential)),
+        scoredAgainstSoftReference(filteredShadowMapTechnique(MomentKind::ExponentialVariance)),
+        scoredAgainstSoftReference(filteredShadowMapTechnique(MomentKind::Hamburger4)),
+        scoredAgainstSoftReference(multiSampleTechnique()),
+        scoredAgainstSoftReference(finsTechnique()),
+        scoredAgainstSoftReference(smoothiesTechnique()),
+        scoredAgainstSoftReference(penumbraMapsTechnique()),
     };
     return all;
 }

@@ -42,6 +42,10 @@ struct Technique {
     std::string description;
     std::vector<ParamSpec> params;
     std::function<ShadowOutputs(const ShadowInputs&)> run;
+    // The technique whose V this one is scored against (`render --error-map`, `sweep`):
+    // `reference`, the hard shadow of the light's centre, for hard-shadow techniques;
+    // `reference-soft`, the visible fraction of an area light, for soft-shadow ones.
+    std::string referenceName = "reference";
 };
 
 const std::vector<Technique>& techniques();

@@ -12,12 +12,19 @@ constexpr uint32_t kUnmapped = std::numeric_limits<uint32_t>::max();
 
 // Vertices of one instance's volume: each world vertex used gets one finite copy (w = 1)
 // and one copy at infinity (w = 0), numbered locally in order of first use.
+//
+// With caps, every finite vertex is numbered first, in world order. The rasterizer clips a
+// triangle starting from its smallest vertex index (rasterizer.cpp, canonicalIndexOrder),
+// so a light cap that crosses the near plane gets the depth bits of the depth prepass only
+// if its indices are ordered as the world's are.
 class VolumeVertices {
 public:
     VolumeVertices(const WorldGeometry& world, const InstanceRange& range, const glm::dvec4& light,
-                   uint32_t vertexCount)
+                   uint32_t vertexCount, bool worldOrder)
         : world_(world), firstVertex_(range.firstVertex), light_(light),
-          finite_(vertexCount, kUnmapped), infinite_(vertexCount, kUnmapped) {}
+          finite_(vertexCount, kUnmapped), infinite_(vertexCount, kUnmapped) {
+        for (uint32_t v = 0; worldOrder && v < vertexCount; ++v) finite(firstVertex_ + v);
+    }
 
     uint32_t finite(uint32_t worldVertex) {
         return map(finite_, worldVertex, glm::vec4(world_.positions[worldVertex], 1.0f));
@@ -51,17 +58,10 @@ glm::uvec3 oriented(glm::uvec3 t, int sign) { return sign > 0 ? t : glm::uvec3(t
 
 InstanceVolume extrudeInstance(const WorldGeometry& world, const Mesh& mesh, const InstanceRange& range,
                                const EdgeAdjacency& adjacency, const glm::dvec4& light, bool withCaps) {
-    std::vector<CasterSigns> signs(range.triangleCount);
-    std::vector<int8_t> lightSign(range.triangleCount);
-    for (uint32_t t = 0; t < range.triangleCount; ++t) {
-        const glm::uvec3& tri = world.triangles[range.firstTriangle + t];
-        const bool lit = facesLight(light, world.positions[tri.x], world.positions[tri.y], world.positions[tri.z]);
-        signs[t] = casterSigns(lit, adjacency.closed);
-        lightSign[t] = int8_t(signs[t].light);
-    }
+    const std::vector<CasterSigns> signs = instanceCasterSigns(world, range, light, adjacency.closed);
     InstanceVolume out;
-    out.silhouette = silhouetteEdges(adjacency, lightSign, range.firstVertex);
-    VolumeVertices v(world, range, light, uint32_t(mesh.positions.size()));
+    out.silhouette = silhouetteEdges(adjacency, lightSigns(signs), range.firstVertex);
+    VolumeVertices v(world, range, light, uint32_t(mesh.positions.size()), withCaps);
     for (const SilhouetteEdge& e : out.silhouette) {
         const uint32_t a = v.finite(e.from), b = v.finite(e.to);
         const uint32_t aInf = v.infinite(e.from), bInf = v.infinite(e.to);

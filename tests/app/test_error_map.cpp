@@ -80,9 +80,10 @@ TEST_CASE("scoring a frame: the reference against itself is exact, JSON carries 
 
     Frame withStats = frame;
     withStats.shadow.stats = {{"texels", 4096}};
-    const nlohmann::json j = nlohmann::json::parse(formatScoreJson("thin-occluder", "reference", {{"bias", "0"}}, withStats, self));
+    const nlohmann::json j = nlohmann::json::parse(formatScoreJson("thin-occluder", "reference", "reference", {{"bias", "0"}}, withStats, self));
     CHECK(j["scene"] == "thin-occluder");
     CHECK(j["technique"] == "reference");
+    CHECK(j["reference"] == "reference");
     CHECK(j["settings"]["bias"] == "0");
     CHECK(j["technique_ms"].get<double>() == frame.techniqueMs);
     CHECK(j["stats"]["texels"] == 4096);

@@ -158,9 +158,11 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
     std::string line;
     std::getline(csv, line);
     const std::vector<std::string> header = splitCsvLine(line);
-    REQUIRE(header.size() == 11);   // neither technique reports stats
+    REQUIRE(header.size() == 14);   // neither technique reports stats
     CHECK(header[0] == "technique");
     CHECK(header[8] == "misclassified_percent");
+    CHECK(header[11] == "umbra_lit_percent");
+    CHECK(header[13] == "reference");
     for (const SweepRow& row : results.rows) {
         REQUIRE(std::getline(csv, line));
         const std::vector<std::string> fields = splitCsvLine(line);
@@ -171,6 +173,8 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
         CHECK(std::stod(fields[3]) == doctest::Approx(row.medianMs).epsilon(1e-8));
         CHECK(std::stod(fields[5]) == doctest::Approx(row.errors.rms).epsilon(1e-8));
         CHECK(std::stod(fields[8]) == doctest::Approx(row.errors.percentOfPixels(row.errors.misclassified())).epsilon(1e-8));
+        CHECK(std::stod(fields[11]) == doctest::Approx(row.errors.percentOfPixels(row.errors.umbraLit)).epsilon(1e-8));
+        CHECK(fields[13] == "reference");
     }
     CHECK_FALSE(std::getline(csv, line));
 }
@@ -193,7 +197,7 @@ TEST_CASE("sweep JSON: rows with settings, times and error figures") {
 
 TEST_CASE("sweep SVG: well-formed, one point per row, the Pareto front ringed") {
     const SweepResults& results = sharedSweep();
-    for (PlotErrorAxis axis : {PlotErrorAxis::Misclassified, PlotErrorAxis::Rms}) {
+    for (PlotErrorAxis axis : {PlotErrorAxis::Misclassified, PlotErrorAxis::Rms, PlotErrorAxis::Umbra}) {
         const std::string svg = formatSweepSvg(results, axis);
         CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
         CHECK(wellFormedXml(svg));
@@ -202,6 +206,7 @@ TEST_CASE("sweep SVG: well-formed, one point per row, the Pareto front ringed") 
         CHECK(countOf(svg, "class=\"label\"") == results.rows.size());
     }
     CHECK(parsePlotErrorAxis("rms") == PlotErrorAxis::Rms);
+    CHECK(parsePlotErrorAxis("umbra") == PlotErrorAxis::Umbra);
     CHECK_THROWS_AS(parsePlotErrorAxis("RMS"), std::invalid_argument);
 }
 

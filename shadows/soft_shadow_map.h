@@ -1,0 +1,67 @@
+// The depth map an area light's soft-shadow techniques share (pcss, vsm, esm, evsm, msm):
+// one perspective map drawn from the light's centre (Real-Time Rendering, 4th ed., 7.6:
+// PCSS and the filtered maps "treat the light as a point for the map and widen the filter
+// for its area"), fitted to the visible receivers (light_view.h), plus what they need on
+// top of window depth:
+//
+//   linear depth  the view-space distance d of each texel, and its normalised form
+//                 z = (d - near) / (far - near) in [0, 1], which the filtered maps store
+//                 (RTR 7.7: "z-depths can be generated so that they are linear"). Empty
+//                 texels (window depth 1) get z = 1, the far plane, behind every receiver.
+//   light width   w_light of eq. 7.6 in map texels: the light's extent along the map's
+//                 x and y axes (its support width: for a disk 2 r sqrt(1 - (n.e)^2), for a
+//                 rectangle 2 (|U.e| + |V.e|)), projected at unit distance.
+//
+// Eq. 7.6 gives the sample width on the occluder's plane, w_sample = w_light (d_r - d_o)
+// / d_r (metres); seen from the light's centre at distance d_o it spans w_sample / d_o
+// radians of the map, so in texels w = lightTexels (d_r - d_o) / (d_r d_o). The blocker
+// search region is the same cone cut at the near plane (Fernando 2005, section 3.1:
+// "the search region ... depends on the light size and the distance to the receiver"):
+// the width for d_o = near, which holds every texel an occluder can shadow P from.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raster/tile_kernels.h"
+#include "shading/gbuffer.h"
+#include "shadows/depth_map.h"
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+struct SoftShadowMap {
+    DepthMap map;                      // window depth from the light's centre
+    std::vector<float> linear;         // normalised linear depth z in [0, 1] per texel
+    glm::dvec2 lightTexels{0.0};       // w_light in texels at unit distance, per map axis
+    glm::dvec3 lightCentre{0.0};       // world space, the map's eye
+
+    double zNear() const { return map.view.zNear; }
+    double zFar() const { return map.view.zFar; }
+    // Normalised linear depth of a view-space distance d (metres).
+    double normalised(double distance) const { return (distance - zNear()) / (zFar() - zNear()); }
+    // View-space distance (metres) of a stored window depth.
+    double distanceOf(float windowDepth) const;
+};
+
+// A camera pixel's surface point as the map sees it.
+struct SoftReceiver {
+    glm::dvec2 texel{0.0};             // where it falls, texel units
+    double distance = 0.0;             // d_r: view-space distance from the light's centre, m
+    bool facesLight = false;           // dot(N, centre - P) > 0 (else V = 0, as the reference)
+};
+
+// Throws std::invalid_argument unless the light is a disk or a rectangle. The receivers
+// stay marginTexels inside the map's sides, and with coverBlockerSearch also the widest
+// blocker search region (whose taps would otherwise read clamped border texels).
+SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
+                                  double marginTexels, bool coverBlockerSearch);
+
+SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N);
+
+// Eq. 7.6 in texels per map axis: the width of the light's cone from a receiver at
+// distance dr, on the plane at distance dOccluder (both m, 0 < dOccluder < dr).
+glm::dvec2 sampleWidthTexels(const SoftShadowMap& soft, double dr, double dOccluder);
+
+}  // namespace shadowlab
