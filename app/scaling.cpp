@@ -91,8 +91,14 @@ std::string formatScalingText(const ScalingResults& results) {
         text += line;
     }
     const LineFit& f = results.fit;
-    std::snprintf(line, sizeof line, "fit: t = %.4g + %.4g n ms = %.4g + n / %.6g ms, R^2 = %.6f\n", f.a, f.b, f.a,
-                  1.0 / f.b, f.r2);
+    // n / (1 / b) reads as a triangle rate; it means nothing unless b > 0 (noisy timings
+    // of a technique whose cost hardly grows with n can fit a slope <= 0).
+    if (f.b > 0.0) {
+        std::snprintf(line, sizeof line, "fit: t = %.4g + %.4g n ms = %.4g + n / %.6g ms, R^2 = %.6f\n", f.a, f.b, f.a,
+                      1.0 / f.b, f.r2);
+    } else {
+        std::snprintf(line, sizeof line, "fit: t = %.4g + %.4g n ms (no positive slope), R^2 = %.6f\n", f.a, f.b, f.r2);
+    }
     return text + line;
 }
 
@@ -119,7 +125,7 @@ std::string formatScalingJson(const ScalingResults& results) {
     j["threads"] = results.threads;
     j["fit"] = {{"a_ms", results.fit.a},
                 {"b_ms_per_triangle", results.fit.b},
-                {"triangles_per_ms", 1.0 / results.fit.b},
+                {"triangles_per_ms", results.fit.b > 0.0 ? nlohmann::json(1.0 / results.fit.b) : nlohmann::json(nullptr)},
                 {"r2", results.fit.r2}};
     j["points"] = points;
     return j.dump(2) + "\n";

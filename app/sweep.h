@@ -80,7 +80,7 @@ std::string sweepFileStem(const SweepResults& results);
 std::string formatSweepText(const SweepResults& results);
 // One row per SweepRow. CSV columns: technique, settings, threads, median_ms, min_ms, rms,
 // mean_abs, max_abs, misclassified_percent, false_shadow_percent, false_light_percent,
-// umbra_lit_percent, lit_shadowed_percent, reference, then one column per technique stat
+// umbra_lit_percent, umbra_over_percent, lit_shadowed_percent, reference, then one column per technique stat
 // (empty where a row does not report it).
 std::string formatSweepCsv(const SweepResults& results);
 // CSV helpers shared with `shadowlab scaling`: one RFC 4180 line (fields with a comma,

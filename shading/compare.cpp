@@ -58,6 +58,7 @@ void countUmbraErrors(float ref, float tst, const CompareOptions& options, Error
         ++f.umbraPixels;
         f.umbraLit += tst > options.umbraTolerance;
     }
+    f.umbraOver += tst < options.umbraThreshold && ref > options.umbraTolerance;
     if (ref > 1.0f - options.umbraThreshold) {
         ++f.litPixels;
         f.litShadowed += tst < 1.0f - options.umbraTolerance;
@@ -116,6 +117,8 @@ std::string formatText(const ErrorFigures& f) {
                         "  shadowed in the reference, lit here (leaks)");
     text += formatCount("umbra lit", f.umbraLit, f.percentOfPixels(f.umbraLit),
                         ("  of " + std::to_string(f.umbraPixels) + " umbra pixels in the reference, lit here").c_str());
+    text += formatCount("umbra over", f.umbraOver, f.percentOfPixels(f.umbraOver),
+                        "  umbra here where the reference sees the light (V > 0.1 there)");
     text += formatCount("lit shadowed", f.litShadowed, f.percentOfPixels(f.litShadowed),
                         ("  of " + std::to_string(f.litPixels) + " fully lit pixels in the reference, shadowed here").c_str());
     return text;
@@ -139,6 +142,8 @@ std::string formatJson(const ErrorFigures& f) {
     j["lit_pixels"] = f.litPixels;
     j["umbra_lit"] = f.umbraLit;
     j["umbra_lit_percent"] = f.percentOfPixels(f.umbraLit);
+    j["umbra_over"] = f.umbraOver;
+    j["umbra_over_percent"] = f.percentOfPixels(f.umbraOver);
     j["lit_shadowed"] = f.litShadowed;
     j["lit_shadowed_percent"] = f.percentOfPixels(f.litShadowed);
     j["umbra_errors"] = f.umbraErrors();

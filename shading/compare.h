@@ -22,10 +22,10 @@ struct CompareOptions {
     float litThreshold = 0.5f;
     // |error| mapped to full colour intensity in the heat map.
     float heatMapFullScale = 1.0f;
-    // Umbra errors of soft shadows (conventions.md), symmetric under V -> 1 - V: the
-    // reference's umbra is V < umbraThreshold, its fully lit region V > 1 - umbraThreshold;
-    // the test is wrong in the umbra above umbraTolerance, in the lit region below
-    // 1 - umbraTolerance.
+    // Umbra errors of soft shadows (docs/soft-shadows.md): an umbra is V < umbraThreshold,
+    // a fully lit region V > 1 - umbraThreshold; the test lights the reference's umbra when
+    // above umbraTolerance, over-estimates the umbra where its V < umbraThreshold and the
+    // reference's is above umbraTolerance, and shadows full light below 1 - umbraTolerance.
     float umbraThreshold = 0.02f;
     float umbraTolerance = 0.1f;
 };
@@ -43,13 +43,15 @@ struct ErrorFigures {
     uint64_t falseShadow = 0;    // lit in the reference, shadowed in the test (acne)
     uint64_t falseLight = 0;     // shadowed in the reference, lit in the test (leaks)
     uint64_t misclassified() const { return falseShadow + falseLight; }
-    // Umbra errors (CompareOptions): the reference's umbra and fully lit pixels, and those
-    // of them the test gets grossly wrong: light in the umbra, shadow in full light.
+    // Umbra errors (CompareOptions), the gross errors of soft shadows: light in the
+    // reference's umbra, and the reverse, umbra where the reference sees the light (the
+    // error of smoothies, which over-estimate the umbra); and shadow in full light.
     uint64_t umbraPixels = 0;    // reference V < umbraThreshold
     uint64_t litPixels = 0;      // reference V > 1 - umbraThreshold
     uint64_t umbraLit = 0;       // of umbraPixels, test V > umbraTolerance
+    uint64_t umbraOver = 0;      // test V < umbraThreshold, reference V > umbraTolerance
     uint64_t litShadowed = 0;    // of litPixels, test V < 1 - umbraTolerance
-    uint64_t umbraErrors() const { return umbraLit + litShadowed; }
+    uint64_t umbraErrors() const { return umbraLit + umbraOver; }
     double percentOfPixels(uint64_t count) const {
         return pixels == 0 ? 0.0 : 100.0 * double(count) / double(pixels);
     }
@@ -67,7 +69,8 @@ ErrorFigures compareFiles(const std::filesystem::path& reference, const std::fil
 // {"channel","pixels","rms","mean_abs","max_abs","binary","misclassified",
 //  "misclassified_percent","false_shadow","false_shadow_percent","false_light",
 //  "false_light_percent","umbra_pixels","lit_pixels","umbra_lit","umbra_lit_percent",
-//  "lit_shadowed","lit_shadowed_percent","umbra_errors","umbra_errors_percent"}.
+//  "umbra_over","umbra_over_percent","lit_shadowed","lit_shadowed_percent","umbra_errors",
+//  "umbra_errors_percent"}.
 // Every percentage is of `pixels`, the reference's hit pixels.
 std::string formatText(const ErrorFigures& figures);
 std::string formatJson(const ErrorFigures& figures);

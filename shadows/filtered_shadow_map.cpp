@@ -20,8 +20,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <tbb/parallel_for.h>
-
 #include "shadows/blocker_search.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/moment_filter.h"
@@ -86,32 +84,25 @@ PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& sof
     const GBuffer& g = in.gbuffer;
     const std::vector<glm::dvec2> searchDisk = makePcfKernel({FilterKind::Poisson, 3, s.search.taps, 1.0}).disk;
     PixelBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f)};
-    tbb::parallel_for(0, g.height, [&](int j) {
-        for (int i = 0; i < g.width; ++i) {
-            const size_t k = g.index(i, j);
-            if (!g.hit[k]) continue;
-            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            const SoftReceiver receiver = softReceiver(soft, P, N);
-            if (!receiver.facesLight) continue;
-            glm::dvec2 width(s.widthTexels);
-            if (s.pcssWidth) {
-                const PenumbraEstimate e = estimatePenumbra(soft, planeReceiver(soft, P, N), receiver.distance, s.search,
-                                                            searchDisk, k);
-                if (e.blockers == 0) {
-                    out.visibility[k] = 1.0f;
-                    continue;
-                }
-                width = e.widthTexels;
+    forEachReceiverFacingLight(g, soft, [&](size_t k, const glm::dvec3& P, const glm::dvec3& N, const SoftReceiver& receiver) {
+        glm::dvec2 width(s.widthTexels);
+        if (s.pcssWidth) {
+            const PenumbraEstimate e =
+                estimatePenumbra(soft, planeReceiver(soft, P, N), receiver.distance, s.search, searchDisk, k);
+            if (e.blockers == 0) {
+                out.visibility[k] = 1.0f;
+                return;
             }
-            double m[kMaxMoments];
-            if (s.summedAreaTable) {
-                boxMean(table, receiver.texel - 0.5 * width, receiver.texel + 0.5 * width, m);
-            } else {
-                sampleBilinear(blurred, receiver.texel, m);
-            }
-            out.visibility[k] = float(momentVisibility(s.moments, m, soft.normalised(receiver.distance)));
-            out.widthTexels[k] = float(0.5 * (width.x + width.y));
+            width = e.widthTexels;
         }
+        double m[kMaxMoments];
+        if (s.summedAreaTable) {
+            boxMean(table, receiver.texel - 0.5 * width, receiver.texel + 0.5 * width, m);
+        } else {
+            sampleBilinear(blurred, receiver.texel, m);
+        }
+        out.visibility[k] = float(momentVisibility(s.moments, m, soft.normalised(receiver.distance)));
+        out.widthTexels[k] = float(0.5 * (width.x + width.y));
     });
     return out;
 }
@@ -187,7 +178,7 @@ Technique filteredShadowMapTechnique(MomentKind kind) {
         "moment shadow map (Peters and Klein 2015): four moments, Hamburger reconstruction",
     };
     return {momentKindName(kind), descriptions[int(kind)], params,
-            [kind](const ShadowInputs& in) { return runFiltered(kind, in); }, "reference-soft"};
+            [kind](const ShadowInputs& in) { return runFiltered(kind, in); }};
 }
 
 }  // namespace shadowlab

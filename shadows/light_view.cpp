@@ -8,6 +8,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
 
+#include "shading/lights.h"
+
 namespace shadowlab {
 namespace {
 
@@ -26,10 +28,16 @@ struct Bounds {
     double nearest = kInfinity, farthest = 0.0;
 };
 
-Bounds receiverBounds(const GBuffer& g, const glm::dmat4& viewFromWorld, bool orthographic) {
+// The pixels the map must serve: every surface, except that a spot light's map serves only
+// its cone (outside it V = 0 without a lookup, as in the reference).
+bool served(const Light& light, const GBuffer& g, size_t k) {
+    return g.hit[k] && (light.type != LightType::Spot || insideSpotCone(light, g.position[k]));
+}
+
+Bounds receiverBounds(const Light& light, const GBuffer& g, const glm::dmat4& viewFromWorld, bool orthographic) {
     Bounds b;
     for (size_t k = 0; k < g.pixelCount(); ++k) {
-        if (!g.hit[k]) continue;
+        if (!served(light, g, k)) continue;
         const glm::dvec3 q = glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(g.position[k]), 1.0));
         const double depth = -q.z;
         if (!orthographic && !(depth > 0.0)) {
@@ -110,11 +118,12 @@ void fitDepthRange(LightView& view, const Bounds& b, const WorldGeometry& world,
     view.zNear = zNear;
 }
 
-LightView perspectiveView(const glm::dvec3& apex, const glm::dvec3& axis, const GBuffer& g, const WorldGeometry& world,
+LightView perspectiveView(const Light& light, const glm::dvec3& axis, const GBuffer& g, const WorldGeometry& world,
                           const LightFitOptions& o) {
     LightView view;
+    const glm::dvec3 apex(light.position);
     view.viewFromWorld = glm::lookAtRH(apex, apex + axis, anyPerpendicular(axis));
-    Bounds b = receiverBounds(g, view.viewFromWorld, false);
+    Bounds b = receiverBounds(light, g, view.viewFromWorld, false);
     widen(b, o);
     fitDepthRange(view, b, world, o);
     const double n = view.zNear;
@@ -134,19 +143,18 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
         // sides around them.
         glm::dvec3 lo(kInfinity), hi(-kInfinity);
         for (size_t k = 0; k < receivers.pixelCount(); ++k) {
-            if (receivers.hit[k]) lo = glm::min(lo, glm::dvec3(receivers.position[k])), hi = glm::max(hi, glm::dvec3(receivers.position[k]));
+            if (served(light, receivers, k)) lo = glm::min(lo, glm::dvec3(receivers.position[k])), hi = glm::max(hi, glm::dvec3(receivers.position[k]));
         }
-        if (lo.x > hi.x) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
-        const glm::dvec3 apex(light.position);
-        const glm::dvec3 axis = options.axis != glm::dvec3(0.0) ? options.axis : 0.5 * (lo + hi) - apex;
-        return perspectiveView(apex, glm::normalize(axis), receivers, world, options);
+        if (lo.x > hi.x) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1, or none in the spot's cone)");
+        const glm::dvec3 axis = options.axis != glm::dvec3(0.0) ? options.axis : 0.5 * (lo + hi) - glm::dvec3(light.position);
+        return perspectiveView(light, glm::normalize(axis), receivers, world, options);
     }
     LightView view;
     view.orthographic = true;
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(light.direction));
     // The eye sits anywhere on the light's side; depths are then measured from it.
     view.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, anyPerpendicular(towardsLight));
-    Bounds b = receiverBounds(receivers, view.viewFromWorld, true);
+    Bounds b = receiverBounds(light, receivers, view.viewFromWorld, true);
     widen(b, options);
     b.farthest = -kInfinity;
     for (size_t k = 0; k < receivers.pixelCount(); ++k) {

@@ -96,7 +96,7 @@ Technique multiSampleTechnique() {
             "average of N hard shadow maps from stratified points on the area light (Heckbert and Herf 1997)",
             {{"resolution", kSoftResolutionDefault, "texels per side of each map (16..8192)"},
              {"samples", "64", "N light points, a square (1..4096): the level of detail"}},
-            runMultiSample, "reference-soft"};
+            runMultiSample};
 }
 
 }  // namespace shadowlab

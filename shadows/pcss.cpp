@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include <tbb/parallel_for.h>
-
 #include "shadows/blocker_search.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/pcf.h"
@@ -36,24 +34,17 @@ PcssBuffers runPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const
     const std::vector<glm::dvec2> filterDisk = makePcfKernel({FilterKind::Poisson, 3, filterTaps, 1.0}).disk;
     PcssBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f),
                     std::vector<float>(g.pixelCount(), 0.0f)};
-    tbb::parallel_for(0, g.height, [&](int j) {
-        for (int i = 0; i < g.width; ++i) {
-            const size_t k = g.index(i, j);
-            if (!g.hit[k]) continue;
-            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            const SoftReceiver receiver = softReceiver(soft, P, N);
-            if (!receiver.facesLight) continue;
-            const MapReceiver r = planeReceiver(soft, P, N);
-            const PenumbraEstimate e = estimatePenumbra(soft, r, receiver.distance, search, searchDisk, k);
-            if (e.blockers == 0) {
-                out.visibility[k] = 1.0f;
-                continue;
-            }
-            const glm::dvec2 radius = glm::max(0.5 * e.widthTexels, glm::dvec2(kMinFilterRadiusTexels));
-            out.visibility[k] = float(poissonVisibility(soft.map, r, filterDisk, k, radius));
-            out.blockerDistance[k] = float(e.blockerDistance);
-            out.widthTexels[k] = float(0.5 * (e.widthTexels.x + e.widthTexels.y));
+    forEachReceiverFacingLight(g, soft, [&](size_t k, const glm::dvec3& P, const glm::dvec3& N, const SoftReceiver& receiver) {
+        const MapReceiver r = planeReceiver(soft, P, N);
+        const PenumbraEstimate e = estimatePenumbra(soft, r, receiver.distance, search, searchDisk, k);
+        if (e.blockers == 0) {
+            out.visibility[k] = 1.0f;
+            return;
         }
+        const glm::dvec2 radius = glm::max(0.5 * e.widthTexels, glm::dvec2(kMinFilterRadiusTexels));
+        out.visibility[k] = float(poissonVisibility(soft.map, r, filterDisk, k, radius));
+        out.blockerDistance[k] = float(e.blockerDistance);
+        out.widthTexels[k] = float(0.5 * (e.widthTexels.x + e.widthTexels.y));
     });
     return out;
 }
@@ -100,7 +91,7 @@ Technique pcssTechnique() {
     params.push_back({"filter-taps", "32", "PCF: Poisson taps over the eq. 7.6 width (1..128)"});
     return {"pcss",
             "percentage-closer soft shadows (RTR 7.6, Fernando 2005): blocker search, eq. 7.6 width, Poisson PCF",
-            params, runPcss, "reference-soft"};
+            params, runPcss};
 }
 
 }  // namespace shadowlab

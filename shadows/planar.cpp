@@ -13,8 +13,8 @@
 //      fragment at a pixel blends and lifts the stencil to 1, so overlapping projected
 //      triangles never darken a pixel twice (RTR 7.2, "to avoid double blending").
 //
-// V = 0 where the stencil is 1 (a receiver pixel the projected shadow covers), 1 on every
-// other surface. Known failure modes, kept visible on purpose and asserted by the tests:
+// V = 0 where the stencil is 1 (a receiver pixel the projected shadow covers) and outside
+// a spot light's cone, 1 on every other surface. Known failure modes, kept visible on purpose and asserted by the tests:
 //   - no self-shadowing and no shadows on non-planar receivers: the sphere's unlit side
 //     and the box's shadow on the sphere get V = 1 (the image still darkens the unlit side
 //     through its N.L factor; the V buffer does not);
@@ -30,6 +30,7 @@
 
 #include "raster/rasterizer.h"
 #include "scenes/camera.h"
+#include "shading/lights.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/silhouette.h"
 #include "shadows/volume_extrusion.h"
@@ -141,7 +142,9 @@ ShadowOutputs run(const ShadowInputs& in) {
     double receiverPixels = 0, shadowed = 0;
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         out.stencil[k] = float(stencil[k]);
-        out.visibility[k] = g.hit[k] && stencil[k] != kShadowed ? 1.0f : 0.0f;
+        // Outside a spot's cone no light arrives (the V convention), shadow or not.
+        const bool inCone = in.light.type != LightType::Spot || insideSpotCone(in.light, g.position[k]);
+        out.visibility[k] = g.hit[k] && inCone && stencil[k] != kShadowed ? 1.0f : 0.0f;
         receiverPixels += stencil[k] != kNoReceiver;
         shadowed += stencil[k] == kShadowed;
     }

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <tbb/parallel_for.h>
 
 #include "raster/tile_kernels.h"
 #include "shading/gbuffer.h"
@@ -59,6 +60,22 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
                                   double marginTexels, bool coverBlockerSearch);
 
 SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N);
+
+// Calls perPixel(k, P, N, receiver) for every camera pixel k whose surface faces the light's
+// centre (the others keep V = 0), rows in parallel. Each call writes only pixel k's
+// outputs, so the results are the same for any thread count.
+template <class PerPixel>
+void forEachReceiverFacingLight(const GBuffer& g, const SoftShadowMap& soft, PerPixel perPixel) {
+    tbb::parallel_for(0, g.height, [&](int j) {
+        for (int i = 0; i < g.width; ++i) {
+            const size_t k = g.index(i, j);
+            if (!g.hit[k]) continue;
+            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
+            const SoftReceiver receiver = softReceiver(soft, P, N);
+            if (receiver.facesLight) perPixel(k, P, N, receiver);
+        }
+    });
+}
 
 // Eq. 7.6 in texels per map axis: the width of the light's cone from a receiver at
 // distance dr, on the plane at distance dOccluder (both m, 0 < dOccluder < dr).

@@ -10,19 +10,12 @@
 #include "app/score.h"
 #include "scenes/scene_file.h"
 #include "shading/tonemap.h"
+#include "../shading/visibility_row.h"
 
 using namespace shadowlab;
+using shadowlab::test::visibilityRow;
 
 namespace {
-
-ImageChannels visibility(std::vector<float> hit, std::vector<float> v) {
-    ImageChannels image;
-    image.width = int(hit.size());
-    image.height = 1;
-    image.set(channel::hit, std::move(hit));
-    image.set(channel::V, std::move(v));
-    return image;
-}
 
 std::array<uint8_t, 3> pixel(const std::vector<uint8_t>& rgb, size_t k) {
     return {rgb[3 * k], rgb[3 * k + 1], rgb[3 * k + 2]};
@@ -33,8 +26,8 @@ std::array<uint8_t, 3> pixel(const std::vector<uint8_t>& rgb, size_t k) {
 TEST_CASE("error map: red false shadow, blue false light, dimmed grey elsewhere") {
     // Pixels: false shadow; false light; both lit; both shadowed; background where the
     // test claims light (not scored); lit with a partial V above the threshold.
-    const ImageChannels reference = visibility({1, 1, 1, 1, 0, 1}, {1, 0, 1, 0, 0, 1});
-    const ImageChannels test = visibility({1, 1, 1, 1, 0, 1}, {0, 1, 1, 0, 1, 0.75f});
+    const ImageChannels reference = visibilityRow({1, 1, 1, 1, 0, 1}, {1, 0, 1, 0, 0, 1});
+    const ImageChannels test = visibilityRow({1, 1, 1, 1, 0, 1}, {0, 1, 1, 0, 1, 0.75f});
     // Radiance 3 in every channel: Reinhard maps luminance 3 to 3 / (1 + 3) = 0.75.
     const std::vector<glm::vec3> shaded(6, glm::vec3(3.0f));
     const std::vector<uint8_t> rgb = errorMapImage(reference, test, shaded);
@@ -48,8 +41,8 @@ TEST_CASE("error map: red false shadow, blue false light, dimmed grey elsewhere"
 }
 
 TEST_CASE("error map: the counts agree with compareImages, sizes must match") {
-    const ImageChannels reference = visibility({1, 1, 1}, {1, 0, 0});
-    const ImageChannels test = visibility({1, 1, 1}, {0, 1, 1});
+    const ImageChannels reference = visibilityRow({1, 1, 1}, {1, 0, 0});
+    const ImageChannels test = visibilityRow({1, 1, 1}, {0, 1, 1});
     const ErrorFigures figures = compareImages(reference, test);
     const std::vector<uint8_t> rgb = errorMapImage(reference, test, std::vector<glm::vec3>(3));
     size_t red = 0, blue = 0;

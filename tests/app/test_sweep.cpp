@@ -158,11 +158,12 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
     std::string line;
     std::getline(csv, line);
     const std::vector<std::string> header = splitCsvLine(line);
-    REQUIRE(header.size() == 14);   // neither technique reports stats
+    REQUIRE(header.size() == 15);   // neither technique reports stats
     CHECK(header[0] == "technique");
     CHECK(header[8] == "misclassified_percent");
     CHECK(header[11] == "umbra_lit_percent");
-    CHECK(header[13] == "reference");
+    CHECK(header[12] == "umbra_over_percent");
+    CHECK(header[14] == "reference");
     for (const SweepRow& row : results.rows) {
         REQUIRE(std::getline(csv, line));
         const std::vector<std::string> fields = splitCsvLine(line);
@@ -174,7 +175,7 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
         CHECK(std::stod(fields[5]) == doctest::Approx(row.errors.rms).epsilon(1e-8));
         CHECK(std::stod(fields[8]) == doctest::Approx(row.errors.percentOfPixels(row.errors.misclassified())).epsilon(1e-8));
         CHECK(std::stod(fields[11]) == doctest::Approx(row.errors.percentOfPixels(row.errors.umbraLit)).epsilon(1e-8));
-        CHECK(fields[13] == "reference");
+        CHECK(fields[14] == "reference");
     }
     CHECK_FALSE(std::getline(csv, line));
 }

@@ -13,37 +13,22 @@
 
 #include "scenes/camera.h"
 #include "scenes/scene_file.h"
+#include "instance_bounds.h"
 
 using namespace shadowlab;
+using shadowlab::test::Box;
+using shadowlab::test::instanceBounds;
 
 namespace {
 
 const std::vector<std::string> kHardCases = {
     "camera-in-shadow", "coincident-faces", "grazing-light", "huge-depth-range", "light-close",
-    "near-plane-cuts-volume", "open-mesh", "point-light-inside", "sphere-terminator", "sun",
+    "near-plane-cuts-volume", "open-mesh", "point-light-inside", "sphere-terminator", "spot", "sun",
     "thin-occluder"};
 
 // Hard cases are not built-in scenes: they load by path (docs/hard-cases.md).
 Scene loadHardCase(const std::string& name) {
     return loadScene(builtinSceneDir() + "/hard/" + name + ".json");
-}
-
-struct Box {
-    glm::vec3 lo{INFINITY}, hi{-INFINITY};
-};
-
-// World-space bounds of the instance called name.
-Box instanceBounds(const Scene& scene, const WorldGeometry& world, const std::string& name) {
-    Box box;
-    for (size_t t = 0; t < world.triangles.size(); ++t) {
-        if (scene.instances[world.triangleInstance[t]].name != name) continue;
-        for (int c = 0; c < 3; ++c) {
-            box.lo = glm::min(box.lo, world.positions[world.triangles[t][c]]);
-            box.hi = glm::max(box.hi, world.positions[world.triangles[t][c]]);
-        }
-    }
-    REQUIRE(box.lo.x <= box.hi.x);
-    return box;
 }
 
 // Slab test: does the segment from a to b pass through the inside of box?
@@ -276,4 +261,21 @@ TEST_CASE("sun: sphere-box under a directional light from normalize(4, 8, 3)") {
     const Scene sphereBox = loadScene("sphere-box");
     CHECK(scene.instances.size() == sphereBox.instances.size());
     CHECK(flatten(scene).positions == flatten(sphereBox).positions);
+}
+
+TEST_CASE("spot: sphere-box under a 20 degree spot whose rim crosses the visible ground") {
+    const Scene scene = loadHardCase("spot");
+    REQUIRE(scene.lights.size() == 1);
+    const Light& spot = scene.lights[0];
+    CHECK(spot.type == LightType::Spot);
+    CHECK(spot.coneAngleDeg == 20.0f);
+    const auto degreesOffAxis = [&](glm::dvec3 p) {
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(spot.direction)), to = glm::normalize(p - glm::dvec3(spot.position));
+        return glm::degrees(std::acos(glm::dot(axis, to)));
+    };
+    CHECK(degreesOffAxis({0.0, 0.0, 0.0}) < 1e-6);      // aimed at the sphere's foot
+    CHECK(degreesOffAxis({0.0, 2.2, 0.0}) < 20.0);      // the sphere's top is lit
+    CHECK(degreesOffAxis({-6.0, 0.0, 0.0}) > 20.0);     // ground outside the cone
+    CHECK(inFrustum(scene.camera, glm::dvec3(-6.0, 0.0, 0.0)));      // ... that the camera sees
+    CHECK(flatten(scene).positions == flatten(loadScene("sphere-box")).positions);
 }

@@ -9,30 +9,15 @@
 #include <glm/glm.hpp>
 
 #include "scenes/scene_file.h"
+#include "instance_bounds.h"
 
 using namespace shadowlab;
+using shadowlab::test::Box;
+using shadowlab::test::instanceBounds;
 
 namespace {
 
 Scene loadSoftCase(const std::string& name) { return loadScene(builtinSceneDir() + "/soft/" + name + ".json"); }
-
-struct Box {
-    glm::vec3 lo{INFINITY}, hi{-INFINITY};
-};
-
-// World-space bounds of the instance called name.
-Box instanceBounds(const Scene& scene, const WorldGeometry& world, const std::string& name) {
-    Box box;
-    for (size_t t = 0; t < world.triangles.size(); ++t) {
-        if (scene.instances[world.triangleInstance[t]].name != name) continue;
-        for (int c = 0; c < 3; ++c) {
-            box.lo = glm::min(box.lo, world.positions[world.triangles[t][c]]);
-            box.hi = glm::max(box.hi, world.positions[world.triangles[t][c]]);
-        }
-    }
-    REQUIRE(box.lo.x <= box.hi.x);
-    return box;
-}
 
 // Unit normal of the first triangle of the instance called name.
 glm::vec3 firstNormal(const Scene& scene, const WorldGeometry& world, const std::string& name) {

@@ -9,19 +9,12 @@
 #include <nlohmann/json.hpp>
 
 #include "shading/compare.h"
+#include "visibility_row.h"
 
 using namespace shadowlab;
+using shadowlab::test::visibilityRow;
 
 namespace {
-
-ImageChannels visibility(std::vector<float> hit, std::vector<float> v) {
-    ImageChannels image;
-    image.width = int(hit.size());
-    image.height = 1;
-    image.set(channel::hit, std::move(hit));
-    image.set(channel::V, std::move(v));
-    return image;
-}
 
 std::vector<float> mirrored(std::vector<float> v) {
     for (float& x : v) x = 1.0f - x;
@@ -33,9 +26,9 @@ std::vector<float> mirrored(std::vector<float> v) {
 TEST_CASE("umbra errors: counts at and around the thresholds") {
     // Reference umbra: 0, 0.01, 0.019 (0.02 itself is not umbra); fully lit: 0.99, 1, 1
     // (0.98 is not). The last pixel is background and not scored.
-    const ImageChannels reference = visibility({1, 1, 1, 1, 1, 1, 1, 1, 1, 0},
+    const ImageChannels reference = visibilityRow({1, 1, 1, 1, 1, 1, 1, 1, 1, 0},
                                                {0, 0.01f, 0.019f, 0.02f, 0.5f, 0.98f, 0.99f, 1, 1, 0});
-    const ImageChannels test = visibility({1, 1, 1, 1, 1, 1, 1, 1, 1, 1},
+    const ImageChannels test = visibilityRow({1, 1, 1, 1, 1, 1, 1, 1, 1, 1},
                                           {0.1f, 0.11f, 1, 1, 0.5f, 0, 0.9f, 0.89f, 1, 1});
     const ErrorFigures f = compareImages(reference, test);
     CHECK(f.pixels == 9);
@@ -43,7 +36,8 @@ TEST_CASE("umbra errors: counts at and around the thresholds") {
     CHECK(f.umbraLit == 2);      // 0.11 and 1; 0.1 is not above the tolerance
     CHECK(f.litPixels == 3);
     CHECK(f.litShadowed == 1);   // 0.89; 0.9 is not below 1 - tolerance
-    CHECK(f.umbraErrors() == 3);
+    CHECK(f.umbraOver == 1);     // the test's 0 where the reference has 0.98
+    CHECK(f.umbraErrors() == f.umbraLit + f.umbraOver);
     CHECK(f.percentOfPixels(f.umbraLit) == doctest::Approx(200.0 / 9.0));
 
     const nlohmann::json j = nlohmann::json::parse(formatJson(f));
@@ -51,20 +45,33 @@ TEST_CASE("umbra errors: counts at and around the thresholds") {
     CHECK(j["lit_pixels"] == 3);
     CHECK(j["umbra_lit"] == 2);
     CHECK(j["lit_shadowed"] == 1);
+    CHECK(j["umbra_over"] == 1);
     CHECK(j["umbra_errors"] == 3);
     CHECK(j["lit_shadowed_percent"].get<double>() == doctest::Approx(100.0 / 9.0));
     const std::string text = formatText(f);
     CHECK(text.find("umbra lit") != std::string::npos);
     CHECK(text.find("of 3 umbra pixels") != std::string::npos);
     CHECK(text.find("lit shadowed") != std::string::npos);
+    CHECK(text.find("umbra over") != std::string::npos);
+}
+
+TEST_CASE("umbra over-estimated: the test's umbra where the reference sees more than the tolerance") {
+    // Reference 0.5, 0.11, 0.1, 0.5, 0.01; test 0, 0.019, 0, 0.02, 0: only the first two
+    // count (0.1 is not above the tolerance, 0.02 is not umbra, 0.01 is umbra in both).
+    const std::vector<float> hit(5, 1.0f);
+    const ErrorFigures f =
+        compareImages(visibilityRow(hit, {0.5f, 0.11f, 0.1f, 0.5f, 0.01f}), visibilityRow(hit, {0, 0.019f, 0, 0.02f, 0}));
+    CHECK(f.umbraOver == 2);
+    CHECK(f.umbraLit == 0);
+    CHECK(f.umbraErrors() == 2);
 }
 
 TEST_CASE("umbra errors: the two directions swap when V is mirrored") {
     const std::vector<float> hit(6, 1.0f);
     const std::vector<float> referenceV = {0, 0, 0.005f, 1, 1, 0.5f};
     const std::vector<float> testV = {0.3f, 0.05f, 0.5f, 0.2f, 1, 0.7f};
-    const ErrorFigures f = compareImages(visibility(hit, referenceV), visibility(hit, testV));
-    const ErrorFigures m = compareImages(visibility(hit, mirrored(referenceV)), visibility(hit, mirrored(testV)));
+    const ErrorFigures f = compareImages(visibilityRow(hit, referenceV), visibilityRow(hit, testV));
+    const ErrorFigures m = compareImages(visibilityRow(hit, mirrored(referenceV)), visibilityRow(hit, mirrored(testV)));
     CHECK(f.umbraLit == 2);
     CHECK(f.litShadowed == 1);
     CHECK(m.umbraPixels == f.litPixels);
@@ -75,10 +82,11 @@ TEST_CASE("umbra errors: the two directions swap when V is mirrored") {
 
 TEST_CASE("umbra errors: on hard shadows they are false light and false shadow") {
     const std::vector<float> hit(6, 1.0f);
-    const ErrorFigures f = compareImages(visibility(hit, {0, 0, 1, 1, 0, 1}), visibility(hit, {1, 0, 0, 1, 1, 0}));
+    const ErrorFigures f = compareImages(visibilityRow(hit, {0, 0, 1, 1, 0, 1}), visibilityRow(hit, {1, 0, 0, 1, 1, 0}));
     REQUIRE(f.binary);
     CHECK(f.umbraLit == f.falseLight);
     CHECK(f.litShadowed == f.falseShadow);
+    CHECK(f.umbraOver == f.falseShadow);
     CHECK(f.umbraLit == 2);
     CHECK(f.litShadowed == 2);
 }

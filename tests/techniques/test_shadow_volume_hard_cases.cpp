@@ -40,7 +40,7 @@ TEST_CASE("shadow-volume hard cases within the bound") {
     // point-light-inside: the room's walls are open grids facing the light; their volumes
     // lie outside the room. coincident-faces: the quads' caps coincide with the ground's.
     for (const char* name : {"coincident-faces", "grazing-light", "light-close", "open-mesh", "point-light-inside",
-                             "sphere-terminator", "sun", "thin-occluder"}) {
+                             "sphere-terminator", "spot", "sun", "thin-occluder"}) {
         const test::PreparedScene s(test::hardCase(name));
         for (const char* mode : {"auto", "zfail"}) {
             test::requireBound(s, s.run("shadow-volume", {{"mode", mode}}), std::string(name) + ", mode=" + mode);

@@ -1,0 +1,37 @@
+#!/usr/bin/env python3
+"""Turns the CSV rows of `shadowlab sweep` into the README's markdown table: one row per
+technique and settings, the median ms at each thread count side by side, and the error
+figures (the same at every thread count; the first row's are shown).
+
+usage: scripts/sweep_table.py SWEEP.csv [hard|soft]"""
+import csv
+import sys
+
+HARD = [("misclassified %", "misclassified_percent", 3), ("false shadow %", "false_shadow_percent", 3),
+        ("false light %", "false_light_percent", 3), ("RMS", "rms", 4)]
+SOFT = [("RMS", "rms", 4), ("max", "max_abs", 2), ("umbra lit %", "umbra_lit_percent", 3),
+        ("lit shadowed %", "lit_shadowed_percent", 3)]
+
+
+def main(path, kind):
+    rows = list(csv.DictReader(open(path)))
+    threads = sorted({int(r["threads"]) for r in rows})
+    keyed = {}
+    for r in rows:
+        keyed.setdefault((r["technique"], r["settings"]), {})[int(r["threads"])] = r
+    columns = HARD if kind == "hard" else SOFT
+    show_settings = any(s != "defaults" for _, s in keyed)
+    head = ["technique"] + (["settings"] if show_settings else []) + [f"ms, {t} thr." for t in threads]
+    head += [c[0] for c in columns]
+    print("| " + " | ".join(head) + " |")
+    print("| --- " * (1 + show_settings) + "| ---: " * (len(head) - 1 - show_settings) + "|")
+    for (technique, settings), by_threads in keyed.items():
+        first = by_threads[min(by_threads)]
+        cells = [technique] + ([settings] if show_settings else [])
+        cells += [f"{float(by_threads[t]['median_ms']):.1f}" if t in by_threads else "" for t in threads]
+        cells += [f"{float(first[key]):.{digits}f}" for _, key, digits in columns]
+        print("| " + " | ".join(cells) + " |")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "hard")
