@@ -7,11 +7,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
-#include <tbb/global_control.h>
 
 #include "app/render.h"
 #include "app/timing.h"
 #include "raster/rasterizer.h"
+#include "raster/thread_count.h"
 #include "scenes/camera.h"
 #include "scenes/scene_file.h"
 #include "shadows/reference.h"
@@ -85,17 +85,18 @@ BenchResults runBench(const BenchOptions& options) {
         const Scene scene = loadScene(name);
         const WorldGeometry world = flatten(scene);
         for (int threads : options.threads) {
-            tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-            PassTiming light = timeDepthPass(options, world, lightClipFromWorld(scene), 2048, 2048);
-            light.scene = name, light.pass = "light 2048x2048", light.threads = threads;
-            results.passes.push_back(light);
-            PassTiming camera = timeDepthPass(options, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
-            camera.scene = name, camera.threads = threads;
-            camera.pass = "camera " + std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height);
-            results.passes.push_back(camera);
-            RayTiming rays = timeReference(options, scene, world);
-            rays.threads = threads;
-            results.rays.push_back(rays);
+            withThreads(threads, [&] {
+                PassTiming light = timeDepthPass(options, world, lightClipFromWorld(scene), 2048, 2048);
+                light.scene = name, light.pass = "light 2048x2048", light.threads = threads;
+                results.passes.push_back(light);
+                PassTiming camera = timeDepthPass(options, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
+                camera.scene = name, camera.threads = threads;
+                camera.pass = "camera " + std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height);
+                results.passes.push_back(camera);
+                RayTiming rays = timeReference(options, scene, world);
+                rays.threads = threads;
+                results.rays.push_back(rays);
+            });
         }
     }
     return results;

@@ -4,13 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <tbb/global_control.h>
 
 #include "app/bench_passes.h"
 #include "app/render.h"
@@ -19,6 +17,7 @@
 #include "app/score.h"
 #include "app/sweep.h"
 #include "app/sweep_plot.h"
+#include "raster/thread_count.h"
 #include "scenes/obj_writer.h"
 #include "scenes/scene_file.h"
 #include "shading/compare.h"
@@ -54,11 +53,6 @@ void addLightOptions(CLI::App* cmd, SceneOverrides& overrides) {
     cmd->add_option("--light-radius", overrides.lightRadius, "radius of the scene's first light, which must be a disk (m, > 0)");
 }
 
-std::unique_ptr<tbb::global_control> limitThreads(int threads) {
-    if (threads <= 0) return nullptr;
-    return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(threads));
-}
-
 struct RenderArgs {
     std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json, reference;
     std::vector<std::string> params;
@@ -85,7 +79,6 @@ void writeErrorMap(const RenderArgs& a, const Scene& scene, const WorldGeometry&
 void runRender(const RenderArgs& a) {
     if (a.png.empty() && a.aov.empty() && a.errorMap.empty())
         throw std::invalid_argument("render: give -o OUT.png, --aov OUT.exr and/or --error-map OUT.png");
-    const auto threads = limitThreads(a.threads);
     Scene scene = loadScene(a.scene);
     applyOverrides(scene, a.overrides);
     const WorldGeometry world = flatten(scene);
@@ -197,7 +190,7 @@ int main(int argc, char** argv) {
         "also render the exact reference; PNG of false shadow (red) and false light (blue) over the dimmed image");
     r->add_option("--json", render.json, "with --error-map: error figures, technique stats and time as JSON")->needs(errorMap);
     r->add_option("--reference", render.reference, "with --error-map: the technique to score against (default: the one the technique names, reference or reference-soft)")->needs(errorMap);
-    r->callback([&] { runRender(render); });
+    r->callback([&] { withThreads(render.threads, [&] { runRender(render); }); });
 
     SweepArgs sweep;
     CLI::App* s = app.add_subcommand("sweep", "speed against error over a grid of technique settings (CSV, JSON, SVG plot)");

@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
-#include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 
 namespace shadowlab {
@@ -53,29 +53,30 @@ ScalingResults runScaling(const ScalingOptions& options) {
     if (options.scenes.size() < 2) throw std::invalid_argument("scaling: give at least two scenes");
     if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("scaling: runs must be >= 1, warm-up runs >= 0");
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-    const FrameSettings settings{options.simd, options.params, {}};
-    // Every scene loaded and rendered once first: a bad file or setting fails before the long part.
-    std::vector<LoadedScene> scenes;
-    std::vector<double> triangles;
-    for (const std::string& name : options.scenes) {
-        Scene scene = loadScene(name);
-        WorldGeometry world = flatten(scene);
-        renderFrame(scene, world, *options.technique, settings);
-        triangles.push_back(double(world.triangles.size()));
-        scenes.push_back({std::move(scene), std::move(world)});
-    }
-    if (std::set<double>(triangles.begin(), triangles.end()).size() < 2)
-        throw std::invalid_argument("scaling: the scenes need at least two different triangle counts");
-    ScalingResults results{options.technique->name, threads, {}, {}};
-    std::vector<double> ms;
-    for (const LoadedScene& s : scenes) {
-        const Timing t = timeFrames(s.scene, s.world, *options.technique, settings, options.warmupRuns, options.runs).timing;
-        results.points.push_back({s.scene.name, uint64_t(s.world.triangles.size()), t.medianMs, t.minMs});
-        ms.push_back(t.medianMs);
-    }
-    results.fit = fitLine(triangles, ms);
-    return results;
+    return withThreads(threads, [&] {
+        const FrameSettings settings{options.simd, options.params, {}};
+        // Every scene loaded and rendered once first: a bad file or setting fails before the long part.
+        std::vector<LoadedScene> scenes;
+        std::vector<double> triangles;
+        for (const std::string& name : options.scenes) {
+            Scene scene = loadScene(name);
+            WorldGeometry world = flatten(scene);
+            renderFrame(scene, world, *options.technique, settings);
+            triangles.push_back(double(world.triangles.size()));
+            scenes.push_back({std::move(scene), std::move(world)});
+        }
+        if (std::set<double>(triangles.begin(), triangles.end()).size() < 2)
+            throw std::invalid_argument("scaling: the scenes need at least two different triangle counts");
+        ScalingResults results{options.technique->name, threads, {}, {}};
+        std::vector<double> ms;
+        for (const LoadedScene& s : scenes) {
+            const Timing t = timeFrames(s.scene, s.world, *options.technique, settings, options.warmupRuns, options.runs).timing;
+            results.points.push_back({s.scene.name, uint64_t(s.world.triangles.size()), t.medianMs, t.minMs});
+            ms.push_back(t.medianMs);
+        }
+        results.fit = fitLine(triangles, ms);
+        return results;
+    });
 }
 
 std::string scalingFileStem(const ScalingResults& results) { return "scaling-" + results.technique; }

@@ -8,11 +8,11 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
-#include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include "app/render.h"
 #include "app/score.h"
+#include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 
 namespace shadowlab {
@@ -191,9 +191,10 @@ SweepResults runSweep(const SweepOptions& options) {
     for (const SweepPlan& plan : plans) {
         for (const Settings& settings : plan.settings) {
             for (int n : threads) {
-                const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(n));
-                SweepRow row = measure(scene, world, references.at(referenceFor(*plan.technique, options)), *plan.technique,
-                                       {options.simd, settings, {}}, options);
+                SweepRow row = withThreads(n, [&] {
+                    return measure(scene, world, references.at(referenceFor(*plan.technique, options)), *plan.technique,
+                                   {options.simd, settings, {}}, options);
+                });
                 row.threads = n;
                 results.rows.push_back(std::move(row));
             }

@@ -6,8 +6,10 @@
 
 namespace shadowlab::raster {
 
-// Rasterizes one triangle into one tile. tileIndex is row-major over tiles.
-using TileKernel = void (*)(const TriangleSetup&, int tileIndex, const DrawConstants&, const FramebufferView&);
+// Rasterizes one triangle into one tile. tileIndex is row-major over tiles. Adds the
+// number of covered pixels (fragments, before any test) to `fragments`.
+using TileKernel = void (*)(const TriangleSetup&, int tileIndex, const DrawConstants&, const FramebufferView&,
+                            uint64_t& fragments);
 
 inline constexpr int kFragmentOutputCount = 4;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -150,15 +151,20 @@ void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& vie
     });
 }
 
-void Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel) const {
+// Returns the fragments rasterized, summed over tiles in tile order.
+uint64_t Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel) {
     const FramebufferView view = framebuffer.view();
     const int tileCount = framebuffer.tilesX() * framebuffer.tilesY();
+    tileFragments_.assign(size_t(tileCount), 0);
     // One task owns one tile and runs its triangles in submission order.
     tbb::parallel_for(0, tileCount, [&](int tile) {
+        uint64_t fragments = 0;
         for (size_t e = bins_.start[size_t(tile)]; e < bins_.start[size_t(tile) + 1]; ++e) {
-            kernel(*bins_.entries[e], tile, constants, view);
+            kernel(*bins_.entries[e], tile, constants, view, fragments);
         }
+        tileFragments_[size_t(tile)] = fragments;
     });
+    return std::accumulate(tileFragments_.begin(), tileFragments_.end(), uint64_t(0));
 }
 
 void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) {
@@ -184,7 +190,7 @@ void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, cons
             size_t end = group + 1, entries = chunks_[group].entryCount;
             while (end < chunkCount && entries + chunks_[end].entryCount <= binEntryBudget_) entries += chunks_[end++].entryCount;
             fillBins(chunks_, group, end, framebuffer.tilesX(), framebuffer.tilesY(), bins_);
-            runBackEnd(framebuffer, constants, kernel);
+            stats_.fragments += runBackEnd(framebuffer, constants, kernel);
             stats_.binEntries += entries;
             group = end;
         }

@@ -43,6 +43,7 @@ struct RasterStats {
     uint64_t trianglesClipped = 0;             // needed near/far/guard-band clipping
     uint64_t trianglesSetUp = 0;               // survived culling; their bounds hold a pixel centre
     uint64_t binEntries = 0;                   // (triangle, tile) pairs rasterized
+    uint64_t fragments = 0;                    // covered pixels, before any test (the fill)
 };
 
 class Rasterizer {
@@ -68,7 +69,7 @@ private:
     void validate(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) const;
     void runFrontEnd(const Framebuffer& framebuffer, const Viewport& viewport, const PipelineState& state,
                      const DrawCall& call, size_t firstTriangle, size_t triangleCount, size_t chunkCount);
-    void runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel) const;
+    uint64_t runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel);
 
     SimdLevel level_;
     const TileKernels* kernels_;
@@ -77,6 +78,7 @@ private:
     std::vector<SetupChunk> chunks_;
     std::vector<RasterStats> chunkStats_;
     TileBins bins_;
+    std::vector<uint64_t> tileFragments_;   // per tile, each written by the tile's one task
     RasterStats stats_;
 };
 

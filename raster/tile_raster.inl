@@ -199,7 +199,7 @@ inline Mask insideRect(I32 x, I32 y, const PixelRect& r) {
 template <FragmentOutput kOutput, bool kStencil>
 void rasterizeBlock(const TriangleSetup& tri, const DrawConstants& draw, const FramebufferView& fb,
                     const CrossingEdge* tileEdges, int tileEdgeCount, int tileX, int tileY,
-                    int blockX, int blockY, const PixelRect& region, size_t blockOffset) {
+                    int blockX, int blockY, const PixelRect& region, size_t blockOffset, uint64_t& fragments) {
     // Coarse test: the extreme corners of the 8x8 block decide reject, accept or test.
     const CrossingEdge* edges[3];
     int32_t atBlock[3];
@@ -224,13 +224,14 @@ void rasterizeBlock(const TriangleSetup& tri, const DrawConstants& draw, const F
         const I32 x = simd::splat(int32_t(blockX)) + blockLaneX(v), y = simd::splat(int32_t(blockY)) + blockLaneY(v);
         if (!blockInsideRegion) covered = covered & insideRect(x, y, region);
         if (!simd::any(covered)) continue;
+        fragments += uint64_t(simd::countLanes(covered));
         shadeFragments<kOutput, kStencil>(tri, draw, fb, {covered, x, y, blockOffset + size_t(v * simd::kWidth)});
     }
 }
 
 template <FragmentOutput kOutput, bool kStencil>
 void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const DrawConstants& draw,
-                             const FramebufferView& fb) {
+                             const FramebufferView& fb, uint64_t& fragments) {
     const int tileX = (tileIndex % fb.tilesX) * kTileSize, tileY = (tileIndex / fb.tilesX) * kTileSize;
     const PixelRect region = {maxInt(tri.minX, tileX), maxInt(tri.minY, tileY),
                               minInt(tri.maxX, tileX + kTileSize), minInt(tri.maxY, tileY + kTileSize)};
@@ -258,7 +259,7 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const Draw
             const size_t blockIndex = size_t(((blockY - tileY) >> kBlockShift) * kBlocksPerTileSide +
                                              ((blockX - tileX) >> kBlockShift));
             rasterizeBlock<kOutput, kStencil>(tri, draw, fb, edges, edgeCount, tileX, tileY, blockX, blockY,
-                                              region, tileOffset + blockIndex * kPixelsPerBlock);
+                                              region, tileOffset + blockIndex * kPixelsPerBlock, fragments);
         }
     }
 }

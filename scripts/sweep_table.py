@@ -3,14 +3,16 @@
 technique and settings, the median ms at each thread count side by side, and the error
 figures (the same at every thread count; the first row's are shown).
 
-usage: scripts/sweep_table.py SWEEP.csv [hard|soft]"""
+usage: scripts/sweep_table.py SWEEP.csv [hard|soft]
+       scripts/sweep_table.py --matrix SWEEP.csv ...   (one row per scene: misclassified %
+                                                       of each technique)"""
 import csv
 import sys
 
 HARD = [("misclassified %", "misclassified_percent", 3), ("false shadow %", "false_shadow_percent", 3),
         ("false light %", "false_light_percent", 3), ("RMS", "rms", 4)]
 SOFT = [("RMS", "rms", 4), ("max", "max_abs", 2), ("umbra lit %", "umbra_lit_percent", 3),
-        ("lit shadowed %", "lit_shadowed_percent", 3)]
+        ("umbra over %", "umbra_over_percent", 3), ("lit shadowed %", "lit_shadowed_percent", 3)]
 
 
 def main(path, kind):
@@ -33,5 +35,23 @@ def main(path, kind):
         print("| " + " | ".join(cells) + " |")
 
 
+def matrix(paths):
+    table, techniques = {}, []
+    for path in paths:
+        scene = path.rsplit("/", 1)[-1].split("-" + "shadow-map")[0]
+        for r in csv.DictReader(open(path)):
+            technique = r["technique"] + ("" if r["settings"] == "defaults" else " " + r["settings"])
+            if technique not in techniques:
+                techniques.append(technique)
+            table.setdefault(scene, {})[technique] = float(r["misclassified_percent"])
+    print("| scene | " + " | ".join(techniques) + " |")
+    print("| --- " + "| ---: " * len(techniques) + "|")
+    for scene, row in table.items():
+        print(f"| {scene} | " + " | ".join(f"{row[t]:.3f}" if t in row else "" for t in techniques) + " |")
+
+
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "hard")
+    if sys.argv[1] == "--matrix":
+        matrix(sys.argv[2:])
+    else:
+        main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "hard")

@@ -1,6 +1,7 @@
 #include "shadows/edge_adjacency.h"
 
 #include <algorithm>
+#include <mutex>
 #include <numeric>
 #include <tuple>
 
@@ -80,6 +81,31 @@ std::vector<EdgeAdjacency> sceneEdgeAdjacency(const Scene& scene) {
         if (used[m]) adjacency[m] = buildEdgeAdjacency(scene.meshes[m].positions, scene.meshes[m].triangles);
     });
     return adjacency;
+}
+
+std::shared_ptr<const std::vector<EdgeAdjacency>> cachedSceneEdgeAdjacency(const Scene& scene) {
+    struct Entry {
+        std::vector<Mesh> meshes;
+        std::vector<bool> used;
+        std::shared_ptr<const std::vector<EdgeAdjacency>> adjacency;
+    };
+    static std::mutex mutex;
+    static Entry last;
+    std::vector<bool> used(scene.meshes.size(), false);
+    for (const MeshInstance& instance : scene.instances) used[instance.mesh] = true;
+    const auto sameMeshes = [&] {
+        if (last.meshes.size() != scene.meshes.size() || last.used != used) return false;
+        for (size_t m = 0; m < scene.meshes.size(); ++m) {
+            if (last.meshes[m].positions != scene.meshes[m].positions || last.meshes[m].triangles != scene.meshes[m].triangles)
+                return false;
+        }
+        return true;
+    };
+    const std::lock_guard lock(mutex);
+    if (!last.adjacency || !sameMeshes()) {
+        last = {scene.meshes, std::move(used), std::make_shared<const std::vector<EdgeAdjacency>>(sceneEdgeAdjacency(scene))};
+    }
+    return last.adjacency;
 }
 
 }  // namespace shadowlab

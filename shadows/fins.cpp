@@ -121,7 +121,7 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const LightPlane& light, 
     const LightView view = fitLightView(pointLightFor(in.light), in.gbuffer, in.world, fit);
     const double L0 = view.zFar;   // the reference receiver plane (section 3.1)
     const std::vector<SilhouetteEdge> silhouette =
-        sceneSilhouette(in.scene, in.world, sceneEdgeAdjacency(in.scene), glm::dvec4(light.centre, 1.0));
+        sceneSilhouette(in.scene, in.world, *cachedSceneEdgeAdjacency(in.scene), glm::dvec4(light.centre, 1.0));
     const Fins fins = buildFins(in.world.positions, silhouette, light, L0, s.style);
     const Layering layering = layerScene(in, fins, light, view, s.layers);
     const double finsMs = millisecondsSince(start);

@@ -2,7 +2,8 @@
 // buffer (Crow 1977; Heidmann 1991; Everitt and Kilgard 2002, "Practical and Robust
 // Stenciled Shadow Volumes"; RTR 4th ed., section 7.3). Per frame:
 //
-//   1. edge adjacency per mesh (edge_adjacency.h), silhouette edges per instance w.r.t.
+//   1. edge adjacency per mesh (edge_adjacency.h; built on the scene's first frame and
+//      kept, as an engine would at load time), silhouette edges per instance w.r.t.
 //      the light (silhouette.h), sides extruded to infinity with w = 0 and, for z-fail,
 //      light and dark caps (volume_extrusion.h);
 //   2. z-pass or z-fail: param mode, or `auto`, which takes z-fail exactly when a volume
@@ -14,8 +15,9 @@
 //        z-pass: front face, depth pass -> +1; back face, depth pass -> -1
 //        z-fail: back face, depth fail  -> +1; front face, depth fail -> -1
 //      so the stencil holds, modulo 256, the number of volumes the visible point is in;
-//   5. a counting pass: the same faces without depth test, adding 1 per fragment into a
-//      colour plane: the fill, the technique's known cost (RTR 7.3), reported as a stat;
+//   5. the fill, the technique's known cost (RTR 7.3): the fragments the stencil pass
+//      rasterized, counted by the rasterizer and reported as a stat; with debug buffers
+//      also per pixel, by a second pass adding 1 per fragment into a colour plane;
 //   6. V = 1 where the stencil is 0 and the surface faces the light (the reference's
 //      dot(N, L - P) > 0 on the G-buffer's N and P, and its spot cone), else 0.
 //
@@ -146,16 +148,17 @@ ShadowOutputs run(const ShadowInputs& in) {
     const Counting counting = countingMode(in, lightH, nearPlaneShadowed);
 
     auto start = std::chrono::steady_clock::now();
-    const std::vector<EdgeAdjacency> adjacency = sceneEdgeAdjacency(in.scene);
+    const auto adjacency = cachedSceneEdgeAdjacency(in.scene);   // built on the scene's first frame
     const double adjacencyMs = millisecondsSince(start);
     start = std::chrono::steady_clock::now();
-    const ShadowVolume volume = extrudeShadowVolume(in.scene, in.world, adjacency, lightH, counting == Counting::ZFail);
+    const ShadowVolume volume = extrudeShadowVolume(in.scene, in.world, *adjacency, lightH, counting == Counting::ZFail);
     const double extrusionMs = millisecondsSince(start);
 
     start = std::chrono::steady_clock::now();
     const glm::mat4 clipFromWorld = clipFromWorldInfinite(camera);
-    raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = true});
-    fb.clearDepth(1.0f), fb.clearStencil(0), fb.clearColor(glm::vec4(0.0f));
+    const DebugBuffers debug(in.debugDir, "shadow-volume");
+    raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
+    fb.clearDepth(1.0f), fb.clearStencil(0);
     raster::Rasterizer rasterizer(in.simd);
     depthPrepass(rasterizer, fb, in.world, clipFromWorld);
     const raster::DrawCall call = volumeDraw(volume, counting, clipFromWorld);
@@ -163,29 +166,24 @@ ShadowOutputs run(const ShadowInputs& in) {
     rasterizer.draw(fb, stencilPassState(counting, float(in.params.real("offset", 0.0, 64.0))), call);
     const raster::RasterStats volumeRaster = rasterizer.stats();
     const double rasterMs = millisecondsSince(start);
-    start = std::chrono::steady_clock::now();
-    rasterizer.draw(fb, fillCountState(), call);
-    const double fillMs = millisecondsSince(start);
 
     const std::vector<uint8_t> stencil = fb.stencilImage();
-    const std::vector<float> fill = fb.colorImage(0);
     const GBuffer& g = in.gbuffer;
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
     out.stencil.resize(g.pixelCount());
-    double fragments = 0, touched = 0, shadowed = 0;
+    double shadowed = 0;
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         out.stencil[k] = float(int8_t(stencil[k]));   // wrapped count read as signed
         const bool lit = g.hit[k] && stencil[k] == 0 && facesLightAt(light, lightH, g.position[k], g.normal[k]);
         out.visibility[k] = lit ? 1.0f : 0.0f;
         shadowed += g.hit[k] && !lit;
-        fragments += fill[k];
-        touched += fill[k] > 0.0f;
     }
+    const double fragments = double(volumeRaster.fragments);
 
     uint32_t openMeshes = 0, openEdges = 0, nonManifoldEdges = 0;
     for (const MeshInstance& instance : in.scene.instances) {
-        const EdgeAdjacency& a = adjacency[instance.mesh];
+        const EdgeAdjacency& a = (*adjacency)[instance.mesh];
         openMeshes += !a.closed, openEdges += a.openEdges, nonManifoldEdges += a.nonManifoldEdges;
     }
     out.stats = {
@@ -200,21 +198,20 @@ ShadowOutputs run(const ShadowInputs& in) {
         {"volume dark-cap triangles", double(volume.darkCapCount)},
         {"volume triangles set up", double(volumeRaster.trianglesSetUp)},
         {"fill fragments", fragments},
-        {"fill pixels touched", touched},
         {"fill fragments per pixel", fragments / double(g.pixelCount())},
         {"shadowed pixels", shadowed},
         {"adjacency ms", adjacencyMs},
         {"silhouette+extrusion ms", extrusionMs},
         {"prepass+stencil ms", rasterMs},
-        {"fill count ms", fillMs},
     };
 
-    const DebugBuffers debug(in.debugDir, "shadow-volume");
     if (debug.enabled()) {
         debug.write("stencil", camera.width, camera.height, out.stencil, -4.0f, 4.0f);
         debug.write("silhouette", camera.width, camera.height,
                     silhouetteImage(camera, in.world.positions, volume.silhouette), 0.0f, 1.0f);
-        debug.write("fill", camera.width, camera.height, fill, 0.0f, 8.0f);
+        fb.clearColor(glm::vec4(0.0f));
+        rasterizer.draw(fb, fillCountState(), call);
+        debug.write("fill", camera.width, camera.height, fb.colorImage(0), 0.0f, 8.0f);
     }
     return out;
 }

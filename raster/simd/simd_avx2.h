@@ -61,6 +61,7 @@ inline Mask operator!(Mask a) { return {_mm256_xor_si256(a.v, _mm256_set1_epi32(
 inline Mask allLanes() { return {_mm256_set1_epi32(-1)}; }
 inline Mask noLanes() { return {_mm256_setzero_si256()}; }
 inline bool any(Mask a) { return !_mm256_testz_si256(a.v, a.v); }
+inline int countLanes(Mask a) { return __builtin_popcount(unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(a.v)))); }
 
 inline F32 select(Mask m, F32 a, F32 b) { return {_mm256_blendv_ps(b.v, a.v, _mm256_castsi256_ps(m.v))}; }
 inline I32 select(Mask m, I32 a, I32 b) { return {_mm256_blendv_epi8(b.v, a.v, m.v)}; }

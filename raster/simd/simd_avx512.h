@@ -60,6 +60,7 @@ inline Mask operator!(Mask a) { return {__mmask16(~a.v)}; }
 inline Mask allLanes() { return {__mmask16(0xffff)}; }
 inline Mask noLanes() { return {__mmask16(0)}; }
 inline bool any(Mask a) { return a.v != 0; }
+inline int countLanes(Mask a) { return __builtin_popcount(unsigned(a.v)); }
 
 inline F32 select(Mask m, F32 a, F32 b) { return {_mm512_mask_blend_ps(m.v, b.v, a.v)}; }
 inline I32 select(Mask m, I32 a, I32 b) { return {_mm512_mask_blend_epi32(m.v, b.v, a.v)}; }

@@ -57,6 +57,7 @@ inline Mask operator!(Mask a) { return {!a.v}; }
 inline Mask allLanes() { return {true}; }
 inline Mask noLanes() { return {false}; }
 inline bool any(Mask a) { return a.v; }
+inline int countLanes(Mask a) { return a.v ? 1 : 0; }
 
 inline F32 select(Mask m, F32 a, F32 b) { return m.v ? a : b; }
 inline I32 select(Mask m, I32 a, I32 b) { return m.v ? a : b; }

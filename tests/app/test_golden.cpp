@@ -17,9 +17,9 @@
 #include <sstream>
 #include <string>
 
-#include <tbb/global_control.h>
 
 #include "app/render.h"
+#include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 #include "shading/tonemap.h"
 
@@ -86,9 +86,8 @@ TEST_CASE("built-in scenes render to their golden hashes at every SIMD level and
                 continue;
             }
             for (int threads : {1, 2, 8}) {
-                tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
                 INFO(name << ", " << raster::simdLevelName(simd) << ", " << threads << " threads");
-                CHECK(frameHashes(scene, world, simd) == expected);
+                CHECK(withThreads(threads, [&] { return frameHashes(scene, world, simd); }) == expected);
             }
         }
     }

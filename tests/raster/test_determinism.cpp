@@ -7,9 +7,9 @@
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <tbb/global_control.h>
 
 #include "raster/rasterizer.h"
+#include "raster/thread_count.h"
 
 using namespace shadowlab::raster;
 
@@ -62,8 +62,7 @@ struct Outputs {
     std::vector<uint32_t> ids;
 };
 
-Outputs render(SimdLevel level, int threads, const TestScene& scene) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+Outputs render(SimdLevel level, const TestScene& scene) {
     Framebuffer fb(333, 257, {.stencil = true, .color = true, .primitiveId = true});
     Rasterizer r(level);
     DrawCall call;
@@ -100,7 +99,7 @@ bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
 
 TEST_CASE("scalar, AVX2 and AVX-512 kernels at 1, 2 and 8 threads give identical bytes") {
     const TestScene scene;
-    const Outputs reference = render(SimdLevel::Scalar, 1, scene);
+    const Outputs reference = shadowlab::withThreads(1, [&] { return render(SimdLevel::Scalar, scene); });
     int covered = 0;
     for (uint32_t id : reference.ids) covered += id != 0;
     CHECK(covered > 333 * 257 / 3);
@@ -110,7 +109,7 @@ TEST_CASE("scalar, AVX2 and AVX-512 kernels at 1, 2 and 8 threads give identical
             continue;
         }
         for (int threads : {1, 2, 8}) {
-            const Outputs o = render(level, threads, scene);
+            const Outputs o = shadowlab::withThreads(threads, [&] { return render(level, scene); });
             INFO(simdLevelName(level) << " with " << threads << " threads");
             CHECK(sameBytes(o.depth, reference.depth));
             CHECK(sameBytes(o.red, reference.red));

@@ -15,8 +15,8 @@
 #include <cstring>
 #include <numbers>
 
-#include <tbb/global_control.h>
 
+#include "raster/thread_count.h"
 #include "shadows/light_sampling.h"
 #include "shadows/reference.h"
 
@@ -334,8 +334,7 @@ TEST_CASE("the reference gives the same bytes for 1 and 2 threads") {
     disk.position = {0.3f, 3.0f, 0.2f};
     disk.radius = 0.4f;
     auto run = [&](int threads) {
-        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-        return reference.visibility(g, disk);  // default 32 x 32 samples
+        return withThreads(threads, [&] { return reference.visibility(g, disk); });  // default 32 x 32 samples
     };
     const std::vector<float> one = run(1), two = run(2);
     REQUIRE(one.size() == two.size());

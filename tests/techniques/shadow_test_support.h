@@ -10,7 +10,6 @@
 #include <vector>
 
 #include <doctest/doctest.h>
-#include <tbb/global_control.h>
 
 #include "app/render.h"
 #include "scenes/scene_file.h"

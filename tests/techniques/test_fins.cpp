@@ -16,9 +16,9 @@
 #include <filesystem>
 #include <numbers>
 
-#include <tbb/global_control.h>
 
 #include "app/render.h"
+#include "raster/thread_count.h"
 #include "scenes/procedural.h"
 #include "scenes/scene_file.h"
 #include "shadows/edge_adjacency.h"
@@ -358,8 +358,7 @@ TEST_CASE("fins: the same V bytes for 1 and 2 threads and for the scalar and the
     for (const std::string technique : {"fins", "smoothies", "penumbra-maps"}) {
         std::vector<float> V[2];
         for (int threads : {1, 2}) {
-            tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-            V[threads - 1] = runTechnique(scene, world, g, technique).visibility;
+            V[threads - 1] = withThreads(threads, [&] { return runTechnique(scene, world, g, technique).visibility; });
         }
         const std::vector<float> scalar = runTechnique(scene, world, g, technique, {}, raster::SimdLevel::Scalar).visibility;
         INFO(technique);

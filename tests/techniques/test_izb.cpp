@@ -8,9 +8,9 @@
 #include <string>
 #include <tuple>
 
-#include <tbb/global_control.h>
 
 #include "app/render.h"
+#include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 #include "shadows/izb.h"
 #include "shadows/reference.h"
@@ -99,13 +99,14 @@ TEST_CASE("izb lists and V are the same bytes with 1 and 2 threads") {
     const Light light = pointLightFor(v.scene.lights[0]);
     const double diagonal = sceneDiagonal(v.world);
     auto build = [&](int threads) {
-        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        std::vector<float> V;
-        const izb::Receivers receivers = izb::gatherReceivers(v.gbuffer, light, diagonal, V);
-        const izb::LightGrid grid = izb::makeLightGrid(izb::fitViews(light, v.gbuffer, v.world), 512, diagonal);
-        const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid, receivers), grid.texelCount());
-        const izb::TileBins bins = izb::binOccluders(grid, lists, v.world);
-        return std::tuple(lists.first, lists.entry, bins.triangles.entry, run("izb", v).visibility);
+        return withThreads(threads, [&] {
+            std::vector<float> V;
+            const izb::Receivers receivers = izb::gatherReceivers(v.gbuffer, light, diagonal, V);
+            const izb::LightGrid grid = izb::makeLightGrid(izb::fitViews(light, v.gbuffer, v.world), 512, diagonal);
+            const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid, receivers), grid.texelCount());
+            const izb::TileBins bins = izb::binOccluders(grid, lists, v.world);
+            return std::tuple(lists.first, lists.entry, bins.triangles.entry, run("izb", v).visibility);
+        });
     };
     const auto one = build(1), two = build(2);
     CHECK(std::get<0>(one) == std::get<0>(two));

@@ -9,6 +9,7 @@
 #include "shading/image_io.h"
 #include "shadow_test_support.h"
 #include "shadows/planar.h"
+#include "raster/thread_count.h"
 
 using namespace shadowlab;
 
@@ -121,8 +122,9 @@ TEST_CASE("planar: the stencil blends each shadowed pixel once; the same bytes f
     const Technique& planar = findTechnique("planar");
     const TechniqueParams params(planar.name, planar.params, {{"opacity", "0.5"}});
     const auto runWith = [&](int threads, const std::filesystem::path& debugDir) {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        return planar.run({s.scene, s.world, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), params, debugDir});
+        return withThreads(threads, [&] {
+            return planar.run({s.scene, s.world, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), params, debugDir});
+        });
     };
     const ShadowOutputs one = runWith(1, dir), two = runWith(2, {});
     CHECK(one.visibility == two.visibility);

@@ -4,9 +4,9 @@
 
 #include <cstring>
 
-#include <tbb/global_control.h>
 
 #include "shadow_map_test_util.h"
+#include "raster/thread_count.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;
@@ -84,8 +84,7 @@ TEST_CASE("shadow-map and csm: the same V bytes with 1 and 2 threads") {
     for (const auto& [technique, params] : runs) {
         std::vector<float> v[2];
         for (int threads : {1, 2}) {
-            tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-            v[threads - 1] = frameOf(scene, world, technique, params).shadow.visibility;
+            v[threads - 1] = withThreads(threads, [&] { return frameOf(scene, world, technique, params).shadow.visibility; });
         }
         INFO(technique);
         REQUIRE(v[0].size() == v[1].size());

@@ -12,6 +12,7 @@
 #include "shadows/counting_mode.h"
 #include "shadows/edge_adjacency.h"
 #include "shadows/silhouette.h"
+#include "raster/thread_count.h"
 
 using namespace shadowlab;
 
@@ -63,6 +64,21 @@ TEST_CASE("shadow-volume: edge adjacency welds duplicated vertices and finds a c
     CHECK(one.nonManifoldEdges == 0);
     fin.triangles.emplace_back(0, 1, 5);
     CHECK(buildEdgeAdjacency(fin.positions, fin.triangles).nonManifoldEdges == 1);
+}
+
+TEST_CASE("shadow-volume: the cached edge adjacency is built once per scene and follows edits") {
+    Scene scene;
+    scene.meshes = {makeBox(glm::vec3(0.0f), glm::vec3(1.0f))};
+    scene.instances = {{"box", 0, 0, glm::mat4(1.0f)}};
+    const auto first = cachedSceneEdgeAdjacency(scene);
+    CHECK(cachedSceneEdgeAdjacency(scene) == first);   // the same frame's work, not rebuilt
+    CHECK((*first)[0].closed);
+    // An edited mesh gets its own edges: drop one triangle and the box is open.
+    scene.meshes[0].triangles.pop_back();
+    const auto edited = cachedSceneEdgeAdjacency(scene);
+    CHECK(edited != first);
+    CHECK_FALSE((*edited)[0].closed);
+    CHECK((*edited)[0].edges.size() == buildEdgeAdjacency(scene.meshes[0].positions, scene.meshes[0].triangles).edges.size());
 }
 
 TEST_CASE("shadow-volume: silhouette of a unit cube from known light positions") {
@@ -128,8 +144,7 @@ TEST_CASE("shadow-volume: z-pass and z-fail give the same stencil when the camer
 TEST_CASE("shadow-volume: the same bytes for 1 and 2 threads and every SIMD level") {
     const test::PreparedScene s("sphere-box");
     const auto runWith = [&](int threads, raster::SimdLevel simd) {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        return s.run("shadow-volume", {{"mode", "zfail"}}, simd);
+        return withThreads(threads, [&] { return s.run("shadow-volume", {{"mode", "zfail"}}, simd); });
     };
     const ShadowOutputs one = runWith(1, raster::bestSimdLevel());
     for (const raster::SimdLevel simd : {raster::SimdLevel::Scalar, raster::bestSimdLevel()}) {

@@ -11,11 +11,11 @@
 #include <fstream>
 #include <stdexcept>
 
-#include <tbb/global_control.h>
 
 #include "shadows/moment_filter.h"
 #include "shadows/moments.h"
 #include "soft_test_support.h"
+#include "raster/thread_count.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;
@@ -196,8 +196,7 @@ TEST_CASE("soft techniques: the same V bytes with 1 and 2 threads") {
     for (const auto& [name, params] : runs) {
         std::vector<float> v[2];
         for (int threads : {1, 2}) {
-            tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-            v[threads - 1] = s.run(name, params).visibility;
+            v[threads - 1] = withThreads(threads, [&] { return s.run(name, params).visibility; });
         }
         INFO(name);
         REQUIRE(v[0].size() == v[1].size());
