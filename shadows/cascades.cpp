@@ -43,6 +43,15 @@ GBuffer cascadeReceivers(const GBuffer& g, const Camera& camera, const std::vect
     return subset;
 }
 
+// A sample bound rounded outwards to the ladder 2^(k/8), steps of about 9%: a small camera
+// move then leaves the splits, the slices' spheres and so the texel size unchanged, and
+// snapping keeps the texel grid in place with sample bounds too.
+double boundOnLadder(double distance, bool up) {
+    constexpr double kStepsPerOctave = 8.0;
+    const double step = std::log2(distance) * kStepsPerOctave;
+    return std::exp2((up ? std::ceil(step) : std::floor(step)) / kStepsPerOctave);
+}
+
 }  // namespace
 
 std::vector<double> cascadeSplits(double n, double f, int count, SplitScheme scheme, double lambda) {
@@ -78,6 +87,7 @@ std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const G
         }
         if (!(f > 0.0)) throw std::invalid_argument("csm: no receivers (no pixel has hit = 1)");
         n = std::max(n, 1e-3 * f), f *= 1.0 + 1e-6;
+        n = boundOnLadder(n, false), f = boundOnLadder(f, true);
     }
     const std::vector<double> d = cascadeSplits(n, f, s.count, s.scheme, s.lambda);
     std::vector<Cascade> cascades(s.count);

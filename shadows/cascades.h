@@ -16,7 +16,8 @@
 // around the bounding sphere of its slice (whose size does not change as the camera turns
 // or moves), and a box centre snapped to whole texels in light space. A camera move then
 // shifts each map by whole texels, so a world point keeps its place in the texel grid.
-// With sample bounds the slice sizes follow the receivers and so does the texel size.
+// Sample bounds are rounded outwards to steps of 2^(1/8), so the slices keep their size,
+// and snapping its effect, until the receivers' range changes by one step.
 #pragma once
 
 #include <vector>

@@ -35,7 +35,7 @@ inline double statOf(const Frame& frame, const std::string& name) {
     return NAN;
 }
 
-struct Misclassified {
+struct BandedErrors {
     int lit = 0, shadowed = 0;           // in the reference, over hit pixels
     int falseShadow = 0, falseLight = 0;
     int falseLightOffBoundary = 0;       // leaks farther than `band` pixels from a reference boundary
@@ -45,7 +45,7 @@ struct Misclassified {
 // Error figures of `test` against `reference` (lit: V >= 0.5, as `shadowlab compare`),
 // and how many errors lie more than `band` pixels from a pixel whose 4-neighbour has the
 // other reference classification.
-inline Misclassified misclassified(const Frame& reference, const Frame& test, int band) {
+inline BandedErrors bandedErrors(const Frame& reference, const Frame& test, int band) {
     const GBuffer& g = reference.gbuffer;
     const auto lit = [&](const std::vector<float>& v, int i, int j) { return v[g.index(i, j)] >= 0.5f; };
     const auto boundary = [&](int i, int j) {
@@ -68,7 +68,7 @@ inline Misclassified misclassified(const Frame& reference, const Frame& test, in
         }
         return false;
     };
-    Misclassified m;
+    BandedErrors m;
     for (int j = 0; j < g.height; ++j) {
         for (int i = 0; i < g.width; ++i) {
             if (!g.hit[g.index(i, j)]) continue;

@@ -1,6 +1,6 @@
 // Shared by the soft-shadow tests: a scene with its G-buffer and the exact soft reference
-// (ReferenceVisibility of the disk light itself: 1024 stratified samples per pixel), and
-// the error figures against it.
+// (ReferenceVisibility of the disk light itself: by default 32 x 32 = 1024 stratified
+// samples per pixel), and the error figures against it.
 #pragma once
 
 #include <cmath>
@@ -21,9 +21,9 @@ struct SoftScene {
     GBuffer gbuffer;
     std::vector<float> reference;   // soft V of the area light
 
-    explicit SoftScene(Scene s)
+    explicit SoftScene(Scene s, int samplesPerAxis = 32)
         : scene(std::move(s)), world(flatten(scene)), gbuffer(renderGBuffer(world, scene.camera, raster::bestSimdLevel())),
-          reference(ReferenceVisibility(world).visibility(gbuffer, scene.lights[0])) {}
+          reference(ReferenceVisibility(world).visibility(gbuffer, scene.lights[0], {.areaSamplesPerAxis = samplesPerAxis})) {}
 
     ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {}) const {
         const Technique& t = findTechnique(technique);

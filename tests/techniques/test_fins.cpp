@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "soft_test_support.h"
 
 #include "app/render.h"
 #include "raster/thread_count.h"
@@ -261,20 +262,8 @@ TEST_CASE("fins: each object goes whole into the layer of its edges' median midp
 
 namespace {
 
-// A scene at a reduced size with its exact soft reference (16 x 16 samples of the disk).
-struct SoftScene {
-    Scene scene;
-    WorldGeometry world;
-    GBuffer gbuffer;
-    std::vector<float> reference;
-
-    SoftScene(const std::string& nameOrPath, int width, int height) : scene(loadScene(nameOrPath)) {
-        resize(scene, width, height);
-        world = flatten(scene);
-        gbuffer = renderGBuffer(world, scene.camera, raster::bestSimdLevel());
-        reference = ReferenceVisibility(world).visibility(gbuffer, scene.lights[0], {.areaSamplesPerAxis = 16});
-    }
-};
+// A scene at 320 x 200 with its exact soft reference (16 x 16 samples of the disk).
+test::SoftScene umbraScene(const std::string& nameOrPath) { return test::SoftScene(test::smallScene(nameOrPath, 320, 200), 16); }
 
 struct UmbraErrors {
     size_t lightInUmbra = 0;       // the reference's umbra (V < 0.02) lit above 0.1
@@ -284,7 +273,7 @@ struct UmbraErrors {
 
 // Over pixels facing the light's centre: the 1024 (here 256) samples also see the light
 // partly from surfaces turned just away from the centre, which no technique here models.
-UmbraErrors umbraErrors(const SoftScene& s, const std::vector<float>& V) {
+UmbraErrors umbraErrors(const test::SoftScene& s, const std::vector<float>& V) {
     UmbraErrors e;
     size_t pixels = 0;
     const glm::dvec3 centre(s.scene.lights[0].position);
@@ -303,8 +292,6 @@ std::string softScene(const std::string& name) {
     return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft/" + name + ".json";
 }
 
-}  // namespace
-
 // sphere-box, bunny, and the paper's cases in scenes/soft (Figure 7's torus, and whatever
 // else is there) that have a disk light.
 std::vector<std::string> umbraScenes() {
@@ -320,14 +307,16 @@ std::vector<std::string> umbraScenes() {
     return scenes;
 }
 
+}  // namespace
+
 TEST_CASE("fins: multi-layer fins over-estimate the umbra less than smoothies and penumbra maps") {
     const std::vector<std::string> scenes = umbraScenes();
     REQUIRE(scenes.size() == 7);   // sphere-box, bunny and the five cases of scenes/soft
     for (const std::string& scene : scenes) {
-        const SoftScene s(scene, 320, 200);
-        const UmbraErrors fins = umbraErrors(s, runTechnique(s.scene, s.world, s.gbuffer, "fins").visibility);
-        const UmbraErrors smoothies = umbraErrors(s, runTechnique(s.scene, s.world, s.gbuffer, "smoothies").visibility);
-        const UmbraErrors penumbra = umbraErrors(s, runTechnique(s.scene, s.world, s.gbuffer, "penumbra-maps").visibility);
+        const test::SoftScene s = umbraScene(scene);
+        const UmbraErrors fins = umbraErrors(s, s.run("fins").visibility);
+        const UmbraErrors smoothies = umbraErrors(s, s.run("smoothies").visibility);
+        const UmbraErrors penumbra = umbraErrors(s, s.run("penumbra-maps").visibility);
         INFO(scene << ": umbra over-estimated at " << fins.umbraOverestimate << " (fins), " << smoothies.umbraOverestimate
                    << " (smoothies), " << penumbra.umbraOverestimate << " (penumbra maps) pixels; light in the umbra at "
                    << fins.lightInUmbra << ", " << smoothies.lightInUmbra << ", " << penumbra.lightInUmbra
@@ -341,9 +330,9 @@ TEST_CASE("fins: multi-layer fins over-estimate the umbra less than smoothies an
 }
 
 TEST_CASE("fins: 16 layers keep the light out of the green plane's umbra, one layer does not (Figure 7)") {
-    const SoftScene s(softScene("torus-over-plane"), 320, 200);
-    const UmbraErrors one = umbraErrors(s, runTechnique(s.scene, s.world, s.gbuffer, "fins", {{"layers", "1"}}).visibility);
-    const UmbraErrors sixteen = umbraErrors(s, runTechnique(s.scene, s.world, s.gbuffer, "fins").visibility);
+    const test::SoftScene s = umbraScene(softScene("torus-over-plane"));
+    const UmbraErrors one = umbraErrors(s, s.run("fins", {{"layers", "1"}}).visibility);
+    const UmbraErrors sixteen = umbraErrors(s, s.run("fins").visibility);
     INFO("light in the umbra: " << one.lightInUmbra << " (1 layer), " << sixteen.lightInUmbra << " (16 layers); RMS "
                                 << one.rms << ", " << sixteen.rms);
     CHECK(sixteen.lightInUmbra * 2 < one.lightInUmbra);

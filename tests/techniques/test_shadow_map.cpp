@@ -19,7 +19,7 @@ TEST_CASE("shadow-map, defaults, sphere-box: acne below 0.05% of lit pixels, lea
     const double density = statOf(map, "texels_per_pixel_median");
     CHECK(statOf(map, "resolution") == 2048);
     CHECK(density > 0.5);
-    const Misclassified m = misclassified(reference, map, leakBandPixels(density));
+    const BandedErrors m = bandedErrors(reference, map, leakBandPixels(density));
     MESSAGE("acne " << m.falseShadow << " of " << m.lit << " lit, leaks " << m.falseLight << " of " << m.shadowed
                     << " shadowed, texels/pixel " << density);
     CHECK(m.falseShadow < 0.0005 * m.lit);
@@ -41,7 +41,7 @@ TEST_CASE("shadow-map: every bias mode and depth layer keeps errors at the shado
     };
     for (const auto& params : variants) {
         const Frame map = frameOf(scene, world, "shadow-map", params);
-        const Misclassified m = misclassified(reference, map, leakBandPixels(statOf(map, "texels_per_pixel_median")));
+        const BandedErrors m = bandedErrors(reference, map, leakBandPixels(statOf(map, "texels_per_pixel_median")));
         INFO(params.begin()->first << "=" << params.begin()->second << ": acne " << m.falseShadow << " of " << m.lit
                                    << ", leaks " << m.falseLight << " of " << m.shadowed);
         CHECK(m.falseShadow < 0.005 * m.lit);
@@ -58,7 +58,7 @@ TEST_CASE("shadow-map: six cube faces around a point light leave no gap") {
     const Frame reference = frameOf(scene, world, "reference");
     const Frame map = frameOf(scene, world, "shadow-map", {{"resolution", "1024"}});
     CHECK(statOf(map, "maps") >= 4);
-    const Misclassified m = misclassified(reference, map, leakBandPixels(statOf(map, "texels_per_pixel_median")));
+    const BandedErrors m = bandedErrors(reference, map, leakBandPixels(statOf(map, "texels_per_pixel_median")));
     MESSAGE("cube: acne " << m.falseShadow << ", leaks " << m.falseLight << " of " << m.lit + m.shadowed);
     CHECK(m.falseLightOffBoundary == 0);
     CHECK(m.falseShadow < 0.001 * m.lit);
@@ -68,7 +68,7 @@ TEST_CASE("shadow-map: six cube faces around a point light leave no gap") {
     far.lights[0].type = LightType::Point;
     const Frame farReference = frameOf(far, world, "reference");
     const Frame forced = frameOf(far, world, "shadow-map", {{"cube", "always"}, {"resolution", "1024"}});
-    const Misclassified f = misclassified(farReference, forced, leakBandPixels(statOf(forced, "texels_per_pixel_median")));
+    const BandedErrors f = bandedErrors(farReference, forced, leakBandPixels(statOf(forced, "texels_per_pixel_median")));
     CHECK(f.falseLightOffBoundary == 0);
     CHECK(f.falseShadow < 0.001 * f.lit);
 }

@@ -31,13 +31,13 @@ struct CascadeFrame {
     CascadedMaps maps;
 };
 
-CascadeFrame cascadeFrame(const WorldGeometry& world, glm::vec3 move, bool snap) {
+CascadeFrame cascadeFrame(const WorldGeometry& world, glm::vec3 move, bool snap, bool sampleBounds) {
     CascadeFrame f{sunSphereBox(320, 200), {}, {}};
     f.scene.camera.zNear = 0.5f, f.scene.camera.zFar = 30.0f;
     f.scene.camera.eye += move, f.scene.camera.target += move;
     f.g = renderGBuffer(world, f.scene.camera, raster::bestSimdLevel());
     CascadeSettings cs;
-    cs.sampleBounds = false;   // fixed split distances: the camera's planes
+    cs.sampleBounds = sampleBounds;
     cs.snap = snap;
     cs.resolution = 1024;
     DepthMapSettings ds;
@@ -81,20 +81,52 @@ int classificationChanges(const CascadeFrame& a, const CascadeFrame& b) {
 TEST_CASE("csm: texel snapping keeps the texel grid and the shadows of fixed points under a sub-texel camera move") {
     const Scene scene = sunSphereBox(320, 200);
     const WorldGeometry world = flatten(scene);
-    const CascadeFrame a = cascadeFrame(world, glm::vec3(0.0f), true);
-    // A third of the nearest used cascade's texel, obliquely.
-    size_t first = 0;
-    while (first < a.maps.maps.size() && a.maps.maps[first].size == 0) ++first;
-    REQUIRE(first + 1 < a.maps.maps.size());   // at least two cascades hold receivers
-    const double texel = 2.0 / (a.maps.maps[first].view.clipFromView[0][0] * a.maps.maps[first].size);
-    const glm::vec3 move = float(texel / 3.0) * glm::normalize(glm::vec3(1.0f, 0.3f, -0.7f));
-    const CascadeFrame b = cascadeFrame(world, move, true);
-    CHECK(gridMisalignment(a, b) < 1e-3);
-    CHECK(classificationChanges(a, b) == 0);
-    // Without snapping the grid slides with the camera and edge points flip: the test can fail.
-    const CascadeFrame c = cascadeFrame(world, glm::vec3(0.0f), false), d = cascadeFrame(world, move, false);
-    CHECK(gridMisalignment(c, d) > 0.05);
-    CHECK(classificationChanges(c, d) > 0);
+    // Split distances from the camera's planes, and from the receivers (the default).
+    for (const bool sampleBounds : {false, true}) {
+        INFO((sampleBounds ? "sample bounds" : "camera bounds"));
+        const CascadeFrame a = cascadeFrame(world, glm::vec3(0.0f), true, sampleBounds);
+        // A third of the nearest used cascade's texel, obliquely.
+        size_t first = 0;
+        while (first < a.maps.maps.size() && a.maps.maps[first].size == 0) ++first;
+        REQUIRE(first + 1 < a.maps.maps.size());   // at least two cascades hold receivers
+        const double texel = 2.0 / (a.maps.maps[first].view.clipFromView[0][0] * a.maps.maps[first].size);
+        const glm::vec3 move = float(texel / 3.0) * glm::normalize(glm::vec3(1.0f, 0.3f, -0.7f));
+        const CascadeFrame b = cascadeFrame(world, move, true, sampleBounds);
+        CHECK(gridMisalignment(a, b) < 1e-3);
+        CHECK(classificationChanges(a, b) == 0);
+        // Without snapping the grid slides with the camera and edge points flip: the test can fail.
+        const CascadeFrame c = cascadeFrame(world, glm::vec3(0.0f), false, sampleBounds);
+        const CascadeFrame d = cascadeFrame(world, move, false, sampleBounds);
+        CHECK(gridMisalignment(c, d) > 0.05);
+        CHECK(classificationChanges(c, d) > 0);
+    }
+}
+
+TEST_CASE("csm: sample bounds put the splits around the receivers, on the 2^(1/8) ladder") {
+    Scene scene = sunSphereBox(320, 200);
+    scene.camera.zNear = 0.1f, scene.camera.zFar = 1000.0f;   // far beyond every receiver
+    const WorldGeometry world = flatten(scene);
+    const GBuffer g = renderGBuffer(world, scene.camera, raster::bestSimdLevel());
+    double nearest = INFINITY, farthest = 0.0;
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (!g.hit[k]) continue;
+        const double depth = viewDepth(scene.camera, glm::dvec3(g.position[k]));
+        nearest = std::min(nearest, depth), farthest = std::max(farthest, depth);
+    }
+    CascadeSettings settings;   // sample bounds, the default
+    const std::vector<Cascade> cascades = fitCascades(scene.lights[0], scene.camera, g, world, settings);
+    const double n = cascades.front().nearDistance, f = cascades.back().farDistance;
+    const double step = std::exp2(1.0 / 8.0);
+    CHECK(n <= nearest);
+    CHECK(n * step > nearest);
+    CHECK(f >= farthest);
+    CHECK(f < farthest * step);
+    CHECK(std::abs(std::log2(f) * 8.0 - std::round(std::log2(f) * 8.0)) < 1e-9);
+    // Every cascade has receivers: none is wasted on empty depth, as camera bounds would.
+    for (const Cascade& c : cascades) CHECK(c.hasReceivers);
+    settings.sampleBounds = false;
+    const std::vector<Cascade> camera = fitCascades(scene.lights[0], scene.camera, g, world, settings);
+    CHECK_FALSE(camera.back().hasReceivers);
 }
 
 TEST_CASE("csm, defaults, sun over sphere-box: acne below 0.05% of lit pixels, leaks only at the boundary") {
@@ -102,7 +134,7 @@ TEST_CASE("csm, defaults, sun over sphere-box: acne below 0.05% of lit pixels, l
     const WorldGeometry world = flatten(scene);
     const Frame reference = frameOf(scene, world, "reference");
     const Frame csm = frameOf(scene, world, "csm");
-    const Misclassified m = misclassified(reference, csm, leakBandPixels(statOf(csm, "texels_per_pixel_median")));
+    const BandedErrors m = bandedErrors(reference, csm, leakBandPixels(statOf(csm, "texels_per_pixel_median")));
     MESSAGE("csm: acne " << m.falseShadow << " of " << m.lit << ", leaks " << m.falseLight << " of " << m.shadowed);
     CHECK(m.falseShadow < 0.0005 * m.lit);
     CHECK(m.falseLightOffBoundary == 0);
@@ -118,7 +150,7 @@ TEST_CASE("LiSPSM: more texels near the viewer, and uniform again when the light
     MESSAGE("texels per pixel: uniform " << statOf(uniform, "texels_per_pixel_median") << ", lispsm "
                                          << statOf(warped, "texels_per_pixel_median") << ", n_opt " << statOf(warped, "lispsm_n_opt"));
     CHECK(statOf(warped, "texels_per_pixel_median") > 1.5 * statOf(uniform, "texels_per_pixel_median"));
-    const Misclassified m = misclassified(reference, warped, leakBandPixels(statOf(warped, "texels_per_pixel_median")));
+    const BandedErrors m = bandedErrors(reference, warped, leakBandPixels(statOf(warped, "texels_per_pixel_median")));
     CHECK(m.falseShadow < 0.0005 * m.lit);
     CHECK(m.falseLightOffBoundary == 0);
     // Dueling frusta: the sun straight behind the viewer, shining along the view direction

@@ -56,7 +56,7 @@ TEST_CASE("shadow-map on every hard case: within its bound, or its known failure
         const Frame sm = technique == "lispsm" ? test::frameOf(scene, world, "shadow-map", {{"warp", "lispsm"}})
                                                : test::frameOf(scene, world, technique);
         const int band = test::leakBandPixels(test::statOf(sm, "texels_per_pixel_median"));
-        const test::Misclassified m = test::misclassified(reference, sm, band);
+        const test::BandedErrors m = test::bandedErrors(reference, sm, band);
         const double hit = m.lit + m.shadowed;
         const double percent = 100.0 * (m.falseShadow + m.falseLight) / hit;
         const double offBand = 100.0 * (m.falseShadowOffBoundary + m.falseLightOffBoundary) / hit;
