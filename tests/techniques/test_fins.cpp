@@ -221,6 +221,87 @@ TEST_CASE("fins: quads and fans lie in planes parallel to the light's plane, wit
     CHECK(fins.outer.triangles.size() > fins.inner.triangles.size());
 }
 
+namespace {
+
+// A disk light of radius 0.5 at (0, 10, 0) facing down, the receiver plane at L0 = 10 and
+// silhouettes at height 5 (L = 5): every fin is B = 0.5 (10 - 5) / 10 = 0.25 wide (eq. 3).
+constexpr double kFinWidth = 0.25;
+const LightPlane kOverhead{{0.0, 10.0, 0.0}, {0.0, -1.0, 0.0}, 0.5};
+const FinStyle kFinStyle{.innerFins = true, .edgeWeight = 0.5f, .sizing = {FinSizing::Kind::LightRadius, 0.5}};
+
+double area(const FinPrimitives& p, size_t firstTriangle = 0) {
+    double sum = 0.0;
+    for (size_t k = firstTriangle; k < p.triangles.size(); ++k) {
+        const glm::dvec3 a(p.positions[p.triangles[k].x]), b(p.positions[p.triangles[k].y]), c(p.positions[p.triangles[k].z]);
+        sum += 0.5 * glm::length(glm::cross(b - a, c - a));
+    }
+    return sum;
+}
+
+// A closed polygon at height 5, walked as the light-facing side of a silhouette walks it.
+std::vector<SilhouetteEdge> loop(uint32_t first, uint32_t count) {
+    std::vector<SilhouetteEdge> edges;
+    for (uint32_t k = 0; k < count; ++k) edges.push_back({first + k, first + (k + 1) % count});
+    return edges;
+}
+
+}  // namespace
+
+TEST_CASE("fins: outer quads and fans tile the band of width B around a convex outline exactly once") {
+    // A 2 x 2 square seen from above: four convex corners. Outside it, the points within B
+    // of the outline have area 4 * 2 B + pi B^2 (four strips and four quarter disks); the
+    // quads cover the strips and the fans, 8 chords per quarter, the quarter disks.
+    const std::vector<glm::vec3> square = {{-1, 5, -1}, {-1, 5, 1}, {1, 5, 1}, {1, 5, -1}};
+    const Fins fins = buildFins(square, loop(0, 4), kOverhead, 10.0, kFinStyle);
+    REQUIRE(fins.edges.size() == 4);
+    const double chordFans = 4.0 * 8.0 * 0.5 * kFinWidth * kFinWidth * std::sin(std::numbers::pi / 16.0);
+    CHECK(area(fins.outer) == doctest::Approx(8.0 * kFinWidth + chordFans).epsilon(1e-6));
+    CHECK(chordFans == doctest::Approx(std::numbers::pi * kFinWidth * kFinWidth).epsilon(0.007));
+    // The outer fins lie outside the square, within B of it; the fans join each corner's
+    // two quads: their first and last far points are the quads' far ends.
+    for (const glm::vec3& p : fins.outer.positions) {
+        const double outside = glm::length(glm::max(glm::abs(glm::dvec2(p.x, p.z)) - 1.0, 0.0));
+        CHECK(outside <= kFinWidth + 1e-6);
+        CHECK((std::max(std::abs(p.x), std::abs(p.z)) >= 1.0f));
+    }
+    // No concave corner: the inner fins are the four quads alone (they overlap at the corners).
+    CHECK(fins.inner.triangles.size() == 8);
+    CHECK(area(fins.inner) == doctest::Approx(8.0 * kFinWidth).epsilon(1e-6));
+}
+
+TEST_CASE("fins: where more than two silhouette edges meet, Chan and Durand's corner triangles join them") {
+    // A square and a triangle share the vertex (0, 5, 0): four edge ends meet there.
+    const double c30 = std::cos(std::numbers::pi / 6.0), s30 = 0.5;
+    const std::vector<glm::vec3> positions = {
+        {0, 5, 0}, {-1, 5, 0}, {-1, 5, -1}, {0, 5, -1},                       // square, x, z <= 0
+        {float(c30), 5, float(s30)}, {float(s30), 5, float(c30)}};            // triangle 0, 4, 5
+    std::vector<SilhouetteEdge> edges = loop(0, 4);
+    edges.push_back({0, 4}), edges.push_back({4, 5}), edges.push_back({5, 0});
+    const Fins fins = buildFins(positions, edges, kOverhead, 10.0, kFinStyle);
+    REQUIRE(fins.edges.size() == 7);
+    const glm::dvec3 v(positions[0]);
+    for (const FinPrimitives* kind : {&fins.outer, &fins.inner}) {
+        // After the quads (two triangles an edge): one corner triangle per edge end at v,
+        // (v, v + B d_edge, v + B a), all sharing one corner point at distance B.
+        std::vector<glm::dvec3> corners;
+        for (size_t k = 2 * fins.edges.size(); k < kind->triangles.size(); ++k) {
+            const glm::uvec3 t = kind->triangles[k];
+            if (glm::length(glm::dvec3(kind->positions[t.x]) - v) > 1e-6) continue;   // a fan elsewhere
+            CHECK(kind->weights[t.x] == 0.5f);
+            CHECK(kind->weights[t.y] == 0.0f);
+            CHECK(kind->weights[t.z] == 0.0f);
+            CHECK(glm::length(glm::dvec3(kind->positions[t.y]) - v) == doctest::Approx(kFinWidth).epsilon(1e-5));
+            corners.push_back(glm::dvec3(kind->positions[t.z]));
+        }
+        REQUIRE(corners.size() == 4);
+        for (const glm::dvec3& corner : corners) {
+            CHECK(glm::length(corner - corners[0]) < 1e-6);
+            CHECK(glm::length(corner - v) == doctest::Approx(kFinWidth).epsilon(1e-5));
+            CHECK(corner.y == doctest::Approx(5.0));
+        }
+    }
+}
+
 TEST_CASE("fins: layers hold about equal numbers of edges, each edge in the layer of its midpoint") {
     std::vector<double> distances;
     for (int k = 0; k < 1000; ++k) distances.push_back(2.0 + 6.0 * std::pow(k / 1000.0, 3.0));   // crowded near 2
