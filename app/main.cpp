@@ -3,9 +3,12 @@
 // files whole or not at all.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <initializer_list>
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -53,6 +56,19 @@ void addLightOptions(CLI::App* cmd, SceneOverrides& overrides) {
     cmd->add_option("--light-radius", overrides.lightRadius, "radius of the scene's first light, which must be a disk (m, > 0)");
 }
 
+// A command's output files are written one after another, each whole or not at all; so
+// that a later one cannot fail after the earlier ones were written, every destination's
+// directory is checked before any work is done (a path naming a directory fails too).
+void requireWritableDestinations(std::initializer_list<const std::string*> paths) {
+    for (const std::string* path : paths) {
+        if (path->empty()) continue;
+        const std::filesystem::path directory = std::filesystem::path(*path).parent_path();
+        if (!std::filesystem::is_directory(directory.empty() ? "." : directory))
+            throw std::runtime_error("cannot write '" + *path + "': no directory '" + directory.string() + "'");
+        if (std::filesystem::is_directory(*path)) throw std::runtime_error("cannot write '" + *path + "': it is a directory");
+    }
+}
+
 struct RenderArgs {
     std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json, reference;
     std::vector<std::string> params;
@@ -79,6 +95,7 @@ void writeErrorMap(const RenderArgs& a, const Scene& scene, const WorldGeometry&
 void runRender(const RenderArgs& a) {
     if (a.png.empty() && a.aov.empty() && a.errorMap.empty())
         throw std::invalid_argument("render: give -o OUT.png, --aov OUT.exr and/or --error-map OUT.png");
+    requireWritableDestinations({&a.png, &a.aov, &a.errorMap, &a.json});
     Scene scene = loadScene(a.scene);
     applyOverrides(scene, a.overrides);
     const WorldGeometry world = flatten(scene);
@@ -153,6 +170,7 @@ struct CompareArgs {
 void runCompare(const CompareArgs& a) {
     CompareOptions options;
     options.channel = a.channel;
+    requireWritableDestinations({&a.heatmap, &a.json});
     const ImageChannels reference = readExr(a.reference), test = readExr(a.test);
     const ErrorFigures figures = compareImages(reference, test, options);
     std::cout << formatText(figures);

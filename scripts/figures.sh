@@ -1,16 +1,17 @@
 #!/bin/sh
 # Reproduces every speed and error figure in the README: the hard- and soft-shadow sweeps,
-# the shadow map's bias-by-resolution grid and the eq. 8 scaling fit. Writes CSV, JSON and
-# SVG under out/figures and prints the README's tables. Takes about an hour on 2 cores;
-# run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|soft|scaling ...]   (default: all five)
+# every hard case, the shadow map's bias-by-resolution grid, Figure 7's torus and the eq. 8
+# scaling fit. Writes CSV, JSON and SVG under out/figures, copies the plots and images the
+# docs show into docs/images, and prints the README's tables. Takes about an hour on 2
+# cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
+# usage: scripts/figures.sh [hard|cases|bias|soft|torus|scaling|bench ...]   (default: all seven)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias soft scaling}
+parts=${*:-hard cases bias soft torus scaling bench}
 
 for part in $parts; do
   case $part in
@@ -19,6 +20,7 @@ for part in $parts; do
       $app sweep $scene --technique none,reference,shadow-map,izb,shadow-volume,planar \
         --threads 1,2 --runs 5 --out $out/hard
       python3 $table $out/hard/$scene-none+reference+shadow-map+izb+shadow-volume+planar.csv hard
+      cp $out/hard/$scene-none+reference+shadow-map+izb+shadow-volume+planar.svg docs/images/hard-$scene.svg
     done
     # Cascades need a directional light: the sun over sphere-box.
     $app sweep scenes/hard/sun.json --technique shadow-map,csm --threads 1,2 --runs 5 --out $out/hard
@@ -48,11 +50,30 @@ for part in $parts; do
         --reference reference-soft --threads 1,2 --runs 5 --out $out/soft --plot-y rms
       name=$(basename $scene .json)
       python3 $table $out/soft/$name-none+reference+pcss+vsm+esm+evsm+msm+multi-sample+fins+smoothies+penumbra-maps.csv soft
+      cp $out/soft/$name-none+reference+pcss+vsm+esm+evsm+msm+multi-sample+fins+smoothies+penumbra-maps.svg docs/images/soft-$name.svg
+    done
+    ;;
+  torus)
+    # Figure 7 of Cai et al.: single-layer against 16-layer fins on the two-holed torus over
+    # a slab, each with the diff heat map against the soft reference.
+    torus=scenes/soft/torus-over-plane.json
+    $app render $torus --technique reference-soft --width 640 --height 400 -o docs/images/torus-reference-soft.png --aov $out/torus-reference-soft.exr
+    for layers in 1 16; do
+      $app render $torus --technique fins --param layers=$layers --width 640 --height 400 \
+        -o docs/images/torus-fins-$layers.png --aov $out/torus-fins-$layers.exr
+      $app compare $out/torus-reference-soft.exr $out/torus-fins-$layers.exr --heatmap docs/images/torus-fins-$layers-diff.png
     done
     ;;
   scaling)
-    $app scaling scenes/scaling/*.json --technique fins --threads 1 --runs 5 --out $out/scaling
+    for technique in fins smoothies pcss; do
+      $app scaling scenes/scaling/*.json --technique $technique --threads 1 --runs 11 --warmup 2 --out $out/scaling
+    done
+    cp $out/scaling/scaling-fins.svg docs/images/scaling-fins.svg
     ;;
-  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, soft, scaling)" >&2; exit 2 ;;
+  bench)
+    # Depth-only passes and reference rays on the built-in scenes (README, "Performance").
+    $app bench --runs 21 --json $out/bench.json
+    ;;
+  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, soft, torus, scaling, bench)" >&2; exit 2 ;;
   esac
 done

@@ -59,7 +59,7 @@ TEST_CASE("the fitted light view holds every visible receiver and cuts off no oc
     CHECK_THROWS_AS(fitLightView(scene.lights[0], g, world), std::invalid_argument);   // the disk itself
 }
 
-TEST_CASE("a point light inside the scene needs cube faces; each face holds its receivers") {
+TEST_CASE("a point light inside the scene needs cube faces, each face holds its receivers") {
     const Scene scene = loadScene("sphere-box");
     const WorldGeometry world = flatten(scene);
     const GBuffer g = renderGBuffer(world, scene.camera, raster::bestSimdLevel());

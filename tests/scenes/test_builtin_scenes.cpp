@@ -59,7 +59,7 @@ TEST_CASE("builtinSceneNames lists the scene files by stem") {
     CHECK(std::is_sorted(names.begin(), names.end()));
 }
 
-TEST_CASE("sphere-box: ground 64x64, sphere 64x32, box; disk light; camera") {
+TEST_CASE("sphere-box: ground 64x64, sphere 64x32, box, disk light, camera") {
     const Scene scene = loadScene("sphere-box");
     CHECK(scene.name == "sphere-box");
     REQUIRE(scene.instances.size() == 3);

@@ -239,7 +239,7 @@ TEST_CASE("camera, sizes and transforms out of range") {
     });
 }
 
-TEST_CASE("mesh files: missing, unreadable, malformed; empty scenes") {
+TEST_CASE("mesh files: missing, unreadable, malformed, empty scenes") {
     auto meshFile = [](const char* file) { return [file](json& s) { s["meshes"][1]["file"] = file; }; };
     checkCases({
         {"missing OBJ", meshFile("missing.obj"), {"meshes[1].file: ", "missing.obj: cannot open"}},

@@ -73,7 +73,7 @@ TEST_CASE("soft pair: fractional errors count in RMS but only threshold crossing
     CHECK(pixel(11) == glm::ivec3(128, 128, 128));              // background
 }
 
-TEST_CASE("the reference's hit mask decides; sizes and channels are checked") {
+TEST_CASE("the reference's hit mask decides, sizes and channels are checked") {
     // The test image claims no geometry anywhere: still compared where the reference has hit.
     const ErrorFigures f = compareImages(visibilityImage(kHit, kReference),
                                          visibilityImage(std::vector<float>(12, 0.0f), kReference));

@@ -82,7 +82,7 @@ TEST_CASE("normalised Blinn-Phong at the mirror direction adds specular*(s+8)/(8
     checkColour(shade(scene, onePointAtOrigin(1), 0, {1.0f, 0.0f})[0], ambient * albedo + f * irradiance);
 }
 
-TEST_CASE("spot light is a hard cone; directional light gives E cos") {
+TEST_CASE("spot light is a hard cone, directional light gives E cos") {
     Light spot;
     spot.type = LightType::Spot;
     spot.position = {0.0f, 2.0f, 0.0f};

@@ -115,7 +115,7 @@ TEST_CASE("izb lists and V are the same bytes with 1 and 2 threads") {
     CHECK(std::get<3>(one) == std::get<3>(two));
 }
 
-TEST_CASE("izb resolution: auto or 16..8192; a fixed resolution gives the same V") {
+TEST_CASE("izb resolution: auto or 16..8192, a fixed resolution gives the same V") {
     const Views v = cameraView("sphere-box");
     const std::vector<float> automatic = run("izb", v).visibility;
     CHECK(run("izb", v, {{"resolution", "64"}}).visibility == automatic);

@@ -129,7 +129,7 @@ void checkCoverage(bool orthographic) {
 TEST_CASE("izb coverage misses no texel of a receiver that a triangle shadows (perspective)") { checkCoverage(false); }
 TEST_CASE("izb coverage misses no texel of a receiver that a triangle shadows (orthographic)") { checkCoverage(true); }
 
-TEST_CASE("izb exact test: blocked strictly between the receiver and the light; shared edges never leak") {
+TEST_CASE("izb exact test: blocked strictly between the receiver and the light, shared edges never leak") {
     const glm::dvec3 light(0.0, 10.0, 0.0);
     // Two triangles of a unit square at y = 5 sharing the diagonal from (0,5,0) to (1,5,1).
     const glm::dvec3 a[3] = {{0, 5, 0}, {1, 5, 0}, {1, 5, 1}}, b[3] = {{0, 5, 0}, {1, 5, 1}, {0, 5, 1}};

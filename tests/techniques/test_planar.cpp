@@ -62,7 +62,7 @@ TEST_CASE("planar: the projection matrix sends points along the light's rays ont
     }
 }
 
-TEST_CASE("planar: sphere-box's ground shadow matches the reference; the objects' own shadows are its failure mode") {
+TEST_CASE("planar: sphere-box's ground shadow matches the reference, the objects' own shadows are its failure mode") {
     const test::PreparedScene s("sphere-box");
     const ShadowOutputs out = s.run("planar");
     const Split split = splitErrors(s, out.visibility, 0);   // instance 0: the ground
@@ -116,7 +116,7 @@ TEST_CASE("planar: only the plane receives: a box under a slab stays lit, a plan
     CHECK(test::stat(raised, "shadowed receiver pixels") == 0.0);
 }
 
-TEST_CASE("planar: the stencil blends each shadowed pixel once; the same bytes for 1 and 2 threads") {
+TEST_CASE("planar: the stencil blends each shadowed pixel once, the same bytes for 1 and 2 threads") {
     const test::PreparedScene s("sphere-box");
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "shadowlab-test-planar";
     const Technique& planar = findTechnique("planar");

@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# End-to-end tests of the shadowlab command line (app/main.cpp): every command's help,
+# one-line errors for bad input, and output files written whole or not at all.
+# Usage: cli_test.sh PATH/TO/shadowlab SCRATCH_DIR
+set -u
+
+bin=${1:?usage: cli_test.sh SHADOWLAB SCRATCH_DIR}
+scratch=${2:?usage: cli_test.sh SHADOWLAB SCRATCH_DIR}
+rm -rf "$scratch"
+mkdir -p "$scratch"
+out=$scratch/stdout.txt
+err=$scratch/stderr.txt
+passed=0
+failed=0
+
+pass() { passed=$((passed + 1)); }
+fail() {
+    failed=$((failed + 1))
+    echo "FAIL: $*"
+}
+
+# Runs shadowlab with the arguments, output into $out and $err; sets $rc.
+run() {
+    "$bin" "$@" >"$out" 2>"$err"
+    rc=$?
+}
+
+# expect_usage ARGS...: exits 0 and prints a usage text.
+expect_usage() {
+    run "$@"
+    if [ "$rc" -ne 0 ]; then
+        fail "'shadowlab $*' exited $rc, expected 0 (stderr: $(head -c 300 "$err"))"
+    elif ! grep -q "Usage:" "$out"; then
+        fail "'shadowlab $*' printed no 'Usage:' on stdout"
+    else
+        pass
+    fi
+}
+
+# expect_error WHAT ARGS...: exits non-zero with exactly one stderr line "shadowlab: error: ...".
+expect_error() {
+    local what=$1
+    shift
+    run "$@"
+    local lines
+    lines=$(wc -l <"$err")
+    if [ "$rc" -eq 0 ]; then
+        fail "$what: 'shadowlab $*' exited 0, expected an error"
+    elif [ "$rc" -gt 128 ]; then
+        fail "$what: 'shadowlab $*' died of signal $((rc - 128))"
+    elif [ "$lines" -ne 1 ]; then
+        fail "$what: 'shadowlab $*' printed $lines lines on stderr, expected 1:"
+        sed 's/^/    /' "$err"
+    elif ! head -n 1 "$err" | grep -q "^shadowlab: error: "; then
+        fail "$what: stderr does not start with 'shadowlab: error: ': $(cat "$err")"
+    else
+        pass
+    fi
+}
+
+# expect_no_file PATH: neither PATH nor a hidden temporary of it (.NAME.tmp.*, image_io.h).
+expect_no_file() {
+    local path=$1 leftovers
+    leftovers=$(find "$(dirname "$path")" -maxdepth 1 -name ".$(basename "$path").tmp.*" | wc -l)
+    if [ -e "$path" ]; then
+        fail "$path exists after a failing command"
+    elif [ "$leftovers" -ne 0 ]; then
+        fail "$leftovers temporary file(s) of $path left behind"
+    else
+        pass
+    fi
+}
+
+# expect_png PATH: the file starts with the 8-byte PNG signature 89 50 4E 47 0D 0A 1A 0A.
+expect_png() {
+    local signature
+    signature=$(head -c 8 "$1" 2>/dev/null | od -An -tx1 | tr -d ' \n')
+    if [ "$signature" = "89504e470d0a1a0a" ]; then
+        pass
+    else
+        fail "$1 is not a PNG (first bytes: '$signature')"
+    fi
+}
+
+# ---- Help ---------------------------------------------------------------------------------
+expect_usage --help
+for command in render sweep compare bench scaling export-obj techniques; do
+    expect_usage "$command" --help
+done
+run techniques
+if [ "$rc" -eq 0 ] && grep -q "^shadow-volume " "$out" && grep -q "resolution=" "$out"; then
+    pass
+else
+    fail "'shadowlab techniques' exited $rc or did not list shadow-volume and its parameters"
+fi
+
+# ---- One-line errors ----------------------------------------------------------------------
+tiny=(--width 64 --height 40)
+printf '{"name": "broken", "camera": {"eye": [0, 1, 5],\n' >"$scratch/broken.json"
+expect_error "no command"
+expect_error "unknown scene" render no-such-scene "${tiny[@]}" -o "$scratch/x.png"
+expect_error "unknown technique" render sphere-box --technique no-such-technique "${tiny[@]}" -o "$scratch/x.png"
+expect_error "bad --param value" render sphere-box --technique shadow-map --param resolution=abc "${tiny[@]}" -o "$scratch/x.png"
+expect_error "unknown --param name" render sphere-box --technique shadow-map --param no-such=1 "${tiny[@]}" -o "$scratch/x.png"
+expect_error "malformed scene JSON" render "$scratch/broken.json" "${tiny[@]}" -o "$scratch/x.png"
+expect_error "bad --simd" render sphere-box --simd bogus "${tiny[@]}" -o "$scratch/x.png"
+expect_error "render without output" render sphere-box "${tiny[@]}"
+expect_error "render without scene" render -o "$scratch/x.png"
+expect_error "bad --width" render sphere-box --width 0 -o "$scratch/x.png"
+expect_error "csm without a sun" render sphere-box --technique csm "${tiny[@]}" -o "$scratch/x.png"
+expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
+
+# ---- Whole or nothing -------------------------------------------------------------------
+# Every failure above named -o x.png: none may have left it, or a temporary of it.
+expect_no_file "$scratch/x.png"
+# A later output that cannot be written fails the render before the PNG is written.
+expect_error "--aov into a missing directory" render sphere-box "${tiny[@]}" -o "$scratch/x.png" --aov "$scratch/missing/x.exr"
+expect_no_file "$scratch/x.png"
+expect_error "--error-map into a missing directory" render sphere-box "${tiny[@]}" -o "$scratch/x.png" --error-map "$scratch/missing/e.png"
+expect_no_file "$scratch/x.png"
+
+run render sphere-box --technique none "${tiny[@]}" -o "$scratch/ok.png"
+if [ "$rc" -eq 0 ]; then pass; else fail "tiny render exited $rc: $(cat "$err")"; fi
+expect_png "$scratch/ok.png"
+leftovers=$(find "$scratch" -maxdepth 1 -name '.*.tmp.*' | wc -l)
+if [ "$leftovers" -eq 0 ]; then pass; else fail "$leftovers temporary file(s) left in $scratch"; fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
