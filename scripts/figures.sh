@@ -4,14 +4,14 @@
 # scaling fit. Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about an hour on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|soft|torus|scaling|bench ...]   (default: all seven)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|scaling|bench ...]   (default: all eight)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias soft torus scaling bench}
+parts=${*:-hard cases bias models soft torus scaling bench}
 
 for part in $parts; do
   case $part in
@@ -41,7 +41,19 @@ for part in $parts; do
     # How acne (false shadow) and leaks (false light) move with resolution and slope bias.
     $app sweep sphere-box --technique shadow-map --param resolution=512,1024,2048,4096 \
       --param slope-factor=0,0.5,1.5,4 --threads 2 --runs 3 --out $out/bias
-    python3 $table $out/bias/sphere-box-shadow-map.csv hard
+    python3 $table --grid resolution slope-factor $out/bias/sphere-box-shadow-map.csv
+    ;;
+  models)
+    # The bias models and depth layers of docs/shadow-maps.md ("Why the default bias").
+    for scene in sphere-box bunny; do
+      $app sweep $scene --technique shadow-map --param bias=slope-scaled,receiver-plane,constant,normal-offset \
+        --threads 2 --runs 1 --out $out/models/bias > /dev/null
+      $app sweep $scene --technique shadow-map --param layer=second,midpoint --threads 2 --runs 1 \
+        --out $out/models/layer > /dev/null
+      echo "$scene"
+      python3 $table $out/models/bias/$scene-shadow-map.csv hard
+      python3 $table $out/models/layer/$scene-shadow-map.csv hard
+    done
     ;;
   soft)
     for scene in sphere-box bunny scenes/soft/large-light.json scenes/soft/tilted-receiver.json \
@@ -73,7 +85,9 @@ for part in $parts; do
   bench)
     # Depth-only passes and reference rays on the built-in scenes (README, "Performance").
     $app bench --runs 21 --json $out/bench.json
+    build/bench/bench_stages --benchmark_filter=BM_RasterTiles --benchmark_repetitions=5 \
+      --benchmark_report_aggregates_only=true
     ;;
-  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, soft, torus, scaling, bench)" >&2; exit 2 ;;
+  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, scaling, bench)" >&2; exit 2 ;;
   esac
 done

@@ -5,7 +5,9 @@ figures (the same at every thread count; the first row's are shown).
 
 usage: scripts/sweep_table.py SWEEP.csv [hard|soft]
        scripts/sweep_table.py --matrix SWEEP.csv ...   (one row per scene: misclassified %
-                                                       of each technique)"""
+                                                       of each technique)
+       scripts/sweep_table.py --grid ROW COLUMN SWEEP.csv  (false shadow / false light % of
+                                                       a two-parameter sweep, ROW by COLUMN)"""
 import csv
 import sys
 
@@ -50,8 +52,28 @@ def matrix(paths):
         print(f"| {scene} | " + " | ".join(f"{row[t]:.3f}" if t in row else "" for t in techniques) + " |")
 
 
+def grid(row, column, path):
+    cells, rows, columns, ms = {}, [], [], {}
+    for r in csv.DictReader(open(path)):
+        settings = dict(item.split("=", 1) for item in r["settings"].split())
+        key = (settings[row], settings[column])
+        if key[0] not in rows:
+            rows.append(key[0])
+        if key[1] not in columns:
+            columns.append(key[1])
+        cells[key] = f"{float(r['false_shadow_percent']):.3f} / {float(r['false_light_percent']):.3f}"
+        ms.setdefault(key[0], []).append(float(r["median_ms"]))
+    print(f"| {row} | " + " | ".join(f"{column} {c}" for c in columns) + " | median ms |")
+    print("| ---: " * (len(columns) + 2) + "|")
+    for v in rows:
+        times = sorted(ms[v])
+        print(f"| {v} | " + " | ".join(cells.get((v, c), "") for c in columns) + f" | {times[len(times) // 2]:.1f} |")
+
+
 if __name__ == "__main__":
     if sys.argv[1] == "--matrix":
         matrix(sys.argv[2:])
+    elif sys.argv[1] == "--grid":
+        grid(sys.argv[2], sys.argv[3], sys.argv[4])
     else:
         main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "hard")

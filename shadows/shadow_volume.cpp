@@ -68,7 +68,6 @@ using raster::StencilOp;
 
 enum class Counting { ZPass, ZFail };
 
-
 Counting countingMode(const ShadowInputs& in, const glm::dvec4& light, bool& nearPlaneShadowed) {
     nearPlaneShadowed = nearPlaneMayBeShadowed(in.scene.camera, light, instanceBounds(in.scene, in.world));
     const std::string mode = in.params.choice("mode", {"auto", "zpass", "zfail"});

@@ -17,7 +17,6 @@
 #include <sstream>
 #include <string>
 
-
 #include "app/render.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"

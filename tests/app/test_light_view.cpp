@@ -1,5 +1,6 @@
-// The fitted light view: every receiver the camera sees is inside the light's frustum,
-// and no geometry that could shadow a receiver is cut off by the near plane.
+// The fitted light view: every receiver the camera sees is inside the light's frustum, no
+// geometry that could shadow a receiver is cut off by the near plane, and the fit is tight:
+// receivers reach each of the four sides to within the margin and the far plane.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -19,14 +20,25 @@ glm::dvec3 clipPoint(const LightView& view, const glm::vec3& p) {
 
 void checkFit(const LightView& view, const GBuffer& g, const WorldGeometry& world) {
     int receivers = 0, outside = 0, cutOff = 0;
+    glm::dvec2 lowest(INFINITY), highest(-INFINITY);
+    double farthest = 0.0;
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         if (!g.hit[k]) continue;
         const glm::dvec3 ndc = clipPoint(view, g.position[k]);
         outside += !(std::abs(ndc.x) < 1.0 && std::abs(ndc.y) < 1.0 && ndc.z >= -1.0 && ndc.z <= 1.0);
+        lowest = glm::min(lowest, glm::dvec2(ndc)), highest = glm::max(highest, glm::dvec2(ndc));
+        farthest = std::max(farthest, -(view.viewFromWorld * glm::dvec4(glm::dvec3(g.position[k]), 1.0)).z);
         ++receivers;
     }
     CHECK(receivers > 1000);
     CHECK(outside == 0);
+    // Tight: the default margin is 2 texels of a 2048 map, 2 / 1024 of the NDC range.
+    const double margin = 2.0 * 2.0 / 2048.0;
+    CHECK(lowest.x < -1.0 + 1.01 * margin);
+    CHECK(lowest.y < -1.0 + 1.01 * margin);
+    CHECK(highest.x > 1.0 - 1.01 * margin);
+    CHECK(highest.y > 1.0 - 1.01 * margin);
+    CHECK(farthest > view.zFar * (1.0 - 1e-3));
     // Geometry inside the sides and nearer than the far plane is behind the near plane.
     for (const glm::vec3& p : world.positions) {
         const glm::dvec3 q = glm::dvec3(view.viewFromWorld * glm::dvec4(glm::dvec3(p), 1.0));

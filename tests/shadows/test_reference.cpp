@@ -15,7 +15,6 @@
 #include <cstring>
 #include <numbers>
 
-
 #include "raster/thread_count.h"
 #include "shadows/light_sampling.h"
 #include "shadows/reference.h"

@@ -8,7 +8,6 @@
 #include <string>
 #include <tuple>
 
-
 #include "app/render.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"

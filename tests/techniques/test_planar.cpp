@@ -6,10 +6,10 @@
 
 #include <filesystem>
 
+#include "raster/thread_count.h"
 #include "shading/image_io.h"
 #include "shadow_test_support.h"
 #include "shadows/planar.h"
-#include "raster/thread_count.h"
 
 using namespace shadowlab;
 

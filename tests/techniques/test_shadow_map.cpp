@@ -4,9 +4,8 @@
 
 #include <cstring>
 
-
-#include "shadow_map_test_util.h"
 #include "raster/thread_count.h"
+#include "shadow_map_test_util.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;

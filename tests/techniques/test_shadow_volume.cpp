@@ -7,12 +7,12 @@
 
 #include <algorithm>
 
+#include "raster/thread_count.h"
 #include "scenes/procedural.h"
 #include "shadow_test_support.h"
 #include "shadows/counting_mode.h"
 #include "shadows/edge_adjacency.h"
 #include "shadows/silhouette.h"
-#include "raster/thread_count.h"
 
 using namespace shadowlab;
 

@@ -11,11 +11,10 @@
 #include <fstream>
 #include <stdexcept>
 
-
+#include "raster/thread_count.h"
 #include "shadows/moment_filter.h"
 #include "shadows/moments.h"
 #include "soft_test_support.h"
-#include "raster/thread_count.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;
