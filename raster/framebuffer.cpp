@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/parallel_for.h>
+
 namespace shadowlab::raster {
 
 Framebuffer::Framebuffer(int width, int height, Attachments attachments)
@@ -49,9 +51,13 @@ template <class T>
 std::vector<T> Framebuffer::rowMajor(const std::vector<T>& blockLinear) const {
     if (blockLinear.empty()) throw std::logic_error("framebuffer has no such attachment");
     std::vector<T> image(size_t(width_) * size_t(height_));
-    for (int y = 0; y < height_; ++y) {
-        for (int x = 0; x < width_; ++x) image[size_t(y) * size_t(width_) + size_t(x)] = blockLinear[index(x, y)];
-    }
+    // A block's row of 8 pixels is contiguous in both layouts; rows are copied in parallel.
+    tbb::parallel_for(0, height_, [&](int y) {
+        for (int x = 0; x < width_; x += kBlockSize) {
+            std::copy_n(blockLinear.begin() + ptrdiff_t(index(x, y)), std::min(kBlockSize, width_ - x),
+                        image.begin() + ptrdiff_t(size_t(y) * size_t(width_) + size_t(x)));
+        }
+    });
     return image;
 }
 

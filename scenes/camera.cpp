@@ -22,16 +22,20 @@ glm::dmat4 clipFromWorldD(const Camera& camera) {
     return proj * view;
 }
 
-RayD pixelRay(const Camera& camera, int i, int j) {
+PixelRays::PixelRays(const Camera& camera)
+    : eye_(camera.eye), width_(camera.width), height_(camera.height), worldFromClip_(glm::inverse(clipFromWorldD(camera))) {}
+
+RayD PixelRays::operator()(int i, int j) const {
     // Pixel centre to normalised device coordinates; row 0 is the top (NDC y = +1).
-    const double ndcX = (i + 0.5) / camera.width * 2.0 - 1.0;
-    const double ndcY = 1.0 - (j + 0.5) / camera.height * 2.0;
-    const glm::dmat4 worldFromClip = glm::inverse(clipFromWorldD(camera));
-    glm::dvec4 nearPoint = worldFromClip * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-    glm::dvec4 farPoint = worldFromClip * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+    const double ndcX = (i + 0.5) / width_ * 2.0 - 1.0;
+    const double ndcY = 1.0 - (j + 0.5) / height_ * 2.0;
+    const glm::dvec4 nearPoint = worldFromClip_ * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
+    const glm::dvec4 farPoint = worldFromClip_ * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
     const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w;
     const glm::dvec3 b = glm::dvec3(farPoint) / farPoint.w;
-    return {glm::dvec3(camera.eye), b - a};
+    return {eye_, b - a};
 }
+
+RayD pixelRay(const Camera& camera, int i, int j) { return PixelRays(camera)(i, j); }
 
 }  // namespace shadowlab

@@ -22,6 +22,20 @@ inline glm::mat4 clipFromWorld(const Camera& camera) {
 struct RayD {
     glm::dvec3 origin, direction;
 };
+
+// The rays of every pixel of one camera: its inverse matrix computed once.
+class PixelRays {
+public:
+    explicit PixelRays(const Camera& camera);
+    RayD operator()(int i, int j) const;
+
+private:
+    glm::dvec3 eye_;
+    int width_, height_;
+    glm::dmat4 worldFromClip_;
+};
+
+// One pixel's ray: PixelRays(camera)(i, j).
 RayD pixelRay(const Camera& camera, int i, int j);
 
 }  // namespace shadowlab

@@ -59,7 +59,7 @@ std::string pixelName(int i, int j) {
     return "pixel (" + std::to_string(i) + ", " + std::to_string(j) + ")";
 }
 
-void writeSurface(GBuffer& g, size_t index, const WorldGeometry& world, const Camera& camera,
+void writeSurface(GBuffer& g, size_t index, const WorldGeometry& world, const PixelRays& rays,
                   int i, int j, uint32_t triangle, float depth) {
     if (triangle >= world.triangles.size()) {
         throw std::invalid_argument("buildGBuffer: triangle index " + std::to_string(triangle) +
@@ -67,7 +67,7 @@ void writeSurface(GBuffer& g, size_t index, const WorldGeometry& world, const Ca
     }
     const glm::uvec3 t = world.triangles[triangle];
     const std::optional<SurfacePoint> s = intersectTrianglePlane(
-        pixelRay(camera, i, j), glm::dvec3(world.positions[t.x]),
+        rays(i, j), glm::dvec3(world.positions[t.x]),
         glm::dvec3(world.positions[t.y]), glm::dvec3(world.positions[t.z]));
     if (!s) {
         throw std::invalid_argument("buildGBuffer: ray of " + pixelName(i, j) +
@@ -117,6 +117,7 @@ GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
     g.triangle.resize(n);
     g.depth.resize(n);
 
+    const PixelRays rays(camera);
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
         for (int j = rows.begin(); j != rows.end(); ++j) {
             for (int i = 0; i < g.width; ++i) {
@@ -124,7 +125,7 @@ GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
                 if (visibleTriangle[index] == kNoTriangle) {
                     writeBackground(g, index);
                 } else {
-                    writeSurface(g, index, world, camera, i, j, visibleTriangle[index], depth[index]);
+                    writeSurface(g, index, world, rays, i, j, visibleTriangle[index], depth[index]);
                 }
             }
         }

@@ -55,7 +55,8 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     }
     const CascadedMaps cm = renderCascades(in.light, in.scene.camera, in.gbuffer, in.world, cs, depthMapSettings(s), in.simd);
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene.camera, in.light, cm.maps,
-                                              cascadeSelector(cm, in.scene.camera), s.bias, makePcfKernel(s.filter));
+                                              cascadeSelector(cm, in.scene.camera), s.bias, makePcfKernel(s.filter),
+                                              !in.debugDir.empty());
     addStats(out, cm, s.resolution, lookup);
     const DebugBuffers debug(in.debugDir, "csm");
     for (size_t k = 0; k < cm.maps.size(); ++k) {

@@ -77,6 +77,7 @@ Receivers gatherReceivers(const GBuffer& gbuffer, const Light& pointOrDirectiona
 // (row 0 at the top, conventions.md).
 struct LightGrid {
     std::vector<LightView> views;
+    std::vector<glm::dmat4> clipFromWorld;   // per view, computed once (texelOf runs per receiver)
     int resolution = 0;
     // Perspective views drop occluder parts nearer the light than this depth (view-space
     // -z), a thousandth of the reference's smallest offset (izb_coverage.cpp).

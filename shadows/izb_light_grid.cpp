@@ -35,9 +35,16 @@ int viewOf(const std::vector<LightView>& views, const glm::dvec3& point) {
 
 int cell(double coordinate, int resolution) { return std::clamp(int(std::floor(coordinate)), 0, resolution - 1); }
 
-uint32_t texelIn(const std::vector<LightView>& views, int resolution, const glm::dvec3& point) {
+std::vector<glm::dmat4> clipMatrices(const std::vector<LightView>& views) {
+    std::vector<glm::dmat4> clip;
+    for (const LightView& v : views) clip.push_back(v.clipFromWorld());
+    return clip;
+}
+
+uint32_t texelIn(const std::vector<LightView>& views, const std::vector<glm::dmat4>& clipFromWorld, int resolution,
+                 const glm::dvec3& point) {
     const int k = viewOf(views, point);
-    const glm::dvec4 c = views[k].clipFromWorld() * glm::dvec4(point, 1.0);
+    const glm::dvec4 c = clipFromWorld[size_t(k)] * glm::dvec4(point, 1.0);
     // Normalised device coordinates to texel coordinates, row 0 at the top (conventions.md).
     const double u = (c.x / c.w + 1.0) * 0.5 * resolution, v = (1.0 - c.y / c.w) * 0.5 * resolution;
     return uint32_t((size_t(k) * resolution + cell(v, resolution)) * resolution + cell(u, resolution));
@@ -46,9 +53,10 @@ uint32_t texelIn(const std::vector<LightView>& views, int resolution, const glm:
 // Mean length of the non-empty lists at a resolution: receivers over occupied texels.
 double meanListLength(const std::vector<LightView>& views, int resolution, const Receivers& receivers) {
     std::vector<bool> occupied(views.size() * size_t(resolution) * size_t(resolution), false);
+    const std::vector<glm::dmat4> clipFromWorld = clipMatrices(views);
     size_t count = 0;
     for (const glm::dvec3& o : receivers.origin) {
-        const uint32_t t = texelIn(views, resolution, o);
+        const uint32_t t = texelIn(views, clipFromWorld, resolution, o);
         count += !occupied[t];
         occupied[t] = true;
     }
@@ -90,11 +98,14 @@ int chooseResolution(const std::vector<LightView>& views, const Receivers& recei
 LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sceneDiagonal) {
     LightGrid grid;
     grid.views = std::move(views);
+    grid.clipFromWorld = clipMatrices(grid.views);
     grid.resolution = resolution;
     grid.minDepth = 1e-3 * shadowRayOffset(glm::vec3(0.0f), sceneDiagonal);
     return grid;
 }
 
-uint32_t texelOf(const LightGrid& grid, const glm::dvec3& point) { return texelIn(grid.views, grid.resolution, point); }
+uint32_t texelOf(const LightGrid& grid, const glm::dvec3& point) {
+    return texelIn(grid.views, grid.clipFromWorld, grid.resolution, point);
+}
 
 }  // namespace shadowlab::izb

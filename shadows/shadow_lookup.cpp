@@ -16,16 +16,13 @@ glm::dvec2 texelOf(const DepthMap& map, const glm::dvec3& p) {
     return glm::dvec2(h) / h.w;
 }
 
-// Where the ray through the centre of pixel (i, j) meets the plane (P, N); the same
-// construction as scenes/camera.h's pixelRay, with the camera's inverse computed once.
-glm::dvec3 onPlane(const glm::dmat4& worldFromClip, const Camera& camera, int i, int j, const glm::dvec3& P,
-                   const glm::dvec3& N) {
-    const double ndcX = (i + 0.5) / camera.width * 2.0 - 1.0, ndcY = 1.0 - (j + 0.5) / camera.height * 2.0;
-    const glm::dvec4 nearPoint = worldFromClip * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-    const glm::dvec4 farPoint = worldFromClip * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
-    const glm::dvec3 origin(camera.eye), direction = glm::dvec3(farPoint) / farPoint.w - glm::dvec3(nearPoint) / nearPoint.w;
-    return origin + direction * (glm::dot(N, P - origin) / glm::dot(N, direction));
+// Where the ray through the centre of pixel (i, j) meets the plane (P, N).
+glm::dvec3 onPlane(const PixelRays& rays, int i, int j, const glm::dvec3& P, const glm::dvec3& N) {
+    const RayD ray = rays(i, j);
+    return ray.origin + ray.direction * (glm::dot(N, P - ray.origin) / glm::dot(N, ray.direction));
 }
+
+bool inDensitySample(int i, int j) { return i % kDensitySampleStride == 0 && j % kDensitySampleStride == 0; }
 
 }  // namespace
 
@@ -34,23 +31,23 @@ glm::dvec3 unitTowardsLight(const Light& light, const glm::dvec3& P) {
     return glm::normalize(glm::dvec3(light.position) - P);
 }
 
-double texelsPerPixel(const DepthMap& map, const Camera& camera, const glm::dmat4& worldFromClip, int i, int j,
-                      const glm::dvec3& P, const glm::dvec3& N) {
+double texelsPerPixel(const DepthMap& map, const PixelRays& rays, int i, int j, const glm::dvec3& P, const glm::dvec3& N) {
     const glm::dvec2 t = texelOf(map, P);
-    const glm::dvec2 dx = texelOf(map, onPlane(worldFromClip, camera, i + 1, j, P, N)) - t;
-    const glm::dvec2 dy = texelOf(map, onPlane(worldFromClip, camera, i, j + 1, P, N)) - t;
+    const glm::dvec2 dx = texelOf(map, onPlane(rays, i + 1, j, P, N)) - t;
+    const glm::dvec2 dy = texelOf(map, onPlane(rays, i, j + 1, P, N)) - t;
     const double area = std::abs(dx.x * dy.y - dx.y * dy.x);
     return std::isfinite(area) ? area : 0.0;
 }
 
 ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& light,
                            const std::vector<DepthMap>& maps, const MapSelector& select, const BiasSettings& bias,
-                           const PcfKernel& kernel) {
+                           const PcfKernel& kernel, bool everyPixelDensity) {
     ShadowLookup out;
+    out.width = g.width;
     out.visibility.assign(g.pixelCount(), 0.0f);
     out.texelDensity.assign(g.pixelCount(), 0.0f);
     out.mapIndex.assign(g.pixelCount(), -1);
-    const glm::dmat4 worldFromClip = glm::inverse(clipFromWorldD(camera));
+    const PixelRays rays(camera);
     tbb::parallel_for(0, g.height, [&](int j) {
         for (int i = 0; i < g.width; ++i) {
             const size_t k = g.index(i, j);
@@ -59,7 +56,8 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
             const int m = select(P, k);
             if (m < 0) continue;
             out.mapIndex[k] = int8_t(m);
-            out.texelDensity[k] = float(texelsPerPixel(maps[m], camera, worldFromClip, i, j, P, N));
+            if (everyPixelDensity || inDensitySample(i, j))
+                out.texelDensity[k] = float(texelsPerPixel(maps[m], rays, i, j, P, N));
             const glm::dvec3 L = unitTowardsLight(light, P);
             // The reference's convention: no light from behind the surface or outside the cone.
             if (!(glm::dot(N, L) > 0.0)) continue;
@@ -74,7 +72,8 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
 double medianTexelDensity(const ShadowLookup& lookup) {
     std::vector<float> served;
     for (size_t k = 0; k < lookup.mapIndex.size(); ++k) {
-        if (lookup.mapIndex[k] >= 0) served.push_back(lookup.texelDensity[k]);
+        const int i = int(k % size_t(lookup.width)), j = int(k / size_t(lookup.width));
+        if (lookup.mapIndex[k] >= 0 && inDensitySample(i, j)) served.push_back(lookup.texelDensity[k]);
     }
     if (served.empty()) return 0.0;
     std::nth_element(served.begin(), served.begin() + served.size() / 2, served.end());

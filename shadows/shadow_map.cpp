@@ -134,7 +134,7 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
     }
     const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm);
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene.camera, light, lm.maps, selectorFor(lm), s.bias,
-                                              makePcfKernel(s.filter));
+                                              makePcfKernel(s.filter), !in.debugDir.empty());
     addStats(out, lm, s, lookup);
     writeDebug(in, lm, s, lookup);
     out.visibility = lookup.visibility;

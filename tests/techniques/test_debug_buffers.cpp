@@ -24,6 +24,7 @@
 #include "shadow_map_test_util.h"
 #include "shadow_test_support.h"
 #include "shadows/cascades.h"
+#include "shadows/shadow_lookup.h"
 #include "soft_test_support.h"
 
 using namespace shadowlab;
@@ -173,18 +174,23 @@ TEST_CASE("izb debug list-length: sums to the stat receivers, and occupancy coun
     CHECK(test::stat(out, "list_mean_nonempty") * nonEmpty == doctest::Approx(sum(length)));
 }
 
-// medianTexelDensity() (shadow_lookup.cpp) takes element n / 2 of the served pixels'
-// densities; with one map every hit pixel is served, and the EXR holds the same floats.
-TEST_CASE("shadow-map debug texel-density: its median over the served pixels is the stat texels_per_pixel_median") {
+// medianTexelDensity() (shadow_lookup.cpp) takes element n / 2 of the densities of the
+// served pixels in its sample (every kDensitySampleStride-th pixel and row); with one map
+// every hit pixel is served, and the EXR, measured at every pixel, holds the same floats.
+TEST_CASE("shadow-map debug texel-density: its median over the sampled served pixels is the stat texels_per_pixel_median") {
     const SmallScene s = sceneFor("shadow-map");
     const ScratchDir dir("shadow-map");
     const Frame f = s.run("shadow-map", dir.path);
     REQUIRE(test::stat(f.shadow, "maps") == 1.0);
     const std::vector<float> density = readBuffer(dir.path, "shadow-map", "texel-density");
     std::vector<float> served;
+    size_t measured = 0;
     for (size_t k = 0; k < density.size(); ++k) {
-        if (f.gbuffer.hit[k]) served.push_back(density[k]);
+        const int i = int(k) % f.gbuffer.width, j = int(k) / f.gbuffer.width;
+        measured += f.gbuffer.hit[k] && density[k] > 0.0f;
+        if (f.gbuffer.hit[k] && i % kDensitySampleStride == 0 && j % kDensitySampleStride == 0) served.push_back(density[k]);
     }
+    CHECK(measured > 10 * served.size());   // the debug view is measured at every pixel
     REQUIRE(!served.empty());
     std::nth_element(served.begin(), served.begin() + served.size() / 2, served.end());
     const double median = served[served.size() / 2];
