@@ -4,14 +4,14 @@
 # scaling fit. Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about an hour on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|scaling|bench ...]   (default: all eight)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench ...]   (default: all nine)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus scaling bench}
+parts=${*:-hard cases bias models soft torus views scaling bench}
 
 for part in $parts; do
   case $part in
@@ -82,12 +82,26 @@ for part in $parts; do
     done
     cp $out/scaling/scaling-fins.svg docs/images/scaling-fins.svg
     ;;
+  views)
+    # The views of docs/hard-shadows.md: an error map and the intermediate buffers.
+    small="--width 640 --height 400 -o $out/views/render.png"
+    # A coarse map with too small a constant bias: acne (red) on every lit surface, leaks (blue).
+    $app render sphere-box --technique shadow-map $small --param resolution=256 --param bias=constant \
+      --param constant-bias=0.02 --error-map docs/images/view-error-map.png
+    $app render sphere-box --technique shadow-map $small --param resolution=512 --debug-buffers $out/views
+    $app render scenes/hard/sun.json --technique csm $small --debug-buffers $out/views
+    $app render bunny --technique shadow-volume $small --debug-buffers $out/views
+    $app render sphere-box --technique izb $small --debug-buffers $out/views
+    for view in shadow-map-texel-density csm-cascades shadow-volume-stencil shadow-volume-fill izb-list-length; do
+      cp $out/views/$view.png docs/images/view-$view.png
+    done
+    ;;
   bench)
     # Depth-only passes and reference rays on the built-in scenes (README, "Performance").
     $app bench --runs 21 --json $out/bench.json
     build/bench/bench_stages --benchmark_filter=BM_RasterTiles --benchmark_repetitions=5 \
       --benchmark_report_aggregates_only=true
     ;;
-  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, scaling, bench)" >&2; exit 2 ;;
+  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench)" >&2; exit 2 ;;
   esac
 done
