@@ -8,10 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include <unistd.h>
-
 #include <stb/stb_image.h>
 
+#include "scratch_directory.h"
 #include "shading/image_io.h"
 
 using namespace shadowlab;
@@ -19,21 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh directory per test, removed afterwards.
-struct ScratchDirectory {
-    fs::path path;
-    explicit ScratchDirectory(const std::string& name)
-        : path(fs::temp_directory_path() / ("shadowlab_test_" + std::to_string(::getpid()) + "_" + name)) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~ScratchDirectory() { fs::remove_all(path); }
-    std::vector<std::string> entries() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(path)) names.push_back(e.path().filename().string());
-        return names;
-    }
-};
+using test::ScratchDirectory;
 
 const std::vector<std::string> kAllChannels = {"R",   "G",   "B",   "P.x", "P.y",   "P.z",    "N.x",
                                                "N.y", "N.z", "hit", "V",   "depth", "stencil"};

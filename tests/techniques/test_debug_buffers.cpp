@@ -16,10 +16,9 @@
 #include <utility>
 #include <vector>
 
-#include <unistd.h>
-
 #include <stb/stb_image.h>
 
+#include "scratch_directory.h"
 #include "shading/image_io.h"
 #include "shadow_map_test_util.h"
 #include "shadow_test_support.h"
@@ -34,16 +33,7 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 100;
 
-// A fresh, empty directory per use, removed afterwards.
-struct ScratchDir {
-    fs::path path;
-    explicit ScratchDir(const std::string& name)
-        : path(fs::temp_directory_path() / ("shadowlab-test-debug-" + std::to_string(::getpid()) + "-" + name)) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~ScratchDir() { fs::remove_all(path); }
-};
+using ScratchDir = test::ScratchDirectory;
 
 // A scene at kWidth x kHeight, flattened once; its frames with or without debug buffers.
 struct SmallScene {
