@@ -2,7 +2,7 @@
 # Reproduces every speed and error figure in the README: the hard- and soft-shadow sweeps,
 # every hard case, the shadow map's bias-by-resolution grid, Figure 7's torus and the eq. 8
 # scaling fit. Writes CSV, JSON and SVG under out/figures, copies the plots and images the
-# docs show into docs/images, and prints the README's tables. Takes about an hour on 2
+# docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
 # usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench ...]   (default: all nine)
 set -eu
