@@ -69,6 +69,17 @@ void requireWritableDestinations(std::initializer_list<const std::string*> paths
     }
 }
 
+// CLI11 answers a mistyped command with "A subcommand is required"; name it instead.
+void requireKnownCommand(const CLI::App& app, int argc, char** argv) {
+    if (argc < 2 || argv[1][0] == '-') return;
+    std::string known;
+    for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; })) {
+        if (command->get_name() == argv[1]) return;
+        known += (known.empty() ? "" : ", ") + command->get_name();
+    }
+    throw std::invalid_argument("unknown command '" + std::string(argv[1]) + "' (known: " + known + ")");
+}
+
 struct RenderArgs {
     std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json, reference;
     std::vector<std::string> params;
@@ -277,6 +288,7 @@ int main(int argc, char** argv) {
     e->callback([&] { writeObj(flatten(loadScene(exportScene)), exportPath); });
 
     try {
+        requireKnownCommand(app, argc, argv);
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         return app.exit(error);

@@ -98,6 +98,8 @@ fi
 tiny=(--width 64 --height 40)
 printf '{"name": "broken", "camera": {"eye": [0, 1, 5],\n' >"$scratch/broken.json"
 expect_error "no command"
+expect_error "unknown command" frobnicate
+if grep -q "unknown command 'frobnicate' (known: render, " "$err"; then pass; else fail "the unknown command is not named: $(cat "$err")"; fi
 expect_error "unknown scene" render no-such-scene "${tiny[@]}" -o "$scratch/x.png"
 expect_error "unknown technique" render sphere-box --technique no-such-technique "${tiny[@]}" -o "$scratch/x.png"
 expect_error "bad --param value" render sphere-box --technique shadow-map --param resolution=abc "${tiny[@]}" -o "$scratch/x.png"
