@@ -59,7 +59,7 @@ void addLightOptions(CLI::App* cmd, SceneOverrides& overrides) {
 // A command's output files are written one after another, each whole or not at all; so
 // that a later one cannot fail after the earlier ones were written, every destination's
 // directory is checked before any work is done (a path naming a directory fails too).
-void requireWritableDestinations(std::initializer_list<const std::string*> paths) {
+void requireOutputDirectories(std::initializer_list<const std::string*> paths) {
     for (const std::string* path : paths) {
         if (path->empty()) continue;
         const std::filesystem::path directory = std::filesystem::path(*path).parent_path();
@@ -106,7 +106,7 @@ void writeErrorMap(const RenderArgs& a, const Scene& scene, const WorldGeometry&
 void runRender(const RenderArgs& a) {
     if (a.png.empty() && a.aov.empty() && a.errorMap.empty())
         throw std::invalid_argument("render: give -o OUT.png, --aov OUT.exr and/or --error-map OUT.png");
-    requireWritableDestinations({&a.png, &a.aov, &a.errorMap, &a.json});
+    requireOutputDirectories({&a.png, &a.aov, &a.errorMap, &a.json});
     Scene scene = loadScene(a.scene);
     applyOverrides(scene, a.overrides);
     const WorldGeometry world = flatten(scene);
@@ -181,7 +181,7 @@ struct CompareArgs {
 void runCompare(const CompareArgs& a) {
     CompareOptions options;
     options.channel = a.channel;
-    requireWritableDestinations({&a.heatmap, &a.json});
+    requireOutputDirectories({&a.heatmap, &a.json});
     const ImageChannels reference = readExr(a.reference), test = readExr(a.test);
     const ErrorFigures figures = compareImages(reference, test, options);
     std::cout << formatText(figures);

@@ -151,7 +151,7 @@ void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& vie
     });
 }
 
-// Returns the fragments rasterized, summed over tiles in tile order.
+// Returns the fragments rasterized: each tile's count, summed.
 uint64_t Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel) {
     const FramebufferView view = framebuffer.view();
     const int tileCount = framebuffer.tilesX() * framebuffer.tilesY();

@@ -12,7 +12,9 @@ namespace shadowlab {
 // Runs f() on `threads` threads (0 or less: TBB's default, every core) and returns its
 // result. A global_control alone only caps the count at the machine's cores, so 8 threads
 // on a 2-core machine need an arena of 8 as well; the determinism tests rely on it, since
-// more threads than cores interleave the tiles in more orders.
+// more threads than cores interleave the tiles in more orders. Not for nesting or for
+// concurrent callers: TBB applies the smallest active limit, so an inner call could not
+// raise the count.
 template <class F>
 decltype(auto) withThreads(int threads, F&& f) {
     if (threads <= 0) return std::forward<F>(f)();

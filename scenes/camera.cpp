@@ -36,6 +36,4 @@ RayD PixelRays::operator()(int i, int j) const {
     return {eye_, b - a};
 }
 
-RayD pixelRay(const Camera& camera, int i, int j) { return PixelRays(camera)(i, j); }
-
 }  // namespace shadowlab

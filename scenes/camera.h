@@ -23,7 +23,8 @@ struct RayD {
     glm::dvec3 origin, direction;
 };
 
-// The rays of every pixel of one camera: its inverse matrix computed once.
+// World-space rays through the pixel centres of one camera (its inverse matrix computed
+// once): PixelRays(camera)(i, j).
 class PixelRays {
 public:
     explicit PixelRays(const Camera& camera);
@@ -34,8 +35,5 @@ private:
     int width_, height_;
     glm::dmat4 worldFromClip_;
 };
-
-// One pixel's ray: PixelRays(camera)(i, j).
-RayD pixelRay(const Camera& camera, int i, int j);
 
 }  // namespace shadowlab

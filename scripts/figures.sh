@@ -84,6 +84,7 @@ for part in $parts; do
     ;;
   views)
     # The views of docs/hard-shadows.md: an error map and the intermediate buffers.
+    mkdir -p $out/views
     small="--width 640 --height 400 -o $out/views/render.png"
     # A coarse map with too small a constant bias: acne (red) on every lit surface, leaks (blue).
     $app render sphere-box --technique shadow-map $small --param resolution=256 --param bias=constant \

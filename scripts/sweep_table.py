@@ -40,7 +40,7 @@ def main(path, kind):
 def matrix(paths):
     table, techniques = {}, []
     for path in paths:
-        scene = path.rsplit("/", 1)[-1].split("-" + "shadow-map")[0]
+        scene = path.rsplit("/", 1)[-1].split("-shadow-map")[0]
         for r in csv.DictReader(open(path)):
             technique = r["technique"] + ("" if r["settings"] == "defaults" else " " + r["settings"])
             if technique not in techniques:

@@ -12,7 +12,7 @@ namespace shadowlab {
 
 // visibleTriangle[j * W + i] is the triangle the rasterizer found at the centre of pixel
 // (i, j) (kNoTriangle for background), depth[j * W + i] its window depth. For each covered
-// pixel, P is the intersection of pixelRay(camera, i, j) with that triangle's plane,
+// pixel, P is the intersection of PixelRays(camera)(i, j) with that triangle's plane,
 // computed in double and rounded once to float, and N is the triangle's unit geometric
 // normal turned to face the camera. Background pixels get hit = 0, P = N = 0, material 0,
 // triangle kNoTriangle and depth 1. Throws std::invalid_argument if the buffer sizes do

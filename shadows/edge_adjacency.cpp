@@ -49,6 +49,13 @@ std::vector<EdgeRecord> edgeRecords(std::span<const glm::uvec3> triangles, const
     return records;
 }
 
+// The meshes some instance uses.
+std::vector<bool> usedMeshes(const Scene& scene) {
+    std::vector<bool> used(scene.meshes.size(), false);
+    for (const MeshInstance& instance : scene.instances) used[instance.mesh] = true;
+    return used;
+}
+
 }  // namespace
 
 EdgeAdjacency buildEdgeAdjacency(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles) {
@@ -74,8 +81,7 @@ EdgeAdjacency buildEdgeAdjacency(std::span<const glm::vec3> positions, std::span
 }
 
 std::vector<EdgeAdjacency> sceneEdgeAdjacency(const Scene& scene) {
-    std::vector<bool> used(scene.meshes.size(), false);
-    for (const MeshInstance& instance : scene.instances) used[instance.mesh] = true;
+    const std::vector<bool> used = usedMeshes(scene);
     std::vector<EdgeAdjacency> adjacency(scene.meshes.size());
     tbb::parallel_for(size_t(0), scene.meshes.size(), [&](size_t m) {
         if (used[m]) adjacency[m] = buildEdgeAdjacency(scene.meshes[m].positions, scene.meshes[m].triangles);
@@ -83,29 +89,50 @@ std::vector<EdgeAdjacency> sceneEdgeAdjacency(const Scene& scene) {
     return adjacency;
 }
 
-std::shared_ptr<const std::vector<EdgeAdjacency>> cachedSceneEdgeAdjacency(const Scene& scene) {
-    struct Entry {
-        std::vector<Mesh> meshes;
-        std::vector<bool> used;
-        std::shared_ptr<const std::vector<EdgeAdjacency>> adjacency;
-    };
-    static std::mutex mutex;
-    static Entry last;
-    std::vector<bool> used(scene.meshes.size(), false);
-    for (const MeshInstance& instance : scene.instances) used[instance.mesh] = true;
-    const auto sameMeshes = [&] {
-        if (last.meshes.size() != scene.meshes.size() || last.used != used) return false;
-        for (size_t m = 0; m < scene.meshes.size(); ++m) {
-            if (last.meshes[m].positions != scene.meshes[m].positions || last.meshes[m].triangles != scene.meshes[m].triangles)
-                return false;
-        }
-        return true;
-    };
-    const std::lock_guard lock(mutex);
-    if (!last.adjacency || !sameMeshes()) {
-        last = {scene.meshes, std::move(used), std::make_shared<const std::vector<EdgeAdjacency>>(sceneEdgeAdjacency(scene))};
+namespace {
+
+// What an adjacency depends on: which meshes are used, and their positions and triangles
+// (empty for the unused ones, which get no adjacency).
+struct MeshTopology {
+    std::vector<bool> used;
+    std::vector<std::vector<glm::vec3>> positions;
+    std::vector<std::vector<glm::uvec3>> triangles;
+};
+
+bool sameTopology(const MeshTopology& t, const Scene& scene, const std::vector<bool>& used) {
+    if (t.used != used) return false;
+    for (size_t m = 0; m < used.size(); ++m) {
+        if (used[m] && (t.positions[m] != scene.meshes[m].positions || t.triangles[m] != scene.meshes[m].triangles)) return false;
     }
-    return last.adjacency;
+    return true;
+}
+
+MeshTopology topologyOf(const Scene& scene, std::vector<bool> used) {
+    MeshTopology t{std::move(used), std::vector<std::vector<glm::vec3>>(scene.meshes.size()),
+                   std::vector<std::vector<glm::uvec3>>(scene.meshes.size())};
+    for (size_t m = 0; m < t.used.size(); ++m) {
+        if (t.used[m]) t.positions[m] = scene.meshes[m].positions, t.triangles[m] = scene.meshes[m].triangles;
+    }
+    return t;
+}
+
+}  // namespace
+
+std::shared_ptr<const std::vector<EdgeAdjacency>> cachedSceneEdgeAdjacency(const Scene& scene) {
+    static std::mutex mutex;
+    static MeshTopology lastTopology;
+    static std::shared_ptr<const std::vector<EdgeAdjacency>> lastAdjacency;
+    std::vector<bool> used = usedMeshes(scene);
+    {
+        const std::lock_guard lock(mutex);
+        if (lastAdjacency && sameTopology(lastTopology, scene, used)) return lastAdjacency;
+    }
+    // Built outside the lock: its parallel loop may run other tasks on this thread meanwhile.
+    auto adjacency = std::make_shared<const std::vector<EdgeAdjacency>>(sceneEdgeAdjacency(scene));
+    MeshTopology topology = topologyOf(scene, std::move(used));
+    const std::lock_guard lock(mutex);
+    lastTopology = std::move(topology), lastAdjacency = adjacency;
+    return adjacency;
 }
 
 }  // namespace shadowlab

@@ -50,9 +50,8 @@ int clipAgainst(const HalfSpace& h, const glm::dvec4* in, int n, glm::dvec4* out
 // stop that far short of the light).
 LightPolygon projectOccluder(const LightGrid& grid, int view, const glm::dvec3 (&triangle)[3]) {
     const LightView& v = grid.views[view];
-    const glm::dmat4 clipFromWorld = v.clipFromWorld();
     glm::dvec4 polygon[8], next[8];
-    for (int k = 0; k < 3; ++k) polygon[k] = clipFromWorld * glm::dvec4(triangle[k], 1.0);
+    for (int k = 0; k < 3; ++k) polygon[k] = grid.clipFromWorld[size_t(view)] * glm::dvec4(triangle[k], 1.0);
     const double side = 1.0 + 2.0 / grid.resolution;   // one texel, in normalised device units
     // |x|, |y| <= side * w; and w >= minDepth, since clip space w is the view depth of a
     // perspective view (glm::frustumRH_NO). An orthographic view has w = 1 everywhere.

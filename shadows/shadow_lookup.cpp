@@ -71,9 +71,11 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
 
 double medianTexelDensity(const ShadowLookup& lookup) {
     std::vector<float> served;
-    for (size_t k = 0; k < lookup.mapIndex.size(); ++k) {
-        const int i = int(k % size_t(lookup.width)), j = int(k / size_t(lookup.width));
-        if (lookup.mapIndex[k] >= 0 && inDensitySample(i, j)) served.push_back(lookup.texelDensity[k]);
+    const size_t width = size_t(lookup.width), height = width ? lookup.mapIndex.size() / width : 0;
+    for (size_t j = 0; j < height; j += kDensitySampleStride) {
+        for (size_t i = 0; i < width; i += kDensitySampleStride) {
+            if (lookup.mapIndex[j * width + i] >= 0) served.push_back(lookup.texelDensity[j * width + i]);
+        }
     }
     if (served.empty()) return 0.0;
     std::nth_element(served.begin(), served.begin() + served.size() / 2, served.end());

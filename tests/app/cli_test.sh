@@ -120,10 +120,18 @@ expect_error "--aov into a missing directory" render sphere-box "${tiny[@]}" -o 
 expect_no_file "$scratch/x.png"
 expect_error "--error-map into a missing directory" render sphere-box "${tiny[@]}" -o "$scratch/x.png" --error-map "$scratch/missing/e.png"
 expect_no_file "$scratch/x.png"
+expect_error "--json into a missing directory" render sphere-box "${tiny[@]}" -o "$scratch/x.png" --error-map "$scratch/e.png" \
+    --json "$scratch/missing/e.json"
+expect_no_file "$scratch/x.png"
+expect_no_file "$scratch/e.png"
 
-run render sphere-box --technique none "${tiny[@]}" -o "$scratch/ok.png"
+run render sphere-box --technique none "${tiny[@]}" -o "$scratch/ok.png" --aov "$scratch/ok.exr"
 if [ "$rc" -eq 0 ]; then pass; else fail "tiny render exited $rc: $(cat "$err")"; fi
 expect_png "$scratch/ok.png"
+# compare too: its JSON cannot be written, so the heat map is not written either.
+expect_error "compare --json into a missing directory" compare "$scratch/ok.exr" "$scratch/ok.exr" \
+    --heatmap "$scratch/h.png" --json "$scratch/missing/h.json"
+expect_no_file "$scratch/h.png"
 leftovers=$(find "$scratch" -maxdepth 1 -name '.*.tmp.*' | wc -l)
 if [ "$leftovers" -eq 0 ]; then pass; else fail "$leftovers temporary file(s) left in $scratch"; fi
 

@@ -32,8 +32,9 @@ void checkFit(const LightView& view, const GBuffer& g, const WorldGeometry& worl
     }
     CHECK(receivers > 1000);
     CHECK(outside == 0);
-    // Tight: the default margin is 2 texels of a 2048 map, 2 / 1024 of the NDC range.
-    const double margin = 2.0 * 2.0 / 2048.0;
+    // Tight: within the default margin (2 texels of a 2048 map) of every side, in NDC units.
+    const LightFitOptions defaults;
+    const double margin = 2.0 * defaults.marginTexels / defaults.resolution;
     CHECK(lowest.x < -1.0 + 1.01 * margin);
     CHECK(lowest.y < -1.0 + 1.01 * margin);
     CHECK(highest.x > 1.0 - 1.01 * margin);

@@ -75,7 +75,7 @@ TEST_CASE("buildGBuffer puts P on the triangle plane and the pixel ray, N unit a
             const glm::dvec3 v0 = vertex(world, t, 0), v1 = vertex(world, t, 1), v2 = vertex(world, t, 2);
             const glm::dvec3 planeNormal = glm::normalize(glm::cross(v1 - v0, v2 - v0));
             const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            const RayD ray = pixelRay(camera, i, j);
+            const RayD ray = PixelRays(camera)(i, j);
             // P is the exact point rounded to float: within sqrt(3) * 2^-24 * |P| ~ 1e-6 m.
             CHECK(std::abs(glm::dot(planeNormal, P - v0)) < 1e-6);
             CHECK(glm::length(glm::cross(P - ray.origin, glm::normalize(ray.direction))) < 1e-6);

@@ -256,9 +256,17 @@ TEST_CASE("fins: outer quads and fans tile the band of width B around a convex o
     REQUIRE(fins.edges.size() == 4);
     const double chordFans = 4.0 * 8.0 * 0.5 * kFinWidth * kFinWidth * std::sin(std::numbers::pi / 16.0);
     CHECK(area(fins.outer) == doctest::Approx(8.0 * kFinWidth + chordFans).epsilon(1e-6));
-    CHECK(chordFans == doctest::Approx(std::numbers::pi * kFinWidth * kFinWidth).epsilon(0.007));
-    // The outer fins lie outside the square, within B of it; the fans join each corner's
-    // two quads: their first and last far points are the quads' far ends.
+    // The fans join each corner's two quads: the quads' far ends at a corner are also a
+    // fan's first and last far points, so each appears twice among the outer vertices.
+    for (const float sx : {-1.0f, 1.0f}) {
+        for (const float sz : {-1.0f, 1.0f}) {
+            for (const glm::vec3 end : {glm::vec3(sx * (1 + float(kFinWidth)), 5, sz), glm::vec3(sx, 5, sz * (1 + float(kFinWidth)))}) {
+                const auto same = [&](const glm::vec3& p) { return glm::length(p - end) < 1e-6f; };
+                CHECK(std::count_if(fins.outer.positions.begin(), fins.outer.positions.end(), same) == 2);
+            }
+        }
+    }
+    // The outer fins lie outside the square, within B of it.
     for (const glm::vec3& p : fins.outer.positions) {
         const double outside = glm::length(glm::max(glm::abs(glm::dvec2(p.x, p.z)) - 1.0, 0.0));
         CHECK(outside <= kFinWidth + 1e-6);
@@ -290,7 +298,12 @@ TEST_CASE("fins: where more than two silhouette edges meet, Chan and Durand's co
             CHECK(kind->weights[t.x] == 0.5f);
             CHECK(kind->weights[t.y] == 0.0f);
             CHECK(kind->weights[t.z] == 0.0f);
-            CHECK(glm::length(glm::dvec3(kind->positions[t.y]) - v) == doctest::Approx(kFinWidth).epsilon(1e-5));
+            // The edge's own fin line: B long, perpendicular to the edge.
+            const glm::dvec3 line = glm::dvec3(kind->positions[t.y]) - v;
+            const SilhouetteEdge& e = fins.edges[kind->owner[k]];
+            const glm::dvec3 along = glm::normalize(glm::dvec3(positions[e.to]) - glm::dvec3(positions[e.from]));
+            CHECK(glm::length(line) == doctest::Approx(kFinWidth).epsilon(1e-5));
+            CHECK(std::abs(glm::dot(line, along)) < 1e-6);
             corners.push_back(glm::dvec3(kind->positions[t.z]));
         }
         REQUIRE(corners.size() == 4);
