@@ -20,7 +20,8 @@ struct Attachments {
 
 class Framebuffer {
 public:
-    // Throws std::invalid_argument unless 1 <= width, height <= kMaxViewport.
+    // Cleared to depth 1, stencil 0, colour 0 and primitive id 0. Throws
+    // std::invalid_argument unless 1 <= width, height <= kMaxViewport.
     Framebuffer(int width, int height, Attachments attachments = {});
 
     int width() const { return width_; }

@@ -13,8 +13,7 @@ namespace {
 std::vector<float> depthLayer(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
                               const glm::mat4& clipFromWorld,
                               const DepthMapSettings& settings, raster::CullMode cull, raster::SimdLevel simd) {
-    raster::Framebuffer framebuffer(settings.size, settings.size);
-    framebuffer.clearDepth(1.0f);
+    raster::Framebuffer framebuffer(settings.size, settings.size);   // depth cleared to 1
     raster::PipelineState state;
     state.cull = cull;
     state.offset = settings.offset;
