@@ -89,7 +89,8 @@ BenchResults runBench(const BenchOptions& options) {
                 PassTiming light = timeDepthPass(options, world, lightClipFromWorld(scene), 2048, 2048);
                 light.scene = name, light.pass = "light 2048x2048", light.threads = threads;
                 results.passes.push_back(light);
-                PassTiming camera = timeDepthPass(options, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
+                PassTiming camera =
+                    timeDepthPass(options, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
                 camera.scene = name, camera.threads = threads;
                 camera.pass = "camera " + std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height);
                 results.passes.push_back(camera);

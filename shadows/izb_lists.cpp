@@ -2,10 +2,10 @@
 // RTR4 Figure 7.30, lower left: "for each texel a list of all dots inside its grid cell").
 //
 // Built as a counting sort rather than as linked lists with atomic heads (as the GPU
-// versions in RTR4 7.9 do), because the order of an atomic list depends on timing: count the receivers per texel, turn the counts into
-// offsets by an exclusive prefix sum, then place each receiver at its texel's next free
-// slot, in receiver order. Every list is therefore sorted by pixel, whatever the number of
-// threads; the three passes are linear and take a few milliseconds for a million receivers.
+// versions in RTR4 7.9 do), because the order of an atomic list depends on timing: count
+// the receivers per texel, turn the counts into offsets by an exclusive prefix sum, then
+// place each receiver at its texel's next free slot, in receiver order. Every list is
+// therefore sorted by pixel, whatever the number of threads; the three passes are linear.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
