@@ -56,6 +56,31 @@ std::vector<bool> usedMeshes(const Scene& scene) {
     return used;
 }
 
+// What an adjacency depends on: which meshes are used, and their positions and triangles
+// (empty for the unused ones, which get no adjacency).
+struct MeshTopology {
+    std::vector<bool> used;
+    std::vector<std::vector<glm::vec3>> positions;
+    std::vector<std::vector<glm::uvec3>> triangles;
+};
+
+bool sameTopology(const MeshTopology& t, const Scene& scene, const std::vector<bool>& used) {
+    if (t.used != used) return false;
+    for (size_t m = 0; m < used.size(); ++m) {
+        if (used[m] && (t.positions[m] != scene.meshes[m].positions || t.triangles[m] != scene.meshes[m].triangles)) return false;
+    }
+    return true;
+}
+
+MeshTopology topologyOf(const Scene& scene, std::vector<bool> used) {
+    MeshTopology t{std::move(used), std::vector<std::vector<glm::vec3>>(scene.meshes.size()),
+                   std::vector<std::vector<glm::uvec3>>(scene.meshes.size())};
+    for (size_t m = 0; m < t.used.size(); ++m) {
+        if (t.used[m]) t.positions[m] = scene.meshes[m].positions, t.triangles[m] = scene.meshes[m].triangles;
+    }
+    return t;
+}
+
 }  // namespace
 
 EdgeAdjacency buildEdgeAdjacency(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles) {
@@ -88,35 +113,6 @@ std::vector<EdgeAdjacency> sceneEdgeAdjacency(const Scene& scene) {
     });
     return adjacency;
 }
-
-namespace {
-
-// What an adjacency depends on: which meshes are used, and their positions and triangles
-// (empty for the unused ones, which get no adjacency).
-struct MeshTopology {
-    std::vector<bool> used;
-    std::vector<std::vector<glm::vec3>> positions;
-    std::vector<std::vector<glm::uvec3>> triangles;
-};
-
-bool sameTopology(const MeshTopology& t, const Scene& scene, const std::vector<bool>& used) {
-    if (t.used != used) return false;
-    for (size_t m = 0; m < used.size(); ++m) {
-        if (used[m] && (t.positions[m] != scene.meshes[m].positions || t.triangles[m] != scene.meshes[m].triangles)) return false;
-    }
-    return true;
-}
-
-MeshTopology topologyOf(const Scene& scene, std::vector<bool> used) {
-    MeshTopology t{std::move(used), std::vector<std::vector<glm::vec3>>(scene.meshes.size()),
-                   std::vector<std::vector<glm::uvec3>>(scene.meshes.size())};
-    for (size_t m = 0; m < t.used.size(); ++m) {
-        if (t.used[m]) t.positions[m] = scene.meshes[m].positions, t.triangles[m] = scene.meshes[m].triangles;
-    }
-    return t;
-}
-
-}  // namespace
 
 std::shared_ptr<const std::vector<EdgeAdjacency>> cachedSceneEdgeAdjacency(const Scene& scene) {
     static std::mutex mutex;

@@ -39,7 +39,8 @@ Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal,
         return h.w == 0.0 ? INFINITY : 1.0 - offset / glm::length(glm::dvec3(h) - origin);
     };
     // Decide per pixel in parallel (each writes only its own bytes), count the survivors in
-    // pixel order, then fill each one's slot in parallel.
+    // pixel order, then fill each one's slot in parallel; a survivor's segment is computed
+    // again there, which costs less than keeping an origin for every pixel.
     visibility.assign(g.pixelCount(), 0.0f);
     std::vector<uint8_t> keep(g.pixelCount(), 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount(), 4096), [&](const tbb::blocked_range<size_t>& r) {

@@ -71,10 +71,11 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
 
 double medianTexelDensity(const ShadowLookup& lookup) {
     std::vector<float> served;
-    const size_t width = size_t(lookup.width), height = width ? lookup.mapIndex.size() / width : 0;
-    for (size_t j = 0; j < height; j += kDensitySampleStride) {
-        for (size_t i = 0; i < width; i += kDensitySampleStride) {
-            if (lookup.mapIndex[j * width + i] >= 0) served.push_back(lookup.texelDensity[j * width + i]);
+    const int height = lookup.width ? int(lookup.mapIndex.size()) / lookup.width : 0;
+    for (int j = 0; j < height; ++j) {
+        for (int i = 0; i < lookup.width; ++i) {
+            const size_t k = size_t(j) * size_t(lookup.width) + size_t(i);
+            if (lookup.mapIndex[k] >= 0 && inDensitySample(i, j)) served.push_back(lookup.texelDensity[k]);
         }
     }
     if (served.empty()) return 0.0;
