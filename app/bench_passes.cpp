@@ -8,13 +8,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "app/render.h"
+#include "frame/render.h"
 #include "app/timing.h"
 #include "raster/rasterizer.h"
 #include "raster/thread_count.h"
 #include "scenes/camera.h"
 #include "scenes/scene_file.h"
-#include "shadows/reference.h"
+#include "shadows/reference/reference.h"
 
 namespace shadowlab {
 namespace {

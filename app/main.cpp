@@ -14,10 +14,10 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_passes.h"
-#include "app/render.h"
+#include "frame/render.h"
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
-#include "app/score.h"
+#include "frame/score.h"
 #include "app/sweep.h"
 #include "app/sweep_plot.h"
 #include "raster/thread_count.h"

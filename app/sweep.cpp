@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <tbb/info.h>
 
-#include "app/render.h"
-#include "app/score.h"
+#include "frame/render.h"
+#include "frame/score.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "app/render.h"
+#include "frame/render.h"
 #include "app/timing.h"
 #include "raster/rasterizer.h"
 #include "shading/compare.h"

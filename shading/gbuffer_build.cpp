@@ -4,7 +4,7 @@
 // snapping and perspective-correct interpolation error; intersecting the exact pixel-centre
 // ray with the triangle's plane in double gives the surface point to within the final
 // rounding to float (half an ulp per component). The shadow reference relies on that bound
-// for its ray offset (shadows/reference.cpp).
+// for its ray offset (shadows/reference/reference.cpp).
 //
 // Threads own rows (tbb::parallel_for over j); every pixel is written exactly once from
 // inputs no other pixel writes, so the result is the same for any thread count.

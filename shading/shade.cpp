@@ -1,5 +1,5 @@
 // Deferred shading: ambient plus one light, with visibility supplied by a shadow technique
-// (or by the exact reference, shadows/reference.h).
+// (or by the exact reference, shadows/reference/reference.h).
 //
 // The ambient term treats Environment::ambient as a constant radiance arriving from every
 // direction: a Lambertian surface under uniform radiance La reflects albedo * La (the

@@ -2,13 +2,13 @@
 
 #include <stdexcept>
 
-#include "shadows/fins.h"
-#include "shadows/izb.h"
-#include "shadows/planar.h"
-#include "shadows/reference.h"
-#include "shadows/shadow_map_techniques.h"
-#include "shadows/shadow_volume.h"
-#include "shadows/soft_shadow_techniques.h"
+#include "shadows/fins/fins.h"
+#include "shadows/izb/izb.h"
+#include "shadows/planar/planar.h"
+#include "shadows/reference/reference.h"
+#include "shadows/maps/shadow_map_techniques.h"
+#include "shadows/volumes/shadow_volume.h"
+#include "shadows/filtered/soft_shadow_techniques.h"
 
 namespace shadowlab {
 namespace {

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "app/score.h"
+#include "frame/score.h"
 #include "app/sweep.h"
 #include "scenes/scene_file.h"
-#include "shadows/reference.h"
+#include "shadows/reference/reference.h"
 
 using namespace shadowlab;
 

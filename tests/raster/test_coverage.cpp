@@ -7,7 +7,7 @@
 #include <numeric>
 #include <random>
 
-#include "raster_test_util.h"
+#include "tests/raster/raster_test_util.h"
 
 using namespace shadowlab;
 using namespace shadowlab::raster;

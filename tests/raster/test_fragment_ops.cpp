@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "raster_test_util.h"
+#include "tests/raster/raster_test_util.h"
 
 using namespace shadowlab;
 using namespace shadowlab::raster;

@@ -8,7 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "raster_test_util.h"
+#include "tests/raster/raster_test_util.h"
 
 using namespace shadowlab;
 using namespace shadowlab::raster;

@@ -13,7 +13,7 @@
 
 #include "scenes/camera.h"
 #include "scenes/scene_file.h"
-#include "instance_bounds.h"
+#include "tests/scenes/instance_bounds.h"
 
 using namespace shadowlab;
 using shadowlab::test::Box;

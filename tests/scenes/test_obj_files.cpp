@@ -5,7 +5,7 @@
 #include <doctest/doctest.h>
 #include <tiny_obj_loader.h>
 
-#include "scene_test_files.h"
+#include "tests/scenes/scene_test_files.h"
 #include "scenes/obj_reader.h"
 #include "scenes/obj_writer.h"
 #include "scenes/scene_file.h"

@@ -5,7 +5,7 @@
 
 #include <doctest/doctest.h>
 
-#include "scene_test_files.h"
+#include "tests/scenes/scene_test_files.h"
 #include "scenes/ply_reader.h"
 
 using namespace shadowlab;

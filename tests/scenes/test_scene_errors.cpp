@@ -7,7 +7,7 @@
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
-#include "scene_test_files.h"
+#include "tests/scenes/scene_test_files.h"
 #include "scenes/scene_file.h"
 
 using namespace shadowlab;

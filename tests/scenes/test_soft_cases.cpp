@@ -9,7 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "scenes/scene_file.h"
-#include "instance_bounds.h"
+#include "tests/scenes/instance_bounds.h"
 
 using namespace shadowlab;
 using shadowlab::test::Box;

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "shading/compare.h"
-#include "visibility_row.h"
+#include "tests/shading/visibility_row.h"
 
 using namespace shadowlab;
 using shadowlab::test::visibilityRow;

@@ -10,7 +10,7 @@
 
 #include <stb/stb_image.h>
 
-#include "scratch_directory.h"
+#include "tests/scratch_directory.h"
 #include "shading/image_io.h"
 
 using namespace shadowlab;

@@ -1,0 +1,82 @@
+#include "frame/render.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "raster/rasterizer.h"
+#include "scenes/camera.h"
+#include "shading/gbuffer_build.h"
+#include "shading/shade.h"
+
+namespace shadowlab {
+namespace {
+
+void requireFinite(const glm::vec3& v, const char* what) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+        throw std::invalid_argument(std::string(what) + " must be three finite numbers");
+    }
+}
+
+// Only a disk has a radius: giving one to a point light would silently change nothing.
+void applyLightRadius(Scene& scene, float radius) {
+    if (!(radius > 0.0f && std::isfinite(radius)))
+        throw std::invalid_argument("--light-radius must be a finite number > 0, got " + (std::ostringstream() << radius).str());
+    if (scene.lights.empty()) throw std::invalid_argument("--light-radius: the scene has no light");
+    if (scene.lights[0].type != LightType::Disk)
+        throw std::invalid_argument("--light-radius: the scene's first light is not a disk light");
+    scene.lights[0].radius = radius;
+}
+
+}  // namespace
+
+void applyOverrides(Scene& scene, const SceneOverrides& o) {
+    Camera& c = scene.camera;
+    if (o.width) c.width = *o.width;
+    if (o.height) c.height = *o.height;
+    if (o.eye) requireFinite(*o.eye, "--eye"), c.eye = *o.eye;
+    if (o.target) requireFinite(*o.target, "--target"), c.target = *o.target;
+    if (o.fovyDeg) c.fovyDeg = *o.fovyDeg;
+    if (c.width < 1 || c.height < 1 || c.width > raster::kMaxViewport || c.height > raster::kMaxViewport) {
+        throw std::invalid_argument("image size must be within 1.." + std::to_string(raster::kMaxViewport));
+    }
+    if (!(c.fovyDeg > 0.0f && c.fovyDeg < 180.0f)) throw std::invalid_argument("--fovy must be in (0, 180) degrees");
+    if (c.eye == c.target) throw std::invalid_argument("the eye and the target must differ");
+    if (o.lightPosition) {
+        requireFinite(*o.lightPosition, "--light-pos");
+        if (scene.lights.empty()) throw std::invalid_argument("--light-pos: the scene has no light");
+        scene.lights[0].position = *o.lightPosition;
+    }
+    if (o.lightRadius) applyLightRadius(scene, *o.lightRadius);
+}
+
+GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd) {
+    raster::Framebuffer fb(camera.width, camera.height, {.primitiveId = true});
+    fb.clearPrimitiveId(kNoTriangle);
+    raster::PipelineState state;
+    state.cull = raster::CullMode::None;
+    state.output = raster::FragmentOutput::PrimitiveId;
+    raster::DrawCall call;
+    call.vertices.positions = world.positions;
+    call.triangles = world.triangles;
+    call.clipFromObject = clipFromWorld(camera);
+    raster::Rasterizer rasterizer(simd);
+    rasterizer.draw(fb, state, call);
+    return buildGBuffer(world, camera, fb.primitiveIdImage(), fb.depthImage());
+}
+
+Frame renderFrame(const Scene& scene, const WorldGeometry& world, const Technique& technique,
+                  const FrameSettings& settings) {
+    if (scene.lights.empty()) throw std::invalid_argument("the scene has no light to cast shadows");
+    const TechniqueParams params(technique.name, technique.params, settings.params);
+    Frame frame;
+    frame.gbuffer = renderGBuffer(world, scene.camera, settings.simd);
+    const auto start = std::chrono::steady_clock::now();
+    frame.shadow = technique.run({scene, world, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir});
+    frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
+    return frame;
+}
+
+}  // namespace shadowlab

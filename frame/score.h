@@ -1,0 +1,49 @@
+// Scoring a technique against the exact reference (conventions.md, "Figures and errors"):
+// the work `shadowlab render --error-map` and `shadowlab sweep` share. The reference is
+// the visibility of the same camera view by the technique's Technique::referenceName
+// (`reference` for hard shadows, `reference-soft` for soft ones); a frame is scored by
+// compareImages() on its V channel over the reference's hit pixels.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "frame/render.h"
+#include "shading/compare.h"
+#include "shading/image_io.h"
+
+namespace shadowlab {
+
+// The channels a frame is scored on: hit (from its G-buffer) and V.
+ImageChannels visibilityImage(const Frame& frame);
+
+// Renders the scene with the technique named referenceName (at its default settings) and
+// returns its visibilityImage().
+ImageChannels renderReferenceVisibility(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd,
+                                        const std::string& referenceName = "reference");
+
+// The frame's V against the reference's (compareImages with the default options).
+ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame);
+
+// Error-map colours, 8-bit sRGB. Red and blue as in `shadowlab compare`'s heat map, at
+// full saturation so that they stand out from the grey underneath.
+inline constexpr std::array<uint8_t, 3> kFalseShadowColour{255, 0, 0};    // acne
+inline constexpr std::array<uint8_t, 3> kFalseLightColour{0, 160, 255};   // leaks, peter-panning
+
+// RGB bytes (row 0 at the top) for writePng(): the tone-mapped luminance of `shaded`
+// (the technique's image, linear radiance) encoded as sRGB and halved, so that the
+// scene stays readable behind the marks; over it, pixels the technique misclassifies
+// (CompareOptions::litThreshold, over the reference's hit pixels) in kFalseShadowColour
+// or kFalseLightColour.
+std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,
+                                   const std::vector<glm::vec3>& shaded);
+
+// One JSON object: {"scene", "technique", "reference", "settings": {name: value},
+// "technique_ms", "stats": {name: value}, "errors": formatJson(figures)}.
+std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
+                            const std::map<std::string, std::string>& settings, const Frame& frame,
+                            const ErrorFigures& figures);
+
+}  // namespace shadowlab

@@ -1,0 +1,80 @@
+// Stratified area-light sampling; see light_sampling.h for the sources.
+#include "shading/light_sampling.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "shading/lights.h"
+
+namespace shadowlab {
+
+Pcg32::Pcg32(uint64_t seed, uint64_t stream) : increment_((stream << 1u) | 1u) {
+    // pcg32_srandom_r: step once, add the seed, step again.
+    next();
+    state_ += seed;
+    next();
+}
+
+uint32_t Pcg32::next() {
+    const uint64_t old = state_;
+    state_ = old * 6364136223846793005ull + increment_;
+    const uint32_t xorshifted = uint32_t(((old >> 18u) ^ old) >> 27u);
+    const uint32_t rotation = uint32_t(old >> 59u);
+    return (xorshifted >> rotation) | (xorshifted << ((32u - rotation) & 31u));
+}
+
+double Pcg32::nextDouble() { return double(next()) * 0x1p-32; }
+
+glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
+    const glm::dvec2 s = 2.0 * u - 1.0;  // [-1, 1]^2
+    if (s.x == 0.0 && s.y == 0.0) {
+        return glm::dvec2(0.0);
+    }
+    // The square of "radius" max(|x|, |y|) maps to the circle of that radius; the position
+    // along the square's side maps linearly to the angle within the matching quarter.
+    const double quarter = std::numbers::pi / 4.0;
+    const bool nearXAxis = std::abs(s.x) > std::abs(s.y);
+    const double r = nearXAxis ? s.x : s.y;
+    const double phi = nearXAxis ? quarter * (s.y / s.x) : 2.0 * quarter - quarter * (s.x / s.y);
+    return r * glm::dvec2(std::cos(phi), std::sin(phi));
+}
+
+AreaLightFrame areaLightFrame(const Light& light) {
+    AreaLightFrame frame;
+    frame.centre = glm::dvec3(light.position);
+    if (light.type == LightType::Rectangle) {
+        frame.axisA = glm::dvec3(light.halfEdgeU);
+        frame.axisB = glm::dvec3(light.halfEdgeV);
+        return frame;
+    }
+    if (light.type != LightType::Disk) {
+        throw std::invalid_argument("areaLightFrame: not an area light");
+    }
+    // Orthonormal basis around the normal without a branch on an arbitrary "up" vector:
+    // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an Orthonormal
+    // Basis, Revisited", JCGT 6(1), 2017.
+    const glm::dvec3 n = areaLightNormal(light);
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z);
+    const double b = n.x * n.y * a;
+    const double radius = double(light.radius);
+    frame.disk = true;
+    frame.axisA = radius * glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    frame.axisB = radius * glm::dvec3(b, sign + n.y * n.y * a, -n.y);
+    return frame;
+}
+
+glm::dvec3 areaLightPoint(const AreaLightFrame& frame, const glm::dvec2& u) {
+    const glm::dvec2 m = frame.disk ? concentricSquareToDisk(u) : 2.0 * u - 1.0;
+    return frame.centre + m.x * frame.axisA + m.y * frame.axisB;
+}
+
+glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng) {
+    const double jitterA = rng.nextDouble();
+    const double jitterB = rng.nextDouble();
+    return glm::dvec2((a + jitterA) / n, (b + jitterB) / n);
+}
+
+}  // namespace shadowlab
+

@@ -1,0 +1,50 @@
+// The first two steps of percentage-closer soft shadows (Fernando 2005, "Percentage-Closer
+// Soft Shadows", SIGGRAPH sketch, steps 1 and 2; Real-Time Rendering, 4th ed., 7.6):
+//
+//   1. blocker search: the map texels inside the light's cone from the receiver, cut at the
+//      near plane (soft_shadow_map.h), are tested with a rotated Poisson disk of taps;
+//      those nearer the light than the receiver are blockers, and their mean distance
+//      from the light is d_o. No blocker: the receiver is fully lit and step 3 is skipped.
+//   2. penumbra estimate: eq. 7.6, w_sample = w_light (d_r - d_o) / d_r, in map texels.
+//
+// Step 3 (pcss.cpp: PCF; filtered_shadow_map.cpp: a summed-area-table box) filters over
+// that width. The taps compare against the receiver's plane (receiver-plane depth bias,
+// RTR 7.5, Figure 7.24 middle), since a search region many texels wide on a slanted
+// receiver would otherwise find the receiver itself.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shadows/maps/shadow_bias.h"
+#include "shadows/filtered/soft_shadow_map.h"
+#include "shadows/technique_params.h"
+
+namespace shadowlab {
+
+struct BlockerSearchSettings {
+    int taps = 16;                  // Poisson taps of the search
+    double region = 1.0;            // fraction of Fernando's region (the full light cone)
+};
+
+struct PenumbraEstimate {
+    int blockers = 0;               // taps that found an occluder
+    double blockerDistance = 0.0;   // d_o: their mean distance from the light, m
+    glm::dvec2 widthTexels{0.0};    // eq. 7.6 per map axis (0 without blockers)
+};
+
+// search-taps, search-region.
+std::vector<ParamSpec> blockerSearchParamSpecs();
+BlockerSearchSettings readBlockerSearch(const TechniqueParams& params);
+
+// The receiver as the blocker search and PCF compare it: on its own plane.
+MapReceiver planeReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N);
+
+// disk: the search's Poisson taps on the unit disk (makePcfKernel), rotated per pixel.
+PenumbraEstimate estimatePenumbra(const SoftShadowMap& soft, const MapReceiver& receiver, double receiverDistance,
+                                  const BlockerSearchSettings& settings, const std::vector<glm::dvec2>& disk,
+                                  uint64_t pixel);
+
+}  // namespace shadowlab

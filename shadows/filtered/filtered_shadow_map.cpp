@@ -1,0 +1,184 @@
+// The filtered shadow maps `vsm`, `esm`, `evsm` and `msm` (Real-Time Rendering, 4th ed.,
+// section 7.7): one mechanism, parameterised by the moments it stores (moments.h):
+//
+//   1. the depth map from the light's centre, in linear depth (soft_shadow_map.h);
+//   2. every texel's moments (moments.h);
+//   3. filtering (moment_filter.h): a separable box or Gaussian blur of a fixed width, or a
+//      summed-area table that serves a box of any width per pixel;
+//   4. per camera pixel, the filtered moments at the receiver and its linear depth t give V.
+//
+// width=pcss widens the box per pixel as PCSS would (RTR 7.7: "These filtered approaches
+// can all be used in conjunction with PCSS to provide variable-width penumbrae"; Lauritzen,
+// GPU Gems 3 ch. 8; Annen et al. 2008, section 5): the blocker search and eq. 7.6 of
+// blocker_search.h give the width, and the summed-area table the box, so it needs
+// filter=sat. A fixed width is a constant penumbra, as PCF's (RTR 7.5).
+//
+// Every stage runs rows in parallel with one owner per output value and fixed summation
+// orders, so V is the same bytes for any thread count.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "shadows/filtered/blocker_search.h"
+#include "shadows/debug_buffers.h"
+#include "shadows/filtered/moment_filter.h"
+#include "shadows/maps/pcf.h"
+#include "shadows/maps/shadow_map_debug.h"
+#include "shadows/filtered/soft_shadow_techniques.h"
+
+namespace shadowlab {
+namespace {
+
+// The summed-area table must give V to within 2^-10 (a quarter of an 8-bit step).
+constexpr double kSatRelativeErrorLimit = 0x1p-10;
+// Fit margin beyond half the fixed width (or the blocker search's reach): the bilinear
+// lookup reaches one more texel centre.
+constexpr double kFitMarginTexels = 1.5;
+
+struct FilteredSettings {
+    int resolution = 1024;
+    bool summedAreaTable = false;
+    BlurKind blur = BlurKind::Box;
+    int widthTexels = 7;
+    bool pcssWidth = false;
+    BlockerSearchSettings search;
+    MomentSettings moments;
+};
+
+FilteredSettings readSettings(MomentKind kind, const TechniqueParams& p) {
+    const std::string name = momentKindName(kind);
+    FilteredSettings s;
+    s.resolution = p.integer("resolution", 16, 8192);
+    s.summedAreaTable = p.choice("filter", {"blur", "sat"}) == "sat";
+    s.blur = p.choice("blur", {"box", "gaussian"}) == "box" ? BlurKind::Box : BlurKind::Gaussian;
+    s.widthTexels = p.integer("filter-width", 1, 255);
+    if (s.widthTexels % 2 == 0) throw std::invalid_argument(name + ": filter-width must be odd (taps centred on a texel)");
+    s.pcssWidth = p.choice("width", {"fixed", "pcss"}) == "pcss";
+    if (s.pcssWidth && !s.summedAreaTable) {
+        throw std::invalid_argument(name + ": width=pcss needs filter=sat (a box of a different width at every pixel)");
+    }
+    s.search = readBlockerSearch(p);
+    s.moments = readMomentSettings(kind, p);
+    return s;
+}
+
+void checkTablePrecision(const FilteredSettings& s, const MomentMap& moments) {
+    const double bound = satRelativeError(s.moments, moments);
+    if (bound <= kSatRelativeErrorLimit) return;
+    const double logRangeAllowed = std::log(kSatRelativeErrorLimit / (bound / momentDynamicRange(s.moments)));
+    throw std::invalid_argument(
+        std::string(momentKindName(s.moments.kind)) + ": filter=sat cannot resolve V to 2^-10 with these exponents at " +
+        std::to_string(moments.size) + "^2 texels (error bound " + std::to_string(bound) +
+        ", moment_filter.h); the moments' range e^x needs x <= " + std::to_string(logRangeAllowed) +
+        " (esm: exponent; evsm: 4 x the larger exponent)");
+}
+
+struct PixelBuffers {
+    std::vector<float> visibility, widthTexels;
+};
+
+// Step 4 for every pixel: the filtered moments at the receiver, then V.
+PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const FilteredSettings& s,
+                                const MomentMap& blurred, const SummedAreaTable& table) {
+    const GBuffer& g = in.gbuffer;
+    const std::vector<glm::dvec2> searchDisk = makePcfKernel({FilterKind::Poisson, 3, s.search.taps, 1.0}).disk;
+    PixelBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f)};
+    forEachReceiverFacingLight(g, soft, [&](size_t k, const glm::dvec3& P, const glm::dvec3& N, const SoftReceiver& receiver) {
+        glm::dvec2 width(s.widthTexels);
+        if (s.pcssWidth) {
+            const PenumbraEstimate e =
+                estimatePenumbra(soft, planeReceiver(soft, P, N), receiver.distance, s.search, searchDisk, k);
+            if (e.blockers == 0) {
+                out.visibility[k] = 1.0f;
+                return;
+            }
+            width = e.widthTexels;
+        }
+        double m[kMaxMoments];
+        if (s.summedAreaTable) {
+            boxMean(table, receiver.texel - 0.5 * width, receiver.texel + 0.5 * width, m);
+        } else {
+            sampleBilinear(blurred, receiver.texel, m);
+        }
+        out.visibility[k] = float(momentVisibility(s.moments, m, soft.normalised(receiver.distance)));
+        out.widthTexels[k] = float(0.5 * (width.x + width.y));
+    });
+    return out;
+}
+
+// One channel of a moment map as an image, black..white over its own range.
+void writeChannel(const DebugBuffers& debug, const std::string& name, const MomentMap& m, int c) {
+    std::vector<float> v(size_t(m.size) * size_t(m.size));
+    for (size_t k = 0; k < v.size(); ++k) v[k] = float(m.values[k * size_t(m.channels) + size_t(c)]);
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    debug.write(name, m.size, m.size, v, *lo, *hi);
+}
+
+void writeDebug(const ShadowInputs& in, const FilteredSettings& s, const SoftShadowMap& soft, const MomentMap& moments,
+                const MomentMap& blurred, const SummedAreaTable& table, const PixelBuffers& px) {
+    const DebugBuffers debug(in.debugDir, momentKindName(s.moments.kind));
+    if (!debug.enabled()) return;
+    writeDepthMap(debug, "depth", soft.map);
+    debug.write("linear-depth", soft.map.size, soft.map.size, soft.linear, 0.0f, 1.0f);
+    for (int c = 0; c < moments.channels; ++c) {
+        writeChannel(debug, "moment" + std::to_string(c + 1), moments, c);
+        if (!s.summedAreaTable) writeChannel(debug, "filtered" + std::to_string(c + 1), blurred, c);
+    }
+    if (s.summedAreaTable) {
+        // The table of the first moment, (size + 1)^2 with its zero row and column.
+        const MomentMap sat{table.size + 1, table.channels, table.sums};
+        writeChannel(debug, "sat1", sat, 0);
+    }
+    const float widest = *std::max_element(px.widthTexels.begin(), px.widthTexels.end());
+    debug.write("filter-width", in.gbuffer.width, in.gbuffer.height, px.widthTexels, 0.0f, std::max(widest, 1.0f));
+}
+
+ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
+    const FilteredSettings s = readSettings(kind, in.params);
+    const SoftShadowMap soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),
+                                                   kFitMarginTexels + 0.5 * s.widthTexels, s.pcssWidth);
+    const MomentMap moments = momentMap(soft, s.moments);
+    MomentMap blurred;
+    SummedAreaTable table;
+    if (s.summedAreaTable) {
+        checkTablePrecision(s, moments);
+        table = summedAreaTable(moments);
+    } else {
+        blurred = blurMoments(moments, blurWeights(s.blur, s.widthTexels));
+    }
+    const PixelBuffers px = visibilityPerPixel(in, soft, s, blurred, table);
+    writeDebug(in, s, soft, moments, blurred, table, px);
+    ShadowOutputs out;
+    out.visibility = px.visibility;
+    out.stats = {{"resolution", double(s.resolution)},
+                 {"moments", double(moments.channels)},
+                 {"light_near", soft.zNear()},
+                 {"light_far", soft.zFar()}};
+    if (s.summedAreaTable) out.stats.push_back({"sat_relative_error_bound", satRelativeError(s.moments, moments)});
+    return out;
+}
+
+}  // namespace
+
+Technique filteredShadowMapTechnique(MomentKind kind) {
+    std::vector<ParamSpec> params = {
+        {"resolution", kSoftResolutionDefault, "texels per side of the map (16..8192)"},
+        {"filter", "blur", "blur (separable, fixed width) | sat (summed-area table, any width per pixel)"},
+        {"blur", "box", "filter=blur: box | gaussian (sigma = width / 6)"},
+        {"filter-width", "7", "fixed width: taps per side, odd (1..255)"},
+        {"width", "fixed", "fixed | pcss (blocker search and eq. 7.6 per pixel; needs filter=sat)"},
+    };
+    for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
+    for (const ParamSpec& p : momentParamSpecs(kind)) params.push_back(p);
+    const char* const descriptions[] = {
+        "variance shadow map (RTR 7.7, Donnelly and Lauritzen 2006): Chebyshev bound, light-bleeding reduction",
+        "exponential shadow map (RTR 7.7, Annen et al. 2008): filtered e^{cz}",
+        "exponential variance shadow map (Lauritzen and McCool 2008): positive and negative warps",
+        "moment shadow map (Peters and Klein 2015): four moments, Hamburger reconstruction",
+    };
+    return {momentKindName(kind), descriptions[int(kind)], params,
+            [kind](const ShadowInputs& in) { return runFiltered(kind, in); }};
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,97 @@
+// The `pcss` technique: percentage-closer soft shadows (Fernando 2005; Real-Time Rendering,
+// 4th ed., section 7.6). Per camera pixel: the blocker search and the penumbra width of
+// eq. 7.6 (blocker_search.h), then percentage-closer filtering (RTR 7.5) over a rotated
+// Poisson disk of that width (pcf.h). Pixels are independent and rows run in parallel;
+// the only per-pixel randomness is the disk's rotation hashed from the pixel index, so V
+// is the same bytes for any thread count.
+#include <algorithm>
+#include <stdexcept>
+
+#include "shadows/filtered/blocker_search.h"
+#include "shadows/debug_buffers.h"
+#include "shadows/maps/pcf.h"
+#include "shadows/maps/shadow_map_debug.h"
+#include "shadows/filtered/soft_shadow_techniques.h"
+
+namespace shadowlab {
+namespace {
+
+// Below half a texel the disk's taps all fall in the receiver's own texel: the map's
+// resolution, not the light, limits the penumbra there (contact shadows are hard).
+constexpr double kMinFilterRadiusTexels = 0.5;
+// Beyond the blocker search's reach (soft_shadow_map.h), which also bounds the filter's:
+// the PCF radius is never below half a texel and its taps round to the texel they fall in.
+constexpr double kFitMarginTexels = 1.5;
+
+struct PcssBuffers {
+    std::vector<float> visibility, blockerDistance, widthTexels;
+};
+
+PcssBuffers runPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const BlockerSearchSettings& search,
+                        int filterTaps) {
+    const GBuffer& g = in.gbuffer;
+    const std::vector<glm::dvec2> searchDisk = makePcfKernel({FilterKind::Poisson, 3, search.taps, 1.0}).disk;
+    const std::vector<glm::dvec2> filterDisk = makePcfKernel({FilterKind::Poisson, 3, filterTaps, 1.0}).disk;
+    PcssBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f),
+                    std::vector<float>(g.pixelCount(), 0.0f)};
+    forEachReceiverFacingLight(g, soft, [&](size_t k, const glm::dvec3& P, const glm::dvec3& N, const SoftReceiver& receiver) {
+        const MapReceiver r = planeReceiver(soft, P, N);
+        const PenumbraEstimate e = estimatePenumbra(soft, r, receiver.distance, search, searchDisk, k);
+        if (e.blockers == 0) {
+            out.visibility[k] = 1.0f;
+            return;
+        }
+        const glm::dvec2 radius = glm::max(0.5 * e.widthTexels, glm::dvec2(kMinFilterRadiusTexels));
+        out.visibility[k] = float(poissonVisibility(soft.map, r, filterDisk, k, radius));
+        out.blockerDistance[k] = float(e.blockerDistance);
+        out.widthTexels[k] = float(0.5 * (e.widthTexels.x + e.widthTexels.y));
+    });
+    return out;
+}
+
+void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuffers& b) {
+    const DebugBuffers debug(in.debugDir, "pcss");
+    if (!debug.enabled()) return;
+    writeDepthMap(debug, "depth", soft.map);
+    const GBuffer& g = in.gbuffer;
+    debug.write("blocker-distance", g.width, g.height, b.blockerDistance, float(soft.zNear()), float(soft.zFar()));
+    const float widest = *std::max_element(b.widthTexels.begin(), b.widthTexels.end());
+    debug.write("penumbra-width", g.width, g.height, b.widthTexels, 0.0f, std::max(widest, 1.0f));
+}
+
+ShadowOutputs runPcss(const ShadowInputs& in) {
+    const int resolution = in.params.integer("resolution", 16, 8192);
+    const BlockerSearchSettings search = readBlockerSearch(in.params);
+    const int filterTaps = in.params.integer("filter-taps", 1, 128);
+    const SoftShadowMap soft = renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kFitMarginTexels, true);
+    const PcssBuffers b = runPerPixel(in, soft, search, filterTaps);
+    writeDebug(in, soft, b);
+    // Figures in pixel order (one thread): the same for any thread count.
+    size_t penumbra = 0;
+    double widthSum = 0.0;
+    for (size_t k = 0; k < b.widthTexels.size(); ++k) {
+        if (b.blockerDistance[k] > 0.0f) ++penumbra, widthSum += b.widthTexels[k];
+    }
+    ShadowOutputs out;
+    out.visibility = b.visibility;
+    out.stats = {{"resolution", double(resolution)},
+                 {"light_width_texels_at_1m", 0.5 * (soft.lightTexels.x + soft.lightTexels.y)},
+                 {"pixels_with_blockers", double(penumbra)},
+                 {"mean_width_texels", penumbra ? widthSum / double(penumbra) : 0.0},
+                 {"light_near", soft.zNear()},
+                 {"light_far", soft.zFar()}};
+    return out;
+}
+
+}  // namespace
+
+Technique pcssTechnique() {
+    std::vector<ParamSpec> params = {{"resolution", kSoftResolutionDefault, "texels per side of the map (16..8192)"}};
+    for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
+    params.push_back({"filter-taps", "32", "PCF: Poisson taps over the eq. 7.6 width (1..128)"});
+    return {"pcss",
+            "percentage-closer soft shadows (RTR 7.6, Fernando 2005): blocker search, eq. 7.6 width, Poisson PCF",
+            params, runPcss};
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,94 @@
+#include "shadows/filtered/soft_shadow_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "shading/light_sampling.h"
+#include "shadows/light_view.h"
+
+namespace shadowlab {
+namespace {
+
+constexpr double kFarPlaneHeadroom = 1.25;   // far plane / farthest receiver's distance
+
+// Half the light's extent (m) along the unit direction e: the support function of the
+// disk (an ellipse once projected) or of the rectangle.
+double halfExtentAlong(const AreaLightFrame& light, const glm::dvec3& e) {
+    const double a = glm::dot(light.axisA, e), b = glm::dot(light.axisB, e);
+    return light.disk ? std::sqrt(a * a + b * b) : std::abs(a) + std::abs(b);
+}
+
+// w_light in texels at unit distance for a map of `view` (texels per unit of x / (-z) and
+// y / (-z): the projection's scale times half the map).
+glm::dvec2 lightTexelsOf(const AreaLightFrame& frame, const LightView& view, int resolution) {
+    const glm::dmat4 worldFromView = glm::inverse(view.viewFromWorld);
+    const glm::dvec3 mapX = glm::normalize(glm::dvec3(worldFromView[0])), mapY = glm::normalize(glm::dvec3(worldFromView[1]));
+    return glm::dvec2(2.0 * halfExtentAlong(frame, mapX) * view.clipFromView[0][0],
+                      2.0 * halfExtentAlong(frame, mapY) * view.clipFromView[1][1]) *
+           (0.5 * resolution);
+}
+
+// The far plane moved to distance zFar: only the depth row of an OpenGL projection
+// depends on it (z_clip = -(f + n)/(f - n) z - 2 f n / (f - n)).
+LightView withFarPlane(LightView view, double zFar) {
+    const double n = view.zNear;
+    view.zFar = zFar;
+    view.clipFromView[2][2] = -(zFar + n) / (zFar - n);
+    view.clipFromView[3][2] = -2.0 * zFar * n / (zFar - n);
+    return view;
+}
+
+}  // namespace
+
+double SoftShadowMap::distanceOf(float windowDepth) const {
+    // OpenGL window depth of a perspective view, w = f (d - n) / ((f - n) d), inverted.
+    const double n = zNear(), f = zFar();
+    return f * n / (f - double(windowDepth) * (f - n));
+}
+
+SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
+                                  double marginTexels, bool coverBlockerSearch) {
+    const AreaLightFrame frame = areaLightFrame(in.light);
+    const Light centre = pointLightFor(in.light);
+    LightFitOptions fit;
+    fit.resolution = resolution;
+    fit.marginTexels = marginTexels;
+    LightView view = fitLightView(centre, in.gbuffer, in.world, fit);
+    if (coverBlockerSearch) {
+        // The search region (eq. 7.6 at d_o = near) is widest for the farthest receiver and
+        // never wider than 0.5 w_light / near texels from it: refit with that margin, so no
+        // tap of a receiver at the border falls off the map (a widened map only shrinks it).
+        const glm::dvec2 reach = 0.5 * lightTexelsOf(frame, view, resolution) / view.zNear;
+        fit.marginTexels += std::ceil(std::max(reach.x, reach.y));
+        view = fitLightView(centre, in.gbuffer, in.world, fit);
+    }
+    // The fit puts the far plane just behind the farthest receiver, so the surface beyond
+    // it would be clipped to "nothing" (z = 1) within a filter's reach, and the filtered
+    // mean there would fall below the receiver's depth (false shadow). A quarter more
+    // depth keeps the surface's own ramp under every filter (hundreds of texels even at a
+    // grazing light) for a quarter of the depth resolution.
+    view = withFarPlane(view, view.zFar * kFarPlaneHeadroom);
+    SoftShadowMap soft;
+    soft.map = renderDepthMap(in.world, view, {resolution, DepthLayer::First, offset}, in.simd);
+    soft.linear.resize(soft.map.depth.size());
+    tbb::parallel_for(size_t(0), soft.linear.size(), [&](size_t k) {
+        soft.linear[k] = soft.map.depth[k] >= 1.0f ? 1.0f : float(soft.normalised(soft.distanceOf(soft.map.depth[k])));
+    });
+    soft.lightCentre = frame.centre;
+    soft.lightTexels = lightTexelsOf(frame, view, resolution);
+    return soft;
+}
+
+SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N) {
+    const glm::dvec4 t = soft.map.texelFromWorld * glm::dvec4(P, 1.0);
+    const glm::dvec4 v = soft.map.view.viewFromWorld * glm::dvec4(P, 1.0);
+    return {glm::dvec2(t) / t.w, -v.z, glm::dot(N, soft.lightCentre - P) > 0.0};
+}
+
+glm::dvec2 sampleWidthTexels(const SoftShadowMap& soft, double dr, double dOccluder) {
+    return soft.lightTexels * ((dr - dOccluder) / (dr * dOccluder));
+}
+
+}  // namespace shadowlab

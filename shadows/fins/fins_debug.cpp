@@ -1,0 +1,80 @@
+#include "shadows/fins/fins_debug.h"
+
+#include <cstdio>
+
+#include "raster/rasterizer.h"
+
+namespace shadowlab {
+namespace {
+
+std::string layerPrefix(int layer) {
+    char name[32];
+    std::snprintf(name, sizeof name, "layer-%02d-", layer);
+    return name;
+}
+
+// Adds 1 per fin fragment into R, whatever its depth, seen from both sides.
+raster::PipelineState coverageCountState() {
+    raster::PipelineState state;
+    state.cull = raster::CullMode::None;
+    state.depth = {.test = false, .write = false, .func = raster::CompareFunc::Always};
+    state.output = raster::FragmentOutput::ConstantColor;
+    state.colorWriteMask = 0x1;
+    state.blend = {.enabled = true, .equation = raster::BlendEquation::Add, .srcFactor = raster::BlendFactor::One,
+                   .dstFactor = raster::BlendFactor::One};
+    return state;
+}
+
+}  // namespace
+
+FinDebug::FinDebug(std::filesystem::path directory, const std::string& technique, const LightView& view)
+    : debug_(std::move(directory), technique), view_(view) {}
+
+void FinDebug::writePenumbraMap(const std::string& prefix, const PenumbraMap& map, float edgeWeight) const {
+    std::vector<float> weight(map.weight.size(), 0.0f), distance(map.depth.size(), 0.0f);
+    for (size_t t = 0; t < weight.size(); ++t) {
+        if (!map.covered(t)) continue;
+        weight[t] = map.weight[t];
+        distance[t] = float(lightDistanceOfDepth(view_, map.depth[t]));
+    }
+    debug_.write(prefix + "weight", map.size, map.size, weight, 0.0f, edgeWeight);
+    debug_.write(prefix + "depth", map.size, map.size, distance, float(view_.zNear), float(view_.zFar));
+}
+
+void FinDebug::writeLayer(int layer, const DepthMap& hard, const PenumbraMap* inner, const PenumbraMap& outer,
+                          float edgeWeight, const GBuffer& gbuffer, const std::vector<float>& illuminance) const {
+    if (!debug_.enabled()) return;
+    const std::string prefix = layerPrefix(layer);
+    debug_.write(prefix + "shadow-map", hard.size, hard.size, hard.depth, 0.0f, 1.0f);
+    if (inner) writePenumbraMap(prefix + "inner-", *inner, edgeWeight);
+    writePenumbraMap(prefix + "outer-", outer, edgeWeight);
+    debug_.write(prefix + "illuminance", gbuffer.width, gbuffer.height, illuminance, 0.0f, 1.0f);
+}
+
+void FinDebug::writeFinCoverage(const Fins& fins, int size, raster::SimdLevel simd) const {
+    if (!debug_.enabled()) return;
+    raster::Framebuffer framebuffer(size, size, {.color = true});
+    framebuffer.clearDepth(1.0f);
+    framebuffer.clearColor(glm::vec4(0.0f));
+    raster::Rasterizer rasterizer(simd);
+    for (const FinPrimitives* kind : {&fins.inner, &fins.outer}) {
+        raster::DrawCall call;
+        call.vertices.positions = kind->positions;
+        call.triangles = kind->triangles;
+        call.clipFromObject = glm::mat4(view_.clipFromWorld());
+        rasterizer.draw(framebuffer, coverageCountState(), call);
+    }
+    debug_.write("fin-coverage", size, size, framebuffer.colorImage(0), 0.0f, 4.0f);
+}
+
+void FinDebug::writePixelLayers(const GBuffer& gbuffer, const WorldGeometry& world,
+                                const std::vector<int>& instanceLayer, int layerCount) const {
+    if (!debug_.enabled()) return;
+    std::vector<float> layer(gbuffer.pixelCount(), -1.0f);
+    for (size_t k = 0; k < layer.size(); ++k) {
+        if (gbuffer.hit[k]) layer[k] = float(instanceLayer[world.triangleInstance[gbuffer.triangle[k]]]);
+    }
+    debug_.write("layers", gbuffer.width, gbuffer.height, layer, -1.0f, float(layerCount - 1));
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,77 @@
+// Irregular z-buffer, stage 5: occluders sorted into tiles of the light grid, so that the
+// traversal can give each tile (and the receivers in its texels) to one task.
+//
+// The same scheme as raster/bin.cpp: chunks of triangles in parallel, each recording the
+// (tile, triangle) pairs of its footprints, then a counting sort by tile over the chunks
+// in order, so every tile's list is in triangle order for any number of threads.
+// Tiles without receivers get no entries: nothing there can be shadowed.
+#include <algorithm>
+
+#include <tbb/parallel_for.h>
+
+#include "shadows/izb/izb.h"
+
+namespace shadowlab::izb {
+namespace {
+
+constexpr size_t kChunk = 8192;   // triangles per binning task
+
+struct TilePair {
+    uint32_t tile, triangle;
+};
+
+std::vector<uint8_t> tilesWithReceivers(const LightGrid& grid, const TexelLists& lists, int tilesPerSide) {
+    const int R = grid.resolution;
+    std::vector<uint8_t> used(grid.views.size() * size_t(tilesPerSide) * tilesPerSide, 0);
+    for (size_t t = 0; t < grid.texelCount(); ++t) {
+        if (lists.length(t) == 0) continue;
+        const size_t view = t / (size_t(R) * R), j = t / R % R, i = t % R;
+        used[(view * tilesPerSide + j / kTileSize) * tilesPerSide + i / kTileSize] = 1;
+    }
+    return used;
+}
+
+// The tiles one triangle's footprint touches in one view, band of tile rows by band.
+void binTriangle(const LightGrid& grid, int view, uint32_t index, const glm::dvec3 (&triangle)[3], int tilesPerSide,
+                 const std::vector<uint8_t>& used, std::vector<TilePair>& pairs) {
+    const LightPolygon polygon = projectOccluder(grid, view, triangle);
+    const TexelRange rows = coveredRows(polygon, grid.resolution);
+    if (rows.empty()) return;
+    for (int ty = rows.begin / kTileSize; ty <= (rows.end - 1) / kTileSize; ++ty) {
+        const TexelRange columns = coveredColumns(polygon, ty * kTileSize, (ty + 1) * kTileSize, grid.resolution);
+        if (columns.empty()) continue;
+        for (int tx = columns.begin / kTileSize; tx <= (columns.end - 1) / kTileSize; ++tx) {
+            const uint32_t tile = uint32_t((view * tilesPerSide + ty) * tilesPerSide + tx);
+            if (used[tile]) pairs.push_back({tile, index});
+        }
+    }
+}
+
+}  // namespace
+
+TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const WorldGeometry& world) {
+    TileBins bins;
+    bins.tilesPerSide = (grid.resolution + kTileSize - 1) / kTileSize;
+    const std::vector<uint8_t> used = tilesWithReceivers(grid, lists, bins.tilesPerSide);
+    const size_t chunks = (world.triangles.size() + kChunk - 1) / kChunk;
+    std::vector<std::vector<TilePair>> pairs(chunks);
+    tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+        for (size_t t = c * kChunk; t < std::min(world.triangles.size(), (c + 1) * kChunk); ++t) {
+            const glm::uvec3& index = world.triangles[t];
+            const glm::dvec3 triangle[3] = {glm::dvec3(world.positions[index.x]), glm::dvec3(world.positions[index.y]),
+                                            glm::dvec3(world.positions[index.z])};
+            for (int view = 0; view < int(grid.views.size()); ++view) {
+                binTriangle(grid, view, uint32_t(t), triangle, bins.tilesPerSide, used, pairs[c]);
+            }
+        }
+    });
+    // Concatenated in chunk order, then sorted by tile: each tile's triangles stay in order.
+    std::vector<uint32_t> tile, triangle;
+    for (const std::vector<TilePair>& chunk : pairs) {
+        for (const TilePair& p : chunk) tile.push_back(p.tile), triangle.push_back(p.triangle);
+    }
+    bins.triangles = countingSort(tile, used.size(), triangle);
+    return bins;
+}
+
+}  // namespace shadowlab::izb

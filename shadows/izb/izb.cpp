@@ -1,0 +1,119 @@
+// The `izb` technique: the irregular z-buffer's stages (izb.h) in order, its figures and its
+// debug buffers.
+#include <algorithm>
+#include <chrono>
+
+#include "shadows/debug_buffers.h"
+#include "shadows/izb/izb.h"
+#include "shadows/reference/reference.h"
+
+namespace shadowlab {
+namespace {
+
+// Mean non-empty list length chooseResolution() aims at: about one to four receivers per
+// list (issue 3), two in the middle of that range on the ground of the built-in scenes.
+constexpr double kTargetListLength = 2.0;
+
+class StageClock {
+public:
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
+        last_ = now;
+        return ms;
+    }
+
+private:
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// `auto` or a resolution; read before any work, so a bad value fails at once.
+int requestedResolution(const TechniqueParams& params) {
+    if (params.values().at("resolution") == "auto") return 0;
+    return params.integer("resolution", izb::kMinResolution, izb::kMaxResolution);
+}
+
+// Length figures over the texels' lists: longest, mean and 99th percentile (nearest rank) of
+// the non-empty ones, and how many are empty.
+void addListStats(const izb::TexelLists& lists, size_t texels, std::vector<TechniqueStat>& stats) {
+    std::vector<uint64_t> histogram;
+    for (size_t t = 0; t < texels; ++t) {
+        const uint32_t n = lists.length(t);
+        if (histogram.size() <= n) histogram.resize(n + 1, 0);
+        ++histogram[n];
+    }
+    const uint64_t nonEmpty = texels - histogram[0];
+    // Nearest rank: the shortest length L with at least 99% of the non-empty lists <= L.
+    uint64_t p99 = 0, seen = 0;
+    for (size_t n = 1; n < histogram.size() && 100 * seen < 99 * nonEmpty; ++n) seen += histogram[n], p99 = n;
+    stats.push_back({"list_max", double(histogram.size() - 1)});
+    stats.push_back({"list_mean_nonempty", nonEmpty ? double(lists.entry.size()) / double(nonEmpty) : 0.0});
+    stats.push_back({"list_p99_nonempty", double(p99)});
+    stats.push_back({"empty_texels", double(histogram[0])});
+    stats.push_back({"empty_texel_percent", 100.0 * double(histogram[0]) / double(texels)});
+}
+
+void writeDebugBuffers(const ShadowInputs& in, const izb::LightGrid& grid, const izb::TexelLists& lists,
+                       const izb::Occlusion& occlusion) {
+    const DebugBuffers debug(in.debugDir, "izb");
+    if (!debug.enabled()) return;
+    const int width = grid.resolution, height = int(grid.views.size()) * grid.resolution;
+    std::vector<float> length(grid.texelCount()), occupied(grid.texelCount()), occluders(grid.texelCount());
+    float longest = 0.0f, most = 0.0f;
+    for (size_t t = 0; t < grid.texelCount(); ++t) {
+        length[t] = float(lists.length(t));
+        occupied[t] = lists.length(t) > 0 ? 1.0f : 0.0f;
+        occluders[t] = float(occlusion.occluders[t]);
+        longest = std::max(longest, length[t]), most = std::max(most, occluders[t]);
+    }
+    debug.write("list-length", width, height, length, 0.0f, longest);
+    debug.write("occupancy", width, height, occupied, 0.0f, 1.0f);
+    debug.write("occluders", width, height, occluders, 0.0f, most);
+}
+
+}  // namespace
+
+std::vector<ParamSpec> irregularZBufferParams() {
+    return {{"resolution", "auto",
+             "light grid texels per side, 16..8192, or auto: a mean of about 2 receivers per non-empty texel"}};
+}
+
+ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
+    const int requested = requestedResolution(in.params);
+    const Light light = pointLightFor(in.light);
+    const double diagonal = sceneDiagonal(in.world);
+    StageClock clock;
+    ShadowOutputs out;
+    const izb::Receivers receivers = izb::gatherReceivers(in.gbuffer, light, diagonal, out.visibility);
+    out.stats.push_back({"receivers", double(receivers.size())});
+    out.stats.push_back({"ms_receivers", clock.lap()});
+    if (receivers.size() == 0) return out;
+
+    std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world);
+    const int resolution = requested ? requested : izb::chooseResolution(views, receivers, kTargetListLength);
+    const izb::LightGrid grid = izb::makeLightGrid(std::move(views), resolution, diagonal);
+    out.stats.push_back({"resolution", double(grid.resolution)});
+    out.stats.push_back({"views", double(grid.views.size())});
+    out.stats.push_back({"ms_light_grid", clock.lap()});
+
+    const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid, receivers), grid.texelCount());
+    addListStats(lists, grid.texelCount(), out.stats);
+    out.stats.push_back({"ms_lists", clock.lap()});
+
+    const izb::TileBins bins = izb::binOccluders(grid, lists, in.world);
+    out.stats.push_back({"tile_triangle_pairs", double(bins.triangles.entry.size())});
+    out.stats.push_back({"ms_binning", clock.lap()});
+
+    const izb::Occlusion occlusion =
+        izb::traverseOccluders(grid, izb::homogeneousLight(light), receivers, lists, bins, in.world);
+    for (size_t r = 0; r < receivers.size(); ++r) {
+        if (occlusion.blocked[r]) out.visibility[receivers.pixel[r]] = 0.0f;
+    }
+    out.stats.push_back({"texel_triangle_pairs", double(occlusion.texelPairs)});
+    out.stats.push_back({"segment_tests", double(occlusion.segmentTests)});
+    out.stats.push_back({"ms_traversal", clock.lap()});
+    writeDebugBuffers(in, grid, lists, occlusion);
+    return out;
+}
+
+}  // namespace shadowlab

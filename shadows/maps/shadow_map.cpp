@@ -1,0 +1,155 @@
+// The `shadow-map` technique (Williams 1978; Real-Time Rendering, 4th ed., section 7.4):
+// render the depths the light sees, then compare every camera pixel's surface point with
+// them (shadow_lookup.h), with the bias of shadow_bias.h and the filter of pcf.h.
+//
+// The light's view is fitted to the visible receivers (light_view.h, RTR Figure 7.11):
+// orthographic for a directional light (optionally warped by LiSPSM, lispsm.h),
+// perspective for a spot or point light, and six cube faces (RTR 7.4, "omnidirectional
+// shadow maps") for a point light whose receivers surround it, or on request. A receiver
+// uses the face whose 90-degree pyramid holds it, the same test fitCubeFace fits with;
+// filter taps beyond a face's border read its border texels (no cross-face filtering).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "shadows/debug_buffers.h"
+#include "shadows/depth_map.h"
+#include "shadows/maps/lispsm.h"
+#include "shadows/maps/shadow_lookup.h"
+#include "shadows/maps/shadow_map_debug.h"
+#include "shadows/maps/shadow_map_settings.h"
+#include "shadows/maps/shadow_map_techniques.h"
+
+namespace shadowlab {
+namespace {
+
+const char* const kFaceNames[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+
+bool insideFace(const DepthMap& face, const glm::dvec3& P) {
+    if (face.size == 0) return false;
+    const glm::dvec3 q(face.view.viewFromWorld * glm::dvec4(P, 1.0));
+    return -q.z > 0.0 && std::abs(q.x) <= -q.z && std::abs(q.y) <= -q.z;
+}
+
+struct LightMaps {
+    std::vector<DepthMap> maps;     // one map, or six cube faces (size 0 where a face has no receiver)
+    bool cube = false;
+    double nOpt = 0.0;              // LiSPSM's n, infinity when it kept the uniform map
+};
+
+LightMaps cubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, const LightFitOptions& o) {
+    LightMaps out;
+    out.cube = true;
+    out.maps.resize(6);
+    for (int face = 0; face < 6; ++face) {
+        LightView view;
+        if (fitCubeFace(light, face, in.gbuffer, in.world, o, view)) {
+            out.maps[face] = renderDepthMap(in.world, view, depthMapSettings(s), in.simd);
+        }
+    }
+    return out;
+}
+
+LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, bool forceCube, bool lispsm) {
+    LightFitOptions options;
+    options.resolution = s.resolution;
+    options.marginTexels = kernelRadiusTexels(s.filter) + 1.5;
+    if (forceCube) return cubeMaps(in, light, s, options);
+    LightView view;
+    try {
+        view = fitLightView(light, in.gbuffer, in.world, options);
+    } catch (const std::invalid_argument&) {
+        if (light.type != LightType::Point) throw;
+        return cubeMaps(in, light, s, options);   // receivers all around the light
+    }
+    LightMaps out;
+    if (lispsm) {
+        const LispsmView warped = lispsmView(view, light, in.scene.camera, in.gbuffer, s.resolution, options.marginTexels);
+        view = warped.view, out.nOpt = warped.nOpt;
+    }
+    out.maps.push_back(renderDepthMap(in.world, view, depthMapSettings(s), in.simd));
+    return out;
+}
+
+MapSelector selectorFor(const LightMaps& lm) {
+    if (!lm.cube) return [](const glm::dvec3&, size_t) { return 0; };
+    return [&lm](const glm::dvec3& P, size_t) {
+        for (int face = 0; face < 6; ++face) {
+            if (insideFace(lm.maps[face], P)) return face;
+        }
+        return -1;
+    };
+}
+
+void addStats(ShadowOutputs& out, const LightMaps& lm, const ShadowMapSettings& s, const ShadowLookup& lookup) {
+    double zNear = std::numeric_limits<double>::infinity(), zFar = 0.0;
+    int maps = 0;
+    for (const DepthMap& m : lm.maps) {
+        if (m.size == 0) continue;
+        ++maps, zNear = std::min(zNear, m.view.zNear), zFar = std::max(zFar, m.view.zFar);
+    }
+    out.stats = {{"resolution", double(s.resolution)},
+                 {"maps", double(maps)},
+                 {"texels_per_pixel_median", medianTexelDensity(lookup)},
+                 {"light_near", zNear},
+                 {"light_far", zFar}};
+    if (lm.nOpt != 0.0) out.stats.push_back({"lispsm_n_opt", lm.nOpt});
+}
+
+void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSettings& s, const ShadowLookup& lookup) {
+    const DebugBuffers debug(in.debugDir, "shadow-map");
+    if (!debug.enabled()) return;
+    for (size_t k = 0; k < lm.maps.size(); ++k) {
+        if (lm.maps[k].size == 0) continue;
+        const std::string suffix = lm.cube ? std::string("-face-") + kFaceNames[k] : "";
+        writeDepthMap(debug, "depth" + suffix, lm.maps[k]);
+        if (s.layer == DepthLayer::Midpoint) {
+            // The two layers the midpoint averages, drawn again only for this picture.
+            for (DepthLayer layer : {DepthLayer::First, DepthLayer::Second}) {
+                DepthMapSettings one = depthMapSettings(s);
+                one.layer = layer;
+                writeDepthMap(debug, (layer == DepthLayer::First ? "depth-first" : "depth-second") + suffix,
+                              renderDepthMap(in.world, lm.maps[k].view, one, in.simd));
+            }
+        }
+    }
+    writeTexelDensity(debug, in.gbuffer, lookup);
+    if (lm.cube) writeMapColouring(in.debugDir, "shadow-map", "faces", in.gbuffer, lookup);
+}
+
+ShadowOutputs runShadowMap(const ShadowInputs& in) {
+    const ShadowMapSettings s = readShadowMapSettings(in.params);
+    const bool forceCube = in.params.choice("cube", {"auto", "always"}) == "always";
+    const bool lispsm = in.params.choice("warp", {"none", "lispsm"}) == "lispsm";
+    const Light light = pointLightFor(in.light);
+    if (lispsm && light.type != LightType::Directional) {
+        throw std::invalid_argument("shadow-map: warp=lispsm needs a directional light");
+    }
+    if (forceCube && light.type != LightType::Point) throw std::invalid_argument("shadow-map: cube=always needs a point light");
+    ShadowOutputs out;
+    if (std::find(in.gbuffer.hit.begin(), in.gbuffer.hit.end(), 1) == in.gbuffer.hit.end()) {
+        out.visibility.assign(in.gbuffer.pixelCount(), 0.0f);
+        return out;
+    }
+    const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm);
+    const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene.camera, light, lm.maps, selectorFor(lm), s.bias,
+                                              makePcfKernel(s.filter), !in.debugDir.empty());
+    addStats(out, lm, s, lookup);
+    writeDebug(in, lm, s, lookup);
+    out.visibility = lookup.visibility;
+    return out;
+}
+
+}  // namespace
+
+Technique shadowMapTechnique() {
+    std::vector<ParamSpec> params = shadowMapParamSpecs();
+    params.push_back({"cube", "auto", "point lights: auto (six faces when one frustum cannot hold the receivers) | always"});
+    params.push_back({"warp", "none", "directional lights: none | lispsm (light space perspective shadow map)"});
+    return {"shadow-map",
+            "shadow map (RTR 7.4): fitted light frustum, cube faces for surrounded point lights, bias modes, PCF filters, LiSPSM",
+            params, runShadowMap};
+}
+
+}  // namespace shadowlab

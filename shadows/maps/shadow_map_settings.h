@@ -1,0 +1,27 @@
+// The settings shadow-map and csm share (--param name=value), with their defaults and the
+// reasons for them. Each technique adds its own parameters to these.
+#pragma once
+
+#include <vector>
+
+#include "shadows/depth_map.h"
+#include "shadows/maps/pcf.h"
+#include "shadows/maps/shadow_bias.h"
+#include "shadows/technique_params.h"
+
+namespace shadowlab {
+
+struct ShadowMapSettings {
+    int resolution = 2048;
+    DepthLayer layer = DepthLayer::First;
+    BiasSettings bias;
+    FilterSettings filter;
+};
+
+std::vector<ParamSpec> shadowMapParamSpecs();
+// Throws std::invalid_argument (from TechniqueParams) for a bad value.
+ShadowMapSettings readShadowMapSettings(const TechniqueParams& params);
+
+DepthMapSettings depthMapSettings(const ShadowMapSettings& settings);
+
+}  // namespace shadowlab

@@ -1,0 +1,74 @@
+// The exact shadow reference: visibility of a light from every G-buffer point, by casting
+// shadow rays with Embree 3 against the same world-space triangles the rasterizer draws.
+// Every technique's V buffer is measured against this one (conventions.md, "Figures and
+// errors").
+//
+//   point, spot:  V in {0, 1}: one ray to the light position.
+//   directional:  V in {0, 1}: one ray towards the light, to infinity.
+//   disk, rect:   V = visible fraction of n x n stratified samples on the light
+//                 (default 32 x 32 = 1024), an estimate of the fraction of the light's
+//                 area seen from P (shading/light_sampling.h).
+// A light (or light sample) on or behind the plane of the surface, dot(N, L - P) <= 0,
+// is invisible, as is a point outside a spot light's cone (the same hard cone as
+// shading/lights.h): no ray is cast for them. Pixels with hit = 0 get V = 0.
+//
+// Each pixel depends only on its own G-buffer entry and, for area lights, on a random
+// stream seeded by (options.seed, pixel index), so V is the same bytes for any number of
+// threads.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scenes/scene.h"
+#include "shading/gbuffer.h"
+
+namespace shadowlab {
+
+struct ReferenceOptions {
+    int areaSamplesPerAxis = 32;       // area lights: n x n strata, one sample each
+    uint64_t seed = 0x5eed5eed5eedull;  // jitter; pixel k uses PCG32 stream k
+};
+
+// The diagonal of the bounding box of all vertices (m): the scene scale S below.
+double sceneDiagonal(const WorldGeometry& world);
+// How far a shadow ray's origin moves from P along N: 32 u S with u = 2^-24 and
+// S = max(max_k |P_k|, sceneDiagonal), derived in reference.cpp. Techniques that test
+// visibility exactly (the irregular z-buffer) use the same offset, so they agree with
+// the reference bit for bit on what counts as self-shadowing.
+double shadowRayOffset(const glm::vec3& P, double sceneDiagonal);
+
+class ReferenceVisibility {
+public:
+    // Builds the Embree scene (robust mode, one triangle geometry). Throws
+    // std::invalid_argument for a vertex index out of range, std::runtime_error if Embree
+    // reports an error.
+    explicit ReferenceVisibility(const WorldGeometry& world);
+    ~ReferenceVisibility();
+    ReferenceVisibility(const ReferenceVisibility&) = delete;
+    ReferenceVisibility& operator=(const ReferenceVisibility&) = delete;
+
+    // V per pixel (see the header comment). Throws std::invalid_argument if the G-buffer's
+    // arrays are not all width * height long, or options.areaSamplesPerAxis < 1 for an
+    // area light.
+    std::vector<float> visibility(const GBuffer& gbuffer, const Light& light,
+                                  const ReferenceOptions& options = {}) const;
+
+    // Shadow rays cast by all visibility() calls so far (for Mrays/s in benchmarks).
+    uint64_t raysCast() const { return raysCast_.load(); }
+
+    // Distance (m) the shadow-ray origin is moved from P along N; derived in reference.cpp.
+    double shadowRayOffset(const glm::vec3& P) const;
+
+private:
+    struct Embree;
+    std::unique_ptr<Embree> embree_;
+    double sceneDiagonal_ = 0.0;  // of the bounding box of all vertices, m
+    mutable std::atomic<uint64_t> raysCast_{0};
+};
+
+}  // namespace shadowlab

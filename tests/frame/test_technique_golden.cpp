@@ -1,0 +1,117 @@
+// Golden hashes of every technique's output: V and the stencil image of each case below,
+// hashed byte for byte and compared with tests/golden/techniques.hash. A change of
+// structure must leave them all alone; a change that means to alter bits (a new precision,
+// a fixed bug) records new ones with SHADOWLAB_UPDATE_GOLDEN=1 and says why in its commit.
+//
+// The Embree references are not hashed (their kernels are not ours, test_golden.cpp says
+// why); every technique of our own is, on a small view so the whole table takes seconds.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "frame/render.h"
+#include "scenes/scene_file.h"
+
+using namespace shadowlab;
+
+namespace {
+
+struct GoldenCase {
+    std::string scene;   // a built-in name or a path below the source tree
+    std::string technique;
+    std::map<std::string, std::string> params;
+};
+
+const std::vector<GoldenCase>& goldenCases() {
+    static const std::vector<GoldenCase> cases = {
+        {"sphere-box", "none", {}},
+        {"sphere-box", "shadow-map", {}},
+        {"sphere-box", "shadow-map", {{"bias", "receiver-plane"}, {"filter", "bilinear"}}},
+        {"sphere-box", "shadow-map", {{"bias", "normal-offset"}, {"filter", "grid"}, {"layer", "midpoint"}}},
+        {"sphere-box", "shadow-map", {{"bias", "constant"}, {"filter", "poisson"}, {"layer", "second"}}},
+        {"sphere-box", "shadow-map", {{"cube", "always"}}},
+        {"sphere-box", "izb", {}},
+        {"sphere-box", "shadow-volume", {}},
+        {"sphere-box", "shadow-volume", {{"mode", "zpass"}}},
+        {"sphere-box", "planar", {}},
+        {"sphere-box", "pcss", {}},
+        {"sphere-box", "vsm", {}},
+        {"sphere-box", "vsm", {{"filter", "sat"}, {"width", "pcss"}}},
+        {"sphere-box", "esm", {{"blur", "gaussian"}}},
+        {"sphere-box", "evsm", {}},
+        {"sphere-box", "msm", {}},
+        {"sphere-box", "multi-sample", {{"samples", "16"}}},
+        {"sphere-box", "fins", {}},
+        {"sphere-box", "fins", {{"layers", "1"}, {"falloff", "bernstein"}}},
+        {"sphere-box", "smoothies", {}},
+        {"sphere-box", "penumbra-maps", {}},
+        {"bunny", "shadow-map", {}},
+        {"bunny", "izb", {}},
+        {"bunny", "shadow-volume", {}},
+        {"bunny", "fins", {}},
+        {"scenes/hard/sun.json", "shadow-map", {{"warp", "lispsm"}}},
+        {"scenes/hard/sun.json", "csm", {}},
+        {"scenes/hard/sun.json", "csm", {{"split", "log"}, {"bounds", "camera"}, {"snap", "off"}}},
+        {"scenes/hard/point-light-inside.json", "shadow-map", {}},
+        {"scenes/hard/near-plane-cuts-volume.json", "shadow-volume", {}},
+        {"scenes/hard/spot.json", "planar", {}},
+        {"scenes/soft/torus-over-plane.json", "fins", {}},
+    };
+    return cases;
+}
+
+uint64_t fnv1a(const std::vector<float>& values, uint64_t state = 0xcbf29ce484222325ull) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    for (size_t i = 0; i < values.size() * sizeof(float); ++i) state = (state ^ bytes[i]) * 0x100000001b3ull;
+    return state;
+}
+
+std::string describe(const GoldenCase& c) {
+    std::string text = c.scene + " " + c.technique;
+    for (const auto& [name, value] : c.params) text += " " + name + "=" + value;
+    return text;
+}
+
+// "<case> <hash of V> <hash of the stencil image>" for one case, on a 320 x 200 view.
+std::string caseLine(const GoldenCase& c) {
+    const bool builtin = c.scene.find('/') == std::string::npos;
+    Scene scene = loadScene(builtin ? c.scene : std::string(SHADOWLAB_SOURCE_DIR) + "/" + c.scene);
+    scene.camera.width = 320, scene.camera.height = 200;
+    const WorldGeometry world = flatten(scene);
+    FrameSettings settings;
+    settings.params = c.params;
+    const Frame frame = renderFrame(scene, world, findTechnique(c.technique), settings);
+    char hashes[40];
+    std::snprintf(hashes, sizeof hashes, " %016llx %016llx", static_cast<unsigned long long>(fnv1a(frame.shadow.visibility)),
+                  static_cast<unsigned long long>(fnv1a(frame.shadow.stencil)));
+    return describe(c) + hashes;
+}
+
+std::string goldenPath() { return std::string(SHADOWLAB_SOURCE_DIR) + "/tests/golden/techniques.hash"; }
+
+}  // namespace
+
+TEST_CASE("every technique gives its golden V and stencil bytes") {
+    std::map<std::string, std::string> expected;
+    if (std::getenv("SHADOWLAB_UPDATE_GOLDEN")) {
+        std::ofstream out(goldenPath());
+        for (const GoldenCase& c : goldenCases()) out << caseLine(c) << "\n";
+        return;
+    }
+    std::ifstream in(goldenPath());
+    REQUIRE_MESSAGE(in.good(), "no golden at " << goldenPath() << ": run with SHADOWLAB_UPDATE_GOLDEN=1");
+    std::string line;
+    while (std::getline(in, line)) expected[line.substr(0, line.size() - 34)] = line;
+    for (const GoldenCase& c : goldenCases()) {
+        INFO(describe(c));
+        const auto it = expected.find(describe(c));
+        REQUIRE_MESSAGE(it != expected.end(), "no golden line for this case");
+        CHECK(caseLine(c) == it->second);
+    }
+}

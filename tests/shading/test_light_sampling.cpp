@@ -1,0 +1,84 @@
+// The pieces of area-light sampling: PCG32 output, the concentric map, light frames.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "shading/lights.h"
+#include "shading/light_sampling.h"
+
+using namespace shadowlab;
+
+TEST_CASE("PCG32 reproduces the reference generator's first outputs") {
+    // pcg32-demo of pcg-c-basic: seed 42, sequence 54.
+    Pcg32 rng(42u, 54u);
+    const uint32_t expected[] = {0xa15c02b7u, 0x7b47f409u, 0xba1d3330u, 0x83d2f293u, 0xbfa4784bu, 0xcbed606eu};
+    for (uint32_t e : expected) {
+        CHECK(rng.next() == e);
+    }
+}
+
+TEST_CASE("concentric map sends the square's centre, edges and corners to the disk's") {
+    CHECK(concentricSquareToDisk({0.5, 0.5}) == glm::dvec2(0.0));
+    const glm::dvec2 right = concentricSquareToDisk({1.0, 0.5});
+    CHECK(right.x == doctest::Approx(1.0));
+    CHECK(right.y == doctest::Approx(0.0));
+    const glm::dvec2 top = concentricSquareToDisk({0.5, 1.0});
+    CHECK(top.x == doctest::Approx(0.0));
+    CHECK(top.y == doctest::Approx(1.0));
+    const glm::dvec2 corner = concentricSquareToDisk({1.0, 1.0});
+    CHECK(corner.x == doctest::Approx(std::sqrt(0.5)));
+    CHECK(corner.y == doctest::Approx(std::sqrt(0.5)));
+    // Concentric squares go to circles: radius = max(|2u-1|, |2v-1|).
+    const glm::dvec2 inside = concentricSquareToDisk({0.8, 0.35});
+    CHECK(glm::length(inside) == doctest::Approx(0.6));
+}
+
+TEST_CASE("the concentric map preserves area: radially and in angle") {
+    // A uniform grid on the square must land uniformly on the disk: the disk of radius 1/2
+    // and the sector of angles [0, pi/8) each hold their share of the area (1/4, 1/16),
+    // up to the grid's discretisation, O(1/n).
+    const int n = 400;
+    int inCentralDisk = 0, inSector = 0;
+    for (int b = 0; b < n; ++b) {
+        for (int a = 0; a < n; ++a) {
+            const glm::dvec2 d = concentricSquareToDisk({(a + 0.5) / n, (b + 0.5) / n});
+            inCentralDisk += glm::length(d) < 0.5;
+            const double angle = std::atan2(d.y, d.x);
+            inSector += angle >= 0.0 && angle < std::numbers::pi / 8.0;
+        }
+    }
+    CHECK(double(inCentralDisk) / (n * n) == doctest::Approx(1.0 / 4.0).epsilon(0.01));
+    CHECK(double(inSector) / (n * n) == doctest::Approx(1.0 / 16.0).epsilon(0.01));
+}
+
+TEST_CASE("area light frames span the light") {
+    Light rectangle;
+    rectangle.type = LightType::Rectangle;
+    rectangle.position = {1.0f, 2.0f, 3.0f};
+    rectangle.halfEdgeU = {0.5f, 0.0f, 0.0f};
+    rectangle.halfEdgeV = {0.0f, 0.0f, 0.25f};
+    const AreaLightFrame r = areaLightFrame(rectangle);
+    CHECK(areaLightPoint(r, {0.0, 0.0}) == glm::dvec3(0.5, 2.0, 2.75));
+    CHECK(areaLightPoint(r, {0.5, 0.5}) == glm::dvec3(1.0, 2.0, 3.0));
+
+    Light disk;
+    disk.type = LightType::Disk;
+    disk.position = {0.0f, 4.0f, 0.0f};
+    disk.direction = {0.3f, -1.0f, 0.2f};
+    disk.radius = 0.5f;
+    const AreaLightFrame d = areaLightFrame(disk);
+    const glm::dvec3 n = areaLightNormal(disk);
+    CHECK(glm::length(d.axisA) == doctest::Approx(0.5));
+    CHECK(glm::length(d.axisB) == doctest::Approx(0.5));
+    CHECK(glm::dot(d.axisA, d.axisB) == doctest::Approx(0.0));
+    CHECK(glm::dot(d.axisA, n) == doctest::Approx(0.0));
+    CHECK(glm::dot(d.axisB, n) == doctest::Approx(0.0));
+    Pcg32 rng(1, 2);
+    for (int k = 0; k < 100; ++k) {
+        const glm::dvec3 p = areaLightPoint(d, jitteredSample(k % 10, k / 10, 10, rng)) - d.centre;
+        CHECK(glm::dot(p, n) == doctest::Approx(0.0));
+        CHECK(glm::length(p) <= 0.5 + 1e-12);
+    }
+    CHECK_THROWS(areaLightFrame(Light{}));
+}

@@ -1,0 +1,116 @@
+// Shared by the shadow-volume and planar tests: a scene rendered to a G-buffer with the
+// exact reference's V, a technique run on it, and the error figures the issue asks for:
+// misclassified pixels against the reference, and which of them are more than one pixel
+// away from a shadow boundary of the reference.
+#pragma once
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <doctest/doctest.h>
+
+#include "frame/render.h"
+#include "scenes/scene_file.h"
+#include "shadows/reference/reference.h"
+#include "shadows/technique.h"
+
+namespace shadowlab::test {
+
+inline std::string hardCase(const std::string& name) {
+    return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/hard/" + name + ".json";
+}
+
+struct PreparedScene {
+    Scene scene;
+    WorldGeometry world;
+    GBuffer gbuffer;
+    std::vector<float> reference;   // exact V (point light at the light's centre)
+
+    explicit PreparedScene(const std::string& nameOrPath, raster::SimdLevel simd = raster::bestSimdLevel())
+        : scene(loadScene(nameOrPath)), world(flatten(scene)), gbuffer(renderGBuffer(world, scene.camera, simd)),
+          reference(ReferenceVisibility(world).visibility(gbuffer, pointLightFor(scene.lights[0]))) {}
+
+    Light light() const { return pointLightFor(scene.lights[0]); }
+
+    ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {},
+                      raster::SimdLevel simd = raster::bestSimdLevel()) const {
+        const Technique& t = findTechnique(technique);
+        const TechniqueParams params(t.name, t.params, given);
+        return t.run({scene, world, gbuffer, scene.lights[0], simd, params, {}});
+    }
+};
+
+struct Misclassified {
+    size_t hitPixels = 0;
+    size_t count = 0;                 // hit pixels whose V differs from the reference
+    size_t falseShadow = 0, falseLight = 0;
+    size_t awayFromBoundary = 0;      // ... with no 8-neighbour of another reference V
+    double percent() const { return hitPixels ? 100.0 * double(count) / double(hitPixels) : 0.0; }
+};
+
+// The light's side of the surface at pixel k, as the reference decides it (reference.h):
+// dot(N, L - P) > 0 for the light's centre (or its direction).
+inline bool facesLight(const GBuffer& g, size_t k, const Light& light) {
+    const glm::dvec3 towards = light.type == LightType::Directional
+                                   ? glm::dvec3(light.direction)
+                                   : glm::dvec3(light.position) - glm::dvec3(g.position[k]);
+    return glm::dot(glm::dvec3(g.normal[k]), towards) > 0.0;
+}
+
+// A shadow boundary of the reference passes next to pixel (i, j) if one of its 8
+// neighbours with a surface has the other reference V (a cast-shadow edge or the
+// terminator seen against lit surface), or lies on the other side of the terminator (the
+// attached-shadow boundary, where the surface turns away from the light: on a lit-facing
+// triangle next to it a cast shadow may begin that V cannot show, since V = 0 on both
+// sides of it).
+inline bool nearReferenceBoundary(const GBuffer& g, const std::vector<float>& reference, const Light& light, int i,
+                                  int j) {
+    const size_t k = g.index(i, j);
+    for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) {
+            const int x = i + di, y = j + dj;
+            if (x < 0 || y < 0 || x >= g.width || y >= g.height || !g.hit[g.index(x, y)]) continue;
+            const size_t n = g.index(x, y);
+            if (reference[n] != reference[k] || facesLight(g, n, light) != facesLight(g, k, light)) return true;
+        }
+    }
+    return false;
+}
+
+inline Misclassified misclassified(const GBuffer& g, const std::vector<float>& reference, const Light& light,
+                                   const std::vector<float>& test) {
+    Misclassified m;
+    for (int j = 0; j < g.height; ++j) {
+        for (int i = 0; i < g.width; ++i) {
+            const size_t k = g.index(i, j);
+            if (!g.hit[k]) continue;
+            m.hitPixels++;
+            if ((reference[k] >= 0.5f) == (test[k] >= 0.5f)) continue;
+            m.count++;
+            (reference[k] >= 0.5f ? m.falseShadow : m.falseLight)++;
+            m.awayFromBoundary += !nearReferenceBoundary(g, reference, light, i, j);
+        }
+    }
+    return m;
+}
+
+// The issue's bound: at most 0.01% of the hit pixels misclassified, each within one pixel
+// of a shadow boundary of the reference.
+inline void requireBound(const PreparedScene& s, const ShadowOutputs& out, const std::string& what) {
+    const Misclassified m = misclassified(s.gbuffer, s.reference, s.light(), out.visibility);
+    INFO(what << ": " << m.count << " misclassified of " << m.hitPixels << " (" << m.percent() << "%), "
+              << m.falseShadow << " false shadow, " << m.falseLight << " false light, " << m.awayFromBoundary
+              << " more than one pixel from a reference boundary");
+    CHECK(m.percent() <= 0.01);
+    CHECK(m.awayFromBoundary == 0);
+}
+
+inline double stat(const ShadowOutputs& out, const std::string& name) {
+    const auto it = std::find_if(out.stats.begin(), out.stats.end(), [&](const TechniqueStat& s) { return s.name == name; });
+    REQUIRE(it != out.stats.end());
+    return it->value;
+}
+
+}  // namespace shadowlab::test

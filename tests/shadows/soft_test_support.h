@@ -1,0 +1,52 @@
+// Shared by the soft-shadow tests: a scene with its G-buffer and the exact soft reference
+// (ReferenceVisibility of the disk light itself: by default 32 x 32 = 1024 stratified
+// samples per pixel), and the error figures against it.
+#pragma once
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "frame/render.h"
+#include "scenes/scene_file.h"
+#include "shadows/reference/reference.h"
+#include "shadows/technique.h"
+
+namespace shadowlab::test {
+
+struct SoftScene {
+    Scene scene;
+    WorldGeometry world;
+    GBuffer gbuffer;
+    std::vector<float> reference;   // soft V of the area light
+
+    explicit SoftScene(Scene s, int samplesPerAxis = 32)
+        : scene(std::move(s)), world(flatten(scene)), gbuffer(renderGBuffer(world, scene.camera, raster::bestSimdLevel())),
+          reference(ReferenceVisibility(world).visibility(gbuffer, scene.lights[0], {.areaSamplesPerAxis = samplesPerAxis})) {}
+
+    ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {}) const {
+        const Technique& t = findTechnique(technique);
+        const TechniqueParams params(t.name, t.params, given);
+        return t.run({scene, world, gbuffer, scene.lights[0], raster::bestSimdLevel(), params, {}});
+    }
+
+    double rms(const std::vector<float>& v) const {
+        double sum = 0.0;
+        size_t n = 0;
+        for (size_t k = 0; k < v.size(); ++k) {
+            if (!gbuffer.hit[k]) continue;
+            const double e = double(v[k]) - double(reference[k]);
+            sum += e * e, ++n;
+        }
+        return std::sqrt(sum / double(n));
+    }
+};
+
+inline Scene smallScene(const std::string& name, int width, int height) {
+    Scene scene = loadScene(name);
+    scene.camera.width = width, scene.camera.height = height;
+    return scene;
+}
+
+}  // namespace shadowlab::test
