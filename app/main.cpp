@@ -89,10 +89,11 @@ struct RenderArgs {
 };
 
 // The technique's frame against the exact reference: the error map, the counts, the JSON.
-void writeErrorMap(const RenderArgs& a, const Scene& scene, const WorldGeometry& world, const Technique& technique,
+void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Technique& technique,
                    const FrameSettings& settings, const Frame& frame) {
+    const Scene& scene = prepared.scene();
     const std::string& referenceName = a.reference.empty() ? technique.referenceName : a.reference;
-    const ImageChannels reference = renderReferenceVisibility(scene, world, settings.simd, referenceName);
+    const ImageChannels reference = renderReferenceVisibility(prepared, settings.simd, referenceName);
     const ImageChannels test = visibilityImage(frame);
     const ErrorFigures figures = compareImages(reference, test);
     writePng(a.errorMap, scene.camera.width, scene.camera.height, errorMapImage(reference, test, frame.radiance));
@@ -107,14 +108,15 @@ void runRender(const RenderArgs& a) {
     if (a.png.empty() && a.aov.empty() && a.errorMap.empty())
         throw std::invalid_argument("render: give -o OUT.png, --aov OUT.exr and/or --error-map OUT.png");
     requireOutputDirectories({&a.png, &a.aov, &a.errorMap, &a.json});
-    Scene scene = loadScene(a.scene);
-    applyOverrides(scene, a.overrides);
-    const WorldGeometry world = flatten(scene);
+    Scene loaded = loadScene(a.scene);
+    applyOverrides(loaded, a.overrides);
+    const PreparedScene prepared(std::move(loaded));
     const Technique& technique = findTechnique(a.technique);
     if (!a.reference.empty()) findTechnique(a.reference);   // a typo fails before rendering
     FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir};
     for (const std::string& p : a.params) parseParamAssignment(p, settings.params);
-    const Frame frame = renderFrame(scene, world, technique, settings);
+    const Frame frame = renderFrame(prepared, technique, settings);
+    const Scene& scene = prepared.scene();
     std::printf("%s: %s in %.2f ms\n", scene.name.c_str(), technique.name.c_str(), frame.techniqueMs);
     for (const TechniqueStat& s : frame.shadow.stats) std::printf("  %-28s %.6g\n", s.name.c_str(), s.value);
     const int w = scene.camera.width, h = scene.camera.height;
@@ -128,7 +130,7 @@ void runRender(const RenderArgs& a) {
         if (!frame.shadow.stencil.empty()) aov.set(channel::stencil, frame.shadow.stencil);
         writeExr(a.aov, aov);
     }
-    if (!a.errorMap.empty()) writeErrorMap(a, scene, world, technique, settings, frame);
+    if (!a.errorMap.empty()) writeErrorMap(a, prepared, technique, settings, frame);
 }
 
 // The three files of a sweep or scaling report: STEM.csv, STEM.json and STEM.svg.

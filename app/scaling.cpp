@@ -1,6 +1,7 @@
 #include "app/scaling.h"
 
 #include <cstdio>
+#include <memory>
 #include <set>
 #include <stdexcept>
 
@@ -18,11 +19,6 @@ double mean(const std::vector<double>& values) {
     for (double v : values) sum += v;
     return sum / double(values.size());
 }
-
-struct LoadedScene {
-    Scene scene;
-    WorldGeometry world;
-};
 
 }  // namespace
 
@@ -56,22 +52,20 @@ ScalingResults runScaling(const ScalingOptions& options) {
     return withThreads(threads, [&] {
         const FrameSettings settings{options.simd, options.params, {}};
         // Every scene loaded and rendered once first: a bad file or setting fails before the long part.
-        std::vector<LoadedScene> scenes;
+        std::vector<std::unique_ptr<const PreparedScene>> scenes;
         std::vector<double> triangles;
         for (const std::string& name : options.scenes) {
-            Scene scene = loadScene(name);
-            WorldGeometry world = flatten(scene);
-            renderFrame(scene, world, *options.technique, settings);
-            triangles.push_back(double(world.triangles.size()));
-            scenes.push_back({std::move(scene), std::move(world)});
+            scenes.push_back(std::make_unique<const PreparedScene>(loadScene(name)));
+            renderFrame(*scenes.back(), *options.technique, settings);
+            triangles.push_back(double(scenes.back()->world().triangles.size()));
         }
         if (std::set<double>(triangles.begin(), triangles.end()).size() < 2)
             throw std::invalid_argument("scaling: the scenes need at least two different triangle counts");
         ScalingResults results{options.technique->name, threads, {}, {}};
         std::vector<double> ms;
-        for (const LoadedScene& s : scenes) {
-            const Timing t = timeFrames(s.scene, s.world, *options.technique, settings, options.warmupRuns, options.runs).timing;
-            results.points.push_back({s.scene.name, uint64_t(s.world.triangles.size()), t.medianMs, t.minMs});
+        for (const auto& s : scenes) {
+            const Timing t = timeFrames(*s, *options.technique, settings, options.warmupRuns, options.runs).timing;
+            results.points.push_back({s->scene().name, uint64_t(s->world().triangles.size()), t.medianMs, t.minMs});
             ms.push_back(t.medianMs);
         }
         results.fit = fitLine(triangles, ms);

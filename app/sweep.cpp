@@ -78,9 +78,9 @@ const std::string& referenceFor(const Technique& technique, const SweepOptions& 
 }
 
 // Errors and stats come from the last measured frame.
-SweepRow measure(const Scene& scene, const WorldGeometry& world, const ImageChannels& reference,
+SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference,
                  const Technique& technique, const FrameSettings& settings, const SweepOptions& options) {
-    const TimedFrames timed = timeFrames(scene, world, technique, settings, options.warmupRuns, options.runs);
+    const TimedFrames timed = timeFrames(prepared, technique, settings, options.warmupRuns, options.runs);
     SweepRow row;
     row.technique = technique.name;
     row.reference = referenceFor(technique, options);
@@ -115,12 +115,11 @@ std::string statValue(const SweepRow& row, const std::string& name) {
 }
 
 // Each reference the techniques are scored against, rendered once.
-std::map<std::string, ImageChannels> renderReferences(const Scene& scene, const WorldGeometry& world,
-                                                      const std::vector<SweepPlan>& plans, const SweepOptions& options) {
+std::map<std::string, ImageChannels> renderReferences(const PreparedScene& prepared, const std::vector<SweepPlan>& plans, const SweepOptions& options) {
     std::map<std::string, ImageChannels> references;
     for (const SweepPlan& plan : plans) {
         const std::string& name = referenceFor(*plan.technique, options);
-        if (!references.contains(name)) references.emplace(name, renderReferenceVisibility(scene, world, options.simd, name));
+        if (!references.contains(name)) references.emplace(name, renderReferenceVisibility(prepared, options.simd, name));
     }
     return references;
 }
@@ -142,14 +141,14 @@ std::string csvNumber(double value) {
     return text;
 }
 
-TimedFrames timeFrames(const Scene& scene, const WorldGeometry& world, const Technique& technique,
-                       const FrameSettings& settings, int warmupRuns, int runs) {
+TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
+                       int warmupRuns, int runs) {
     if (runs < 1) throw std::invalid_argument("the number of measured runs must be >= 1");
-    for (int k = 0; k < warmupRuns; ++k) renderFrame(scene, world, technique, settings);
+    for (int k = 0; k < warmupRuns; ++k) renderFrame(prepared, technique, settings);
     std::vector<double> ms;
     Frame frame;
     for (int k = 0; k < runs; ++k) {
-        frame = renderFrame(scene, world, technique, settings);
+        frame = renderFrame(prepared, technique, settings);
         ms.push_back(frame.techniqueMs);
     }
     return {summarizeTimes(std::move(ms)), std::move(frame)};
@@ -181,18 +180,18 @@ SweepResults runSweep(const SweepOptions& options) {
     const std::vector<int> threads = threadCounts(options);
     Scene scene = loadScene(options.scene);
     applyOverrides(scene, options.overrides);
-    const WorldGeometry world = flatten(scene);
+    const PreparedScene prepared(std::move(scene));
     // One frame per setting first: a value the technique rejects fails before the long part.
     for (const SweepPlan& plan : plans)
-        for (const Settings& settings : plan.settings) renderFrame(scene, world, *plan.technique, {options.simd, settings, {}});
-    const std::map<std::string, ImageChannels> references = renderReferences(scene, world, plans, options);
-    SweepResults results{scene.name, {}, {}};
+        for (const Settings& settings : plan.settings) renderFrame(prepared, *plan.technique, {options.simd, settings, {}});
+    const std::map<std::string, ImageChannels> references = renderReferences(prepared, plans, options);
+    SweepResults results{prepared.scene().name, {}, {}};
     for (const SweepPlan& plan : plans) results.techniques.push_back(plan.technique->name);
     for (const SweepPlan& plan : plans) {
         for (const Settings& settings : plan.settings) {
             for (int n : threads) {
                 SweepRow row = withThreads(n, [&] {
-                    return measure(scene, world, references.at(referenceFor(*plan.technique, options)), *plan.technique,
+                    return measure(prepared, references.at(referenceFor(*plan.technique, options)), *plan.technique,
                                    {options.simd, settings, {}}, options);
                 });
                 row.threads = n;

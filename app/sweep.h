@@ -65,8 +65,8 @@ struct TimedFrames {
     Timing timing;
     Frame last;
 };
-TimedFrames timeFrames(const Scene& scene, const WorldGeometry& world, const Technique& technique,
-                       const FrameSettings& settings, int warmupRuns, int runs);
+TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
+                       int warmupRuns, int runs);
 
 // Checks the technique names and that every axis belongs to one of them, then renders one
 // frame per setting (a value a technique rejects fails there, before any measurement);

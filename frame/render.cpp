@@ -66,14 +66,14 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
     return buildGBuffer(world, camera, fb.primitiveIdImage(), fb.depthImage());
 }
 
-Frame renderFrame(const Scene& scene, const WorldGeometry& world, const Technique& technique,
-                  const FrameSettings& settings) {
+Frame renderFrame(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings) {
+    const Scene& scene = prepared.scene();
     if (scene.lights.empty()) throw std::invalid_argument("the scene has no light to cast shadows");
     const TechniqueParams params(technique.name, technique.params, settings.params);
     Frame frame;
-    frame.gbuffer = renderGBuffer(world, scene.camera, settings.simd);
+    frame.gbuffer = renderGBuffer(prepared.world(), scene.camera, settings.simd);
     const auto start = std::chrono::steady_clock::now();
-    frame.shadow = technique.run({scene, world, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir});
+    frame.shadow = technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir});
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
     return frame;

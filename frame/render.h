@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "raster/tile_kernels.h"
+#include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
 #include "shadows/technique.h"
@@ -48,7 +49,6 @@ struct FrameSettings {
 };
 
 // Throws std::invalid_argument for a parameter the technique does not have.
-Frame renderFrame(const Scene& scene, const WorldGeometry& world, const Technique& technique,
-                  const FrameSettings& settings = {});
+Frame renderFrame(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings = {});
 
 }  // namespace shadowlab

@@ -28,11 +28,11 @@ ImageChannels visibilityImage(const Frame& frame) {
     return image;
 }
 
-ImageChannels renderReferenceVisibility(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd,
+ImageChannels renderReferenceVisibility(const PreparedScene& prepared, raster::SimdLevel simd,
                                         const std::string& referenceName) {
     FrameSettings settings;
     settings.simd = simd;
-    return visibilityImage(renderFrame(scene, world, findTechnique(referenceName), settings));
+    return visibilityImage(renderFrame(prepared, findTechnique(referenceName), settings));
 }
 
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {

@@ -21,7 +21,7 @@ ImageChannels visibilityImage(const Frame& frame);
 
 // Renders the scene with the technique named referenceName (at its default settings) and
 // returns its visibilityImage().
-ImageChannels renderReferenceVisibility(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd,
+ImageChannels renderReferenceVisibility(const PreparedScene& prepared, raster::SimdLevel simd,
                                         const std::string& referenceName = "reference");
 
 // The frame's V against the reference's (compareImages with the default options).

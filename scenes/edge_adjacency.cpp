@@ -1,7 +1,6 @@
 #include "scenes/edge_adjacency.h"
 
 #include <algorithm>
-#include <mutex>
 #include <numeric>
 #include <tuple>
 
@@ -56,31 +55,6 @@ std::vector<bool> usedMeshes(const Scene& scene) {
     return used;
 }
 
-// What an adjacency depends on: which meshes are used, and their positions and triangles
-// (empty for the unused ones, which get no adjacency).
-struct MeshTopology {
-    std::vector<bool> used;
-    std::vector<std::vector<glm::vec3>> positions;
-    std::vector<std::vector<glm::uvec3>> triangles;
-};
-
-bool sameTopology(const MeshTopology& t, const Scene& scene, const std::vector<bool>& used) {
-    if (t.used != used) return false;
-    for (size_t m = 0; m < used.size(); ++m) {
-        if (used[m] && (t.positions[m] != scene.meshes[m].positions || t.triangles[m] != scene.meshes[m].triangles)) return false;
-    }
-    return true;
-}
-
-MeshTopology topologyOf(const Scene& scene, std::vector<bool> used) {
-    MeshTopology t{std::move(used), std::vector<std::vector<glm::vec3>>(scene.meshes.size()),
-                   std::vector<std::vector<glm::uvec3>>(scene.meshes.size())};
-    for (size_t m = 0; m < t.used.size(); ++m) {
-        if (t.used[m]) t.positions[m] = scene.meshes[m].positions, t.triangles[m] = scene.meshes[m].triangles;
-    }
-    return t;
-}
-
 }  // namespace
 
 EdgeAdjacency buildEdgeAdjacency(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles) {
@@ -111,23 +85,6 @@ std::vector<EdgeAdjacency> sceneEdgeAdjacency(const Scene& scene) {
     tbb::parallel_for(size_t(0), scene.meshes.size(), [&](size_t m) {
         if (used[m]) adjacency[m] = buildEdgeAdjacency(scene.meshes[m].positions, scene.meshes[m].triangles);
     });
-    return adjacency;
-}
-
-std::shared_ptr<const std::vector<EdgeAdjacency>> cachedSceneEdgeAdjacency(const Scene& scene) {
-    static std::mutex mutex;
-    static MeshTopology lastTopology;
-    static std::shared_ptr<const std::vector<EdgeAdjacency>> lastAdjacency;
-    std::vector<bool> used = usedMeshes(scene);
-    {
-        const std::lock_guard lock(mutex);
-        if (lastAdjacency && sameTopology(lastTopology, scene, used)) return lastAdjacency;
-    }
-    // Built outside the lock: its parallel loop may run other tasks on this thread meanwhile.
-    auto adjacency = std::make_shared<const std::vector<EdgeAdjacency>>(sceneEdgeAdjacency(scene));
-    MeshTopology topology = topologyOf(scene, std::move(used));
-    const std::lock_guard lock(mutex);
-    lastTopology = std::move(topology), lastAdjacency = adjacency;
     return adjacency;
 }
 

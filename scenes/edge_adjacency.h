@@ -18,7 +18,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <vector>
 
@@ -53,11 +52,5 @@ EdgeAdjacency buildEdgeAdjacency(std::span<const glm::vec3> positions, std::span
 // One adjacency per scene mesh that some instance uses (indexed like Scene::meshes, empty
 // for unused meshes), built in parallel.
 std::vector<EdgeAdjacency> sceneEdgeAdjacency(const Scene& scene);
-
-// sceneEdgeAdjacency() built once and kept while the scene's meshes and instances stay
-// the same: a run of frames (sweep, bench) pays for it once, as an engine builds it at load
-// time. The last scene's meshes are kept and compared by content, so an edited or another
-// scene can never get stale edges. Thread-safe.
-std::shared_ptr<const std::vector<EdgeAdjacency>> cachedSceneEdgeAdjacency(const Scene& scene);
 
 }  // namespace shadowlab

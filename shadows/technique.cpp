@@ -21,7 +21,7 @@ ShadowOutputs unshadowed(const ShadowInputs& in) {
 }
 
 ShadowOutputs exactReference(const ShadowInputs& in) {
-    const ReferenceVisibility reference(in.world);
+    const ReferenceVisibility reference(in.world());
     ShadowOutputs out;
     out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light));
     return out;
@@ -30,7 +30,7 @@ ShadowOutputs exactReference(const ShadowInputs& in) {
 // The soft shadows' reference: the visible fraction of the area light itself, from n x n
 // stratified samples (reference.h); point and directional lights give hard shadows.
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
-    const ReferenceVisibility reference(in.world);
+    const ReferenceVisibility reference(in.world());
     ShadowOutputs out;
     out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis", 1, 256)});
     return out;

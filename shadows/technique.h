@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "raster/tile_kernels.h"
+#include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
 #include "shadows/technique_params.h"
@@ -16,13 +17,15 @@
 namespace shadowlab {
 
 struct ShadowInputs {
-    const Scene& scene;
-    const WorldGeometry& world;
+    const PreparedScene& prepared;         // the scene, its world geometry and mesh data
     const GBuffer& gbuffer;
     const Light& light;                    // the selected light
     raster::SimdLevel simd;
     const TechniqueParams& params;         // the technique's level-of-detail settings
     std::filesystem::path debugDir;        // empty: write no intermediate buffers
+
+    const Scene& scene() const { return prepared.scene(); }
+    const WorldGeometry& world() const { return prepared.world(); }
 };
 
 // A named figure a technique reports about its own work (texels, fill, list lengths...).

@@ -75,7 +75,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
             const glm::dvec2 u = jitteredSample(a, b, perAxis, rng);
             Light point = pointLightFor(in.light);
             point.position = glm::vec3(areaLightPoint(frame, u));
-            const DepthMap map = renderDepthMap(in.world, fitLightView(point, in.gbuffer, in.world, fit), depth, in.simd);
+            const DepthMap map = renderDepthMap(in.world(), fitLightView(point, in.gbuffer, in.world(), fit), depth, in.simd);
             accumulateHardShadow(in.gbuffer, map, glm::dvec3(point.position), lit);
             if (a == 0 && b == 0) writeDepthMap(debug, "depth-sample0", map);
         }

@@ -76,16 +76,16 @@ uint32_t instanceOfVertex(const std::vector<InstanceRange>& ranges, uint32_t ver
 
 Layering layerScene(const ShadowInputs& in, const Fins& fins, const LightPlane& light, const LightView& view,
                     int layerCount) {
-    const std::vector<InstanceRange> ranges = instanceRanges(in.scene);
+    const std::vector<InstanceRange> ranges = instanceRanges(in.scene());
     std::vector<uint32_t> edgeInstance;
     for (const SilhouetteEdge& e : fins.edges) edgeInstance.push_back(instanceOfVertex(ranges, e.from));
     std::vector<double> fallback;   // instances without silhouette edges: their first vertex
-    for (const InstanceRange& r : ranges) fallback.push_back(light.distance(glm::dvec3(in.world.positions[r.firstVertex])));
+    for (const InstanceRange& r : ranges) fallback.push_back(light.distance(glm::dvec3(in.world().positions[r.firstVertex])));
     Layering l{LightLayers(fins.midpointDistance, view.zNear, view.zFar, layerCount), {}, {}};
     l.instanceLayer = instanceLayers(l.layers, fins.midpointDistance, edgeInstance, fallback);
     l.contents.resize(l.layers.count());
     for (size_t i = 0; i < ranges.size(); ++i) {
-        const auto first = in.world.triangles.begin() + ranges[i].firstTriangle;
+        const auto first = in.world().triangles.begin() + ranges[i].firstTriangle;
         std::vector<glm::uvec3>& geometry = l.contents[l.instanceLayer[i]].geometry;
         geometry.insert(geometry.end(), first, first + ranges[i].triangleCount);
     }
@@ -118,11 +118,11 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const LightPlane& light, 
     LightFitOptions fit;
     fit.resolution = s.resolution;
     fit.axis = light.normal;
-    const LightView view = fitLightView(pointLightFor(in.light), in.gbuffer, in.world, fit);
+    const LightView view = fitLightView(pointLightFor(in.light), in.gbuffer, in.world(), fit);
     const double L0 = view.zFar;   // the reference receiver plane (section 3.1)
     const std::vector<SilhouetteEdge> silhouette =
-        sceneSilhouette(in.scene, in.world, *cachedSceneEdgeAdjacency(in.scene), glm::dvec4(light.centre, 1.0));
-    const Fins fins = buildFins(in.world.positions, silhouette, light, L0, s.style);
+        sceneSilhouette(in.scene(), in.world(), in.prepared.edgeAdjacency(), glm::dvec4(light.centre, 1.0));
+    const Fins fins = buildFins(in.world().positions, silhouette, light, L0, s.style);
     const Layering layering = layerScene(in, fins, light, view, s.layers);
     const double finsMs = millisecondsSince(start);
 
@@ -136,7 +136,7 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const LightPlane& light, 
         const LayerContents& c = layering.contents[layer];
         if (c.empty()) continue;   // lit everywhere: nothing to combine
         ++layersDrawn;
-        const DepthMap hard = renderDepthMap(in.world.positions, c.geometry, view, hardSettings, in.simd);
+        const DepthMap hard = renderDepthMap(in.world().positions, c.geometry, view, hardSettings, in.simd);
         PenumbraMap inner;
         if (s.style.innerFins) inner = renderPenumbraMap(fins.inner, c.innerFins, view, s.resolution, FinKind::Inner, in.simd);
         const PenumbraMap outer = renderPenumbraMap(fins.outer, c.outerFins, view, s.resolution, FinKind::Outer, in.simd);
@@ -146,7 +146,7 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const LightPlane& light, 
     }
     const double layersMs = millisecondsSince(start);
     debug.writeFinCoverage(fins, s.resolution, in.simd);
-    debug.writePixelLayers(in.gbuffer, in.world, layering.instanceLayer, layering.layers.count());
+    debug.writePixelLayers(in.gbuffer, in.world(), layering.instanceLayer, layering.layers.count());
 
     out.visibility = buffer.values();
     out.stats = {{"silhouette edges", double(fins.edges.size())},

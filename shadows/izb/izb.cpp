@@ -81,7 +81,7 @@ std::vector<ParamSpec> irregularZBufferParams() {
 ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     const int requested = requestedResolution(in.params);
     const Light light = pointLightFor(in.light);
-    const double diagonal = sceneDiagonal(in.world);
+    const double diagonal = sceneDiagonal(in.world());
     StageClock clock;
     ShadowOutputs out;
     const izb::Receivers receivers = izb::gatherReceivers(in.gbuffer, light, diagonal, out.visibility);
@@ -89,7 +89,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     out.stats.push_back({"ms_receivers", clock.lap()});
     if (receivers.size() == 0) return out;
 
-    std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world);
+    std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world());
     const int resolution = requested ? requested : izb::chooseResolution(views, receivers, kTargetListLength);
     const izb::LightGrid grid = izb::makeLightGrid(std::move(views), resolution, diagonal);
     out.stats.push_back({"resolution", double(grid.resolution)});
@@ -100,12 +100,12 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     addListStats(lists, grid.texelCount(), out.stats);
     out.stats.push_back({"ms_lists", clock.lap()});
 
-    const izb::TileBins bins = izb::binOccluders(grid, lists, in.world);
+    const izb::TileBins bins = izb::binOccluders(grid, lists, in.world());
     out.stats.push_back({"tile_triangle_pairs", double(bins.triangles.entry.size())});
     out.stats.push_back({"ms_binning", clock.lap()});
 
     const izb::Occlusion occlusion =
-        izb::traverseOccluders(grid, izb::homogeneousLight(light), receivers, lists, bins, in.world);
+        izb::traverseOccluders(grid, izb::homogeneousLight(light), receivers, lists, bins, in.world());
     for (size_t r = 0; r < receivers.size(); ++r) {
         if (occlusion.blocked[r]) out.visibility[receivers.pixel[r]] = 0.0f;
     }

@@ -53,9 +53,9 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
         out.visibility.assign(in.gbuffer.pixelCount(), 0.0f);
         return out;
     }
-    const CascadedMaps cm = renderCascades(in.light, in.scene.camera, in.gbuffer, in.world, cs, depthMapSettings(s), in.simd);
-    const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene.camera, in.light, cm.maps,
-                                              cascadeSelector(cm, in.scene.camera), s.bias, makePcfKernel(s.filter),
+    const CascadedMaps cm = renderCascades(in.light, in.scene().camera, in.gbuffer, in.world(), cs, depthMapSettings(s), in.simd);
+    const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, in.light, cm.maps,
+                                              cascadeSelector(cm, in.scene().camera), s.bias, makePcfKernel(s.filter),
                                               !in.debugDir.empty());
     addStats(out, cm, s.resolution, lookup);
     const DebugBuffers debug(in.debugDir, "csm");

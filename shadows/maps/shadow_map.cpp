@@ -44,8 +44,8 @@ LightMaps cubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSe
     out.maps.resize(6);
     for (int face = 0; face < 6; ++face) {
         LightView view;
-        if (fitCubeFace(light, face, in.gbuffer, in.world, o, view)) {
-            out.maps[face] = renderDepthMap(in.world, view, depthMapSettings(s), in.simd);
+        if (fitCubeFace(light, face, in.gbuffer, in.world(), o, view)) {
+            out.maps[face] = renderDepthMap(in.world(), view, depthMapSettings(s), in.simd);
         }
     }
     return out;
@@ -58,17 +58,17 @@ LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapS
     if (forceCube) return cubeMaps(in, light, s, options);
     LightView view;
     try {
-        view = fitLightView(light, in.gbuffer, in.world, options);
+        view = fitLightView(light, in.gbuffer, in.world(), options);
     } catch (const std::invalid_argument&) {
         if (light.type != LightType::Point) throw;
         return cubeMaps(in, light, s, options);   // receivers all around the light
     }
     LightMaps out;
     if (lispsm) {
-        const LispsmView warped = lispsmView(view, light, in.scene.camera, in.gbuffer, s.resolution, options.marginTexels);
+        const LispsmView warped = lispsmView(view, light, in.scene().camera, in.gbuffer, s.resolution, options.marginTexels);
         view = warped.view, out.nOpt = warped.nOpt;
     }
-    out.maps.push_back(renderDepthMap(in.world, view, depthMapSettings(s), in.simd));
+    out.maps.push_back(renderDepthMap(in.world(), view, depthMapSettings(s), in.simd));
     return out;
 }
 
@@ -110,7 +110,7 @@ void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSett
                 DepthMapSettings one = depthMapSettings(s);
                 one.layer = layer;
                 writeDepthMap(debug, (layer == DepthLayer::First ? "depth-first" : "depth-second") + suffix,
-                              renderDepthMap(in.world, lm.maps[k].view, one, in.simd));
+                              renderDepthMap(in.world(), lm.maps[k].view, one, in.simd));
             }
         }
     }
@@ -133,7 +133,7 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
         return out;
     }
     const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm);
-    const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene.camera, light, lm.maps, selectorFor(lm), s.bias,
+    const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, light, lm.maps, selectorFor(lm), s.bias,
                                               makePcfKernel(s.filter), !in.debugDir.empty());
     addStats(out, lm, s, lookup);
     writeDebug(in, lm, s, lookup);

@@ -118,11 +118,11 @@ raster::PipelineState shadowState() {
 }
 
 ShadowOutputs run(const ShadowInputs& in) {
-    const Camera& camera = in.scene.camera;
+    const Camera& camera = in.scene().camera;
     const glm::dvec4 plane(0.0, 1.0, 0.0, -in.params.real("plane-y", -1e6, 1e6));
     const float opacity = float(in.params.real("opacity", 0.0, 1.0));
     const glm::dvec4 light = homogeneousLight(pointLightFor(in.light));
-    const PlanarSplit split = splitScene(in.scene, in.world, plane, light);
+    const PlanarSplit split = splitScene(in.scene(), in.world(), plane, light);
 
     const glm::dmat4 cameraFromWorld = clipFromWorldD(camera);
     const glm::mat4 clipFromWorld(cameraFromWorld);
@@ -130,9 +130,9 @@ ShadowOutputs run(const ShadowInputs& in) {
     raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = true});
     fb.clearDepth(1.0f), fb.clearStencil(kNoReceiver), fb.clearColor(glm::vec4(1.0f));
     raster::Rasterizer rasterizer(in.simd);
-    draw(rasterizer, fb, prepassState(), in.world, in.world.triangles, clipFromWorld);
-    draw(rasterizer, fb, receiverState(), in.world, split.receivers, clipFromWorld);
-    draw(rasterizer, fb, shadowState(), in.world, split.casters, clipFromShadow, glm::vec4(0.0f, 0.0f, 0.0f, opacity));
+    draw(rasterizer, fb, prepassState(), in.world(), in.world().triangles, clipFromWorld);
+    draw(rasterizer, fb, receiverState(), in.world(), split.receivers, clipFromWorld);
+    draw(rasterizer, fb, shadowState(), in.world(), split.casters, clipFromShadow, glm::vec4(0.0f, 0.0f, 0.0f, opacity));
 
     const std::vector<uint8_t> stencil = fb.stencilImage();
     const GBuffer& g = in.gbuffer;

@@ -2,8 +2,8 @@
 // buffer (Crow 1977; Heidmann 1991; Everitt and Kilgard 2002, "Practical and Robust
 // Stenciled Shadow Volumes"; RTR 4th ed., section 7.3). Per frame:
 //
-//   1. edge adjacency per mesh (edge_adjacency.h; built on the scene's first frame and
-//      kept, as an engine would at load time), silhouette edges per instance w.r.t.
+//   1. edge adjacency per mesh (scenes/edge_adjacency.h; built once per prepared scene,
+//      as an engine builds it at load time, scenes/prepared_scene.h), silhouette edges per instance w.r.t.
 //      the light (silhouette.h), sides extruded to infinity with w = 0 and, for z-fail,
 //      light and dark caps (volume_extrusion.h);
 //   2. z-pass or z-fail: param mode, or `auto`, which takes z-fail exactly when a volume
@@ -69,7 +69,7 @@ using raster::StencilOp;
 enum class Counting { ZPass, ZFail };
 
 Counting countingMode(const ShadowInputs& in, const glm::dvec4& light, bool& nearPlaneShadowed) {
-    nearPlaneShadowed = nearPlaneMayBeShadowed(in.scene.camera, light, instanceBounds(in.scene, in.world));
+    nearPlaneShadowed = nearPlaneMayBeShadowed(in.scene().camera, light, instanceBounds(in.scene(), in.world()));
     const std::string mode = in.params.choice("mode", {"auto", "zpass", "zfail"});
     if (mode == "zpass") return Counting::ZPass;
     if (mode == "zfail") return Counting::ZFail;
@@ -140,17 +140,15 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 ShadowOutputs run(const ShadowInputs& in) {
-    const Camera& camera = in.scene.camera;
+    const Camera& camera = in.scene().camera;
     const Light light = pointLightFor(in.light);
     const glm::dvec4 lightH = homogeneousLight(light);
     bool nearPlaneShadowed = false;
     const Counting counting = countingMode(in, lightH, nearPlaneShadowed);
 
     auto start = std::chrono::steady_clock::now();
-    const auto adjacency = cachedSceneEdgeAdjacency(in.scene);   // built on the scene's first frame
-    const double adjacencyMs = millisecondsSince(start);
-    start = std::chrono::steady_clock::now();
-    const ShadowVolume volume = extrudeShadowVolume(in.scene, in.world, *adjacency, lightH, counting == Counting::ZFail);
+    const std::vector<EdgeAdjacency>& adjacency = in.prepared.edgeAdjacency();
+    const ShadowVolume volume = extrudeShadowVolume(in.scene(), in.world(), adjacency, lightH, counting == Counting::ZFail);
     const double extrusionMs = millisecondsSince(start);
 
     start = std::chrono::steady_clock::now();
@@ -159,7 +157,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
     fb.clearDepth(1.0f), fb.clearStencil(0);
     raster::Rasterizer rasterizer(in.simd);
-    depthPrepass(rasterizer, fb, in.world, clipFromWorld);
+    depthPrepass(rasterizer, fb, in.world(), clipFromWorld);
     const raster::DrawCall call = volumeDraw(volume, counting, clipFromWorld);
     rasterizer.resetStats();
     rasterizer.draw(fb, stencilPassState(counting, float(in.params.real("offset", 0.0, 64.0))), call);
@@ -181,8 +179,8 @@ ShadowOutputs run(const ShadowInputs& in) {
     const double fragments = double(volumeRaster.fragments);
 
     uint32_t openMeshes = 0, openEdges = 0, nonManifoldEdges = 0;
-    for (const MeshInstance& instance : in.scene.instances) {
-        const EdgeAdjacency& a = (*adjacency)[instance.mesh];
+    for (const MeshInstance& instance : in.scene().instances) {
+        const EdgeAdjacency& a = adjacency[instance.mesh];
         openMeshes += !a.closed, openEdges += a.openEdges, nonManifoldEdges += a.nonManifoldEdges;
     }
     out.stats = {
@@ -199,7 +197,6 @@ ShadowOutputs run(const ShadowInputs& in) {
         {"fill fragments", fragments},
         {"fill fragments per pixel", fragments / double(g.pixelCount())},
         {"shadowed pixels", shadowed},
-        {"adjacency ms", adjacencyMs},
         {"silhouette+extrusion ms", extrusionMs},
         {"prepass+stencil ms", rasterMs},
     };
@@ -207,7 +204,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     if (debug.enabled()) {
         debug.write("stencil", camera.width, camera.height, out.stencil, -4.0f, 4.0f);
         debug.write("silhouette", camera.width, camera.height,
-                    silhouetteImage(camera, in.world.positions, volume.silhouette), 0.0f, 1.0f);
+                    silhouetteImage(camera, in.world().positions, volume.silhouette), 0.0f, 1.0f);
         fb.clearColor(glm::vec4(0.0f));
         rasterizer.draw(fb, fillCountState(), call);
         debug.write("fill", camera.width, camera.height, fb.colorImage(0), 0.0f, 8.0f);

@@ -36,8 +36,8 @@ Scene smallSphereBox(int width, int height) {
     return scene;
 }
 
-Frame renderSoftReference(const Scene& scene, const WorldGeometry& world, const std::string& samplesPerAxis) {
-    return renderFrame(scene, world, findTechnique("reference-soft"),
+Frame renderSoftReference(const PreparedScene& prepared, const std::string& samplesPerAxis) {
+    return renderFrame(prepared, findTechnique("reference-soft"),
                        {raster::SimdLevel::Scalar, {{"samples-per-axis", samplesPerAxis}}, {}});
 }
 
@@ -64,16 +64,17 @@ TEST_CASE("reference-soft: selectable, and exactly ReferenceVisibility of the di
     for (const char* name : {"shadow-map", "csm", "izb", "shadow-volume", "planar"})
         CHECK_MESSAGE(findTechnique(name).referenceName == "reference", name);
     const Scene scene = smallSphereBox(96, 60);
-    const WorldGeometry world = flatten(scene);
+    const PreparedScene prepared(scene);
+    const WorldGeometry& world = prepared.world();
     REQUIRE(scene.lights[0].type == LightType::Disk);
-    const Frame frame = renderSoftReference(scene, world, "32");
+    const Frame frame = renderSoftReference(prepared, "32");
     const std::vector<float> expected = ReferenceVisibility(world).visibility(frame.gbuffer, scene.lights[0]);
     CHECK(frame.shadow.visibility == expected);
     // Soft: some pixels see part of the light, unlike the hard reference.
     size_t fractional = 0;
     for (float v : frame.shadow.visibility) fractional += v > 0.0f && v < 1.0f;
     CHECK(fractional > 0);
-    CHECK_THROWS_AS(renderSoftReference(scene, world, "0"), std::invalid_argument);
+    CHECK_THROWS_AS(renderSoftReference(prepared, "0"), std::invalid_argument);
 }
 
 TEST_CASE("scoring: each technique against the reference it names, each reference rendered once") {
@@ -109,13 +110,14 @@ TEST_CASE("scoring: each technique against the reference it names, each referenc
 
 TEST_CASE("--light-radius: a larger disk widens the penumbra, monotonically") {
     Scene scene = smallSphereBox(320, 200);
-    const WorldGeometry world = flatten(scene);
+    PreparedScene prepared(scene);
     size_t previous = 0;
     for (float radius : {0.125f, 0.25f, 0.5f, 1.0f}) {
         CAPTURE(radius);
         applyOverrides(scene, lightRadius(radius));
+        prepared.setLights(scene.lights);
         CHECK(scene.lights[0].radius == radius);
-        const size_t band = penumbraPixels(renderSoftReference(scene, world, "8"));
+        const size_t band = penumbraPixels(renderSoftReference(prepared, "8"));
         CHECK(band > previous + previous / 4);   // the band is at least 25% wider each time
         previous = band;
     }

@@ -57,17 +57,17 @@ TEST_CASE("error map: the counts agree with compareImages, sizes must match") {
 
 TEST_CASE("scoring a frame: the reference against itself is exact, JSON carries stats and time") {
     const Scene scene = loadScene(builtinSceneDir() + "/hard/thin-occluder.json");
-    const WorldGeometry world = flatten(scene);
-    const ImageChannels reference = renderReferenceVisibility(scene, world, raster::SimdLevel::Scalar);
+    const PreparedScene prepared(scene);
+    const ImageChannels reference = renderReferenceVisibility(prepared, raster::SimdLevel::Scalar);
     FrameSettings settings;
     settings.simd = raster::SimdLevel::Scalar;
-    const Frame frame = renderFrame(scene, world, findTechnique("reference"), settings);
+    const Frame frame = renderFrame(prepared, findTechnique("reference"), settings);
     const ErrorFigures self = scoreFrame(reference, frame);
     CHECK(self.pixels > 100000);
     CHECK(self.rms == 0.0);
     CHECK(self.misclassified() == 0);
     // The thin plate's shadow is a sliver: `none` misses it, but only a little.
-    const ErrorFigures none = scoreFrame(reference, renderFrame(scene, world, findTechnique("none"), settings));
+    const ErrorFigures none = scoreFrame(reference, renderFrame(prepared, findTechnique("none"), settings));
     CHECK(none.falseLight > 0);
     CHECK(none.falseShadow == 0);
 

@@ -43,10 +43,10 @@ std::string hex(uint64_t v) {
 }
 
 // One line per buffer: "<name> <hash>".
-std::string frameHashes(const Scene& scene, const WorldGeometry& world, raster::SimdLevel simd) {
+std::string frameHashes(const PreparedScene& prepared, raster::SimdLevel simd) {
     FrameSettings settings;
     settings.simd = simd;
-    const Frame frame = renderFrame(scene, world, findTechnique("none"), settings);
+    const Frame frame = renderFrame(prepared, findTechnique("none"), settings);
     const GBuffer& g = frame.gbuffer;
     auto line = [](const char* name, auto&&... buffers) {
         Fnv1a h;
@@ -66,11 +66,10 @@ std::string goldenPath(const std::string& scene) {
 TEST_CASE("built-in scenes render to their golden hashes at every SIMD level and thread count") {
     const bool update = std::getenv("SHADOWLAB_UPDATE_GOLDEN") != nullptr;
     for (const std::string& name : builtinSceneNames()) {
-        const Scene scene = loadScene(name);
-        const WorldGeometry world = flatten(scene);
+        const PreparedScene prepared(loadScene(name));
         std::string expected;
         if (update) {
-            expected = frameHashes(scene, world, raster::SimdLevel::Scalar);
+            expected = frameHashes(prepared, raster::SimdLevel::Scalar);
             std::ofstream(goldenPath(name)) << expected;
         } else {
             std::ifstream in(goldenPath(name));
@@ -86,7 +85,7 @@ TEST_CASE("built-in scenes render to their golden hashes at every SIMD level and
             }
             for (int threads : {1, 2, 8}) {
                 INFO(name << ", " << raster::simdLevelName(simd) << ", " << threads << " threads");
-                CHECK(withThreads(threads, [&] { return frameHashes(scene, world, simd); }) == expected);
+                CHECK(withThreads(threads, [&] { return frameHashes(prepared, simd); }) == expected);
             }
         }
     }

@@ -83,10 +83,10 @@ std::string caseLine(const GoldenCase& c) {
     const bool builtin = c.scene.find('/') == std::string::npos;
     Scene scene = loadScene(builtin ? c.scene : std::string(SHADOWLAB_SOURCE_DIR) + "/" + c.scene);
     scene.camera.width = 320, scene.camera.height = 200;
-    const WorldGeometry world = flatten(scene);
+    const PreparedScene prepared(scene);
     FrameSettings settings;
     settings.params = c.params;
-    const Frame frame = renderFrame(scene, world, findTechnique(c.technique), settings);
+    const Frame frame = renderFrame(prepared, findTechnique(c.technique), settings);
     char hashes[40];
     std::snprintf(hashes, sizeof hashes, " %016llx %016llx", static_cast<unsigned long long>(fnv1a(frame.shadow.visibility)),
                   static_cast<unsigned long long>(fnv1a(frame.shadow.stencil)));

@@ -22,14 +22,16 @@ inline std::string hardCase(const std::string& name) {
     return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/hard/" + name + ".json";
 }
 
-struct PreparedScene {
-    Scene scene;
-    WorldGeometry world;
+struct HardScene {
+    shadowlab::PreparedScene prepared;
+    const Scene& scene;
+    const WorldGeometry& world;
     GBuffer gbuffer;
     std::vector<float> reference;   // exact V (point light at the light's centre)
 
-    explicit PreparedScene(const std::string& nameOrPath, raster::SimdLevel simd = raster::bestSimdLevel())
-        : scene(loadScene(nameOrPath)), world(flatten(scene)), gbuffer(renderGBuffer(world, scene.camera, simd)),
+    explicit HardScene(const std::string& nameOrPath, raster::SimdLevel simd = raster::bestSimdLevel())
+        : prepared(loadScene(nameOrPath)), scene(prepared.scene()), world(prepared.world()),
+          gbuffer(renderGBuffer(world, scene.camera, simd)),
           reference(ReferenceVisibility(world).visibility(gbuffer, pointLightFor(scene.lights[0]))) {}
 
     Light light() const { return pointLightFor(scene.lights[0]); }
@@ -38,7 +40,7 @@ struct PreparedScene {
                       raster::SimdLevel simd = raster::bestSimdLevel()) const {
         const Technique& t = findTechnique(technique);
         const TechniqueParams params(t.name, t.params, given);
-        return t.run({scene, world, gbuffer, scene.lights[0], simd, params, {}});
+        return t.run({prepared, gbuffer, scene.lights[0], simd, params, {}});
     }
 };
 
@@ -98,7 +100,7 @@ inline Misclassified misclassified(const GBuffer& g, const std::vector<float>& r
 
 // The bound: at most 0.01% of the hit pixels misclassified, each within one pixel
 // of a shadow boundary of the reference.
-inline void requireBound(const PreparedScene& s, const ShadowOutputs& out, const std::string& what) {
+inline void requireBound(const HardScene& s, const ShadowOutputs& out, const std::string& what) {
     const Misclassified m = misclassified(s.gbuffer, s.reference, s.light(), out.visibility);
     INFO(what << ": " << m.count << " misclassified of " << m.hitPixels << " (" << m.percent() << "%), "
               << m.falseShadow << " false shadow, " << m.falseLight << " false light, " << m.awayFromBoundary

@@ -16,19 +16,20 @@
 namespace shadowlab::test {
 
 struct SoftScene {
-    Scene scene;
-    WorldGeometry world;
+    PreparedScene prepared;
+    const Scene& scene;
+    const WorldGeometry& world;
     GBuffer gbuffer;
     std::vector<float> reference;   // soft V of the area light
 
     explicit SoftScene(Scene s, int samplesPerAxis = 32)
-        : scene(std::move(s)), world(flatten(scene)), gbuffer(renderGBuffer(world, scene.camera, raster::bestSimdLevel())),
+        : prepared(std::move(s)), scene(prepared.scene()), world(prepared.world()), gbuffer(renderGBuffer(world, scene.camera, raster::bestSimdLevel())),
           reference(ReferenceVisibility(world).visibility(gbuffer, scene.lights[0], {.areaSamplesPerAxis = samplesPerAxis})) {}
 
     ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {}) const {
         const Technique& t = findTechnique(technique);
         const TechniqueParams params(t.name, t.params, given);
-        return t.run({scene, world, gbuffer, scene.lights[0], raster::bestSimdLevel(), params, {}});
+        return t.run({prepared, gbuffer, scene.lights[0], raster::bestSimdLevel(), params, {}});
     }
 
     double rms(const std::vector<float>& v) const {

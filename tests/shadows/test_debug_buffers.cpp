@@ -37,16 +37,15 @@ using ScratchDir = test::ScratchDirectory;
 
 // A scene at kWidth x kHeight, flattened once; its frames with or without debug buffers.
 struct SmallScene {
-    Scene scene;
-    WorldGeometry world;
-    explicit SmallScene(Scene s) : scene(std::move(s)), world(flatten(scene)) {}
+    PreparedScene prepared;
+    explicit SmallScene(Scene s) : prepared(std::move(s)) {}
 
     Frame run(const std::string& technique, const fs::path& debugDir,
               const std::map<std::string, std::string>& params = {}) const {
         FrameSettings settings;
         settings.params = params;
         settings.debugDir = debugDir;
-        return renderFrame(scene, world, findTechnique(technique), settings);
+        return renderFrame(prepared, findTechnique(technique), settings);
     }
 };
 
@@ -120,7 +119,7 @@ TEST_CASE("debug buffers of every technique: exr with a png, camera or light-spa
         const SmallScene s = sceneFor(t.name);
         const ScratchDir dir("all-" + t.name);
         const Frame shown = s.run(t.name, dir.path), plain = s.run(t.name, {});
-        CHECK(checkDirectory(dir.path, t.name, s.scene.camera) >= 1);
+        CHECK(checkDirectory(dir.path, t.name, s.prepared.scene().camera) >= 1);
         CHECK(sameBytes(shown.shadow.visibility, plain.shadow.visibility));
         CHECK(sameBytes(shown.shadow.stencil, plain.shadow.stencil));
         CHECK(sameStats(shown.shadow, plain.shadow));
@@ -133,7 +132,7 @@ TEST_CASE("shadow-volume debug stencil: equals ShadowOutputs::stencil, nonzero e
     const Frame f = s.run("shadow-volume", dir.path);
     const std::vector<float> stencil = readBuffer(dir.path, "shadow-volume", "stencil");
     CHECK(stencil == f.shadow.stencil);
-    const Light light = pointLightFor(s.scene.lights[0]);
+    const Light light = pointLightFor(s.prepared.scene().lights[0]);
     size_t lit = 0, shadowed = 0, mismatched = 0;
     for (size_t k = 0; k < f.gbuffer.pixelCount(); ++k) {
         if (!f.gbuffer.hit[k] || !test::facesLight(f.gbuffer, k, light)) continue;
@@ -253,7 +252,7 @@ TEST_CASE("csm debug cascades.png: 4 cascades show at least 2 colours, the index
     size_t undecoded = 0, offSplits = 0;
     for (size_t k = 0; k < cascade.size(); ++k) {
         if (!f.gbuffer.hit[k]) continue;
-        const double depth = viewDepth(s.scene.camera, glm::dvec3(f.gbuffer.position[k]));
+        const double depth = viewDepth(s.prepared.scene().camera, glm::dvec3(f.gbuffer.position[k]));
         undecoded += cascade[k] < 0;
         offSplits += cascade[k] != cascadeOfSplits(f.shadow, 4, depth);
         byDepth.emplace_back(depth, cascade[k]);

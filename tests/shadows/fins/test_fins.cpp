@@ -41,12 +41,12 @@ void resize(Scene& scene, int width, int height) {
     applyOverrides(scene, size);
 }
 
-ShadowOutputs runTechnique(const Scene& scene, const WorldGeometry& world, const GBuffer& g, const std::string& name,
+ShadowOutputs runTechnique(const PreparedScene& prepared, const GBuffer& g, const std::string& name,
                            const std::map<std::string, std::string>& given = {},
                            raster::SimdLevel simd = raster::bestSimdLevel()) {
     const Technique& t = findTechnique(name);
     const TechniqueParams params(t.name, t.params, given);
-    return t.run({scene, world, g, scene.lights[0], simd, params, {}});
+    return t.run({prepared, g, prepared.scene().lights[0], simd, params, {}});
 }
 
 // ---- one straight edge ------------------------------------------------------------------
@@ -119,9 +119,9 @@ struct EdgeProfile {
 template <class Model>
 EdgeProfile edgeProfile(const std::string& technique, const std::map<std::string, std::string>& params, Model model) {
     const Scene scene = halfPlaneScene();
-    const WorldGeometry world = flatten(scene);
+    const PreparedScene prepared(scene);
     const GBuffer g = halfPlaneReceivers();
-    const ShadowOutputs out = runTechnique(scene, world, g, technique, params);
+    const ShadowOutputs out = runTechnique(prepared, g, technique, params);
     EdgeProfile p;
     for (int h = 0; h < 2; ++h) {
         for (int i = 0; i < kSamples; ++i) {
@@ -436,14 +436,15 @@ TEST_CASE("fins: 16 layers keep the light out of the green plane's umbra, one la
 TEST_CASE("fins: the same V bytes for 1 and 2 threads and for the scalar and the best SIMD level") {
     Scene scene = loadScene("sphere-box");
     resize(scene, 320, 200);
-    const WorldGeometry world = flatten(scene);
+    const PreparedScene prepared(scene);
+    const WorldGeometry& world = prepared.world();
     const GBuffer g = renderGBuffer(world, scene.camera, raster::bestSimdLevel());
     for (const std::string technique : {"fins", "smoothies", "penumbra-maps"}) {
         std::vector<float> V[2];
         for (int threads : {1, 2}) {
-            V[threads - 1] = withThreads(threads, [&] { return runTechnique(scene, world, g, technique).visibility; });
+            V[threads - 1] = withThreads(threads, [&] { return runTechnique(prepared, g, technique).visibility; });
         }
-        const std::vector<float> scalar = runTechnique(scene, world, g, technique, {}, raster::SimdLevel::Scalar).visibility;
+        const std::vector<float> scalar = runTechnique(prepared, g, technique, {}, raster::SimdLevel::Scalar).visibility;
         INFO(technique);
         REQUIRE(V[0].size() == V[1].size());
         CHECK(std::memcmp(V[0].data(), V[1].data(), V[0].size() * sizeof(float)) == 0);
@@ -454,17 +455,18 @@ TEST_CASE("fins: the same V bytes for 1 and 2 threads and for the scalar and the
 TEST_CASE("fins: parameter and light errors") {
     Scene scene = loadScene("sphere-box");
     resize(scene, 64, 40);
-    const WorldGeometry world = flatten(scene);
-    const GBuffer g = renderGBuffer(world, scene.camera, raster::bestSimdLevel());
-    CHECK_THROWS_AS(runTechnique(scene, world, g, "fins", {{"layers", "0"}}), std::invalid_argument);
-    CHECK_THROWS_AS(runTechnique(scene, world, g, "fins", {{"layers", "65"}}), std::invalid_argument);
-    CHECK_THROWS_AS(runTechnique(scene, world, g, "fins", {{"resolution", "8"}}), std::invalid_argument);
-    CHECK_THROWS_AS(runTechnique(scene, world, g, "fins", {{"falloff", "cubic"}}), std::invalid_argument);
-    CHECK_THROWS_AS(runTechnique(scene, world, g, "smoothies", {{"size", "0"}}), std::invalid_argument);
-    CHECK_THROWS_AS(runTechnique(scene, world, g, "penumbra-maps", {{"layers", "4"}}), std::invalid_argument);
+    PreparedScene prepared(scene);
+    const GBuffer g = renderGBuffer(prepared.world(), scene.camera, raster::bestSimdLevel());
+    CHECK_THROWS_AS(runTechnique(prepared, g, "fins", {{"layers", "0"}}), std::invalid_argument);
+    CHECK_THROWS_AS(runTechnique(prepared, g, "fins", {{"layers", "65"}}), std::invalid_argument);
+    CHECK_THROWS_AS(runTechnique(prepared, g, "fins", {{"resolution", "8"}}), std::invalid_argument);
+    CHECK_THROWS_AS(runTechnique(prepared, g, "fins", {{"falloff", "cubic"}}), std::invalid_argument);
+    CHECK_THROWS_AS(runTechnique(prepared, g, "smoothies", {{"size", "0"}}), std::invalid_argument);
+    CHECK_THROWS_AS(runTechnique(prepared, g, "penumbra-maps", {{"layers", "4"}}), std::invalid_argument);
     scene.lights[0].type = LightType::Point;
+    prepared.setLights(scene.lights);
     for (const std::string technique : {"fins", "smoothies", "penumbra-maps"}) {
-        CHECK_THROWS_WITH_AS(runTechnique(scene, world, g, technique), (technique + ": needs a disk light").c_str(),
+        CHECK_THROWS_WITH_AS(runTechnique(prepared, g, technique), (technique + ": needs a disk light").c_str(),
                              std::invalid_argument);
     }
 }

@@ -19,22 +19,20 @@ using namespace shadowlab;
 namespace {
 
 struct Views {
-    Scene scene;
-    WorldGeometry world;
+    PreparedScene prepared;
+    const Scene& scene;
+    const WorldGeometry& world;
     GBuffer gbuffer;
-};
 
-Views cameraView(const std::string& nameOrPath) {
-    Views v{loadScene(nameOrPath), {}, {}};
-    v.world = flatten(v.scene);
-    v.gbuffer = renderGBuffer(v.world, v.scene.camera, raster::bestSimdLevel());
-    return v;
-}
+    explicit Views(const std::string& nameOrPath)
+        : prepared(loadScene(nameOrPath)), scene(prepared.scene()), world(prepared.world()),
+          gbuffer(renderGBuffer(world, scene.camera, raster::bestSimdLevel())) {}
+};
 
 ShadowOutputs run(const std::string& technique, const Views& v, const std::map<std::string, std::string>& given = {}) {
     const Technique& t = findTechnique(technique);
     const TechniqueParams params(t.name, t.params, given);
-    return t.run({v.scene, v.world, v.gbuffer, v.scene.lights[0], raster::bestSimdLevel(), params, {}});
+    return t.run({v.prepared, v.gbuffer, v.scene.lights[0], raster::bestSimdLevel(), params, {}});
 }
 
 // A pixel lies within one pixel of a shadow boundary of the reference when one of its eight
@@ -52,7 +50,7 @@ bool nearReferenceBoundary(const GBuffer& g, const std::vector<float>& reference
 
 void checkAgainstReference(const std::string& nameOrPath) {
     CAPTURE(nameOrPath);
-    const Views v = cameraView(nameOrPath);
+    const Views v(nameOrPath);
     const std::vector<float> reference = run("reference", v).visibility;
     const std::vector<float> izb = run("izb", v).visibility;
     REQUIRE(izb.size() == reference.size());
@@ -94,7 +92,7 @@ TEST_CASE("izb agrees with the reference on every hard case") {
 }
 
 TEST_CASE("izb lists and V are the same bytes with 1 and 2 threads") {
-    const Views v = cameraView("sphere-box");
+    const Views v("sphere-box");
     const Light light = pointLightFor(v.scene.lights[0]);
     const double diagonal = sceneDiagonal(v.world);
     auto build = [&](int threads) {
@@ -115,7 +113,7 @@ TEST_CASE("izb lists and V are the same bytes with 1 and 2 threads") {
 }
 
 TEST_CASE("izb resolution: auto or 16..8192, a fixed resolution gives the same V") {
-    const Views v = cameraView("sphere-box");
+    const Views v("sphere-box");
     const std::vector<float> automatic = run("izb", v).visibility;
     CHECK(run("izb", v, {{"resolution", "64"}}).visibility == automatic);
     for (const char* bad : {"8", "9000", "abc", "", "1.5"}) {
@@ -126,7 +124,7 @@ TEST_CASE("izb resolution: auto or 16..8192, a fixed resolution gives the same V
 }
 
 TEST_CASE("izb reports its list-length figures") {
-    const Views v = cameraView("sphere-box");
+    const Views v("sphere-box");
     const ShadowOutputs out = run("izb", v);
     std::map<std::string, double> stat;
     for (const TechniqueStat& s : out.stats) stat[s.name] = s.value;
@@ -142,7 +140,7 @@ TEST_CASE("izb reports its list-length figures") {
 
 TEST_CASE("izb: a light inside a closed room needs all six cube faces, a light above the scene one view") {
     const auto views = [](const std::string& scene) {
-        for (const TechniqueStat& s : run("izb", cameraView(scene)).stats) {
+        for (const TechniqueStat& s : run("izb", Views(scene)).stats) {
             if (s.name == "views") return s.value;
         }
         FAIL("no views stat");

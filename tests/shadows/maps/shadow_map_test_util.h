@@ -21,11 +21,11 @@ inline Scene sunSphereBox(int width, int height) {
     return scene;
 }
 
-inline Frame frameOf(const Scene& scene, const WorldGeometry& world, const std::string& technique,
+inline Frame frameOf(const PreparedScene& prepared, const std::string& technique,
                      const std::map<std::string, std::string>& params = {}) {
     FrameSettings settings;
     settings.params = params;
-    return renderFrame(scene, world, findTechnique(technique), settings);
+    return renderFrame(prepared, findTechnique(technique), settings);
 }
 
 inline double statOf(const Frame& frame, const std::string& name) {

@@ -12,9 +12,9 @@ using namespace shadowlab::test;
 
 TEST_CASE("shadow-map, defaults, sphere-box: acne below 0.05% of lit pixels, leaks only at the boundary") {
     const Scene scene = loadScene("sphere-box");   // full 1280x800, as the issue states the bound
-    const WorldGeometry world = flatten(scene);
-    const Frame reference = frameOf(scene, world, "reference");
-    const Frame map = frameOf(scene, world, "shadow-map");
+    const PreparedScene prepared(scene);
+    const Frame reference = frameOf(prepared, "reference");
+    const Frame map = frameOf(prepared, "shadow-map");
     const double density = statOf(map, "texels_per_pixel_median");
     CHECK(statOf(map, "resolution") == 2048);
     CHECK(density > 0.5);
@@ -31,15 +31,15 @@ TEST_CASE("shadow-map, defaults, sphere-box: acne below 0.05% of lit pixels, lea
 TEST_CASE("shadow-map: every bias mode and depth layer keeps errors at the shadow boundary") {
     Scene scene = loadScene("sphere-box");
     scene.camera.width = 640, scene.camera.height = 400;
-    const WorldGeometry world = flatten(scene);
-    const Frame reference = frameOf(scene, world, "reference");
+    const PreparedScene prepared(scene);
+    const Frame reference = frameOf(prepared, "reference");
     const std::vector<std::map<std::string, std::string>> variants = {
         {{"bias", "constant"}},         {{"bias", "receiver-plane"}}, {{"bias", "normal-offset"}},
         {{"layer", "second"}, {"bias", "constant"}, {"constant-bias", "0"}}, {{"layer", "midpoint"}},
         {{"filter", "bilinear"}},       {{"filter", "grid"}},         {{"filter", "poisson"}},
     };
     for (const auto& params : variants) {
-        const Frame map = frameOf(scene, world, "shadow-map", params);
+        const Frame map = frameOf(prepared, "shadow-map", params);
         const BandedErrors m = bandedErrors(reference, map, leakBandPixels(statOf(map, "texels_per_pixel_median")));
         INFO(params.begin()->first << "=" << params.begin()->second << ": acne " << m.falseShadow << " of " << m.lit
                                    << ", leaks " << m.falseLight << " of " << m.shadowed);
@@ -53,9 +53,9 @@ TEST_CASE("shadow-map: six cube faces around a point light leave no gap") {
     scene.camera.width = 480, scene.camera.height = 300;
     scene.lights[0].type = LightType::Point;
     scene.lights[0].position = glm::vec3(0.0f, 0.5f, 2.0f);   // low, in front of the sphere: receivers all around
-    const WorldGeometry world = flatten(scene);
-    const Frame reference = frameOf(scene, world, "reference");
-    const Frame map = frameOf(scene, world, "shadow-map", {{"resolution", "1024"}});
+    const PreparedScene prepared(scene);
+    const Frame reference = frameOf(prepared, "reference");
+    const Frame map = frameOf(prepared, "shadow-map", {{"resolution", "1024"}});
     CHECK(statOf(map, "maps") >= 4);
     const BandedErrors m = bandedErrors(reference, map, leakBandPixels(statOf(map, "texels_per_pixel_median")));
     MESSAGE("cube: acne " << m.falseShadow << ", leaks " << m.falseLight << " of " << m.lit + m.shadowed);
@@ -65,8 +65,9 @@ TEST_CASE("shadow-map: six cube faces around a point light leave no gap") {
     Scene far = loadScene("sphere-box");
     far.camera.width = 480, far.camera.height = 300;
     far.lights[0].type = LightType::Point;
-    const Frame farReference = frameOf(far, world, "reference");
-    const Frame forced = frameOf(far, world, "shadow-map", {{"cube", "always"}, {"resolution", "1024"}});
+    const PreparedScene farPrepared(far);
+    const Frame farReference = frameOf(farPrepared, "reference");
+    const Frame forced = frameOf(farPrepared, "shadow-map", {{"cube", "always"}, {"resolution", "1024"}});
     const BandedErrors f = bandedErrors(farReference, forced, leakBandPixels(statOf(forced, "texels_per_pixel_median")));
     CHECK(f.falseLightOffBoundary == 0);
     CHECK(f.falseShadow < 0.001 * f.lit);
@@ -74,7 +75,7 @@ TEST_CASE("shadow-map: six cube faces around a point light leave no gap") {
 
 TEST_CASE("shadow-map and csm: the same V bytes with 1 and 2 threads") {
     const Scene scene = sunSphereBox(320, 200);
-    const WorldGeometry world = flatten(scene);
+    const PreparedScene prepared(scene);
     const std::vector<std::pair<std::string, std::map<std::string, std::string>>> runs = {
         {"shadow-map", {{"filter", "poisson"}, {"resolution", "512"}}},
         {"shadow-map", {{"warp", "lispsm"}, {"filter", "bilinear"}, {"resolution", "512"}}},
@@ -83,7 +84,7 @@ TEST_CASE("shadow-map and csm: the same V bytes with 1 and 2 threads") {
     for (const auto& [technique, params] : runs) {
         std::vector<float> v[2];
         for (int threads : {1, 2}) {
-            v[threads - 1] = withThreads(threads, [&] { return frameOf(scene, world, technique, params).shadow.visibility; });
+            v[threads - 1] = withThreads(threads, [&] { return frameOf(prepared, technique, params).shadow.visibility; });
         }
         INFO(technique);
         REQUIRE(v[0].size() == v[1].size());
@@ -97,11 +98,10 @@ TEST_CASE("shadow-map and csm: bad parameters are errors that name them") {
         s.camera.width = 64, s.camera.height = 40;
         return s;
     }();
-    const WorldGeometry world = flatten(point);
     const auto fails = [&](const Scene& scene, const std::string& technique, const std::map<std::string, std::string>& p,
                            const std::string& needle) {
         try {
-            frameOf(scene, world, technique, p);
+            frameOf(PreparedScene(scene), technique, p);
         } catch (const std::invalid_argument& e) {
             return std::string(e.what()).find(needle) != std::string::npos;
         }

@@ -131,9 +131,9 @@ TEST_CASE("csm: sample bounds put the splits around the receivers, on the 2^(1/8
 
 TEST_CASE("csm, defaults, sun over sphere-box: acne below 0.05% of lit pixels, leaks only at the boundary") {
     const Scene scene = sunSphereBox(640, 400);
-    const WorldGeometry world = flatten(scene);
-    const Frame reference = frameOf(scene, world, "reference");
-    const Frame csm = frameOf(scene, world, "csm");
+    const PreparedScene prepared(scene);
+    const Frame reference = frameOf(prepared, "reference");
+    const Frame csm = frameOf(prepared, "csm");
     const BandedErrors m = bandedErrors(reference, csm, leakBandPixels(statOf(csm, "texels_per_pixel_median")));
     MESSAGE("csm: acne " << m.falseShadow << " of " << m.lit << ", leaks " << m.falseLight << " of " << m.shadowed);
     CHECK(m.falseShadow < 0.0005 * m.lit);
@@ -143,10 +143,10 @@ TEST_CASE("csm, defaults, sun over sphere-box: acne below 0.05% of lit pixels, l
 
 TEST_CASE("LiSPSM: more texels near the viewer, and uniform again when the light is along the view (dueling frusta)") {
     Scene scene = sunSphereBox(320, 200);
-    const WorldGeometry world = flatten(scene);
-    const Frame reference = frameOf(scene, world, "reference");
-    const Frame uniform = frameOf(scene, world, "shadow-map", {{"resolution", "1024"}});
-    const Frame warped = frameOf(scene, world, "shadow-map", {{"resolution", "1024"}, {"warp", "lispsm"}});
+    PreparedScene prepared(scene);
+    const Frame reference = frameOf(prepared, "reference");
+    const Frame uniform = frameOf(prepared, "shadow-map", {{"resolution", "1024"}});
+    const Frame warped = frameOf(prepared, "shadow-map", {{"resolution", "1024"}, {"warp", "lispsm"}});
     MESSAGE("texels per pixel: uniform " << statOf(uniform, "texels_per_pixel_median") << ", lispsm "
                                          << statOf(warped, "texels_per_pixel_median") << ", n_opt " << statOf(warped, "lispsm_n_opt"));
     CHECK(statOf(warped, "texels_per_pixel_median") > 1.5 * statOf(uniform, "texels_per_pixel_median"));
@@ -158,8 +158,9 @@ TEST_CASE("LiSPSM: more texels near the viewer, and uniform again when the light
     const glm::vec3 view = glm::normalize(scene.camera.target - scene.camera.eye);
     const glm::vec3 side = glm::normalize(glm::cross(view, glm::vec3(0, 1, 0)));
     scene.lights[0].direction = glm::normalize(-view + 0.0087f * side);
-    const Frame dueling = frameOf(scene, world, "shadow-map", {{"resolution", "1024"}, {"warp", "lispsm"}});
-    const Frame dueling0 = frameOf(scene, world, "shadow-map", {{"resolution", "1024"}});
+    prepared.setLights(scene.lights);
+    const Frame dueling = frameOf(prepared, "shadow-map", {{"resolution", "1024"}, {"warp", "lispsm"}});
+    const Frame dueling0 = frameOf(prepared, "shadow-map", {{"resolution", "1024"}});
     MESSAGE("dueling: texels per pixel uniform " << statOf(dueling0, "texels_per_pixel_median") << ", lispsm "
                                                  << statOf(dueling, "texels_per_pixel_median") << ", n_opt "
                                                  << statOf(dueling, "lispsm_n_opt"));

@@ -50,11 +50,11 @@ TEST_CASE("shadow-map on every hard case: within its bound, or its known failure
     for (const HardCase& c : kCases) {
         const std::string name = c.scene;
         const Scene scene = loadScene(builtinSceneDir() + "/hard/" + name + ".json");
-        const WorldGeometry world = flatten(scene);
-        const Frame reference = test::frameOf(scene, world, "reference");
+        const PreparedScene prepared(scene);
+        const Frame reference = test::frameOf(prepared, "reference");
         const std::string technique = c.technique;
-        const Frame sm = technique == "lispsm" ? test::frameOf(scene, world, "shadow-map", {{"warp", "lispsm"}})
-                                               : test::frameOf(scene, world, technique);
+        const Frame sm = technique == "lispsm" ? test::frameOf(prepared, "shadow-map", {{"warp", "lispsm"}})
+                                               : test::frameOf(prepared, technique);
         const int band = test::leakBandPixels(test::statOf(sm, "texels_per_pixel_median"));
         const test::BandedErrors m = test::bandedErrors(reference, sm, band);
         const double hit = m.lit + m.shadowed;

@@ -25,7 +25,7 @@ struct Split {
     size_t elsewhereShadowed = 0;   // V = 0 in the test off the receiver
 };
 
-Split splitErrors(const test::PreparedScene& s, const std::vector<float>& v, uint32_t receiver) {
+Split splitErrors(const test::HardScene& s, const std::vector<float>& v, uint32_t receiver) {
     Split split;
     const GBuffer& g = s.gbuffer;
     for (int j = 0; j < g.height; ++j) {
@@ -63,7 +63,7 @@ TEST_CASE("planar: the projection matrix sends points along the light's rays ont
 }
 
 TEST_CASE("planar: sphere-box's ground shadow matches the reference, the objects' own shadows are its failure mode") {
-    const test::PreparedScene s("sphere-box");
+    const test::HardScene s("sphere-box");
     const ShadowOutputs out = s.run("planar");
     const Split split = splitErrors(s, out.visibility, 0);   // instance 0: the ground
     INFO("ground: " << split.onReceiver.count << " of " << split.onReceiver.hitPixels << " misclassified, "
@@ -80,7 +80,7 @@ TEST_CASE("planar: sphere-box's ground shadow matches the reference, the objects
 }
 
 TEST_CASE("planar: the sphere's own terminator is missed") {
-    const test::PreparedScene s(test::hardCase("sphere-terminator"));
+    const test::HardScene s(test::hardCase("sphere-terminator"));
     const ShadowOutputs out = s.run("planar");
     const GBuffer& g = s.gbuffer;
     size_t unlitSide = 0, unlitSideLit = 0;
@@ -94,7 +94,7 @@ TEST_CASE("planar: the sphere's own terminator is missed") {
 }
 
 TEST_CASE("planar: only the plane receives: a box under a slab stays lit, a plane off the ground casts nothing") {
-    const test::PreparedScene s(test::hardCase("camera-in-shadow"));
+    const test::HardScene s(test::hardCase("camera-in-shadow"));
     const std::vector<float> v = s.run("planar").visibility;
     const Split onGround = splitErrors(s, v, 0);
     CHECK(onGround.onReceiver.percent() <= 0.01);
@@ -117,13 +117,13 @@ TEST_CASE("planar: only the plane receives: a box under a slab stays lit, a plan
 }
 
 TEST_CASE("planar: the stencil blends each shadowed pixel once, the same bytes for 1 and 2 threads") {
-    const test::PreparedScene s("sphere-box");
+    const test::HardScene s("sphere-box");
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "shadowlab-test-planar";
     const Technique& planar = findTechnique("planar");
     const TechniqueParams params(planar.name, planar.params, {{"opacity", "0.5"}});
     const auto runWith = [&](int threads, const std::filesystem::path& debugDir) {
         return withThreads(threads, [&] {
-            return planar.run({s.scene, s.world, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), params, debugDir});
+            return planar.run({s.prepared, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), params, debugDir});
         });
     };
     const ShadowOutputs one = runWith(1, dir), two = runWith(2, {});
@@ -152,7 +152,7 @@ TEST_CASE("planar on every hard case: right on the ground plane, its known failu
     for (const auto& entry : std::filesystem::directory_iterator(builtinSceneDir() + "/hard")) {
         if (entry.path().extension() != ".json") continue;
         const std::string name = entry.path().stem().string();
-        const test::PreparedScene s(entry.path().string());
+        const test::HardScene s(entry.path().string());
         const std::vector<float> v = s.run("planar").visibility;
         // The receivers: instances with every vertex at y = 0.
         std::vector<bool> onGround(s.scene.instances.size(), true);

@@ -66,19 +66,27 @@ TEST_CASE("shadow-volume: edge adjacency welds duplicated vertices and finds a c
     CHECK(buildEdgeAdjacency(fin.positions, fin.triangles).nonManifoldEdges == 1);
 }
 
-TEST_CASE("shadow-volume: the cached edge adjacency is built once per scene and follows edits") {
+TEST_CASE("prepared scene: the edge adjacency is built once, on first use, and reported once") {
     Scene scene;
     scene.meshes = {makeBox(glm::vec3(0.0f), glm::vec3(1.0f))};
     scene.instances = {{"box", 0, 0, glm::mat4(1.0f)}};
-    const auto first = cachedSceneEdgeAdjacency(scene);
-    CHECK(cachedSceneEdgeAdjacency(scene) == first);   // the same frame's work, not rebuilt
+    const PreparedScene prepared(scene);
+    CHECK(prepared.preparationTimes().size() == 1);   // flattened only: nothing built yet
+    const std::vector<EdgeAdjacency>* first = &prepared.edgeAdjacency();
+    CHECK(&prepared.edgeAdjacency() == first);         // the same data, not rebuilt
     CHECK((*first)[0].closed);
-    // An edited mesh gets its own edges: drop one triangle and the box is open.
+    const auto times = prepared.preparationTimes();
+    REQUIRE(times.size() == 2);
+    CHECK(times[1].first == "edge_adjacency_ms");
+    CHECK(times[1].second >= 0.0);
+    // An edited copy is another prepared scene with its own edges: without one triangle
+    // the box is open.
     scene.meshes[0].triangles.pop_back();
-    const auto edited = cachedSceneEdgeAdjacency(scene);
-    CHECK(edited != first);
-    CHECK_FALSE((*edited)[0].closed);
-    CHECK((*edited)[0].edges.size() == buildEdgeAdjacency(scene.meshes[0].positions, scene.meshes[0].triangles).edges.size());
+    const PreparedScene edited(scene);
+    CHECK_FALSE(edited.edgeAdjacency()[0].closed);
+    CHECK(edited.edgeAdjacency()[0].edges.size() ==
+          buildEdgeAdjacency(scene.meshes[0].positions, scene.meshes[0].triangles).edges.size());
+    CHECK(prepared.edgeAdjacency()[0].closed);
 }
 
 TEST_CASE("shadow-volume: silhouette of a unit cube from known light positions") {
@@ -114,19 +122,19 @@ TEST_CASE("shadow-volume: silhouette of a unit cube from known light positions")
 
 TEST_CASE("shadow-volume: built-in scenes within 0.01% of the reference, errors only next to shadow boundaries") {
     for (const char* name : {"sphere-box", "bunny"}) {
-        const test::PreparedScene s(name);
+        const test::HardScene s(name);
         test::requireBound(s, s.run("shadow-volume"), name);
     }
 }
 
 TEST_CASE("shadow-volume: throughput (4.1 M triangles) within 0.01% of the reference") {
-    const test::PreparedScene s("throughput");
+    const test::HardScene s("throughput");
     test::requireBound(s, s.run("shadow-volume"), "throughput");
 }
 
 TEST_CASE("shadow-volume: z-pass and z-fail give the same stencil when the camera is outside every volume") {
     for (const char* name : {"sphere-box", "bunny"}) {
-        const test::PreparedScene s(name);
+        const test::HardScene s(name);
         const Camera& c = s.scene.camera;
         CHECK_FALSE(nearPlaneMayBeShadowed(c, homogeneousLight(s.scene.lights[0]), instanceBounds(s.scene, s.world)));
         const ShadowOutputs pass = s.run("shadow-volume", {{"mode", "zpass"}});
@@ -142,7 +150,7 @@ TEST_CASE("shadow-volume: z-pass and z-fail give the same stencil when the camer
 }
 
 TEST_CASE("shadow-volume: the same bytes for 1 and 2 threads and every SIMD level") {
-    const test::PreparedScene s("sphere-box");
+    const test::HardScene s("sphere-box");
     const auto runWith = [&](int threads, raster::SimdLevel simd) {
         return withThreads(threads, [&] { return s.run("shadow-volume", {{"mode", "zfail"}}, simd); });
     };

@@ -41,7 +41,7 @@ TEST_CASE("shadow-volume hard cases within the bound") {
     // lie outside the room. coincident-faces: the quads' caps coincide with the ground's.
     for (const char* name : {"coincident-faces", "grazing-light", "light-close", "open-mesh", "point-light-inside",
                              "sphere-terminator", "spot", "sun", "thin-occluder"}) {
-        const test::PreparedScene s(test::hardCase(name));
+        const test::HardScene s(test::hardCase(name));
         for (const char* mode : {"auto", "zfail"}) {
             test::requireBound(s, s.run("shadow-volume", {{"mode", mode}}), std::string(name) + ", mode=" + mode);
         }
@@ -50,7 +50,7 @@ TEST_CASE("shadow-volume hard cases within the bound") {
 
 TEST_CASE("shadow-volume hard cases: z-fail where a volume reaches the near plane, and z-pass failing there") {
     for (const char* name : {"camera-in-shadow", "near-plane-cuts-volume"}) {
-        const test::PreparedScene s(test::hardCase(name));
+        const test::HardScene s(test::hardCase(name));
         const ShadowOutputs automatic = s.run("shadow-volume");
         CHECK(test::stat(automatic, "near plane may be in shadow") == 1.0);
         CHECK(test::stat(automatic, "mode (0 z-pass, 1 z-fail)") == 1.0);
@@ -73,7 +73,7 @@ TEST_CASE("shadow-volume hard case huge-depth-range: the differences are the ref
     // more than a pixel from a reference boundary, an offset-free ray in double precision
     // side with shadow-volume (or the pixel be within one pixel of the boundary that ray
     // finds), and the reference's offset must be centimetres there.
-    const test::PreparedScene s(test::hardCase("huge-depth-range"));
+    const test::HardScene s(test::hardCase("huge-depth-range"));
     const ShadowOutputs out = s.run("shadow-volume");
     const test::Misclassified m = test::misclassified(s.gbuffer, s.reference, s.light(), out.visibility);
     INFO(m.count << " misclassified (" << m.percent() << "%), " << m.awayFromBoundary << " away from a boundary");
