@@ -1,4 +1,5 @@
-// flatten(): the world-space triangle list that every technique renders (scene.h).
+// flatten(): the world-space triangle list that every technique renders, and where each
+// instance lies in it (scene.h).
 #include "scenes/scene.h"
 
 namespace shadowlab {
@@ -36,6 +37,18 @@ WorldGeometry flatten(const Scene& scene) {
         }
     }
     return world;
+}
+
+std::vector<InstanceRange> instanceRanges(const Scene& scene) {
+    std::vector<InstanceRange> ranges;
+    uint32_t vertex = 0, triangle = 0;
+    for (const MeshInstance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes[instance.mesh];
+        ranges.push_back({instance.mesh, vertex, triangle, uint32_t(mesh.triangles.size())});
+        vertex += uint32_t(mesh.positions.size());
+        triangle += uint32_t(mesh.triangles.size());
+    }
+    return ranges;
 }
 
 }  // namespace shadowlab

@@ -84,4 +84,11 @@ struct WorldGeometry {
 
 WorldGeometry flatten(const Scene& scene);
 
+// Where one instance's vertices and triangles are in the WorldGeometry flatten() makes.
+struct InstanceRange {
+    uint32_t mesh;
+    uint32_t firstVertex, firstTriangle, triangleCount;
+};
+std::vector<InstanceRange> instanceRanges(const Scene& scene);
+
 }  // namespace shadowlab

@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-packages=(g++ cmake make pkg-config
+packages=(g++ cmake make pkg-config python3
           libglm-dev libstb-dev libopenexr-dev libimath-dev libtbb-dev doctest-dev
           libbenchmark-dev libembree-dev nlohmann-json3-dev libtinyobjloader-dev libcli11-dev)
 missing=()

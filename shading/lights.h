@@ -31,6 +31,13 @@ LightArrival lightArrival(const Light& light, const glm::vec3& point);
 // around its direction; evaluated in double. Used by shading and by the shadow reference.
 bool insideSpotCone(const Light& light, const glm::vec3& point);
 
+// Whether any light of `light` can arrive at a surface point P with normal N, before
+// occlusion: P is in front of the light, dot(N, L - P) > 0 with L the light's position (an
+// area light's centre) or, for a directional light, dot(N, direction) > 0; and a spot's P
+// lies inside its cone. Where this is false V = 0 (conventions.md, the V channel), so every
+// technique and the reference decide it alike. Evaluated in double.
+bool lightReaches(const Light& light, const glm::vec3& P, const glm::vec3& N);
+
 // Unit normal of the emitting side: disk: its direction; rectangle: the right-handed
 // normalize(cross(halfEdgeU, halfEdgeV)), i.e. the side from which U turns
 // counter-clockwise into V, like a front face (conventions.md, "Space and camera").

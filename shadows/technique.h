@@ -51,6 +51,7 @@ struct Technique {
     std::string referenceName = "reference";
 };
 
+// Every technique of every family (shadows/registry.cpp).
 const std::vector<Technique>& techniques();
 // Throws std::invalid_argument naming the known techniques.
 const Technique& findTechnique(const std::string& name);

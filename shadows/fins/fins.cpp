@@ -33,7 +33,6 @@
 #include "shadows/fins/illuminance_buffer.h"
 #include "shadows/fins/fin_maps.h"
 #include "shadows/silhouettes/silhouette.h"
-#include "shadows/volumes/volume_extrusion.h"
 
 namespace shadowlab {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "shadows/debug_buffers.h"
 #include "shadows/izb/izb.h"
-#include "shadows/reference/reference.h"
+#include "shadows/ray_offset.h"
 
 namespace shadowlab {
 namespace {

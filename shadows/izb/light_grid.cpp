@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "shadows/izb/izb.h"
-#include "shadows/reference/reference.h"
+#include "shadows/ray_offset.h"
 
 namespace shadowlab::izb {
 namespace {

@@ -9,20 +9,9 @@
 
 #include "shading/lights.h"
 #include "shadows/izb/izb.h"
-#include "shadows/reference/reference.h"
+#include "shadows/ray_offset.h"
 
 namespace shadowlab::izb {
-namespace {
-
-// Whether the light can reach P at all: in front of its surface (dot(N, L - P) > 0, the V
-// convention) and, for a spot light, inside the cone. Points failing it get V = 0 untested.
-bool canReceive(const Light& light, const HomogeneousLight& h, const glm::vec3& P, const glm::vec3& N) {
-    const glm::dvec3 towardsLight = glm::dvec3(h) - h.w * glm::dvec3(P);
-    if (!(glm::dot(glm::dvec3(N), towardsLight) > 0.0)) return false;
-    return light.type != LightType::Spot || insideSpotCone(light, P);
-}
-
-}  // namespace
 
 HomogeneousLight homogeneousLight(const Light& light) {
     if (light.type == LightType::Directional) return {glm::dvec3(light.direction), 0.0};
@@ -45,7 +34,7 @@ Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal,
     std::vector<uint8_t> keep(g.pixelCount(), 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount(), 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t k = r.begin(); k != r.end(); ++k) {
-            if (!g.hit[k] || !canReceive(light, h, g.position[k], g.normal[k])) continue;
+            if (!g.hit[k] || !lightReaches(light, g.position[k], g.normal[k])) continue;
             visibility[k] = 1.0f;
             glm::dvec3 origin;
             keep[k] = segment(k, origin) > 0.0;

@@ -58,11 +58,8 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
             out.mapIndex[k] = int8_t(m);
             if (everyPixelDensity || inDensitySample(i, j))
                 out.texelDensity[k] = float(texelsPerPixel(maps[m], rays, i, j, P, N));
-            const glm::dvec3 L = unitTowardsLight(light, P);
-            // The reference's convention: no light from behind the surface or outside the cone.
-            if (!(glm::dot(N, L) > 0.0)) continue;
-            if (light.type == LightType::Spot && !insideSpotCone(light, g.position[k])) continue;
-            const MapReceiver r = mapReceiver(maps[m], P, N, L, bias);
+            if (!lightReaches(light, g.position[k], g.normal[k])) continue;
+            const MapReceiver r = mapReceiver(maps[m], P, N, unitTowardsLight(light, P), bias);
             out.visibility[k] = float(filteredVisibility(maps[m], r, kernel, k));
         }
     });

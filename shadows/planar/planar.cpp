@@ -33,7 +33,6 @@
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/silhouettes/silhouette.h"
-#include "shadows/volumes/volume_extrusion.h"
 
 namespace shadowlab {
 namespace {

@@ -26,6 +26,7 @@
 
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shadows/ray_offset.h"
 
 namespace shadowlab {
 
@@ -33,14 +34,6 @@ struct ReferenceOptions {
     int areaSamplesPerAxis = 32;       // area lights: n x n strata, one sample each
     uint64_t seed = 0x5eed5eed5eedull;  // jitter; pixel k uses PCG32 stream k
 };
-
-// The diagonal of the bounding box of all vertices (m): the scene scale S below.
-double sceneDiagonal(const WorldGeometry& world);
-// How far a shadow ray's origin moves from P along N: 32 u S with u = 2^-24 and
-// S = max(max_k |P_k|, sceneDiagonal), derived in reference.cpp. Techniques that test
-// visibility exactly (the irregular z-buffer) use the same offset, so they agree with
-// the reference bit for bit on what counts as self-shadowing.
-double shadowRayOffset(const glm::vec3& P, double sceneDiagonal);
 
 class ReferenceVisibility {
 public:
@@ -61,7 +54,7 @@ public:
     // Shadow rays cast by all visibility() calls so far (for Mrays/s in benchmarks).
     uint64_t raysCast() const { return raysCast_.load(); }
 
-    // Distance (m) the shadow-ray origin is moved from P along N; derived in reference.cpp.
+    // Distance (m) the shadow-ray origin is moved from P along N (shadows/ray_offset.h).
     double shadowRayOffset(const glm::vec3& P) const;
 
 private:

@@ -5,7 +5,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "shadows/volumes/volume_extrusion.h"
 
 namespace shadowlab {
 

@@ -129,12 +129,6 @@ raster::DrawCall volumeDraw(const ShadowVolume& volume, Counting counting, const
     return call;
 }
 
-// The reference's own conditions for a lit point besides an unblocked ray (reference.h).
-bool facesLightAt(const Light& light, const glm::dvec4& homogeneous, const glm::vec3& P, const glm::vec3& N) {
-    if (light.type == LightType::Spot && !insideSpotCone(light, P)) return false;
-    return glm::dot(glm::dvec3(N), towardsLight(homogeneous, glm::dvec3(P))) > 0.0;
-}
-
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -172,7 +166,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     double shadowed = 0;
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         out.stencil[k] = float(int8_t(stencil[k]));   // wrapped count read as signed
-        const bool lit = g.hit[k] && stencil[k] == 0 && facesLightAt(light, lightH, g.position[k], g.normal[k]);
+        const bool lit = g.hit[k] && stencil[k] == 0 && lightReaches(light, g.position[k], g.normal[k]);
         out.visibility[k] = lit ? 1.0f : 0.0f;
         shadowed += g.hit[k] && !lit;
     }

@@ -108,18 +108,6 @@ ShadowVolume concatenate(std::vector<InstanceVolume>& parts) {
 
 }  // namespace
 
-std::vector<InstanceRange> instanceRanges(const Scene& scene) {
-    std::vector<InstanceRange> ranges;
-    uint32_t vertex = 0, triangle = 0;
-    for (const MeshInstance& instance : scene.instances) {
-        const Mesh& mesh = scene.meshes[instance.mesh];
-        ranges.push_back({instance.mesh, vertex, triangle, uint32_t(mesh.triangles.size())});
-        vertex += uint32_t(mesh.positions.size());
-        triangle += uint32_t(mesh.triangles.size());
-    }
-    return ranges;
-}
-
 ShadowVolume extrudeShadowVolume(const Scene& scene, const WorldGeometry& world,
                                  const std::vector<EdgeAdjacency>& adjacency, const glm::dvec4& light,
                                  bool withCaps) {

@@ -26,14 +26,6 @@
 
 namespace shadowlab {
 
-// Where one instance's vertices and triangles are in WorldGeometry (the order flatten()
-// documents: instance by instance, mesh order inside).
-struct InstanceRange {
-    uint32_t mesh;
-    uint32_t firstVertex, firstTriangle, triangleCount;
-};
-std::vector<InstanceRange> instanceRanges(const Scene& scene);
-
 struct ShadowVolume {
     std::vector<glm::vec4> vertices;           // world space, w = 1 or w = 0 (at infinity)
     std::vector<glm::uvec3> triangles;         // sides, then light caps, then dark caps

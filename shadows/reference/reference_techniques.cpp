@@ -1,0 +1,47 @@
+#include "shadows/reference/reference_techniques.h"
+
+#include "shadows/reference/reference.h"
+
+namespace shadowlab {
+namespace {
+
+ShadowOutputs unshadowed(const ShadowInputs& in) {
+    ShadowOutputs out;
+    out.visibility.resize(in.gbuffer.pixelCount());
+    for (size_t k = 0; k < out.visibility.size(); ++k) out.visibility[k] = in.gbuffer.hit[k] ? 1.0f : 0.0f;
+    return out;
+}
+
+ShadowOutputs exactReference(const ShadowInputs& in) {
+    const ReferenceVisibility reference(in.world());
+    ShadowOutputs out;
+    out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light));
+    return out;
+}
+
+// The soft shadows' reference: the visible fraction of the area light itself, from n x n
+// stratified samples (reference.h); point and directional lights give hard shadows.
+ShadowOutputs exactSoftReference(const ShadowInputs& in) {
+    const ReferenceVisibility reference(in.world());
+    ShadowOutputs out;
+    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis", 1, 256)});
+    return out;
+}
+
+}  // namespace
+
+Technique unshadowedTechnique() { return {"none", "no shadows: V = 1 on every surface", {}, unshadowed}; }
+
+Technique referenceTechnique() {
+    return {"reference", "exact hard shadows: one Embree shadow ray per pixel to the light's centre", {}, exactReference};
+}
+
+Technique softReferenceTechnique() {
+    return {"reference-soft",
+            "exact soft shadows: the visible fraction of the area light, n x n stratified Embree rays per pixel",
+            {{"samples-per-axis", "32", "n: n x n samples on the light (1..256)"}},
+            exactSoftReference,
+            "reference-soft"};
+}
+
+}  // namespace shadowlab
