@@ -121,26 +121,35 @@ std::string joinedNames(const std::vector<std::string>& names) {
     return joined;
 }
 
-std::string scenePath(const std::string& nameOrPath) {
+std::string scenePath(const std::string& nameOrPath, const std::string& sceneDir) {
     if (looksLikePath(nameOrPath)) return nameOrPath;
-    const fs::path path = fs::path(builtinSceneDir()) / (nameOrPath + ".json");
+    const fs::path path = fs::path(sceneDir) / (nameOrPath + ".json");
     if (!fs::is_regular_file(path))
-        throw SceneError("unknown scene \"" + nameOrPath + "\" (built-in scenes: " + joinedNames(builtinSceneNames()) +
+        throw SceneError("unknown scene \"" + nameOrPath + "\" (built-in scenes: " + joinedNames(sceneNamesIn(sceneDir)) +
                          "; a scene file path must end in .json or contain a '/')");
     return path.string();
 }
 
 }  // namespace
 
-std::string builtinSceneDir() {
+std::string findBuiltinSceneDir(const std::string& compiledDir) {
     const char* override = std::getenv("SHADOWLAB_SCENE_DIR");
-    return override && *override ? override : SHADOWLAB_SCENE_DIR;
+    if (override && *override) return override;
+    // SHADOWLAB_SCENE_DIR_FROM_BIN: the installed scene directory relative to the installed
+    // executables (scenes/CMakeLists.txt), "../share/shadowlab/scenes" by default.
+    std::error_code error;
+    const fs::path executable = fs::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        const fs::path installed = (executable.parent_path() / SHADOWLAB_SCENE_DIR_FROM_BIN).lexically_normal();
+        if (fs::is_directory(installed, error)) return installed.string();
+    }
+    return compiledDir;
 }
 
-std::vector<std::string> builtinSceneNames() {
+std::vector<std::string> sceneNamesIn(const std::string& sceneDir) {
     std::vector<std::string> names;
     std::error_code error;
-    for (const fs::directory_entry& entry : fs::directory_iterator(builtinSceneDir(), error)) {
+    for (const fs::directory_entry& entry : fs::directory_iterator(sceneDir, error)) {
         if (entry.is_regular_file() && entry.path().extension() == ".json")
             names.push_back(entry.path().stem().string());
     }
@@ -148,8 +157,8 @@ std::vector<std::string> builtinSceneNames() {
     return names;
 }
 
-Scene loadScene(const std::string& nameOrPath) {
-    const std::string path = scenePath(nameOrPath);
+Scene loadScene(const std::string& nameOrPath, const std::string& sceneDir) {
+    const std::string path = scenePath(nameOrPath, sceneDir);
     const std::string text = readWholeFile(path);
     const nlohmann::json document = parseJson(text, path);
     const std::string directory = fs::path(path).parent_path().string();
