@@ -44,10 +44,7 @@ PassTiming timeDepthPass(const BenchOptions& options, const WorldGeometry& world
     raster::Framebuffer fb(width, height);
     raster::Rasterizer rasterizer(options.simd);
     raster::PipelineState state;   // depth-only, less, back faces culled
-    raster::DrawCall call;
-    call.vertices.positions = world.positions;
-    call.triangles = world.triangles;
-    call.clipFromObject = clipFromWorld;
+    const raster::DrawCall call = raster::positionsDraw(world.positions, world.triangles, clipFromWorld);
     const Timing t = timeRuns(options, [&] {
         fb.clearDepth(1.0f);
         rasterizer.draw(fb, state, call);

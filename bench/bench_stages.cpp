@@ -152,9 +152,7 @@ void BM_FillRate(benchmark::State& state) {
     Framebuffer fb(kSize, kSize);
     Rasterizer r(level);
     PipelineState s;
-    DrawCall call;
-    call.vertices.positions = positions;
-    call.triangles = triangles;
+    const DrawCall call = positionsDraw(positions, triangles, glm::mat4(1.0f));
     for (auto _ : state) {
         fb.clearDepth(1.0f);
         r.draw(fb, s, call);

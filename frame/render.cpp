@@ -57,12 +57,8 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
     raster::PipelineState state;
     state.cull = raster::CullMode::None;
     state.output = raster::FragmentOutput::PrimitiveId;
-    raster::DrawCall call;
-    call.vertices.positions = world.positions;
-    call.triangles = world.triangles;
-    call.clipFromObject = clipFromWorld(camera);
     raster::Rasterizer rasterizer(simd);
-    rasterizer.draw(fb, state, call);
+    rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld(camera)));
     return buildGBuffer(world, camera, fb.primitiveIdImage(), fb.depthImage());
 }
 

@@ -36,6 +36,17 @@ struct DrawCall {
     glm::vec4 constantColor{1.0f};       // FragmentOutput::ConstantColor
 };
 
+// A draw of triangles over plain positions, without varyings: what the depth, stencil and
+// primitive-id passes over a scene's world geometry draw.
+inline DrawCall positionsDraw(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
+                              const glm::mat4& clipFromObject) {
+    DrawCall call;
+    call.vertices.positions = positions;
+    call.triangles = triangles;
+    call.clipFromObject = clipFromObject;
+    return call;
+}
+
 // Per-stage counters, summed over draws (integers, so independent of thread order).
 struct RasterStats {
     uint64_t trianglesSubmitted = 0;

@@ -196,26 +196,39 @@ inline Mask insideRect(I32 x, I32 y, const PixelRect& r) {
            simd::cmpGt(y, simd::splat(int32_t(r.y0 - 1))) & simd::cmpGt(simd::splat(int32_t(r.y1)), y);
 }
 
+// One triangle in one tile: what every 8x8 block of it shares.
+struct TileTriangle {
+    const TriangleSetup& tri;
+    const DrawConstants& draw;
+    const FramebufferView& fb;
+    const CrossingEdge* edges;   // the triangle's edges that cross the tile
+    int edgeCount;
+    int tileX, tileY;            // the tile's first pixel
+    PixelRect region;            // the triangle's pixel bounds clipped to the tile
+};
+
+// Rasterizes the block at (blockX, blockY), whose pixels start at blockOffset in the
+// block-linear buffers, and returns the number of fragments it covered.
 template <FragmentOutput kOutput, bool kStencil>
-void rasterizeBlock(const TriangleSetup& tri, const DrawConstants& draw, const FramebufferView& fb,
-                    const CrossingEdge* tileEdges, int tileEdgeCount, int tileX, int tileY,
-                    int blockX, int blockY, const PixelRect& region, size_t blockOffset, uint64_t& fragments) {
+uint64_t rasterizeBlock(const TileTriangle& t, int blockX, int blockY, size_t blockOffset) {
     // Coarse test: the extreme corners of the 8x8 block decide reject, accept or test.
     const CrossingEdge* edges[3];
     int32_t atBlock[3];
     int edgeCount = 0;
     constexpr int32_t kLast = kBlockSize - 1;
-    for (int k = 0; k < tileEdgeCount; ++k) {
-        const CrossingEdge& e = tileEdges[k];
-        const int32_t value = e.atTile + e.a * (blockX - tileX) + e.b * (blockY - tileY);
+    for (int k = 0; k < t.edgeCount; ++k) {
+        const CrossingEdge& e = t.edges[k];
+        const int32_t value = e.atTile + e.a * (blockX - t.tileX) + e.b * (blockY - t.tileY);
         const int32_t highest = value + positivePart(e.a) * kLast + positivePart(e.b) * kLast;
         const int32_t lowest = value + negativePart(e.a) * kLast + negativePart(e.b) * kLast;
-        if (highest < 0) return;
+        if (highest < 0) return 0;
         if (lowest < 0) edges[edgeCount] = &e, atBlock[edgeCount++] = value;
     }
+    const PixelRect& region = t.region;
     const bool blockInsideRegion = blockX >= region.x0 && blockX + kBlockSize <= region.x1 &&
                                    blockY >= region.y0 && blockY + kBlockSize <= region.y1;
     const I32 minusOne = simd::splat(int32_t(-1));
+    uint64_t fragments = 0;
     for (int v = 0; v < kPixelsPerBlock / simd::kWidth; ++v) {
         Mask covered = simd::allLanes();
         for (int k = 0; k < edgeCount; ++k) {
@@ -225,8 +238,9 @@ void rasterizeBlock(const TriangleSetup& tri, const DrawConstants& draw, const F
         if (!blockInsideRegion) covered = covered & insideRect(x, y, region);
         if (!simd::any(covered)) continue;
         fragments += uint64_t(simd::countLanes(covered));
-        shadeFragments<kOutput, kStencil>(tri, draw, fb, {covered, x, y, blockOffset + size_t(v * simd::kWidth)});
+        shadeFragments<kOutput, kStencil>(t.tri, t.draw, t.fb, {covered, x, y, blockOffset + size_t(v * simd::kWidth)});
     }
+    return fragments;
 }
 
 template <FragmentOutput kOutput, bool kStencil>
@@ -253,13 +267,14 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const Draw
         }
     }
 
+    const TileTriangle triangle{tri, draw, fb, edges, edgeCount, tileX, tileY, region};
     const size_t tileOffset = size_t(tileIndex) * kPixelsPerTile;
     for (int blockY = region.y0 & ~(kBlockSize - 1); blockY < region.y1; blockY += kBlockSize) {
         for (int blockX = region.x0 & ~(kBlockSize - 1); blockX < region.x1; blockX += kBlockSize) {
             const size_t blockIndex = size_t(((blockY - tileY) >> kBlockShift) * kBlocksPerTileSide +
                                              ((blockX - tileX) >> kBlockShift));
-            rasterizeBlock<kOutput, kStencil>(tri, draw, fb, edges, edgeCount, tileX, tileY, blockX, blockY,
-                                              region, tileOffset + blockIndex * kPixelsPerBlock, fragments);
+            fragments += rasterizeBlock<kOutput, kStencil>(triangle, blockX, blockY,
+                                                           tileOffset + blockIndex * kPixelsPerBlock);
         }
     }
 }

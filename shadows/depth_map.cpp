@@ -18,12 +18,8 @@ std::vector<float> depthLayer(std::span<const glm::vec3> positions, std::span<co
     state.cull = cull;
     state.offset = settings.offset;
     state.output = raster::FragmentOutput::DepthOnly;
-    raster::DrawCall call;
-    call.vertices.positions = positions;
-    call.triangles = triangles;
-    call.clipFromObject = clipFromWorld;
     raster::Rasterizer rasterizer(simd);
-    rasterizer.draw(framebuffer, state, call);
+    rasterizer.draw(framebuffer, state, raster::positionsDraw(positions, triangles, clipFromWorld));
     return framebuffer.depthImage();
 }
 

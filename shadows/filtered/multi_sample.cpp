@@ -19,7 +19,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <tbb/parallel_for.h>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
@@ -29,6 +28,7 @@
 #include "shadows/maps/shadow_bias.h"
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
+#include "shadows/receiver_pass.h"
 
 namespace shadowlab {
 namespace {
@@ -43,15 +43,13 @@ constexpr double kFitMarginTexels = 1.5;
 void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const glm::dvec3& position, std::vector<uint16_t>& lit) {
     const PcfKernel nearest = makePcfKernel({FilterKind::Nearest});
     const BiasSettings bias;   // slope-scaled: the offset is in the map, the receiver stays put
-    tbb::parallel_for(0, g.height, [&](int j) {
-        for (int i = 0; i < g.width; ++i) {
-            const size_t k = g.index(i, j);
-            if (!g.hit[k]) continue;
-            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            if (!(glm::dot(N, position - P) > 0.0)) continue;
-            const MapReceiver r = mapReceiver(map, P, N, glm::normalize(position - P), bias);
-            lit[k] = uint16_t(lit[k] + (filteredVisibility(map, r, nearest, k) > 0.5 ? 1 : 0));
-        }
+    const auto inFront = [&](size_t k) {
+        return glm::dot(glm::dvec3(g.normal[k]), position - glm::dvec3(g.position[k])) > 0.0;
+    };
+    forEachReachedPixel(g, inFront, [&](int, int, size_t k) {
+        const glm::dvec3 P(g.position[k]), N(g.normal[k]);
+        const MapReceiver r = mapReceiver(map, P, N, glm::normalize(position - P), bias);
+        lit[k] = uint16_t(lit[k] + (filteredVisibility(map, r, nearest, k) > 0.5 ? 1 : 0));
     });
 }
 

@@ -23,11 +23,11 @@
 #include <vector>
 
 #include <glm/glm.hpp>
-#include <tbb/parallel_for.h>
 
 #include "raster/tile_kernels.h"
 #include "shading/gbuffer.h"
 #include "shadows/depth_map.h"
+#include "shadows/receiver_pass.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -66,14 +66,10 @@ SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const 
 // outputs, so the results are the same for any thread count.
 template <class PerPixel>
 void forEachReceiverFacingLight(const GBuffer& g, const SoftShadowMap& soft, PerPixel perPixel) {
-    tbb::parallel_for(0, g.height, [&](int j) {
-        for (int i = 0; i < g.width; ++i) {
-            const size_t k = g.index(i, j);
-            if (!g.hit[k]) continue;
-            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            const SoftReceiver receiver = softReceiver(soft, P, N);
-            if (receiver.facesLight) perPixel(k, P, N, receiver);
-        }
+    forEachSurfacePixel(g, [&](int, int, size_t k) {
+        const glm::dvec3 P(g.position[k]), N(g.normal[k]);
+        const SoftReceiver receiver = softReceiver(soft, P, N);
+        if (receiver.facesLight) perPixel(k, P, N, receiver);
     });
 }
 

@@ -58,11 +58,8 @@ void FinDebug::writeFinCoverage(const Fins& fins, int size, raster::SimdLevel si
     framebuffer.clearColor(glm::vec4(0.0f));
     raster::Rasterizer rasterizer(simd);
     for (const FinPrimitives* kind : {&fins.inner, &fins.outer}) {
-        raster::DrawCall call;
-        call.vertices.positions = kind->positions;
-        call.triangles = kind->triangles;
-        call.clipFromObject = glm::mat4(view_.clipFromWorld());
-        rasterizer.draw(framebuffer, coverageCountState(), call);
+        rasterizer.draw(framebuffer, coverageCountState(),
+                        raster::positionsDraw(kind->positions, kind->triangles, glm::mat4(view_.clipFromWorld())));
     }
     debug_.write("fin-coverage", size, size, framebuffer.colorImage(0), 0.0f, 4.0f);
 }

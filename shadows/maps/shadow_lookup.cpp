@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
 
 #include "scenes/camera.h"
 #include "shading/lights.h"
+#include "shadows/receiver_pass.h"
 
 namespace shadowlab {
 namespace {
@@ -48,20 +48,17 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
     out.texelDensity.assign(g.pixelCount(), 0.0f);
     out.mapIndex.assign(g.pixelCount(), -1);
     const PixelRays rays(camera);
-    tbb::parallel_for(0, g.height, [&](int j) {
-        for (int i = 0; i < g.width; ++i) {
-            const size_t k = g.index(i, j);
-            if (!g.hit[k]) continue;
-            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            const int m = select(P, k);
-            if (m < 0) continue;
-            out.mapIndex[k] = int8_t(m);
-            if (everyPixelDensity || inDensitySample(i, j))
-                out.texelDensity[k] = float(texelsPerPixel(maps[m], rays, i, j, P, N));
-            if (!lightReaches(light, g.position[k], g.normal[k])) continue;
-            const MapReceiver r = mapReceiver(maps[m], P, N, unitTowardsLight(light, P), bias);
-            out.visibility[k] = float(filteredVisibility(maps[m], r, kernel, k));
-        }
+    // Every surface pixel, not only those the light reaches: the map serving a pixel and its
+    // texel density are shown (and measured) wherever there is a surface.
+    forEachSurfacePixel(g, [&](int i, int j, size_t k) {
+        const glm::dvec3 P(g.position[k]), N(g.normal[k]);
+        const int m = select(P, k);
+        if (m < 0) return;
+        out.mapIndex[k] = int8_t(m);
+        if (everyPixelDensity || inDensitySample(i, j)) out.texelDensity[k] = float(texelsPerPixel(maps[m], rays, i, j, P, N));
+        if (!lightReaches(light, g.position[k], g.normal[k])) return;
+        const MapReceiver r = mapReceiver(maps[m], P, N, unitTowardsLight(light, P), bias);
+        out.visibility[k] = float(filteredVisibility(maps[m], r, kernel, k));
     });
     return out;
 }

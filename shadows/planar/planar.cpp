@@ -81,10 +81,7 @@ PlanarSplit splitScene(const Scene& scene, const WorldGeometry& world, const glm
 void draw(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::PipelineState& state,
           const WorldGeometry& world, std::span<const glm::uvec3> triangles, const glm::mat4& clipFromWorld,
           const glm::vec4& color = glm::vec4(1.0f)) {
-    raster::DrawCall call;
-    call.vertices.positions = world.positions;
-    call.triangles = triangles;
-    call.clipFromObject = clipFromWorld;
+    raster::DrawCall call = raster::positionsDraw(world.positions, triangles, clipFromWorld);
     call.constantColor = color;
     rasterizer.draw(fb, state, call);
 }

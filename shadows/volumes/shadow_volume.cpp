@@ -83,11 +83,7 @@ void depthPrepass(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const
     raster::PipelineState state;
     state.cull = raster::CullMode::None;
     state.clipFar = false;
-    raster::DrawCall call;
-    call.vertices.positions = world.positions;
-    call.triangles = world.triangles;
-    call.clipFromObject = clipFromWorld;
-    rasterizer.draw(fb, state, call);
+    rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld));
 }
 
 raster::PipelineState stencilPassState(Counting counting, float offsetUnits) {
