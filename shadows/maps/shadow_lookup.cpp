@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-
 #include "scenes/camera.h"
 #include "shading/lights.h"
 #include "shadows/receiver_pass.h"
