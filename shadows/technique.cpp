@@ -32,7 +32,7 @@ ShadowOutputs exactReference(const ShadowInputs& in) {
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
     const ReferenceVisibility reference(in.world);
     ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis", 1, 256)});
+    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis")});
     return out;
 }
 
@@ -49,7 +49,8 @@ const std::vector<Technique>& techniques() {
         {"none", "no shadows: V = 1 on every surface", {}, unshadowed},
         {"reference", "exact hard shadows: one Embree shadow ray per pixel to the light's centre", {}, exactReference},
         {"reference-soft", "exact soft shadows: the visible fraction of the area light, n x n stratified Embree rays per pixel",
-         {{"samples-per-axis", "32", "n: n x n samples on the light (1..256)"}}, exactSoftReference, "reference-soft"},
+         {integerParam("samples-per-axis", 32, 1, 256, "n: n x n samples on the light")}, exactSoftReference,
+         "reference-soft"},
         shadowMapTechnique(),
         cascadedShadowMapTechnique(),
         {"izb", "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows", irregularZBufferParams(), irregularZBuffer},

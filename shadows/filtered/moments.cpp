@@ -83,15 +83,18 @@ int momentCount(MomentKind kind) {
     return 0;
 }
 
+// The exponents' bounds keep every moment finite in double: e^{2 * 170 * 2} overflows,
+// e^680 does not (largest double ~ e^709).
 std::vector<ParamSpec> momentParamSpecs(MomentKind kind) {
     switch (kind) {
         case MomentKind::Variance:
-            return {{"bleeding-reduction", "0.2", "Chebyshev bounds below this are shadow, the rest stretched to [0, 1] (0..0.99)"}};
+            return {realParam("bleeding-reduction", 0.2, 0.0, 0.99,
+                              "Chebyshev bounds below this are shadow, the rest stretched to [0, 1]")};
         case MomentKind::Exponential:
-            return {{"exponent", "80", "c of e^{c z}, z the normalised linear depth (0.1..700)"}};
+            return {realParam("exponent", 80.0, 0.1, 700.0, "c of e^{c z}, z the normalised linear depth")};
         case MomentKind::ExponentialVariance:
-            return {{"positive-exponent", "40", "c+ of e^{c+ (2z - 1)} (0.1..170)"},
-                    {"negative-exponent", "5", "c- of -e^{-c- (2z - 1)} (0.1..170)"}};
+            return {realParam("positive-exponent", 40.0, 0.1, 170.0, "c+ of e^{c+ (2z - 1)}"),
+                    realParam("negative-exponent", 5.0, 0.1, 170.0, "c- of -e^{-c- (2z - 1)}")};
         case MomentKind::Hamburger4: return {};
     }
     return {};
@@ -100,13 +103,11 @@ std::vector<ParamSpec> momentParamSpecs(MomentKind kind) {
 MomentSettings readMomentSettings(MomentKind kind, const TechniqueParams& p) {
     MomentSettings s;
     s.kind = kind;
-    // Bounds keep every moment finite in double: e^{2 * 170 * 2} overflows, e^680 does not
-    // (largest double ~ e^709).
-    if (kind == MomentKind::Variance) s.bleedingReduction = p.real("bleeding-reduction", 0.0, 0.99);
-    if (kind == MomentKind::Exponential) s.exponent = p.real("exponent", 0.1, 700.0);
+    if (kind == MomentKind::Variance) s.bleedingReduction = p.real("bleeding-reduction");
+    if (kind == MomentKind::Exponential) s.exponent = p.real("exponent");
     if (kind == MomentKind::ExponentialVariance) {
-        s.positiveExponent = p.real("positive-exponent", 0.1, 170.0);
-        s.negativeExponent = p.real("negative-exponent", 0.1, 170.0);
+        s.positiveExponent = p.real("positive-exponent");
+        s.negativeExponent = p.real("negative-exponent");
     }
     return s;
 }

@@ -5,6 +5,9 @@
 // pcss.cpp, filtered_shadow_map.cpp and multi_sample.cpp; docs/soft-shadows.md.
 #pragma once
 
+#include <string>
+
+#include "shadows/depth_map.h"
 #include "shadows/filtered/moments.h"
 #include "shadows/technique.h"
 
@@ -14,9 +17,11 @@ Technique pcssTechnique();
 Technique filteredShadowMapTechnique(MomentKind kind);
 Technique multiSampleTechnique();
 
-// The map resolution these techniques default to: 1024 texels per side. A disk light of
-// radius 0.5 m over the built-in scenes casts penumbrae 5 to 40 texels wide at this size,
-// so the filters, not the texels, set the shadow's softness.
-inline constexpr const char* kSoftResolutionDefault = "1024";
+// The `resolution` parameter of these techniques, 1024 texels per side by default. A disk
+// light of radius 0.5 m over the built-in scenes casts penumbrae 5 to 40 texels wide at this
+// size, so the filters, not the texels, set the shadow's softness.
+inline ParamSpec softResolutionParam(const std::string& help) {
+    return integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution, help);
+}
 
 }  // namespace shadowlab

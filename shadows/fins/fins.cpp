@@ -163,8 +163,12 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const LightPlane& light, 
 }
 
 std::vector<ParamSpec> commonParams() {
-    return {{"resolution", "1024", "texels per side of the hard shadow and penumbra maps (16..8192)"},
-            {"falloff", "linear", "penumbra fall-off: linear (eq. 1) | bernstein (3u^2 - 2u^3, Haines 2001)"}};
+    return {integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution,
+                         "texels per side of the hard shadow and penumbra maps"),
+            choiceParam<Falloff>("falloff", "linear",
+                                 {{"linear", Falloff::Linear, "eq. 1"},
+                                  {"bernstein", Falloff::Bernstein, "3u^2 - 2u^3, Haines 2001"}},
+                                 "penumbra fall-off")};
 }
 
 // The disk light and the settings every variant reads; throws std::invalid_argument.
@@ -173,8 +177,8 @@ FinSettings commonSettings(const ShadowInputs& in, const std::string& technique,
     light = lightPlaneOf(in.light);
     FinSettings s;
     s.technique = technique;
-    s.resolution = in.params.integer("resolution", 16, 8192);
-    s.falloff = in.params.choice("falloff", {"linear", "bernstein"}) == "linear" ? Falloff::Linear : Falloff::Bernstein;
+    s.resolution = in.params.integer("resolution");
+    s.falloff = in.params.choice<Falloff>("falloff");
     return s;
 }
 
@@ -182,7 +186,7 @@ ShadowOutputs runFins(const ShadowInputs& in) {
     LightPlane light;
     FinSettings s = commonSettings(in, "fins", light);
     s.style = {.innerFins = true, .edgeWeight = 0.5f, .sizing = {FinSizing::Kind::LightRadius, light.radius}};
-    s.layers = in.params.integer("layers", 1, kMaxLayers);
+    s.layers = in.params.integer("layers");
     return renderFinShadows(in, light, s);
 }
 
@@ -190,7 +194,7 @@ ShadowOutputs runSmoothies(const ShadowInputs& in) {
     LightPlane light;
     FinSettings s = commonSettings(in, "smoothies", light);
     s.style = {.innerFins = false, .edgeWeight = 1.0f,
-               .sizing = {FinSizing::Kind::AngularWidth, in.params.real("size", 1e-4, 1.0)}};
+               .sizing = {FinSizing::Kind::AngularWidth, in.params.real("size")}};
     return renderFinShadows(in, light, s);
 }
 
@@ -205,9 +209,9 @@ ShadowOutputs runPenumbraMaps(const ShadowInputs& in) {
 
 Technique finsTechnique() {
     std::vector<ParamSpec> params = commonParams();
-    params.push_back({"layers", "16",
-                      "light-space layers of about equal numbers of silhouette edges (section 4.1, 1..64); "
-                      "1 = the single-layer algorithm (section 3)"});
+    params.push_back(integerParam("layers", 16, 1, kMaxLayers,
+                                  "light-space layers of about equal numbers of silhouette edges, section 4.1; "
+                                  "1 is the single-layer algorithm of section 3"));
     return {"fins",
             "multi-layered shadow fins (Cai et al. 2006): inner and outer fins, penumbra maps per layer, refined "
             "illuminance buffer; disk lights",
@@ -216,9 +220,9 @@ Technique finsTechnique() {
 
 Technique smoothiesTechnique() {
     std::vector<ParamSpec> params = commonParams();
-    params.push_back({"size", "0.06",
-                      "smoothie width as seen from the light's centre, tangent of the angle (1e-4..1); "
-                      "0.06 is about the built-in disk (radius 0.5 m) seen from 8 m"});
+    params.push_back(realParam("size", 0.06, 1e-4, 1.0,
+                               "smoothie width as seen from the light's centre, tangent of the angle; "
+                               "0.06 is about the built-in disk (radius 0.5 m) seen from 8 m"));
     return {"smoothies",
             "smoothies (Chan and Durand 2003): hard shadow plus outer fins of one global size; disk lights", params,
             runSmoothies};

@@ -67,12 +67,15 @@ using raster::CompareFunc;
 using raster::StencilOp;
 
 enum class Counting { ZPass, ZFail };
+enum class Mode { Auto, ZPass, ZFail };   // the `mode` parameter: a counting, or auto
 
 Counting countingMode(const ShadowInputs& in, const glm::dvec4& light, bool& nearPlaneShadowed) {
     nearPlaneShadowed = nearPlaneMayBeShadowed(in.scene.camera, light, instanceBounds(in.scene, in.world));
-    const std::string mode = in.params.choice("mode", {"auto", "zpass", "zfail"});
-    if (mode == "zpass") return Counting::ZPass;
-    if (mode == "zfail") return Counting::ZFail;
+    switch (in.params.choice<Mode>("mode")) {
+        case Mode::ZPass: return Counting::ZPass;
+        case Mode::ZFail: return Counting::ZFail;
+        case Mode::Auto: break;
+    }
     return nearPlaneShadowed ? Counting::ZFail : Counting::ZPass;
 }
 
@@ -162,7 +165,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     depthPrepass(rasterizer, fb, in.world, clipFromWorld);
     const raster::DrawCall call = volumeDraw(volume, counting, clipFromWorld);
     rasterizer.resetStats();
-    rasterizer.draw(fb, stencilPassState(counting, float(in.params.real("offset", 0.0, 64.0))), call);
+    rasterizer.draw(fb, stencilPassState(counting, float(in.params.real("offset"))), call);
     const raster::RasterStats volumeRaster = rasterizer.stats();
     const double rasterMs = millisecondsSince(start);
 
@@ -220,8 +223,12 @@ ShadowOutputs run(const ShadowInputs& in) {
 Technique shadowVolumeTechnique() {
     return {"shadow-volume",
             "stencil shadow volumes: silhouettes extruded to infinity, z-pass or z-fail with two-sided wrapping stencil",
-            {{"mode", "auto", "auto | zpass | zfail; auto takes z-fail when a volume may reach the near plane"},
-             {"offset", "0", "polygon offset of the volume faces, in units of the depth buffer's resolution"}},
+            {choiceParam<Mode>("mode", "auto",
+                               {{"auto", Mode::Auto, "z-fail when a volume may reach the near plane"},
+                                {"zpass", Mode::ZPass},
+                                {"zfail", Mode::ZFail}}),
+             realParam("offset", 0.0, 0.0, 64.0,
+                       "polygon offset of the volume faces, in units of the depth buffer's resolution")},
             run};
 }
 
