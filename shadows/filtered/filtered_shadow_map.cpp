@@ -1,5 +1,6 @@
 // The filtered shadow maps `vsm`, `esm`, `evsm` and `msm` (Real-Time Rendering, 4th ed.,
-// section 7.7): one mechanism, parameterised by the moments it stores (moments.h):
+// section 7.7): one mechanism, parameterised by the moments it stores (moments.h; each
+// kind in the file named after its technique, vsm.cpp, esm.cpp, evsm.cpp, msm.cpp):
 //
 //   1. the depth map from the light's centre, in linear depth (soft_shadow_map.h);
 //   2. every texel's moments (moments.h);
@@ -174,13 +175,7 @@ Technique filteredShadowMapTechnique(MomentKind kind) {
     };
     for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
     for (const ParamSpec& p : momentParamSpecs(kind)) params.push_back(p);
-    const char* const descriptions[] = {
-        "variance shadow map (RTR 7.7, Donnelly and Lauritzen 2006): Chebyshev bound, light-bleeding reduction",
-        "exponential shadow map (RTR 7.7, Annen et al. 2008): filtered e^{cz}",
-        "exponential variance shadow map (Lauritzen and McCool 2008): positive and negative warps",
-        "moment shadow map (Peters and Klein 2015): four moments, Hamburger reconstruction",
-    };
-    return {momentKindName(kind), descriptions[int(kind)], params,
+    return {momentKindName(kind), momentKindDescription(kind), params,
             [kind](const ShadowInputs& in) { return runFiltered(kind, in); }};
 }
 

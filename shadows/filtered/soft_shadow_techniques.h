@@ -2,7 +2,8 @@
 // shadows), the filtered maps `vsm`, `esm`, `evsm`, `msm` (one mechanism, four moment
 // kinds; box or Gaussian blur or a summed-area table; fixed or PCSS width) and
 // `multi-sample` (the average of hard shadow maps from points on the light). See
-// pcss.cpp, filtered_shadow_map.cpp and multi_sample.cpp; docs/soft-shadows.md.
+// pcss.cpp, filtered_shadow_map.cpp (with vsm.cpp, esm.cpp, evsm.cpp and msm.cpp) and
+// multi_sample.cpp; docs/soft-shadows.md.
 #pragma once
 
 #include <string>
