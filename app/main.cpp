@@ -279,7 +279,9 @@ int main(int argc, char** argv) {
     t->callback([] {
         for (const Technique& tech : techniques()) {
             std::printf("%-16s %s\n", tech.name.c_str(), tech.description.c_str());
-            for (const ParamSpec& p : tech.params) std::printf("    %s=%s  %s\n", p.name.c_str(), p.defaultValue.c_str(), p.help.c_str());
+            for (const ParamSpec& p : tech.params) {
+                std::printf("    %s=%s  %s\n", p.name.c_str(), p.defaultValue.c_str(), paramHelp(p).c_str());
+            }
         }
     });
 

@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/fixed_point.h"
 #include "raster/pipeline_state.h"
 #include "raster/tile_kernels.h"
 #include "scenes/scene.h"
@@ -22,6 +23,10 @@
 namespace shadowlab {
 
 enum class DepthLayer { First, Second, Midpoint };
+
+// The texels per side a technique's maps may have. A map is drawn as one viewport, so the
+// rasterizer's limit (fixed_point.h) is the upper one.
+inline constexpr int kMinMapResolution = 16, kMaxMapResolution = raster::kMaxViewport;
 
 struct DepthMap {
     int size = 0;                           // texels per side (square map)

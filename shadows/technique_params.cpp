@@ -5,62 +5,181 @@
 #include <stdexcept>
 
 namespace shadowlab {
+namespace {
+
+constexpr const char* kAuto = "auto";
+
+// The shortest text that reads back as the same double, exponent without padding: "0.05",
+// "8192", "1e-4", "1e6".
+std::string numberText(double value) {
+    char buffer[32];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    std::string text(buffer, end);
+    const size_t e = text.find('e');
+    if (e == std::string::npos) return text;
+    size_t digits = e + 1;
+    if (text[digits] == '+') text.erase(digits, 1);
+    if (text[digits] == '-') ++digits;
+    while (text[digits] == '0' && digits + 1 < text.size()) text.erase(digits, 1);
+    return text;
+}
+
+template <class T>
+std::optional<T> parseNumber(const std::string& text) {
+    T value{};
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return value;
+}
+
+const ParamChoice* findChoice(const ParamSpec& spec, const std::string& text) {
+    for (const ParamChoice& c : spec.choices) {
+        if (c.name == text) return &c;
+    }
+    return nullptr;
+}
+
+std::string rangeText(const ParamSpec& spec) {
+    return numberText(spec.min) + ".." + numberText(spec.max) + (spec.orAuto ? std::string(" or ") + kAuto : "");
+}
+
+std::string choiceList(const ParamSpec& spec, const std::string& separator, bool withHelp) {
+    std::string list;
+    for (const ParamChoice& c : spec.choices) {
+        list += (list.empty() ? "" : separator) + c.name;
+        if (withHelp && !c.help.empty()) list += " (" + c.help + ")";
+    }
+    return list;
+}
+
+// What the spec allows, as the end of "must be ...".
+std::string allowedText(const ParamSpec& spec) {
+    switch (spec.type) {
+        case ParamType::Integer: return "an integer in " + rangeText(spec);
+        case ParamType::Real: return "a finite number in " + rangeText(spec);
+        case ParamType::Flag: return "on or off";
+        case ParamType::Choice: return "one of " + choiceList(spec, ", ", false);
+    }
+    return "";
+}
+
+bool inRange(const ParamSpec& spec, double value) { return value >= spec.min && value <= spec.max; }
+
+bool allows(const ParamSpec& spec, const std::string& text) {
+    switch (spec.type) {
+        case ParamType::Integer: {
+            if (spec.orAuto && text == kAuto) return true;
+            const std::optional<int> value = parseNumber<int>(text);
+            return value && inRange(spec, *value);
+        }
+        case ParamType::Real: {
+            const std::optional<double> value = parseNumber<double>(text);
+            return value && std::isfinite(*value) && inRange(spec, *value);
+        }
+        case ParamType::Flag: return text == "on" || text == "off";
+        case ParamType::Choice: return findChoice(spec, text) != nullptr;
+    }
+    return false;
+}
+
+}  // namespace
+
+ParamSpec integerParam(std::string name, int defaultValue, int min, int max, std::string help) {
+    return {.name = std::move(name), .type = ParamType::Integer, .defaultValue = std::to_string(defaultValue),
+            .help = std::move(help), .min = double(min), .max = double(max)};
+}
+
+ParamSpec integerOrAutoParam(std::string name, int min, int max, std::string help) {
+    return {.name = std::move(name), .type = ParamType::Integer, .defaultValue = kAuto, .help = std::move(help),
+            .min = double(min), .max = double(max), .orAuto = true};
+}
+
+ParamSpec realParam(std::string name, double defaultValue, double min, double max, std::string help) {
+    return {.name = std::move(name), .type = ParamType::Real, .defaultValue = numberText(defaultValue),
+            .help = std::move(help), .min = min, .max = max};
+}
+
+ParamSpec flagParam(std::string name, bool defaultValue, std::string help) {
+    return {.name = std::move(name), .type = ParamType::Flag, .defaultValue = defaultValue ? "on" : "off",
+            .help = std::move(help)};
+}
+
+ParamSpec choiceParam(std::string name, std::string defaultChoice, std::vector<ParamChoice> choices,
+                      const std::type_info& choiceType, std::string help) {
+    return {.name = std::move(name), .type = ParamType::Choice, .defaultValue = std::move(defaultChoice),
+            .help = std::move(help), .choices = std::move(choices), .choiceType = &choiceType};
+}
+
+std::string paramHelp(const ParamSpec& spec) {
+    const std::string help = spec.help.empty() ? "" : spec.help + " ";
+    switch (spec.type) {
+        case ParamType::Integer:
+        case ParamType::Real: return help + "(" + rangeText(spec) + ")";
+        case ParamType::Flag: return help + "(on | off)";
+        case ParamType::Choice: return (spec.help.empty() ? "" : spec.help + ": ") + choiceList(spec, " | ", true);
+    }
+    return spec.help;
+}
 
 TechniqueParams::TechniqueParams(const std::string& technique, const std::vector<ParamSpec>& specs,
                                  const std::map<std::string, std::string>& given)
     : technique_(technique) {
-    for (const ParamSpec& s : specs) values_[s.name] = s.defaultValue;
+    for (const ParamSpec& s : specs) {
+        if (!specs_.emplace(s.name, s).second) throw std::logic_error(technique + " declares parameter " + s.name + " twice");
+        if (!allows(s, s.defaultValue)) {
+            throw std::logic_error(technique + ": the default " + s.name + "=" + s.defaultValue + " is not " + allowedText(s));
+        }
+        values_[s.name] = s.defaultValue;
+    }
     for (const auto& [name, value] : given) {
-        if (!values_.count(name)) {
+        const auto it = specs_.find(name);
+        if (it == specs_.end()) {
             std::string known;
             for (const ParamSpec& s : specs) known += (known.empty() ? "" : ", ") + s.name;
             throw std::invalid_argument("technique '" + technique + "' has no parameter '" + name + "' (" +
                                         (known.empty() ? "it has none" : "known: " + known) + ")");
         }
+        if (!allows(it->second, value)) {
+            throw std::invalid_argument(technique + ": parameter " + name + "=" + value + ": must be " + allowedText(it->second));
+        }
         values_[name] = value;
     }
 }
 
-const std::string& TechniqueParams::raw(const std::string& name) const {
-    const auto it = values_.find(name);
-    if (it == values_.end()) throw std::logic_error("parameter '" + name + "' was not declared by " + technique_);
-    return it->second;
+const ParamSpec& TechniqueParams::spec(const std::string& name, ParamType type, bool orAuto,
+                                       const std::type_info* choiceType) const {
+    const auto it = specs_.find(name);
+    if (it == specs_.end()) throw std::logic_error("parameter '" + name + "' was not declared by " + technique_);
+    const ParamSpec& s = it->second;
+    if (s.type != type || s.orAuto != orAuto || (choiceType && *s.choiceType != *choiceType)) {
+        throw std::logic_error(technique_ + " reads parameter '" + name + "' as another type than it declared");
+    }
+    return s;
 }
 
-void TechniqueParams::fail(const std::string& name, const std::string& why) const {
-    throw std::invalid_argument(technique_ + ": parameter " + name + "=" + raw(name) + ": " + why);
+int TechniqueParams::integer(const std::string& name) const {
+    spec(name, ParamType::Integer);
+    return *parseNumber<int>(values_.at(name));
 }
 
-int TechniqueParams::integer(const std::string& name, int min, int max) const {
-    const std::string& text = raw(name);
-    int value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size()) fail(name, "expected an integer");
-    if (value < min || value > max) fail(name, "must be in " + std::to_string(min) + ".." + std::to_string(max));
-    return value;
+std::optional<int> TechniqueParams::integerOrAuto(const std::string& name) const {
+    spec(name, ParamType::Integer, true);
+    const std::string& text = values_.at(name);
+    return text == kAuto ? std::nullopt : parseNumber<int>(text);
 }
 
-double TechniqueParams::real(const std::string& name, double min, double max) const {
-    const std::string& text = raw(name);
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) fail(name, "expected a finite number");
-    if (value < min || value > max) fail(name, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
-    return value;
+double TechniqueParams::real(const std::string& name) const {
+    spec(name, ParamType::Real);
+    return *parseNumber<double>(values_.at(name));
 }
 
 bool TechniqueParams::flag(const std::string& name) const {
-    return choice(name, {"off", "on"}) == "on";
+    spec(name, ParamType::Flag);
+    return values_.at(name) == "on";
 }
 
-std::string TechniqueParams::choice(const std::string& name, const std::vector<std::string>& choices) const {
-    const std::string& text = raw(name);
-    std::string list;
-    for (const std::string& c : choices) {
-        if (c == text) return c;
-        list += (list.empty() ? "" : ", ") + c;
-    }
-    fail(name, "must be one of " + list);
+int TechniqueParams::choiceValue(const std::string& name, const std::type_info& type) const {
+    return findChoice(spec(name, ParamType::Choice, false, &type), values_.at(name))->value;
 }
 
 void parseParamAssignment(const std::string& text, std::map<std::string, std::string>& into) {

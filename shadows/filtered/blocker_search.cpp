@@ -9,15 +9,15 @@ namespace shadowlab {
 
 std::vector<ParamSpec> blockerSearchParamSpecs() {
     return {
-        {"search-taps", "16", "blocker search: Poisson taps (1..64)"},
-        {"search-region", "1", "blocker search: fraction of the light's cone cut at the near plane (0..1]"},
+        integerParam("search-taps", 16, 1, 64, "blocker search: Poisson taps"),
+        realParam("search-region", 1.0, 1e-3, 1.0, "blocker search: fraction of the light's cone cut at the near plane"),
     };
 }
 
 BlockerSearchSettings readBlockerSearch(const TechniqueParams& p) {
     BlockerSearchSettings s;
-    s.taps = p.integer("search-taps", 1, 64);
-    s.region = p.real("search-region", 1e-3, 1.0);
+    s.taps = p.integer("search-taps");
+    s.region = p.real("search-region");
     return s;
 }
 

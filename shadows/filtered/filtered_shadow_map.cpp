@@ -1,5 +1,6 @@
 // The filtered shadow maps `vsm`, `esm`, `evsm` and `msm` (Real-Time Rendering, 4th ed.,
-// section 7.7): one mechanism, parameterised by the moments it stores (moments.h):
+// section 7.7): one mechanism, parameterised by the moments it stores (moments.h; each
+// kind in the file named after its technique, vsm.cpp, esm.cpp, evsm.cpp, msm.cpp):
 //
 //   1. the depth map from the light's centre, in linear depth (soft_shadow_map.h);
 //   2. every texel's moments (moments.h);
@@ -49,12 +50,12 @@ struct FilteredSettings {
 FilteredSettings readSettings(MomentKind kind, const TechniqueParams& p) {
     const std::string name = momentKindName(kind);
     FilteredSettings s;
-    s.resolution = p.integer("resolution", 16, 8192);
-    s.summedAreaTable = p.choice("filter", {"blur", "sat"}) == "sat";
-    s.blur = p.choice("blur", {"box", "gaussian"}) == "box" ? BlurKind::Box : BlurKind::Gaussian;
-    s.widthTexels = p.integer("filter-width", 1, 255);
+    s.resolution = p.integer("resolution");
+    s.summedAreaTable = p.choice<bool>("filter");
+    s.blur = p.choice<BlurKind>("blur");
+    s.widthTexels = p.integer("filter-width");
     if (s.widthTexels % 2 == 0) throw std::invalid_argument(name + ": filter-width must be odd (taps centred on a texel)");
-    s.pcssWidth = p.choice("width", {"fixed", "pcss"}) == "pcss";
+    s.pcssWidth = p.choice<bool>("width");
     if (s.pcssWidth && !s.summedAreaTable) {
         throw std::invalid_argument(name + ": width=pcss needs filter=sat (a box of a different width at every pixel)");
     }
@@ -163,21 +164,18 @@ ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
 
 Technique filteredShadowMapTechnique(MomentKind kind) {
     std::vector<ParamSpec> params = {
-        {"resolution", kSoftResolutionDefault, "texels per side of the map (16..8192)"},
-        {"filter", "blur", "blur (separable, fixed width) | sat (summed-area table, any width per pixel)"},
-        {"blur", "box", "filter=blur: box | gaussian (sigma = width / 6)"},
-        {"filter-width", "7", "fixed width: taps per side, odd (1..255)"},
-        {"width", "fixed", "fixed | pcss (blocker search and eq. 7.6 per pixel; needs filter=sat)"},
+        softResolutionParam("texels per side of the map"),
+        choiceParam<bool>("filter", "blur",
+                          {{"blur", false, "separable, fixed width"}, {"sat", true, "summed-area table, any width per pixel"}}),
+        choiceParam<BlurKind>("blur", "box", {{"box", BlurKind::Box}, {"gaussian", BlurKind::Gaussian, "sigma = width / 6"}},
+                              "filter=blur"),
+        integerParam("filter-width", 7, 1, 255, "fixed width: taps per side, odd"),
+        choiceParam<bool>("width", "fixed",
+                          {{"fixed", false}, {"pcss", true, "blocker search and eq. 7.6 per pixel; needs filter=sat"}}),
     };
     for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
     for (const ParamSpec& p : momentParamSpecs(kind)) params.push_back(p);
-    const char* const descriptions[] = {
-        "variance shadow map (RTR 7.7, Donnelly and Lauritzen 2006): Chebyshev bound, light-bleeding reduction",
-        "exponential shadow map (RTR 7.7, Annen et al. 2008): filtered e^{cz}",
-        "exponential variance shadow map (Lauritzen and McCool 2008): positive and negative warps",
-        "moment shadow map (Peters and Klein 2015): four moments, Hamburger reconstruction",
-    };
-    return {momentKindName(kind), descriptions[int(kind)], params,
+    return {momentKindName(kind), momentKindDescription(kind), params,
             [kind](const ShadowInputs& in) { return runFiltered(kind, in); }};
 }
 

@@ -20,7 +20,7 @@
 // whole map; a box's four-corner combination adds 3 u T more, and its mean over A texels
 // is within kSatErrorUlps u T / A of the exact mean, T <= N max|m| for N texels. For moments
 // in [0, 1] at 1024^2 texels that is below 2^-29 / A, far under the smallest variance a
-// Chebyshev bound uses (1e-7, moments.cpp). For the exponential kinds V divides the mean
+// Chebyshev bound uses (1e-7, chebyshev.h). For the exponential kinds V divides the mean
 // by e^{c t}, so the error relative to V is that bound times the dynamic range of the
 // moments (momentDynamicRange); satRelativeError() evaluates it and the techniques refuse a
 // table that cannot resolve V to 2^-10.

@@ -1,22 +1,16 @@
 // What a filtered shadow map stores per texel, and how a receiver reads visibility back
 // from the filtered values (Real-Time Rendering, 4th ed., section 7.7). Every kind maps
 // the normalised linear depth z in [0, 1] (soft_shadow_map.h) to a few numbers whose
-// filtered (weighted mean) values summarise the depth distribution under the filter:
+// filtered (weighted mean) values summarise the depth distribution under the filter. Each
+// kind lives in the file named after its technique:
 //
-//   variance     (z, z^2); Chebyshev's one-sided bound p_max = s^2 / (s^2 + (t - M1)^2)
-//                for t > M1, s^2 = M2 - M1^2 (eqs. 7.7, 7.8; Donnelly and Lauritzen 2006),
-//                with a minimum variance and Lauritzen's light-bleeding reduction: p below
-//                `amount` counts as shadow, the rest is stretched to [0, 1] (RTR 7.7;
-//                Lauritzen, GPU Gems 3 ch. 8).
-//   exponential  (e^{c z}); V = E[e^{c z}] e^{-c t}, clamped to 1 (Annen et al. 2008,
-//                eq. 4: the step of the depth test replaced by an exponential).
-//   exponential  (e^{c+ w}, e^{2 c+ w}, -e^{-c- w}, e^{-2 c- w}) with w = 2 z - 1: Chebyshev
-//   variance     on the positive and the negative warp, the smaller bound wins (Lauritzen
-//                and McCool 2008, "Layered Variance Shadow Maps", section 4).
-//   hamburger4   (z, z^2, z^3, z^4); the Hamburger four-moment reconstruction of Peters
-//                and Klein 2015 ("Moment Shadow Mapping", Algorithm 3): the moments, biased
-//                towards (0.5, 0.5, 0.5, 0.5) by alpha = 3e-5 (their value), give the
-//                lower bound of the lit fraction over all distributions with them.
+//   vsm.cpp   variance: (z, z^2) and Chebyshev's bound (Donnelly and Lauritzen 2006);
+//   esm.cpp   exponential: e^{c z} (Annen et al. 2008);
+//   evsm.cpp  exponential variance: Chebyshev's bound on a positive and a negative
+//             exponential warp (Lauritzen and McCool 2008);
+//   msm.cpp   moment shadow maps: (z, z^2, z^3, z^4) and the Hamburger reconstruction
+//             (Peters and Klein 2015).
+//
 // Every value is double, so the classic float-range limits on the exponents (c <= 42 for
 // fp32 EVSM) are not what bounds them here; the summed-area table's cancellation is
 // (moment_filter.h).
@@ -41,7 +35,8 @@ struct MomentSettings {
     double negativeExponent = 5.0;    // exponential variance: c-
 };
 
-const char* momentKindName(MomentKind kind);   // "vsm", "esm", "evsm", "msm"
+const char* momentKindName(MomentKind kind);          // "vsm", "esm", "evsm", "msm"
+const char* momentKindDescription(MomentKind kind);   // the technique's, for `shadowlab techniques`
 int momentCount(MomentKind kind);
 
 // The kind's own parameters (added to the family's) and their reading.
@@ -57,5 +52,23 @@ double momentVisibility(const MomentSettings& s, const double* filtered, double 
 // The largest |moment| over z in [0, 1] divided by the smallest value a visibility
 // resolves against it (the dynamic range the summed-area table must hold, moment_filter.h).
 double momentDynamicRange(const MomentSettings& s);
+
+// One kind of moments, as the file named after its technique defines it; the functions
+// above dispatch to it.
+struct MomentModel {
+    const char* technique;
+    const char* description;
+    int count;   // moments per texel, at most kMaxMoments
+    std::vector<ParamSpec> (*params)();
+    void (*read)(const TechniqueParams& params, MomentSettings& into);
+    void (*moments)(const MomentSettings& s, double z, double* out);
+    double (*visibility)(const MomentSettings& s, const double* filtered, double t);
+    double (*dynamicRange)(const MomentSettings& s);
+};
+
+extern const MomentModel kVarianceMoments;              // vsm.cpp
+extern const MomentModel kExponentialMoments;           // esm.cpp
+extern const MomentModel kExponentialVarianceMoments;   // evsm.cpp
+extern const MomentModel kHamburgerMoments;             // msm.cpp
 
 }  // namespace shadowlab

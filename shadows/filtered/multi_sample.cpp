@@ -54,8 +54,8 @@ void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const glm::dvec
 }
 
 ShadowOutputs runMultiSample(const ShadowInputs& in) {
-    const int resolution = in.params.integer("resolution", 16, 8192);
-    const int samples = in.params.integer("samples", 1, kMaxSamples);
+    const int resolution = in.params.integer("resolution");
+    const int samples = in.params.integer("samples");
     const int perAxis = int(std::lround(std::sqrt(double(samples))));
     if (perAxis * perAxis != samples) {
         throw std::invalid_argument("multi-sample: samples must be a square (n x n strata), not " + std::to_string(samples));
@@ -92,8 +92,8 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
 Technique multiSampleTechnique() {
     return {"multi-sample",
             "average of N hard shadow maps from stratified points on the area light (Heckbert and Herf 1997)",
-            {{"resolution", kSoftResolutionDefault, "texels per side of each map (16..8192)"},
-             {"samples", "64", "N light points, a square (1..4096): the level of detail"}},
+            {softResolutionParam("texels per side of each map"),
+             integerParam("samples", 64, 1, kMaxSamples, "N light points, a square: the level of detail")},
             runMultiSample};
 }
 

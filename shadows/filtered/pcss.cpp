@@ -60,9 +60,9 @@ void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuf
 }
 
 ShadowOutputs runPcss(const ShadowInputs& in) {
-    const int resolution = in.params.integer("resolution", 16, 8192);
+    const int resolution = in.params.integer("resolution");
     const BlockerSearchSettings search = readBlockerSearch(in.params);
-    const int filterTaps = in.params.integer("filter-taps", 1, 128);
+    const int filterTaps = in.params.integer("filter-taps");
     const SoftShadowMap soft = renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kFitMarginTexels, true);
     const PcssBuffers b = runPerPixel(in, soft, search, filterTaps);
     writeDebug(in, soft, b);
@@ -86,9 +86,9 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
 }  // namespace
 
 Technique pcssTechnique() {
-    std::vector<ParamSpec> params = {{"resolution", kSoftResolutionDefault, "texels per side of the map (16..8192)"}};
+    std::vector<ParamSpec> params = {softResolutionParam("texels per side of the map")};
     for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
-    params.push_back({"filter-taps", "32", "PCF: Poisson taps over the eq. 7.6 width (1..128)"});
+    params.push_back(integerParam("filter-taps", 32, 1, 128, "PCF: Poisson taps over the eq. 7.6 width"));
     return {"pcss",
             "percentage-closer soft shadows (RTR 7.6, Fernando 2005): blocker search, eq. 7.6 width, Poisson PCF",
             params, runPcss};

@@ -2,9 +2,13 @@
 // shadows), the filtered maps `vsm`, `esm`, `evsm`, `msm` (one mechanism, four moment
 // kinds; box or Gaussian blur or a summed-area table; fixed or PCSS width) and
 // `multi-sample` (the average of hard shadow maps from points on the light). See
-// pcss.cpp, filtered_shadow_map.cpp and multi_sample.cpp; docs/soft-shadows.md.
+// pcss.cpp, filtered_shadow_map.cpp (with vsm.cpp, esm.cpp, evsm.cpp and msm.cpp) and
+// multi_sample.cpp; docs/soft-shadows.md.
 #pragma once
 
+#include <string>
+
+#include "shadows/depth_map.h"
 #include "shadows/filtered/moments.h"
 #include "shadows/technique.h"
 
@@ -14,9 +18,11 @@ Technique pcssTechnique();
 Technique filteredShadowMapTechnique(MomentKind kind);
 Technique multiSampleTechnique();
 
-// The map resolution these techniques default to: 1024 texels per side. A disk light of
-// radius 0.5 m over the built-in scenes casts penumbrae 5 to 40 texels wide at this size,
-// so the filters, not the texels, set the shadow's softness.
-inline constexpr const char* kSoftResolutionDefault = "1024";
+// The `resolution` parameter of these techniques, 1024 texels per side by default. A disk
+// light of radius 0.5 m over the built-in scenes casts penumbrae 5 to 40 texels wide at this
+// size, so the filters, not the texels, set the shadow's softness.
+inline ParamSpec softResolutionParam(const std::string& help) {
+    return integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution, help);
+}
 
 }  // namespace shadowlab

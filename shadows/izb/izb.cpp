@@ -2,6 +2,7 @@
 // debug buffers.
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/izb/izb.h"
@@ -26,12 +27,6 @@ public:
 private:
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
-
-// `auto` or a resolution; read before any work, so a bad value fails at once.
-int requestedResolution(const TechniqueParams& params) {
-    if (params.values().at("resolution") == "auto") return 0;
-    return params.integer("resolution", izb::kMinResolution, izb::kMaxResolution);
-}
 
 // Length figures over the texels' lists: longest, mean and 99th percentile (nearest rank) of
 // the non-empty ones, and how many are empty.
@@ -74,12 +69,12 @@ void writeDebugBuffers(const ShadowInputs& in, const izb::LightGrid& grid, const
 }  // namespace
 
 std::vector<ParamSpec> irregularZBufferParams() {
-    return {{"resolution", "auto",
-             "light grid texels per side, 16..8192, or auto: a mean of about 2 receivers per non-empty texel"}};
+    return {integerOrAutoParam("resolution", kMinMapResolution, kMaxMapResolution,
+                               "light grid texels per side; auto: a mean of about 2 receivers per non-empty texel")};
 }
 
 ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
-    const int requested = requestedResolution(in.params);
+    const std::optional<int> requested = in.params.integerOrAuto("resolution");
     const Light light = pointLightFor(in.light);
     const double diagonal = sceneDiagonal(in.world());
     StageClock clock;
@@ -90,7 +85,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     if (receivers.size() == 0) return out;
 
     std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world());
-    const int resolution = requested ? requested : izb::chooseResolution(views, receivers, kTargetListLength);
+    const int resolution = requested ? *requested : izb::chooseResolution(views, receivers, kTargetListLength);
     const izb::LightGrid grid = izb::makeLightGrid(std::move(views), resolution, diagonal);
     out.stats.push_back({"resolution", double(grid.resolution)});
     out.stats.push_back({"views", double(grid.views.size())});

@@ -38,6 +38,7 @@
 
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shadows/depth_map.h"
 #include "shadows/light_view.h"
 #include "shadows/technique.h"
 
@@ -91,9 +92,8 @@ struct LightGrid {
 std::vector<LightView> fitViews(const Light& pointOrDirectional, const GBuffer& gbuffer, const WorldGeometry& world);
 
 // The resolution whose mean non-empty list holds about `targetListLength` receivers
-// (izb_light_grid.cpp), within [minResolution, maxResolution].
+// (light_grid.cpp), within [kMinMapResolution, kMaxMapResolution] (depth_map.h).
 int chooseResolution(const std::vector<LightView>& views, const Receivers& receivers, double targetListLength);
-inline constexpr int kMinResolution = 16, kMaxResolution = 8192;
 
 LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sceneDiagonal);
 

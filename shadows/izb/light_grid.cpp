@@ -68,7 +68,7 @@ double meanListLength(const std::vector<LightView>& views, int resolution, const
 std::vector<LightView> fitViews(const Light& light, const GBuffer& gbuffer, const WorldGeometry& world) {
     // The sides only need to clear the ray-origin offset (micrometres): a margin of 2 texels
     // of the largest grid is ample for every resolution.
-    const LightFitOptions options{.resolution = kMaxResolution};
+    const LightFitOptions options{.resolution = kMaxMapResolution};
     try {
         return {fitLightView(light, gbuffer, world, options)};
     } catch (const std::invalid_argument&) {
@@ -90,7 +90,7 @@ int chooseResolution(const std::vector<LightView>& views, const Receivers& recei
     int resolution = 256;
     for (int step = 0; step < 2; ++step) {
         const double scale = std::sqrt(meanListLength(views, resolution, receivers) / target);
-        resolution = std::clamp(int(std::lround(resolution * scale)), kMinResolution, kMaxResolution);
+        resolution = std::clamp(int(std::lround(resolution * scale)), kMinMapResolution, kMaxMapResolution);
     }
     return resolution;
 }

@@ -18,11 +18,10 @@ namespace {
 
 CascadeSettings readCascadeSettings(const TechniqueParams& p, const ShadowMapSettings& s) {
     CascadeSettings c;
-    c.count = p.integer("cascades", 1, 8);
-    const std::string split = p.choice("split", {"log", "uniform", "practical"});
-    c.scheme = split == "log" ? SplitScheme::Logarithmic : split == "uniform" ? SplitScheme::Uniform : SplitScheme::Practical;
-    c.lambda = p.real("lambda", 0.0, 1.0);
-    c.sampleBounds = p.choice("bounds", {"camera", "samples"}) == "samples";
+    c.count = p.integer("cascades");
+    c.scheme = p.choice<SplitScheme>("split");
+    c.lambda = p.real("lambda");
+    c.sampleBounds = p.choice<bool>("bounds");
     c.snap = p.flag("snap");
     c.resolution = s.resolution;
     c.marginTexels = kernelRadiusTexels(s.filter) + 1.5;   // the filter, plus half a texel of snapping
@@ -90,11 +89,17 @@ MapSelector cascadeSelector(const CascadedMaps& cm, const Camera& camera) {
 
 Technique cascadedShadowMapTechnique() {
     std::vector<ParamSpec> params = shadowMapParamSpecs();
-    params.push_back({"cascades", "4", "number of cascades (1..8)"});
-    params.push_back({"split", "practical", "log (RTR eq. 7.5) | uniform | practical (lambda log + (1 - lambda) uniform)"});
-    params.push_back({"lambda", "0.75", "practical split: weight of the logarithmic split"});
-    params.push_back({"bounds", "samples", "split range: camera (near/far planes) | samples (nearest/farthest receiver, SDSM)"});
-    params.push_back({"snap", "on", "snap each cascade to whole texels so shadows do not shimmer (on | off)"});
+    params.push_back(integerParam("cascades", 4, 1, 8, "number of cascades"));
+    params.push_back(choiceParam<SplitScheme>("split", "practical",
+                                              {{"log", SplitScheme::Logarithmic, "RTR eq. 7.5"},
+                                               {"uniform", SplitScheme::Uniform},
+                                               {"practical", SplitScheme::Practical, "lambda log + (1 - lambda) uniform"}}));
+    params.push_back(realParam("lambda", 0.75, 0.0, 1.0, "practical split: weight of the logarithmic split"));
+    params.push_back(choiceParam<bool>("bounds", "samples",
+                                       {{"camera", false, "near/far planes"},
+                                        {"samples", true, "nearest/farthest receiver, SDSM"}},
+                                       "split range"));
+    params.push_back(flagParam("snap", true, "snap each cascade to whole texels so shadows do not shimmer"));
     return {"csm", "cascaded shadow maps (RTR 7.4.1) for directional lights: split schemes, SDSM bounds, texel snapping",
             params, runCsm};
 }

@@ -120,8 +120,8 @@ void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSett
 
 ShadowOutputs runShadowMap(const ShadowInputs& in) {
     const ShadowMapSettings s = readShadowMapSettings(in.params);
-    const bool forceCube = in.params.choice("cube", {"auto", "always"}) == "always";
-    const bool lispsm = in.params.choice("warp", {"none", "lispsm"}) == "lispsm";
+    const bool forceCube = in.params.choice<bool>("cube");
+    const bool lispsm = in.params.choice<bool>("warp");
     const Light light = pointLightFor(in.light);
     if (lispsm && light.type != LightType::Directional) {
         throw std::invalid_argument("shadow-map: warp=lispsm needs a directional light");
@@ -145,8 +145,13 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
 
 Technique shadowMapTechnique() {
     std::vector<ParamSpec> params = shadowMapParamSpecs();
-    params.push_back({"cube", "auto", "point lights: auto (six faces when one frustum cannot hold the receivers) | always"});
-    params.push_back({"warp", "none", "directional lights: none | lispsm (light space perspective shadow map)"});
+    params.push_back(choiceParam<bool>("cube", "auto",
+                                       {{"auto", false, "six faces when one frustum cannot hold the receivers"},
+                                        {"always", true}},
+                                       "point lights"));
+    params.push_back(choiceParam<bool>("warp", "none",
+                                       {{"none", false}, {"lispsm", true, "light space perspective shadow map"}},
+                                       "directional lights"));
     return {"shadow-map",
             "shadow map (RTR 7.4): fitted light frustum, cube faces for surrounded point lights, bias modes, PCF filters, LiSPSM",
             params, runShadowMap};

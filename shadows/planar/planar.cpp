@@ -115,8 +115,8 @@ raster::PipelineState shadowState() {
 
 ShadowOutputs run(const ShadowInputs& in) {
     const Camera& camera = in.scene().camera;
-    const glm::dvec4 plane(0.0, 1.0, 0.0, -in.params.real("plane-y", -1e6, 1e6));
-    const float opacity = float(in.params.real("opacity", 0.0, 1.0));
+    const glm::dvec4 plane(0.0, 1.0, 0.0, -in.params.real("plane-y"));
+    const float opacity = float(in.params.real("opacity"));
     const glm::dvec4 light = homogeneousLight(pointLightFor(in.light));
     const PlanarSplit split = splitScene(in.scene(), in.world(), plane, light);
 
@@ -171,8 +171,9 @@ glm::dmat4 planarProjection(const glm::dvec4& plane, const glm::dvec4& light) {
 Technique planarTechnique() {
     return {"planar",
             "planar projected shadows on the plane y = plane-y, stencil against double blending (no self-shadows)",
-            {{"plane-y", "0", "height of the receiver plane y = plane-y (m)"},
-             {"opacity", "0.6", "alpha of the dark translucent shadow in the debug image (V does not depend on it)"}},
+            {realParam("plane-y", 0.0, -1e6, 1e6, "height of the receiver plane y = plane-y, in metres"),
+             realParam("opacity", 0.6, 0.0, 1.0,
+                       "alpha of the dark translucent shadow in the debug image; V does not depend on it")},
             run};
 }
 

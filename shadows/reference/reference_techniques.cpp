@@ -24,7 +24,7 @@ ShadowOutputs exactReference(const ShadowInputs& in) {
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
     const ReferenceVisibility reference(in.world());
     ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis", 1, 256)});
+    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis")});
     return out;
 }
 
@@ -39,7 +39,7 @@ Technique referenceTechnique() {
 Technique softReferenceTechnique() {
     return {"reference-soft",
             "exact soft shadows: the visible fraction of the area light, n x n stratified Embree rays per pixel",
-            {{"samples-per-axis", "32", "n: n x n samples on the light (1..256)"}},
+            {integerParam("samples-per-axis", 32, 1, 256, "n: n x n samples on the light")},
             exactSoftReference,
             "reference-soft"};
 }

@@ -49,6 +49,8 @@
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "raster/rasterizer.h"
 #include "shading/lights.h"
@@ -67,13 +69,22 @@ using raster::CompareFunc;
 using raster::StencilOp;
 
 enum class Counting { ZPass, ZFail };
+enum class Mode { Auto, ZPass, ZFail };   // the `mode` parameter: a counting, or auto
 
-Counting countingMode(const ShadowInputs& in, const glm::dvec4& light, bool& nearPlaneShadowed) {
-    nearPlaneShadowed = nearPlaneMayBeShadowed(in.scene().camera, light, instanceBounds(in.scene(), in.world()));
-    const std::string mode = in.params.choice("mode", {"auto", "zpass", "zfail"});
-    if (mode == "zpass") return Counting::ZPass;
-    if (mode == "zfail") return Counting::ZFail;
-    return nearPlaneShadowed ? Counting::ZFail : Counting::ZPass;
+struct CountingChoice {
+    Counting counting = Counting::ZPass;
+    bool nearPlaneShadowed = false;   // what auto decides by (counting_mode.h), reported always
+};
+
+// Step 2, taken first: step 1 builds the caps for z-fail only.
+CountingChoice chooseCounting(const ShadowInputs& in, const glm::dvec4& light) {
+    const bool nearPlaneShadowed = nearPlaneMayBeShadowed(in.scene().camera, light, instanceBounds(in.scene(), in.world()));
+    switch (in.params.choice<Mode>("mode")) {
+        case Mode::ZPass: return {Counting::ZPass, nearPlaneShadowed};
+        case Mode::ZFail: return {Counting::ZFail, nearPlaneShadowed};
+        case Mode::Auto: break;
+    }
+    return {nearPlaneShadowed ? Counting::ZFail : Counting::ZPass, nearPlaneShadowed};
 }
 
 // The camera's depth, as the G-buffer's camera pass (no culling), but with the far plane
@@ -129,76 +140,112 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-ShadowOutputs run(const ShadowInputs& in) {
-    const Camera& camera = in.scene().camera;
-    const Light light = pointLightFor(in.light);
-    const glm::dvec4 lightH = homogeneousLight(light);
-    bool nearPlaneShadowed = false;
-    const Counting counting = countingMode(in, lightH, nearPlaneShadowed);
+struct BuiltVolume {
+    const std::vector<EdgeAdjacency>* adjacency = nullptr;   // the prepared scene's
+    ShadowVolume volume;
+    double extrusionMs = 0.0;
+};
 
-    auto start = std::chrono::steady_clock::now();
-    const std::vector<EdgeAdjacency>& adjacency = in.prepared.edgeAdjacency();
-    const ShadowVolume volume = extrudeShadowVolume(in.scene(), in.world(), adjacency, lightH, counting == Counting::ZFail);
-    const double extrusionMs = millisecondsSince(start);
+// Step 1, timed: the volume from the prepared scene's edge adjacency.
+BuiltVolume buildVolume(const ShadowInputs& in, const glm::dvec4& light, Counting counting) {
+    BuiltVolume b;
+    b.adjacency = &in.prepared.edgeAdjacency();
+    const auto start = std::chrono::steady_clock::now();
+    b.volume = extrudeShadowVolume(in.scene(), in.world(), *b.adjacency, light, counting == Counting::ZFail);
+    b.extrusionMs = millisecondsSince(start);
+    return b;
+}
 
-    start = std::chrono::steady_clock::now();
-    const glm::mat4 clipFromWorld = clipFromWorldInfinite(camera);
-    const DebugBuffers debug(in.debugDir, "shadow-volume");
-    raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
+// Steps 3 and 4: the depth prepass, then the stencil pass. Returns the stencil pass's
+// figures, whose fragments are the fill (step 5).
+raster::RasterStats countCrossings(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
+                                   const glm::mat4& clipFromWorld, const raster::DrawCall& volume, Counting counting) {
     fb.clearDepth(1.0f), fb.clearStencil(0);
-    raster::Rasterizer rasterizer(in.simd);
     depthPrepass(rasterizer, fb, in.world(), clipFromWorld);
-    const raster::DrawCall call = volumeDraw(volume, counting, clipFromWorld);
     rasterizer.resetStats();
-    rasterizer.draw(fb, stencilPassState(counting, float(in.params.real("offset", 0.0, 64.0))), call);
-    const raster::RasterStats volumeRaster = rasterizer.stats();
-    const double rasterMs = millisecondsSince(start);
+    rasterizer.draw(fb, stencilPassState(counting, float(in.params.real("offset"))), volume);
+    return rasterizer.stats();
+}
 
-    const std::vector<uint8_t> stencil = fb.stencilImage();
-    const GBuffer& g = in.gbuffer;
+// Step 5 per pixel, for the debug buffers: the fragments of the volume faces at each pixel.
+std::vector<float> fillPerPixel(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::DrawCall& volume) {
+    fb.clearColor(glm::vec4(0.0f));
+    rasterizer.draw(fb, fillCountState(), volume);
+    return fb.colorImage(0);
+}
+
+// Step 6, with the stencil as a signed count per pixel.
+ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light,
+                                    const std::vector<uint8_t>& stencil) {
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
     out.stencil.resize(g.pixelCount());
-    double shadowed = 0;
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         out.stencil[k] = float(int8_t(stencil[k]));   // wrapped count read as signed
         const bool lit = g.hit[k] && stencil[k] == 0 && lightReaches(light, g.position[k], g.normal[k]);
         out.visibility[k] = lit ? 1.0f : 0.0f;
-        shadowed += g.hit[k] && !lit;
     }
-    const double fragments = double(volumeRaster.fragments);
+    return out;
+}
 
+std::vector<TechniqueStat> volumeStats(const ShadowInputs& in, const ShadowOutputs& out, const CountingChoice& choice,
+                                       const BuiltVolume& b, const raster::RasterStats& fill, double rasterMs) {
+    const GBuffer& g = in.gbuffer;
+    double shadowed = 0;
+    for (size_t k = 0; k < g.pixelCount(); ++k) shadowed += g.hit[k] && out.visibility[k] == 0.0f;
     uint32_t openMeshes = 0, openEdges = 0, nonManifoldEdges = 0;
     for (const MeshInstance& instance : in.scene().instances) {
-        const EdgeAdjacency& a = adjacency[instance.mesh];
+        const EdgeAdjacency& a = (*b.adjacency)[instance.mesh];
         openMeshes += !a.closed, openEdges += a.openEdges, nonManifoldEdges += a.nonManifoldEdges;
     }
-    out.stats = {
-        {"mode (0 z-pass, 1 z-fail)", counting == Counting::ZFail ? 1.0 : 0.0},
-        {"near plane may be in shadow", nearPlaneShadowed ? 1.0 : 0.0},
+    const double fragments = double(fill.fragments);
+    return {
+        {"mode (0 z-pass, 1 z-fail)", choice.counting == Counting::ZFail ? 1.0 : 0.0},
+        {"near plane may be in shadow", choice.nearPlaneShadowed ? 1.0 : 0.0},
         {"open instances", double(openMeshes)},
         {"open edges", double(openEdges)},
         {"non-manifold edges", double(nonManifoldEdges)},
-        {"silhouette edges", double(volume.silhouette.size())},
-        {"volume side triangles", double(volume.sideCount)},
-        {"volume light-cap triangles", double(volume.lightCapCount)},
-        {"volume dark-cap triangles", double(volume.darkCapCount)},
-        {"volume triangles set up", double(volumeRaster.trianglesSetUp)},
+        {"silhouette edges", double(b.volume.silhouette.size())},
+        {"volume side triangles", double(b.volume.sideCount)},
+        {"volume light-cap triangles", double(b.volume.lightCapCount)},
+        {"volume dark-cap triangles", double(b.volume.darkCapCount)},
+        {"volume triangles set up", double(fill.trianglesSetUp)},
         {"fill fragments", fragments},
         {"fill fragments per pixel", fragments / double(g.pixelCount())},
         {"shadowed pixels", shadowed},
-        {"silhouette+extrusion ms", extrusionMs},
+        {"silhouette+extrusion ms", b.extrusionMs},
         {"prepass+stencil ms", rasterMs},
     };
+}
 
-    if (debug.enabled()) {
-        debug.write("stencil", camera.width, camera.height, out.stencil, -4.0f, 4.0f);
-        debug.write("silhouette", camera.width, camera.height,
-                    silhouetteImage(camera, in.world().positions, volume.silhouette), 0.0f, 1.0f);
-        fb.clearColor(glm::vec4(0.0f));
-        rasterizer.draw(fb, fillCountState(), call);
-        debug.write("fill", camera.width, camera.height, fb.colorImage(0), 0.0f, 8.0f);
-    }
+void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowOutputs& out, const ShadowVolume& volume,
+                const std::vector<float>& fill) {
+    const Camera& camera = in.scene().camera;
+    debug.write("stencil", camera.width, camera.height, out.stencil, -4.0f, 4.0f);
+    debug.write("silhouette", camera.width, camera.height, silhouetteImage(camera, in.world().positions, volume.silhouette),
+                0.0f, 1.0f);
+    debug.write("fill", camera.width, camera.height, fill, 0.0f, 8.0f);
+}
+
+ShadowOutputs run(const ShadowInputs& in) {
+    const Camera& camera = in.scene().camera;
+    const Light light = pointLightFor(in.light);
+    const glm::dvec4 lightH = homogeneousLight(light);
+    const CountingChoice choice = chooseCounting(in, lightH);
+    const BuiltVolume built = buildVolume(in, lightH, choice.counting);
+
+    const auto start = std::chrono::steady_clock::now();
+    const glm::mat4 clipFromWorld = clipFromWorldInfinite(camera);
+    const DebugBuffers debug(in.debugDir, "shadow-volume");
+    raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
+    raster::Rasterizer rasterizer(in.simd);
+    const raster::DrawCall call = volumeDraw(built.volume, choice.counting, clipFromWorld);
+    const raster::RasterStats fill = countCrossings(rasterizer, fb, in, clipFromWorld, call, choice.counting);
+    const double rasterMs = millisecondsSince(start);
+
+    ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb.stencilImage());
+    out.stats = volumeStats(in, out, choice, built, fill, rasterMs);
+    if (debug.enabled()) writeDebug(debug, in, out, built.volume, fillPerPixel(rasterizer, fb, call));
     return out;
 }
 
@@ -207,8 +254,12 @@ ShadowOutputs run(const ShadowInputs& in) {
 Technique shadowVolumeTechnique() {
     return {"shadow-volume",
             "stencil shadow volumes: silhouettes extruded to infinity, z-pass or z-fail with two-sided wrapping stencil",
-            {{"mode", "auto", "auto | zpass | zfail; auto takes z-fail when a volume may reach the near plane"},
-             {"offset", "0", "polygon offset of the volume faces, in units of the depth buffer's resolution"}},
+            {choiceParam<Mode>("mode", "auto",
+                               {{"auto", Mode::Auto, "z-fail when a volume may reach the near plane"},
+                                {"zpass", Mode::ZPass},
+                                {"zfail", Mode::ZFail}}),
+             realParam("offset", 0.0, 0.0, 64.0,
+                       "polygon offset of the volume faces, in units of the depth buffer's resolution")},
             run};
 }
 

@@ -24,7 +24,7 @@ namespace {
 Technique parameterisedReference() {
     Technique t = findTechnique("reference");
     t.name = "reference-with-params";
-    t.params = {{"resolution", "1024", "ignored"}, {"bias", "0", "ignored"}};
+    t.params = {integerParam("resolution", 1024, 16, 4096, "ignored"), realParam("bias", 0.0, 0.0, 1.0, "ignored")};
     return t;
 }
 

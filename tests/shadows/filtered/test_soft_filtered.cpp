@@ -37,7 +37,7 @@ TEST_CASE("vsm: Chebyshev's bound equals the lit fraction for a planar occluder 
     // Donnelly and Lauritzen: with occluder depth z_o over a fraction 1 - p of the filter
     // and the receiver at t = z_r over p, s^2 = p (1 - p) (z_r - z_o)^2 and t - M1 =
     // (1 - p)(z_r - z_o), so p_max = p exactly. Checked through both filters; where the
-    // filter holds only the occluder the minimum variance 1e-7 (moments.cpp) leaves
+    // filter holds only the occluder the minimum variance 1e-7 (chebyshev.h) leaves
     // 1e-7 / (1e-7 + 0.4^2) = 6.25e-7, hence the absolute tolerance 1e-6.
     MomentSettings s;
     s.bleedingReduction = 0.0;

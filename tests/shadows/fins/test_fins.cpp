@@ -1,4 +1,4 @@
-// fins, smoothies, penumbra-maps (shadows/fins/fins.cpp):
+// fins, smoothies, penumbra-maps (shadows/fins/fin_shadows.h):
 //  - the weights of eq. 1 refined by eq. 5, on one straight edge over receivers parallel to
 //    the disk light, against the model they implement and against the exact visible
 //    fraction of the disk (a circular segment, as in tests/shadows/reference/test_reference.cpp);

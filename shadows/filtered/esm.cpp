@@ -1,0 +1,35 @@
+// The `esm` moments: exponential shadow maps (Annen et al. 2008; Real-Time Rendering, 4th
+// ed., section 7.7). A texel stores e^{c z}; a receiver at depth t reads
+// V = E[e^{c z}] e^{-c t}, clamped to 1 (Annen et al., eq. 4: the step of the depth test
+// replaced by an exponential).
+#include <algorithm>
+#include <cmath>
+
+#include "shadows/filtered/moments.h"
+
+namespace shadowlab {
+namespace {
+
+// c <= 700 keeps the moment and its dynamic range e^c finite in double (the largest double
+// is about e^709).
+std::vector<ParamSpec> exponentialParams() {
+    return {realParam("exponent", 80.0, 0.1, 700.0, "c of e^{c z}, z the normalised linear depth")};
+}
+
+void readExponential(const TechniqueParams& p, MomentSettings& s) { s.exponent = p.real("exponent"); }
+
+void exponentialMoments(const MomentSettings& s, double z, double* out) { out[0] = std::exp(s.exponent * z); }
+
+double exponentialVisibility(const MomentSettings& s, const double* m, double t) {
+    return std::clamp(m[0] * std::exp(-s.exponent * t), 0.0, 1.0);
+}
+
+double exponentialRange(const MomentSettings& s) { return std::exp(s.exponent); }   // V = E e^{-c t}, t in [0, 1]
+
+}  // namespace
+
+const MomentModel kExponentialMoments = {"esm", "exponential shadow map (RTR 7.7, Annen et al. 2008): filtered e^{cz}", 1,
+                                         exponentialParams, readExponential, exponentialMoments, exponentialVisibility,
+                                         exponentialRange};
+
+}  // namespace shadowlab

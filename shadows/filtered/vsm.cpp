@@ -1,0 +1,39 @@
+// The `vsm` moments: variance shadow maps (Donnelly and Lauritzen 2006; Real-Time
+// Rendering, 4th ed., section 7.7). A texel stores (z, z^2); a receiver at depth t reads
+// Chebyshev's one-sided bound p_max = s^2 / (s^2 + (t - M1)^2) for t > M1, s^2 = M2 - M1^2
+// (eqs. 7.7, 7.8; chebyshev.h), with a minimum variance and Lauritzen's light-bleeding
+// reduction: p below `amount` counts as shadow, the rest is stretched to [0, 1] (RTR 7.7;
+// Lauritzen, GPU Gems 3 ch. 8).
+#include <algorithm>
+
+#include "shadows/filtered/chebyshev.h"
+#include "shadows/filtered/moments.h"
+
+namespace shadowlab {
+namespace {
+
+std::vector<ParamSpec> varianceParams() {
+    return {realParam("bleeding-reduction", 0.2, 0.0, 0.99,
+                      "Chebyshev bounds below this are shadow, the rest stretched to [0, 1]")};
+}
+
+void readVariance(const TechniqueParams& p, MomentSettings& s) { s.bleedingReduction = p.real("bleeding-reduction"); }
+
+void varianceMoments(const MomentSettings&, double z, double* out) { out[0] = z, out[1] = z * z; }
+
+// Lauritzen's light-bleeding reduction: linstep(amount, 1, p).
+double reduceBleeding(double p, double amount) { return std::clamp((p - amount) / (1.0 - amount), 0.0, 1.0); }
+
+double varianceVisibility(const MomentSettings& s, const double* m, double t) {
+    return reduceBleeding(chebyshevUpperBound(m[0], m[1], t, kMinVariance), s.bleedingReduction);
+}
+
+double varianceRange(const MomentSettings&) { return 1.0; }   // moments in [0, 1], compared absolutely
+
+}  // namespace
+
+const MomentModel kVarianceMoments = {
+    "vsm", "variance shadow map (RTR 7.7, Donnelly and Lauritzen 2006): Chebyshev bound, light-bleeding reduction", 2,
+    varianceParams, readVariance, varianceMoments, varianceVisibility, varianceRange};
+
+}  // namespace shadowlab

@@ -1,0 +1,189 @@
+// The fin-shadow pipeline, one function per step of fin_shadows.h.
+#include "shadows/fins/fin_shadows.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "scenes/edge_adjacency.h"
+#include "shadows/depth_map.h"
+#include "shadows/fins/fin_layers.h"
+#include "shadows/fins/fin_maps.h"
+#include "shadows/fins/fins_debug.h"
+#include "shadows/silhouettes/silhouette.h"
+
+namespace shadowlab {
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// What each layer draws: its objects' triangles into the hard shadow map, their fins into
+// the penumbra maps (fin_layers.h: objects go whole into one layer).
+struct LayerContents {
+    std::vector<glm::uvec3> geometry, innerFins, outerFins;
+    bool empty() const { return geometry.empty() && innerFins.empty() && outerFins.empty(); }
+};
+
+struct Layering {
+    LightLayers layers;
+    std::vector<int> instanceLayer;
+    std::vector<LayerContents> contents;
+};
+
+// Steps 1 to 3: what every layer's maps are drawn from.
+struct FinScene {
+    LightView view;
+    double L0 = 0.0;   // the reference receiver plane (section 3.1): the view's far plane
+    Fins fins;
+    Layering layering;
+};
+
+uint32_t instanceOfVertex(const std::vector<InstanceRange>& ranges, uint32_t vertex) {
+    const auto after = std::upper_bound(ranges.begin(), ranges.end(), vertex,
+                                        [](uint32_t v, const InstanceRange& r) { return v < r.firstVertex; });
+    return uint32_t(after - ranges.begin() - 1);
+}
+
+// Step 1: the view from the disk's centre along its normal, so that its depth planes are
+// parallel to the light's plane.
+LightView fitFinView(const ShadowInputs& in, const FinSettings& s) {
+    LightFitOptions fit;
+    fit.resolution = s.resolution;
+    fit.axis = s.light.normal;
+    return fitLightView(pointLightFor(in.light), in.gbuffer, in.world(), fit);
+}
+
+// Step 3: each instance, with its fins, into the layer of its edges' median midpoint.
+Layering layerScene(const ShadowInputs& in, const Fins& fins, const LightPlane& light, const LightView& view,
+                    int layerCount) {
+    const std::vector<InstanceRange> ranges = instanceRanges(in.scene());
+    std::vector<uint32_t> edgeInstance;
+    for (const SilhouetteEdge& e : fins.edges) edgeInstance.push_back(instanceOfVertex(ranges, e.from));
+    std::vector<double> fallback;   // instances without silhouette edges: their first vertex
+    for (const InstanceRange& r : ranges) fallback.push_back(light.distance(glm::dvec3(in.world().positions[r.firstVertex])));
+    Layering l{LightLayers(fins.midpointDistance, view.zNear, view.zFar, layerCount), {}, {}};
+    l.instanceLayer = instanceLayers(l.layers, fins.midpointDistance, edgeInstance, fallback);
+    l.contents.resize(l.layers.count());
+    for (size_t i = 0; i < ranges.size(); ++i) {
+        const auto first = in.world().triangles.begin() + ranges[i].firstTriangle;
+        std::vector<glm::uvec3>& geometry = l.contents[l.instanceLayer[i]].geometry;
+        geometry.insert(geometry.end(), first, first + ranges[i].triangleCount);
+    }
+    auto distribute = [&](const FinPrimitives& kind, std::vector<glm::uvec3> LayerContents::*list) {
+        for (size_t t = 0; t < kind.triangles.size(); ++t) {
+            (l.contents[l.instanceLayer[edgeInstance[kind.owner[t]]]].*list).push_back(kind.triangles[t]);
+        }
+    };
+    distribute(fins.inner, &LayerContents::innerFins);
+    distribute(fins.outer, &LayerContents::outerFins);
+    return l;
+}
+
+// Steps 1 to 3: the view, the fins of the silhouette edges w.r.t. the light's centre, the layers.
+FinScene buildFinScene(const ShadowInputs& in, const FinSettings& s) {
+    const LightView view = fitFinView(in, s);
+    const double L0 = view.zFar;
+    const std::vector<SilhouetteEdge> silhouette =
+        sceneSilhouette(in.scene(), in.world(), in.prepared.edgeAdjacency(), glm::dvec4(s.light.centre, 1.0));
+    Fins fins = buildFins(in.world().positions, silhouette, s.light, L0, s.style);
+    Layering layering = layerScene(in, fins, s.light, view, s.layers);
+    return {view, L0, std::move(fins), std::move(layering)};
+}
+
+// 1 where a surface faces the light's centre (the reference's dot(N, L - P) > 0), else 0.
+std::vector<uint8_t> facingLight(const GBuffer& g, const LightPlane& light) {
+    std::vector<uint8_t> facing(g.pixelCount(), 0);
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        facing[k] = g.hit[k] && glm::dot(glm::dvec3(g.normal[k]), light.centre - glm::dvec3(g.position[k])) > 0.0;
+    }
+    return facing;
+}
+
+// Step 4, near to far; layers without objects or fins are lit everywhere and skipped.
+// Returns the number of layers drawn.
+int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings& s, const FinDebug& debug,
+               IlluminanceBuffer& buffer) {
+    const IlluminanceSettings settings{s.light, scene.view, scene.L0, s.style.edgeWeight, s.falloff, s.bias};
+    const DepthMapSettings hardSettings{s.resolution, DepthLayer::First, polygonOffsetFor(s.bias)};
+    int drawn = 0;
+    for (int layer = 0; layer < scene.layering.layers.count(); ++layer) {
+        const LayerContents& c = scene.layering.contents[layer];
+        if (c.empty()) continue;
+        ++drawn;
+        const DepthMap hard = renderDepthMap(in.world().positions, c.geometry, scene.view, hardSettings, in.simd);
+        PenumbraMap inner;
+        if (s.style.innerFins) {
+            inner = renderPenumbraMap(scene.fins.inner, c.innerFins, scene.view, s.resolution, FinKind::Inner, in.simd);
+        }
+        const PenumbraMap outer =
+            renderPenumbraMap(scene.fins.outer, c.outerFins, scene.view, s.resolution, FinKind::Outer, in.simd);
+        const PenumbraMap* innerOrNone = s.style.innerFins ? &inner : nullptr;
+        buffer.combineLayer({hard, innerOrNone, outer}, settings);
+        debug.writeLayer(layer, hard, innerOrNone, outer, s.style.edgeWeight, in.gbuffer, buffer.values());
+    }
+    return drawn;
+}
+
+std::vector<TechniqueStat> finStats(const FinScene& scene, const FinSettings& s, int layersDrawn, double finsMs,
+                                    double layersMs) {
+    return {{"silhouette edges", double(scene.fins.edges.size())},
+            {"inner fin triangles", double(scene.fins.inner.triangles.size())},
+            {"outer fin triangles", double(scene.fins.outer.triangles.size())},
+            {"layers", double(scene.layering.layers.count())},
+            {"layers drawn", double(layersDrawn)},
+            {"resolution", double(s.resolution)},
+            {"light near", scene.view.zNear},
+            {"reference plane L0", scene.L0},
+            {"silhouette and fins ms", finsMs},
+            {"maps and illuminance ms", layersMs}};
+}
+
+}  // namespace
+
+std::vector<ParamSpec> finShadowParams() {
+    return {integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution,
+                         "texels per side of the hard shadow and penumbra maps"),
+            choiceParam<Falloff>("falloff", "linear",
+                                 {{"linear", Falloff::Linear, "eq. 1"},
+                                  {"bernstein", Falloff::Bernstein, "3u^2 - 2u^3, Haines 2001"}},
+                                 "penumbra fall-off")};
+}
+
+FinSettings readFinSettings(const ShadowInputs& in, const std::string& technique) {
+    if (in.light.type != LightType::Disk) throw std::invalid_argument(technique + ": needs a disk light");
+    FinSettings s;
+    s.technique = technique;
+    s.light = lightPlaneOf(in.light);
+    s.resolution = in.params.integer("resolution");
+    s.falloff = in.params.choice<Falloff>("falloff");
+    return s;
+}
+
+ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
+    ShadowOutputs out;
+    if (std::find(in.gbuffer.hit.begin(), in.gbuffer.hit.end(), 1) == in.gbuffer.hit.end()) {
+        out.visibility.assign(in.gbuffer.pixelCount(), 0.0f);
+        return out;
+    }
+    auto start = std::chrono::steady_clock::now();
+    const FinScene scene = buildFinScene(in, s);
+    const double finsMs = millisecondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    IlluminanceBuffer buffer(in.gbuffer, facingLight(in.gbuffer, s.light));
+    const FinDebug debug(in.debugDir, s.technique, scene.view);
+    const int layersDrawn = drawLayers(in, scene, s, debug, buffer);
+    const double layersMs = millisecondsSince(start);
+    debug.writeFinCoverage(scene.fins, s.resolution, in.simd);
+    debug.writePixelLayers(in.gbuffer, in.world(), scene.layering.instanceLayer, scene.layering.layers.count());
+
+    out.visibility = buffer.values();
+    out.stats = finStats(scene, s, layersDrawn, finsMs, layersMs);
+    return out;
+}
+
+}  // namespace shadowlab
