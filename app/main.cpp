@@ -93,10 +93,11 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
                    const FrameSettings& settings, const Frame& frame) {
     const Scene& scene = prepared.scene();
     const std::string& referenceName = a.reference.empty() ? technique.referenceName : a.reference;
-    const ImageChannels reference = renderReferenceVisibility(prepared, settings.simd, referenceName);
-    const ImageChannels test = visibilityImage(frame);
-    const ErrorFigures figures = compareImages(reference, test);
-    writePng(a.errorMap, scene.camera.width, scene.camera.height, errorMapImage(reference, test, frame.radiance));
+    const ImageChannels reference = renderReferenceImage(prepared, settings.simd, referenceName);
+    const ImageChannels test = scoredImage(frame);
+    const ErrorFigures figures = scoreFrame(reference, frame);
+    writePng(a.errorMap, scene.camera.width, scene.camera.height,
+             errorMapImage(reference, test, frame.radiance, scoredChannel(frame.output)));
     std::cout << "against " << referenceName << "\n" << formatText(figures) << "error map: " << a.errorMap
               << " (red: false shadow, blue: false light)\n";
     if (a.json.empty()) return;

@@ -119,7 +119,7 @@ std::map<std::string, ImageChannels> renderReferences(const PreparedScene& prepa
     std::map<std::string, ImageChannels> references;
     for (const SweepPlan& plan : plans) {
         const std::string& name = referenceFor(*plan.technique, options);
-        if (!references.contains(name)) references.emplace(name, renderReferenceVisibility(prepared, options.simd, name));
+        if (!references.contains(name)) references.emplace(name, renderReferenceImage(prepared, options.simd, name));
     }
     return references;
 }

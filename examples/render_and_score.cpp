@@ -64,7 +64,7 @@ int main(int argc, char** argv) try {
 
     // 3. The reference: the same view's visibility computed exactly, by a shadow ray per pixel
     //    (Embree) to the light's centre, or many rays over an area light for soft shadows.
-    const ImageChannels reference = renderReferenceVisibility(prepared, settings.simd, technique.referenceName);
+    const ImageChannels reference = renderReferenceImage(prepared, settings.simd, technique.referenceName);
 
     // 4. Scoring, over the pixels where the reference sees a surface: the error of V, and
     //    how many pixels are misclassified, shadowed where they should be lit (false shadow:
@@ -79,7 +79,7 @@ int main(int argc, char** argv) try {
     writePng(out, w, h, toSrgb8Image(frame.radiance, {}));
     std::filesystem::path errors = out;
     errors.replace_filename(out.stem().string() + "-errors.png");
-    writePng(errors, w, h, errorMapImage(reference, visibilityImage(frame), frame.radiance));
+    writePng(errors, w, h, errorMapImage(reference, scoredImage(frame), frame.radiance, scoredChannel(frame.output)));
     std::printf("wrote %s and %s\n", out.c_str(), errors.c_str());
     return 0;
 } catch (const std::exception& e) {

@@ -67,11 +67,25 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     if (scene.lights.empty()) throw std::invalid_argument("the scene has no light to cast shadows");
     const TechniqueParams params(technique.name, technique.params, settings.params);
     Frame frame;
+    frame.output = technique.output;
     frame.gbuffer = renderGBuffer(prepared.world(), scene.camera, settings.simd);
+    const size_t preparedBefore = prepared.preparationTimes().size();
+    if (technique.usesEdgeAdjacency) prepared.edgeAdjacency();
+    const auto times = prepared.preparationTimes();
+    for (size_t k = preparedBefore; k < times.size(); ++k) frame.preparation.push_back({times[k].first, times[k].second});
+
     const auto start = std::chrono::steady_clock::now();
-    frame.shadow = technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir});
+    frame.shadow = anySurface(frame.gbuffer)
+                       ? technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir})
+                       : unlitOutputs(frame.gbuffer);
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
+    if (technique.output == TechniqueOutput::Visibility) {
+        frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
+    } else {
+        if (frame.shadow.radiance.size() != frame.gbuffer.pixelCount())
+            throw std::logic_error(technique.name + ": a radiance technique returned no radiance image");
+        frame.radiance = frame.shadow.radiance;
+    }
     return frame;
 }
 

@@ -38,8 +38,12 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
 struct Frame {
     GBuffer gbuffer;
     ShadowOutputs shadow;
-    std::vector<glm::vec3> radiance;   // linear, row-major
+    TechniqueOutput output = TechniqueOutput::Visibility;   // the technique's
+    std::vector<glm::vec3> radiance;   // linear, row-major: V shaded, or the technique's own
     double techniqueMs = 0.0;          // wall time of the technique alone
+    // Scene preparation this frame did (PreparedScene::preparationTimes(), e.g. the edge
+    // adjacency on the first frame of a technique that reads it), outside techniqueMs.
+    std::vector<TechniqueStat> preparation;
 };
 
 struct FrameSettings {
@@ -48,7 +52,8 @@ struct FrameSettings {
     std::filesystem::path debugDir;              // empty: no intermediate buffers
 };
 
-// Throws std::invalid_argument for a parameter the technique does not have.
+// Throws std::invalid_argument for a parameter the technique does not have, and
+// std::logic_error for a radiance technique that returns no radiance image.
 Frame renderFrame(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings = {});
 
 }  // namespace shadowlab

@@ -19,32 +19,49 @@ uint8_t dimmedGrey(const glm::vec3& radiance) {
 
 }  // namespace
 
-ImageChannels visibilityImage(const Frame& frame) {
+const char* scoredChannel(TechniqueOutput output) {
+    return output == TechniqueOutput::Visibility ? channel::V : channel::Y;
+}
+
+ImageChannels scoredImage(const Frame& frame) {
     ImageChannels image;
     image.width = frame.gbuffer.width;
     image.height = frame.gbuffer.height;
     image.set(channel::hit, std::vector<float>(frame.gbuffer.hit.begin(), frame.gbuffer.hit.end()));
-    image.set(channel::V, frame.shadow.visibility);
+    if (frame.output == TechniqueOutput::Visibility) {
+        image.set(channel::V, frame.shadow.visibility);
+    } else {
+        std::vector<float> Y(frame.radiance.size());
+        for (size_t k = 0; k < Y.size(); ++k) Y[k] = luminance(frame.radiance[k]);
+        image.set(channel::Y, std::move(Y));
+    }
     return image;
 }
 
-ImageChannels renderReferenceVisibility(const PreparedScene& prepared, raster::SimdLevel simd,
-                                        const std::string& referenceName) {
+ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName) {
     FrameSettings settings;
     settings.simd = simd;
-    return visibilityImage(renderFrame(prepared, findTechnique(referenceName), settings));
+    return scoredImage(renderFrame(prepared, findTechnique(referenceName), settings));
 }
 
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {
-    return compareImages(reference, visibilityImage(frame));
+    CompareOptions options;
+    // Assigned from a std::string: GCC 12 warns falsely (-Wrestrict) on assigning the char*.
+    options.channel = std::string(scoredChannel(frame.output));
+    if (!reference.find(options.channel)) {
+        std::string why = "the reference has no ";
+        why.append(options.channel).append(" channel: a technique is scored against a reference of the same output");
+        throw std::invalid_argument(why);
+    }
+    return compareImages(reference, scoredImage(frame), options);
 }
 
 std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,
-                                   const std::vector<glm::vec3>& shaded) {
+                                   const std::vector<glm::vec3>& shaded, const std::string& scored) {
     const CompareOptions options;
     const std::vector<float>& hit = reference.at(channel::hit);
-    const std::vector<float>& referenceV = reference.at(options.channel);
-    const std::vector<float>& testV = test.at(options.channel);
+    const std::vector<float>& referenceV = reference.at(scored);
+    const std::vector<float>& testV = test.at(scored);
     if (testV.size() != hit.size() || shaded.size() != hit.size())
         throw std::invalid_argument("error map: the reference, the test and the shaded image differ in size");
     std::vector<uint8_t> rgb(3 * shaded.size());
@@ -71,6 +88,9 @@ std::string formatScoreJson(const std::string& sceneName, const std::string& tec
     j["settings"] = settings;
     j["technique_ms"] = frame.techniqueMs;
     j["stats"] = stats;
+    nlohmann::ordered_json preparation = nlohmann::ordered_json::object();
+    for (const TechniqueStat& s : frame.preparation) preparation[s.name] = s.value;
+    j["preparation"] = preparation;
     j["errors"] = nlohmann::ordered_json::parse(formatJson(figures));
     return j.dump(2) + "\n";
 }

@@ -1,8 +1,9 @@
 // Scoring a technique against the exact reference (conventions.md, "Figures and errors"):
 // the work `shadowlab render --error-map` and `shadowlab sweep` share. The reference is
-// the visibility of the same camera view by the technique's Technique::referenceName
-// (`reference` for hard shadows, `reference-soft` for soft ones); a frame is scored by
-// compareImages() on its V channel over the reference's hit pixels.
+// the same camera view rendered by the technique's Technique::referenceName (`reference`
+// for hard shadows, `reference-soft` for soft ones); a frame is scored by compareImages()
+// over the reference's hit pixels, on V for a visibility technique and on the luminance Y
+// of its radiance for a radiance technique (scoredChannel()).
 #pragma once
 
 #include <array>
@@ -16,15 +17,21 @@
 
 namespace shadowlab {
 
-// The channels a frame is scored on: hit (from its G-buffer) and V.
-ImageChannels visibilityImage(const Frame& frame);
+// The channel a technique's frames are scored on: V, or Y for radiance.
+const char* scoredChannel(TechniqueOutput output);
+
+// The channels a frame is scored on: hit (from its G-buffer) and scoredChannel(): V, or Y,
+// the Rec. 709 luminance of the frame's radiance.
+ImageChannels scoredImage(const Frame& frame);
 
 // Renders the scene with the technique named referenceName (at its default settings) and
-// returns its visibilityImage().
-ImageChannels renderReferenceVisibility(const PreparedScene& prepared, raster::SimdLevel simd,
-                                        const std::string& referenceName = "reference");
+// returns its scoredImage().
+ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd,
+                                   const std::string& referenceName = "reference");
 
-// The frame's V against the reference's (compareImages with the default options).
+// The frame's scored channel against the reference's (compareImages with the default
+// options otherwise). Throws std::invalid_argument if the reference lacks that channel
+// (a radiance technique scored against a visibility reference, or the other way round).
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame);
 
 // Error-map colours, 8-bit sRGB. Red and blue as in `shadowlab compare`'s heat map, at
@@ -38,10 +45,10 @@ inline constexpr std::array<uint8_t, 3> kFalseLightColour{0, 160, 255};   // lea
 // (CompareOptions::litThreshold, over the reference's hit pixels) in kFalseShadowColour
 // or kFalseLightColour.
 std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,
-                                   const std::vector<glm::vec3>& shaded);
+                                   const std::vector<glm::vec3>& shaded, const std::string& scored = channel::V);
 
 // One JSON object: {"scene", "technique", "reference", "settings": {name: value},
-// "technique_ms", "stats": {name: value}, "errors": formatJson(figures)}.
+// "technique_ms", "stats": {name: value}, "preparation": {name: ms}, "errors": formatJson(figures)}.
 std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
                             const std::map<std::string, std::string>& settings, const Frame& frame,
                             const ErrorFigures& figures);

@@ -36,6 +36,7 @@ inline constexpr const char* hit = "hit";
 inline constexpr const char* V = "V";
 inline constexpr const char* depth = "depth";
 inline constexpr const char* stencil = "stencil";
+inline constexpr const char* Y = "Y";   // one value: luminance of R, G, B, or a debug buffer
 }  // namespace channel
 
 // A set of named float channels of one size, row-major with row 0 at the top.

@@ -12,15 +12,6 @@
 #include "shadows/volumes/shadow_volume.h"
 
 namespace shadowlab {
-namespace {
-
-// Soft-shadow techniques are scored against the area light's visible fraction.
-Technique scoredAgainstSoftReference(Technique t) {
-    t.referenceName = "reference-soft";
-    return t;
-}
-
-}  // namespace
 
 const std::vector<Technique>& techniques() {
     static const std::vector<Technique> all = {
@@ -29,18 +20,18 @@ const std::vector<Technique>& techniques() {
         softReferenceTechnique(),
         shadowMapTechnique(),
         cascadedShadowMapTechnique(),
-        {"izb", "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows", irregularZBufferParams(), irregularZBuffer},
+        irregularZBufferTechnique(),
         shadowVolumeTechnique(),
         planarTechnique(),
-        scoredAgainstSoftReference(pcssTechnique()),
-        scoredAgainstSoftReference(filteredShadowMapTechnique(MomentKind::Variance)),
-        scoredAgainstSoftReference(filteredShadowMapTechnique(MomentKind::Exponential)),
-        scoredAgainstSoftReference(filteredShadowMapTechnique(MomentKind::ExponentialVariance)),
-        scoredAgainstSoftReference(filteredShadowMapTechnique(MomentKind::Hamburger4)),
-        scoredAgainstSoftReference(multiSampleTechnique()),
-        scoredAgainstSoftReference(finsTechnique()),
-        scoredAgainstSoftReference(smoothiesTechnique()),
-        scoredAgainstSoftReference(penumbraMapsTechnique()),
+        pcssTechnique(),
+        filteredShadowMapTechnique(MomentKind::Variance),
+        filteredShadowMapTechnique(MomentKind::Exponential),
+        filteredShadowMapTechnique(MomentKind::ExponentialVariance),
+        filteredShadowMapTechnique(MomentKind::Hamburger4),
+        multiSampleTechnique(),
+        finsTechnique(),
+        smoothiesTechnique(),
+        penumbraMapsTechnique(),
     };
     return all;
 }

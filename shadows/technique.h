@@ -1,12 +1,16 @@
 // The shadow techniques `shadowlab render --technique NAME` can run. Each takes the
-// G-buffer of the camera view and the selected light and returns the visibility V of that
-// light at every pixel (conventions.md), plus any intermediate buffers it can show.
+// G-buffer of the camera view and the selected light and returns either the visibility V
+// of that light at every pixel (conventions.md), which the frame then shades, or a shaded
+// radiance image of its own (a technique that lights the scene with many lights at once);
+// plus figures about its work (stats) and any intermediate buffers it can show.
 #pragma once
 
 #include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "raster/tile_kernels.h"
 #include "scenes/prepared_scene.h"
@@ -29,6 +33,8 @@ struct ShadowInputs {
 };
 
 // A named figure a technique reports about its own work (texels, fill, list lengths...).
+// Names are snake_case and end in their unit (docs/architecture.md, "Stat names"):
+// `fill_fragments_per_pixel`, `silhouette_ms`, `light_near_m`, `zfail_flag`.
 struct TechniqueStat {
     std::string name;
     double value;
@@ -36,20 +42,35 @@ struct TechniqueStat {
 
 struct ShadowOutputs {
     std::vector<float> visibility;         // V per pixel, row-major, 0 where hit = 0
+    std::vector<glm::vec3> radiance;       // TechniqueOutput::Radiance only: linear, row-major
     std::vector<float> stencil;            // per pixel, empty if the technique uses no stencil
     std::vector<TechniqueStat> stats;
 };
+
+// What a technique returns and is scored on: V (the frame shades it with the selected
+// light) or radiance (the technique's own shaded image, scored on its luminance).
+enum class TechniqueOutput { Visibility, Radiance };
 
 struct Technique {
     std::string name;
     std::string description;
     std::vector<ParamSpec> params;
     std::function<ShadowOutputs(const ShadowInputs&)> run;
-    // The technique whose V this one is scored against (`render --error-map`, `sweep`):
-    // `reference`, the hard shadow of the light's centre, for hard-shadow techniques;
-    // `reference-soft`, the visible fraction of an area light, for soft-shadow ones.
+    // The technique this one is scored against (`render --error-map`, `sweep`), of the same
+    // output: `reference`, the hard shadow of the light's centre, for hard-shadow
+    // techniques; `reference-soft`, the visible fraction of an area light, for soft ones.
     std::string referenceName = "reference";
+    TechniqueOutput output = TechniqueOutput::Visibility;
+    // It reads the prepared scene's edge adjacency: the frame builds it, once per prepared
+    // scene, before the technique's time starts (frame/render.h).
+    bool usesEdgeAdjacency = false;
 };
+
+// A view that sees no surface has one answer, V = 0 everywhere (and no radiance but the
+// background): renderFrame() gives it without running the technique, so no technique needs
+// a case for it (fitting a light's view to no receivers is an error, light_view.h).
+bool anySurface(const GBuffer& g);
+ShadowOutputs unlitOutputs(const GBuffer& g);
 
 // Every technique of every family (shadows/registry.cpp).
 const std::vector<Technique>& techniques();

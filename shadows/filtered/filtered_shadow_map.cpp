@@ -152,11 +152,11 @@ ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
     writeDebug(in, s, soft, moments, blurred, table, px);
     ShadowOutputs out;
     out.visibility = px.visibility;
-    out.stats = {{"resolution", double(s.resolution)},
-                 {"moments", double(moments.channels)},
-                 {"light_near", soft.zNear()},
-                 {"light_far", soft.zFar()}};
-    if (s.summedAreaTable) out.stats.push_back({"sat_relative_error_bound", satRelativeError(s.moments, moments)});
+    out.stats = {{"resolution_texels", double(s.resolution)},
+                 {"moments_count", double(moments.channels)},
+                 {"light_near_m", soft.zNear()},
+                 {"light_far_m", soft.zFar()}};
+    if (s.summedAreaTable) out.stats.push_back({"sat_error_bound_ratio", satRelativeError(s.moments, moments)});
     return out;
 }
 
@@ -176,7 +176,7 @@ Technique filteredShadowMapTechnique(MomentKind kind) {
     for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
     for (const ParamSpec& p : momentParamSpecs(kind)) params.push_back(p);
     return {momentKindName(kind), momentKindDescription(kind), params,
-            [kind](const ShadowInputs& in) { return runFiltered(kind, in); }};
+            [kind](const ShadowInputs& in) { return runFiltered(kind, in); }, "reference-soft"};
 }
 
 }  // namespace shadowlab

@@ -83,7 +83,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     for (size_t k = 0; k < lit.size(); ++k) out.visibility[k] = float(lit[k]) / float(samples);
     debug.write("lit-count", in.gbuffer.width, in.gbuffer.height, std::vector<float>(lit.begin(), lit.end()), 0.0f,
                 float(samples));
-    out.stats = {{"resolution", double(resolution)}, {"samples", double(samples)}, {"maps", double(samples)}};
+    out.stats = {{"resolution_texels", double(resolution)}, {"light_samples_count", double(samples)}, {"maps_count", double(samples)}};
     return out;
 }
 
@@ -94,7 +94,7 @@ Technique multiSampleTechnique() {
             "average of N hard shadow maps from stratified points on the area light (Heckbert and Herf 1997)",
             {softResolutionParam("texels per side of each map"),
              integerParam("samples", 64, 1, kMaxSamples, "N light points, a square: the level of detail")},
-            runMultiSample};
+            runMultiSample, "reference-soft"};
 }
 
 }  // namespace shadowlab

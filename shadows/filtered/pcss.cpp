@@ -74,12 +74,12 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
     }
     ShadowOutputs out;
     out.visibility = b.visibility;
-    out.stats = {{"resolution", double(resolution)},
-                 {"light_width_texels_at_1m", 0.5 * (soft.lightTexels.x + soft.lightTexels.y)},
-                 {"pixels_with_blockers", double(penumbra)},
-                 {"mean_width_texels", penumbra ? widthSum / double(penumbra) : 0.0},
-                 {"light_near", soft.zNear()},
-                 {"light_far", soft.zFar()}};
+    out.stats = {{"resolution_texels", double(resolution)},
+                 {"light_width_at_1m_texels", 0.5 * (soft.lightTexels.x + soft.lightTexels.y)},
+                 {"blocker_pixels", double(penumbra)},
+                 {"mean_filter_width_texels", penumbra ? widthSum / double(penumbra) : 0.0},
+                 {"light_near_m", soft.zNear()},
+                 {"light_far_m", soft.zFar()}};
     return out;
 }
 
@@ -91,7 +91,7 @@ Technique pcssTechnique() {
     params.push_back(integerParam("filter-taps", 32, 1, 128, "PCF: Poisson taps over the eq. 7.6 width"));
     return {"pcss",
             "percentage-closer soft shadows (RTR 7.6, Fernando 2005): blocker search, eq. 7.6 width, Poisson PCF",
-            params, runPcss};
+            params, runPcss, "reference-soft"};
 }
 
 }  // namespace shadowlab

@@ -2,7 +2,6 @@
 #include "shadows/fins/fin_shadows.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -13,13 +12,10 @@
 #include "shadows/fins/fin_maps.h"
 #include "shadows/fins/fins_debug.h"
 #include "shadows/silhouettes/silhouette.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 // What each layer draws: its objects' triangles into the hard shadow map, their fins into
 // the penumbra maps (fin_layers.h: objects go whole into one layer).
@@ -128,18 +124,15 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
     return drawn;
 }
 
-std::vector<TechniqueStat> finStats(const FinScene& scene, const FinSettings& s, int layersDrawn, double finsMs,
-                                    double layersMs) {
-    return {{"silhouette edges", double(scene.fins.edges.size())},
-            {"inner fin triangles", double(scene.fins.inner.triangles.size())},
-            {"outer fin triangles", double(scene.fins.outer.triangles.size())},
-            {"layers", double(scene.layering.layers.count())},
-            {"layers drawn", double(layersDrawn)},
-            {"resolution", double(s.resolution)},
-            {"light near", scene.view.zNear},
-            {"reference plane L0", scene.L0},
-            {"silhouette and fins ms", finsMs},
-            {"maps and illuminance ms", layersMs}};
+void addFinStats(const FinScene& scene, const FinSettings& s, int layersDrawn, std::vector<TechniqueStat>& stats) {
+    stats.insert(stats.end(), {{"silhouette_edges", double(scene.fins.edges.size())},
+                               {"inner_fin_triangles", double(scene.fins.inner.triangles.size())},
+                               {"outer_fin_triangles", double(scene.fins.outer.triangles.size())},
+                               {"layers_count", double(scene.layering.layers.count())},
+                               {"layers_drawn_count", double(layersDrawn)},
+                               {"resolution_texels", double(s.resolution)},
+                               {"light_near_m", scene.view.zNear},
+                               {"reference_plane_l0_m", scene.L0}});
 }
 
 }  // namespace
@@ -164,25 +157,22 @@ FinSettings readFinSettings(const ShadowInputs& in, const std::string& technique
 }
 
 ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
-    ShadowOutputs out;
-    if (std::find(in.gbuffer.hit.begin(), in.gbuffer.hit.end(), 1) == in.gbuffer.hit.end()) {
-        out.visibility.assign(in.gbuffer.pixelCount(), 0.0f);
-        return out;
-    }
-    auto start = std::chrono::steady_clock::now();
+    std::vector<TechniqueStat> times;
+    StageTimer timer(times);
     const FinScene scene = buildFinScene(in, s);
-    const double finsMs = millisecondsSince(start);
+    timer.lap("silhouette_and_fins");
 
-    start = std::chrono::steady_clock::now();
     IlluminanceBuffer buffer(in.gbuffer, facingLight(in.gbuffer, s.light));
     const FinDebug debug(in.debugDir, s.technique, scene.view);
     const int layersDrawn = drawLayers(in, scene, s, debug, buffer);
-    const double layersMs = millisecondsSince(start);
+    timer.lap("maps_and_illuminance");
     debug.writeFinCoverage(scene.fins, s.resolution, in.simd);
     debug.writePixelLayers(in.gbuffer, in.world(), scene.layering.instanceLayer, scene.layering.layers.count());
 
+    ShadowOutputs out;
     out.visibility = buffer.values();
-    out.stats = finStats(scene, s, layersDrawn, finsMs, layersMs);
+    addFinStats(scene, s, layersDrawn, out.stats);
+    out.stats.insert(out.stats.end(), times.begin(), times.end());
     return out;
 }
 

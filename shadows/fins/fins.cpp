@@ -31,7 +31,7 @@ Technique finsTechnique() {
     return {"fins",
             "multi-layered shadow fins (Cai et al. 2006): inner and outer fins, penumbra maps per layer, refined "
             "illuminance buffer; disk lights",
-            params, runFins};
+            params, runFins, "reference-soft", TechniqueOutput::Visibility, /*usesEdgeAdjacency=*/true};
 }
 
 }  // namespace shadowlab

@@ -21,7 +21,8 @@ ShadowOutputs runPenumbraMaps(const ShadowInputs& in) {
 Technique penumbraMapsTechnique() {
     return {"penumbra-maps",
             "penumbra maps (Wyman and Hansen 2003): hard shadow plus outer fins sized by the light; disk lights",
-            finShadowParams(), runPenumbraMaps};
+            finShadowParams(), runPenumbraMaps, "reference-soft", TechniqueOutput::Visibility,
+            /*usesEdgeAdjacency=*/true};
 }
 
 }  // namespace shadowlab

@@ -25,7 +25,7 @@ Technique smoothiesTechnique() {
                                "0.06 is about the built-in disk (radius 0.5 m) seen from 8 m"));
     return {"smoothies",
             "smoothies (Chan and Durand 2003): hard shadow plus outer fins of one global size; disk lights", params,
-            runSmoothies};
+            runSmoothies, "reference-soft", TechniqueOutput::Visibility, /*usesEdgeAdjacency=*/true};
 }
 
 }  // namespace shadowlab

@@ -1,12 +1,12 @@
 // The `izb` technique: the irregular z-buffer's stages (izb.h) in order, its figures and its
 // debug buffers.
 #include <algorithm>
-#include <chrono>
 #include <optional>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/izb/izb.h"
 #include "shadows/ray_offset.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
@@ -14,19 +14,6 @@ namespace {
 // Mean non-empty list length chooseResolution() aims at: about one to four receivers per
 // list (issue 3), two in the middle of that range on the ground of the built-in scenes.
 constexpr double kTargetListLength = 2.0;
-
-class StageClock {
-public:
-    double lap() {
-        const auto now = std::chrono::steady_clock::now();
-        const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
-        last_ = now;
-        return ms;
-    }
-
-private:
-    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 // Length figures over the texels' lists: longest, mean and 99th percentile (nearest rank) of
 // the non-empty ones, and how many are empty.
@@ -41,11 +28,11 @@ void addListStats(const izb::TexelLists& lists, size_t texels, std::vector<Techn
     // Nearest rank: the shortest length L with at least 99% of the non-empty lists <= L.
     uint64_t p99 = 0, seen = 0;
     for (size_t n = 1; n < histogram.size() && 100 * seen < 99 * nonEmpty; ++n) seen += histogram[n], p99 = n;
-    stats.push_back({"list_max", double(histogram.size() - 1)});
-    stats.push_back({"list_mean_nonempty", nonEmpty ? double(lists.entry.size()) / double(nonEmpty) : 0.0});
-    stats.push_back({"list_p99_nonempty", double(p99)});
+    stats.push_back({"list_max_receivers", double(histogram.size() - 1)});
+    stats.push_back({"list_mean_nonempty_receivers", nonEmpty ? double(lists.entry.size()) / double(nonEmpty) : 0.0});
+    stats.push_back({"list_p99_nonempty_receivers", double(p99)});
     stats.push_back({"empty_texels", double(histogram[0])});
-    stats.push_back({"empty_texel_percent", 100.0 * double(histogram[0]) / double(texels)});
+    stats.push_back({"empty_texels_percent", 100.0 * double(histogram[0]) / double(texels)});
 }
 
 void writeDebugBuffers(const ShadowInputs& in, const izb::LightGrid& grid, const izb::TexelLists& lists,
@@ -66,49 +53,51 @@ void writeDebugBuffers(const ShadowInputs& in, const izb::LightGrid& grid, const
     debug.write("occluders", width, height, occluders, 0.0f, most);
 }
 
-}  // namespace
-
-std::vector<ParamSpec> irregularZBufferParams() {
-    return {integerOrAutoParam("resolution", kMinMapResolution, kMaxMapResolution,
-                               "light grid texels per side; auto: a mean of about 2 receivers per non-empty texel")};
-}
-
 ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     const std::optional<int> requested = in.params.integerOrAuto("resolution");
     const Light light = pointLightFor(in.light);
     const double diagonal = sceneDiagonal(in.world());
-    StageClock clock;
     ShadowOutputs out;
+    StageTimer timer(out.stats);
     const izb::Receivers receivers = izb::gatherReceivers(in.gbuffer, light, diagonal, out.visibility);
-    out.stats.push_back({"receivers", double(receivers.size())});
-    out.stats.push_back({"ms_receivers", clock.lap()});
+    out.stats.push_back({"receiver_pixels", double(receivers.size())});
+    timer.lap("receivers");
     if (receivers.size() == 0) return out;
 
     std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world());
     const int resolution = requested ? *requested : izb::chooseResolution(views, receivers, kTargetListLength);
     const izb::LightGrid grid = izb::makeLightGrid(std::move(views), resolution, diagonal);
-    out.stats.push_back({"resolution", double(grid.resolution)});
-    out.stats.push_back({"views", double(grid.views.size())});
-    out.stats.push_back({"ms_light_grid", clock.lap()});
+    out.stats.push_back({"resolution_texels", double(grid.resolution)});
+    out.stats.push_back({"views_count", double(grid.views.size())});
+    timer.lap("light_grid");
 
     const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid, receivers), grid.texelCount());
     addListStats(lists, grid.texelCount(), out.stats);
-    out.stats.push_back({"ms_lists", clock.lap()});
+    timer.lap("lists");
 
     const izb::TileBins bins = izb::binOccluders(grid, lists, in.world());
-    out.stats.push_back({"tile_triangle_pairs", double(bins.triangles.entry.size())});
-    out.stats.push_back({"ms_binning", clock.lap()});
+    out.stats.push_back({"tile_triangle_pairs_count", double(bins.triangles.entry.size())});
+    timer.lap("binning");
 
     const izb::Occlusion occlusion =
         izb::traverseOccluders(grid, izb::homogeneousLight(light), receivers, lists, bins, in.world());
     for (size_t r = 0; r < receivers.size(); ++r) {
         if (occlusion.blocked[r]) out.visibility[receivers.pixel[r]] = 0.0f;
     }
-    out.stats.push_back({"texel_triangle_pairs", double(occlusion.texelPairs)});
-    out.stats.push_back({"segment_tests", double(occlusion.segmentTests)});
-    out.stats.push_back({"ms_traversal", clock.lap()});
+    out.stats.push_back({"texel_triangle_pairs_count", double(occlusion.texelPairs)});
+    out.stats.push_back({"segment_tests_count", double(occlusion.segmentTests)});
+    timer.lap("traversal");
     writeDebugBuffers(in, grid, lists, occlusion);
     return out;
+}
+
+}  // namespace
+
+Technique irregularZBufferTechnique() {
+    return {"izb", "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows",
+            {integerOrAutoParam("resolution", kMinMapResolution, kMaxMapResolution,
+                                "light grid texels per side; auto: a mean of about 2 receivers per non-empty texel")},
+            irregularZBuffer};
 }
 
 }  // namespace shadowlab

@@ -44,9 +44,8 @@
 
 namespace shadowlab {
 
-// The technique's entry in techniques(): its parameters and its run function.
-std::vector<ParamSpec> irregularZBufferParams();
-ShadowOutputs irregularZBuffer(const ShadowInputs& in);
+// The technique's entry in techniques().
+Technique irregularZBufferTechnique();
 
 namespace izb {
 

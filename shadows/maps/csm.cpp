@@ -29,17 +29,17 @@ CascadeSettings readCascadeSettings(const TechniqueParams& p, const ShadowMapSet
 }
 
 void addStats(ShadowOutputs& out, const CascadedMaps& cm, int resolution, const ShadowLookup& lookup) {
-    out.stats = {{"resolution", double(resolution)},
-                 {"cascades", double(cm.cascades.size())},
-                 {"texels_per_pixel_median", medianTexelDensity(lookup)}};
+    out.stats = {{"resolution_texels", double(resolution)},
+                 {"cascades_count", double(cm.cascades.size())},
+                 {"median_texels_per_pixel", medianTexelDensity(lookup)}};
     for (size_t k = 0; k < cm.cascades.size(); ++k) {
         const Cascade& c = cm.cascades[k];
         const std::string name = "cascade" + std::to_string(k);
-        out.stats.push_back({name + "_split_near", c.nearDistance});
-        out.stats.push_back({name + "_split_far", c.farDistance});
+        out.stats.push_back({name + "_split_near_m", c.nearDistance});
+        out.stats.push_back({name + "_split_far_m", c.farDistance});
         if (!c.hasReceivers) continue;
-        out.stats.push_back({name + "_light_near", c.view.zNear});
-        out.stats.push_back({name + "_light_far", c.view.zFar});
+        out.stats.push_back({name + "_light_near_m", c.view.zNear});
+        out.stats.push_back({name + "_light_far_m", c.view.zFar});
     }
 }
 
@@ -48,10 +48,6 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     const CascadeSettings cs = readCascadeSettings(in.params, s);
     if (in.light.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
     ShadowOutputs out;
-    if (std::find(in.gbuffer.hit.begin(), in.gbuffer.hit.end(), 1) == in.gbuffer.hit.end()) {
-        out.visibility.assign(in.gbuffer.pixelCount(), 0.0f);
-        return out;
-    }
     const CascadedMaps cm = renderCascades(in.light, in.scene().camera, in.gbuffer, in.world(), cs, depthMapSettings(s), in.simd);
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, in.light, cm.maps,
                                               cascadeSelector(cm, in.scene().camera), s.bias, makePcfKernel(s.filter),

@@ -89,12 +89,12 @@ void addStats(ShadowOutputs& out, const LightMaps& lm, const ShadowMapSettings& 
         if (m.size == 0) continue;
         ++maps, zNear = std::min(zNear, m.view.zNear), zFar = std::max(zFar, m.view.zFar);
     }
-    out.stats = {{"resolution", double(s.resolution)},
-                 {"maps", double(maps)},
-                 {"texels_per_pixel_median", medianTexelDensity(lookup)},
-                 {"light_near", zNear},
-                 {"light_far", zFar}};
-    if (lm.nOpt != 0.0) out.stats.push_back({"lispsm_n_opt", lm.nOpt});
+    out.stats = {{"resolution_texels", double(s.resolution)},
+                 {"maps_count", double(maps)},
+                 {"median_texels_per_pixel", medianTexelDensity(lookup)},
+                 {"light_near_m", zNear},
+                 {"light_far_m", zFar}};
+    if (lm.nOpt != 0.0) out.stats.push_back({"lispsm_n_opt_m", lm.nOpt});
 }
 
 void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSettings& s, const ShadowLookup& lookup) {
@@ -128,10 +128,6 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
     }
     if (forceCube && light.type != LightType::Point) throw std::invalid_argument("shadow-map: cube=always needs a point light");
     ShadowOutputs out;
-    if (std::find(in.gbuffer.hit.begin(), in.gbuffer.hit.end(), 1) == in.gbuffer.hit.end()) {
-        out.visibility.assign(in.gbuffer.pixelCount(), 0.0f);
-        return out;
-    }
     const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm);
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, light, lm.maps, selectorFor(lm), s.bias,
                                               makePcfKernel(s.filter), !in.debugDir.empty());

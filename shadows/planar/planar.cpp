@@ -145,10 +145,10 @@ ShadowOutputs run(const ShadowInputs& in) {
         shadowed += stencil[k] == kShadowed;
     }
     out.stats = {
-        {"receiver triangles", double(split.receivers.size())},
-        {"caster triangles", double(split.casters.size())},
-        {"receiver pixels", receiverPixels},
-        {"shadowed receiver pixels", shadowed},
+        {"receiver_triangles", double(split.receivers.size())},
+        {"caster_triangles", double(split.casters.size())},
+        {"receiver_pixels", receiverPixels},
+        {"shadowed_receiver_pixels", shadowed},
     };
     const DebugBuffers debug(in.debugDir, "planar");
     if (debug.enabled()) {

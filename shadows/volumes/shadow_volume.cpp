@@ -47,15 +47,14 @@
 // terminator of a tessellated object is its polygonal one, as in the reference.
 #include "shadows/volumes/shadow_volume.h"
 
-#include <chrono>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "raster/rasterizer.h"
 #include "shading/lights.h"
 #include "shadows/volumes/counting_mode.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/stage_timer.h"
 #include "scenes/edge_adjacency.h"
 #include "shadows/volumes/infinite_projection.h"
 #include "shadows/silhouettes/silhouette.h"
@@ -136,26 +135,6 @@ raster::DrawCall volumeDraw(const ShadowVolume& volume, Counting counting, const
     return call;
 }
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-struct BuiltVolume {
-    const std::vector<EdgeAdjacency>* adjacency = nullptr;   // the prepared scene's
-    ShadowVolume volume;
-    double extrusionMs = 0.0;
-};
-
-// Step 1, timed: the volume from the prepared scene's edge adjacency.
-BuiltVolume buildVolume(const ShadowInputs& in, const glm::dvec4& light, Counting counting) {
-    BuiltVolume b;
-    b.adjacency = &in.prepared.edgeAdjacency();
-    const auto start = std::chrono::steady_clock::now();
-    b.volume = extrudeShadowVolume(in.scene(), in.world(), *b.adjacency, light, counting == Counting::ZFail);
-    b.extrusionMs = millisecondsSince(start);
-    return b;
-}
-
 // Steps 3 and 4: the depth prepass, then the stencil pass. Returns the stencil pass's
 // figures, whose fragments are the fill (step 5).
 raster::RasterStats countCrossings(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
@@ -188,34 +167,32 @@ ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light,
     return out;
 }
 
-std::vector<TechniqueStat> volumeStats(const ShadowInputs& in, const ShadowOutputs& out, const CountingChoice& choice,
-                                       const BuiltVolume& b, const raster::RasterStats& fill, double rasterMs) {
+void addVolumeStats(const ShadowInputs& in, const CountingChoice& choice, const ShadowVolume& volume,
+                    const raster::RasterStats& fill, ShadowOutputs& out) {
     const GBuffer& g = in.gbuffer;
     double shadowed = 0;
     for (size_t k = 0; k < g.pixelCount(); ++k) shadowed += g.hit[k] && out.visibility[k] == 0.0f;
     uint32_t openMeshes = 0, openEdges = 0, nonManifoldEdges = 0;
     for (const MeshInstance& instance : in.scene().instances) {
-        const EdgeAdjacency& a = (*b.adjacency)[instance.mesh];
+        const EdgeAdjacency& a = in.prepared.edgeAdjacency()[instance.mesh];
         openMeshes += !a.closed, openEdges += a.openEdges, nonManifoldEdges += a.nonManifoldEdges;
     }
     const double fragments = double(fill.fragments);
-    return {
-        {"mode (0 z-pass, 1 z-fail)", choice.counting == Counting::ZFail ? 1.0 : 0.0},
-        {"near plane may be in shadow", choice.nearPlaneShadowed ? 1.0 : 0.0},
-        {"open instances", double(openMeshes)},
-        {"open edges", double(openEdges)},
-        {"non-manifold edges", double(nonManifoldEdges)},
-        {"silhouette edges", double(b.volume.silhouette.size())},
-        {"volume side triangles", double(b.volume.sideCount)},
-        {"volume light-cap triangles", double(b.volume.lightCapCount)},
-        {"volume dark-cap triangles", double(b.volume.darkCapCount)},
-        {"volume triangles set up", double(fill.trianglesSetUp)},
-        {"fill fragments", fragments},
-        {"fill fragments per pixel", fragments / double(g.pixelCount())},
-        {"shadowed pixels", shadowed},
-        {"silhouette+extrusion ms", b.extrusionMs},
-        {"prepass+stencil ms", rasterMs},
-    };
+    out.stats.insert(out.stats.end(), {
+        {"zfail_flag", choice.counting == Counting::ZFail ? 1.0 : 0.0},
+        {"near_plane_shadowed_flag", choice.nearPlaneShadowed ? 1.0 : 0.0},
+        {"open_instances_count", double(openMeshes)},
+        {"open_edges", double(openEdges)},
+        {"non_manifold_edges", double(nonManifoldEdges)},
+        {"silhouette_edges", double(volume.silhouette.size())},
+        {"volume_side_triangles", double(volume.sideCount)},
+        {"volume_light_cap_triangles", double(volume.lightCapCount)},
+        {"volume_dark_cap_triangles", double(volume.darkCapCount)},
+        {"volume_set_up_triangles", double(fill.trianglesSetUp)},
+        {"fill_fragments", fragments},
+        {"fill_fragments_per_pixel", fragments / double(g.pixelCount())},
+        {"shadowed_pixels", shadowed},
+    });
 }
 
 void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowOutputs& out, const ShadowVolume& volume,
@@ -231,21 +208,26 @@ ShadowOutputs run(const ShadowInputs& in) {
     const Camera& camera = in.scene().camera;
     const Light light = pointLightFor(in.light);
     const glm::dvec4 lightH = homogeneousLight(light);
+    std::vector<TechniqueStat> times;
+    StageTimer timer(times);
     const CountingChoice choice = chooseCounting(in, lightH);
-    const BuiltVolume built = buildVolume(in, lightH, choice.counting);
+    const ShadowVolume volume = extrudeShadowVolume(in.scene(), in.world(), in.prepared.edgeAdjacency(), lightH,
+                                                    choice.counting == Counting::ZFail);
+    timer.lap("extrusion");
 
-    const auto start = std::chrono::steady_clock::now();
     const glm::mat4 clipFromWorld = clipFromWorldInfinite(camera);
     const DebugBuffers debug(in.debugDir, "shadow-volume");
     raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
     raster::Rasterizer rasterizer(in.simd);
-    const raster::DrawCall call = volumeDraw(built.volume, choice.counting, clipFromWorld);
+    const raster::DrawCall call = volumeDraw(volume, choice.counting, clipFromWorld);
     const raster::RasterStats fill = countCrossings(rasterizer, fb, in, clipFromWorld, call, choice.counting);
-    const double rasterMs = millisecondsSince(start);
+    timer.lap("stencil");
 
     ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb.stencilImage());
-    out.stats = volumeStats(in, out, choice, built, fill, rasterMs);
-    if (debug.enabled()) writeDebug(debug, in, out, built.volume, fillPerPixel(rasterizer, fb, call));
+    timer.lap("visibility");
+    addVolumeStats(in, choice, volume, fill, out);
+    out.stats.insert(out.stats.end(), times.begin(), times.end());
+    if (debug.enabled()) writeDebug(debug, in, out, volume, fillPerPixel(rasterizer, fb, call));
     return out;
 }
 
@@ -260,7 +242,7 @@ Technique shadowVolumeTechnique() {
                                 {"zfail", Mode::ZFail}}),
              realParam("offset", 0.0, 0.0, 64.0,
                        "polygon offset of the volume faces, in units of the depth buffer's resolution")},
-            run};
+            run, "reference", TechniqueOutput::Visibility, /*usesEdgeAdjacency=*/true};
 }
 
 }  // namespace shadowlab

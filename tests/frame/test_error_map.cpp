@@ -58,7 +58,7 @@ TEST_CASE("error map: the counts agree with compareImages, sizes must match") {
 TEST_CASE("scoring a frame: the reference against itself is exact, JSON carries stats and time") {
     const Scene scene = loadScene(builtinSceneDir() + "/hard/thin-occluder.json");
     const PreparedScene prepared(scene);
-    const ImageChannels reference = renderReferenceVisibility(prepared, raster::SimdLevel::Scalar);
+    const ImageChannels reference = renderReferenceImage(prepared, raster::SimdLevel::Scalar);
     FrameSettings settings;
     settings.simd = raster::SimdLevel::Scalar;
     const Frame frame = renderFrame(prepared, findTechnique("reference"), settings);

@@ -151,7 +151,7 @@ TEST_CASE("shadow-volume debug fill: the sum over pixels is the stat fill fragme
         INFO(mode);
         const ScratchDir dir(std::string("shadow-volume-fill-") + mode);
         const Frame f = s.run("shadow-volume", dir.path, {{"mode", mode}});
-        const double fragments = test::stat(f.shadow, "fill fragments");
+        const double fragments = test::stat(f.shadow, "fill_fragments");
         CHECK(fragments > 0.0);
         CHECK(sum(readBuffer(dir.path, "shadow-volume", "fill")) == fragments);
     }
@@ -165,15 +165,15 @@ TEST_CASE("izb debug list-length: sums to the stat receivers, and occupancy coun
     const ScratchDir dir("izb");
     const ShadowOutputs out = s.run("izb", dir.path).shadow;
     const ImageChannels lengths = readExr(dir.path / "izb-list-length.exr", {"Y"});
-    const double resolution = test::stat(out, "resolution"), views = test::stat(out, "views");
+    const double resolution = test::stat(out, "resolution_texels"), views = test::stat(out, "views_count");
     CHECK(lengths.width == resolution);
     CHECK(lengths.height == views * resolution);
     const std::vector<float>& length = lengths.at("Y");
-    CHECK(sum(length) == test::stat(out, "receivers"));
-    CHECK(*std::max_element(length.begin(), length.end()) == test::stat(out, "list_max"));
+    CHECK(sum(length) == test::stat(out, "receiver_pixels"));
+    CHECK(*std::max_element(length.begin(), length.end()) == test::stat(out, "list_max_receivers"));
     const double nonEmpty = double(length.size()) - test::stat(out, "empty_texels");
     CHECK(sum(readBuffer(dir.path, "izb", "occupancy")) == nonEmpty);
-    CHECK(test::stat(out, "list_mean_nonempty") * nonEmpty == doctest::Approx(sum(length)));
+    CHECK(test::stat(out, "list_mean_nonempty_receivers") * nonEmpty == doctest::Approx(sum(length)));
 }
 
 // medianTexelDensity() (shadow_lookup.cpp) takes element n / 2 of the densities of the
@@ -183,7 +183,7 @@ TEST_CASE("shadow-map debug texel-density: its median over the sampled served pi
     const SmallScene s = sceneFor("shadow-map");
     const ScratchDir dir("shadow-map");
     const Frame f = s.run("shadow-map", dir.path);
-    REQUIRE(test::stat(f.shadow, "maps") == 1.0);
+    REQUIRE(test::stat(f.shadow, "maps_count") == 1.0);
     const std::vector<float> density = readBuffer(dir.path, "shadow-map", "texel-density");
     std::vector<float> served;
     size_t measured = 0;
@@ -197,7 +197,7 @@ TEST_CASE("shadow-map debug texel-density: its median over the sampled served pi
     std::nth_element(served.begin(), served.begin() + served.size() / 2, served.end());
     const double median = served[served.size() / 2];
     CHECK(median > 0.0);
-    CHECK(median == test::stat(f.shadow, "texels_per_pixel_median"));
+    CHECK(median == test::stat(f.shadow, "median_texels_per_pixel"));
 }
 
 namespace {
@@ -234,7 +234,7 @@ std::vector<int> shownCascades(const fs::path& png, const Frame& f) {
 // lies beyond the depth, the last one beyond them all.
 int cascadeOfSplits(const ShadowOutputs& out, int count, double depth) {
     for (int k = 0; k + 1 < count; ++k) {
-        if (depth < test::stat(out, "cascade" + std::to_string(k) + "_split_far")) return k;
+        if (depth < test::stat(out, "cascade" + std::to_string(k) + "_split_far_m")) return k;
     }
     return count - 1;
 }

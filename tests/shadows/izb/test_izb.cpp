@@ -128,20 +128,20 @@ TEST_CASE("izb reports its list-length figures") {
     const ShadowOutputs out = run("izb", v);
     std::map<std::string, double> stat;
     for (const TechniqueStat& s : out.stats) stat[s.name] = s.value;
-    for (const char* name : {"resolution", "list_max", "list_mean_nonempty", "list_p99_nonempty", "empty_texels"}) {
+    for (const char* name : {"resolution_texels", "list_max_receivers", "list_mean_nonempty_receivers", "list_p99_nonempty_receivers", "empty_texels"}) {
         CHECK(stat.count(name) == 1);
     }
     // The automatic resolution aims at about two receivers per non-empty list.
-    CHECK(stat["list_mean_nonempty"] >= 1.0);
-    CHECK(stat["list_mean_nonempty"] <= 4.0);
-    CHECK(stat["list_p99_nonempty"] >= 1.0);
-    CHECK(stat["list_max"] >= stat["list_mean_nonempty"]);
+    CHECK(stat["list_mean_nonempty_receivers"] >= 1.0);
+    CHECK(stat["list_mean_nonempty_receivers"] <= 4.0);
+    CHECK(stat["list_p99_nonempty_receivers"] >= 1.0);
+    CHECK(stat["list_max_receivers"] >= stat["list_mean_nonempty_receivers"]);
 }
 
 TEST_CASE("izb: a light inside a closed room needs all six cube faces, a light above the scene one view") {
     const auto views = [](const std::string& scene) {
         for (const TechniqueStat& s : run("izb", Views(scene)).stats) {
-            if (s.name == "views") return s.value;
+            if (s.name == "views_count") return s.value;
         }
         FAIL("no views stat");
         return 0.0;

@@ -15,8 +15,8 @@ TEST_CASE("shadow-map, defaults, sphere-box: acne below 0.05% of lit pixels, lea
     const PreparedScene prepared(scene);
     const Frame reference = frameOf(prepared, "reference");
     const Frame map = frameOf(prepared, "shadow-map");
-    const double density = statOf(map, "texels_per_pixel_median");
-    CHECK(statOf(map, "resolution") == 2048);
+    const double density = statOf(map, "median_texels_per_pixel");
+    CHECK(statOf(map, "resolution_texels") == 2048);
     CHECK(density > 0.5);
     const BandedErrors m = bandedErrors(reference, map, leakBandPixels(density));
     MESSAGE("acne " << m.falseShadow << " of " << m.lit << " lit, leaks " << m.falseLight << " of " << m.shadowed
@@ -40,7 +40,7 @@ TEST_CASE("shadow-map: every bias mode and depth layer keeps errors at the shado
     };
     for (const auto& params : variants) {
         const Frame map = frameOf(prepared, "shadow-map", params);
-        const BandedErrors m = bandedErrors(reference, map, leakBandPixels(statOf(map, "texels_per_pixel_median")));
+        const BandedErrors m = bandedErrors(reference, map, leakBandPixels(statOf(map, "median_texels_per_pixel")));
         INFO(params.begin()->first << "=" << params.begin()->second << ": acne " << m.falseShadow << " of " << m.lit
                                    << ", leaks " << m.falseLight << " of " << m.shadowed);
         CHECK(m.falseShadow < 0.005 * m.lit);
@@ -56,8 +56,8 @@ TEST_CASE("shadow-map: six cube faces around a point light leave no gap") {
     const PreparedScene prepared(scene);
     const Frame reference = frameOf(prepared, "reference");
     const Frame map = frameOf(prepared, "shadow-map", {{"resolution", "1024"}});
-    CHECK(statOf(map, "maps") >= 4);
-    const BandedErrors m = bandedErrors(reference, map, leakBandPixels(statOf(map, "texels_per_pixel_median")));
+    CHECK(statOf(map, "maps_count") >= 4);
+    const BandedErrors m = bandedErrors(reference, map, leakBandPixels(statOf(map, "median_texels_per_pixel")));
     MESSAGE("cube: acne " << m.falseShadow << ", leaks " << m.falseLight << " of " << m.lit + m.shadowed);
     CHECK(m.falseLightOffBoundary == 0);
     CHECK(m.falseShadow < 0.001 * m.lit);
@@ -68,7 +68,7 @@ TEST_CASE("shadow-map: six cube faces around a point light leave no gap") {
     const PreparedScene farPrepared(far);
     const Frame farReference = frameOf(farPrepared, "reference");
     const Frame forced = frameOf(farPrepared, "shadow-map", {{"cube", "always"}, {"resolution", "1024"}});
-    const BandedErrors f = bandedErrors(farReference, forced, leakBandPixels(statOf(forced, "texels_per_pixel_median")));
+    const BandedErrors f = bandedErrors(farReference, forced, leakBandPixels(statOf(forced, "median_texels_per_pixel")));
     CHECK(f.falseLightOffBoundary == 0);
     CHECK(f.falseShadow < 0.001 * f.lit);
 }

@@ -55,7 +55,7 @@ TEST_CASE("shadow-map on every hard case: within its bound, or its known failure
         const std::string technique = c.technique;
         const Frame sm = technique == "lispsm" ? test::frameOf(prepared, "shadow-map", {{"warp", "lispsm"}})
                                                : test::frameOf(prepared, technique);
-        const int band = test::leakBandPixels(test::statOf(sm, "texels_per_pixel_median"));
+        const int band = test::leakBandPixels(test::statOf(sm, "median_texels_per_pixel"));
         const test::BandedErrors m = test::bandedErrors(reference, sm, band);
         const double hit = m.lit + m.shadowed;
         const double percent = 100.0 * (m.falseShadow + m.falseLight) / hit;
@@ -65,7 +65,7 @@ TEST_CASE("shadow-map on every hard case: within its bound, or its known failure
         CHECK(percent <= c.maxPercent);
         CHECK(offBand <= c.maxOffBandPercent);
         // Receivers on every side of the light: a map on each of the six cube faces.
-        if (name == "point-light-inside") CHECK(test::statOf(sm, "maps") == 6.0);
+        if (name == "point-light-inside") CHECK(test::statOf(sm, "maps_count") == 6.0);
         const std::string failure = c.knownFailure;
         if (failure.empty()) continue;
         // The known failure is asserted to be there: a change that cures it must update this.

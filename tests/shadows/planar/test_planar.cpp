@@ -76,7 +76,7 @@ TEST_CASE("planar: sphere-box's ground shadow matches the reference, the objects
     CHECK(split.elsewhereShadowed == 0);
     CHECK(split.elsewhere.falseShadow == 0);
     CHECK(split.elsewhere.falseLight > 5000);
-    CHECK(test::stat(out, "receiver triangles") == 8192.0);
+    CHECK(test::stat(out, "receiver_triangles") == 8192.0);
 }
 
 TEST_CASE("planar: the sphere's own terminator is missed") {
@@ -112,8 +112,8 @@ TEST_CASE("planar: only the plane receives: a box under a slab stays lit, a plan
     CHECK(boxShadowedHere == 0);
     // With the receiver plane at y = 1 no instance lies in it: no receiver, no shadow.
     const ShadowOutputs raised = s.run("planar", {{"plane-y", "1"}});
-    CHECK(test::stat(raised, "receiver pixels") == 0.0);
-    CHECK(test::stat(raised, "shadowed receiver pixels") == 0.0);
+    CHECK(test::stat(raised, "receiver_pixels") == 0.0);
+    CHECK(test::stat(raised, "shadowed_receiver_pixels") == 0.0);
 }
 
 TEST_CASE("planar: the stencil blends each shadowed pixel once, the same bytes for 1 and 2 threads") {

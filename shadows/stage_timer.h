@@ -1,0 +1,29 @@
+// The wall time of a technique's stages, so a user sees where a frame goes: each lap ends
+// the stage that began at the previous lap (or when the timer was made) and reports it as
+// the stat "<stage>_ms", in the order the stages ran.
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+class StageTimer {
+public:
+    explicit StageTimer(std::vector<TechniqueStat>& stats) : stats_(stats) {}
+
+    void lap(const std::string& stage) {
+        const auto now = std::chrono::steady_clock::now();
+        stats_.push_back({stage + "_ms", std::chrono::duration<double, std::milli>(now - last_).count()});
+        last_ = now;
+    }
+
+private:
+    std::vector<TechniqueStat>& stats_;
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace shadowlab

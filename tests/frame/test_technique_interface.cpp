@@ -1,0 +1,112 @@
+// The Technique interface as the frame pipeline uses it: stat names follow the documented
+// rule, a view with no surface is V = 0 for every technique, scene preparation is reported
+// once and outside the technique's time, and a radiance technique is shaded and scored by
+// its own image.
+#include <doctest/doctest.h>
+
+#include <regex>
+#include <set>
+#include <string>
+
+#include "frame/render.h"
+#include "frame/score.h"
+#include "scenes/scene_file.h"
+
+using namespace shadowlab;
+
+namespace {
+
+Scene smallScene(const std::string& nameOrPath) {
+    Scene scene = loadScene(nameOrPath);
+    scene.camera.width = 96, scene.camera.height = 60;
+    return scene;
+}
+
+std::string sunScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/hard/sun.json"; }
+
+// The techniques that need a directional light run on the sun case, the others on
+// sphere-box (a disk light, which the soft techniques need).
+bool needsDirectionalLight(const Technique& t) { return t.name == "csm"; }
+
+}  // namespace
+
+TEST_CASE("every technique's stat names are snake_case and end in a unit (docs/architecture.md)") {
+    const std::regex rule("[a-z][a-z0-9]*(_[a-z0-9]+)*_(ms|m|texels|pixels|triangles|edges|fragments|fragments_per_pixel|"
+                          "texels_per_pixel|receivers|percent|count|flag|ratio)");
+    const PreparedScene disk(smallScene("sphere-box")), sun(smallScene(sunScene()));
+    std::set<std::string> seen;
+    for (const Technique& t : techniques()) {
+        FrameSettings settings;
+        if (t.name == "reference-soft") settings.params = {{"samples-per-axis", "2"}};
+        if (t.name == "shadow-map") settings.params = {{"warp", "lispsm"}};
+        const Frame frame = renderFrame(needsDirectionalLight(t) || t.name == "shadow-map" ? sun : disk, t, settings);
+        for (const TechniqueStat& s : frame.shadow.stats) {
+            INFO(t.name << ": " << s.name);
+            CHECK(std::regex_match(s.name, rule));
+            seen.insert(s.name);
+        }
+        for (const TechniqueStat& s : frame.preparation) CHECK(std::regex_match(s.name, rule));
+    }
+    // The stage timer's laps are among them, one per stage of the timed techniques.
+    for (const char* stage : {"traversal_ms", "stencil_ms", "maps_and_illuminance_ms", "fill_fragments_per_pixel"})
+        CHECK(seen.count(stage) == 1);
+}
+
+TEST_CASE("a view that sees no surface gives V = 0 everywhere for every technique") {
+    Scene looksUp = smallScene("sphere-box"), sunUp = smallScene(sunScene());
+    for (Scene* s : {&looksUp, &sunUp}) s->camera.target = s->camera.eye + glm::vec3(0.0f, 1.0f, 0.01f);
+    const PreparedScene disk(looksUp), sun(sunUp);
+    for (const Technique& t : techniques()) {
+        INFO(t.name);
+        const Frame frame = renderFrame(needsDirectionalLight(t) ? sun : disk, t);
+        REQUIRE(frame.shadow.visibility.size() == frame.gbuffer.pixelCount());
+        CHECK(std::count(frame.gbuffer.hit.begin(), frame.gbuffer.hit.end(), 1) == 0);
+        CHECK(std::count(frame.shadow.visibility.begin(), frame.shadow.visibility.end(), 0.0f) ==
+              long(frame.gbuffer.pixelCount()));
+    }
+}
+
+TEST_CASE("the edge adjacency is built before the technique's time, once per prepared scene, and reported there") {
+    const PreparedScene prepared(smallScene("sphere-box"));
+    const Technique& volumes = findTechnique("shadow-volume");
+    REQUIRE(volumes.usesEdgeAdjacency);
+    CHECK_FALSE(findTechnique("shadow-map").usesEdgeAdjacency);
+    const Frame first = renderFrame(prepared, volumes), second = renderFrame(prepared, volumes);
+    REQUIRE(first.preparation.size() == 1);
+    CHECK(first.preparation[0].name == "edge_adjacency_ms");
+    CHECK(second.preparation.empty());
+    CHECK(first.shadow.visibility == second.shadow.visibility);
+}
+
+TEST_CASE("a radiance technique's image is the frame's, scored on its luminance against a radiance reference") {
+    const PreparedScene prepared(smallScene("sphere-box"));
+    // A technique that lights every surface with a constant radiance c.
+    const auto constantRadiance = [](float c) {
+        Technique t{"constant", "a test technique: radiance c on every surface", {},
+                    [c](const ShadowInputs& in) {
+                        ShadowOutputs out;
+                        out.radiance.assign(in.gbuffer.pixelCount(), glm::vec3(0.0f));
+                        for (size_t k = 0; k < out.radiance.size(); ++k)
+                            if (in.gbuffer.hit[k]) out.radiance[k] = glm::vec3(c);
+                        return out;
+                    },
+                    "constant", TechniqueOutput::Radiance};
+        return t;
+    };
+    const Frame reference = renderFrame(prepared, constantRadiance(0.5f));
+    const Frame brighter = renderFrame(prepared, constantRadiance(0.75f));
+    CHECK(reference.radiance == reference.shadow.radiance);   // not shaded again
+    const ImageChannels scored = scoredImage(reference);
+    CHECK(scored.find(channel::V) == nullptr);
+    REQUIRE(scored.find(channel::Y) != nullptr);
+    CHECK(scoreFrame(scored, reference).rms == 0.0);
+    CHECK(scoreFrame(scored, brighter).rms == doctest::Approx(0.25).epsilon(1e-6));   // luminance of (0.25, 0.25, 0.25)
+    // A radiance frame has no V to score against a visibility reference, and the other way round.
+    const Frame shadowMap = renderFrame(prepared, findTechnique("shadow-map"));
+    CHECK_THROWS_AS(scoreFrame(scoredImage(shadowMap), brighter), std::invalid_argument);
+    CHECK_THROWS_AS(scoreFrame(scored, shadowMap), std::invalid_argument);
+    // A radiance technique that returns no image is a bug, not a black frame.
+    Technique broken = constantRadiance(1.0f);
+    broken.run = [](const ShadowInputs&) { return ShadowOutputs{}; };
+    CHECK_THROWS_AS(renderFrame(prepared, broken), std::logic_error);
+}
