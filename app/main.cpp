@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 
 #include "app/bench_passes.h"
@@ -26,6 +28,7 @@
 #include "shading/compare.h"
 #include "shading/image_io.h"
 #include "shading/tonemap.h"
+#include "shadows/progress.h"
 
 using namespace shadowlab;
 
@@ -69,6 +72,12 @@ void requireOutputDirectories(std::initializer_list<const std::string*> paths) {
     }
 }
 
+// The progress line is for a person watching: it goes to stderr (tools read stdout), and
+// only if stderr is a terminal or --progress asks for it.
+Progress* progressIfWanted(Progress& progress, bool asked) {
+    return asked || isatty(fileno(stderr)) ? &progress : nullptr;
+}
+
 // CLI11 answers a mistyped command with "A subcommand is required"; name it instead.
 void requireKnownCommand(const CLI::App& app, int argc, char** argv) {
     if (argc < 2 || argv[1][0] == '-') return;
@@ -86,6 +95,7 @@ struct RenderArgs {
     int threads = 0;
     float exposure = 0.0f;
     SceneOverrides overrides;
+    bool progress = false;
 };
 
 // The technique's frame against the exact reference: the error map, the counts, the JSON.
@@ -93,7 +103,7 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
                    const FrameSettings& settings, const Frame& frame) {
     const Scene& scene = prepared.scene();
     const std::string& referenceName = a.reference.empty() ? technique.referenceName : a.reference;
-    const ImageChannels reference = renderReferenceVisibility(prepared, settings.simd, referenceName);
+    const ImageChannels reference = renderReferenceVisibility(prepared, settings.simd, referenceName, settings.progress);
     const ImageChannels test = visibilityImage(frame);
     const ErrorFigures figures = compareImages(reference, test);
     writePng(a.errorMap, scene.camera.width, scene.camera.height, errorMapImage(reference, test, frame.radiance));
@@ -113,7 +123,8 @@ void runRender(const RenderArgs& a) {
     const PreparedScene prepared(std::move(loaded));
     const Technique& technique = findTechnique(a.technique);
     if (!a.reference.empty()) findTechnique(a.reference);   // a typo fails before rendering
-    FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir};
+    Progress progress(std::cerr);
+    FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir, progressIfWanted(progress, a.progress)};
     for (const std::string& p : a.params) parseParamAssignment(p, settings.params);
     const Frame frame = renderFrame(prepared, technique, settings);
     const Scene& scene = prepared.scene();
@@ -145,9 +156,12 @@ struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
     std::string simd = "auto", outDir = "out", plotY = "misclassified";
+    bool progress = false;
 };
 
 void runSweepCommand(SweepArgs a) {
+    Progress progress(std::cerr);
+    a.options.progress = progressIfWanted(progress, a.progress);
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
     a.options.simd = raster::parseSimdLevel(a.simd);
@@ -163,9 +177,12 @@ struct ScalingArgs {
     ScalingOptions options;
     std::string technique, simd = "auto", outDir = "out";
     std::vector<std::string> params;
+    bool progress = false;
 };
 
 void runScalingCommand(ScalingArgs a) {
+    Progress progress(std::cerr);
+    a.options.progress = progressIfWanted(progress, a.progress);
     a.options.technique = &findTechnique(a.technique);
     for (const std::string& p : a.params) parseParamAssignment(p, a.options.params);
     a.options.simd = raster::parseSimdLevel(a.simd);
@@ -196,9 +213,12 @@ void runCompare(const CompareArgs& a) {
 struct BenchArgs {
     BenchOptions options;
     std::string simd = "auto", json;
+    bool progress = false;
 };
 
 void runBenchCommand(BenchArgs a) {
+    Progress progress(std::cerr);
+    a.options.progress = progressIfWanted(progress, a.progress);
     a.options.simd = raster::parseSimdLevel(a.simd);
     const BenchResults results = runBench(a.options);
     std::cout << formatBenchText(results);
@@ -220,6 +240,13 @@ struct ExportArgs {
 
 void addSimdOption(CLI::App* cmd, std::string& simd) {
     cmd->add_option("--simd", simd, "scalar, avx2, avx512 or auto")->capture_default_str();
+}
+
+// On every command whose work can take long: render (the exact references), sweep,
+// scaling and bench.
+void addProgressFlag(CLI::App* cmd, bool& progress) {
+    cmd->add_flag("--progress", progress,
+                  "draw the progress line on stderr even if it is not a terminal (on a terminal it is drawn anyway, for work over 2 s)");
 }
 
 // --runs, --warmup and --simd of the timing commands (sweep, scaling, bench); `unit` says
@@ -251,6 +278,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
         "also render the exact reference; PNG of false shadow (red) and false light (blue) over the dimmed image");
     r->add_option("--json", a.json, "with --error-map: error figures, technique stats and time as JSON")->needs(errorMap);
     r->add_option("--reference", a.reference, "with --error-map: the technique to score against (default: the one the technique names, reference or reference-soft)")->needs(errorMap);
+    addProgressFlag(r, a.progress);
     r->callback([&a] { withThreads(a.threads, [&a] { runRender(a); }); });
 }
 
@@ -265,6 +293,7 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("--plot-y", a.plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
     addLightOptions(s, a.options.overrides);
     s->add_option("--reference", a.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
+    addProgressFlag(s, a.progress);
     s->callback([&a] { runSweepCommand(a); });
 }
 
@@ -276,6 +305,7 @@ void addScalingCommand(CLI::App& app, ScalingArgs& a) {
     s->add_option("--threads", a.options.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
     addTimingOptions(s, "frames per scene", a.options.runs, a.options.warmupRuns, a.simd);
     s->add_option("--out", a.outDir, "directory for scaling-TECHNIQUE.csv, .json and .svg")->capture_default_str();
+    addProgressFlag(s, a.progress);
     s->callback([&a] { runScalingCommand(a); });
 }
 
@@ -295,6 +325,7 @@ void addBenchCommand(CLI::App& app, BenchArgs& a) {
     b->add_option("--threads", a.options.threads, "thread counts")->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
     addTimingOptions(b, "runs per row", a.options.runs, a.options.warmupRuns, a.simd);
     b->add_option("--json", a.json, "also write the rows as JSON");
+    addProgressFlag(b, a.progress);
     b->callback([&a] { runBenchCommand(a); });
 }
 

@@ -73,7 +73,7 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     Frame frame;
     frame.gbuffer = renderGBuffer(prepared.world(), scene.camera, settings.simd);
     const auto start = std::chrono::steady_clock::now();
-    frame.shadow = technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir});
+    frame.shadow = technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir, settings.progress});
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
     return frame;

@@ -29,9 +29,10 @@ ImageChannels visibilityImage(const Frame& frame) {
 }
 
 ImageChannels renderReferenceVisibility(const PreparedScene& prepared, raster::SimdLevel simd,
-                                        const std::string& referenceName) {
+                                        const std::string& referenceName, Progress* progress) {
     FrameSettings settings;
     settings.simd = simd;
+    settings.progress = progress;
     return visibilityImage(renderFrame(prepared, findTechnique(referenceName), settings));
 }
 

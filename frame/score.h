@@ -20,9 +20,9 @@ namespace shadowlab {
 ImageChannels visibilityImage(const Frame& frame);
 
 // Renders the scene with the technique named referenceName (at its default settings) and
-// returns its visibilityImage().
+// returns its visibilityImage(); the technique reports on `progress` if one is given.
 ImageChannels renderReferenceVisibility(const PreparedScene& prepared, raster::SimdLevel simd,
-                                        const std::string& referenceName = "reference");
+                                        const std::string& referenceName = "reference", Progress* progress = nullptr);
 
 // The frame's V against the reference's (compareImages with the default options).
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame);

@@ -23,7 +23,7 @@ ShadowOutputs unshadowed(const ShadowInputs& in) {
 ShadowOutputs exactReference(const ShadowInputs& in) {
     const ReferenceVisibility reference(in.world());
     ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light));
+    out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light), {.progress = in.progress});
     return out;
 }
 
@@ -32,7 +32,8 @@ ShadowOutputs exactReference(const ShadowInputs& in) {
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
     const ReferenceVisibility reference(in.world());
     ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis", 1, 256)});
+    const int samplesPerAxis = in.params.integer("samples-per-axis", 1, 256);
+    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = samplesPerAxis, .progress = in.progress});
     return out;
 }
 
