@@ -19,13 +19,20 @@
 namespace shadowlab {
 namespace {
 
-Timing timeRuns(const BenchOptions& options, const std::function<void()>& run) {
-    for (int k = 0; k < options.warmupRuns; ++k) run();
+// Three rows per scene and thread count: the light's pass, the camera's pass, the rays.
+constexpr int kRowsPerSceneAndThreads = 3;
+
+Timing timeRuns(const BenchOptions& options, const ProgressStage& runs, const std::function<void()>& run) {
+    for (int k = 0; k < options.warmupRuns; ++k) {
+        run();
+        runs.advance();
+    }
     std::vector<double> ms;
     for (int k = 0; k < options.runs; ++k) {
         const auto start = std::chrono::steady_clock::now();
         run();
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        runs.advance();
     }
     return summarizeTimes(std::move(ms));
 }
@@ -39,13 +46,13 @@ glm::mat4 lightClipFromWorld(const Scene& scene) {
     return glm::perspective(glm::radians(90.0f), 1.0f, 0.5f, 50.0f) * glm::lookAt(light, glm::vec3(0.0f), up);
 }
 
-PassTiming timeDepthPass(const BenchOptions& options, const WorldGeometry& world, const glm::mat4& clipFromWorld,
-                         int width, int height) {
+PassTiming timeDepthPass(const BenchOptions& options, const ProgressStage& runs, const WorldGeometry& world,
+                         const glm::mat4& clipFromWorld, int width, int height) {
     raster::Framebuffer fb(width, height);
     raster::Rasterizer rasterizer(options.simd);
     raster::PipelineState state;   // depth-only, less, back faces culled
     const raster::DrawCall call = raster::positionsDraw(world.positions, world.triangles, clipFromWorld);
-    const Timing t = timeRuns(options, [&] {
+    const Timing t = timeRuns(options, runs, [&] {
         fb.clearDepth(1.0f);
         rasterizer.draw(fb, state, call);
     });
@@ -61,12 +68,13 @@ PassTiming timeDepthPass(const BenchOptions& options, const WorldGeometry& world
     return row;
 }
 
-RayTiming timeReference(const BenchOptions& options, const Scene& scene, const WorldGeometry& world) {
+RayTiming timeReference(const BenchOptions& options, const ProgressStage& runs, const Scene& scene,
+                        const WorldGeometry& world) {
     const GBuffer gbuffer = renderGBuffer(world, scene.camera, options.simd);
     const ReferenceVisibility reference(world);
     const Light light = pointLightFor(scene.lights.at(0));
     uint64_t raysPerRun = 0;
-    const Timing t = timeRuns(options, [&] {
+    const Timing t = timeRuns(options, runs, [&] {
         const uint64_t before = reference.raysCast();
         reference.visibility(gbuffer, light);
         raysPerRun = reference.raysCast() - before;
@@ -78,20 +86,22 @@ RayTiming timeReference(const BenchOptions& options, const Scene& scene, const W
 
 BenchResults runBench(const BenchOptions& options) {
     BenchResults results;
+    const uint64_t rows = options.scenes.size() * options.threads.size() * kRowsPerSceneAndThreads;
+    const ProgressStage runs(options.progress, "bench: run", rows * uint64_t(options.warmupRuns + options.runs));
     for (const std::string& name : options.scenes) {
         const Scene scene = loadScene(name);
         const WorldGeometry world = flatten(scene);
         for (int threads : options.threads) {
             withThreads(threads, [&] {
-                PassTiming light = timeDepthPass(options, world, lightClipFromWorld(scene), 2048, 2048);
+                PassTiming light = timeDepthPass(options, runs, world, lightClipFromWorld(scene), 2048, 2048);
                 light.scene = name, light.pass = "light 2048x2048", light.threads = threads;
                 results.passes.push_back(light);
                 PassTiming camera =
-                    timeDepthPass(options, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
+                    timeDepthPass(options, runs, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
                 camera.scene = name, camera.threads = threads;
                 camera.pass = "camera " + std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height);
                 results.passes.push_back(camera);
-                RayTiming rays = timeReference(options, scene, world);
+                RayTiming rays = timeReference(options, runs, scene, world);
                 rays.threads = threads;
                 results.rays.push_back(rays);
             });

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "raster/rasterizer.h"
+#include "shadows/progress.h"
 
 namespace shadowlab {
 
@@ -38,6 +39,7 @@ struct BenchOptions {
     int warmupRuns = 2;
     int runs = 15;
     raster::SimdLevel simd = raster::bestSimdLevel();
+    Progress* progress = nullptr;   // reports the runs done, warm-up ones included
 };
 
 struct BenchResults {

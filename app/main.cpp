@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 
 #include "app/bench_passes.h"
@@ -26,6 +28,7 @@
 #include "shading/compare.h"
 #include "shading/image_io.h"
 #include "shading/tonemap.h"
+#include "shadows/progress.h"
 
 using namespace shadowlab;
 
@@ -69,6 +72,12 @@ void requireOutputDirectories(std::initializer_list<const std::string*> paths) {
     }
 }
 
+// The progress line is for a person watching: it goes to stderr (tools read stdout), and
+// only if stderr is a terminal or --progress asks for it.
+Progress* progressIfWanted(Progress& progress, bool asked) {
+    return asked || isatty(fileno(stderr)) ? &progress : nullptr;
+}
+
 // CLI11 answers a mistyped command with "A subcommand is required"; name it instead.
 void requireKnownCommand(const CLI::App& app, int argc, char** argv) {
     if (argc < 2 || argv[1][0] == '-') return;
@@ -86,6 +95,7 @@ struct RenderArgs {
     int threads = 0;
     float exposure = 0.0f;
     SceneOverrides overrides;
+    bool progress = false;
 };
 
 // The technique's frame against the exact reference: the error map, the counts, the JSON.
@@ -93,7 +103,7 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
                    const FrameSettings& settings, const Frame& frame) {
     const Scene& scene = prepared.scene();
     const std::string& referenceName = a.reference.empty() ? technique.referenceName : a.reference;
-    const ImageChannels reference = renderReferenceImage(prepared, settings.simd, referenceName);
+    const ImageChannels reference = renderReferenceImage(prepared, settings.simd, referenceName, settings.progress);
     const ImageChannels test = scoredImage(frame);
     const ErrorFigures figures = scoreFrame(reference, frame);
     writePng(a.errorMap, scene.camera.width, scene.camera.height,
@@ -114,7 +124,8 @@ void runRender(const RenderArgs& a) {
     const PreparedScene prepared(std::move(loaded));
     const Technique& technique = findTechnique(a.technique);
     if (!a.reference.empty()) findTechnique(a.reference);   // a typo fails before rendering
-    FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir};
+    Progress progress(std::cerr);
+    FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir, progressIfWanted(progress, a.progress)};
     for (const std::string& p : a.params) parseParamAssignment(p, settings.params);
     const Frame frame = renderFrame(prepared, technique, settings);
     const Scene& scene = prepared.scene();
@@ -146,9 +157,12 @@ struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
     std::string simd = "auto", outDir = "out", plotY = "misclassified";
+    bool progress = false;
 };
 
 void runSweepCommand(SweepArgs a) {
+    Progress progress(std::cerr);
+    a.options.progress = progressIfWanted(progress, a.progress);
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
     a.options.simd = raster::parseSimdLevel(a.simd);
@@ -164,9 +178,12 @@ struct ScalingArgs {
     ScalingOptions options;
     std::string technique, simd = "auto", outDir = "out";
     std::vector<std::string> params;
+    bool progress = false;
 };
 
 void runScalingCommand(ScalingArgs a) {
+    Progress progress(std::cerr);
+    a.options.progress = progressIfWanted(progress, a.progress);
     a.options.technique = &findTechnique(a.technique);
     for (const std::string& p : a.params) parseParamAssignment(p, a.options.params);
     a.options.simd = raster::parseSimdLevel(a.simd);
@@ -194,104 +211,157 @@ void runCompare(const CompareArgs& a) {
     if (!a.json.empty()) writeTextFile(a.json, formatJson(figures));
 }
 
+struct BenchArgs {
+    BenchOptions options;
+    std::string simd = "auto", json;
+    bool progress = false;
+};
+
+void runBenchCommand(BenchArgs a) {
+    Progress progress(std::cerr);
+    a.options.progress = progressIfWanted(progress, a.progress);
+    a.options.simd = raster::parseSimdLevel(a.simd);
+    const BenchResults results = runBench(a.options);
+    std::cout << formatBenchText(results);
+    if (!a.json.empty()) writeTextFile(a.json, formatBenchJson(results));
+}
+
+void printTechniques() {
+    for (const Technique& tech : techniques()) {
+        std::printf("%-16s %s\n", tech.name.c_str(), tech.description.c_str());
+        for (const ParamSpec& p : tech.params)
+            std::printf("    %s=%s  %s\n", p.name.c_str(), p.defaultValue.c_str(), paramHelp(p).c_str());
+    }
+}
+
+struct ExportArgs {
+    std::string scene, path;
+};
+
+// ---- The commands' options ------------------------------------------------------------
+
+void addSimdOption(CLI::App* cmd, std::string& simd) {
+    cmd->add_option("--simd", simd, "scalar, avx2, avx512 or auto")->capture_default_str();
+}
+
+// On every command whose work can take long: render (the exact references), sweep,
+// scaling and bench.
+void addProgressFlag(CLI::App* cmd, bool& progress) {
+    cmd->add_flag("--progress", progress,
+                  "draw the progress line on stderr even if it is not a terminal (on a terminal it is drawn anyway, for work over 2 s)");
+}
+
+// --runs, --warmup and --simd of the timing commands (sweep, scaling, bench); `unit` says
+// what is repeated, e.g. "frames per row". Their --threads differ (a list, or one count).
+void addTimingOptions(CLI::App* cmd, const std::string& unit, int& runs, int& warmupRuns, std::string& simd) {
+    cmd->add_option("--runs", runs, "measured " + unit)->capture_default_str()->check(CLI::Range(1, 10000));
+    cmd->add_option("--warmup", warmupRuns, "warm-up " + unit)->capture_default_str()->check(CLI::Range(0, 1000));
+    addSimdOption(cmd, simd);
+}
+
+void addRenderCommand(CLI::App& app, RenderArgs& a) {
+    CLI::App* r = app.add_subcommand("render", "render a scene with a shadow technique");
+    r->add_option("scene", a.scene, "built-in scene name or scene file (.json)")->required();
+    r->add_option("--technique", a.technique, "shadow technique (see `shadowlab techniques`)")->capture_default_str();
+    r->add_option("-o,--output", a.png, "tone-mapped sRGB PNG to write");
+    r->add_option("--aov", a.aov, "OpenEXR file with R G B, P.*, N.*, hit, V, depth (and stencil)");
+    r->add_option("--width", a.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+    r->add_option("--height", a.overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+    r->add_option("--threads", a.threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+    addSimdOption(r, a.simd);
+    addVec3Option(r, "--eye", a.overrides.eye, "camera position, overriding the scene's");
+    addVec3Option(r, "--target", a.overrides.target, "point the camera looks at");
+    r->add_option("--fovy", a.overrides.fovyDeg, "vertical field of view in degrees");
+    addLightOptions(r, a.overrides);
+    r->add_option("--param", a.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
+    r->add_option("--debug-buffers", a.debugDir, "directory for the technique's intermediate buffers");
+    r->add_option("--exposure", a.exposure, "exposure in stops for the PNG")->capture_default_str();
+    CLI::Option* errorMap = r->add_option("--error-map", a.errorMap,
+        "also render the exact reference; PNG of false shadow (red) and false light (blue) over the dimmed image");
+    r->add_option("--json", a.json, "with --error-map: error figures, technique stats and time as JSON")->needs(errorMap);
+    r->add_option("--reference", a.reference, "with --error-map: the technique to score against (default: the one the technique names, reference or reference-soft)")->needs(errorMap);
+    addProgressFlag(r, a.progress);
+    r->callback([&a] { withThreads(a.threads, [&a] { runRender(a); }); });
+}
+
+void addSweepCommand(CLI::App& app, SweepArgs& a) {
+    CLI::App* s = app.add_subcommand("sweep", "speed against error over a grid of technique settings (CSV, JSON, SVG plot)");
+    s->add_option("scene", a.options.scene, "built-in scene name or scene file (.json)")->required();
+    s->add_option("--technique", a.techniques, "techniques to compare, comma-separated")->delimiter(',')->required();
+    s->add_option("--param", a.params, "one axis: name=v1,v2,... (repeatable; the cross product is run)");
+    s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, 1024));
+    addTimingOptions(s, "frames per row", a.options.runs, a.options.warmupRuns, a.simd);
+    s->add_option("--out", a.outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
+    s->add_option("--plot-y", a.plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
+    addLightOptions(s, a.options.overrides);
+    s->add_option("--reference", a.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
+    addProgressFlag(s, a.progress);
+    s->callback([&a] { runSweepCommand(a); });
+}
+
+void addScalingCommand(CLI::App& app, ScalingArgs& a) {
+    CLI::App* s = app.add_subcommand("scaling", "time against triangle count over a series of scenes, fitted as t = a + b n (CSV, JSON, SVG)");
+    s->add_option("scenes", a.options.scenes, "two or more built-in scene names or scene files (e.g. scenes/scaling/*.json)")->required();
+    s->add_option("--technique", a.technique, "the technique to time")->required();
+    s->add_option("--param", a.params, "technique setting name=value (repeatable)");
+    s->add_option("--threads", a.options.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
+    addTimingOptions(s, "frames per scene", a.options.runs, a.options.warmupRuns, a.simd);
+    s->add_option("--out", a.outDir, "directory for scaling-TECHNIQUE.csv, .json and .svg")->capture_default_str();
+    addProgressFlag(s, a.progress);
+    s->callback([&a] { runScalingCommand(a); });
+}
+
+void addCompareCommand(CLI::App& app, CompareArgs& a) {
+    CLI::App* c = app.add_subcommand("compare", "error figures of a test image against a reference (conventions.md)");
+    c->add_option("reference", a.reference, "reference EXR (its hit channel selects the pixels)")->required()->check(CLI::ExistingFile);
+    c->add_option("test", a.test, "EXR to score")->required()->check(CLI::ExistingFile);
+    c->add_option("--channel", a.channel, "channel to compare")->capture_default_str();
+    c->add_option("--heatmap", a.heatmap, "diff heat-map PNG (default: TEST-diff.png)");
+    c->add_option("--json", a.json, "also write the figures as JSON");
+    c->callback([&a] { runCompare(a); });
+}
+
+void addBenchCommand(CLI::App& app, BenchArgs& a) {
+    CLI::App* b = app.add_subcommand("bench", "time depth-only passes and reference rays on the built-in scenes");
+    b->add_option("--scenes", a.options.scenes, "scenes to measure")->delimiter(',')->capture_default_str();
+    b->add_option("--threads", a.options.threads, "thread counts")->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
+    addTimingOptions(b, "runs per row", a.options.runs, a.options.warmupRuns, a.simd);
+    b->add_option("--json", a.json, "also write the rows as JSON");
+    addProgressFlag(b, a.progress);
+    b->callback([&a] { runBenchCommand(a); });
+}
+
+void addTechniquesCommand(CLI::App& app) {
+    app.add_subcommand("techniques", "list the shadow techniques and their parameters")->callback(printTechniques);
+}
+
+void addExportObjCommand(CLI::App& app, ExportArgs& a) {
+    CLI::App* e = app.add_subcommand("export-obj", "write every triangle of a scene in world space as OBJ");
+    e->add_option("scene", a.scene, "built-in scene name or scene file")->required();
+    e->add_option("out", a.path, "OBJ file to write")->required();
+    e->callback([&a] { writeObj(flatten(loadScene(a.scene)), a.path); });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"shadowlab: a deterministic CPU rasterizer for studying real-time shadows"};
     app.require_subcommand(1);
     app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + std::string(e.what()) + "\n"; });
-
+    // Each command's callback runs its work during parse(), reading these.
     RenderArgs render;
-    CLI::App* r = app.add_subcommand("render", "render a scene with a shadow technique");
-    r->add_option("scene", render.scene, "built-in scene name or scene file (.json)")->required();
-    r->add_option("--technique", render.technique, "shadow technique (see `shadowlab techniques`)")->capture_default_str();
-    r->add_option("-o,--output", render.png, "tone-mapped sRGB PNG to write");
-    r->add_option("--aov", render.aov, "OpenEXR file with R G B, P.*, N.*, hit, V, depth (and stencil)");
-    r->add_option("--width", render.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
-    r->add_option("--height", render.overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
-    r->add_option("--threads", render.threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
-    r->add_option("--simd", render.simd, "scalar, avx2, avx512 or auto")->capture_default_str();
-    addVec3Option(r, "--eye", render.overrides.eye, "camera position, overriding the scene's");
-    addVec3Option(r, "--target", render.overrides.target, "point the camera looks at");
-    r->add_option("--fovy", render.overrides.fovyDeg, "vertical field of view in degrees");
-    addLightOptions(r, render.overrides);
-    r->add_option("--param", render.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
-    r->add_option("--debug-buffers", render.debugDir, "directory for the technique's intermediate buffers");
-    r->add_option("--exposure", render.exposure, "exposure in stops for the PNG")->capture_default_str();
-    CLI::Option* errorMap = r->add_option("--error-map", render.errorMap,
-        "also render the exact reference; PNG of false shadow (red) and false light (blue) over the dimmed image");
-    r->add_option("--json", render.json, "with --error-map: error figures, technique stats and time as JSON")->needs(errorMap);
-    r->add_option("--reference", render.reference, "with --error-map: the technique to score against (default: the one the technique names, reference or reference-soft)")->needs(errorMap);
-    r->callback([&] { withThreads(render.threads, [&] { runRender(render); }); });
-
     SweepArgs sweep;
-    CLI::App* s = app.add_subcommand("sweep", "speed against error over a grid of technique settings (CSV, JSON, SVG plot)");
-    s->add_option("scene", sweep.options.scene, "built-in scene name or scene file (.json)")->required();
-    s->add_option("--technique", sweep.techniques, "techniques to compare, comma-separated")->delimiter(',')->required();
-    s->add_option("--param", sweep.params, "one axis: name=v1,v2,... (repeatable; the cross product is run)");
-    s->add_option("--threads", sweep.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, 1024));
-    s->add_option("--runs", sweep.options.runs, "measured frames per row")->capture_default_str()->check(CLI::Range(1, 10000));
-    s->add_option("--warmup", sweep.options.warmupRuns, "warm-up frames per row")->capture_default_str()->check(CLI::Range(0, 1000));
-    s->add_option("--simd", sweep.simd, "scalar, avx2, avx512 or auto")->capture_default_str();
-    s->add_option("--out", sweep.outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
-    s->add_option("--plot-y", sweep.plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
-    addLightOptions(s, sweep.options.overrides);
-    s->add_option("--reference", sweep.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
-    s->callback([&] { runSweepCommand(sweep); });
-
     ScalingArgs scaling;
-    CLI::App* sc = app.add_subcommand("scaling", "time against triangle count over a series of scenes, fitted as t = a + b n (CSV, JSON, SVG)");
-    sc->add_option("scenes", scaling.options.scenes, "two or more built-in scene names or scene files (e.g. scenes/scaling/*.json)")->required();
-    sc->add_option("--technique", scaling.technique, "the technique to time")->required();
-    sc->add_option("--param", scaling.params, "technique setting name=value (repeatable)");
-    sc->add_option("--threads", scaling.options.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
-    sc->add_option("--runs", scaling.options.runs, "measured frames per scene")->capture_default_str()->check(CLI::Range(1, 10000));
-    sc->add_option("--warmup", scaling.options.warmupRuns, "warm-up frames per scene")->capture_default_str()->check(CLI::Range(0, 1000));
-    sc->add_option("--simd", scaling.simd, "scalar, avx2, avx512 or auto")->capture_default_str();
-    sc->add_option("--out", scaling.outDir, "directory for scaling-TECHNIQUE.csv, .json and .svg")->capture_default_str();
-    sc->callback([&] { runScalingCommand(scaling); });
-
     CompareArgs compare;
-    CLI::App* c = app.add_subcommand("compare", "error figures of a test image against a reference (conventions.md)");
-    c->add_option("reference", compare.reference, "reference EXR (its hit channel selects the pixels)")->required()->check(CLI::ExistingFile);
-    c->add_option("test", compare.test, "EXR to score")->required()->check(CLI::ExistingFile);
-    c->add_option("--channel", compare.channel, "channel to compare")->capture_default_str();
-    c->add_option("--heatmap", compare.heatmap, "diff heat-map PNG (default: TEST-diff.png)");
-    c->add_option("--json", compare.json, "also write the figures as JSON");
-    c->callback([&] { runCompare(compare); });
-
-    BenchOptions bench;
-    std::string benchJson, benchSimd = "auto";
-    CLI::App* b = app.add_subcommand("bench", "time depth-only passes and reference rays on the built-in scenes");
-    b->add_option("--scenes", bench.scenes, "scenes to measure")->delimiter(',')->capture_default_str();
-    b->add_option("--threads", bench.threads, "thread counts")->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
-    b->add_option("--runs", bench.runs, "measured runs per row")->capture_default_str()->check(CLI::Range(1, 10000));
-    b->add_option("--warmup", bench.warmupRuns, "warm-up runs per row")->capture_default_str()->check(CLI::Range(0, 1000));
-    b->add_option("--simd", benchSimd, "scalar, avx2, avx512 or auto")->capture_default_str();
-    b->add_option("--json", benchJson, "also write the rows as JSON");
-    b->callback([&] {
-        bench.simd = raster::parseSimdLevel(benchSimd);
-        const BenchResults results = runBench(bench);
-        std::cout << formatBenchText(results);
-        if (!benchJson.empty()) writeTextFile(benchJson, formatBenchJson(results));
-    });
-
-    CLI::App* t = app.add_subcommand("techniques", "list the shadow techniques and their parameters");
-    t->callback([] {
-        for (const Technique& tech : techniques()) {
-            std::printf("%-16s %s\n", tech.name.c_str(), tech.description.c_str());
-            for (const ParamSpec& p : tech.params) {
-                std::printf("    %s=%s  %s\n", p.name.c_str(), p.defaultValue.c_str(), paramHelp(p).c_str());
-            }
-        }
-    });
-
-    std::string exportScene, exportPath;
-    CLI::App* e = app.add_subcommand("export-obj", "write every triangle of a scene in world space as OBJ");
-    e->add_option("scene", exportScene, "built-in scene name or scene file")->required();
-    e->add_option("out", exportPath, "OBJ file to write")->required();
-    e->callback([&] { writeObj(flatten(loadScene(exportScene)), exportPath); });
-
+    BenchArgs bench;
+    ExportArgs exportObj;
+    addRenderCommand(app, render);
+    addSweepCommand(app, sweep);
+    addScalingCommand(app, scaling);
+    addCompareCommand(app, compare);
+    addBenchCommand(app, bench);
+    addTechniquesCommand(app);
+    addExportObjCommand(app, exportObj);
     try {
         requireKnownCommand(app, argc, argv);
         app.parse(argc, argv);

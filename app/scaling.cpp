@@ -20,6 +20,31 @@ double mean(const std::vector<double>& values) {
     return sum / double(values.size());
 }
 
+using Scenes = std::vector<std::unique_ptr<const PreparedScene>>;
+
+// Every scene loaded and rendered once first: a bad file or setting fails before the long part.
+Scenes loadScenes(const ScalingOptions& options, const FrameSettings& settings) {
+    Scenes scenes;
+    const ProgressStage loaded(options.progress, "scaling: loading scene", options.scenes.size());
+    for (const std::string& name : options.scenes) {
+        scenes.push_back(std::make_unique<const PreparedScene>(loadScene(name)));
+        renderFrame(*scenes.back(), *options.technique, settings);
+        loaded.advance();
+    }
+    return scenes;
+}
+
+// Each scene's median and minimum time, in the order given.
+std::vector<ScalingPoint> measurePoints(const Scenes& scenes, const ScalingOptions& options, const FrameSettings& settings) {
+    const ProgressStage frames(options.progress, "scaling: frame", scenes.size() * uint64_t(options.warmupRuns + options.runs));
+    std::vector<ScalingPoint> points;
+    for (const auto& s : scenes) {
+        const Timing t = timeFrames(*s, *options.technique, settings, options.warmupRuns, options.runs, frames).timing;
+        points.push_back({s->scene().name, uint64_t(s->world().triangles.size()), t.medianMs, t.minMs});
+    }
+    return points;
+}
+
 }  // namespace
 
 LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y) {
@@ -51,23 +76,14 @@ ScalingResults runScaling(const ScalingOptions& options) {
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     return withThreads(threads, [&] {
         const FrameSettings settings{options.simd, options.params, {}};
-        // Every scene loaded and rendered once first: a bad file or setting fails before the long part.
-        std::vector<std::unique_ptr<const PreparedScene>> scenes;
+        const Scenes scenes = loadScenes(options, settings);
         std::vector<double> triangles;
-        for (const std::string& name : options.scenes) {
-            scenes.push_back(std::make_unique<const PreparedScene>(loadScene(name)));
-            renderFrame(*scenes.back(), *options.technique, settings);
-            triangles.push_back(double(scenes.back()->world().triangles.size()));
-        }
+        for (const auto& s : scenes) triangles.push_back(double(s->world().triangles.size()));
         if (std::set<double>(triangles.begin(), triangles.end()).size() < 2)
             throw std::invalid_argument("scaling: the scenes need at least two different triangle counts");
-        ScalingResults results{options.technique->name, threads, {}, {}};
+        ScalingResults results{options.technique->name, threads, measurePoints(scenes, options, settings), {}};
         std::vector<double> ms;
-        for (const auto& s : scenes) {
-            const Timing t = timeFrames(*s, *options.technique, settings, options.warmupRuns, options.runs).timing;
-            results.points.push_back({s->scene().name, uint64_t(s->world().triangles.size()), t.medianMs, t.minMs});
-            ms.push_back(t.medianMs);
-        }
+        for (const ScalingPoint& point : results.points) ms.push_back(point.medianMs);
         results.fit = fitLine(triangles, ms);
         return results;
     });

@@ -38,6 +38,7 @@ struct ScalingOptions {
     int warmupRuns = 1;
     int runs = 5;
     raster::SimdLevel simd = raster::bestSimdLevel();
+    Progress* progress = nullptr;                // reports the scenes loaded and the frames done
 };
 
 struct ScalingPoint {

@@ -78,9 +78,9 @@ const std::string& referenceFor(const Technique& technique, const SweepOptions& 
 }
 
 // Errors and stats come from the last measured frame.
-SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference,
-                 const Technique& technique, const FrameSettings& settings, const SweepOptions& options) {
-    const TimedFrames timed = timeFrames(prepared, technique, settings, options.warmupRuns, options.runs);
+SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference, const Technique& technique,
+                 const FrameSettings& settings, const SweepOptions& options, const ProgressStage& frames) {
+    const TimedFrames timed = timeFrames(prepared, technique, settings, options.warmupRuns, options.runs, frames);
     SweepRow row;
     row.technique = technique.name;
     row.reference = referenceFor(technique, options);
@@ -114,12 +114,29 @@ std::string statValue(const SweepRow& row, const std::string& name) {
     return stat == row.stats.end() ? "" : csvNumber(stat->value);
 }
 
+uint64_t settingCount(const std::vector<SweepPlan>& plans) {
+    uint64_t count = 0;
+    for (const SweepPlan& plan : plans) count += plan.settings.size();
+    return count;
+}
+
+// One frame per setting first: a value the technique rejects fails before the long part.
+void checkSettings(const PreparedScene& prepared, const std::vector<SweepPlan>& plans, const SweepOptions& options) {
+    const ProgressStage checked(options.progress, "sweep: checking setting", settingCount(plans));
+    for (const SweepPlan& plan : plans) {
+        for (const Settings& settings : plan.settings) {
+            renderFrame(prepared, *plan.technique, {options.simd, settings, {}});
+            checked.advance();
+        }
+    }
+}
+
 // Each reference the techniques are scored against, rendered once.
 std::map<std::string, ImageChannels> renderReferences(const PreparedScene& prepared, const std::vector<SweepPlan>& plans, const SweepOptions& options) {
     std::map<std::string, ImageChannels> references;
     for (const SweepPlan& plan : plans) {
         const std::string& name = referenceFor(*plan.technique, options);
-        if (!references.contains(name)) references.emplace(name, renderReferenceImage(prepared, options.simd, name));
+        if (!references.contains(name)) references.emplace(name, renderReferenceImage(prepared, options.simd, name, options.progress));
     }
     return references;
 }
@@ -142,14 +159,18 @@ std::string csvNumber(double value) {
 }
 
 TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
-                       int warmupRuns, int runs) {
+                       int warmupRuns, int runs, const ProgressStage& frames) {
     if (runs < 1) throw std::invalid_argument("the number of measured runs must be >= 1");
-    for (int k = 0; k < warmupRuns; ++k) renderFrame(prepared, technique, settings);
+    for (int k = 0; k < warmupRuns; ++k) {
+        renderFrame(prepared, technique, settings);
+        frames.advance();
+    }
     std::vector<double> ms;
     Frame frame;
     for (int k = 0; k < runs; ++k) {
         frame = renderFrame(prepared, technique, settings);
         ms.push_back(frame.techniqueMs);
+        frames.advance();
     }
     return {summarizeTimes(std::move(ms)), std::move(frame)};
 }
@@ -181,18 +202,18 @@ SweepResults runSweep(const SweepOptions& options) {
     Scene scene = loadScene(options.scene);
     applyOverrides(scene, options.overrides);
     const PreparedScene prepared(std::move(scene));
-    // One frame per setting first: a value the technique rejects fails before the long part.
-    for (const SweepPlan& plan : plans)
-        for (const Settings& settings : plan.settings) renderFrame(prepared, *plan.technique, {options.simd, settings, {}});
+    checkSettings(prepared, plans, options);
     const std::map<std::string, ImageChannels> references = renderReferences(prepared, plans, options);
     SweepResults results{prepared.scene().name, {}, {}};
     for (const SweepPlan& plan : plans) results.techniques.push_back(plan.technique->name);
+    const ProgressStage frames(options.progress, "sweep: frame",
+                               settingCount(plans) * threads.size() * uint64_t(options.warmupRuns + options.runs));
     for (const SweepPlan& plan : plans) {
         for (const Settings& settings : plan.settings) {
             for (int n : threads) {
                 SweepRow row = withThreads(n, [&] {
                     return measure(prepared, references.at(referenceFor(*plan.technique, options)), *plan.technique,
-                                   {options.simd, settings, {}}, options);
+                                   {options.simd, settings, {}}, options, frames);
                 });
                 row.threads = n;
                 results.rows.push_back(std::move(row));

@@ -18,6 +18,7 @@
 #include "app/timing.h"
 #include "raster/rasterizer.h"
 #include "shading/compare.h"
+#include "shadows/progress.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -40,6 +41,7 @@ struct SweepOptions {
     int warmupRuns = 1;
     int runs = 5;
     raster::SimdLevel simd = raster::bestSimdLevel();
+    Progress* progress = nullptr;           // reports the frames done (and the references' rows)
 };
 
 struct SweepRow {
@@ -60,13 +62,14 @@ struct SweepResults {
 };
 
 // The measurement protocol shared with `shadowlab scaling`: warm-up frames, then `runs`
-// measured frames; the median and minimum of Frame::techniqueMs, and the last frame.
+// measured frames; the median and minimum of Frame::techniqueMs, and the last frame. Every
+// frame, warm-up ones included, is counted in `frames`.
 struct TimedFrames {
     Timing timing;
     Frame last;
 };
 TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
-                       int warmupRuns, int runs);
+                       int warmupRuns, int runs, const ProgressStage& frames);
 
 // Checks the technique names and that every axis belongs to one of them, then renders one
 // frame per setting (a value a technique rejects fails there, before any measurement);

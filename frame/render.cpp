@@ -76,7 +76,8 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
 
     const auto start = std::chrono::steady_clock::now();
     frame.shadow = anySurface(frame.gbuffer)
-                       ? technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir})
+                       ? technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir,
+                                       settings.progress})
                        : unlitOutputs(frame.gbuffer);
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (technique.output == TechniqueOutput::Visibility) {

@@ -50,6 +50,7 @@ struct FrameSettings {
     raster::SimdLevel simd = raster::bestSimdLevel();
     std::map<std::string, std::string> params;   // the technique's --param settings
     std::filesystem::path debugDir;              // empty: no intermediate buffers
+    Progress* progress = nullptr;                // passed to the technique (ShadowInputs)
 };
 
 // Throws std::invalid_argument for a parameter the technique does not have, and

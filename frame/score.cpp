@@ -38,9 +38,11 @@ ImageChannels scoredImage(const Frame& frame) {
     return image;
 }
 
-ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName) {
+ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName,
+                                   Progress* progress) {
     FrameSettings settings;
     settings.simd = simd;
+    settings.progress = progress;
     return scoredImage(renderFrame(prepared, findTechnique(referenceName), settings));
 }
 

@@ -25,9 +25,9 @@ const char* scoredChannel(TechniqueOutput output);
 ImageChannels scoredImage(const Frame& frame);
 
 // Renders the scene with the technique named referenceName (at its default settings) and
-// returns its scoredImage().
+// returns its scoredImage(); the technique reports on `progress` if one is given.
 ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd,
-                                   const std::string& referenceName = "reference");
+                                   const std::string& referenceName = "reference", Progress* progress = nullptr);
 
 // The frame's scored channel against the reference's (compareImages with the default
 // options otherwise). Throws std::invalid_argument if the reference lacks that channel

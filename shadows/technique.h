@@ -16,6 +16,7 @@
 #include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shadows/progress.h"
 #include "shadows/technique_params.h"
 
 namespace shadowlab {
@@ -27,6 +28,7 @@ struct ShadowInputs {
     raster::SimdLevel simd;
     const TechniqueParams& params;         // the technique's level-of-detail settings
     std::filesystem::path debugDir;        // empty: write no intermediate buffers
+    Progress* progress = nullptr;          // where a slow technique reports; null: nowhere
 
     const Scene& scene() const { return prepared.scene(); }
     const WorldGeometry& world() const { return prepared.world(); }

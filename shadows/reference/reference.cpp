@@ -194,6 +194,7 @@ std::vector<float> ReferenceVisibility::visibility(const GBuffer& gbuffer, const
     }
     const LightQuery query{light, area ? areaLightFrame(light) : AreaLightFrame{}, options};
     std::vector<float> V(gbuffer.pixelCount(), 0.0f);
+    const ProgressStage progress(options.progress, "reference rays: row", uint64_t(gbuffer.height));
     tbb::parallel_for(tbb::blocked_range<int>(0, gbuffer.height), [&](const tbb::blocked_range<int>& rows) {
         ShadowRays rays(embree_->scene);
         for (int j = rows.begin(); j != rows.end(); ++j) {
@@ -207,6 +208,7 @@ std::vector<float> ReferenceVisibility::visibility(const GBuffer& gbuffer, const
                 const Receiver receiver{P, N, glm::vec3(P + offset * N), offset};
                 V[k] = pixelVisibility(rays, query, receiver, k);
             }
+            progress.advance();
         }
         raysCast_ += rays.count();  // integer sum: the total is the same in any order
     });

@@ -27,12 +27,14 @@
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
 #include "shadows/ray_offset.h"
+#include "shadows/progress.h"
 
 namespace shadowlab {
 
 struct ReferenceOptions {
     int areaSamplesPerAxis = 32;       // area lights: n x n strata, one sample each
     uint64_t seed = 0x5eed5eed5eedull;  // jitter; pixel k uses PCG32 stream k
+    Progress* progress = nullptr;       // counts the rows done; null: reports nothing
 };
 
 class ReferenceVisibility {

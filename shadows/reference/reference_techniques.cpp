@@ -15,7 +15,7 @@ ShadowOutputs unshadowed(const ShadowInputs& in) {
 ShadowOutputs exactReference(const ShadowInputs& in) {
     const ReferenceVisibility reference(in.world());
     ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light));
+    out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light), {.progress = in.progress});
     return out;
 }
 
@@ -24,7 +24,8 @@ ShadowOutputs exactReference(const ShadowInputs& in) {
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
     const ReferenceVisibility reference(in.world());
     ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis")});
+    const int samplesPerAxis = in.params.integer("samples-per-axis");
+    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = samplesPerAxis, .progress = in.progress});
     return out;
 }
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end tests of the shadowlab command line (app/main.cpp): every command's help,
-# one-line errors for bad input, and output files written whole or not at all.
+# one-line errors for bad input, output files written whole or not at all, and the
+# progress line on stderr only.
 # Usage: cli_test.sh PATH/TO/shadowlab SCRATCH_DIR
 set -u
 
@@ -134,6 +135,33 @@ expect_error "compare --json into a missing directory" compare "$scratch/ok.exr"
 expect_no_file "$scratch/h.png"
 leftovers=$(find "$scratch" -maxdepth 1 -name '.*.tmp.*' | wc -l)
 if [ "$leftovers" -eq 0 ]; then pass; else fail "$leftovers temporary file(s) left in $scratch"; fi
+
+# ---- Progress ------------------------------------------------------------------------------
+# The soft reference at this size takes about 3 s on one thread, past the 2 s after which
+# the progress line is drawn: on stderr, only if it is a terminal (not here) or --progress
+# asks for it, and never on stdout or in the image.
+slow=(render sphere-box --technique reference-soft --threads 1 --width 384 --height 240)
+run "${slow[@]}" -o "$scratch/quiet.png"
+if [ "$rc" -eq 0 ] && [ ! -s "$err" ]; then pass; else fail "without a terminal or --progress, rc $rc, stderr: $(head -c 300 "$err")"; fi
+sed -E 's/[0-9.]+ ms/N ms/' "$out" >"$scratch/quiet.txt"
+start_ns=$(date +%s%N)
+run "${slow[@]}" -o "$scratch/progress.png" --progress
+elapsed_ms=$((($(date +%s%N) - start_ns) / 1000000))
+if [ "$rc" -eq 0 ]; then pass; else fail "render --progress exited $rc: $(head -c 300 "$err")"; fi
+if sed -E 's/[0-9.]+ ms/N ms/' "$out" | cmp -s - "$scratch/quiet.txt"; then pass; else fail "--progress changed stdout: $(cat "$out")"; fi
+if cmp -s "$scratch/quiet.png" "$scratch/progress.png"; then pass; else fail "--progress changed the image"; fi
+# Every redraw, split at '\r', is a progress line; the last is complete and ends the line.
+if tr '\r' '\n' <"$err" | grep -v -e '^$' -e '^reference rays: row [0-9]*/240 ' -q; then
+    fail "stderr holds more than progress lines: $(head -c 300 "$err" | tr '\r' '|')"
+elif [ "$elapsed_ms" -lt 2500 ]; then
+    echo "note: the slow render took only $elapsed_ms ms, too little to be sure of a progress line"
+elif [ "$(tail -c 1 "$err" | od -An -c | tr -d ' ')" != '\n' ]; then
+    fail "the progress line does not end with a newline: $(tail -c 200 "$err" | tr '\r' '|')"
+elif ! tr '\r' '\n' <"$err" | grep -Eq '^reference rays: row 240/240 \(100%\), [0-9]+:[0-9]{2} elapsed *$'; then
+    fail "no final progress line: $(tail -c 200 "$err" | tr '\r' '|')"
+else
+    pass
+fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

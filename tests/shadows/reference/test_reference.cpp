@@ -7,13 +7,16 @@
 //      visible fraction is the area of the light on one side of a line, a circular
 //      segment for the disk; the stratified estimate must be within a bound derived from
 //      the strata the line crosses;
-//  and the result must be the same bytes for 1 and 2 threads.
+//  and the result must be the same bytes for 1 and 2 threads, and with progress reported.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <sstream>
 
 #include "raster/thread_count.h"
 #include "shading/light_sampling.h"
@@ -339,4 +342,22 @@ TEST_CASE("the reference gives the same bytes for 1 and 2 threads") {
     REQUIRE(one.size() == two.size());
     CHECK(std::memcmp(one.data(), two.data(), one.size() * sizeof(float)) == 0);
     CHECK(std::count_if(one.begin(), one.end(), [](float v) { return v > 0.0f && v < 1.0f; }) > 50);
+}
+
+TEST_CASE("reporting progress counts every row and does not change V") {
+    const SquareScene scene({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
+    const ReferenceVisibility reference(scene.world);
+    const GBuffer g = planeGrid(scene.receiver, 32, 2.0);
+    Light disk = diskLight();
+    disk.position = {0.3f, 3.0f, 0.2f};
+    disk.radius = 0.4f;
+    // A clock that moves a second per reading, so that the line is drawn at once.
+    std::atomic<int> seconds{0};
+    std::ostringstream out;
+    Progress progress(out, [&] { return Progress::Clock::time_point(std::chrono::seconds(seconds++)); });
+    const std::vector<float> reported = withThreads(2, [&] { return reference.visibility(g, disk, {.progress = &progress}); });
+    CHECK(reported == reference.visibility(g, disk));
+    const std::string text = out.str();
+    CHECK(text.find("\rreference rays: row 32/32 (100%), ") != std::string::npos);
+    CHECK(text.back() == '\n');
 }
