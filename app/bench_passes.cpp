@@ -38,7 +38,7 @@ Timing timeRuns(const BenchOptions& options, const ProgressStage& runs, const st
 }
 
 // The point light's view of the scene: perspective towards the origin, fovy 90 degrees,
-// near 0.5, far 50 (the fixed protocol).
+// near 0.5, far 50: one fixed protocol, so rows compare across scenes and runs.
 glm::mat4 lightClipFromWorld(const Scene& scene) {
     const glm::vec3 light = scene.lights.at(0).position;
     const glm::vec3 toOrigin = glm::normalize(-light);

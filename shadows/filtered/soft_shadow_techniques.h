@@ -1,4 +1,4 @@
-// The soft-shadow family for area lights (issue 4): `pcss` (percentage-closer soft
+// The soft-shadow family for area lights: `pcss` (percentage-closer soft
 // shadows), the filtered maps `vsm`, `esm`, `evsm`, `msm` (one mechanism, four moment
 // kinds; box or Gaussian blur or a summed-area table; fixed or PCSS width) and
 // `multi-sample` (the average of hard shadow maps from points on the light). See

@@ -14,9 +14,8 @@
 // section 5 clips the scene's triangles at the layer planes. Done that way here, an object
 // that a layer plane cuts leaves a piece in a layer without its silhouette: the piece's hard
 // shadow has no fins, and the minimum of section 4.2 turns the inner penumbra that the
-// object's fins make into umbra (measured on sphere-box at 640 x 400 with 16 layers: V = 0
-// across the whole inner penumbra of the sphere's shadow, RMS 0.030 against the exact soft
-// reference, 0.017 with one layer). So each instance goes whole, with all its fins, into one
+// object's fins make into umbra (docs/shadow-fins.md has the figures: the sphere's whole
+// inner penumbra goes dark). So each instance goes whole, with all its fins, into one
 // layer: the layer of the median midpoint of its silhouette edges. Objects at different
 // depths still get different layers, which is what the multi-layer algorithm is for
 // (Figure 2: several objects along one beam of light).

@@ -11,8 +11,8 @@
 namespace shadowlab {
 namespace {
 
-// Mean non-empty list length chooseResolution() aims at: about one to four receivers per
-// list (issue 3), two in the middle of that range on the ground of the built-in scenes.
+// Mean non-empty list length chooseResolution() aims at: one to four receivers per list
+// keep both the lists and the grid small; two is the middle of that range.
 constexpr double kTargetListLength = 2.0;
 
 // Length figures over the texels' lists: longest, mean and 99th percentile (nearest rank) of

@@ -85,7 +85,7 @@ std::vector<LightView> fitViews(const Light& light, const GBuffer& gbuffer, cons
 // Refines R twice by R' = R sqrt(mean(R) / target): if the occupied area stayed the same,
 // the mean non-empty list length would scale as 1 / R^2 and hit the target exactly. It
 // shrinks as R grows (the receivers' footprint has holes at fine scales), hence the second
-// step. Measured lengths are in the report of issue 3.
+// step. docs/hard-shadows.md gives the lengths it reaches.
 int chooseResolution(const std::vector<LightView>& views, const Receivers& receivers, double target) {
     int resolution = 256;
     for (int step = 0; step < 2; ++step) {

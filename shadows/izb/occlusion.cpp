@@ -19,7 +19,7 @@
 //    are exact or nearly so, and each volume carries a relative error of a few 2^-53, far
 //    below the float rounding the reference's Embree rays carry (about 2^-24). The two
 //    disagree only where the segment passes within ~1e-7 of its length from an occluder's
-//    edge, the ties the 0.01% bound of issue 3 allows for.
+//    edge: ties, which the exact techniques' tests allow right at a shadow boundary.
 #include "shadows/izb/izb.h"
 
 namespace shadowlab::izb {

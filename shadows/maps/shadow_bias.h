@@ -19,8 +19,8 @@
 // The default is slope-scaled with factor 1.5 and 4 units: a nearest lookup lands at most
 // half a texel from the texel centre in x and y, where a planar occluder's depth differs
 // by at most max|dz/dx, dz/dy| (factor 1); the extra half texel covers snapping and
-// the concave creases of meshes finer than the map. Measured on sphere-box and bunny it
-// has the least acne and leaks of the four together (docs/shadow-maps.md).
+// the concave creases of meshes finer than the map. On sphere-box and bunny it has the
+// least acne and leaks of the four together (docs/shadow-maps.md gives the figures).
 #pragma once
 
 #include <glm/glm.hpp>

@@ -1,7 +1,7 @@
 // Debug buffers (`render --debug-buffers DIR`, shadows/debug_buffers.h). Every technique
 // writes its intermediate buffers as DIR/<technique>-<name>.exr (channel Y) and .png,
 // readable, finite, of the camera's size or a light-space size, and showing them does not
-// change V. The views the issue asks for show what the technique computed:
+// change V. The views show what the technique computed:
 // shadow-volume's stencil and fill, izb's list lengths, shadow-map's texel density and
 // csm's cascade colouring, each checked against the technique's own outputs and stats.
 #include <doctest/doctest.h>

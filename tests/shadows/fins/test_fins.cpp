@@ -416,7 +416,7 @@ TEST_CASE("fins: multi-layer fins over-estimate the umbra less than smoothies an
                    << fins.lightInUmbra << ", " << smoothies.lightInUmbra << ", " << penumbra.lightInUmbra
                    << "; RMS " << fins.rms << ", " << smoothies.rms << ", " << penumbra.rms);
         CHECK(fins.umbraOverestimate < smoothies.umbraOverestimate);
-        // The issue's umbra error, both ways (compare.h, umbraErrors()).
+        // The umbra error both ways: over-estimated and lit (compare.h, umbraErrors()).
         CHECK(fins.umbraOverestimate + fins.lightInUmbra < smoothies.umbraOverestimate + smoothies.lightInUmbra);
         CHECK(fins.umbraOverestimate < penumbra.umbraOverestimate);
         CHECK(fins.rms < smoothies.rms);

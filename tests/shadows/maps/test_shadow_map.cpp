@@ -11,7 +11,7 @@ using namespace shadowlab;
 using namespace shadowlab::test;
 
 TEST_CASE("shadow-map, defaults, sphere-box: acne below 0.05% of lit pixels, leaks only at the boundary") {
-    const Scene scene = loadScene("sphere-box");   // full 1280x800, as the issue states the bound
+    const Scene scene = loadScene("sphere-box");   // full 1280x800: the bound is for the full view
     const PreparedScene prepared(scene);
     const Frame reference = frameOf(prepared, "reference");
     const Frame map = frameOf(prepared, "shadow-map");

@@ -1,7 +1,7 @@
 // shadow-volume (shadows/volumes/shadow_volume.cpp): silhouettes on a cube from known light
-// positions, the bound on the built-in scenes (at most 0.01% of pixels
-// misclassified against the exact reference, each within one pixel of a reference shadow
-// boundary), z-pass against z-fail, and the same bytes for 1 and 2 threads and every
+// positions, the exact techniques' bound on the built-in scenes (test::kExactBoundPercent:
+// at most 0.01% of pixels misclassified against the exact reference, each within one pixel
+// of a reference shadow boundary), z-pass against z-fail, and the same bytes for 1 and 2 threads and every
 // SIMD level.
 #include <doctest/doctest.h>
 

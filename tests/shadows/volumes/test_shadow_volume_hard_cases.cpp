@@ -1,5 +1,6 @@
 // shadow-volume on the hard cases of scenes/hard/ (docs/hard-cases.md): each case either
-// meets the bound (0.01% misclassified, each next to a reference shadow boundary)
+// meets the exact techniques' bound (0.01% misclassified, each next to a reference shadow
+// boundary; test::requireBound)
 // or has its failure mode asserted here, with the reason.
 #include <doctest/doctest.h>
 
