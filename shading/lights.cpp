@@ -32,13 +32,6 @@ glm::dvec3 intensityTowards(const Light& light, const glm::dvec3& fromLight) {
 
 }  // namespace
 
-bool lightReaches(const Light& light, const glm::vec3& P, const glm::vec3& N) {
-    const glm::dvec3 towardsLight = light.type == LightType::Directional ? glm::dvec3(light.direction)
-                                                                          : glm::dvec3(light.position) - glm::dvec3(P);
-    if (!(glm::dot(glm::dvec3(N), towardsLight) > 0.0)) return false;
-    return light.type != LightType::Spot || insideSpotCone(light, P);
-}
-
 bool insideSpotCone(const Light& light, const glm::vec3& point) {
     const glm::dvec3 axis(light.direction);
     const glm::dvec3 fromLight = glm::dvec3(point) - glm::dvec3(light.position);

@@ -35,8 +35,14 @@ bool insideSpotCone(const Light& light, const glm::vec3& point);
 // occlusion: P is in front of the light, dot(N, L - P) > 0 with L the light's position (an
 // area light's centre) or, for a directional light, dot(N, direction) > 0; and a spot's P
 // lies inside its cone. Where this is false V = 0 (conventions.md, the V channel), so every
-// technique and the reference decide it alike. Evaluated in double.
-bool lightReaches(const Light& light, const glm::vec3& P, const glm::vec3& N);
+// technique and the reference decide it alike. Evaluated in double; inline, since every
+// receiver pass asks it per pixel.
+inline bool lightReaches(const Light& light, const glm::vec3& P, const glm::vec3& N) {
+    const glm::dvec3 towardsLight = light.type == LightType::Directional ? glm::dvec3(light.direction)
+                                                                          : glm::dvec3(light.position) - glm::dvec3(P);
+    if (!(glm::dot(glm::dvec3(N), towardsLight) > 0.0)) return false;
+    return light.type != LightType::Spot || insideSpotCone(light, P);
+}
 
 // Unit normal of the emitting side: disk: its direction; rectangle: the right-handed
 // normalize(cross(halfEdgeU, halfEdgeV)), i.e. the side from which U turns

@@ -3,9 +3,9 @@
 // Stenciled Shadow Volumes"; RTR 4th ed., section 7.3). Per frame:
 //
 //   1. edge adjacency per mesh (scenes/edge_adjacency.h; built once per prepared scene,
-//      as an engine builds it at load time, scenes/prepared_scene.h), silhouette edges per instance w.r.t.
-//      the light (silhouette.h), sides extruded to infinity with w = 0 and, for z-fail,
-//      light and dark caps (volume_extrusion.h);
+//      as an engine builds it at load time), silhouette edges per instance w.r.t. the
+//      light (silhouette.h), sides extruded to infinity with w = 0 and, for z-fail, light
+//      and dark caps (volume_extrusion.h);
 //   2. z-pass or z-fail: param mode, or `auto`, which takes z-fail exactly when a volume
 //      may reach the near-plane rectangle (counting_mode.h);
 //   3. a depth prepass of the scene with the camera's infinite-far projection
@@ -159,19 +159,19 @@ ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light,
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
     out.stencil.resize(g.pixelCount());
+    double shadowed = 0;
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         out.stencil[k] = float(int8_t(stencil[k]));   // wrapped count read as signed
         const bool lit = g.hit[k] && stencil[k] == 0 && lightReaches(light, g.position[k], g.normal[k]);
         out.visibility[k] = lit ? 1.0f : 0.0f;
+        shadowed += g.hit[k] && !lit;
     }
+    out.stats.push_back({"shadowed_pixels", shadowed});
     return out;
 }
 
 void addVolumeStats(const ShadowInputs& in, const CountingChoice& choice, const ShadowVolume& volume,
                     const raster::RasterStats& fill, ShadowOutputs& out) {
-    const GBuffer& g = in.gbuffer;
-    double shadowed = 0;
-    for (size_t k = 0; k < g.pixelCount(); ++k) shadowed += g.hit[k] && out.visibility[k] == 0.0f;
     uint32_t openMeshes = 0, openEdges = 0, nonManifoldEdges = 0;
     for (const MeshInstance& instance : in.scene().instances) {
         const EdgeAdjacency& a = in.prepared.edgeAdjacency()[instance.mesh];
@@ -190,8 +190,7 @@ void addVolumeStats(const ShadowInputs& in, const CountingChoice& choice, const 
         {"volume_dark_cap_triangles", double(volume.darkCapCount)},
         {"volume_set_up_triangles", double(fill.trianglesSetUp)},
         {"fill_fragments", fragments},
-        {"fill_fragments_per_pixel", fragments / double(g.pixelCount())},
-        {"shadowed_pixels", shadowed},
+        {"fill_fragments_per_pixel", fragments / double(in.gbuffer.pixelCount())},
     });
 }
 

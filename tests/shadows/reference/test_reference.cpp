@@ -256,6 +256,14 @@ Light diskLight() {
     return disk;
 }
 
+// A disk light over the square's receiver grid: a penumbra over many of its pixels.
+Light diskOverSquare() {
+    Light disk = diskLight();
+    disk.position = {0.3f, 3.0f, 0.2f};
+    disk.radius = 0.4f;
+    return disk;
+}
+
 }  // namespace
 
 TEST_CASE("point light over a square occluder: V is the projected square, exactly") {
@@ -332,9 +340,7 @@ TEST_CASE("the reference gives the same bytes for 1 and 2 threads") {
     const SquareScene scene({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
     const ReferenceVisibility reference(scene.world);
     const GBuffer g = planeGrid(scene.receiver, 32, 2.0);
-    Light disk = diskLight();
-    disk.position = {0.3f, 3.0f, 0.2f};
-    disk.radius = 0.4f;
+    const Light disk = diskOverSquare();
     auto run = [&](int threads) {
         return withThreads(threads, [&] { return reference.visibility(g, disk); });  // default 32 x 32 samples
     };
@@ -348,9 +354,7 @@ TEST_CASE("reporting progress counts every row and does not change V") {
     const SquareScene scene({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
     const ReferenceVisibility reference(scene.world);
     const GBuffer g = planeGrid(scene.receiver, 32, 2.0);
-    Light disk = diskLight();
-    disk.position = {0.3f, 3.0f, 0.2f};
-    disk.radius = 0.4f;
+    const Light disk = diskOverSquare();
     // A clock that moves a second per reading, so that the line is drawn at once.
     std::atomic<int> seconds{0};
     std::ostringstream out;
