@@ -8,8 +8,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "frame/render.h"
 #include "app/timing.h"
+#include "frame/render.h"
 #include "raster/rasterizer.h"
 #include "raster/thread_count.h"
 #include "scenes/camera.h"

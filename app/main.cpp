@@ -16,12 +16,12 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_passes.h"
-#include "frame/render.h"
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
-#include "frame/score.h"
 #include "app/sweep.h"
 #include "app/sweep_plot.h"
+#include "frame/render.h"
+#include "frame/score.h"
 #include "raster/thread_count.h"
 #include "scenes/obj_writer.h"
 #include "scenes/scene_file.h"

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "frame/render.h"
 #include "app/timing.h"
+#include "frame/render.h"
 #include "raster/rasterizer.h"
 #include "shading/compare.h"
 #include "shadows/progress.h"

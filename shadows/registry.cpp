@@ -2,13 +2,13 @@
 // them. The one core file that includes the families (docs/architecture.md).
 #include <stdexcept>
 
-#include "shadows/technique.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/fins/fins.h"
 #include "shadows/izb/izb.h"
 #include "shadows/maps/shadow_map_techniques.h"
 #include "shadows/planar/planar.h"
 #include "shadows/reference/reference_techniques.h"
+#include "shadows/technique.h"
 #include "shadows/volumes/shadow_volume.h"
 
 namespace shadowlab {

@@ -18,8 +18,8 @@
 
 #include <glm/glm.hpp>
 
-#include "shadows/maps/shadow_bias.h"
 #include "shadows/filtered/soft_shadow_map.h"
+#include "shadows/maps/shadow_bias.h"
 #include "shadows/technique_params.h"
 
 namespace shadowlab {

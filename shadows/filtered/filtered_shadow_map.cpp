@@ -21,12 +21,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "shadows/filtered/blocker_search.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/moment_filter.h"
+#include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_map_debug.h"
-#include "shadows/filtered/soft_shadow_techniques.h"
 
 namespace shadowlab {
 namespace {

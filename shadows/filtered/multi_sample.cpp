@@ -20,14 +20,14 @@
 #include <string>
 
 
+#include "shading/light_sampling.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
-#include "shading/light_sampling.h"
+#include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/light_view.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
 #include "shadows/maps/shadow_map_debug.h"
-#include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/receiver_pass.h"
 
 namespace shadowlab {

@@ -7,11 +7,11 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "shadows/filtered/blocker_search.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/filtered/blocker_search.h"
+#include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_map_debug.h"
-#include "shadows/filtered/soft_shadow_techniques.h"
 
 namespace shadowlab {
 namespace {

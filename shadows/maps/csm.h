@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "raster/tile_kernels.h"
-#include "shadows/maps/cascades.h"
 #include "shadows/depth_map.h"
+#include "shadows/maps/cascades.h"
 #include "shadows/maps/shadow_lookup.h"
 
 namespace shadowlab {

@@ -19,8 +19,8 @@
 #include <tbb/parallel_for.h>
 
 #include "shading/gbuffer_build.h"
-#include "shading/lights.h"
 #include "shading/light_sampling.h"
+#include "shading/lights.h"
 
 namespace shadowlab {
 

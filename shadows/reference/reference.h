@@ -26,8 +26,8 @@
 
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
-#include "shadows/ray_offset.h"
 #include "shadows/progress.h"
+#include "shadows/ray_offset.h"
 
 namespace shadowlab {
 

@@ -23,8 +23,8 @@
 
 #include <glm/glm.hpp>
 
-#include "scenes/scene.h"
 #include "scenes/edge_adjacency.h"
+#include "scenes/scene.h"
 
 namespace shadowlab {
 

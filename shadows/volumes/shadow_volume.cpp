@@ -51,14 +51,14 @@
 #include <vector>
 
 #include "raster/rasterizer.h"
-#include "shading/lights.h"
-#include "shadows/volumes/counting_mode.h"
-#include "shadows/debug_buffers.h"
-#include "shadows/stage_timer.h"
 #include "scenes/edge_adjacency.h"
-#include "shadows/volumes/infinite_projection.h"
+#include "shading/lights.h"
+#include "shadows/debug_buffers.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/silhouettes/silhouette_image.h"
+#include "shadows/stage_timer.h"
+#include "shadows/volumes/counting_mode.h"
+#include "shadows/volumes/infinite_projection.h"
 #include "shadows/volumes/volume_extrusion.h"
 
 namespace shadowlab {

@@ -20,8 +20,8 @@
 
 #include <glm/glm.hpp>
 
-#include "scenes/scene.h"
 #include "scenes/edge_adjacency.h"
+#include "scenes/scene.h"
 #include "shadows/silhouettes/silhouette.h"
 
 namespace shadowlab {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "frame/score.h"
 #include "app/sweep.h"
+#include "frame/score.h"
 #include "scenes/scene_file.h"
 #include "shadows/reference/reference.h"
 

@@ -9,8 +9,8 @@
 #include <doctest/doctest.h>
 #include <glm/glm.hpp>
 
-#include "tests/scenes/scene_test_files.h"
 #include "scenes/scene_file.h"
+#include "tests/scenes/scene_test_files.h"
 
 using namespace shadowlab;
 

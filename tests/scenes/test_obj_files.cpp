@@ -5,10 +5,10 @@
 #include <doctest/doctest.h>
 #include <tiny_obj_loader.h>
 
-#include "tests/scenes/scene_test_files.h"
 #include "scenes/obj_reader.h"
 #include "scenes/obj_writer.h"
 #include "scenes/scene_file.h"
+#include "tests/scenes/scene_test_files.h"
 
 using namespace shadowlab;
 

@@ -5,8 +5,8 @@
 
 #include <doctest/doctest.h>
 
-#include "tests/scenes/scene_test_files.h"
 #include "scenes/ply_reader.h"
+#include "tests/scenes/scene_test_files.h"
 
 using namespace shadowlab;
 

@@ -7,8 +7,8 @@
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/scenes/scene_test_files.h"
 #include "scenes/scene_file.h"
+#include "tests/scenes/scene_test_files.h"
 
 using namespace shadowlab;
 using nlohmann::json;

@@ -10,8 +10,8 @@
 
 #include <stb/stb_image.h>
 
-#include "tests/scratch_directory.h"
 #include "shading/image_io.h"
+#include "tests/scratch_directory.h"
 
 using namespace shadowlab;
 namespace fs = std::filesystem;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "shading/lights.h"
 #include "shading/light_sampling.h"
+#include "shading/lights.h"
 
 using namespace shadowlab;
 

@@ -18,12 +18,12 @@
 
 #include <stb/stb_image.h>
 
-#include "tests/scratch_directory.h"
 #include "shading/image_io.h"
-#include "tests/shadows/maps/shadow_map_test_util.h"
-#include "tests/shadows/shadow_test_support.h"
 #include "shadows/maps/cascades.h"
 #include "shadows/maps/shadow_lookup.h"
+#include "tests/scratch_directory.h"
+#include "tests/shadows/maps/shadow_map_test_util.h"
+#include "tests/shadows/shadow_test_support.h"
 #include "tests/shadows/soft_test_support.h"
 
 using namespace shadowlab;

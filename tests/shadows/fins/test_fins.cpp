@@ -20,9 +20,9 @@
 
 #include "frame/render.h"
 #include "raster/thread_count.h"
+#include "scenes/edge_adjacency.h"
 #include "scenes/procedural.h"
 #include "scenes/scene_file.h"
-#include "scenes/edge_adjacency.h"
 #include "shadows/fins/fin_geometry.h"
 #include "shadows/fins/fin_layers.h"
 #include "shadows/light_view.h"

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "tests/shadows/maps/shadow_map_test_util.h"
 #include "shadows/maps/csm.h"
 #include "shadows/maps/shadow_map_settings.h"
+#include "tests/shadows/maps/shadow_map_test_util.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;

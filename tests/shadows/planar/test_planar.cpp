@@ -8,8 +8,8 @@
 
 #include "raster/thread_count.h"
 #include "shading/image_io.h"
-#include "tests/shadows/shadow_test_support.h"
 #include "shadows/planar/planar.h"
+#include "tests/shadows/shadow_test_support.h"
 
 using namespace shadowlab;
 

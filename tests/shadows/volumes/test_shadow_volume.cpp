@@ -8,11 +8,11 @@
 #include <algorithm>
 
 #include "raster/thread_count.h"
-#include "scenes/procedural.h"
-#include "tests/shadows/shadow_test_support.h"
-#include "shadows/volumes/counting_mode.h"
 #include "scenes/edge_adjacency.h"
+#include "scenes/procedural.h"
 #include "shadows/silhouettes/silhouette.h"
+#include "shadows/volumes/counting_mode.h"
+#include "tests/shadows/shadow_test_support.h"
 
 using namespace shadowlab;
 
