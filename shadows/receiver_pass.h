@@ -1,5 +1,6 @@
 // The receiver pass every map-based technique makes over the camera's G-buffer: a call per
-// pixel that sees a surface, rows in parallel. Each call writes only its own pixel's
+// pixel that sees a surface, rows in parallel; the call decides whether light can reach it
+// (lightReaches(), shading/lights.h, or the facing test of one light sample). Each call writes only its own pixel's
 // outputs, so the result is the same bytes for any thread count. The per-pixel work is a
 // template argument, compiled in: no call through a pointer per pixel.
 #pragma once
@@ -20,15 +21,6 @@ void forEachSurfacePixel(const GBuffer& g, PerPixel&& perPixel) {
             const size_t k = g.index(i, j);
             if (g.hit[k]) perPixel(i, j, k);
         }
-    });
-}
-
-// perPixel(i, j, k) for every surface pixel that light can reach, reaches(k) (for example
-// lightReaches(), shading/lights.h); the others keep V = 0 (conventions.md, the V channel).
-template <class Reaches, class PerPixel>
-void forEachReachedPixel(const GBuffer& g, Reaches&& reaches, PerPixel&& perPixel) {
-    forEachSurfacePixel(g, [&](int i, int j, size_t k) {
-        if (reaches(k)) perPixel(i, j, k);
     });
 }
 

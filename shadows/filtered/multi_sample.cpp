@@ -43,11 +43,9 @@ constexpr double kFitMarginTexels = 1.5;
 void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const glm::dvec3& position, std::vector<uint16_t>& lit) {
     const PcfKernel nearest = makePcfKernel({FilterKind::Nearest});
     const BiasSettings bias;   // slope-scaled: the offset is in the map, the receiver stays put
-    const auto inFront = [&](size_t k) {
-        return glm::dot(glm::dvec3(g.normal[k]), position - glm::dvec3(g.position[k])) > 0.0;
-    };
-    forEachReachedPixel(g, inFront, [&](int, int, size_t k) {
+    forEachSurfacePixel(g, [&](int, int, size_t k) {
         const glm::dvec3 P(g.position[k]), N(g.normal[k]);
+        if (!(glm::dot(N, position - P) > 0.0)) return;   // the light point is behind the surface
         const MapReceiver r = mapReceiver(map, P, N, glm::normalize(position - P), bias);
         lit[k] = uint16_t(lit[k] + (filteredVisibility(map, r, nearest, k) > 0.5 ? 1 : 0));
     });
