@@ -1,8 +1,9 @@
 // The receiver pass every map-based technique makes over the camera's G-buffer: a call per
-// pixel that sees a surface, rows in parallel; the call decides whether light can reach it
-// (lightReaches(), shading/lights.h, or the facing test of one light sample). Each call writes only its own pixel's
-// outputs, so the result is the same bytes for any thread count. The per-pixel work is a
-// template argument, compiled in: no call through a pointer per pixel.
+// pixel that sees a surface, rows in parallel; the call decides whether light can reach
+// it (lightReaches(), shading/lights.h, or the facing test of one light sample). Each call
+// writes only its own pixel's outputs, so the result is the same bytes for any thread
+// count. The per-pixel work is a template argument, compiled in: no call through a
+// pointer per pixel.
 #pragma once
 
 #include <cstddef>
