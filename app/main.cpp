@@ -131,6 +131,7 @@ void runRender(const RenderArgs& a) {
     const Scene& scene = prepared.scene();
     std::printf("%s: %s in %.2f ms\n", scene.name.c_str(), technique.name.c_str(), frame.techniqueMs);
     for (const TechniqueStat& s : frame.shadow.stats) std::printf("  %-28s %.6g\n", s.name.c_str(), s.value);
+    for (const TechniqueStat& s : frame.preparation) std::printf("  %-28s %.6g (scene preparation)\n", s.name.c_str(), s.value);
     const int w = scene.camera.width, h = scene.camera.height;
     if (!a.png.empty()) writePng(a.png, w, h, toSrgb8Image(frame.radiance, {a.exposure, ToneOperator::Reinhard}));
     if (!a.aov.empty()) {
@@ -138,7 +139,7 @@ void runRender(const RenderArgs& a) {
         aov.width = w, aov.height = h;
         setRadiance(aov, frame.radiance);
         setGBuffer(aov, frame.gbuffer);
-        aov.set(channel::V, frame.shadow.visibility);
+        if (frame.output == TechniqueOutput::Visibility) aov.set(channel::V, frame.shadow.visibility);
         if (!frame.shadow.stencil.empty()) aov.set(channel::stencil, frame.shadow.stencil);
         writeExr(a.aov, aov);
     }

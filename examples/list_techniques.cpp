@@ -23,7 +23,7 @@ int main(int argc, char** argv) try {
     for (const Technique& technique : techniques()) {
         text += technique.name + " (scored against " + technique.referenceName + ")\n    " + technique.description + "\n";
         for (const ParamSpec& param : technique.params)
-            text += "    " + param.name + "=" + param.defaultValue + "  " + param.help + "\n";
+            text += "    " + param.name + "=" + param.defaultValue + "  " + paramHelp(param) + "\n";
     }
     std::fputs(text.c_str(), stdout);
     if (argc > 1) writeTextFile(argv[1], text);   // whole or not at all (shading/image_io.h)

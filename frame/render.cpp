@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -69,16 +70,13 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     Frame frame;
     frame.output = technique.output;
     frame.gbuffer = renderGBuffer(prepared.world(), scene.camera, settings.simd);
-    const size_t preparedBefore = prepared.preparationTimes().size();
-    if (technique.usesEdgeAdjacency) prepared.edgeAdjacency();
-    const auto times = prepared.preparationTimes();
-    for (size_t k = preparedBefore; k < times.size(); ++k) frame.preparation.push_back({times[k].first, times[k].second});
+    if (technique.usesEdgeAdjacency) {
+        if (const std::optional<double> ms = prepared.buildEdgeAdjacency()) frame.preparation.push_back({"edge_adjacency_ms", *ms});
+    }
 
     const auto start = std::chrono::steady_clock::now();
-    frame.shadow = anySurface(frame.gbuffer)
-                       ? technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir,
-                                       settings.progress})
-                       : unlitOutputs(frame.gbuffer);
+    frame.shadow = technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir,
+                                  settings.progress});
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (technique.output == TechniqueOutput::Visibility) {
         frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <tbb/task_arena.h>
+
 namespace shadowlab {
 namespace {
 
@@ -18,14 +20,25 @@ PreparedScene::PreparedScene(Scene scene) : scene_(std::move(scene)) {
     flattenMs_ = millisecondsOf([&] { world_ = flatten(scene_); });
 }
 
+std::optional<double> PreparedScene::buildEdgeAdjacency() const {
+    std::optional<double> builtHere;
+    std::call_once(adjacencyBuilt_, [&] {
+        // Isolated: while this thread waits inside the parallel build, TBB must not hand it
+        // another task that could ask this scene for its adjacency and wait on the same flag.
+        builtHere = millisecondsOf([&] { tbb::this_task_arena::isolate([&] { adjacency_ = sceneEdgeAdjacency(scene_); }); });
+        adjacencyMs_.store(*builtHere);
+    });
+    return builtHere;
+}
+
 const std::vector<EdgeAdjacency>& PreparedScene::edgeAdjacency() const {
-    std::call_once(adjacencyBuilt_, [&] { adjacencyMs_ = millisecondsOf([&] { adjacency_ = sceneEdgeAdjacency(scene_); }); });
+    buildEdgeAdjacency();
     return adjacency_;
 }
 
 std::vector<std::pair<std::string, double>> PreparedScene::preparationTimes() const {
     std::vector<std::pair<std::string, double>> times = {{"flatten_ms", flattenMs_}};
-    if (adjacencyMs_ >= 0.0) times.emplace_back("edge_adjacency_ms", adjacencyMs_);
+    if (const double ms = adjacencyMs_.load(); ms >= 0.0) times.emplace_back("edge_adjacency_ms", ms);
     return times;
 }
 

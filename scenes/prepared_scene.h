@@ -5,7 +5,9 @@
 // or an edited copy of one, can never share stale data.
 #pragma once
 
+#include <atomic>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,9 +34,12 @@ public:
 
     // sceneEdgeAdjacency() of the scene, built on the first call (thread-safe).
     const std::vector<EdgeAdjacency>& edgeAdjacency() const;
+    // Builds the edge adjacency if no call has yet; returns its wall time (ms) to the one
+    // call that built it, nothing to every other: the cost is reported once.
+    std::optional<double> buildEdgeAdjacency() const;
 
     // The preparation stages built so far and their wall time, e.g. {"flatten_ms", 3.1}
-    // and, once built, {"edge_adjacency_ms", 12.0}: each is built, and reported, once.
+    // and, once built, {"edge_adjacency_ms", 12.0}.
     std::vector<std::pair<std::string, double>> preparationTimes() const;
 
 private:
@@ -43,7 +48,7 @@ private:
     double flattenMs_ = 0.0;
     mutable std::once_flag adjacencyBuilt_;
     mutable std::vector<EdgeAdjacency> adjacency_;
-    mutable double adjacencyMs_ = -1.0;   // < 0 until built
+    mutable std::atomic<double> adjacencyMs_{-1.0};   // < 0 until built
 };
 
 }  // namespace shadowlab

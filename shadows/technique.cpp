@@ -9,7 +9,6 @@ bool anySurface(const GBuffer& g) { return std::find(g.hit.begin(), g.hit.end(),
 ShadowOutputs unlitOutputs(const GBuffer& g) {
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
-    out.radiance.assign(g.pixelCount(), glm::vec3(0.0f));
     return out;
 }
 

@@ -68,9 +68,9 @@ struct Technique {
     bool usesEdgeAdjacency = false;
 };
 
-// A view that sees no surface has one answer, V = 0 everywhere (and no radiance but the
-// background): renderFrame() gives it without running the technique, so no technique needs
-// a case for it (fitting a light's view to no receivers is an error, light_view.h).
+// A view that sees no surface has one answer, V = 0 everywhere. A technique that fits a
+// light's view to its receivers (an error with none, light_view.h) checks its settings and
+// light first, so that they fail alike on every view, then returns unlitOutputs().
 bool anySurface(const GBuffer& g);
 ShadowOutputs unlitOutputs(const GBuffer& g);
 

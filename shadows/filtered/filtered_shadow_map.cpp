@@ -137,6 +137,7 @@ void writeDebug(const ShadowInputs& in, const FilteredSettings& s, const SoftSha
 
 ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
     const FilteredSettings s = readSettings(kind, in.params);
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     const SoftShadowMap soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),
                                                    kFitMarginTexels + 0.5 * s.widthTexels, s.pcssWidth);
     const MomentMap moments = momentMap(soft, s.moments);

@@ -59,6 +59,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
         throw std::invalid_argument("multi-sample: samples must be a square (n x n strata), not " + std::to_string(samples));
     }
     const AreaLightFrame frame = areaLightFrame(in.light);
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     const DebugBuffers debug(in.debugDir, "multi-sample");
     LightFitOptions fit;
     fit.resolution = resolution;

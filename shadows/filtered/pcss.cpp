@@ -63,6 +63,7 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
     const int resolution = in.params.integer("resolution");
     const BlockerSearchSettings search = readBlockerSearch(in.params);
     const int filterTaps = in.params.integer("filter-taps");
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     const SoftShadowMap soft = renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kFitMarginTexels, true);
     const PcssBuffers b = runPerPixel(in, soft, search, filterTaps);
     writeDebug(in, soft, b);

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "shading/light_sampling.h"
+#include "shading/lights.h"
 #include "shadows/light_view.h"
 
 namespace shadowlab {
@@ -76,6 +77,7 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
     tbb::parallel_for(size_t(0), soft.linear.size(), [&](size_t k) {
         soft.linear[k] = soft.map.depth[k] >= 1.0f ? 1.0f : float(soft.normalised(soft.distanceOf(soft.map.depth[k])));
     });
+    soft.light = in.light;
     soft.lightCentre = frame.centre;
     soft.lightTexels = lightTexelsOf(frame, view, resolution);
     return soft;
@@ -84,7 +86,7 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
 SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N) {
     const glm::dvec4 t = soft.map.texelFromWorld * glm::dvec4(P, 1.0);
     const glm::dvec4 v = soft.map.view.viewFromWorld * glm::dvec4(P, 1.0);
-    return {glm::dvec2(t) / t.w, -v.z, glm::dot(N, soft.lightCentre - P) > 0.0};
+    return {glm::dvec2(t) / t.w, -v.z, lightReaches(soft.light, glm::vec3(P), glm::vec3(N))};
 }
 
 glm::dvec2 sampleWidthTexels(const SoftShadowMap& soft, double dr, double dOccluder) {

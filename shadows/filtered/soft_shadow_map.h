@@ -36,6 +36,7 @@ struct SoftShadowMap {
     DepthMap map;                      // window depth from the light's centre
     std::vector<float> linear;         // normalised linear depth z in [0, 1] per texel
     glm::dvec2 lightTexels{0.0};       // w_light in texels at unit distance, per map axis
+    Light light;                       // the area light
     glm::dvec3 lightCentre{0.0};       // world space, the map's eye
 
     double zNear() const { return map.view.zNear; }
@@ -50,7 +51,7 @@ struct SoftShadowMap {
 struct SoftReceiver {
     glm::dvec2 texel{0.0};             // where it falls, texel units
     double distance = 0.0;             // d_r: view-space distance from the light's centre, m
-    bool facesLight = false;           // dot(N, centre - P) > 0 (else V = 0, as the reference)
+    bool facesLight = false;           // lightReaches(): dot(N, centre - P) > 0 (else V = 0)
 };
 
 // Throws std::invalid_argument unless the light is a disk or a rectangle. The receivers

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scenes/edge_adjacency.h"
+#include "shading/lights.h"
 #include "shadows/depth_map.h"
 #include "shadows/fins/fin_layers.h"
 #include "shadows/fins/fin_maps.h"
@@ -90,12 +91,10 @@ FinScene buildFinScene(const ShadowInputs& in, const FinSettings& s) {
     return {view, L0, std::move(fins), std::move(layering)};
 }
 
-// 1 where a surface faces the light's centre (the reference's dot(N, L - P) > 0), else 0.
-std::vector<uint8_t> facingLight(const GBuffer& g, const LightPlane& light) {
+// 1 where the light can reach a surface (lightReaches: it faces the disk's centre), else 0.
+std::vector<uint8_t> facingLight(const GBuffer& g, const Light& light) {
     std::vector<uint8_t> facing(g.pixelCount(), 0);
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        facing[k] = g.hit[k] && glm::dot(glm::dvec3(g.normal[k]), light.centre - glm::dvec3(g.position[k])) > 0.0;
-    }
+    for (size_t k = 0; k < g.pixelCount(); ++k) facing[k] = g.hit[k] && lightReaches(light, g.position[k], g.normal[k]);
     return facing;
 }
 
@@ -157,12 +156,13 @@ FinSettings readFinSettings(const ShadowInputs& in, const std::string& technique
 }
 
 ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked by readFinSettings
     std::vector<TechniqueStat> times;
     StageTimer timer(times);
     const FinScene scene = buildFinScene(in, s);
     timer.lap("silhouette_and_fins");
 
-    IlluminanceBuffer buffer(in.gbuffer, facingLight(in.gbuffer, s.light));
+    IlluminanceBuffer buffer(in.gbuffer, facingLight(in.gbuffer, in.light));
     const FinDebug debug(in.debugDir, s.technique, scene.view);
     const int layersDrawn = drawLayers(in, scene, s, debug, buffer);
     timer.lap("maps_and_illuminance");

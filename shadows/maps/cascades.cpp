@@ -8,6 +8,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "shadows/technique.h"
+
 namespace shadowlab {
 namespace {
 
@@ -102,7 +104,7 @@ std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const G
     for (int k = 0; k < s.count; ++k) {
         Cascade& c = cascades[k];
         const GBuffer receivers = cascadeReceivers(g, camera, cascades, k);
-        c.hasReceivers = std::find(receivers.hit.begin(), receivers.hit.end(), 1) != receivers.hit.end();
+        c.hasReceivers = anySurface(receivers);
         if (!c.hasReceivers) continue;
         // Near and far along the light from the receivers and what lies in front of them.
         const LightView depthFit = fitLightView(sun, receivers, world, options);

@@ -47,6 +47,7 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     const ShadowMapSettings s = readShadowMapSettings(in.params);
     const CascadeSettings cs = readCascadeSettings(in.params, s);
     if (in.light.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     const CascadedMaps cm = renderCascades(in.light, in.scene().camera, in.gbuffer, in.world(), cs, depthMapSettings(s), in.simd);
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, in.light, cm.maps,

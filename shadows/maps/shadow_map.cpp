@@ -127,6 +127,7 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
         throw std::invalid_argument("shadow-map: warp=lispsm needs a directional light");
     }
     if (forceCube && light.type != LightType::Point) throw std::invalid_argument("shadow-map: cube=always needs a point light");
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm);
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, light, lm.maps, selectorFor(lm), s.bias,

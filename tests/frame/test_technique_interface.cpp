@@ -64,6 +64,12 @@ TEST_CASE("a view that sees no surface gives V = 0 everywhere for every techniqu
         CHECK(std::count(frame.shadow.visibility.begin(), frame.shadow.visibility.end(), 0.0f) ==
               long(frame.gbuffer.pixelCount()));
     }
+    // The settings and the light are still checked: an empty view hides no error.
+    CHECK_THROWS_WITH_AS(renderFrame(disk, findTechnique("csm")), "csm: needs a directional light", std::invalid_argument);
+    CHECK_THROWS_WITH_AS(renderFrame(sun, findTechnique("fins")), "fins: needs a disk light", std::invalid_argument);
+    FrameSettings notSquare;
+    notSquare.params = {{"samples", "5"}};
+    CHECK_THROWS_AS(renderFrame(disk, findTechnique("multi-sample"), notSquare), std::invalid_argument);
 }
 
 TEST_CASE("the edge adjacency is built before the technique's time, once per prepared scene, and reported there") {
