@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "raster/fixed_point.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file_parts.h"
 
@@ -21,7 +22,8 @@ constexpr std::array<std::pair<std::string_view, MaterialModel>, 2> kMaterialMod
     {"lambert", MaterialModel::Lambert}, {"blinn-phong", MaterialModel::BlinnPhong}}};
 
 constexpr Interval kFovyDeg{0.0, 180.0, true, true};
-constexpr Interval kImageSize{1.0, 16384.0, false, false};
+// The rasterizer's viewport limit: a scene that loads can be rendered.
+constexpr Interval kImageSize{1.0, double(raster::kMaxViewport), false, false};
 
 // Vectors whose angle has a sine below this count as parallel (a camera "up" along the
 // viewing direction leaves the image's roll undefined).

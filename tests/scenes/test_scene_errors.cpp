@@ -199,7 +199,7 @@ TEST_CASE("camera, sizes and transforms out of range") {
         {"zero fovy", [](json& s) { s["camera"]["fovy"] = 0; }, {"camera.fovy: must be in (0, 180), got 0"}},
         {"negative fovy", [](json& s) { s["camera"]["fovy"] = -5; }, {"camera.fovy: must be in (0, 180), got -5"}},
         {"fovy 180", [](json& s) { s["camera"]["fovy"] = 180; }, {"camera.fovy: must be in (0, 180), got 180"}},
-        {"zero width", [](json& s) { s["camera"]["width"] = 0; }, {"camera.width: must be in [1, 16384], got 0"}},
+        {"zero width", [](json& s) { s["camera"]["width"] = 0; }, {"camera.width: must be in [1, 8192], got 0"}},
         {"near beyond far", [](json& s) { s["camera"]["near"] = 10; s["camera"]["far"] = 5; },
          {"camera.far: near must be less than far"}},
         {"near equal to far", [](json& s) { s["camera"]["near"] = 5; s["camera"]["far"] = 5; },

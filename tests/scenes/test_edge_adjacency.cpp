@@ -1,0 +1,57 @@
+// Edge adjacency (scenes/edge_adjacency.h), built once per prepared scene
+// (scenes/prepared_scene.h): welding, open and non-manifold edges, and the build reported once.
+#include <doctest/doctest.h>
+
+#include "scenes/edge_adjacency.h"
+#include "scenes/prepared_scene.h"
+#include "scenes/procedural.h"
+#include "tests/scenes/unwelded_mesh.h"
+
+using namespace shadowlab;
+using test::unwelded;
+
+TEST_CASE("edge adjacency welds duplicated vertices and finds a cube closed") {
+    const Mesh cube = makeBox(glm::vec3(0.0f), glm::vec3(1.0f));
+    for (const Mesh& mesh : {cube, unwelded(cube)}) {
+        const EdgeAdjacency a = buildEdgeAdjacency(mesh.positions, mesh.triangles);
+        CHECK(a.edges.size() == 18);   // 12 cube edges and 6 face diagonals
+        CHECK(a.uses.size() == 36);
+        CHECK(a.closed);
+        CHECK(a.openEdges == 0);
+        CHECK(a.nonManifoldEdges == 0);
+    }
+    // A quad (diagonal 0-2) with a fin on its edge 0-1: open, still manifold; a second fin
+    // on the same edge gives it three triangles.
+    Mesh fin;
+    fin.positions = {{0, 0, 0}, {1, 0, 0}, {1, 0, -1}, {0, 0, -1}, {0.5f, 1, 0}, {0.5f, -1, 0}};
+    fin.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 0, 4}};
+    const EdgeAdjacency one = buildEdgeAdjacency(fin.positions, fin.triangles);
+    CHECK_FALSE(one.closed);
+    CHECK(one.openEdges == 5);   // the quad's other three edges and the fin's two
+    CHECK(one.nonManifoldEdges == 0);
+    fin.triangles.emplace_back(0, 1, 5);
+    CHECK(buildEdgeAdjacency(fin.positions, fin.triangles).nonManifoldEdges == 1);
+}
+
+TEST_CASE("prepared scene: the edge adjacency is built once, on first use, and reported once") {
+    Scene scene;
+    scene.meshes = {makeBox(glm::vec3(0.0f), glm::vec3(1.0f))};
+    scene.instances = {{"box", 0, 0, glm::mat4(1.0f)}};
+    const PreparedScene prepared(scene);
+    CHECK(prepared.preparationTimes().size() == 1);   // flattened only: nothing built yet
+    const std::vector<EdgeAdjacency>* first = &prepared.edgeAdjacency();
+    CHECK(&prepared.edgeAdjacency() == first);         // the same data, not rebuilt
+    CHECK((*first)[0].closed);
+    const auto times = prepared.preparationTimes();
+    REQUIRE(times.size() == 2);
+    CHECK(times[1].first == "edge_adjacency_ms");
+    CHECK(times[1].second >= 0.0);
+    // An edited copy is another prepared scene with its own edges: without one triangle
+    // the box is open.
+    scene.meshes[0].triangles.pop_back();
+    const PreparedScene edited(scene);
+    CHECK_FALSE(edited.edgeAdjacency()[0].closed);
+    CHECK(edited.edgeAdjacency()[0].edges.size() ==
+          buildEdgeAdjacency(scene.meshes[0].positions, scene.meshes[0].triangles).edges.size());
+    CHECK(prepared.edgeAdjacency()[0].closed);
+}
