@@ -5,22 +5,22 @@
 // A shadow map samples the light's view on a regular grid and then asks it questions at
 // other points, the camera's samples, which is where its aliasing and bias come from. The
 // irregular z-buffer asks the questions at the camera's samples themselves:
-//   1. receivers  (izb_receivers.cpp): every G-buffer point that faces the light becomes a
+//   1. receivers  (receivers.cpp): every G-buffer point that faces the light becomes a
 //      shadow-ray origin; points facing away are shadowed without a test (Wyman et al.'s
 //      culling, RTR4 7.9);
-//   2. light grid (izb_light_grid.cpp): the light's view fitted to the receivers (one
+//   2. light grid (light_grid.cpp): the light's view fitted to the receivers (one
 //      frustum, or the cube faces around a point light that is surrounded), at a
 //      resolution chosen from the receivers' density;
-//   3. lists      (izb_lists.cpp): each texel lists the receivers that project into it,
+//   3. lists      (lists.cpp): each texel lists the receivers that project into it,
 //      built by a counting sort, so every list is in pixel order (RTR4 Figure 7.30, lower
 //      left);
-//   4. coverage   (izb_coverage.cpp): each occluder's conservative footprint in the grid,
+//   4. coverage   (coverage.cpp): each occluder's conservative footprint in the grid,
 //      every texel whose closed square its projection touches (RTR4 Figure 7.30, lower
 //      right);
-//   5. binning    (izb_binning.cpp): occluders sorted into tiles of the grid;
-//   6. occlusion  (izb_occlusion.cpp): the exact test of one receiver against one triangle
+//   5. binning    (binning.cpp): occluders sorted into tiles of the grid;
+//   6. occlusion  (occlusion.cpp): the exact test of one receiver against one triangle
 //      (is the triangle on the segment from the receiver to the light?);
-//   7. traversal  (izb_traversal.cpp): tiles in parallel, each testing its texels' receivers
+//   7. traversal  (traversal.cpp): tiles in parallel, each testing its texels' receivers
 //      against the occluders binned to it.
 // The result equals a ray tracer's up to floating-point ties, since it asks the same
 // question per receiver: "It's really just a different ordering of the loops" (Lehtinen,
@@ -80,7 +80,7 @@ struct LightGrid {
     std::vector<glm::dmat4> clipFromWorld;   // per view, computed once (texelOf runs per receiver)
     int resolution = 0;
     // Perspective views drop occluder parts nearer the light than this depth (view-space
-    // -z), a thousandth of the reference's smallest offset (izb_coverage.cpp).
+    // -z), a thousandth of the reference's smallest offset (coverage.cpp).
     double minDepth = 0.0;
     size_t texelCount() const { return views.size() * size_t(resolution) * size_t(resolution); }
 };

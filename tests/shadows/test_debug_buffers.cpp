@@ -157,7 +157,7 @@ TEST_CASE("shadow-volume debug fill: the sum over pixels is the stat fill fragme
     }
 }
 
-// Every receiver sits in exactly one texel's list (izb_lists.cpp: a counting sort of
+// Every receiver sits in exactly one texel's list (izb/lists.cpp: a counting sort of
 // receiverTexels), so the lengths sum to the receivers and the occupied texels are the
 // non-empty ones; the grid stacks `views` squares of `resolution` texels.
 TEST_CASE("izb debug list-length: sums to the stat receivers, and occupancy counts the non-empty texels") {
