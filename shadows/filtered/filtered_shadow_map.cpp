@@ -176,8 +176,12 @@ Technique filteredShadowMapTechnique(MomentKind kind) {
     };
     for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
     for (const ParamSpec& p : momentParamSpecs(kind)) params.push_back(p);
-    return {momentKindName(kind), momentKindDescription(kind), params,
-            [kind](const ShadowInputs& in) { return runFiltered(kind, in); }, "reference-soft"};
+    return {.name = momentKindName(kind),
+            .description = momentKindDescription(kind),
+            .params = params,
+            .run = [kind](const ShadowInputs& in) { return runFiltered(kind, in); },
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -89,11 +89,14 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
 }  // namespace
 
 Technique multiSampleTechnique() {
-    return {"multi-sample",
-            "average of N hard shadow maps from stratified points on the area light (Heckbert and Herf 1997)",
-            {softResolutionParam("texels per side of each map"),
-             integerParam("samples", 64, 1, kMaxSamples, "N light points, a square: the level of detail")},
-            runMultiSample, "reference-soft"};
+    return {.name = "multi-sample",
+            .description = "average of N hard shadow maps from stratified points on the area light (Heckbert "
+                           "and Herf 1997)",
+            .params = {softResolutionParam("texels per side of each map"),
+                       integerParam("samples", 64, 1, kMaxSamples, "N light points, a square: the level of detail")},
+            .run = runMultiSample,
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

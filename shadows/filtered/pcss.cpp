@@ -90,9 +90,13 @@ Technique pcssTechnique() {
     std::vector<ParamSpec> params = {softResolutionParam("texels per side of the map")};
     for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
     params.push_back(integerParam("filter-taps", 32, 1, 128, "PCF: Poisson taps over the eq. 7.6 width"));
-    return {"pcss",
-            "percentage-closer soft shadows (RTR 7.6, Fernando 2005): blocker search, eq. 7.6 width, Poisson PCF",
-            params, runPcss, "reference-soft"};
+    return {.name = "pcss",
+            .description = "percentage-closer soft shadows (RTR 7.6, Fernando 2005): blocker search, eq. 7.6 "
+                           "width, Poisson PCF",
+            .params = params,
+            .run = runPcss,
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

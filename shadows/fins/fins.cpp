@@ -28,10 +28,15 @@ Technique finsTechnique() {
     params.push_back(integerParam("layers", 16, 1, kMaxLayers,
                                   "light-space layers of about equal numbers of silhouette edges, section 4.1; "
                                   "1 is the single-layer algorithm of section 3"));
-    return {"fins",
-            "multi-layered shadow fins (Cai et al. 2006): inner and outer fins, penumbra maps per layer, refined "
+    return {.name = "fins",
+            .description = "multi-layered shadow fins (Cai et al. 2006): inner and outer fins, penumbra maps "
+                           "per layer, refined "
             "illuminance buffer; disk lights",
-            params, runFins, "reference-soft", TechniqueOutput::Visibility, /*usesEdgeAdjacency=*/true};
+            .params = params,
+            .run = runFins,
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility,
+            .usesEdgeAdjacency = true};
 }
 
 }  // namespace shadowlab

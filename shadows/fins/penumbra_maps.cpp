@@ -19,10 +19,14 @@ ShadowOutputs runPenumbraMaps(const ShadowInputs& in) {
 }  // namespace
 
 Technique penumbraMapsTechnique() {
-    return {"penumbra-maps",
-            "penumbra maps (Wyman and Hansen 2003): hard shadow plus outer fins sized by the light; disk lights",
-            finShadowParams(), runPenumbraMaps, "reference-soft", TechniqueOutput::Visibility,
-            /*usesEdgeAdjacency=*/true};
+    return {.name = "penumbra-maps",
+            .description = "penumbra maps (Wyman and Hansen 2003): hard shadow plus outer fins sized by the "
+                           "light; disk lights",
+            .params = finShadowParams(),
+            .run = runPenumbraMaps,
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility,
+            .usesEdgeAdjacency = true};
 }
 
 }  // namespace shadowlab

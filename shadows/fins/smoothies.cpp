@@ -23,9 +23,14 @@ Technique smoothiesTechnique() {
     params.push_back(realParam("size", 0.06, 1e-4, 1.0,
                                "smoothie width as seen from the light's centre, tangent of the angle; "
                                "0.06 is about the built-in disk (radius 0.5 m) seen from 8 m"));
-    return {"smoothies",
-            "smoothies (Chan and Durand 2003): hard shadow plus outer fins of one global size; disk lights", params,
-            runSmoothies, "reference-soft", TechniqueOutput::Visibility, /*usesEdgeAdjacency=*/true};
+    return {.name = "smoothies",
+            .description = "smoothies (Chan and Durand 2003): hard shadow plus outer fins of one global size; "
+                           "disk lights",
+            .params = params,
+            .run = runSmoothies,
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility,
+            .usesEdgeAdjacency = true};
 }
 
 }  // namespace shadowlab

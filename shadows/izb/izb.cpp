@@ -94,10 +94,13 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
 }  // namespace
 
 Technique irregularZBufferTechnique() {
-    return {"izb", "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows",
-            {integerOrAutoParam("resolution", kMinMapResolution, kMaxMapResolution,
+    return {.name = "izb",
+            .description = "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows",
+            .params = {integerOrAutoParam("resolution", kMinMapResolution, kMaxMapResolution,
                                 "light grid texels per side; auto: a mean of about 2 receivers per non-empty texel")},
-            irregularZBuffer};
+            .run = irregularZBuffer,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -97,8 +97,13 @@ Technique cascadedShadowMapTechnique() {
                                         {"samples", true, "nearest/farthest receiver, SDSM"}},
                                        "split range"));
     params.push_back(flagParam("snap", true, "snap each cascade to whole texels so shadows do not shimmer"));
-    return {"csm", "cascaded shadow maps (RTR 7.4.1) for directional lights: split schemes, SDSM bounds, texel snapping",
-            params, runCsm};
+    return {.name = "csm",
+            .description = "cascaded shadow maps (RTR 7.4.1) for directional lights: split schemes, SDSM "
+                           "bounds, texel snapping",
+            .params = params,
+            .run = runCsm,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

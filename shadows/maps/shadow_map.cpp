@@ -149,9 +149,13 @@ Technique shadowMapTechnique() {
     params.push_back(choiceParam<bool>("warp", "none",
                                        {{"none", false}, {"lispsm", true, "light space perspective shadow map"}},
                                        "directional lights"));
-    return {"shadow-map",
-            "shadow map (RTR 7.4): fitted light frustum, cube faces for surrounded point lights, bias modes, PCF filters, LiSPSM",
-            params, runShadowMap};
+    return {.name = "shadow-map",
+            .description = "shadow map (RTR 7.4): fitted light frustum, cube faces for surrounded point "
+                           "lights, bias modes, PCF filters, LiSPSM",
+            .params = params,
+            .run = runShadowMap,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

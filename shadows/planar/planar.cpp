@@ -169,12 +169,15 @@ glm::dmat4 planarProjection(const glm::dvec4& plane, const glm::dvec4& light) {
 }
 
 Technique planarTechnique() {
-    return {"planar",
-            "planar projected shadows on the plane y = plane-y, stencil against double blending (no self-shadows)",
-            {realParam("plane-y", 0.0, -1e6, 1e6, "height of the receiver plane y = plane-y, in metres"),
-             realParam("opacity", 0.6, 0.0, 1.0,
-                       "alpha of the dark translucent shadow in the debug image; V does not depend on it")},
-            run};
+    return {.name = "planar",
+            .description = "planar projected shadows on the plane y = plane-y, stencil against double "
+                           "blending (no self-shadows)",
+            .params = {realParam("plane-y", 0.0, -1e6, 1e6, "height of the receiver plane y = plane-y, in metres"),
+                       realParam("opacity", 0.6, 0.0, 1.0,
+                                 "alpha of the dark translucent shadow in the debug image; V does not depend on it")},
+            .run = run,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -31,18 +31,32 @@ ShadowOutputs exactSoftReference(const ShadowInputs& in) {
 
 }  // namespace
 
-Technique unshadowedTechnique() { return {"none", "no shadows: V = 1 on every surface", {}, unshadowed}; }
+Technique unshadowedTechnique() {
+    return {.name = "none",
+            .description = "no shadows: V = 1 on every surface",
+            .params = {},
+            .run = unshadowed,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
+}
 
 Technique referenceTechnique() {
-    return {"reference", "exact hard shadows: one Embree shadow ray per pixel to the light's centre", {}, exactReference};
+    return {.name = "reference",
+            .description = "exact hard shadows: one Embree shadow ray per pixel to the light's centre",
+            .params = {},
+            .run = exactReference,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 Technique softReferenceTechnique() {
-    return {"reference-soft",
-            "exact soft shadows: the visible fraction of the area light, n x n stratified Embree rays per pixel",
-            {integerParam("samples-per-axis", 32, 1, 256, "n: n x n samples on the light")},
-            exactSoftReference,
-            "reference-soft"};
+    return {.name = "reference-soft",
+            .description = "exact soft shadows: the visible fraction of the area light, n x n stratified "
+                           "Embree rays per pixel",
+            .params = {integerParam("samples-per-axis", 32, 1, 256, "n: n x n samples on the light")},
+            .run = exactSoftReference,
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -232,15 +232,19 @@ ShadowOutputs run(const ShadowInputs& in) {
 }  // namespace
 
 Technique shadowVolumeTechnique() {
-    return {"shadow-volume",
-            "stencil shadow volumes: silhouettes extruded to infinity, z-pass or z-fail with two-sided wrapping stencil",
-            {choiceParam<Mode>("mode", "auto",
-                               {{"auto", Mode::Auto, "z-fail when a volume may reach the near plane"},
-                                {"zpass", Mode::ZPass},
-                                {"zfail", Mode::ZFail}}),
-             realParam("offset", 0.0, 0.0, 64.0,
-                       "polygon offset of the volume faces, in units of the depth buffer's resolution")},
-            run, "reference", TechniqueOutput::Visibility, /*usesEdgeAdjacency=*/true};
+    return {.name = "shadow-volume",
+            .description = "stencil shadow volumes: silhouettes extruded to infinity, z-pass or z-fail with "
+                           "two-sided wrapping stencil",
+            .params = {choiceParam<Mode>("mode", "auto",
+                                         {{"auto", Mode::Auto, "z-fail when a volume may reach the near plane"},
+                                          {"zpass", Mode::ZPass},
+                                          {"zfail", Mode::ZFail}}),
+                       realParam("offset", 0.0, 0.0, 64.0,
+                                 "polygon offset of the volume faces, in units of the depth buffer's resolution")},
+            .run = run,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility,
+            .usesEdgeAdjacency = true};
 }
 
 }  // namespace shadowlab
