@@ -14,13 +14,15 @@
 #include "raster/thread_count.h"
 #include "scenes/camera.h"
 #include "scenes/scene_file.h"
+#include "shadows/maps/shadow_bias.h"
 #include "shadows/reference/reference.h"
 
 namespace shadowlab {
 namespace {
 
-// Three rows per scene and thread count: the light's pass, the camera's pass, the rays.
-constexpr int kRowsPerSceneAndThreads = 3;
+// Five rows per scene and thread count: the light's pass culled and with both facings, the
+// camera's pass, the rays with the BVH built once and built in every run.
+constexpr int kRowsPerSceneAndThreads = 5;
 
 Timing timeRuns(const BenchOptions& options, const ProgressStage& runs, const std::function<void()>& run) {
     for (int k = 0; k < options.warmupRuns; ++k) {
@@ -37,20 +39,22 @@ Timing timeRuns(const BenchOptions& options, const ProgressStage& runs, const st
     return summarizeTimes(std::move(ms));
 }
 
-// The point light's view of the scene: perspective towards the origin, fovy 90 degrees,
-// near 0.5, far 50: one fixed protocol, so rows compare across scenes and runs.
-glm::mat4 lightClipFromWorld(const Scene& scene) {
-    const glm::vec3 light = scene.lights.at(0).position;
-    const glm::vec3 toOrigin = glm::normalize(-light);
-    const glm::vec3 up = std::abs(toOrigin.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-    return glm::perspective(glm::radians(90.0f), 1.0f, 0.5f, 50.0f) * glm::lookAt(light, glm::vec3(0.0f), up);
+// The state of a pass: depth-only, less, back faces culled unless `shadowMapState`, which
+// draws as the shadow-map technique draws its map: no culling, the default polygon offset.
+raster::PipelineState depthPassState(bool shadowMapState) {
+    raster::PipelineState state;
+    if (shadowMapState) {
+        state.cull = raster::CullMode::None;
+        state.offset = polygonOffsetFor(BiasSettings{});
+    }
+    return state;
 }
 
 PassTiming timeDepthPass(const BenchOptions& options, const ProgressStage& runs, const WorldGeometry& world,
-                         const glm::mat4& clipFromWorld, int width, int height) {
+                         const glm::mat4& clipFromWorld, int width, int height, bool shadowMapState = false) {
     raster::Framebuffer fb(width, height);
     raster::Rasterizer rasterizer(options.simd);
-    raster::PipelineState state;   // depth-only, less, back faces culled
+    const raster::PipelineState state = depthPassState(shadowMapState);
     const raster::DrawCall call = raster::positionsDraw(world.positions, world.triangles, clipFromWorld);
     const Timing t = timeRuns(options, runs, [&] {
         fb.clearDepth(1.0f);
@@ -79,10 +83,32 @@ RayTiming timeReference(const BenchOptions& options, const ProgressStage& runs, 
         reference.visibility(gbuffer, light);
         raysPerRun = reference.raysCast() - before;
     });
-    return {scene.name, 1, raysPerRun, t.medianMs, t.minMs};
+    return {scene.name, "built once", 1, raysPerRun, t.medianMs, t.minMs};
+}
+
+// The same rays with the BVH built in every run, as for geometry that changes every frame:
+// the time is the construction plus the rays.
+RayTiming timeReferenceWithBuild(const BenchOptions& options, const ProgressStage& runs, const Scene& scene,
+                                 const WorldGeometry& world) {
+    const GBuffer gbuffer = renderGBuffer(world, scene.camera, options.simd);
+    const Light light = pointLightFor(scene.lights.at(0));
+    uint64_t raysPerRun = 0;
+    const Timing t = timeRuns(options, runs, [&] {
+        const ReferenceVisibility reference(world);
+        reference.visibility(gbuffer, light);
+        raysPerRun = reference.raysCast();
+    });
+    return {scene.name, "built per run", 1, raysPerRun, t.medianMs, t.minMs};
 }
 
 }  // namespace
+
+glm::mat4 lightClipFromWorld(const Scene& scene) {
+    const glm::vec3 light = scene.lights.at(0).position;
+    const glm::vec3 toOrigin = glm::normalize(-light);
+    const glm::vec3 up = std::abs(toOrigin.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    return glm::perspective(glm::radians(90.0f), 1.0f, 0.5f, 50.0f) * glm::lookAt(light, glm::vec3(0.0f), up);
+}
 
 BenchResults runBench(const BenchOptions& options) {
     BenchResults results;
@@ -96,6 +122,9 @@ BenchResults runBench(const BenchOptions& options) {
                 PassTiming light = timeDepthPass(options, runs, world, lightClipFromWorld(scene), 2048, 2048);
                 light.scene = name, light.pass = "light 2048x2048", light.threads = threads;
                 results.passes.push_back(light);
+                PassTiming both = timeDepthPass(options, runs, world, lightClipFromWorld(scene), 2048, 2048, true);
+                both.scene = name, both.pass = "light 2048x2048 both facings", both.threads = threads;
+                results.passes.push_back(both);
                 PassTiming camera =
                     timeDepthPass(options, runs, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
                 camera.scene = name, camera.threads = threads;
@@ -104,6 +133,9 @@ BenchResults runBench(const BenchOptions& options) {
                 RayTiming rays = timeReference(options, runs, scene, world);
                 rays.threads = threads;
                 results.rays.push_back(rays);
+                RayTiming rebuilt = timeReferenceWithBuild(options, runs, scene, world);
+                rebuilt.threads = threads;
+                results.rays.push_back(rebuilt);
             });
         }
     }
@@ -113,21 +145,21 @@ BenchResults runBench(const BenchOptions& options) {
 std::string formatBenchText(const BenchResults& r) {
     std::string out;
     char line[256];
-    std::snprintf(line, sizeof line, "%-11s %-17s %7s %6s %10s %10s %9s %9s %9s %10s %10s\n", "scene", "pass", "threads",
+    std::snprintf(line, sizeof line, "%-11s %-30s %7s %6s %10s %10s %9s %9s %9s %10s %10s\n", "scene", "pass", "threads",
                   "simd", "triangles", "median ms", "min ms", "Mtris/s", "Mpix/s", "set up", "tile pairs");
     out += line;
     for (const PassTiming& p : r.passes) {
-        std::snprintf(line, sizeof line, "%-11s %-17s %7d %6s %10zu %10.2f %9.2f %9.1f %9.1f %10llu %10llu\n",
+        std::snprintf(line, sizeof line, "%-11s %-30s %7d %6s %10zu %10.2f %9.2f %9.1f %9.1f %10llu %10llu\n",
                       p.scene.c_str(), p.pass.c_str(), p.threads, p.simd.c_str(), p.triangles, p.medianMs, p.minMs,
                       p.mtrisPerSecond(), p.mpixelsPerSecond(), static_cast<unsigned long long>(p.stats.trianglesSetUp),
                       static_cast<unsigned long long>(p.stats.binEntries));
         out += line;
     }
-    std::snprintf(line, sizeof line, "\n%-11s %7s %10s %10s %9s %9s\n", "scene", "threads", "rays", "median ms", "min ms",
+    std::snprintf(line, sizeof line, "\n%-11s %-14s %7s %10s %10s %9s %9s\n", "scene", "bvh", "threads", "rays", "median ms", "min ms",
                   "Mrays/s");
     out += line;
     for (const RayTiming& t : r.rays) {
-        std::snprintf(line, sizeof line, "%-11s %7d %10llu %10.2f %9.2f %9.2f\n", t.scene.c_str(), t.threads,
+        std::snprintf(line, sizeof line, "%-11s %-14s %7d %10llu %10.2f %9.2f %9.2f\n", t.scene.c_str(), t.bvh.c_str(), t.threads,
                       static_cast<unsigned long long>(t.rays), t.medianMs, t.minMs, t.mraysPerSecond());
         out += line;
     }
@@ -147,7 +179,7 @@ std::string formatBenchJson(const BenchResults& r) {
     }
     j["reference"] = nlohmann::json::array();
     for (const RayTiming& t : r.rays) {
-        j["reference"].push_back({{"scene", t.scene}, {"threads", t.threads}, {"rays", t.rays},
+        j["reference"].push_back({{"scene", t.scene}, {"bvh", t.bvh}, {"threads", t.threads}, {"rays", t.rays},
                                   {"median_ms", t.medianMs}, {"min_ms", t.minMs}, {"mrays_per_s", t.mraysPerSecond()}});
     }
     return j.dump(2) + "\n";

@@ -3,19 +3,25 @@
 //
 // Protocol (style.md, "benchmarks are repeatable protocols"): fixed scenes and cameras,
 // warm-up runs first, then `runs` measured runs; the median and the minimum are reported.
-// A pass is a depth clear plus one depth-only draw of every triangle with back faces culled.
+// A pass is a depth clear plus one depth-only draw of every triangle with back faces culled;
+// the light's pass is also timed as the shadow-map technique draws its map: both facings
+// (no culling) and the default slope-scaled polygon offset (shadows/maps/shadow_bias.h).
+// The rays are timed with the Embree BVH built once, and built anew in every run.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "raster/rasterizer.h"
+#include "scenes/scene.h"
 #include "shadows/progress.h"
 
 namespace shadowlab {
 
 struct PassTiming {
-    std::string scene, pass;   // pass: "light 2048x2048" or "camera 1280x800"
+    std::string scene, pass;   // pass: "light 2048x2048", "light 2048x2048 both facings" or "camera 1280x800"
     int threads = 1;
     std::string simd;
     size_t triangles = 0, pixels = 0;
@@ -27,6 +33,7 @@ struct PassTiming {
 
 struct RayTiming {
     std::string scene;
+    std::string bvh = "built once";   // or "built per run": the BVH's construction is in the time
     int threads = 1;
     uint64_t rays = 0;
     double medianMs = 0.0, minMs = 0.0;
@@ -46,6 +53,11 @@ struct BenchResults {
     std::vector<PassTiming> passes;
     std::vector<RayTiming> rays;
 };
+
+// The light pass's matrix: the scene's first light looking at the origin, perspective with
+// fovy 90 degrees, near 0.5, far 50: one fixed protocol, so rows compare across scenes and
+// runs (and with the peer benchmark, bench/peers).
+glm::mat4 lightClipFromWorld(const Scene& scene);
 
 BenchResults runBench(const BenchOptions& options);
 std::string formatBenchText(const BenchResults& results);
