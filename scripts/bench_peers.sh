@@ -7,7 +7,7 @@
 #                          [--peers PATH] [--shadowlab PATH]
 #
 # Runs, in order: shadowlab_peers, `shadowlab bench`, and per scene `shadowlab sweep
-# --technique shadow-map,shadow-volume --param filter=nearest,grid --param mode=zfail`;
+# --technique shadow-map,shadow-volume,izb --param filter=nearest,grid --param mode=zfail`;
 # scripts/peers_table.py merges their JSON into the table (and --json).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -46,7 +46,7 @@ IFS=',' read -r -a scene_list <<< "$scenes"
 for scene in "${scene_list[@]}"; do
     echo "shadowlab sweep $scene ($threads threads) ..." >&2
     mkdir -p "$work/sweep-$scene"
-    "$shadowlab" sweep "$scene" --technique shadow-map,shadow-volume --param filter=nearest,grid --param mode=zfail \
+    "$shadowlab" sweep "$scene" --technique shadow-map,shadow-volume,izb --param filter=nearest,grid --param mode=zfail \
         --threads "$threads" --runs "$runs" --out "$work/sweep-$scene" > /dev/null
 done
 args=(--peers "$work/peers.json" --bench "$work/bench.json" --threads "$threads")

@@ -45,6 +45,7 @@ def rows_for(scene, peers, bench, sweep, threads):
     map_nearest = sweep_ms(sweep, "shadow-map", {"filter": "nearest"})
     map_grid = sweep_ms(sweep, "shadow-map", {"filter": "grid"})
     volume = sweep_ms(sweep, "shadow-volume", {"mode": "zfail"})
+    izb = sweep_ms(sweep, "izb", {})
     stencil = median_of(p, workload="stencil volumes z-fail")
     geometry = median_of(p, workload="volume geometry (cpu)")
     out = [
@@ -60,10 +61,10 @@ def rows_for(scene, peers, bench, sweep, threads):
          "shadow-volume mode=zfail + camera pass"),
         ("stencil volumes z-fail + CPU volume geometry", stencil + geometry, None, volume + camera_ms,
          "peer: llvmpipe + extrudeShadowVolume on the CPU"),
-        ("shadow rays per pixel, BVH built once", None, median_of(rays, bvh="built once"), volume,
-         "shadowlab: shadow-volume mode=zfail (exact V, no camera pass)"),
-        ("shadow rays per pixel, BVH built per frame", None, median_of(rays, bvh="built per run"), volume,
-         "shadowlab: shadow-volume mode=zfail (exact V, no camera pass)"),
+        ("exact hard shadows per pixel, BVH built once", None, median_of(rays, bvh="built once"), izb,
+         "izb: exact V for the same pixels, given the G-buffer"),
+        ("exact hard shadows per pixel, BVH built per frame", None, median_of(rays, bvh="built per run"), izb,
+         "izb: exact V for the same pixels, given the G-buffer"),
     ]
     table = []
     for workload, llvmpipe, embree, shadowlab, note in out:
@@ -93,7 +94,7 @@ def main():
     machine = {"cpu": cpu_model(), "threads": a.threads, "date": time.strftime("%Y-%m-%d"),
                "renderer": peers["renderer"], "gl_version": peers["gl_version"]}
     print(f"{machine['cpu']}, {a.threads} threads, {machine['date']}; {machine['renderer']}")
-    fmt = "{:<11} {:<46} {:>11} {:>10} {:>13} {:>16}  {}"
+    fmt = "{:<11} {:<50} {:>11} {:>10} {:>13} {:>16}  {}"
     print(fmt.format("scene", "workload", "llvmpipe ms", "embree ms", "shadowlab ms", "shadowlab/peer", "shadowlab side"))
     num = lambda v: "-" if v is None else f"{v:.2f}"
     for r in rows:
