@@ -1,6 +1,6 @@
 // The wall time of a technique's stages, so a user sees where a frame goes: each lap ends
-// the stage that began at the previous lap (or when the timer was made) and reports it as
-// the stat "<stage>_ms", in the order the stages ran.
+// the stage that began at the previous lap (or when the timer was made) and is reported as
+// the stat "<stage>_ms", after the technique's other figures, in the order the stages ran.
 #pragma once
 
 #include <chrono>
@@ -13,16 +13,16 @@ namespace shadowlab {
 
 class StageTimer {
 public:
-    explicit StageTimer(std::vector<TechniqueStat>& stats) : stats_(stats) {}
-
     void lap(const std::string& stage) {
         const auto now = std::chrono::steady_clock::now();
-        stats_.push_back({stage + "_ms", std::chrono::duration<double, std::milli>(now - last_).count()});
+        laps_.push_back({stage + "_ms", std::chrono::duration<double, std::milli>(now - last_).count()});
         last_ = now;
     }
 
+    void appendTo(std::vector<TechniqueStat>& stats) const { stats.insert(stats.end(), laps_.begin(), laps_.end()); }
+
 private:
-    std::vector<TechniqueStat>& stats_;
+    std::vector<TechniqueStat> laps_;
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 

@@ -27,6 +27,7 @@
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_map_debug.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
@@ -138,9 +139,12 @@ void writeDebug(const ShadowInputs& in, const FilteredSettings& s, const SoftSha
 ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
     const FilteredSettings s = readSettings(kind, in.params);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    StageTimer timer;
     const SoftShadowMap soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),
                                                    kFitMarginTexels + 0.5 * s.widthTexels, s.pcssWidth);
+    timer.lap("map");
     const MomentMap moments = momentMap(soft, s.moments);
+    timer.lap("moments");
     MomentMap blurred;
     SummedAreaTable table;
     if (s.summedAreaTable) {
@@ -149,7 +153,9 @@ ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
     } else {
         blurred = blurMoments(moments, blurWeights(s.blur, s.widthTexels));
     }
+    timer.lap("filter");
     const PixelBuffers px = visibilityPerPixel(in, soft, s, blurred, table);
+    timer.lap("receivers");
     writeDebug(in, s, soft, moments, blurred, table, px);
     ShadowOutputs out;
     out.visibility = px.visibility;
@@ -158,6 +164,7 @@ ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
                  {"light_near_m", soft.zNear()},
                  {"light_far_m", soft.zFar()}};
     if (s.summedAreaTable) out.stats.push_back({"sat_error_bound_ratio", satRelativeError(s.moments, moments)});
+    timer.appendTo(out.stats);
     return out;
 }
 

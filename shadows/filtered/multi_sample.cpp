@@ -29,6 +29,7 @@
 #include "shadows/maps/shadow_bias.h"
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/receiver_pass.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
@@ -66,6 +67,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     fit.marginTexels = kFitMarginTexels;
     const DepthMapSettings depth{resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
     std::vector<uint16_t> lit(in.gbuffer.pixelCount(), 0);
+    StageTimer timer;
     Pcg32 rng(kLightSampleSeed, 0);
     for (int b = 0; b < perAxis; ++b) {
         for (int a = 0; a < perAxis; ++a) {
@@ -77,12 +79,15 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
             if (a == 0 && b == 0) writeDepthMap(debug, "depth-sample0", map);
         }
     }
+    timer.lap("maps_and_lookups");
     ShadowOutputs out;
     out.visibility.resize(lit.size());
     for (size_t k = 0; k < lit.size(); ++k) out.visibility[k] = float(lit[k]) / float(samples);
     debug.write("lit-count", in.gbuffer.width, in.gbuffer.height, std::vector<float>(lit.begin(), lit.end()), 0.0f,
                 float(samples));
-    out.stats = {{"resolution_texels", double(resolution)}, {"light_samples_count", double(samples)}, {"maps_count", double(samples)}};
+    out.stats = {{"resolution_texels", double(resolution)}, {"light_samples_count", double(samples)},
+                 {"maps_count", double(samples)}};
+    timer.appendTo(out.stats);
     return out;
 }
 

@@ -12,6 +12,7 @@
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_map_debug.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
@@ -64,8 +65,11 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
     const BlockerSearchSettings search = readBlockerSearch(in.params);
     const int filterTaps = in.params.integer("filter-taps");
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    StageTimer timer;
     const SoftShadowMap soft = renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kFitMarginTexels, true);
+    timer.lap("map");
     const PcssBuffers b = runPerPixel(in, soft, search, filterTaps);
+    timer.lap("receivers");
     writeDebug(in, soft, b);
     // Figures in pixel order (one thread): the same for any thread count.
     size_t penumbra = 0;
@@ -81,6 +85,7 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
                  {"mean_filter_width_texels", penumbra ? widthSum / double(penumbra) : 0.0},
                  {"light_near_m", soft.zNear()},
                  {"light_far_m", soft.zFar()}};
+    timer.appendTo(out.stats);
     return out;
 }
 

@@ -157,8 +157,7 @@ FinSettings readFinSettings(const ShadowInputs& in, const std::string& technique
 
 ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked by readFinSettings
-    std::vector<TechniqueStat> times;
-    StageTimer timer(times);
+    StageTimer timer;
     const FinScene scene = buildFinScene(in, s);
     timer.lap("silhouette_and_fins");
 
@@ -172,7 +171,7 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
     ShadowOutputs out;
     out.visibility = buffer.values();
     addFinStats(scene, s, layersDrawn, out.stats);
-    out.stats.insert(out.stats.end(), times.begin(), times.end());
+    timer.appendTo(out.stats);
     return out;
 }
 

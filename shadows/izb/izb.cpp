@@ -58,11 +58,14 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     const Light light = pointLightFor(in.light);
     const double diagonal = sceneDiagonal(in.world());
     ShadowOutputs out;
-    StageTimer timer(out.stats);
+    StageTimer timer;
     const izb::Receivers receivers = izb::gatherReceivers(in.gbuffer, light, diagonal, out.visibility);
     out.stats.push_back({"receiver_pixels", double(receivers.size())});
     timer.lap("receivers");
-    if (receivers.size() == 0) return out;
+    if (receivers.size() == 0) {
+        timer.appendTo(out.stats);
+        return out;
+    }
 
     std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world());
     const int resolution = requested ? *requested : izb::chooseResolution(views, receivers, kTargetListLength);
@@ -87,6 +90,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     out.stats.push_back({"texel_triangle_pairs_count", double(occlusion.texelPairs)});
     out.stats.push_back({"segment_tests_count", double(occlusion.segmentTests)});
     timer.lap("traversal");
+    timer.appendTo(out.stats);
     writeDebugBuffers(in, grid, lists, occlusion);
     return out;
 }

@@ -12,6 +12,7 @@
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/maps/shadow_map_settings.h"
 #include "shadows/maps/shadow_map_techniques.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
@@ -49,11 +50,15 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     if (in.light.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
+    StageTimer timer;
     const CascadedMaps cm = renderCascades(in.light, in.scene().camera, in.gbuffer, in.world(), cs, depthMapSettings(s), in.simd);
+    timer.lap("cascades");
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, in.light, cm.maps,
                                               cascadeSelector(cm, in.scene().camera), s.bias, makePcfKernel(s.filter),
                                               !in.debugDir.empty());
+    timer.lap("lookup");
     addStats(out, cm, s.resolution, lookup);
+    timer.appendTo(out.stats);
     const DebugBuffers debug(in.debugDir, "csm");
     for (size_t k = 0; k < cm.maps.size(); ++k) {
         if (cm.maps[k].size) writeDepthMap(debug, "depth-cascade" + std::to_string(k), cm.maps[k]);

@@ -20,6 +20,7 @@
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/maps/shadow_map_settings.h"
 #include "shadows/maps/shadow_map_techniques.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
@@ -129,10 +130,14 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
     if (forceCube && light.type != LightType::Point) throw std::invalid_argument("shadow-map: cube=always needs a point light");
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
+    StageTimer timer;
     const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm);
+    timer.lap("maps");
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, light, lm.maps, selectorFor(lm), s.bias,
                                               makePcfKernel(s.filter), !in.debugDir.empty());
+    timer.lap("lookup");
     addStats(out, lm, s, lookup);
+    timer.appendTo(out.stats);
     writeDebug(in, lm, s, lookup);
     out.visibility = lookup.visibility;
     return out;

@@ -33,6 +33,7 @@
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/silhouettes/silhouette.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
@@ -118,7 +119,9 @@ ShadowOutputs run(const ShadowInputs& in) {
     const glm::dvec4 plane(0.0, 1.0, 0.0, -in.params.real("plane-y"));
     const float opacity = float(in.params.real("opacity"));
     const glm::dvec4 light = homogeneousLight(pointLightFor(in.light));
+    StageTimer timer;
     const PlanarSplit split = splitScene(in.scene(), in.world(), plane, light);
+    timer.lap("split");
 
     const glm::dmat4 cameraFromWorld = clipFromWorldD(camera);
     const glm::mat4 clipFromWorld(cameraFromWorld);
@@ -129,6 +132,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     draw(rasterizer, fb, prepassState(), in.world(), in.world().triangles, clipFromWorld);
     draw(rasterizer, fb, receiverState(), in.world(), split.receivers, clipFromWorld);
     draw(rasterizer, fb, shadowState(), in.world(), split.casters, clipFromShadow, glm::vec4(0.0f, 0.0f, 0.0f, opacity));
+    timer.lap("stencil");
 
     const std::vector<uint8_t> stencil = fb.stencilImage();
     const GBuffer& g = in.gbuffer;
@@ -150,6 +154,8 @@ ShadowOutputs run(const ShadowInputs& in) {
         {"receiver_pixels", receiverPixels},
         {"shadowed_receiver_pixels", shadowed},
     };
+    timer.lap("visibility");
+    timer.appendTo(out.stats);
     const DebugBuffers debug(in.debugDir, "planar");
     if (debug.enabled()) {
         debug.write("shadow", camera.width, camera.height, fb.colorImage(0), 0.0f, 1.0f);

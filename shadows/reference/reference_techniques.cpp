@@ -1,6 +1,7 @@
 #include "shadows/reference/reference_techniques.h"
 
 #include "shadows/reference/reference.h"
+#include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
@@ -13,19 +14,27 @@ ShadowOutputs unshadowed(const ShadowInputs& in) {
 }
 
 ShadowOutputs exactReference(const ShadowInputs& in) {
+    StageTimer timer;
     const ReferenceVisibility reference(in.world());
+    timer.lap("bvh");
     ShadowOutputs out;
     out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light), {.progress = in.progress});
+    timer.lap("rays");
+    timer.appendTo(out.stats);
     return out;
 }
 
 // The soft shadows' reference: the visible fraction of the area light itself, from n x n
 // stratified samples (reference.h); point and directional lights give hard shadows.
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
-    const ReferenceVisibility reference(in.world());
-    ShadowOutputs out;
     const int samplesPerAxis = in.params.integer("samples-per-axis");
+    StageTimer timer;
+    const ReferenceVisibility reference(in.world());
+    timer.lap("bvh");
+    ShadowOutputs out;
     out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = samplesPerAxis, .progress = in.progress});
+    timer.lap("rays");
+    timer.appendTo(out.stats);
     return out;
 }
 

@@ -206,8 +206,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     const Camera& camera = in.scene().camera;
     const Light light = pointLightFor(in.light);
     const glm::dvec4 lightH = homogeneousLight(light);
-    std::vector<TechniqueStat> times;
-    StageTimer timer(times);
+    StageTimer timer;
     const CountingChoice choice = chooseCounting(in, lightH);
     const ShadowVolume volume = extrudeShadowVolume(in.scene(), in.world(), in.prepared.edgeAdjacency(), lightH,
                                                     choice.counting == Counting::ZFail);
@@ -224,7 +223,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb.stencilImage());
     timer.lap("visibility");
     addVolumeStats(in, choice, volume, fill, out);
-    out.stats.insert(out.stats.end(), times.begin(), times.end());
+    timer.appendTo(out.stats);
     if (debug.enabled()) writeDebug(debug, in, out, volume, fillPerPixel(rasterizer, fb, call));
     return out;
 }
