@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
 
 #include "app/timing.h"
 #include "frame/render.h"
@@ -101,6 +102,24 @@ RayTiming timeReferenceWithBuild(const BenchOptions& options, const ProgressStag
     return {scene.name, "built per run", 1, raysPerRun, t.medianMs, t.minMs};
 }
 
+FloorTiming timeFloor(const BenchOptions& options, const ProgressStage& runs) {
+    constexpr int kSize = 2048;
+    std::vector<float> buffer(size_t(kSize) * kSize);
+    const Timing t = timeRuns(options, runs, [&] {
+        tbb::parallel_for(0, kSize, [&](int row) {
+            std::fill_n(buffer.begin() + ptrdiff_t(row) * kSize, kSize, 1.0f);
+        });
+    });
+    return {1, t.medianMs, t.minMs};
+}
+
+// The floor of a row's thread count, 0 if it was not measured.
+double floorMs(const BenchResults& r, int threads) {
+    for (const FloorTiming& f : r.floors)
+        if (f.threads == threads) return f.medianMs;
+    return 0.0;
+}
+
 }  // namespace
 
 glm::mat4 lightClipFromWorld(const Scene& scene) {
@@ -112,8 +131,13 @@ glm::mat4 lightClipFromWorld(const Scene& scene) {
 
 BenchResults runBench(const BenchOptions& options) {
     BenchResults results;
-    const uint64_t rows = options.scenes.size() * options.threads.size() * kRowsPerSceneAndThreads;
+    const uint64_t rows = (options.scenes.size() * kRowsPerSceneAndThreads + 1) * options.threads.size();
     const ProgressStage runs(options.progress, "bench: run", rows * uint64_t(options.warmupRuns + options.runs));
+    for (int threads : options.threads) {
+        FloorTiming floor = withThreads(threads, [&] { return timeFloor(options, runs); });
+        floor.threads = threads;
+        results.floors.push_back(floor);
+    }
     for (const std::string& name : options.scenes) {
         const Scene scene = loadScene(name);
         const WorldGeometry world = flatten(scene);
@@ -155,6 +179,17 @@ std::string formatBenchText(const BenchResults& r) {
                       static_cast<unsigned long long>(p.stats.binEntries));
         out += line;
     }
+    for (const PassTiming& p : r.passes) {
+        if (p.pass.rfind("light", 0) != 0 || floorMs(r, p.threads) <= 0.0) continue;
+        std::snprintf(line, sizeof line, "%-11s %-30s %7d  %.1f x the floor\n", p.scene.c_str(), p.pass.c_str(), p.threads,
+                      p.medianMs / floorMs(r, p.threads));
+        out += line;
+    }
+    for (const FloorTiming& f : r.floors) {
+        std::snprintf(line, sizeof line, "floor: fill 2048x2048 floats, %d threads: %.2f ms (min %.2f)\n", f.threads,
+                      f.medianMs, f.minMs);
+        out += line;
+    }
     std::snprintf(line, sizeof line, "\n%-11s %-14s %7s %10s %10s %9s %9s\n", "scene", "bvh", "threads", "rays", "median ms", "min ms",
                   "Mrays/s");
     out += line;
@@ -182,6 +217,8 @@ std::string formatBenchJson(const BenchResults& r) {
         j["reference"].push_back({{"scene", t.scene}, {"bvh", t.bvh}, {"threads", t.threads}, {"rays", t.rays},
                                   {"median_ms", t.medianMs}, {"min_ms", t.minMs}, {"mrays_per_s", t.mraysPerSecond()}});
     }
+    j["floor"] = nlohmann::json::array();
+    for (const FloorTiming& f : r.floors) j["floor"].push_back({{"threads", f.threads}, {"median_ms", f.medianMs}, {"min_ms", f.minMs}});
     return j.dump(2) + "\n";
 }
 

@@ -49,9 +49,17 @@ struct BenchOptions {
     Progress* progress = nullptr;   // reports the runs done, warm-up ones included
 };
 
+// The floor under a light pass: filling a 2048 x 2048 float buffer with one value, rows in
+// parallel, the least any depth pass of that size writes (its clear alone).
+struct FloorTiming {
+    int threads = 1;
+    double medianMs = 0.0, minMs = 0.0;
+};
+
 struct BenchResults {
     std::vector<PassTiming> passes;
     std::vector<RayTiming> rays;
+    std::vector<FloorTiming> floors;   // one per thread count
 };
 
 // The light pass's matrix: the scene's first light looking at the origin, perspective with
