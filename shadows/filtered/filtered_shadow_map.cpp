@@ -138,6 +138,7 @@ void writeDebug(const ShadowInputs& in, const FilteredSettings& s, const SoftSha
 
 ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
     const FilteredSettings s = readSettings(kind, in.params);
+    requireAreaLight(in.light, momentKindName(kind));
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const SoftShadowMap soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),

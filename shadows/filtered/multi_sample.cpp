@@ -23,6 +23,7 @@
 #include "shading/light_sampling.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
+#include "shadows/filtered/soft_shadow_map.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/light_view.h"
 #include "shadows/maps/pcf.h"
@@ -59,6 +60,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     if (perAxis * perAxis != samples) {
         throw std::invalid_argument("multi-sample: samples must be a square (n x n strata), not " + std::to_string(samples));
     }
+    requireAreaLight(in.light, "multi-sample");
     const AreaLightFrame frame = areaLightFrame(in.light);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     const DebugBuffers debug(in.debugDir, "multi-sample");

@@ -64,6 +64,7 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
     const int resolution = in.params.integer("resolution");
     const BlockerSearchSettings search = readBlockerSearch(in.params);
     const int filterTaps = in.params.integer("filter-taps");
+    requireAreaLight(in.light, "pcss");
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const SoftShadowMap soft = renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kFitMarginTexels, true);

@@ -49,6 +49,11 @@ double SoftShadowMap::distanceOf(float windowDepth) const {
     return f * n / (f - double(windowDepth) * (f - n));
 }
 
+void requireAreaLight(const Light& light, const std::string& technique) {
+    if (light.type != LightType::Disk && light.type != LightType::Rectangle)
+        throw std::invalid_argument(technique + ": needs an area light (disk or rectangle)");
+}
+
 SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
                                   double marginTexels, bool coverBlockerSearch) {
     const AreaLightFrame frame = areaLightFrame(in.light);

@@ -20,6 +20,7 @@
 // the width for d_o = near, which holds every texel an occluder can shadow P from.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -53,6 +54,10 @@ struct SoftReceiver {
     double distance = 0.0;             // d_r: view-space distance from the light's centre, m
     bool facesLight = false;           // lightReaches(): dot(N, centre - P) > 0 (else V = 0)
 };
+
+// Throws std::invalid_argument naming the technique unless the light is a disk or a
+// rectangle: what every technique of this family needs, checked before any other work.
+void requireAreaLight(const Light& light, const std::string& technique);
 
 // Throws std::invalid_argument unless the light is a disk or a rectangle. The receivers
 // stay marginTexels inside the map's sides, and with coverBlockerSearch also the widest

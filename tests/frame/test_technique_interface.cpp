@@ -67,6 +67,10 @@ TEST_CASE("a view that sees no surface gives V = 0 everywhere for every techniqu
     // The settings and the light are still checked: an empty view hides no error.
     CHECK_THROWS_WITH_AS(renderFrame(disk, findTechnique("csm")), "csm: needs a directional light", std::invalid_argument);
     CHECK_THROWS_WITH_AS(renderFrame(sun, findTechnique("fins")), "fins: needs a disk light", std::invalid_argument);
+    for (const char* soft : {"pcss", "vsm", "msm", "multi-sample"}) {
+        CHECK_THROWS_WITH_AS(renderFrame(sun, findTechnique(soft)), (std::string(soft) + ": needs an area light (disk or rectangle)").c_str(),
+                             std::invalid_argument);
+    }
     FrameSettings notSquare;
     notSquare.params = {{"samples", "5"}};
     CHECK_THROWS_AS(renderFrame(disk, findTechnique("multi-sample"), notSquare), std::invalid_argument);
