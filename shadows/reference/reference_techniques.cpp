@@ -13,29 +13,25 @@ ShadowOutputs unshadowed(const ShadowInputs& in) {
     return out;
 }
 
-ShadowOutputs exactReference(const ShadowInputs& in) {
+// V of `light` by Embree rays, the scene's BVH built in this frame: both stages timed.
+ShadowOutputs referenceVisibility(const ShadowInputs& in, const Light& light, ReferenceOptions options) {
     StageTimer timer;
     const ReferenceVisibility reference(in.world());
     timer.lap("bvh");
+    options.progress = in.progress;
     ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, pointLightFor(in.light), {.progress = in.progress});
+    out.visibility = reference.visibility(in.gbuffer, light, options);
     timer.lap("rays");
     timer.appendTo(out.stats);
     return out;
 }
 
+ShadowOutputs exactReference(const ShadowInputs& in) { return referenceVisibility(in, pointLightFor(in.light), {}); }
+
 // The soft shadows' reference: the visible fraction of the area light itself, from n x n
 // stratified samples (reference.h); point and directional lights give hard shadows.
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
-    const int samplesPerAxis = in.params.integer("samples-per-axis");
-    StageTimer timer;
-    const ReferenceVisibility reference(in.world());
-    timer.lap("bvh");
-    ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, in.light, {.areaSamplesPerAxis = samplesPerAxis, .progress = in.progress});
-    timer.lap("rays");
-    timer.appendTo(out.stats);
-    return out;
+    return referenceVisibility(in, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis")});
 }
 
 }  // namespace
