@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,20 +46,26 @@ struct Row {
     double medianMs = 0.0, minMs = 0.0;
 };
 
-inline Timing timeFrames(const Options& o, const std::function<void()>& frame) {
-    for (int k = 0; k < o.warmupRuns; ++k) {
-        frame();
-        glFinish();
-    }
+// The median of `runs` runs of `work` after `warmup` runs, wall time.
+inline Timing timeRuns(const Options& o, const std::function<void()>& work) {
+    for (int k = 0; k < o.warmupRuns; ++k) work();
     std::vector<double> ms;
     for (int k = 0; k < o.runs; ++k) {
         const auto start = std::chrono::steady_clock::now();
-        frame();
-        glFinish();
+        work();
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
-    checkGl("timed frames");
     return summarizeTimes(std::move(ms));
+}
+
+// A GL frame ends with glFinish, so its time is the work done, not queued.
+inline Timing timeFrames(const Options& o, const std::function<void()>& frame) {
+    const Timing t = timeRuns(o, [&] {
+        frame();
+        glFinish();
+    });
+    checkGl("timed frames");
+    return t;
 }
 
 struct Programs {
@@ -67,31 +74,47 @@ struct Programs {
     GLuint lit = program(kVertexShader, std::string("#version 330 core\n") + kShadeFragment);
 };
 
-// The shadow map's depth pass as the shadow-map technique draws it (shadows/depth_map.cpp,
-// first layer): no culling, depth test LESS, cleared to 1, slope-scaled polygon offset with
-// shadowlab's default factor 1.5 and units 4. GL's offset is factor * max|dz/dx, dz/dy| +
-// units * r, where r, the minimum resolvable difference, is implementation-defined for
+// A depth-only pass into `target`: depth test LESS, cleared to 1, with back faces culled or
+// not and with a polygon offset or none. The shadow map's pass, as the shadow-map technique
+// draws it (shadows/depth_map.cpp, first layer), culls nothing and takes the slope-scaled
+// offset with shadowlab's default factor 1.5 and units 4 (shadowMapPass). GL's offset is
+// factor * max|dz/dx, dz/dy| + units * r, where r, the minimum resolvable difference, is implementation-defined for
 // fixed-point buffers; for a floating-point depth buffer (DEPTH_COMPONENT32F here) the GL
 // spec (4.6, 14.6.5) makes it 2^(e - 23), e the exponent of the primitive's largest depth,
 // which is exactly what shadowlab's rasterizer uses (raster/setup.cpp, polygonOffset): so
 // units = 4 means four float steps at the triangle's depth in both.
-inline void drawShadowMapDepth(const Programs& p, const Mesh& scene, const DepthTarget& target, const glm::mat4& clipFromWorld) {
-    const raster::PolygonOffset offset = polygonOffsetFor(BiasSettings{});
+struct DepthPass {
+    bool cullBackFaces = false;
+    std::optional<raster::PolygonOffset> offset;
+};
+
+inline DepthPass shadowMapPass() { return {false, polygonOffsetFor(BiasSettings{})}; }
+inline DepthPass cameraPrepassPass() { return {true, std::nullopt}; }
+
+inline void drawDepth(const Programs& p, const Mesh& scene, const DepthTarget& target, const glm::mat4& clipFromWorld,
+                      const DepthPass& pass) {
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
     glViewport(0, 0, target.width, target.height);
-    glDisable(GL_CULL_FACE);
+    if (pass.cullBackFaces) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(GL_CCW);
+    }
     glDisable(GL_STENCIL_TEST);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(offset.factor, offset.units);
+    if (pass.offset) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(pass.offset->factor, pass.offset->units);
+    }
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
     glUseProgram(p.depthOnly);
     setMatrix(p.depthOnly, "clipFromWorld", clipFromWorld);
     draw(scene);
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CULL_FACE);
 }
 
 struct SceneGl {
@@ -159,7 +182,7 @@ private:
     Row lightPass() {
         const DepthTarget target(o_.lightSize, o_.lightSize);
         const glm::mat4 m = lightClipFromWorld(scene());
-        const Timing t = timeFrames(o_, [&] { drawShadowMapDepth(p_, s_.mesh, target, m); });
+        const Timing t = timeFrames(o_, [&] { drawDepth(p_, s_.mesh, target, m, shadowMapPass()); });
         if (o_.check) requireVaried(readDepth(target), "light pass depth");
         return row("light pass", o_.lightSize, o_.lightSize, t);
     }
@@ -169,22 +192,7 @@ private:
         const Camera& c = scene().camera;
         const DepthTarget target(c.width, c.height);
         const glm::mat4 m = clipFromWorld(c);
-        const Timing t = timeFrames(o_, [&] {
-            glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
-            glViewport(0, 0, c.width, c.height);
-            glEnable(GL_CULL_FACE);
-            glCullFace(GL_BACK);
-            glFrontFace(GL_CCW);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
-            glDepthMask(GL_TRUE);
-            glClearDepth(1.0);
-            glClear(GL_DEPTH_BUFFER_BIT);
-            glUseProgram(p_.depthOnly);
-            setMatrix(p_.depthOnly, "clipFromWorld", m);
-            draw(s_.mesh);
-        });
-        glDisable(GL_CULL_FACE);
+        const Timing t = timeFrames(o_, [&] { drawDepth(p_, s_.mesh, target, m, cameraPrepassPass()); });
         if (o_.check) requireVaried(readDepth(target), "camera prepass depth");
         return row("camera prepass", c.width, c.height, t);
     }
@@ -207,7 +215,7 @@ private:
         const ColorTarget target(c.width, c.height);
         const glm::mat4 cameraMatrix = clipFromWorld(c);
         const Timing t = timeFrames(o_, [&] {
-            drawShadowMapDepth(p_, s_.mesh, map, lightMatrix);
+            drawDepth(p_, s_.mesh, map, lightMatrix, shadowMapPass());
             glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
             glViewport(0, 0, c.width, c.height);
             glDepthFunc(GL_LESS);
@@ -245,7 +253,7 @@ private:
         const Camera& c = scene().camera;
         const glm::dvec4 light(glm::dvec3(pointLightFor(scene().lights.at(0)).position), 1.0);
         const auto& adjacency = s_.prepared.edgeAdjacency();
-        const Timing build = timeRuns([&] { extrudeShadowVolume(scene(), s_.prepared.world(), adjacency, light, true); });
+        const Timing build = timeRuns(o_, [&] { extrudeShadowVolume(scene(), s_.prepared.world(), adjacency, light, true); });
         const ShadowVolume volume = extrudeShadowVolume(scene(), s_.prepared.world(), adjacency, light, true);
         const Mesh volumeMesh = upload(volume.vertices, volume.triangles);
         const ColorTarget target(c.width, c.height);
@@ -301,17 +309,6 @@ private:
         Row geometry = row("volume geometry (cpu)", 0, 0, build, "cpu");
         geometry.triangles = volume.triangles.size();
         return {frame, geometry};
-    }
-
-    Timing timeRuns(const std::function<void()>& work) const {
-        for (int k = 0; k < o_.warmupRuns; ++k) work();
-        std::vector<double> ms;
-        for (int k = 0; k < o_.runs; ++k) {
-            const auto start = std::chrono::steady_clock::now();
-            work();
-            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        }
-        return summarizeTimes(std::move(ms));
     }
 
     template <typename T>
