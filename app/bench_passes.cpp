@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -73,33 +74,23 @@ PassTiming timeDepthPass(const BenchOptions& options, const ProgressStage& runs,
     return row;
 }
 
+// One shadow ray per G-buffer pixel to the first light, with the BVH built once before the
+// runs or, with `buildEachRun`, in every run, as for geometry that changes every frame (the
+// time is then the construction plus the rays).
 RayTiming timeReference(const BenchOptions& options, const ProgressStage& runs, const Scene& scene,
-                        const WorldGeometry& world) {
-    const GBuffer gbuffer = renderGBuffer(world, scene.camera, options.simd);
-    const ReferenceVisibility reference(world);
+                        const WorldGeometry& world, const GBuffer& gbuffer, bool buildEachRun) {
     const Light light = pointLightFor(scene.lights.at(0));
+    std::optional<ReferenceVisibility> once;
+    if (!buildEachRun) once.emplace(world);
     uint64_t raysPerRun = 0;
     const Timing t = timeRuns(options, runs, [&] {
+        std::optional<ReferenceVisibility> perRun;
+        const ReferenceVisibility& reference = buildEachRun ? perRun.emplace(world) : *once;
         const uint64_t before = reference.raysCast();
         reference.visibility(gbuffer, light);
         raysPerRun = reference.raysCast() - before;
     });
-    return {scene.name, "built once", 1, raysPerRun, t.medianMs, t.minMs};
-}
-
-// The same rays with the BVH built in every run, as for geometry that changes every frame:
-// the time is the construction plus the rays.
-RayTiming timeReferenceWithBuild(const BenchOptions& options, const ProgressStage& runs, const Scene& scene,
-                                 const WorldGeometry& world) {
-    const GBuffer gbuffer = renderGBuffer(world, scene.camera, options.simd);
-    const Light light = pointLightFor(scene.lights.at(0));
-    uint64_t raysPerRun = 0;
-    const Timing t = timeRuns(options, runs, [&] {
-        const ReferenceVisibility reference(world);
-        reference.visibility(gbuffer, light);
-        raysPerRun = reference.raysCast();
-    });
-    return {scene.name, "built per run", 1, raysPerRun, t.medianMs, t.minMs};
+    return {scene.name, buildEachRun ? "built per run" : "built once", 1, raysPerRun, t.medianMs, t.minMs};
 }
 
 FloorTiming timeFloor(const BenchOptions& options, const ProgressStage& runs) {
@@ -154,12 +145,12 @@ BenchResults runBench(const BenchOptions& options) {
                 camera.scene = name, camera.threads = threads;
                 camera.pass = "camera " + std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height);
                 results.passes.push_back(camera);
-                RayTiming rays = timeReference(options, runs, scene, world);
-                rays.threads = threads;
-                results.rays.push_back(rays);
-                RayTiming rebuilt = timeReferenceWithBuild(options, runs, scene, world);
-                rebuilt.threads = threads;
-                results.rays.push_back(rebuilt);
+                const GBuffer gbuffer = renderGBuffer(world, scene.camera, options.simd);
+                for (bool buildEachRun : {false, true}) {
+                    RayTiming rays = timeReference(options, runs, scene, world, gbuffer, buildEachRun);
+                    rays.threads = threads;
+                    results.rays.push_back(rays);
+                }
             });
         }
     }
