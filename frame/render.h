@@ -41,8 +41,8 @@ struct Frame {
     TechniqueOutput output = TechniqueOutput::Visibility;   // the technique's
     std::vector<glm::vec3> radiance;   // linear, row-major: V shaded, or the technique's own
     double techniqueMs = 0.0;          // wall time of the technique alone
-    // Scene preparation this frame did (PreparedScene::preparationTimes(), e.g. the edge
-    // adjacency on the first frame of a technique that reads it), outside techniqueMs.
+    // Scene preparation this frame did (the edge adjacency, on the first frame of a
+    // technique that reads it: PreparedScene::buildEdgeAdjacency()), outside techniqueMs.
     std::vector<TechniqueStat> preparation;
 };
 

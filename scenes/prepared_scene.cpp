@@ -16,9 +16,7 @@ double millisecondsOf(F&& work) {
 
 }  // namespace
 
-PreparedScene::PreparedScene(Scene scene) : scene_(std::move(scene)) {
-    flattenMs_ = millisecondsOf([&] { world_ = flatten(scene_); });
-}
+PreparedScene::PreparedScene(Scene scene) : scene_(std::move(scene)), world_(flatten(scene_)) {}
 
 std::optional<double> PreparedScene::buildEdgeAdjacency() const {
     std::optional<double> builtHere;
@@ -26,7 +24,6 @@ std::optional<double> PreparedScene::buildEdgeAdjacency() const {
         // Isolated: while this thread waits inside the parallel build, TBB must not hand it
         // another task that could ask this scene for its adjacency and wait on the same flag.
         builtHere = millisecondsOf([&] { tbb::this_task_arena::isolate([&] { adjacency_ = sceneEdgeAdjacency(scene_); }); });
-        adjacencyMs_.store(*builtHere);
     });
     return builtHere;
 }
@@ -34,12 +31,6 @@ std::optional<double> PreparedScene::buildEdgeAdjacency() const {
 const std::vector<EdgeAdjacency>& PreparedScene::edgeAdjacency() const {
     buildEdgeAdjacency();
     return adjacency_;
-}
-
-std::vector<std::pair<std::string, double>> PreparedScene::preparationTimes() const {
-    std::vector<std::pair<std::string, double>> times = {{"flatten_ms", flattenMs_}};
-    if (const double ms = adjacencyMs_.load(); ms >= 0.0) times.emplace_back("edge_adjacency_ms", ms);
-    return times;
 }
 
 }  // namespace shadowlab

@@ -5,11 +5,8 @@
 // or an edited copy of one, can never share stale data.
 #pragma once
 
-#include <atomic>
 #include <mutex>
 #include <optional>
-#include <string>
-#include <utility>
 #include <vector>
 
 #include "scenes/edge_adjacency.h"
@@ -38,17 +35,11 @@ public:
     // call that built it, nothing to every other: the cost is reported once.
     std::optional<double> buildEdgeAdjacency() const;
 
-    // The preparation stages built so far and their wall time, e.g. {"flatten_ms", 3.1}
-    // and, once built, {"edge_adjacency_ms", 12.0}.
-    std::vector<std::pair<std::string, double>> preparationTimes() const;
-
 private:
     Scene scene_;
     WorldGeometry world_;
-    double flattenMs_ = 0.0;
     mutable std::once_flag adjacencyBuilt_;
     mutable std::vector<EdgeAdjacency> adjacency_;
-    mutable std::atomic<double> adjacencyMs_{-1.0};   // < 0 until built
 };
 
 }  // namespace shadowlab
