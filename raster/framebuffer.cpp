@@ -32,14 +32,6 @@ void Framebuffer::clearColor(const glm::vec4& value) {
     for (int c = 0; c < 4; ++c) std::fill(color_[c].begin(), color_[c].end(), value[c]);
 }
 
-size_t Framebuffer::index(int x, int y) const {
-    const size_t tile = size_t(y >> kTileShift) * size_t(tilesX_) + size_t(x >> kTileShift);
-    const int blockX = (x >> kBlockShift) & (kBlocksPerTileSide - 1);
-    const int blockY = (y >> kBlockShift) & (kBlocksPerTileSide - 1);
-    const int inBlock = (y & (kBlockSize - 1)) * kBlockSize + (x & (kBlockSize - 1));
-    return tile * kPixelsPerTile + size_t(blockY * kBlocksPerTileSide + blockX) * kPixelsPerBlock + size_t(inBlock);
-}
-
 FramebufferView Framebuffer::view() {
     auto dataOrNull = [](auto& v) { return v.empty() ? nullptr : v.data(); };
     return {width_, height_, tilesX_, depth_.data(), dataOrNull(stencil_),

@@ -12,6 +12,15 @@
 
 namespace shadowlab::raster {
 
+// Storage index of pixel (x, y) in a block-linear buffer tilesX tiles wide (FramebufferView).
+inline size_t blockLinearIndex(int x, int y, int tilesX) {
+    const size_t tile = size_t(y >> kTileShift) * size_t(tilesX) + size_t(x >> kTileShift);
+    const int blockX = (x >> kBlockShift) & (kBlocksPerTileSide - 1);
+    const int blockY = (y >> kBlockShift) & (kBlocksPerTileSide - 1);
+    const int inBlock = (y & (kBlockSize - 1)) * kBlockSize + (x & (kBlockSize - 1));
+    return tile * kPixelsPerTile + size_t(blockY * kBlocksPerTileSide + blockX) * kPixelsPerBlock + size_t(inBlock);
+}
+
 struct Attachments {
     bool stencil = false;
     bool color = false;         // four float planes R, G, B, A
@@ -36,10 +45,13 @@ public:
     void clearPrimitiveId(uint32_t value);
 
     // Storage index of pixel (x, y).
-    size_t index(int x, int y) const;
+    size_t index(int x, int y) const { return blockLinearIndex(x, y, tilesX_); }
     FramebufferView view();
 
     std::vector<float> depthImage() const;
+    // The depth buffer itself, block-linear (index()), moved out without a copy; the
+    // framebuffer has no depth afterwards.
+    std::vector<float> takeDepth() { return std::move(depth_); }
     std::vector<uint8_t> stencilImage() const;
     std::vector<float> colorImage(int channel) const;
     std::vector<uint32_t> primitiveIdImage() const;

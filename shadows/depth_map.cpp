@@ -1,6 +1,6 @@
 #include "shadows/depth_map.h"
 
-#include <algorithm>
+#include <tbb/parallel_for.h>
 
 #include "raster/rasterizer.h"
 
@@ -20,14 +20,17 @@ std::vector<float> depthLayer(std::span<const glm::vec3> positions, std::span<co
     state.output = raster::FragmentOutput::DepthOnly;
     raster::Rasterizer rasterizer(simd);
     rasterizer.draw(framebuffer, state, raster::positionsDraw(positions, triangles, clipFromWorld));
-    return framebuffer.depthImage();
+    return framebuffer.takeDepth();
 }
 
 }  // namespace
 
-float DepthMap::at(int x, int y) const {
-    x = std::clamp(x, 0, size - 1), y = std::clamp(y, 0, size - 1);
-    return depth[size_t(y) * size_t(size) + size_t(x)];
+std::vector<float> DepthMap::image() const {
+    std::vector<float> rows(size_t(size) * size_t(size));
+    tbb::parallel_for(0, size, [&](int y) {
+        for (int x = 0; x < size; ++x) rows[size_t(y) * size_t(size) + size_t(x)] = at(x, y);
+    });
+    return rows;
 }
 
 glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size) {
@@ -50,6 +53,7 @@ DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const gl
     const glm::mat4 clipFromWorld(view.clipFromWorld());
     DepthMap map;
     map.size = settings.size;
+    map.tilesX = (settings.size + raster::kTileSize - 1) / raster::kTileSize;
     map.view = view;
     map.texelFromWorld = texelFromWorldOf(clipFromWorld, settings.size);
     map.worldFromTexel = glm::inverse(map.texelFromWorld);

@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "raster/fixed_point.h"
+#include "raster/framebuffer.h"
 #include "raster/pipeline_state.h"
 #include "raster/tile_kernels.h"
 #include "scenes/scene.h"
@@ -35,10 +36,19 @@ struct DepthMap {
     // rasterizer used, so a lookup lands where the map's triangles were drawn.
     glm::dmat4 texelFromWorld{1.0};
     glm::dmat4 worldFromTexel{1.0};         // its inverse, for receiver planes and texel sizes
-    std::vector<float> depth;               // row-major, row 0 at the top
+    // The rasterizer's depth buffer as it drew it, block-linear (raster::blockLinearIndex):
+    // read in place, never copied to rows, so a lookup's neighbouring taps share a block.
+    std::vector<float> depth;
+    int tilesX = 0;
 
     // The texel's depth; coordinates outside the map are clamped to its border.
-    float at(int x, int y) const;
+    float at(int x, int y) const {
+        x = x < 0 ? 0 : x >= size ? size - 1 : x;
+        y = y < 0 ? 0 : y >= size ? size - 1 : y;
+        return depth[raster::blockLinearIndex(x, y, tilesX)];
+    }
+    // Row-major, row 0 at the top: the map as an image (debug views, filtered maps).
+    std::vector<float> image() const;
 };
 
 // The window transform of a size x size map after `clipFromWorld` (float, as drawn).

@@ -78,9 +78,10 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
     view = withFarPlane(view, view.zFar * kFarPlaneHeadroom);
     SoftShadowMap soft;
     soft.map = renderDepthMap(in.world(), view, {resolution, DepthLayer::First, offset}, in.simd);
-    soft.linear.resize(soft.map.depth.size());
+    soft.linear = soft.map.image();
     tbb::parallel_for(size_t(0), soft.linear.size(), [&](size_t k) {
-        soft.linear[k] = soft.map.depth[k] >= 1.0f ? 1.0f : float(soft.normalised(soft.distanceOf(soft.map.depth[k])));
+        float& z = soft.linear[k];
+        z = z >= 1.0f ? 1.0f : float(soft.normalised(soft.distanceOf(z)));
     });
     soft.light = in.light;
     soft.lightCentre = frame.centre;

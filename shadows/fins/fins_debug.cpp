@@ -45,7 +45,7 @@ void FinDebug::writeLayer(int layer, const DepthMap& hard, const PenumbraMap* in
                           float edgeWeight, const GBuffer& gbuffer, const std::vector<float>& illuminance) const {
     if (!debug_.enabled()) return;
     const std::string prefix = layerPrefix(layer);
-    debug_.write(prefix + "shadow-map", hard.size, hard.size, hard.depth, 0.0f, 1.0f);
+    debug_.write(prefix + "shadow-map", hard.size, hard.size, hard.image(), 0.0f, 1.0f);
     if (inner) writePenumbraMap(prefix + "inner-", *inner, edgeWeight);
     writePenumbraMap(prefix + "outer-", outer, edgeWeight);
     debug_.write(prefix + "illuminance", gbuffer.width, gbuffer.height, illuminance, 0.0f, 1.0f);

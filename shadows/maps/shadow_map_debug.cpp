@@ -9,9 +9,9 @@ namespace shadowlab {
 
 void writeDepthMap(const DebugBuffers& debug, const std::string& name, const DepthMap& map) {
     if (!debug.enabled()) return;
-    float nearest = 1.0f;
-    for (float z : map.depth) nearest = std::min(nearest, z);
-    debug.write(name, map.size, map.size, map.depth, nearest, 1.0f);
+    const std::vector<float> image = map.image();
+    const float nearest = *std::min_element(image.begin(), image.end());
+    debug.write(name, map.size, map.size, image, nearest, 1.0f);
 }
 
 void writeTexelDensity(const DebugBuffers& debug, const GBuffer& g, const ShadowLookup& lookup) {

@@ -16,9 +16,10 @@ constexpr int kSize = 32, kEdge = 16;   // texels x < kEdge hold an occluder (de
 DepthMap edgeMap() {
     DepthMap map;
     map.size = kSize;
-    map.depth.resize(kSize * kSize);
+    map.tilesX = 1;
+    map.depth.resize(raster::kPixelsPerTile);
     for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) map.depth[y * kSize + x] = x < kEdge ? 0.0f : 1.0f;
+        for (int x = 0; x < kSize; ++x) map.depth[raster::blockLinearIndex(x, y, map.tilesX)] = x < kEdge ? 0.0f : 1.0f;
     }
     return map;
 }
