@@ -51,6 +51,16 @@ struct DepthMap {
     std::vector<float> image() const;
 };
 
+// The texel holding texel coordinate c, floor(c), saturated to +-2^30 (NaN to -2^30) so
+// that any coordinate is a valid int that at() then clamps. Truncation plus a correction
+// instead of std::floor: without SSE4.1 the library call cost more than the whole tap.
+inline int texelIndexOf(double c) {
+    constexpr double kLimit = 1073741824.0;
+    const double saturated = c > -kLimit ? (c < kLimit ? c : kLimit) : -kLimit;
+    const int truncated = int(saturated);
+    return truncated - (saturated < double(truncated) ? 1 : 0);
+}
+
 // The window transform of a size x size map after `clipFromWorld` (float, as drawn).
 glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size);
 

@@ -39,7 +39,7 @@ PenumbraEstimate estimatePenumbra(const SoftShadowMap& soft, const MapReceiver& 
     double distanceSum = 0.0;   // in tap order: the same sum for any thread count
     for (const glm::dvec2& d : disk) {
         const glm::dvec2 at = r.texel + rotatedTap(d, rotation, radius);
-        const int x = int(std::floor(at.x)), y = int(std::floor(at.y));
+        const int x = texelIndexOf(at.x), y = texelIndexOf(at.y);
         if (r.litBy(soft.map, x, y)) continue;
         ++e.blockers;
         distanceSum += soft.distanceOf(soft.map.at(x, y));

@@ -86,7 +86,7 @@ MomentMap blurMoments(const MomentMap& in, const std::vector<double>& weights) {
 
 void sampleBilinear(const MomentMap& m, const glm::dvec2& texel, double* out) {
     const glm::dvec2 base = texel - 0.5;
-    const int x = int(std::floor(base.x)), y = int(std::floor(base.y));
+    const int x = texelIndexOf(base.x), y = texelIndexOf(base.y);
     const double fx = base.x - x, fy = base.y - y;
     const double *a = m.at(x, y), *b = m.at(x + 1, y), *c = m.at(x, y + 1), *d = m.at(x + 1, y + 1);
     for (int k = 0; k < m.channels; ++k) out[k] = (1.0 - fy) * ((1.0 - fx) * a[k] + fx * b[k]) + fy * ((1.0 - fx) * c[k] + fx * d[k]);

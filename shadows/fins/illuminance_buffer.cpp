@@ -9,7 +9,7 @@ namespace shadowlab {
 namespace {
 
 // The texel holding coordinate v (texel units) of a size-texel map, clamped to its border.
-int texelOf(double v, int size) { return int(std::clamp(std::floor(v), 0.0, double(size - 1))); }
+int texelOf(double v, int size) { return std::clamp(texelIndexOf(v), 0, size - 1); }
 
 }  // namespace
 

@@ -54,7 +54,7 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     const CascadedMaps cm = renderCascades(in.light, in.scene().camera, in.gbuffer, in.world(), cs, depthMapSettings(s), in.simd);
     timer.lap("cascades");
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, in.light, cm.maps,
-                                              cascadeSelector(cm, in.scene().camera), s.bias, makePcfKernel(s.filter),
+                                              CascadeSelector{cm, in.scene().camera}, s.bias, makePcfKernel(s.filter),
                                               !in.debugDir.empty());
     timer.lap("lookup");
     addStats(out, cm, s.resolution, lookup);
@@ -80,13 +80,6 @@ CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffe
         if (out.cascades[k].hasReceivers) out.maps[k] = renderDepthMap(world, out.cascades[k].view, maps, simd);
     }
     return out;
-}
-
-MapSelector cascadeSelector(const CascadedMaps& cm, const Camera& camera) {
-    return [&cm, camera](const glm::dvec3& P, size_t) {
-        const int k = cascadeOf(cm.cascades, viewDepth(camera, P));
-        return cm.maps[k].size ? k : -1;
-    };
 }
 
 Technique cascadedShadowMapTechnique() {

@@ -19,7 +19,15 @@ struct CascadedMaps {
 CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffer& receivers, const WorldGeometry& world,
                             const CascadeSettings& cascades, const DepthMapSettings& maps, raster::SimdLevel simd);
 
-// Picks the cascade by the receiver's distance along the camera's view axis.
-MapSelector cascadeSelector(const CascadedMaps& cascaded, const Camera& camera);
+// The map selector of cascades: the cascade by the receiver's distance along the camera's
+// view axis, -1 where that cascade has no map.
+struct CascadeSelector {
+    const CascadedMaps& cascaded;
+    const Camera& camera;
+    int operator()(const glm::dvec3& P) const {
+        const int k = cascadeOf(cascaded.cascades, viewDepth(camera, P));
+        return cascaded.maps[k].size ? k : -1;
+    }
+};
 
 }  // namespace shadowlab

@@ -17,31 +17,6 @@ uint64_t splitMix64(uint64_t x) {
 
 double unitInterval(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
 
-int texelOf(double coordinate) { return int(std::floor(coordinate)); }
-
-double nearest(const DepthMap& map, const MapReceiver& r, const glm::dvec2& at) {
-    return r.litBy(map, texelOf(at.x), texelOf(at.y)) ? 1.0 : 0.0;
-}
-
-// The four texel centres around the receiver and its bilinear weights (section 7.5).
-double bilinear(const DepthMap& map, const MapReceiver& r) {
-    const glm::dvec2 base = r.texel - 0.5;
-    const int x0 = texelOf(base.x), y0 = texelOf(base.y);
-    const double fx = base.x - x0, fy = base.y - y0;
-    const double top = (1.0 - fx) * r.litBy(map, x0, y0) + fx * r.litBy(map, x0 + 1, y0);
-    const double bottom = (1.0 - fx) * r.litBy(map, x0, y0 + 1) + fx * r.litBy(map, x0 + 1, y0 + 1);
-    return (1.0 - fy) * top + fy * bottom;
-}
-
-double grid(const DepthMap& map, const MapReceiver& r, int n) {
-    const double first = -0.5 * (n - 1);
-    int lit = 0;
-    for (int b = 0; b < n; ++b) {
-        for (int a = 0; a < n; ++a) lit += r.litBy(map, texelOf(r.texel.x + first + a), texelOf(r.texel.y + first + b));
-    }
-    return double(lit) / double(n * n);
-}
-
 // Mitchell's best-candidate algorithm: each new tap is the candidate farthest from the
 // taps so far, of `kCandidatesPerTap` times as many candidates as taps, drawn uniformly on
 // the unit disk from a fixed hash sequence. It approximates a Poisson-disk distribution.
@@ -84,24 +59,5 @@ double kernelRadiusTexels(const FilterSettings& s) {
 }
 
 double poissonRotation(uint64_t pixel) { return 2.0 * std::numbers::pi * unitInterval(splitMix64(pixel)); }
-
-double poissonVisibility(const DepthMap& map, const MapReceiver& r, const std::vector<glm::dvec2>& disk, uint64_t pixel,
-                         const glm::dvec2& radiusTexels) {
-    const double angle = poissonRotation(pixel);
-    const glm::dvec2 rotation(std::cos(angle), std::sin(angle));
-    double lit = 0.0;
-    for (const glm::dvec2& d : disk) lit += nearest(map, r, r.texel + rotatedTap(d, rotation, radiusTexels));
-    return lit / double(disk.size());
-}
-
-double filteredVisibility(const DepthMap& map, const MapReceiver& r, const PcfKernel& k, uint64_t pixel) {
-    switch (k.settings.kind) {
-        case FilterKind::Nearest: return nearest(map, r, r.texel);
-        case FilterKind::Bilinear: return bilinear(map, r);
-        case FilterKind::Grid: return grid(map, r, k.settings.gridSize);
-        case FilterKind::Poisson: return poissonVisibility(map, r, k.disk, pixel, glm::dvec2(k.settings.poissonRadiusTexels));
-    }
-    return 0.0;
-}
 
 }  // namespace shadowlab

@@ -15,6 +15,7 @@
 //             shared between threads and the result does not depend on them.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -54,11 +55,81 @@ inline glm::dvec2 rotatedTap(const glm::dvec2& d, const glm::dvec2& rotation, co
     return radiusTexels * glm::dvec2(rotation.x * d.x - rotation.y * d.y, rotation.y * d.x + rotation.x * d.y);
 }
 
+// The filters as functors, filter(map, receiver, pixel) = the fraction of the kernel's
+// weight that is lit, in [0, 1]. withFilter() chooses one per pass, not per pixel, so the
+// receiver pass is compiled for its filter.
+namespace pcf {
+
+inline int texelOf(double coordinate) { return texelIndexOf(coordinate); }
+
+// The one texel holding texel position `at`, compared with the receiver's depth.
+inline double nearestAt(const DepthMap& map, const MapReceiver& r, const glm::dvec2& at) {
+    return r.litBy(map, texelOf(at.x), texelOf(at.y)) ? 1.0 : 0.0;
+}
+
+struct Nearest {
+    double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const { return nearestAt(map, r, r.texel); }
+};
+
+// The four texel centres around the receiver and its bilinear weights (section 7.5).
+struct Bilinear {
+    double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const {
+        const glm::dvec2 base = r.texel - 0.5;
+        const int x0 = texelOf(base.x), y0 = texelOf(base.y);
+        const double fx = base.x - x0, fy = base.y - y0;
+        const double top = (1.0 - fx) * r.litBy(map, x0, y0) + fx * r.litBy(map, x0 + 1, y0);
+        const double bottom = (1.0 - fx) * r.litBy(map, x0, y0 + 1) + fx * r.litBy(map, x0 + 1, y0 + 1);
+        return (1.0 - fy) * top + fy * bottom;
+    }
+};
+
+struct Grid {
+    int n;
+    double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const {
+        const double first = -0.5 * (n - 1);
+        int lit = 0;
+        for (int b = 0; b < n; ++b) {
+            for (int a = 0; a < n; ++a) lit += r.litBy(map, texelOf(r.texel.x + first + a), texelOf(r.texel.y + first + b));
+        }
+        return double(lit) / double(n * n);
+    }
+};
+
+struct Poisson {
+    const std::vector<glm::dvec2>* disk;
+    glm::dvec2 radiusTexels;
+    double operator()(const DepthMap& map, const MapReceiver& r, uint64_t pixel) const {
+        const double angle = poissonRotation(pixel);
+        const glm::dvec2 rotation(std::cos(angle), std::sin(angle));
+        double lit = 0.0;
+        for (const glm::dvec2& d : *disk) lit += nearestAt(map, r, r.texel + rotatedTap(d, rotation, radiusTexels));
+        return lit / double(disk->size());
+    }
+};
+
+}  // namespace pcf
+
+// visit(filter) with the kernel's filter functor.
+template <class Visit>
+decltype(auto) withFilter(const PcfKernel& k, Visit&& visit) {
+    switch (k.settings.kind) {
+        case FilterKind::Bilinear: return visit(pcf::Bilinear{});
+        case FilterKind::Grid: return visit(pcf::Grid{k.settings.gridSize});
+        case FilterKind::Poisson: return visit(pcf::Poisson{&k.disk, glm::dvec2(k.settings.poissonRadiusTexels)});
+        case FilterKind::Nearest: break;
+    }
+    return visit(pcf::Nearest{});
+}
+
 // The poisson kernel's taps at `radiusTexels` per axis around the receiver (the fraction lit).
-double poissonVisibility(const DepthMap& map, const MapReceiver& receiver, const std::vector<glm::dvec2>& disk,
-                         uint64_t pixel, const glm::dvec2& radiusTexels);
+inline double poissonVisibility(const DepthMap& map, const MapReceiver& receiver, const std::vector<glm::dvec2>& disk,
+                                uint64_t pixel, const glm::dvec2& radiusTexels) {
+    return pcf::Poisson{&disk, radiusTexels}(map, receiver, pixel);
+}
 
 // The fraction of the kernel's weight that is lit, in [0, 1].
-double filteredVisibility(const DepthMap& map, const MapReceiver& receiver, const PcfKernel& kernel, uint64_t pixel);
+inline double filteredVisibility(const DepthMap& map, const MapReceiver& receiver, const PcfKernel& kernel, uint64_t pixel) {
+    return withFilter(kernel, [&](const auto& filter) { return filter(map, receiver, pixel); });
+}
 
 }  // namespace shadowlab

@@ -73,14 +73,23 @@ LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapS
     return out;
 }
 
-MapSelector selectorFor(const LightMaps& lm) {
-    if (!lm.cube) return [](const glm::dvec3&, size_t) { return 0; };
-    return [&lm](const glm::dvec3& P, size_t) {
+// The map selector of cube maps: the first face whose pyramid holds P.
+struct CubeFace {
+    const std::vector<DepthMap>& faces;
+    int operator()(const glm::dvec3& P) const {
         for (int face = 0; face < 6; ++face) {
-            if (insideFace(lm.maps[face], P)) return face;
+            if (insideFace(faces[face], P)) return face;
         }
         return -1;
-    };
+    }
+};
+
+ShadowLookup lookUp(const ShadowInputs& in, const Light& light, const LightMaps& lm, const ShadowMapSettings& s) {
+    const PcfKernel kernel = makePcfKernel(s.filter);
+    const Camera& camera = in.scene().camera;
+    const bool everyPixelDensity = !in.debugDir.empty();
+    if (lm.cube) return lookUpShadows(in.gbuffer, camera, light, lm.maps, CubeFace{lm.maps}, s.bias, kernel, everyPixelDensity);
+    return lookUpShadows(in.gbuffer, camera, light, lm.maps, OneMap{}, s.bias, kernel, everyPixelDensity);
 }
 
 void addStats(ShadowOutputs& out, const LightMaps& lm, const ShadowMapSettings& s, const ShadowLookup& lookup) {
@@ -133,8 +142,7 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
     StageTimer timer;
     const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm);
     timer.lap("maps");
-    const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, light, lm.maps, selectorFor(lm), s.bias,
-                                              makePcfKernel(s.filter), !in.debugDir.empty());
+    const ShadowLookup lookup = lookUp(in, light, lm, s);
     timer.lap("lookup");
     addStats(out, lm, s, lookup);
     timer.appendTo(out.stats);
