@@ -6,7 +6,9 @@
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "shading/lights.h"
 
@@ -34,10 +36,29 @@ bool served(const Light& light, const GBuffer& g, size_t k) {
     return g.hit[k] && (light.type != LightType::Spot || insideSpotCone(light, g.position[k]));
 }
 
+// The bounds of a value over every pixel the map serves, computed in parallel: minima and
+// maxima are exact whatever order the chunks are merged in, so the result does not depend
+// on the thread count.
+template <class Value, class Add, class Merge>
+Value overServedPixels(const Light& light, const GBuffer& g, const Value& empty, Add add, Merge merge) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, g.pixelCount()), empty,
+        [&](const tbb::blocked_range<size_t>& range, Value value) {
+            for (size_t k = range.begin(); k < range.end(); ++k) {
+                if (served(light, g, k)) add(value, k);
+            }
+            return value;
+        },
+        merge);
+}
+
+Bounds merged(const Bounds& a, const Bounds& b) {
+    return {std::min(a.x0, b.x0), std::max(a.x1, b.x1), std::min(a.y0, b.y0), std::max(a.y1, b.y1),
+            std::min(a.nearest, b.nearest), std::max(a.farthest, b.farthest)};
+}
+
 Bounds receiverBounds(const Light& light, const GBuffer& g, const glm::dmat4& viewFromWorld, bool orthographic) {
-    Bounds b;
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        if (!served(light, g, k)) continue;
+    const auto add = [&](Bounds& b, size_t k) {
         const glm::dvec3 q = glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(g.position[k]), 1.0));
         const double depth = -q.z;
         if (!orthographic && !(depth > 0.0)) {
@@ -46,7 +67,8 @@ Bounds receiverBounds(const Light& light, const GBuffer& g, const glm::dmat4& vi
         const double x = orthographic ? q.x : q.x / depth, y = orthographic ? q.y : q.y / depth;
         b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x), b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
         b.nearest = std::min(b.nearest, depth), b.farthest = std::max(b.farthest, depth);
-    }
+    };
+    const Bounds b = overServedPixels(light, g, Bounds{}, add, merged);
     if (!(b.farthest > 0.0) && !orthographic) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
     if (b.x0 > b.x1) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
     return b;
@@ -141,10 +163,13 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     if (light.type != LightType::Directional) {
         // Aim along options.axis or at the centre of the receivers' bounding box, then fit the
         // sides around them.
-        glm::dvec3 lo(kInfinity), hi(-kInfinity);
-        for (size_t k = 0; k < receivers.pixelCount(); ++k) {
-            if (served(light, receivers, k)) lo = glm::min(lo, glm::dvec3(receivers.position[k])), hi = glm::max(hi, glm::dvec3(receivers.position[k]));
-        }
+        using Box = std::pair<glm::dvec3, glm::dvec3>;
+        const auto [lo, hi] = overServedPixels(
+            light, receivers, Box(glm::dvec3(kInfinity), glm::dvec3(-kInfinity)),
+            [&](Box& box, size_t k) {
+                box = {glm::min(box.first, glm::dvec3(receivers.position[k])), glm::max(box.second, glm::dvec3(receivers.position[k]))};
+            },
+            [](const Box& a, const Box& b) { return Box(glm::min(a.first, b.first), glm::max(a.second, b.second)); });
         if (lo.x > hi.x) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1, or none in the spot's cone)");
         const glm::dvec3 axis = options.axis != glm::dvec3(0.0) ? options.axis : 0.5 * (lo + hi) - glm::dvec3(light.position);
         return perspectiveView(light, glm::normalize(axis), receivers, world, options);
@@ -156,10 +181,12 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     view.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, anyPerpendicular(towardsLight));
     Bounds b = receiverBounds(light, receivers, view.viewFromWorld, true);
     widen(b, options);
-    b.farthest = -kInfinity;
-    for (size_t k = 0; k < receivers.pixelCount(); ++k) {
-        if (receivers.hit[k]) b.farthest = std::max(b.farthest, -(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0)).z);
-    }
+    b.farthest = overServedPixels(
+        light, receivers, -kInfinity,
+        [&](double& farthest, size_t k) {
+            farthest = std::max(farthest, -(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0)).z);
+        },
+        [](double a, double b) { return std::max(a, b); });
     fitDepthRange(view, b, world, options);
     view.clipFromView = glm::orthoRH_NO(b.x0, b.x1, b.y0, b.y1, view.zNear, view.zFar);
     return view;
@@ -173,15 +200,14 @@ bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const W
     view = {};
     view.viewFromWorld = glm::lookAtRH(apex, apex + kAxes[face], kUps[face]);
     // The face's receivers: those inside its 90-degree pyramid.
-    Bounds b;
-    b.x0 = b.y0 = -1.0, b.x1 = b.y1 = 1.0;
-    for (size_t k = 0; k < receivers.pixelCount(); ++k) {
-        if (!receivers.hit[k]) continue;
+    const auto add = [&](Bounds& b, size_t k) {
         const glm::dvec3 q = glm::dvec3(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0));
         if (-q.z > 0.0 && std::abs(q.x) <= -q.z && std::abs(q.y) <= -q.z) {
             b.nearest = std::min(b.nearest, -q.z), b.farthest = std::max(b.farthest, -q.z);
         }
-    }
+    };
+    Bounds b = overServedPixels(light, receivers, Bounds{}, add, merged);   // a point light serves every surface
+    b.x0 = b.y0 = -1.0, b.x1 = b.y1 = 1.0;
     if (!(b.farthest > 0.0)) return false;
     fitDepthRange(view, b, world, options);
     view.clipFromView = glm::frustumRH_NO(-view.zNear, view.zNear, -view.zNear, view.zNear, view.zNear, view.zFar);

@@ -1,6 +1,7 @@
 // The wall time of a technique's stages, so a user sees where a frame goes: each lap ends
 // the stage that began at the previous lap (or when the timer was made) and is reported as
-// the stat "<stage>_ms", after the technique's other figures, in the order the stages ran.
+// the stat "<stage>_ms", after the technique's other figures, in the order the stages first
+// ran; a stage that runs again (once per cube face, say) adds to its time.
 #pragma once
 
 #include <chrono>
@@ -15,8 +16,13 @@ class StageTimer {
 public:
     void lap(const std::string& stage) {
         const auto now = std::chrono::steady_clock::now();
-        laps_.push_back({stage + "_ms", std::chrono::duration<double, std::milli>(now - last_).count()});
+        const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
         last_ = now;
+        const std::string name = stage + "_ms";
+        for (TechniqueStat& lap : laps_) {
+            if (lap.name == name) return void(lap.value += ms);
+        }
+        laps_.push_back({name, ms});
     }
 
     void appendTo(std::vector<TechniqueStat>& stats) const { stats.insert(stats.end(), laps_.begin(), laps_.end()); }

@@ -39,37 +39,43 @@ struct LightMaps {
     double nOpt = 0.0;              // LiSPSM's n, infinity when it kept the uniform map
 };
 
-LightMaps cubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, const LightFitOptions& o) {
+LightMaps cubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, const LightFitOptions& o,
+                   StageTimer& timer) {
     LightMaps out;
     out.cube = true;
     out.maps.resize(6);
     for (int face = 0; face < 6; ++face) {
         LightView view;
-        if (fitCubeFace(light, face, in.gbuffer, in.world(), o, view)) {
-            out.maps[face] = renderDepthMap(in.world(), view, depthMapSettings(s), in.simd);
-        }
+        const bool used = fitCubeFace(light, face, in.gbuffer, in.world(), o, view);
+        timer.lap("light_view");
+        if (used) out.maps[face] = renderDepthMap(in.world(), view, depthMapSettings(s), in.simd);
+        timer.lap("depth_map");
     }
     return out;
 }
 
-LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, bool forceCube, bool lispsm) {
+// Stages light_view (fitting the frustum) and depth_map (drawing it).
+LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, bool forceCube, bool lispsm,
+                    StageTimer& timer) {
     LightFitOptions options;
     options.resolution = s.resolution;
     options.marginTexels = kernelRadiusTexels(s.filter) + 1.5;
-    if (forceCube) return cubeMaps(in, light, s, options);
+    if (forceCube) return cubeMaps(in, light, s, options, timer);
     LightView view;
     try {
         view = fitLightView(light, in.gbuffer, in.world(), options);
     } catch (const std::invalid_argument&) {
         if (light.type != LightType::Point) throw;
-        return cubeMaps(in, light, s, options);   // receivers all around the light
+        return cubeMaps(in, light, s, options, timer);   // receivers all around the light
     }
     LightMaps out;
     if (lispsm) {
         const LispsmView warped = lispsmView(view, light, in.scene().camera, in.gbuffer, s.resolution, options.marginTexels);
         view = warped.view, out.nOpt = warped.nOpt;
     }
+    timer.lap("light_view");
     out.maps.push_back(renderDepthMap(in.world(), view, depthMapSettings(s), in.simd));
+    timer.lap("depth_map");
     return out;
 }
 
@@ -140,8 +146,7 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     StageTimer timer;
-    const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm);
-    timer.lap("maps");
+    const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm, timer);
     const ShadowLookup lookup = lookUp(in, light, lm, s);
     timer.lap("lookup");
     addStats(out, lm, s, lookup);
