@@ -47,7 +47,7 @@ MapReceiver mapReceiver(const DepthMap& map, const glm::dvec3& P, const glm::dve
     glm::dvec3 p = P;
     // The constant part: alone, and under the normal offset, which vanishes where the
     // surface faces the light and leaves only the map's precision there (RTR 7.4).
-    if (bias.mode == BiasMode::Constant || bias.mode == BiasMode::NormalOffset) p += unitTowardsLight * bias.constantMetres;
+    if (needsLightDirection(bias)) p += unitTowardsLight * bias.constantMetres;
     if (bias.mode == BiasMode::NormalOffset) {
         // Holbert's normal offset: proportional to sin(angle between N and L), RTR 7.4.
         const double cosine = glm::dot(N, unitTowardsLight);

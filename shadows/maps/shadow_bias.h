@@ -61,7 +61,14 @@ struct MapReceiver {
     }
 };
 
-// P and N in world space, unitTowardsLight the unit direction from P to the light.
+// Whether mapReceiver() reads its unitTowardsLight (constant and normal-offset bias move the
+// receiver towards the light; the others leave it where it is).
+inline bool needsLightDirection(const BiasSettings& bias) {
+    return bias.mode == BiasMode::Constant || bias.mode == BiasMode::NormalOffset;
+}
+
+// P and N in world space, unitTowardsLight the unit direction from P to the light (read
+// only where needsLightDirection()).
 MapReceiver mapReceiver(const DepthMap& map, const glm::dvec3& P, const glm::dvec3& N,
                         const glm::dvec3& unitTowardsLight, const BiasSettings& bias);
 

@@ -91,7 +91,8 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
             out.mapIndex[k] = int8_t(m);
             if (everyPixelDensity || inDensitySample(i, j)) out.texelDensity[k] = float(texelsPerPixel(maps[m], rays, i, j, P, N));
             if (!lightReaches(light, g.position[k], g.normal[k])) return;
-            const MapReceiver r = mapReceiver(maps[m], P, N, towardsLight(P), bias);
+            const glm::dvec3 L = needsLightDirection(bias) ? towardsLight(P) : glm::dvec3(0.0);
+            const MapReceiver r = mapReceiver(maps[m], P, N, L, bias);
             out.visibility[k] = float(filter(maps[m], r, k));
         });
     });
