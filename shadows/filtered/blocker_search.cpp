@@ -24,7 +24,7 @@ BlockerSearchSettings readBlockerSearch(const TechniqueParams& p) {
 MapReceiver planeReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N) {
     BiasSettings bias;
     bias.mode = BiasMode::ReceiverPlane;
-    return mapReceiver(soft.map, P, N, glm::normalize(soft.lightCentre - P), bias);
+    return mapReceiverFromPoint(soft.map, P, N, soft.lightCentre, bias);
 }
 
 PenumbraEstimate estimatePenumbra(const SoftShadowMap& soft, const MapReceiver& r, double dr,

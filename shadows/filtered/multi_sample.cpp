@@ -19,7 +19,6 @@
 #include <stdexcept>
 #include <string>
 
-
 #include "shading/light_sampling.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
@@ -43,13 +42,12 @@ constexpr double kFitMarginTexels = 1.5;
 
 // Adds the hard shadow of the light point `position` from `map` to every pixel's count.
 void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const glm::dvec3& position, std::vector<uint16_t>& lit) {
-    const PcfKernel nearest = makePcfKernel({FilterKind::Nearest});
     const BiasSettings bias;   // slope-scaled: the offset is in the map, the receiver stays put
     forEachSurfacePixel(g, [&](int, int, size_t k) {
         const glm::dvec3 P(g.position[k]), N(g.normal[k]);
         if (!(glm::dot(N, position - P) > 0.0)) return;   // the light point is behind the surface
-        const MapReceiver r = mapReceiver(map, P, N, glm::normalize(position - P), bias);
-        lit[k] = uint16_t(lit[k] + (filteredVisibility(map, r, nearest, k) > 0.5 ? 1 : 0));
+        const MapReceiver r = mapReceiverFromPoint(map, P, N, position, bias);
+        lit[k] = uint16_t(lit[k] + (pcf::Nearest{}(map, r, k) > 0.5 ? 1 : 0));
     });
 }
 

@@ -27,7 +27,7 @@ IlluminanceBuffer::IlluminanceBuffer(const GBuffer& gbuffer, const std::vector<u
 
 double IlluminanceBuffer::localIlluminance(size_t k, const LayerMaps& maps, const IlluminanceSettings& s) const {
     const glm::dvec3 P(gbuffer_.position[k]), N(gbuffer_.normal[k]);
-    const MapReceiver receiver = mapReceiver(maps.hard, P, N, glm::normalize(s.light.centre - P), s.bias);
+    const MapReceiver receiver = mapReceiverFromPoint(maps.hard, P, N, s.light.centre, s.bias);
     const int x = texelOf(receiver.texel.x, maps.hard.size), y = texelOf(receiver.texel.y, maps.hard.size);
     double local = receiver.litBy(maps.hard, x, y) ? 1.0 : 0.0;
     // All maps of the frame share one view, so the texel is the same in each.

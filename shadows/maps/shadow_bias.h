@@ -72,6 +72,12 @@ inline bool needsLightDirection(const BiasSettings& bias) {
 MapReceiver mapReceiver(const DepthMap& map, const glm::dvec3& P, const glm::dvec3& N,
                         const glm::dvec3& unitTowardsLight, const BiasSettings& bias);
 
+// The same for a light at lightPosition, normalising the direction only where it is read.
+inline MapReceiver mapReceiverFromPoint(const DepthMap& map, const glm::dvec3& P, const glm::dvec3& N,
+                                        const glm::dvec3& lightPosition, const BiasSettings& bias) {
+    return mapReceiver(map, P, N, needsLightDirection(bias) ? glm::normalize(lightPosition - P) : glm::dvec3(0.0), bias);
+}
+
 // The world-space width of one texel at P (distance between neighbouring texel centres).
 double texelWorldSize(const DepthMap& map, const glm::dvec3& P);
 
