@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace shadowlab {
 namespace {
 
 constexpr double kUnitRoundoff = 0x1p-53;   // u of double
+constexpr size_t kColumnBand = 64;          // columns summed together down the rows
 
 // Neumaier's compensated running sum: the rounding error of every addition is kept in
 // `compensation` (TwoSum, exact in IEEE arithmetic without contraction) and added back.
@@ -104,11 +106,18 @@ SummedAreaTable summedAreaTable(const MomentMap& m) {
             for (int x = 0; x < m.size; ++x) s.add(m.at(x, y)[c]), entry(size_t(x) + 1, size_t(y) + 1, c) = s.value();
         }
     });
-    // Columns: S(X, Y) = sum over grid rows 1..Y of the row prefixes.
-    tbb::parallel_for(1, m.size + 1, [&](int X) {
-        for (int c = 0; c < m.channels; ++c) {
-            CompensatedSum s;
-            for (size_t Y = 1; Y <= size_t(m.size); ++Y) s.add(entry(size_t(X), Y, c)), entry(size_t(X), Y, c) = s.value();
+    // Columns: S(X, Y) = sum over grid rows 1..Y of the row prefixes. A band of columns
+    // walks down the rows together, so each step reads a contiguous run of a row instead
+    // of one value per cache line; every column's sum takes the same terms in the same order.
+    tbb::parallel_for(tbb::blocked_range<size_t>(1, stride, kColumnBand), [&](const tbb::blocked_range<size_t>& band) {
+        std::vector<CompensatedSum> column(band.size() * channels);
+        for (size_t Y = 1; Y <= size_t(m.size); ++Y) {
+            for (size_t X = band.begin(); X < band.end(); ++X) {
+                for (int c = 0; c < m.channels; ++c) {
+                    CompensatedSum& s = column[(X - band.begin()) * channels + size_t(c)];
+                    s.add(entry(X, Y, c)), entry(X, Y, c) = s.value();
+                }
+            }
         }
     });
     return t;
