@@ -6,20 +6,9 @@
 // the receivers per texel, turn the counts into offsets by an exclusive prefix sum, then
 // place each receiver at its texel's next free slot, in receiver order. Every list is
 // therefore sorted by pixel, whatever the number of threads; the three passes are linear.
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "shadows/izb/izb.h"
 
 namespace shadowlab::izb {
-
-std::vector<uint32_t> receiverTexels(const LightGrid& grid, const Receivers& receivers) {
-    std::vector<uint32_t> texel(receivers.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, receivers.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t k = r.begin(); k != r.end(); ++k) texel[k] = texelOf(grid, receivers.origin[k]);
-    });
-    return texel;
-}
 
 Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const std::vector<uint32_t>& value) {
     Buckets b;

@@ -25,7 +25,7 @@ TEST_CASE("izb texel lists equal lists built by appending receivers in pixel ord
     std::vector<float> V;
     const izb::Receivers receivers = izb::gatherReceivers(g, light, sceneDiagonal(world), V);
     const izb::LightGrid grid = izb::makeLightGrid(izb::fitViews(light, g, world), 300, sceneDiagonal(world));
-    const std::vector<uint32_t> texel = izb::receiverTexels(grid, receivers);
+    const std::vector<uint32_t> texel = izb::receiverTexels(grid.resolution, izb::placeReceivers(grid.views, receivers));
     const izb::TexelLists lists = izb::buildTexelLists(texel, grid.texelCount());
 
     std::vector<std::vector<uint32_t>> naive(grid.texelCount());
