@@ -37,13 +37,15 @@ Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal,
     std::vector<uint8_t> keep(g.pixelCount(), 0);
     std::vector<uint32_t> first(chunks + 1, 0);
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+        uint32_t kept = 0;   // counted locally: neighbouring chunks' counts share a cache line
         for (size_t k = c * kChunk; k < chunkEnd(c); ++k) {
             if (!g.hit[k] || !lightReaches(light, g.position[k], g.normal[k])) continue;
             visibility[k] = 1.0f;
             glm::dvec3 origin;
             keep[k] = segment(k, origin) > 0.0;
-            first[c + 1] += keep[k];
+            kept += keep[k];
         }
+        first[c + 1] = kept;
     });
     for (size_t c = 0; c < chunks; ++c) first[c + 1] += first[c];
     Receivers receivers;
