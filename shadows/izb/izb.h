@@ -59,7 +59,7 @@ HomogeneousLight homogeneousLight(const Light& pointOrDirectional);
 // triangle meets the segment origin + t * (light.xyz - light.w * origin), t in [0, tFar].
 struct Receivers {
     std::vector<uint32_t> pixel;        // index into the G-buffer
-    std::vector<glm::dvec3> origin;     // P moved along N by the reference's offset (reference.cpp)
+    std::vector<glm::vec3> origin;      // P moved along N by the reference's offset (reference.cpp), in float as its ray's
     std::vector<double> tFar;           // the reference's end of the segment
     size_t size() const { return pixel.size(); }
 };

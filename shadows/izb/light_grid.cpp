@@ -106,9 +106,10 @@ ReceiverPlaces placeReceivers(const std::vector<LightView>& views, const Receive
     places.unitUV.resize(receivers.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, receivers.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t k = r.begin(); k != r.end(); ++k) {
-            const int view = viewOf(views, receivers.origin[k]);
+            const glm::dvec3 origin(receivers.origin[k]);
+            const int view = viewOf(views, origin);
             places.view[k] = uint8_t(view);
-            places.unitUV[k] = unitUV(clipFromWorld[size_t(view)], receivers.origin[k]);
+            places.unitUV[k] = unitUV(clipFromWorld[size_t(view)], origin);
         }
     });
     return places;

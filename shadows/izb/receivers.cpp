@@ -19,12 +19,13 @@ HomogeneousLight homogeneousLight(const Light& light) {
 
 Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal, std::vector<float>& visibility) {
     const HomogeneousLight h = homogeneousLight(light);
-    // The origin is rounded to float once, as the reference's ray origin is; a point light
-    // nearer than the offset leaves no segment (tFar <= 0): seen, as in the reference.
-    const auto segment = [&](size_t k, glm::dvec3& origin) {
+    // The origin is rounded to float once, as the reference's ray origin is (so it is kept
+    // as a float, exactly); a point light nearer than the offset leaves no segment
+    // (tFar <= 0): seen, as in the reference.
+    const auto segment = [&](size_t k, glm::vec3& origin) {
         const double offset = shadowRayOffset(g.position[k], diagonal);
-        origin = glm::dvec3(glm::vec3(glm::dvec3(g.position[k]) + offset * glm::dvec3(g.normal[k])));
-        return h.w == 0.0 ? INFINITY : 1.0 - offset / glm::length(glm::dvec3(h) - origin);
+        origin = glm::vec3(glm::dvec3(g.position[k]) + offset * glm::dvec3(g.normal[k]));
+        return h.w == 0.0 ? INFINITY : 1.0 - offset / glm::length(glm::dvec3(h) - glm::dvec3(origin));
     };
     // Decide per pixel in parallel (each writes only its own bytes) and count the survivors
     // per chunk of pixels; an exclusive prefix sum over the chunks then gives each chunk the
@@ -41,7 +42,7 @@ Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal,
         for (size_t k = c * kChunk; k < chunkEnd(c); ++k) {
             if (!g.hit[k] || !lightReaches(light, g.position[k], g.normal[k])) continue;
             visibility[k] = 1.0f;
-            glm::dvec3 origin;
+            glm::vec3 origin;
             keep[k] = segment(k, origin) > 0.0;
             kept += keep[k];
         }

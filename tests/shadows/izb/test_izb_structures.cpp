@@ -29,7 +29,7 @@ TEST_CASE("izb texel lists equal lists built by appending receivers in pixel ord
     const izb::TexelLists lists = izb::buildTexelLists(texel, grid.texelCount());
 
     std::vector<std::vector<uint32_t>> naive(grid.texelCount());
-    for (uint32_t r = 0; r < receivers.size(); ++r) naive[izb::texelOf(grid, receivers.origin[r])].push_back(r);
+    for (uint32_t r = 0; r < receivers.size(); ++r) naive[izb::texelOf(grid, glm::dvec3(receivers.origin[r]))].push_back(r);
     size_t mismatches = 0;
     for (size_t t = 0; t < grid.texelCount(); ++t) {
         const std::vector<uint32_t> built(lists.entry.begin() + lists.first[t], lists.entry.begin() + lists.first[t + 1]);
