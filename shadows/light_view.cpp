@@ -4,9 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "shading/lights.h"
 
@@ -34,19 +37,37 @@ bool served(const Light& light, const GBuffer& g, size_t k) {
     return g.hit[k] && (light.type != LightType::Spot || insideSpotCone(light, g.position[k]));
 }
 
+// visit(accumulator, k) over every pixel k in parallel, the chunks' accumulators combined by
+// join. Used for minima and maxima only, which are exact, so the order of joins cannot show.
+template <typename T, typename Visit, typename Join>
+T reducePixels(const GBuffer& g, const T& identity, const Visit& visit, const Join& join) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, g.pixelCount(), 8192), identity,
+        [&](const tbb::blocked_range<size_t>& r, T acc) {
+            for (size_t k = r.begin(); k != r.end(); ++k) visit(acc, k);
+            return acc;
+        },
+        join);
+}
+
+Bounds joinBounds(Bounds a, const Bounds& b) {
+    a.x0 = std::min(a.x0, b.x0), a.x1 = std::max(a.x1, b.x1), a.y0 = std::min(a.y0, b.y0), a.y1 = std::max(a.y1, b.y1);
+    a.nearest = std::min(a.nearest, b.nearest), a.farthest = std::max(a.farthest, b.farthest);
+    return a;
+}
+
 Bounds receiverBounds(const Light& light, const GBuffer& g, const glm::dmat4& viewFromWorld, bool orthographic) {
-    Bounds b;
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        if (!served(light, g, k)) continue;
+    const Bounds b = reducePixels(g, Bounds{}, [&](Bounds& acc, size_t k) {
+        if (!served(light, g, k)) return;
         const glm::dvec3 q = glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(g.position[k]), 1.0));
         const double depth = -q.z;
         if (!orthographic && !(depth > 0.0)) {
             throw std::invalid_argument("light view: a receiver lies beside or behind the light; use cube faces");
         }
         const double x = orthographic ? q.x : q.x / depth, y = orthographic ? q.y : q.y / depth;
-        b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x), b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
-        b.nearest = std::min(b.nearest, depth), b.farthest = std::max(b.farthest, depth);
-    }
+        acc.x0 = std::min(acc.x0, x), acc.x1 = std::max(acc.x1, x), acc.y0 = std::min(acc.y0, y), acc.y1 = std::max(acc.y1, y);
+        acc.nearest = std::min(acc.nearest, depth), acc.farthest = std::max(acc.farthest, depth);
+    }, joinBounds);
     if (!(b.farthest > 0.0) && !orthographic) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
     if (b.x0 > b.x1) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
     return b;
@@ -141,10 +162,15 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     if (light.type != LightType::Directional) {
         // Aim along options.axis or at the centre of the receivers' bounding box, then fit the
         // sides around them.
-        glm::dvec3 lo(kInfinity), hi(-kInfinity);
-        for (size_t k = 0; k < receivers.pixelCount(); ++k) {
-            if (served(light, receivers, k)) lo = glm::min(lo, glm::dvec3(receivers.position[k])), hi = glm::max(hi, glm::dvec3(receivers.position[k]));
-        }
+        using Box = std::pair<glm::dvec3, glm::dvec3>;
+        const auto [lo, hi] = reducePixels(
+            receivers, Box(glm::dvec3(kInfinity), glm::dvec3(-kInfinity)),
+            [&](Box& box, size_t k) {
+                if (!served(light, receivers, k)) return;
+                box.first = glm::min(box.first, glm::dvec3(receivers.position[k]));
+                box.second = glm::max(box.second, glm::dvec3(receivers.position[k]));
+            },
+            [](const Box& a, const Box& b) { return Box(glm::min(a.first, b.first), glm::max(a.second, b.second)); });
         if (lo.x > hi.x) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1, or none in the spot's cone)");
         const glm::dvec3 axis = options.axis != glm::dvec3(0.0) ? options.axis : 0.5 * (lo + hi) - glm::dvec3(light.position);
         return perspectiveView(light, glm::normalize(axis), receivers, world, options);
@@ -156,10 +182,12 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     view.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, anyPerpendicular(towardsLight));
     Bounds b = receiverBounds(light, receivers, view.viewFromWorld, true);
     widen(b, options);
-    b.farthest = -kInfinity;
-    for (size_t k = 0; k < receivers.pixelCount(); ++k) {
-        if (receivers.hit[k]) b.farthest = std::max(b.farthest, -(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0)).z);
-    }
+    b.farthest = reducePixels(
+        receivers, -kInfinity,
+        [&](double& farthest, size_t k) {
+            if (receivers.hit[k]) farthest = std::max(farthest, -(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0)).z);
+        },
+        [](double a, double b) { return std::max(a, b); });
     fitDepthRange(view, b, world, options);
     view.clipFromView = glm::orthoRH_NO(b.x0, b.x1, b.y0, b.y1, view.zNear, view.zFar);
     return view;
@@ -173,15 +201,14 @@ bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const W
     view = {};
     view.viewFromWorld = glm::lookAtRH(apex, apex + kAxes[face], kUps[face]);
     // The face's receivers: those inside its 90-degree pyramid.
-    Bounds b;
-    b.x0 = b.y0 = -1.0, b.x1 = b.y1 = 1.0;
-    for (size_t k = 0; k < receivers.pixelCount(); ++k) {
-        if (!receivers.hit[k]) continue;
+    Bounds b = reducePixels(receivers, Bounds{}, [&](Bounds& acc, size_t k) {
+        if (!receivers.hit[k]) return;
         const glm::dvec3 q = glm::dvec3(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0));
         if (-q.z > 0.0 && std::abs(q.x) <= -q.z && std::abs(q.y) <= -q.z) {
-            b.nearest = std::min(b.nearest, -q.z), b.farthest = std::max(b.farthest, -q.z);
+            acc.nearest = std::min(acc.nearest, -q.z), acc.farthest = std::max(acc.farthest, -q.z);
         }
-    }
+    }, joinBounds);
+    b.x0 = b.y0 = -1.0, b.x1 = b.y1 = 1.0;
     if (!(b.farthest > 0.0)) return false;
     fitDepthRange(view, b, world, options);
     view.clipFromView = glm::frustumRH_NO(-view.zNear, view.zNear, -view.zNear, view.zNear, view.zNear, view.zFar);
