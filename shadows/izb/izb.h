@@ -9,8 +9,9 @@
 //      shadow-ray origin; points facing away are shadowed without a test (Wyman et al.'s
 //      culling, RTR4 7.9);
 //   2. light grid (light_grid.cpp): the light's view fitted to the receivers (one
-//      frustum, or the cube faces around a point light that is surrounded), at a
-//      resolution chosen from the receivers' density;
+//      frustum, or the cube faces around a point light that is surrounded), each receiver
+//      projected into it once (placeReceivers), and a resolution chosen from the
+//      receivers' density;
 //   3. lists      (lists.cpp): each texel lists the receivers that project into it,
 //      built by a counting sort, so every list is in pixel order (RTR4 Figure 7.30, lower
 //      left);
