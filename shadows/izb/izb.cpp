@@ -68,13 +68,14 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     }
 
     std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world());
-    const int resolution = requested ? *requested : izb::chooseResolution(views, receivers, kTargetListLength);
+    const izb::ReceiverPlaces places = izb::placeReceivers(views, receivers);
+    const int resolution = requested ? *requested : izb::chooseResolution(views.size(), places, kTargetListLength);
     const izb::LightGrid grid = izb::makeLightGrid(std::move(views), resolution, diagonal);
     out.stats.push_back({"resolution_texels", double(grid.resolution)});
     out.stats.push_back({"views_count", double(grid.views.size())});
     timer.lap("light_grid");
 
-    const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid, receivers), grid.texelCount());
+    const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid.resolution, places), grid.texelCount());
     addListStats(lists, grid.texelCount(), out.stats);
     timer.lap("lists");
 

@@ -9,8 +9,9 @@
 //      shadow-ray origin; points facing away are shadowed without a test (Wyman et al.'s
 //      culling, RTR4 7.9);
 //   2. light grid (light_grid.cpp): the light's view fitted to the receivers (one
-//      frustum, or the cube faces around a point light that is surrounded), at a
-//      resolution chosen from the receivers' density;
+//      frustum, or the cube faces around a point light that is surrounded), each receiver
+//      projected into it once (placeReceivers), and a resolution chosen from the
+//      receivers' density;
 //   3. lists      (lists.cpp): each texel lists the receivers that project into it,
 //      built by a counting sort, so every list is in pixel order (RTR4 Figure 7.30, lower
 //      left);
@@ -59,7 +60,7 @@ HomogeneousLight homogeneousLight(const Light& pointOrDirectional);
 // triangle meets the segment origin + t * (light.xyz - light.w * origin), t in [0, tFar].
 struct Receivers {
     std::vector<uint32_t> pixel;        // index into the G-buffer
-    std::vector<glm::dvec3> origin;     // P moved along N by the reference's offset (reference.cpp)
+    std::vector<glm::vec3> origin;      // P moved along N by the reference's offset (reference.cpp), in float as its ray's
     std::vector<double> tFar;           // the reference's end of the segment
     size_t size() const { return pixel.size(); }
 };
@@ -77,7 +78,7 @@ Receivers gatherReceivers(const GBuffer& gbuffer, const Light& pointOrDirectiona
 // (row 0 at the top, conventions.md).
 struct LightGrid {
     std::vector<LightView> views;
-    std::vector<glm::dmat4> clipFromWorld;   // per view, computed once (texelOf runs per receiver)
+    std::vector<glm::dmat4> clipFromWorld;   // per view, computed once (projectOccluder runs per tile)
     int resolution = 0;
     // Perspective views drop occluder parts nearer the light than this depth (view-space
     // -z), a thousandth of the reference's smallest offset (coverage.cpp).
@@ -90,14 +91,27 @@ struct LightGrid {
 // no receivers.
 std::vector<LightView> fitViews(const Light& pointOrDirectional, const GBuffer& gbuffer, const WorldGeometry& world);
 
+// Where the receivers lie in the views, found once and reused by chooseResolution and the
+// lists: each receiver's view and its texel coordinates over the resolution, (u, v) / R in
+// [0, 1]^2, so that its texel at any resolution costs two products (Johnson et al. 2005
+// store each sample's light-space position once for the same reason).
+struct ReceiverPlaces {
+    std::vector<uint8_t> view;
+    std::vector<glm::dvec2> unitUV;
+    size_t size() const { return view.size(); }
+};
+ReceiverPlaces placeReceivers(const std::vector<LightView>& views, const Receivers& receivers);
+
 // The resolution whose mean non-empty list holds about `targetListLength` receivers
 // (light_grid.cpp), within [kMinMapResolution, kMaxMapResolution] (depth_map.h).
-int chooseResolution(const std::vector<LightView>& views, const Receivers& receivers, double targetListLength);
+int chooseResolution(size_t viewCount, const ReceiverPlaces& places, double targetListLength);
 
 LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sceneDiagonal);
 
-// The texel whose closed square holds the receiver's projection; a point on the far edge
+// The texel whose closed square holds a placed receiver; a point on the far edge
 // u = resolution belongs to the last texel. Receivers always lie inside a view.
+std::vector<uint32_t> receiverTexels(int resolution, const ReceiverPlaces& places);
+// The same for one point, placed on the spot.
 uint32_t texelOf(const LightGrid& grid, const glm::dvec3& point);
 
 // ---- 3. Lists ------------------------------------------------------------------------------
@@ -114,8 +128,6 @@ Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const st
 
 // A texel's bucket lists its receivers (indices into Receivers), in pixel order.
 using TexelLists = Buckets;
-// texelOf() for every receiver, in parallel.
-std::vector<uint32_t> receiverTexels(const LightGrid& grid, const Receivers& receivers);
 inline TexelLists buildTexelLists(const std::vector<uint32_t>& texelOfReceiver, size_t texelCount) {
     return countingSort(texelOfReceiver, texelCount);
 }

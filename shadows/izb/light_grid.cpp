@@ -10,6 +10,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "shadows/izb/izb.h"
 #include "shadows/ray_offset.h"
 
@@ -41,26 +44,27 @@ std::vector<glm::dmat4> clipMatrices(const std::vector<LightView>& views) {
     return clip;
 }
 
-uint32_t texelIn(const std::vector<LightView>& views, const std::vector<glm::dmat4>& clipFromWorld, int resolution,
-                 const glm::dvec3& point) {
-    const int k = viewOf(views, point);
-    const glm::dvec4 c = clipFromWorld[size_t(k)] * glm::dvec4(point, 1.0);
-    // Normalised device coordinates to texel coordinates, row 0 at the top (conventions.md).
-    const double u = (c.x / c.w + 1.0) * 0.5 * resolution, v = (1.0 - c.y / c.w) * 0.5 * resolution;
-    return uint32_t((size_t(k) * resolution + cell(v, resolution)) * resolution + cell(u, resolution));
+// Normalised device coordinates to texel coordinates over the resolution, row 0 at the top
+// (conventions.md); times R, the products are those projectOccluder() forms.
+glm::dvec2 unitUV(const glm::dmat4& clipFromWorld, const glm::dvec3& point) {
+    const glm::dvec4 c = clipFromWorld * glm::dvec4(point, 1.0);
+    return {(c.x / c.w + 1.0) * 0.5, (1.0 - c.y / c.w) * 0.5};
+}
+
+uint32_t texelAt(int view, const glm::dvec2& unitUV, int resolution) {
+    const double u = unitUV.x * resolution, v = unitUV.y * resolution;
+    return uint32_t((size_t(view) * resolution + cell(v, resolution)) * resolution + cell(u, resolution));
 }
 
 // Mean length of the non-empty lists at a resolution: receivers over occupied texels.
-double meanListLength(const std::vector<LightView>& views, int resolution, const Receivers& receivers) {
-    std::vector<bool> occupied(views.size() * size_t(resolution) * size_t(resolution), false);
-    const std::vector<glm::dmat4> clipFromWorld = clipMatrices(views);
+double meanListLength(size_t viewCount, int resolution, const ReceiverPlaces& places) {
+    std::vector<uint8_t> occupied(viewCount * size_t(resolution) * size_t(resolution), 0);
     size_t count = 0;
-    for (const glm::dvec3& o : receivers.origin) {
-        const uint32_t t = texelIn(views, clipFromWorld, resolution, o);
+    for (const uint32_t t : receiverTexels(resolution, places)) {
         count += !occupied[t];
-        occupied[t] = true;
+        occupied[t] = 1;
     }
-    return double(receivers.size()) / double(std::max<size_t>(count, 1));
+    return double(places.size()) / double(std::max<size_t>(count, 1));
 }
 
 }  // namespace
@@ -86,13 +90,29 @@ std::vector<LightView> fitViews(const Light& light, const GBuffer& gbuffer, cons
 // the mean non-empty list length would scale as 1 / R^2 and hit the target exactly. It
 // shrinks as R grows (the receivers' footprint has holes at fine scales), hence the second
 // step. docs/hard-shadows.md gives the lengths it reaches.
-int chooseResolution(const std::vector<LightView>& views, const Receivers& receivers, double target) {
+int chooseResolution(size_t viewCount, const ReceiverPlaces& places, double target) {
     int resolution = 256;
     for (int step = 0; step < 2; ++step) {
-        const double scale = std::sqrt(meanListLength(views, resolution, receivers) / target);
+        const double scale = std::sqrt(meanListLength(viewCount, resolution, places) / target);
         resolution = std::clamp(int(std::lround(resolution * scale)), kMinMapResolution, kMaxMapResolution);
     }
     return resolution;
+}
+
+ReceiverPlaces placeReceivers(const std::vector<LightView>& views, const Receivers& receivers) {
+    const std::vector<glm::dmat4> clipFromWorld = clipMatrices(views);
+    ReceiverPlaces places;
+    places.view.resize(receivers.size());
+    places.unitUV.resize(receivers.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, receivers.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) {
+            const glm::dvec3 origin(receivers.origin[k]);
+            const int view = viewOf(views, origin);
+            places.view[k] = uint8_t(view);
+            places.unitUV[k] = unitUV(clipFromWorld[size_t(view)], origin);
+        }
+    });
+    return places;
 }
 
 LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sceneDiagonal) {
@@ -104,8 +124,17 @@ LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sce
     return grid;
 }
 
+std::vector<uint32_t> receiverTexels(int resolution, const ReceiverPlaces& places) {
+    std::vector<uint32_t> texel(places.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, places.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) texel[k] = texelAt(places.view[k], places.unitUV[k], resolution);
+    });
+    return texel;
+}
+
 uint32_t texelOf(const LightGrid& grid, const glm::dvec3& point) {
-    return texelIn(grid.views, grid.clipFromWorld, grid.resolution, point);
+    const int view = viewOf(grid.views, point);
+    return texelAt(view, unitUV(grid.clipFromWorld[size_t(view)], point), grid.resolution);
 }
 
 }  // namespace shadowlab::izb

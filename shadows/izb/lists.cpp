@@ -6,20 +6,11 @@
 // the receivers per texel, turn the counts into offsets by an exclusive prefix sum, then
 // place each receiver at its texel's next free slot, in receiver order. Every list is
 // therefore sorted by pixel, whatever the number of threads; the three passes are linear.
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include <algorithm>
 
 #include "shadows/izb/izb.h"
 
 namespace shadowlab::izb {
-
-std::vector<uint32_t> receiverTexels(const LightGrid& grid, const Receivers& receivers) {
-    std::vector<uint32_t> texel(receivers.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, receivers.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t k = r.begin(); k != r.end(); ++k) texel[k] = texelOf(grid, receivers.origin[k]);
-    });
-    return texel;
-}
 
 Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const std::vector<uint32_t>& value) {
     Buckets b;
@@ -27,9 +18,12 @@ Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const st
     // Count into first[k + 1], so that the prefix sum leaves first[k] = the items before k.
     for (const uint32_t k : key) ++b.first[k + 1];
     for (size_t k = 0; k < keyCount; ++k) b.first[k + 1] += b.first[k];
-    std::vector<uint32_t> next(b.first.begin(), b.first.end() - 1);
+    // Scatter with first[k] as bucket k's next free slot; it ends at the start of bucket
+    // k + 1, so one shift restores the offsets (no second array of keyCount cursors).
     b.entry.resize(key.size());
-    for (size_t item = 0; item < key.size(); ++item) b.entry[next[key[item]]++] = value.empty() ? uint32_t(item) : value[item];
+    for (size_t item = 0; item < key.size(); ++item) b.entry[b.first[key[item]]++] = value.empty() ? uint32_t(item) : value[item];
+    std::copy_backward(b.first.begin(), b.first.end() - 1, b.first.end());
+    b.first[0] = 0;
     return b;
 }
 

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "shading/lights.h"
@@ -20,34 +19,48 @@ HomogeneousLight homogeneousLight(const Light& light) {
 
 Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal, std::vector<float>& visibility) {
     const HomogeneousLight h = homogeneousLight(light);
-    // The origin is rounded to float once, as the reference's ray origin is; a point light
-    // nearer than the offset leaves no segment (tFar <= 0): seen, as in the reference.
-    const auto segment = [&](size_t k, glm::dvec3& origin) {
+    // The origin is rounded to float once, as the reference's ray origin is (so it is kept
+    // as a float, exactly); a point light nearer than the offset leaves no segment
+    // (tFar <= 0): seen, as in the reference.
+    const auto segment = [&](size_t k, glm::vec3& origin) {
         const double offset = shadowRayOffset(g.position[k], diagonal);
-        origin = glm::dvec3(glm::vec3(glm::dvec3(g.position[k]) + offset * glm::dvec3(g.normal[k])));
-        return h.w == 0.0 ? INFINITY : 1.0 - offset / glm::length(glm::dvec3(h) - origin);
+        origin = glm::vec3(glm::dvec3(g.position[k]) + offset * glm::dvec3(g.normal[k]));
+        return h.w == 0.0 ? INFINITY : 1.0 - offset / glm::length(glm::dvec3(h) - glm::dvec3(origin));
     };
-    // Decide per pixel in parallel (each writes only its own bytes), count the survivors in
-    // pixel order, then fill each one's slot in parallel; a survivor's segment is computed
-    // again there, which costs less than keeping an origin for every pixel.
+    // Decide per pixel in parallel (each writes only its own bytes) and count the survivors
+    // per chunk of pixels; an exclusive prefix sum over the chunks then gives each chunk the
+    // first slot of its survivors, which it fills in parallel, in pixel order. A survivor's
+    // segment is computed again there, which costs less than keeping an origin for every pixel.
+    constexpr size_t kChunk = 4096;
+    const size_t chunks = (g.pixelCount() + kChunk - 1) / kChunk;
+    const auto chunkEnd = [&](size_t c) { return std::min(g.pixelCount(), (c + 1) * kChunk); };
     visibility.assign(g.pixelCount(), 0.0f);
     std::vector<uint8_t> keep(g.pixelCount(), 0);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t k = r.begin(); k != r.end(); ++k) {
+    std::vector<uint32_t> first(chunks + 1, 0);
+    tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+        uint32_t kept = 0;   // counted locally: neighbouring chunks' counts share a cache line
+        for (size_t k = c * kChunk; k < chunkEnd(c); ++k) {
             if (!g.hit[k] || !lightReaches(light, g.position[k], g.normal[k])) continue;
             visibility[k] = 1.0f;
-            glm::dvec3 origin;
+            glm::vec3 origin;
             keep[k] = segment(k, origin) > 0.0;
+            kept += keep[k];
         }
+        first[c + 1] = kept;
     });
+    for (size_t c = 0; c < chunks; ++c) first[c + 1] += first[c];
     Receivers receivers;
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        if (keep[k]) receivers.pixel.push_back(uint32_t(k));
-    }
-    receivers.origin.resize(receivers.pixel.size());
-    receivers.tFar.resize(receivers.pixel.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, receivers.pixel.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t n = r.begin(); n != r.end(); ++n) receivers.tFar[n] = segment(receivers.pixel[n], receivers.origin[n]);
+    receivers.pixel.resize(first[chunks]);
+    receivers.origin.resize(first[chunks]);
+    receivers.tFar.resize(first[chunks]);
+    tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+        uint32_t n = first[c];
+        for (size_t k = c * kChunk; k < chunkEnd(c); ++k) {
+            if (!keep[k]) continue;
+            receivers.pixel[n] = uint32_t(k);
+            receivers.tFar[n] = segment(k, receivers.origin[n]);
+            ++n;
+        }
     });
     return receivers;
 }

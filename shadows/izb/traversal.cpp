@@ -33,7 +33,7 @@ struct Traversal {
         for (uint32_t e = lists.first[texel]; e < lists.first[texel + 1]; ++e) {
             const uint32_t r = lists.entry[e];
             if (out.blocked[r]) continue;   // already shadowed: another OR term cannot change it
-            const glm::dvec3& o = receivers.origin[r];
+            const glm::dvec3 o(receivers.origin[r]);
             out.blocked[r] = segmentBlocked(o, glm::dvec3(light) - light.w * o, receivers.tFar[r], triangle);
             ++tests;
         }

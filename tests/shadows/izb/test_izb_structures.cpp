@@ -25,11 +25,11 @@ TEST_CASE("izb texel lists equal lists built by appending receivers in pixel ord
     std::vector<float> V;
     const izb::Receivers receivers = izb::gatherReceivers(g, light, sceneDiagonal(world), V);
     const izb::LightGrid grid = izb::makeLightGrid(izb::fitViews(light, g, world), 300, sceneDiagonal(world));
-    const std::vector<uint32_t> texel = izb::receiverTexels(grid, receivers);
+    const std::vector<uint32_t> texel = izb::receiverTexels(grid.resolution, izb::placeReceivers(grid.views, receivers));
     const izb::TexelLists lists = izb::buildTexelLists(texel, grid.texelCount());
 
     std::vector<std::vector<uint32_t>> naive(grid.texelCount());
-    for (uint32_t r = 0; r < receivers.size(); ++r) naive[izb::texelOf(grid, receivers.origin[r])].push_back(r);
+    for (uint32_t r = 0; r < receivers.size(); ++r) naive[izb::texelOf(grid, glm::dvec3(receivers.origin[r]))].push_back(r);
     size_t mismatches = 0;
     for (size_t t = 0; t < grid.texelCount(); ++t) {
         const std::vector<uint32_t> built(lists.entry.begin() + lists.first[t], lists.entry.begin() + lists.first[t + 1]);
