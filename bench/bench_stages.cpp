@@ -109,10 +109,10 @@ void BM_RasterTiles(benchmark::State& state) {
     Framebuffer fb(kMapSize, kMapSize);
     const DrawConstants constants = {p.state, {1, 1, 1, 1}, 0};
     const TileKernel kernel = tileKernels(level).kernel[int(FragmentOutput::DepthOnly)][0];
-    const FramebufferView view = fb.view();
     uint64_t fragments = 0;
     for (auto _ : state) {
         fb.clearDepth(1.0f);
+        const FramebufferView view = fb.view();   // fills the whole map, as a full clear
         for (int tile = 0; tile < tiles * tiles; ++tile) {
             for (size_t e = bins.start[size_t(tile)]; e < bins.start[size_t(tile) + 1]; ++e)
                 kernel(*bins.entries[e], tile, constants, view, fragments);

@@ -8,6 +8,45 @@
 
 namespace shadowlab::raster {
 
+template <class T>
+void LazyClearedBuffer<T>::allocate(size_t tiles, T value) {
+    data_.resize(tiles * kPixelsPerTile);
+    pending_.resize(tiles);
+    clear(value);
+}
+
+template <class T>
+void LazyClearedBuffer<T>::clear(T value) {
+    value_ = value;
+    std::fill(pending_.begin(), pending_.end(), uint8_t(1));
+}
+
+template <class T>
+void LazyClearedBuffer<T>::fillTile(size_t tile) {
+    if (pending_.empty() || !pending_[tile]) return;
+    std::fill_n(data_.begin() + ptrdiff_t(tile * kPixelsPerTile), kPixelsPerTile, value_);
+    pending_[tile] = 0;
+}
+
+template <class T>
+std::vector<T>& LazyClearedBuffer<T>::resolved() {
+    tbb::parallel_for(size_t(0), pending_.size(), [&](size_t tile) { fillTile(tile); });
+    return data_;
+}
+
+template <class T>
+void LazyClearedBuffer<T>::copyRun(size_t from, size_t count, T* out) const {
+    if (pending_[from / kPixelsPerTile]) {
+        std::fill_n(out, count, value_);
+    } else {
+        std::copy_n(data_.begin() + ptrdiff_t(from), count, out);
+    }
+}
+
+template class LazyClearedBuffer<float>;
+template class LazyClearedBuffer<uint8_t>;
+template class LazyClearedBuffer<uint32_t>;
+
 Framebuffer::Framebuffer(int width, int height, Attachments attachments)
     : width_(width), height_(height), attachments_(attachments) {
     if (width < 1 || height < 1 || width > kMaxViewport || height > kMaxViewport) {
@@ -16,38 +55,48 @@ Framebuffer::Framebuffer(int width, int height, Attachments attachments)
     }
     tilesX_ = (width + kTileSize - 1) / kTileSize;
     tilesY_ = (height + kTileSize - 1) / kTileSize;
-    const size_t storage = size_t(tilesX_) * size_t(tilesY_) * kPixelsPerTile;
-    depth_.assign(storage, 1.0f);
-    if (attachments.stencil) stencil_.assign(storage, 0);
+    const size_t tiles = size_t(tilesX_) * size_t(tilesY_);
+    depth_.allocate(tiles, 1.0f);
+    if (attachments.stencil) stencil_.allocate(tiles, 0);
     if (attachments.color) {
-        for (auto& plane : color_) plane.assign(storage, 0.0f);
+        for (auto& plane : color_) plane.allocate(tiles, 0.0f);
     }
-    if (attachments.primitiveId) primitiveId_.assign(storage, 0);
+    if (attachments.primitiveId) primitiveId_.allocate(tiles, 0);
 }
 
-void Framebuffer::clearDepth(float value) { std::fill(depth_.begin(), depth_.end(), value); }
-void Framebuffer::clearStencil(uint8_t value) { std::fill(stencil_.begin(), stencil_.end(), value); }
-void Framebuffer::clearPrimitiveId(uint32_t value) { std::fill(primitiveId_.begin(), primitiveId_.end(), value); }
+void Framebuffer::clearDepth(float value) { depth_.clear(value); }
+void Framebuffer::clearStencil(uint8_t value) { stencil_.clear(value); }
+void Framebuffer::clearPrimitiveId(uint32_t value) { primitiveId_.clear(value); }
 void Framebuffer::clearColor(const glm::vec4& value) {
-    for (int c = 0; c < 4; ++c) std::fill(color_[c].begin(), color_[c].end(), value[c]);
+    for (int c = 0; c < 4; ++c) color_[c].clear(value[c]);
 }
 
 FramebufferView Framebuffer::view() {
-    auto dataOrNull = [](auto& v) { return v.empty() ? nullptr : v.data(); };
-    return {width_, height_, tilesX_, depth_.data(), dataOrNull(stencil_),
-            {dataOrNull(color_[0]), dataOrNull(color_[1]), dataOrNull(color_[2]), dataOrNull(color_[3])},
-            dataOrNull(primitiveId_)};
+    depth_.resolved(), stencil_.resolved(), primitiveId_.resolved();
+    for (auto& plane : color_) plane.resolved();
+    return unresolvedView();
+}
+
+FramebufferView Framebuffer::unresolvedView() {
+    return {width_, height_, tilesX_, depth_.unresolvedData(), stencil_.unresolvedData(),
+            {color_[0].unresolvedData(), color_[1].unresolvedData(), color_[2].unresolvedData(), color_[3].unresolvedData()},
+            primitiveId_.unresolvedData()};
+}
+
+void Framebuffer::fillPendingTile(int tile) {
+    depth_.fillTile(size_t(tile)), stencil_.fillTile(size_t(tile)), primitiveId_.fillTile(size_t(tile));
+    for (auto& plane : color_) plane.fillTile(size_t(tile));
 }
 
 template <class T>
-std::vector<T> Framebuffer::rowMajor(const std::vector<T>& blockLinear) const {
-    if (blockLinear.empty()) throw std::logic_error("framebuffer has no such attachment");
+std::vector<T> Framebuffer::rowMajor(const LazyClearedBuffer<T>& buffer) const {
+    if (buffer.empty()) throw std::logic_error("framebuffer has no such attachment");
     std::vector<T> image(size_t(width_) * size_t(height_));
     // A block's row of 8 pixels is contiguous in both layouts; rows are copied in parallel.
     tbb::parallel_for(0, height_, [&](int y) {
         for (int x = 0; x < width_; x += kBlockSize) {
-            std::copy_n(blockLinear.begin() + ptrdiff_t(index(x, y)), std::min(kBlockSize, width_ - x),
-                        image.begin() + ptrdiff_t(size_t(y) * size_t(width_) + size_t(x)));
+            buffer.copyRun(index(x, y), size_t(std::min(kBlockSize, width_ - x)),
+                           image.data() + size_t(y) * size_t(width_) + size_t(x));
         }
     });
     return image;

@@ -1,6 +1,12 @@
 // Depth (float), stencil (8-bit), RGBA colour (float planes) and primitive-id buffers.
 // Storage is block-linear (triangle_setup.h, FramebufferView); the *Image() accessors
 // return ordinary row-major copies with row 0 at the top, as conventions.md requires.
+//
+// Clears are lazy: a clear records the value and marks every tile pending, and a draw
+// fills a pending tile only when one of its tasks first writes that tile (a 2048^2 depth
+// map is 16 MB, and many tiles of a shadow map see no triangle). Whatever reads the
+// buffers from outside sees resolved values: the images read pending tiles as the clear
+// value, and view() fills every pending tile before handing out the storage.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +26,31 @@ inline size_t blockLinearIndex(int x, int y, int tilesX) {
     const int inBlock = (y & (kBlockSize - 1)) * kBlockSize + (x & (kBlockSize - 1));
     return tile * kPixelsPerTile + size_t(blockY * kBlocksPerTileSide + blockX) * kPixelsPerBlock + size_t(inBlock);
 }
+
+// One block-linear buffer with a per-tile pending clear.
+template <class T>
+class LazyClearedBuffer {
+public:
+    void allocate(size_t tiles, T value);
+    bool empty() const { return data_.empty(); }
+    void clear(T value);
+    // Fills the tile if its clear is pending; during a draw only the tile's task calls it.
+    void fillTile(size_t tile);
+    // The storage with every pending tile filled (in parallel): the only way out for the
+    // data as a whole, so nothing leaves the framebuffer unresolved.
+    std::vector<T>& resolved();
+    // The storage as it is, pending tiles unfilled: for the rasterizer, which calls
+    // fillTile before writing a tile.
+    T* unresolvedData() { return data_.empty() ? nullptr : data_.data(); }
+    // Copies `count` values from storage index `from` (all in one tile), reading a
+    // pending tile as its clear value.
+    void copyRun(size_t from, size_t count, T* out) const;
+
+private:
+    std::vector<T> data_;
+    std::vector<uint8_t> pending_;   // per tile: 1 while the tile still holds stale data
+    T value_{};
+};
 
 struct Attachments {
     bool stencil = false;
@@ -46,25 +77,32 @@ public:
 
     // Storage index of pixel (x, y).
     size_t index(int x, int y) const { return blockLinearIndex(x, y, tilesX_); }
+    // The storage, every pending clear resolved first.
     FramebufferView view();
 
     std::vector<float> depthImage() const;
-    // The depth buffer itself, block-linear (index()), moved out without a copy; the
-    // framebuffer has no depth afterwards.
-    std::vector<float> takeDepth() { return std::move(depth_); }
+    // The depth buffer itself, block-linear (index()), resolved and moved out without a
+    // copy; the framebuffer has no depth afterwards.
+    std::vector<float> takeDepth() { return std::move(depth_.resolved()); }
     std::vector<uint8_t> stencilImage() const;
     std::vector<float> colorImage(int channel) const;
     std::vector<uint32_t> primitiveIdImage() const;
 
 private:
-    template <class T> std::vector<T> rowMajor(const std::vector<T>& blockLinear) const;
+    // The rasterizer writes tiles through the unresolved storage, filling each pending
+    // tile it is about to touch.
+    friend class Rasterizer;
+    FramebufferView unresolvedView();
+    void fillPendingTile(int tile);
+
+    template <class T> std::vector<T> rowMajor(const LazyClearedBuffer<T>& buffer) const;
 
     int width_, height_, tilesX_, tilesY_;
     Attachments attachments_;
-    std::vector<float> depth_;
-    std::vector<uint8_t> stencil_;
-    std::vector<float> color_[4];
-    std::vector<uint32_t> primitiveId_;
+    LazyClearedBuffer<float> depth_;
+    LazyClearedBuffer<uint8_t> stencil_;
+    LazyClearedBuffer<float> color_[4];
+    LazyClearedBuffer<uint32_t> primitiveId_;
 };
 
 }  // namespace shadowlab::raster

@@ -153,11 +153,14 @@ void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& vie
 
 // Returns the fragments rasterized: each tile's count, summed.
 uint64_t Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel) {
-    const FramebufferView view = framebuffer.view();
+    const FramebufferView view = framebuffer.unresolvedView();
     const int tileCount = framebuffer.tilesX() * framebuffer.tilesY();
     tileFragments_.assign(size_t(tileCount), 0);
-    // One task owns one tile and runs its triangles in submission order.
+    // One task owns one tile and runs its triangles in submission order. A tile no
+    // triangle touches keeps a pending clear (framebuffer.h) and costs nothing.
     tbb::parallel_for(0, tileCount, [&](int tile) {
+        if (bins_.start[size_t(tile)] == bins_.start[size_t(tile) + 1]) return;
+        framebuffer.fillPendingTile(tile);
         uint64_t fragments = 0;
         for (size_t e = bins_.start[size_t(tile)]; e < bins_.start[size_t(tile) + 1]; ++e) {
             kernel(*bins_.entries[e], tile, constants, view, fragments);
