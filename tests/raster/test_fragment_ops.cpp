@@ -270,3 +270,41 @@ TEST_CASE("draw rejects bad input with a clear error") {
     CHECK_THROWS_AS(Framebuffer(kMaxViewport + 1, 10), std::invalid_argument);
     CHECK_THROWS_AS(parseSimdLevel("sse9"), std::invalid_argument);
 }
+
+TEST_CASE("lazy clears: untouched tiles read as the clear value, a second clear undoes a draw, takeDepth is resolved") {
+    // 200 x 130 pixels: 4 x 3 tiles, the last column and row partial. One small quad in
+    // tile (1, 0) only; every other tile is never written by the draw.
+    constexpr int kWidth = 200, kHeight = 130;
+    const std::vector<glm::vec3> p = {{70, 10, 0.25f}, {90, 10, 0.25f}, {90, 30, 0.25f}, {70, 30, 0.25f}};
+    const std::vector<glm::uvec3> t = {{0, 1, 2}, {0, 2, 3}};
+    for (SimdLevel level : supportedLevels()) {
+        Rasterizer r(level);
+        Framebuffer fb(kWidth, kHeight, {.stencil = true});
+        fb.clearDepth(0.75f);
+        fb.clearStencil(9);
+        PipelineState s;
+        s.cull = CullMode::None;
+        r.draw(fb, s, test::windowDraw(fb, p, t));
+        const auto inQuad = [](int x, int y) { return x >= 70 && x < 90 && y >= 10 && y < 30; };
+        const std::vector<float> depth = fb.depthImage();
+        const std::vector<uint8_t> stencil = fb.stencilImage();
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                const size_t k = size_t(y) * kWidth + size_t(x);
+                REQUIRE(depth[k] == (inQuad(x, y) ? 0.25f : 0.75f));
+                REQUIRE(stencil[k] == 9);
+            }
+        }
+        // A clear after the draw hides it again, in the images and in the resolved storage.
+        fb.clearDepth(0.5f);
+        const FramebufferView view = fb.view();
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) REQUIRE(view.depth[fb.index(x, y)] == 0.5f);
+        }
+        r.draw(fb, s, test::windowDraw(fb, p, t));
+        const size_t inside = fb.index(80, 20), outside = fb.index(150, 100);
+        const std::vector<float> storage = fb.takeDepth();
+        CHECK(storage[inside] == 0.25f);
+        CHECK(storage[outside] == 0.5f);
+    }
+}

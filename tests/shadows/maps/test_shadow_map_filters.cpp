@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "shadows/maps/pcf.h"
 
@@ -34,6 +35,28 @@ MapReceiver receiverAt(double u) {
 double litSide(double u) { return std::floor(u) >= kEdge ? 1.0 : 0.0; }
 
 }  // namespace
+
+TEST_CASE("texelIndexOf is floor, saturated, for every coordinate a lookup can meet") {
+    for (double c : {0.0, -0.0, 0.5, 1.0, 1.0 - 1e-12, -1e-300, -0.5, -1.0, -1.0 - 1e-12, 2047.999999, 2048.0, -3.25, 1e6 + 0.5}) {
+        INFO("c = " << c);
+        CHECK(texelIndexOf(c) == int(std::floor(c)));
+    }
+    CHECK(texelIndexOf(1e300) == 1 << 30);
+    CHECK(texelIndexOf(-1e300) == -(1 << 30));
+    CHECK(texelIndexOf(std::numeric_limits<double>::infinity()) == 1 << 30);
+    CHECK(texelIndexOf(std::nan("")) == -(1 << 30));
+}
+
+TEST_CASE("a depth map reads its block-linear texels in place, clamped, and image() gives the same rows") {
+    const DepthMap map = edgeMap();
+    const std::vector<float> rows = map.image();
+    REQUIRE(rows.size() == size_t(kSize * kSize));
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) REQUIRE(rows[size_t(y) * kSize + size_t(x)] == (x < kEdge ? 0.0f : 1.0f));
+    }
+    CHECK(map.at(-5, 3) == 0.0f);
+    CHECK(map.at(kSize + 7, -2) == 1.0f);
+}
 
 TEST_CASE("PCF over a straight edge equals the kernel's cumulative weights") {
     const DepthMap map = edgeMap();
