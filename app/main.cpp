@@ -350,7 +350,7 @@ void addExportObjCommand(CLI::App& app, ExportArgs& a) {
 // program gets the same effect by keeping freed memory for reuse, serving blocks up to
 // glibc's largest mmap threshold (32 MiB) from the heap and never trimming it, so that only
 // the first (warm-up) frame pays the faults. Set once, before any work, by the program, not
-// by the library (docs/peers.md, "Memory").
+// by the library (docs/peers.md, "Measured").
 void keepFreedMemoryForReuse() {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, -1);

@@ -52,8 +52,9 @@ struct DepthMap {
 };
 
 // The texel holding texel coordinate c, floor(c), saturated to +-2^30 (NaN to -2^30) so
-// that any coordinate is a valid int that at() then clamps. Truncation plus a correction
-// instead of std::floor: without SSE4.1 the library call cost more than the whole tap.
+// that any coordinate is a valid int that at() then clamps (converting an out-of-range
+// double to int is undefined). Truncation plus a correction instead of std::floor, which
+// is a library call on the baseline x86-64 target.
 inline int texelIndexOf(double c) {
     constexpr double kLimit = 1073741824.0;
     const double saturated = c > -kLimit ? (c < kLimit ? c : kLimit) : -kLimit;

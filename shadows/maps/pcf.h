@@ -60,11 +60,9 @@ inline glm::dvec2 rotatedTap(const glm::dvec2& d, const glm::dvec2& rotation, co
 // receiver pass is compiled for its filter.
 namespace pcf {
 
-inline int texelOf(double coordinate) { return texelIndexOf(coordinate); }
-
 // The one texel holding texel position `at`, compared with the receiver's depth.
 inline double nearestAt(const DepthMap& map, const MapReceiver& r, const glm::dvec2& at) {
-    return r.litBy(map, texelOf(at.x), texelOf(at.y)) ? 1.0 : 0.0;
+    return r.litBy(map, texelIndexOf(at.x), texelIndexOf(at.y)) ? 1.0 : 0.0;
 }
 
 struct Nearest {
@@ -75,7 +73,7 @@ struct Nearest {
 struct Bilinear {
     double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const {
         const glm::dvec2 base = r.texel - 0.5;
-        const int x0 = texelOf(base.x), y0 = texelOf(base.y);
+        const int x0 = texelIndexOf(base.x), y0 = texelIndexOf(base.y);
         const double fx = base.x - x0, fy = base.y - y0;
         const double top = (1.0 - fx) * r.litBy(map, x0, y0) + fx * r.litBy(map, x0 + 1, y0);
         const double bottom = (1.0 - fx) * r.litBy(map, x0, y0 + 1) + fx * r.litBy(map, x0 + 1, y0 + 1);
@@ -89,7 +87,7 @@ struct Grid {
         const double first = -0.5 * (n - 1);
         int lit = 0;
         for (int b = 0; b < n; ++b) {
-            for (int a = 0; a < n; ++a) lit += r.litBy(map, texelOf(r.texel.x + first + a), texelOf(r.texel.y + first + b));
+            for (int a = 0; a < n; ++a) lit += r.litBy(map, texelIndexOf(r.texel.x + first + a), texelIndexOf(r.texel.y + first + b));
         }
         return double(lit) / double(n * n);
     }
