@@ -23,6 +23,21 @@ inline I32 load(const uint32_t* p) { return {_mm256_loadu_si256(reinterpret_cast
 inline I32 loadU8(const uint8_t* p) {
     return {_mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)))};
 }
+// Lane k of x, y, z from p[3k], p[3k + 1], p[3k + 2]: element e = 3k + c of the 24 lies in
+// vector e / 8 at lane e % 8; each vector is permuted there and the three are blended.
+inline void loadTriples(const float* p, F32& x, F32& y, F32& z) {
+    const __m256 a = _mm256_loadu_ps(p), b = _mm256_loadu_ps(p + 8), c = _mm256_loadu_ps(p + 16);
+    // x: elements 0 3 6 | 9 12 15 | 18 21; y: 1 4 7 | 10 13 | 16 19 22; z: 2 5 | 8 11 14 | 17 20 23.
+    const __m256i lanesX = _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5);
+    const __m256i lanesY = _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6);
+    const __m256i lanesZ = _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7);
+    x = {_mm256_blend_ps(_mm256_blend_ps(_mm256_permutevar8x32_ps(a, lanesX), _mm256_permutevar8x32_ps(b, lanesX), 0x38),
+                         _mm256_permutevar8x32_ps(c, lanesX), 0xc0)};
+    y = {_mm256_blend_ps(_mm256_blend_ps(_mm256_permutevar8x32_ps(a, lanesY), _mm256_permutevar8x32_ps(b, lanesY), 0x18),
+                         _mm256_permutevar8x32_ps(c, lanesY), 0xe0)};
+    z = {_mm256_blend_ps(_mm256_blend_ps(_mm256_permutevar8x32_ps(a, lanesZ), _mm256_permutevar8x32_ps(b, lanesZ), 0x1c),
+                         _mm256_permutevar8x32_ps(c, lanesZ), 0xe0)};
+}
 inline void store(float* p, F32 a) { _mm256_storeu_ps(p, a.v); }
 inline void store(uint32_t* p, I32 a) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), a.v); }
 inline void storeU8(uint8_t* p, I32 a) {
@@ -37,7 +52,10 @@ inline F32 operator*(F32 a, F32 b) { return {_mm256_mul_ps(a.v, b.v)}; }
 inline F32 operator/(F32 a, F32 b) { return {_mm256_div_ps(a.v, b.v)}; }
 inline F32 min(F32 a, F32 b) { return {_mm256_min_ps(a.v, b.v)}; }
 inline F32 max(F32 a, F32 b) { return {_mm256_max_ps(a.v, b.v)}; }
+inline F32 sqrt(F32 a) { return {_mm256_sqrt_ps(a.v)}; }
 inline F32 toFloat(I32 a) { return {_mm256_cvtepi32_ps(a.v)}; }
+inline I32 truncateToInt(F32 a) { return {_mm256_cvttps_epi32(a.v)}; }
+inline F32 gather(const float* p, I32 index) { return {_mm256_i32gather_ps(p, index.v, 4)}; }
 
 inline I32 operator+(I32 a, I32 b) { return {_mm256_add_epi32(a.v, b.v)}; }
 inline I32 operator-(I32 a, I32 b) { return {_mm256_sub_epi32(a.v, b.v)}; }
@@ -45,7 +63,10 @@ inline I32 operator*(I32 a, I32 b) { return {_mm256_mullo_epi32(a.v, b.v)}; }
 inline I32 operator&(I32 a, I32 b) { return {_mm256_and_si256(a.v, b.v)}; }
 inline I32 operator|(I32 a, I32 b) { return {_mm256_or_si256(a.v, b.v)}; }
 inline I32 operator^(I32 a, I32 b) { return {_mm256_xor_si256(a.v, b.v)}; }
+inline I32 min(I32 a, I32 b) { return {_mm256_min_epi32(a.v, b.v)}; }
+inline I32 max(I32 a, I32 b) { return {_mm256_max_epi32(a.v, b.v)}; }
 template <int kBits> inline I32 shiftRight(I32 a) { return {_mm256_srai_epi32(a.v, kBits)}; }
+template <int kBits> inline I32 shiftLeft(I32 a) { return {_mm256_slli_epi32(a.v, kBits)}; }
 
 // Ordered compares are false on NaN and "not equal" is true on NaN, as in C++.
 inline Mask cmpLt(F32 a, F32 b) { return {_mm256_castps_si256(_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ))}; }

@@ -23,6 +23,23 @@ inline I32 load(const uint32_t* p) { return {_mm512_loadu_si512(p)}; }
 inline I32 loadU8(const uint8_t* p) {
     return {_mm512_cvtepu8_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)))};
 }
+// Lane k of x, y, z from p[3k], p[3k + 1], p[3k + 2]: element e = 3k + c of the 48 comes
+// from the first two vectors while e < 32 (one two-source permute), and from the third
+// after (a second permute that keeps the lanes already placed).
+inline F32 tripleComponent(__m512 a, __m512 b, __m512 c, int component) {
+    alignas(64) int32_t first[16], second[16];
+    for (int k = 0; k < 16; ++k) {
+        const int e = 3 * k + component;
+        first[k] = e < 32 ? e : 0;
+        second[k] = e < 32 ? k : 16 + e - 32;
+    }
+    const __m512 ab = _mm512_permutex2var_ps(a, _mm512_load_si512(first), b);
+    return {_mm512_permutex2var_ps(ab, _mm512_load_si512(second), c)};
+}
+inline void loadTriples(const float* p, F32& x, F32& y, F32& z) {
+    const __m512 a = _mm512_loadu_ps(p), b = _mm512_loadu_ps(p + 16), c = _mm512_loadu_ps(p + 32);
+    x = tripleComponent(a, b, c, 0), y = tripleComponent(a, b, c, 1), z = tripleComponent(a, b, c, 2);
+}
 inline void store(float* p, F32 a) { _mm512_storeu_ps(p, a.v); }
 inline void store(uint32_t* p, I32 a) { _mm512_storeu_si512(p, a.v); }
 inline void storeU8(uint8_t* p, I32 a) {
@@ -36,7 +53,10 @@ inline F32 operator*(F32 a, F32 b) { return {_mm512_mul_ps(a.v, b.v)}; }
 inline F32 operator/(F32 a, F32 b) { return {_mm512_div_ps(a.v, b.v)}; }
 inline F32 min(F32 a, F32 b) { return {_mm512_min_ps(a.v, b.v)}; }
 inline F32 max(F32 a, F32 b) { return {_mm512_max_ps(a.v, b.v)}; }
+inline F32 sqrt(F32 a) { return {_mm512_sqrt_ps(a.v)}; }
 inline F32 toFloat(I32 a) { return {_mm512_cvtepi32_ps(a.v)}; }
+inline I32 truncateToInt(F32 a) { return {_mm512_cvttps_epi32(a.v)}; }
+inline F32 gather(const float* p, I32 index) { return {_mm512_i32gather_ps(index.v, p, 4)}; }
 
 inline I32 operator+(I32 a, I32 b) { return {_mm512_add_epi32(a.v, b.v)}; }
 inline I32 operator-(I32 a, I32 b) { return {_mm512_sub_epi32(a.v, b.v)}; }
@@ -44,7 +64,10 @@ inline I32 operator*(I32 a, I32 b) { return {_mm512_mullo_epi32(a.v, b.v)}; }
 inline I32 operator&(I32 a, I32 b) { return {_mm512_and_si512(a.v, b.v)}; }
 inline I32 operator|(I32 a, I32 b) { return {_mm512_or_si512(a.v, b.v)}; }
 inline I32 operator^(I32 a, I32 b) { return {_mm512_xor_si512(a.v, b.v)}; }
+inline I32 min(I32 a, I32 b) { return {_mm512_min_epi32(a.v, b.v)}; }
+inline I32 max(I32 a, I32 b) { return {_mm512_max_epi32(a.v, b.v)}; }
 template <int kBits> inline I32 shiftRight(I32 a) { return {_mm512_srai_epi32(a.v, kBits)}; }
+template <int kBits> inline I32 shiftLeft(I32 a) { return {_mm512_slli_epi32(a.v, kBits)}; }
 
 // Ordered compares are false on NaN and "not equal" is true on NaN, as in C++.
 inline Mask cmpLt(F32 a, F32 b) { return {_mm512_cmp_ps_mask(a.v, b.v, _CMP_LT_OQ)}; }

@@ -22,6 +22,8 @@ inline I32 laneIndex() { return {0}; }
 inline F32 load(const float* p) { return {*p}; }
 inline I32 load(const uint32_t* p) { return {int32_t(*p)}; }
 inline I32 loadU8(const uint8_t* p) { return {int32_t(*p)}; }
+// Lane k of x, y, z from p[3k], p[3k + 1], p[3k + 2] (a run of x, y, z triples).
+inline void loadTriples(const float* p, F32& x, F32& y, F32& z) { x = {p[0]}, y = {p[1]}, z = {p[2]}; }
 inline void store(float* p, F32 a) { *p = a.v; }
 inline void store(uint32_t* p, I32 a) { *p = uint32_t(a.v); }
 inline void storeU8(uint8_t* p, I32 a) { *p = uint8_t(a.v); }
@@ -33,7 +35,12 @@ inline F32 operator/(F32 a, F32 b) { return {a.v / b.v}; }
 // As minps/maxps: the second operand when the lanes are unordered or both zero.
 inline F32 min(F32 a, F32 b) { return {a.v < b.v ? a.v : b.v}; }
 inline F32 max(F32 a, F32 b) { return {a.v > b.v ? a.v : b.v}; }
+inline F32 sqrt(F32 a) { return {__builtin_sqrtf(a.v)}; }
 inline F32 toFloat(I32 a) { return {float(a.v)}; }
+// Rounds towards zero; lanes must hold values an int32 can (callers saturate first).
+inline I32 truncateToInt(F32 a) { return {int32_t(a.v)}; }
+// p[index], lane by lane.
+inline F32 gather(const float* p, I32 index) { return {p[index.v]}; }
 
 inline I32 operator+(I32 a, I32 b) { return {a.v + b.v}; }
 inline I32 operator-(I32 a, I32 b) { return {a.v - b.v}; }
@@ -41,7 +48,10 @@ inline I32 operator*(I32 a, I32 b) { return {a.v * b.v}; }
 inline I32 operator&(I32 a, I32 b) { return {a.v & b.v}; }
 inline I32 operator|(I32 a, I32 b) { return {a.v | b.v}; }
 inline I32 operator^(I32 a, I32 b) { return {a.v ^ b.v}; }
+inline I32 min(I32 a, I32 b) { return {a.v < b.v ? a.v : b.v}; }
+inline I32 max(I32 a, I32 b) { return {a.v > b.v ? a.v : b.v}; }
 template <int kBits> inline I32 shiftRight(I32 a) { return {a.v >> kBits}; }
+template <int kBits> inline I32 shiftLeft(I32 a) { return {int32_t(uint32_t(a.v) << kBits)}; }
 
 // Comparisons return masks, so they are named functions rather than operators.
 inline Mask cmpLt(F32 a, F32 b) { return {a.v < b.v}; }
