@@ -37,12 +37,32 @@ bool insideSpotCone(const Light& light, const glm::vec3& point);
 // lies inside its cone. Where this is false V = 0 (conventions.md, the V channel), so every
 // technique and the reference decide it alike. Evaluated in double; inline, since every
 // receiver pass asks it per pixel.
-inline bool lightReaches(const Light& light, const glm::vec3& P, const glm::vec3& N) {
-    const glm::dvec3 towardsLight = light.type == LightType::Directional ? glm::dvec3(light.direction)
-                                                                          : glm::dvec3(light.position) - glm::dvec3(P);
-    if (!(glm::dot(glm::dvec3(N), towardsLight) > 0.0)) return false;
-    return light.type != LightType::Spot || insideSpotCone(light, P);
-}
+//
+// LightReach is the same test with the light's type decided once, for a pass over many
+// points: towards the light is A - s P, with (A, s) = (direction, 0) for a directional
+// light and (position, 1) otherwise. 0 P = 0 and A - 0 = A exactly (P is finite), so both
+// kinds get lightReaches' bits without a branch per point.
+class LightReach {
+public:
+    explicit LightReach(const Light& light)
+        : light_(light),
+          anchor_(light.type == LightType::Directional ? glm::dvec3(light.direction) : glm::dvec3(light.position)),
+          pointScale_(light.type == LightType::Directional ? 0.0 : 1.0),
+          spot_(light.type == LightType::Spot) {}
+    bool operator()(const glm::vec3& P, const glm::vec3& N) const {
+        const glm::dvec3 towardsLight = anchor_ - glm::dvec3(P) * pointScale_;
+        if (!(glm::dot(glm::dvec3(N), towardsLight) > 0.0)) return false;
+        return !spot_ || insideSpotCone(light_, P);
+    }
+
+private:
+    const Light& light_;
+    glm::dvec3 anchor_;
+    double pointScale_;
+    bool spot_;
+};
+
+inline bool lightReaches(const Light& light, const glm::vec3& P, const glm::vec3& N) { return LightReach(light)(P, N); }
 
 // Unit normal of the emitting side: disk: its direction; rectangle: the right-handed
 // normalize(cross(halfEdgeU, halfEdgeV)), i.e. the side from which U turns
