@@ -54,7 +54,7 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     const CascadedMaps cm = renderCascades(in.light, in.scene().camera, in.gbuffer, in.world(), cs, depthMapSettings(s), in.simd);
     timer.lap("cascades");
     const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, in.light, cm.maps,
-                                              CascadeSelector{cm, in.scene().camera}, s.bias, makePcfKernel(s.filter),
+                                              CascadeSelector{cm, in.scene().camera}, s.bias, makePcfKernel(s.filter), in.simd,
                                               !in.debugDir.empty());
     timer.lap("lookup");
     addStats(out, cm, s.resolution, lookup);

@@ -55,9 +55,9 @@ inline glm::dvec2 rotatedTap(const glm::dvec2& d, const glm::dvec2& rotation, co
     return radiusTexels * glm::dvec2(rotation.x * d.x - rotation.y * d.y, rotation.y * d.x + rotation.x * d.y);
 }
 
-// The filters as functors, filter(map, receiver, pixel) = the fraction of the kernel's
-// weight that is lit, in [0, 1]. withFilter() chooses one per pass, not per pixel, so the
-// receiver pass is compiled for its filter.
+// The double-precision taps the soft-shadow techniques use (PCSS's filter, multi-sample's
+// maps), filter(map, receiver, pixel) = the fraction lit; the shadow map's own lookup runs
+// every kernel above in float (lookup_kernel.inl).
 namespace pcf {
 
 // The one texel holding texel position `at`, compared with the receiver's depth.
@@ -67,30 +67,6 @@ inline double nearestAt(const DepthMap& map, const MapReceiver& r, const glm::dv
 
 struct Nearest {
     double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const { return nearestAt(map, r, r.texel); }
-};
-
-// The four texel centres around the receiver and its bilinear weights (section 7.5).
-struct Bilinear {
-    double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const {
-        const glm::dvec2 base = r.texel - 0.5;
-        const int x0 = texelIndexOf(base.x), y0 = texelIndexOf(base.y);
-        const double fx = base.x - x0, fy = base.y - y0;
-        const double top = (1.0 - fx) * r.litBy(map, x0, y0) + fx * r.litBy(map, x0 + 1, y0);
-        const double bottom = (1.0 - fx) * r.litBy(map, x0, y0 + 1) + fx * r.litBy(map, x0 + 1, y0 + 1);
-        return (1.0 - fy) * top + fy * bottom;
-    }
-};
-
-struct Grid {
-    int n;
-    double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const {
-        const double first = -0.5 * (n - 1);
-        int lit = 0;
-        for (int b = 0; b < n; ++b) {
-            for (int a = 0; a < n; ++a) lit += r.litBy(map, texelIndexOf(r.texel.x + first + a), texelIndexOf(r.texel.y + first + b));
-        }
-        return double(lit) / double(n * n);
-    }
 };
 
 struct Poisson {
@@ -107,27 +83,10 @@ struct Poisson {
 
 }  // namespace pcf
 
-// visit(filter) with the kernel's filter functor.
-template <class Visit>
-decltype(auto) withFilter(const PcfKernel& k, Visit&& visit) {
-    switch (k.settings.kind) {
-        case FilterKind::Bilinear: return visit(pcf::Bilinear{});
-        case FilterKind::Grid: return visit(pcf::Grid{k.settings.gridSize});
-        case FilterKind::Poisson: return visit(pcf::Poisson{&k.disk, glm::dvec2(k.settings.poissonRadiusTexels)});
-        case FilterKind::Nearest: break;
-    }
-    return visit(pcf::Nearest{});
-}
-
 // The poisson kernel's taps at `radiusTexels` per axis around the receiver (the fraction lit).
 inline double poissonVisibility(const DepthMap& map, const MapReceiver& receiver, const std::vector<glm::dvec2>& disk,
                                 uint64_t pixel, const glm::dvec2& radiusTexels) {
     return pcf::Poisson{&disk, radiusTexels}(map, receiver, pixel);
-}
-
-// The fraction of the kernel's weight that is lit, in [0, 1].
-inline double filteredVisibility(const DepthMap& map, const MapReceiver& receiver, const PcfKernel& kernel, uint64_t pixel) {
-    return withFilter(kernel, [&](const auto& filter) { return filter(map, receiver, pixel); });
 }
 
 }  // namespace shadowlab

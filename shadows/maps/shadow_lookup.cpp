@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "shadows/maps/lookup_kernel.h"
 
 namespace shadowlab {
 namespace {
@@ -17,7 +22,120 @@ glm::dvec3 onPlane(const PixelRays& rays, int i, int j, const glm::dvec3& P, con
     return ray.origin + ray.direction * (glm::dot(N, P - ray.origin) / glm::dot(N, ray.direction));
 }
 
+LookupMap lookupMapOf(const DepthMap& map) {
+    LookupMap out{};
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            out.texelFromWorld[4 * c + r] = float(map.texelFromWorld[c][r]);
+            out.worldFromTexel[4 * c + r] = float(map.worldFromTexel[c][r]);
+        }
+    }
+    out.depth = map.depth.data();
+    out.size = map.size;
+    out.tilesX = map.tilesX;
+    return out;
+}
+
+static_assert(int(BiasMode::Constant) == kLookupConstant && int(BiasMode::SlopeScaled) == kLookupSlopeScaled &&
+              int(BiasMode::NormalOffset) == kLookupNormalOffset && int(BiasMode::ReceiverPlane) == kLookupReceiverPlane);
+static_assert(int(FilterKind::Nearest) == kLookupNearest && int(FilterKind::Bilinear) == kLookupBilinear &&
+              int(FilterKind::Grid) == kLookupGrid && int(FilterKind::Poisson) == kLookupPoisson);
+
 }  // namespace
+
+const LookupKernels& lookupKernels(raster::SimdLevel simd) {
+    raster::tileKernels(simd);   // throws where this CPU lacks the level
+    switch (simd) {
+        case raster::SimdLevel::Avx2: return lookupKernelsAvx2();
+        case raster::SimdLevel::Avx512: return lookupKernelsAvx512();
+        case raster::SimdLevel::Scalar: break;
+    }
+    return lookupKernelsScalar();
+}
+
+struct LookupPass::Tables {
+    explicit Tables(const Light& light) : reaches(light) {}
+    LightReach reaches;       // where the float test cannot certify its answer
+    std::vector<LookupMap> maps;
+    std::vector<float> diskX, diskY;
+    LookupConstants constants{};
+    // The SIMD level's stages, and the scalar twins that take each row's tail.
+    LookupKernel reach = nullptr, project = nullptr, filter = nullptr;
+    LookupKernel scalarReach = nullptr, scalarProject = nullptr, scalarFilter = nullptr;
+    int width = 1;
+    bool poisson = false;
+};
+
+LookupPass::LookupPass(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias,
+                       const PcfKernel& kernel, raster::SimdLevel simd)
+    : tables_(std::make_unique<Tables>(light)) {
+    Tables& t = *tables_;
+    // served[] holds 1 + a map's index in the low seven bits of a byte (kReachUndecided).
+    if (maps.size() > 126) throw std::invalid_argument("shadow lookup: more than 126 maps");
+    for (const DepthMap& map : maps) t.maps.push_back(lookupMapOf(map));
+    for (const glm::dvec2& d : kernel.disk) t.diskX.push_back(float(d.x)), t.diskY.push_back(float(d.y));
+    LookupConstants& c = t.constants;
+    c.maps = t.maps.data();
+    c.mapCount = int(t.maps.size());
+    c.bias = int(bias.mode);
+    c.constantMetres = float(bias.constantMetres);
+    c.normalOffsetTexels = float(bias.normalOffsetTexels);
+    c.directional = light.type == LightType::Directional;
+    const glm::vec3 towards = c.directional ? glm::vec3(glm::normalize(glm::dvec3(light.direction))) : light.position;
+    c.light[0] = towards.x, c.light[1] = towards.y, c.light[2] = towards.z;
+    const glm::vec3 anchor = c.directional ? light.direction : light.position;   // as lightReaches
+    c.reachAnchor[0] = anchor.x, c.reachAnchor[1] = anchor.y, c.reachAnchor[2] = anchor.z;
+    c.spot = light.type == LightType::Spot;
+    c.gridSize = kernel.settings.gridSize;
+    c.diskX = t.diskX.data(), c.diskY = t.diskY.data();
+    c.diskTaps = int(t.diskX.size());
+    c.radiusTexels[0] = c.radiusTexels[1] = float(kernel.settings.poissonRadiusTexels);
+    const int filter = int(kernel.settings.kind), plane = bias.mode == BiasMode::ReceiverPlane ? 1 : 0;
+    const LookupKernels& vector = lookupKernels(simd);
+    const LookupKernels& scalar = lookupKernelsScalar();
+    t.reach = vector.reach, t.project = vector.project[plane], t.filter = vector.filter[filter][plane];
+    t.scalarReach = scalar.reach, t.scalarProject = scalar.project[plane], t.scalarFilter = scalar.filter[filter][plane];
+    t.width = vector.width;
+    t.poisson = kernel.settings.kind == FilterKind::Poisson;
+}
+
+LookupPass::~LookupPass() = default;
+
+void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, float* visibility) const {
+    const Tables& t = *tables_;
+    const int count = g.width;
+    if (t.poisson) {
+        // The per-pixel rotation of the Poisson disk, a hash of the pixel index (pcf.h).
+        for (int i = 0; i < count; ++i) {
+            const double angle = poissonRotation(g.index(i, j));
+            scratch.rotationCos[size_t(i)] = float(std::cos(angle)), scratch.rotationSin[size_t(i)] = float(std::sin(angle));
+        }
+    }
+    float* r = scratch.receivers.data();
+    const int n = int(scratch.served.size());
+    const ReceiverArrays arrays{r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n};
+    const size_t k = g.index(0, j);
+    const int vectors = count - count % t.width;
+    const LookupRow row{glm::value_ptr(g.position[k]), glm::value_ptr(g.normal[k]), scratch.served.data(),
+                        scratch.rotationCos.data(), scratch.rotationSin.data(), arrays, visibility + k, vectors};
+    // The row's tail, fewer pixels than a vector, goes through the scalar twins (the same bits).
+    const auto at = [&](float* a) { return a + vectors; };
+    const LookupRow tail{row.position + 3 * vectors, row.normal + 3 * vectors, row.served + vectors,
+                         row.rotationCos + vectors, row.rotationSin + vectors,
+                         {at(arrays.texelX), at(arrays.texelY), at(arrays.depth), at(arrays.slopeX), at(arrays.slopeY),
+                          at(arrays.tolerance)},
+                         visibility + k + size_t(vectors), count - vectors};
+    t.reach(t.constants, row);
+    t.scalarReach(t.constants, tail);
+    for (int i = 0; i < count; ++i) {
+        uint8_t& s = scratch.served[size_t(i)];
+        if (s & kReachUndecided) s = t.reaches(g.position[k + size_t(i)], g.normal[k + size_t(i)]) ? s & ~kReachUndecided : 0;
+    }
+    t.project(t.constants, row);
+    t.scalarProject(t.constants, tail);
+    t.filter(t.constants, row);
+    t.scalarFilter(t.constants, tail);
+}
 
 double texelsPerPixel(const DepthMap& map, const PixelRays& rays, int i, int j, const glm::dvec3& P, const glm::dvec3& N) {
     const glm::dvec2 t = texelOf(map, P);
@@ -33,7 +151,8 @@ double medianTexelDensity(const ShadowLookup& lookup) {
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < lookup.width; ++i) {
             const size_t k = size_t(j) * size_t(lookup.width) + size_t(i);
-            if (lookup.mapIndex[k] >= 0 && inDensitySample(i, j)) served.push_back(lookup.texelDensity[k]);
+            const bool sampled = i % kDensitySampleStride == 0 && j % kDensitySampleStride == 0;
+            if (lookup.mapIndex[k] >= 0 && sampled) served.push_back(lookup.texelDensity[k]);
         }
     }
     if (served.empty()) return 0.0;

@@ -7,24 +7,35 @@
 // As in the reference, V = 0 where the light is behind the surface, dot(N, L - P) <= 0,
 // and outside a spot light's cone.
 //
-// The pass is compiled for its map selector and its filter (template arguments): the
-// per-pixel work is straight-line code with no call through a pointer. It is still scalar
-// double precision, as before, so its bits are unchanged (docs/peers.md: what remains).
+// The pass goes row by row. Which map serves each pixel is decided in double by the
+// selector. Then three stages run in float through the vector kernels of lookup_kernel.h,
+// compiled for the filter and for the SIMD level asked for (every level gives the same
+// bits): whether the light reaches the pixel, decided exactly as lightReaches() decides
+// it in double (float where it can certify the sign, double where it cannot); the
+// projection into the map with the bias; and the filter's taps. Float moves a receiver by
+// at most 5e-4 texel and 3.6 steps of 2^-24 in depth from the double lookup it replaced
+// (sphere-box, test_lookup_kernel.cpp), the order of the map's own float rounding, which
+// the slope-scaled bias's 4 units cover; of the golden cases only two changed, and both for
+// the better or by rounding (docs/shadow-maps.md, "Precision of the lookup").
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "scenes/camera.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
 #include "shading/lights.h"
 #include "shadows/depth_map.h"
+#include "shadows/maps/lookup_kernel.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
-#include "shadows/receiver_pass.h"
+#include "raster/tile_kernels.h"
 
 namespace shadowlab {
 
@@ -37,8 +48,8 @@ struct OneMap {
 // The texel density is a diagnostic, not part of V: measured at every pixel for the debug
 // view, and otherwise only at the pixels its median is taken over, every
 // kDensitySampleStride-th pixel of every kDensitySampleStride-th row (a regular sample, the
-// same whatever the thread count), so that it costs 1/16 of the lookup's time, not a third.
-inline constexpr int kDensitySampleStride = 4;
+// same whatever the thread count: 1/64 of the pixels, 16,000 at 1280 x 800).
+inline constexpr int kDensitySampleStride = 8;
 
 struct ShadowLookup {
     int width = 0;
@@ -47,54 +58,73 @@ struct ShadowLookup {
     std::vector<int8_t> mapIndex;      // the map used, -1 where none
 };
 
-// Unit directions from receivers to a point-like light (pass pointLightFor()); a
-// directional light's is normalised once, not per pixel.
-class TowardsLight {
-public:
-    explicit TowardsLight(const Light& light)
-        : light_(light), direction_(glm::normalize(glm::dvec3(light.direction))) {}
-    glm::dvec3 operator()(const glm::dvec3& P) const {
-        return light_.type == LightType::Directional ? direction_ : glm::normalize(glm::dvec3(light_.position) - P);
-    }
-
-private:
-    const Light& light_;
-    glm::dvec3 direction_;
-};
-
 // The area in map texels of the footprint of camera pixel (i, j) on the receiver plane
 // (P, N): |det| of the Jacobian of the map's texel coordinates across one pixel step.
 double texelsPerPixel(const DepthMap& map, const PixelRays& rays, int i, int j, const glm::dvec3& P, const glm::dvec3& N);
 
-inline bool inDensitySample(int i, int j) { return i % kDensitySampleStride == 0 && j % kDensitySampleStride == 0; }
+// The lookup's kernels for a SIMD level this CPU supports (std::invalid_argument otherwise).
+const LookupKernels& lookupKernels(raster::SimdLevel simd);
+
+// The float lookup for one set of maps, bias and filter (lookup_kernel.h), ready to run
+// on rows of receivers.
+class LookupPass {
+public:
+    LookupPass(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias, const PcfKernel& kernel,
+               raster::SimdLevel simd);
+    ~LookupPass();
+
+    // A row's working memory: which map serves each pixel, the receivers as the maps see
+    // them, the Poisson rotations. One per task, reused for its rows.
+    struct Scratch {
+        std::vector<uint8_t> served;   // 1 + the serving map, else 0 (LookupRow::served)
+        std::vector<float> receivers, rotationCos, rotationSin;
+        explicit Scratch(int count)
+            : served(size_t(count)), receivers(6 * size_t(count)), rotationCos(size_t(count)), rotationSin(size_t(count)) {}
+    };
+
+    // V of row j's pixels into visibility (the whole image's), given which map serves each
+    // in scratch.served; the scratch holds a row. Decides where the light reaches, as
+    // lightReaches() does.
+    void lookUpRow(const GBuffer& g, int j, Scratch& scratch, float* visibility) const;
+
+private:
+    struct Tables;
+    std::unique_ptr<Tables> tables_;
+};
 
 // everyPixelDensity: measure the texel density at every pixel (the debug view), not only
 // at the sample its median is taken over.
 template <class MapSelector>
 ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& light, const std::vector<DepthMap>& maps,
                            const MapSelector& select, const BiasSettings& bias, const PcfKernel& kernel,
-                           bool everyPixelDensity = false) {
+                           raster::SimdLevel simd, bool everyPixelDensity = false) {
     ShadowLookup out;
     out.width = g.width;
     out.visibility.assign(g.pixelCount(), 0.0f);
     out.texelDensity.assign(g.pixelCount(), 0.0f);
     out.mapIndex.assign(g.pixelCount(), -1);
     const PixelRays rays(camera);
-    const TowardsLight towardsLight(light);
-    withFilter(kernel, [&](const auto& filter) {
-        // Every surface pixel, not only those the light reaches: the map serving a pixel and
-        // its texel density are shown (and measured) wherever there is a surface.
-        forEachSurfacePixel(g, [&](int i, int j, size_t k) {
-            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            const int m = select(P);
-            if (m < 0) return;
-            out.mapIndex[k] = int8_t(m);
-            if (everyPixelDensity || inDensitySample(i, j)) out.texelDensity[k] = float(texelsPerPixel(maps[m], rays, i, j, P, N));
-            if (!lightReaches(light, g.position[k], g.normal[k])) return;
-            const glm::dvec3 L = needsLightDirection(bias) ? towardsLight(P) : glm::dvec3(0.0);
-            const MapReceiver r = mapReceiver(maps[m], P, N, L, bias);
-            out.visibility[k] = float(filter(maps[m], r, k));
-        });
+    const LookupPass pass(maps, light, bias, kernel, simd);
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        LookupPass::Scratch scratch(g.width);
+        for (int j = rows.begin(); j < rows.end(); ++j) {
+            // The map serving each surface pixel, whether or not the light reaches it: the
+            // debug views show it, and the texel density is measured wherever there is a surface.
+            for (int i = 0; i < g.width; ++i) {
+                const size_t k = g.index(i, j);
+                const int m = g.hit[k] ? select(glm::dvec3(g.position[k])) : -1;
+                out.mapIndex[k] = int8_t(m);
+                scratch.served[size_t(i)] = uint8_t(m + 1);
+            }
+            const int stride = everyPixelDensity ? 1 : kDensitySampleStride;
+            for (int i = 0; i < g.width && j % stride == 0; i += stride) {
+                const size_t k = g.index(i, j);
+                if (out.mapIndex[k] < 0) continue;
+                out.texelDensity[k] = float(texelsPerPixel(maps[size_t(out.mapIndex[k])], rays, i, j,
+                                                           glm::dvec3(g.position[k]), glm::dvec3(g.normal[k])));
+            }
+            pass.lookUpRow(g, j, scratch, out.visibility.data());
+        }
     });
     return out;
 }

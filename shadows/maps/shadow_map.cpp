@@ -94,8 +94,9 @@ ShadowLookup lookUp(const ShadowInputs& in, const Light& light, const LightMaps&
     const PcfKernel kernel = makePcfKernel(s.filter);
     const Camera& camera = in.scene().camera;
     const bool everyPixelDensity = !in.debugDir.empty();
-    if (lm.cube) return lookUpShadows(in.gbuffer, camera, light, lm.maps, CubeFace{lm.maps}, s.bias, kernel, everyPixelDensity);
-    return lookUpShadows(in.gbuffer, camera, light, lm.maps, OneMap{}, s.bias, kernel, everyPixelDensity);
+    if (lm.cube) return lookUpShadows(in.gbuffer, camera, light, lm.maps, CubeFace{lm.maps}, s.bias, kernel, in.simd,
+                                         everyPixelDensity);
+    return lookUpShadows(in.gbuffer, camera, light, lm.maps, OneMap{}, s.bias, kernel, in.simd, everyPixelDensity);
 }
 
 void addStats(ShadowOutputs& out, const LightMaps& lm, const ShadowMapSettings& s, const ShadowLookup& lookup) {

@@ -67,8 +67,10 @@ double gridMisalignment(const CascadeFrame& a, const CascadeFrame& b) {
 int classificationChanges(const CascadeFrame& a, const CascadeFrame& b) {
     const Light& sun = a.scene.lights[0];
     const PcfKernel nearest = makePcfKernel({FilterKind::Nearest});
-    const ShadowLookup va = lookUpShadows(a.g, a.scene.camera, sun, a.maps.maps, CascadeSelector{a.maps, a.scene.camera}, {}, nearest);
-    const ShadowLookup vb = lookUpShadows(a.g, a.scene.camera, sun, b.maps.maps, CascadeSelector{b.maps, b.scene.camera}, {}, nearest);
+    const ShadowLookup va = lookUpShadows(a.g, a.scene.camera, sun, a.maps.maps, CascadeSelector{a.maps, a.scene.camera}, {}, nearest,
+                                          raster::bestSimdLevel());
+    const ShadowLookup vb = lookUpShadows(a.g, a.scene.camera, sun, b.maps.maps, CascadeSelector{b.maps, b.scene.camera}, {}, nearest,
+                                          raster::bestSimdLevel());
     int changes = 0;
     for (size_t k = 0; k < va.visibility.size(); ++k) {
         changes += va.mapIndex[k] >= 0 && va.mapIndex[k] == vb.mapIndex[k] && va.visibility[k] != vb.visibility[k];

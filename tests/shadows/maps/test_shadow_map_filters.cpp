@@ -1,12 +1,14 @@
 // PCF kernels over a straight shadow edge (RTR 7.5): each returns exactly the cumulative
-// weight of its taps that fall on the lit side.
+// weight of its taps that fall on the lit side, at every SIMD level.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "raster/tile_kernels.h"
 #include "shadows/maps/pcf.h"
+#include "shadows/maps/shadow_lookup.h"
 
 using namespace shadowlab;
 
@@ -23,13 +25,6 @@ DepthMap edgeMap() {
         for (int x = 0; x < kSize; ++x) map.depth[raster::blockLinearIndex(x, y, map.tilesX)] = x < kEdge ? 0.0f : 1.0f;
     }
     return map;
-}
-
-MapReceiver receiverAt(double u) {
-    MapReceiver r;
-    r.texel = glm::dvec2(u, 12.3);
-    r.depth = 0.5;
-    return r;
 }
 
 double litSide(double u) { return std::floor(u) >= kEdge ? 1.0 : 0.0; }
@@ -58,32 +53,66 @@ TEST_CASE("a depth map reads its block-linear texels in place, clamped, and imag
     CHECK(map.at(kSize + 7, -2) == 1.0f);
 }
 
-TEST_CASE("PCF over a straight edge equals the kernel's cumulative weights") {
+TEST_CASE("PCF over a straight edge equals the kernel's cumulative weights, at every SIMD level") {
+    // One receiver per lane, u = 10 .. 22 texels across the edge in steps of 65/1024 (exact
+    // in float), through the lookup's filter stage (lookup_kernel.h) as the shadow map runs it.
     const DepthMap map = edgeMap();
-    for (double u = 10.0; u <= 22.0; u += 0.0625 + 1.0 / 1024.0) {
-        const MapReceiver r = receiverAt(u);
-        INFO("u = " << u);
-        CHECK(filteredVisibility(map, r, makePcfKernel({FilterKind::Nearest}), 0) == litSide(u));
+    std::vector<float> u;
+    for (int k = 0; 10.0f + float(k) * (65.0f / 1024.0f) <= 22.0f; ++k) u.push_back(10.0f + float(k) * (65.0f / 1024.0f));
+    while (u.size() % 16 != 0) u.push_back(u.back());   // whole vectors at every width
+    const int count = int(u.size());
+    for (raster::SimdLevel level : {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
+        if (!raster::simdLevelSupported(level)) continue;
+        CAPTURE(raster::simdLevelName(level));
+        // Nearest, bilinear, N x N grids and the rotated Poisson disk, each against the
+        // weight of its taps on the lit side.
+        const auto run = [&](const FilterSettings& settings, const auto& expected) {
+            const PcfKernel kernel = makePcfKernel(settings);
+            std::vector<float> diskX, diskY;
+            for (const glm::dvec2& d : kernel.disk) diskX.push_back(float(d.x)), diskY.push_back(float(d.y));
+            const LookupMap lookupMap{{}, {}, map.depth.data(), map.size, map.tilesX};
+            LookupConstants c{};
+            c.maps = &lookupMap, c.mapCount = 1, c.gridSize = settings.gridSize;
+            c.diskX = diskX.data(), c.diskY = diskY.data(), c.diskTaps = int(diskX.size());
+            c.radiusTexels[0] = c.radiusTexels[1] = float(settings.poissonRadiusTexels);
+            const size_t n = size_t(count);
+            std::vector<uint8_t> served(n, 1);
+            std::vector<float> y(n, 12.3f), depth(n, 0.5f), visibility(n), rotationCos, rotationSin;
+            for (int k = 0; k < count; ++k) {
+                rotationCos.push_back(float(std::cos(poissonRotation(uint64_t(k)))));
+                rotationSin.push_back(float(std::sin(poissonRotation(uint64_t(k)))));
+            }
+            std::vector<float> x = u;
+            const LookupRow row{nullptr, nullptr, served.data(), rotationCos.data(), rotationSin.data(),
+                                {x.data(), y.data(), depth.data(), nullptr, nullptr, nullptr}, visibility.data(), count};
+            lookupKernels(level).filter[int(settings.kind)][0](c, row);
+            for (int k = 0; k < count; ++k) {
+                CAPTURE(u[size_t(k)]);
+                CHECK(visibility[size_t(k)] == doctest::Approx(expected(u[size_t(k)], rotationCos[size_t(k)], rotationSin[size_t(k)],
+                                                                        diskX, diskY)).epsilon(1e-6));
+            }
+        };
+        run({FilterKind::Nearest}, [](float x, float, float, const auto&, const auto&) { return litSide(x); });
         // Bilinear: the lit texel centre's weight rises linearly from u = edge - 0.5 to edge + 0.5.
-        CHECK(filteredVisibility(map, r, makePcfKernel({FilterKind::Bilinear}), 0) ==
-              doctest::Approx(std::clamp(u - (kEdge - 0.5), 0.0, 1.0)).epsilon(1e-12));
+        run({FilterKind::Bilinear},
+            [](float x, float, float, const auto&, const auto&) { return std::clamp(x - (kEdge - 0.5), 0.0, 1.0); });
         for (int n : {2, 3, 4, 5}) {
-            double lit = 0.0;
-            for (int a = 0; a < n; ++a) lit += litSide(u - 0.5 * (n - 1) + a);
             FilterSettings grid{FilterKind::Grid};
             grid.gridSize = n;
-            CHECK(filteredVisibility(map, r, makePcfKernel(grid), 0) == doctest::Approx(lit / n).epsilon(1e-12));
+            run(grid, [n](float x, float, float, const auto&, const auto&) {
+                double lit = 0.0;
+                for (int a = 0; a < n; ++a) lit += litSide(x + (-0.5f * float(n - 1) + float(a)));
+                return lit / n;
+            });
         }
         FilterSettings poisson{FilterKind::Poisson};
-        const PcfKernel kernel = makePcfKernel(poisson);
-        for (uint64_t pixel : {0ull, 1ull, 77ull, 123456789ull}) {
-            const double angle = poissonRotation(pixel);
+        run(poisson, [&](float x, float cosine, float sine, const std::vector<float>& dx, const std::vector<float>& dy) {
+            // The tap's x in float, as the kernel places it (y does not cross the edge).
             double lit = 0.0;
-            for (const glm::dvec2& d : kernel.disk) {
-                lit += litSide(u + poisson.poissonRadiusTexels * (std::cos(angle) * d.x - std::sin(angle) * d.y));
-            }
-            CHECK(filteredVisibility(map, r, kernel, pixel) == doctest::Approx(lit / kernel.disk.size()).epsilon(1e-12));
-        }
+            const float radius = float(poisson.poissonRadiusTexels);
+            for (size_t t = 0; t < dx.size(); ++t) lit += litSide(x + radius * (cosine * dx[t] - sine * dy[t]));
+            return lit / double(dx.size());
+        });
     }
 }
 

@@ -1,0 +1,92 @@
+// The vector core of the shadow-map lookup (shadow_lookup.h; Real-Time Rendering, 4th ed.,
+// sections 7.4 and 7.5): for a row of receivers that a map serves, project each into the
+// map, apply the bias, take the filter's taps and return the lit fraction. Single-precision
+// floats in structure-of-arrays vectors, written once (lookup_kernel.inl) against the SIMD
+// value types of raster/simd/ and compiled for scalar, AVX2 and AVX-512; every lane does
+// the same IEEE operations in the same order, so every level gives the same bits and the
+// scalar build is the plain reference twin the vector ones are held to.
+//
+// Plain data only: the per-ISA translation units include this header, and no inline
+// function built for a wider instruction set may reach the rest of the program.
+#pragma once
+
+#include <cstdint>
+
+namespace shadowlab {
+
+// One depth map as the kernel reads it.
+struct LookupMap {
+    float texelFromWorld[16];   // column-major (as glm), rounded from DepthMap::texelFromWorld
+    float worldFromTexel[16];   // its inverse, likewise
+    const float* depth;         // block-linear (raster::blockLinearIndex)
+    int size;                   // texels per side
+    int tilesX;                 // tiles per row of the block-linear buffer
+};
+
+// The bias modes and filters, numbered as BiasMode and FilterKind (checked where they meet).
+enum LookupBias : int { kLookupConstant, kLookupSlopeScaled, kLookupNormalOffset, kLookupReceiverPlane };
+enum LookupFilter : int { kLookupNearest, kLookupBilinear, kLookupGrid, kLookupPoisson, kLookupFilterCount };
+
+struct LookupConstants {
+    const LookupMap* maps;      // the maps a selector chooses from
+    int mapCount;
+    int bias;                   // LookupBias
+    float constantMetres;       // constant and normal-offset: the move towards the light
+    float normalOffsetTexels;   // normal-offset: texels at a grazing light
+    bool directional;           // light: a unit direction towards it, else its position
+    float light[3];
+    float reachAnchor[3];       // lightReaches' A: the light's direction as given, or its position
+    bool spot;                  // a spot light: its cone is decided by the caller, in double
+    int gridSize;               // grid: taps per side
+    const float* diskX;         // poisson: the unit-disk taps
+    const float* diskY;
+    int diskTaps;
+    float radiusTexels[2];      // poisson: the disk's radius per axis, texels
+};
+
+// Receivers as the map serving them sees them, one value per pixel of a run: where each
+// falls (texel units), its biased window depth, and for receiver planes the plane's depth
+// slope per texel and the compare's tolerance.
+struct ReceiverArrays {
+    float* texelX;
+    float* texelY;
+    float* depth;
+    float* slopeX;
+    float* slopeY;
+    float* tolerance;
+};
+
+// One run of pixels of a row; count is a multiple of the kernel's width.
+struct LookupRow {
+    const float* position;      // x, y, z per pixel (the G-buffer's, world space)
+    const float* normal;        // likewise
+    // 1 + the index of the map serving the pixel, else 0; the reach stage sets it to 0
+    // where the light cannot reach the pixel, and marks with kReachUndecided the pixels
+    // whose answer float could not certify.
+    uint8_t* served;
+    const float* rotationCos;   // poisson: the pixel's rotation of the disk
+    const float* rotationSin;
+    ReceiverArrays receivers;   // written by the projection, read by the filter
+    float* visibility;          // out: the lit fraction, 0 where served = 0
+    int count;
+};
+
+using LookupKernel = void (*)(const LookupConstants&, const LookupRow&);
+
+inline constexpr uint8_t kReachUndecided = 0x80;
+
+// The three stages: whether the light reaches each receiver; the projection, for plain
+// receivers [0] and for receiver planes [1] (receiver-plane bias: the compare is against
+// the plane's depth at each tap); and the filter, one kernel per filter, likewise.
+struct LookupKernels {
+    int width;                                      // pixels per vector
+    LookupKernel reach;
+    LookupKernel project[2];
+    LookupKernel filter[kLookupFilterCount][2];
+};
+
+const LookupKernels& lookupKernelsScalar();
+const LookupKernels& lookupKernelsAvx2();
+const LookupKernels& lookupKernelsAvx512();
+
+}  // namespace shadowlab

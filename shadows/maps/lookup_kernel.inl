@@ -1,0 +1,311 @@
+// The shadow-map lookup's vector core (lookup_kernel.h), written once against the SIMD value
+// types. Included by lookup_kernel_{scalar,avx2,avx512}.cpp inside a namespace where
+// `simd` names one of raster/simd/'s sets; each lane does the same float operations in the
+// same order at every width. Three stages over a run of receivers: whether the light
+// reaches each (reachRun), each projected into the map serving it with the bias
+// (projectRun), and the filter's taps there (filterRun).
+
+using simd::F32;
+using simd::I32;
+using simd::Mask;
+using simd::kWidth;
+
+// The rasterizer snaps vertices to 1/256 texel and stores float depth; the receiver plane's
+// tolerance covers both (shadow_bias.cpp derives the same bounds for the double lookup).
+// The 16 float steps of depth take the float projection of the receiver too: its rounding
+// is a few steps of 2^-24 at window depths below 1.
+constexpr float kRasterPositionErrorTexels = 1.0f / 256.0f;
+constexpr float kDepthErrorSteps = 16.0f;
+constexpr float kDepthStep = 1.0f / 16777216.0f;   // 2^-24
+
+struct Vec3 {
+    F32 x, y, z;
+};
+
+inline F32 dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline F32 abs(F32 a) { return simd::max(a, simd::splat(0.0f) - a); }
+inline Mask isFinite(F32 a) { return simd::cmpEq(a - a, simd::splat(0.0f)); }
+
+// Row r of M (p, 1) for a column-major 4x4 matrix.
+inline F32 transformRow(const float* m, int r, const Vec3& p) {
+    return simd::splat(m[r]) * p.x + simd::splat(m[4 + r]) * p.y + simd::splat(m[8 + r]) * p.z + simd::splat(m[12 + r]);
+}
+
+// M (p, 1) divided by w: for texelFromWorld, (texel x, texel y, window depth).
+inline Vec3 project(const float* m, const Vec3& p) {
+    const F32 w = transformRow(m, 3, p);
+    return {transformRow(m, 0, p) / w, transformRow(m, 1, p) / w, transformRow(m, 2, p) / w};
+}
+
+// floor(c) as an integer, saturated to +-2^30 (NaN to -2^30) so that every lane converts;
+// the map clamps it afterwards (DepthMap::at, texelIndexOf in double).
+inline I32 texelIndexOf(F32 c) {
+    const F32 limit = simd::splat(1073741824.0f);
+    const F32 saturated = simd::select(simd::cmpLt(simd::splat(0.0f) - limit, c),
+                                       simd::select(simd::cmpLt(c, limit), c, limit), simd::splat(0.0f) - limit);
+    const I32 truncated = simd::truncateToInt(saturated);
+    return truncated - simd::select(simd::cmpLt(saturated, simd::toFloat(truncated)), simd::splat(int32_t(1)),
+                                    simd::splat(int32_t(0)));
+}
+
+// Storage index of texel (x, y), clamped to the map: raster::blockLinearIndex lane by lane.
+inline I32 texelStorageIndex(const LookupMap& map, I32 x, I32 y) {
+    using raster::kBlockShift;
+    using raster::kTileShift;
+    const I32 last = simd::splat(int32_t(map.size - 1)), zero = simd::splat(int32_t(0));
+    x = simd::min(simd::max(x, zero), last);
+    y = simd::min(simd::max(y, zero), last);
+    const I32 lowBits = simd::splat(int32_t(raster::kBlockSize - 1));
+    const I32 blockBits = simd::splat(int32_t(raster::kBlocksPerTileSide - 1));
+    const I32 tile = simd::shiftRight<kTileShift>(y) * simd::splat(int32_t(map.tilesX)) + simd::shiftRight<kTileShift>(x);
+    const I32 block = (simd::shiftRight<kBlockShift>(y) & blockBits) * simd::splat(int32_t(raster::kBlocksPerTileSide)) +
+                      (simd::shiftRight<kBlockShift>(x) & blockBits);
+    return tile * simd::splat(int32_t(raster::kPixelsPerTile)) + simd::shiftLeft<2 * kBlockShift>(block) +
+           simd::shiftLeft<kBlockShift>(y & lowBits) + (x & lowBits);
+}
+
+// A receiver as the map sees it (MapReceiver in float): where it falls, its biased depth,
+// and for receiver planes the plane's depth slope per texel and the compare's tolerance.
+struct Receiver {
+    F32 texelX, texelY, depth;
+    F32 slopeX, slopeY, tolerance;
+};
+
+// The world-space width of one texel at P: the distance to the point one texel over in x
+// at the same depth (texelWorldSize in shadow_bias.h).
+inline F32 texelWorldSize(const LookupMap& map, const Vec3& P) {
+    const Vec3 t = project(map.texelFromWorld, P);
+    const Vec3 q = project(map.worldFromTexel, {t.x + simd::splat(1.0f), t.y, t.z});
+    const Vec3 d{q.x - P.x, q.y - P.y, q.z - P.z};
+    return simd::sqrt(dot(d, d));
+}
+
+// The receiver plane (N, p) in texel space solved for depth, z = z0 + s . (t - t0): planes
+// transform by the inverse transpose, pi_texel = worldFromTexel^T pi_world (Isidoro 2006;
+// RTR 7.5, Figure 7.24). A plane that contains the light rays has no depth function.
+inline void receiverPlaneSlope(const LookupMap& map, const Vec3& p, const Vec3& N, Receiver& r) {
+    const F32 w = simd::splat(0.0f) - dot(N, p);
+    const float* m = map.worldFromTexel;
+    auto planeComponent = [&](int c) {
+        return simd::splat(m[4 * c]) * N.x + simd::splat(m[4 * c + 1]) * N.y + simd::splat(m[4 * c + 2]) * N.z +
+               simd::splat(m[4 * c + 3]) * w;
+    };
+    const F32 a = planeComponent(0), b = planeComponent(1), c = planeComponent(2);
+    const F32 sx = (simd::splat(0.0f) - a) / c, sy = (simd::splat(0.0f) - b) / c;
+    const Mask finite = isFinite(sx) & isFinite(sy);
+    r.slopeX = simd::select(finite, sx, simd::splat(0.0f));
+    r.slopeY = simd::select(finite, sy, simd::splat(0.0f));
+    r.tolerance = (abs(r.slopeX) + abs(r.slopeY)) * simd::splat(kRasterPositionErrorTexels) +
+                  simd::splat(kDepthErrorSteps * kDepthStep);
+}
+
+// The bias of shadow_bias.h in float: constant and normal-offset move the receiver towards
+// the light, normal-offset also along N by texels times the sine of the light angle
+// (Holbert; RTR 7.4); slope-scaled was applied when the map was drawn.
+template <bool kPlane>
+Receiver project(const LookupConstants& c, const LookupMap& map, const Vec3& P, const Vec3& N) {
+    Vec3 p = P;
+    if (c.bias == kLookupConstant || c.bias == kLookupNormalOffset) {
+        const Vec3 light{simd::splat(c.light[0]), simd::splat(c.light[1]), simd::splat(c.light[2])};
+        Vec3 u = light;
+        if (!c.directional) {
+            const Vec3 d{light.x - P.x, light.y - P.y, light.z - P.z};
+            const F32 length = simd::sqrt(dot(d, d));
+            u = {d.x / length, d.y / length, d.z / length};
+        }
+        const F32 move = simd::splat(c.constantMetres);
+        p = {p.x + u.x * move, p.y + u.y * move, p.z + u.z * move};
+        if (c.bias == kLookupNormalOffset) {
+            const F32 cosine = dot(N, u);
+            const F32 sine = simd::sqrt(simd::max(simd::splat(0.0f), simd::splat(1.0f) - cosine * cosine));
+            const F32 along = simd::splat(c.normalOffsetTexels) * texelWorldSize(map, P) * sine;
+            p = {p.x + N.x * along, p.y + N.y * along, p.z + N.z * along};
+        }
+    }
+    const Vec3 t = project(map.texelFromWorld, p);
+    Receiver r{t.x, t.y, t.z, simd::splat(0.0f), simd::splat(0.0f), simd::splat(0.0f)};
+    if constexpr (kPlane) receiverPlaneSlope(map, p, N, r);
+    return r;
+}
+
+// Lit by texel (x, y): the receiver is not farther from the light than what the map stores
+// there, or the texel is empty (the cleared 1 holds no occluder). For a receiver plane the
+// receiver's depth is the plane's at the texel centre, and the tolerance is added.
+template <bool kPlane>
+Mask litBy(const LookupMap& map, const Receiver& r, I32 x, I32 y) {
+    const F32 stored = simd::gather(map.depth, texelStorageIndex(map, x, y));
+    const Mask empty = simd::cmpLe(simd::splat(1.0f), stored);
+    if constexpr (!kPlane) return empty | simd::cmpLe(r.depth, stored);
+    const F32 half = simd::splat(0.5f);
+    const F32 depthAt = r.depth + r.slopeX * ((simd::toFloat(x) + half) - r.texelX) +
+                        r.slopeY * ((simd::toFloat(y) + half) - r.texelY);
+    return empty | simd::cmpLe(depthAt, stored + r.tolerance);
+}
+
+inline F32 oneWhere(Mask m) { return simd::select(m, simd::splat(1.0f), simd::splat(0.0f)); }
+
+// The filters of pcf.h, each the fraction of its weight that is lit.
+struct Nearest {
+    template <bool kPlane>
+    static F32 lit(const LookupConstants&, const LookupMap& map, const Receiver& r, const LookupRow&, int) {
+        return oneWhere(litBy<kPlane>(map, r, texelIndexOf(r.texelX), texelIndexOf(r.texelY)));
+    }
+};
+
+// The four texel centres around the receiver, weighted bilinearly (RTR 7.5).
+struct Bilinear {
+    template <bool kPlane>
+    static F32 lit(const LookupConstants&, const LookupMap& map, const Receiver& r, const LookupRow&, int) {
+        const F32 half = simd::splat(0.5f), one = simd::splat(1.0f);
+        const F32 baseX = r.texelX - half, baseY = r.texelY - half;
+        const I32 x0 = texelIndexOf(baseX), y0 = texelIndexOf(baseY), step = simd::splat(int32_t(1));
+        const F32 fx = baseX - simd::toFloat(x0), fy = baseY - simd::toFloat(y0);
+        const F32 top = (one - fx) * oneWhere(litBy<kPlane>(map, r, x0, y0)) + fx * oneWhere(litBy<kPlane>(map, r, x0 + step, y0));
+        const F32 bottom = (one - fx) * oneWhere(litBy<kPlane>(map, r, x0, y0 + step)) +
+                           fx * oneWhere(litBy<kPlane>(map, r, x0 + step, y0 + step));
+        return (one - fy) * top + fy * bottom;
+    }
+};
+
+// N x N taps one texel apart centred on the receiver, equal weights (RTR Figure 7.23).
+struct Grid {
+    template <bool kPlane>
+    static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow&, int) {
+        const int n = c.gridSize;
+        const float first = -0.5f * float(n - 1);
+        F32 sum = simd::splat(0.0f);
+        for (int b = 0; b < n; ++b) {
+            const I32 y = texelIndexOf(r.texelY + simd::splat(first + float(b)));
+            for (int a = 0; a < n; ++a) sum = sum + oneWhere(litBy<kPlane>(map, r, texelIndexOf(r.texelX + simd::splat(first + float(a))), y));
+        }
+        return sum / simd::splat(float(n * n));
+    }
+};
+
+// The Poisson disk rotated per pixel (the row's cos and sin) and scaled per axis.
+struct Poisson {
+    template <bool kPlane>
+    static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
+        const F32 cosine = simd::load(row.rotationCos + i), sine = simd::load(row.rotationSin + i);
+        const F32 radiusX = simd::splat(c.radiusTexels[0]), radiusY = simd::splat(c.radiusTexels[1]);
+        F32 sum = simd::splat(0.0f);
+        for (int k = 0; k < c.diskTaps; ++k) {
+            const F32 dx = simd::splat(c.diskX[k]), dy = simd::splat(c.diskY[k]);
+            const F32 x = r.texelX + radiusX * (cosine * dx - sine * dy);
+            const F32 y = r.texelY + radiusY * (sine * dx + cosine * dy);
+            sum = sum + oneWhere(litBy<kPlane>(map, r, texelIndexOf(x), texelIndexOf(y)));
+        }
+        return sum / simd::splat(float(c.diskTaps));
+    }
+};
+
+// Lanes i .. i + kWidth - 1 of an x, y, z array.
+inline Vec3 loadVec3(const float* xyz, int i) {
+    Vec3 v;
+    simd::loadTriples(xyz + 3 * i, v.x, v.y, v.z);
+    return v;
+}
+
+// The lanes of a vector that map m serves, m = 0 .. mapCount - 1, each visited once.
+// Neighbouring pixels share a map almost always; a vector across two maps' boundary (cube
+// faces, cascades) is visited once for each.
+template <class Visit>
+void forEachServingMap(const LookupConstants& c, const uint8_t* served, Visit&& visit) {
+    const I32 index = simd::loadU8(served);
+    if (!simd::any(simd::cmpGt(index, simd::splat(int32_t(0))))) return;
+    for (int m = 0; m < c.mapCount; ++m) {
+        const Mask lanes = simd::cmpEq(index, simd::splat(int32_t(m + 1)));
+        if (simd::any(lanes)) visit(c.maps[m], lanes);
+    }
+}
+
+// Stage 1: whether the light can reach each receiver, dot(N, A - s P) > 0 as lightReaches
+// (shading/lights.h) decides it in double, here in float with a certified sign. With
+// t = fl(A - s P), the float dot differs from the exact one by at most gamma_4 sum |N_i t_i|
+// (about 4u, u = 2^-24; Higham, "Accuracy and Stability of Numerical Algorithms", 3.1),
+// so beyond 8u sum |N_i t_i| its sign is the exact sign, which double, 2^29 times finer,
+// also gets. Nearer zero the lane is marked undecided and the caller asks lightReaches.
+// A spot light's lit lanes are all undecided: its cone is the caller's.
+void reachRun(const LookupConstants& c, const LookupRow& row) {
+    constexpr float kCertain = 8.0f / 16777216.0f;   // 8u
+    constexpr float kTiny = 0x1p-100f;               // below this the bound may have underflowed
+    const Vec3 anchor{simd::splat(c.reachAnchor[0]), simd::splat(c.reachAnchor[1]), simd::splat(c.reachAnchor[2])};
+    for (int i = 0; i < row.count; i += kWidth) {
+        const I32 served = simd::loadU8(row.served + i), none = simd::splat(int32_t(0));
+        const Mask candidate = simd::cmpGt(served, none);
+        if (!simd::any(candidate)) continue;
+        const Vec3 P = loadVec3(row.position, i), N = loadVec3(row.normal, i);
+        const Vec3 t = c.directional ? anchor : Vec3{anchor.x - P.x, anchor.y - P.y, anchor.z - P.z};
+        const F32 d = dot(N, t);
+        const F32 size = abs(N.x) * abs(t.x) + abs(N.y) * abs(t.y) + abs(N.z) * abs(t.z);
+        const F32 bound = simd::splat(kCertain) * size;
+        const Mask measurable = !simd::cmpLt(size, simd::splat(kTiny));
+        const Mask lit = simd::cmpLt(bound, d) & measurable & (c.spot ? simd::noLanes() : simd::allLanes());
+        const Mask dark = simd::cmpLt(d, simd::splat(0.0f) - bound) & measurable;
+        const I32 undecided = served | simd::splat(int32_t(kReachUndecided));
+        const I32 out = simd::select(lit, served, simd::select(dark, none, undecided));
+        simd::storeU8(row.served + i, simd::select(candidate, out, none));
+    }
+}
+
+// Stage 2: every served receiver of the run projected into its map, into row.receivers.
+template <bool kPlane>
+void projectRun(const LookupConstants& c, const LookupRow& row) {
+    const ReceiverArrays& out = row.receivers;
+    for (int i = 0; i < row.count; i += kWidth) {
+        Receiver r{};
+        forEachServingMap(c, row.served + i, [&](const LookupMap& map, Mask lanes) {
+            const Receiver q = project<kPlane>(c, map, loadVec3(row.position, i), loadVec3(row.normal, i));
+            r = {simd::select(lanes, q.texelX, r.texelX), simd::select(lanes, q.texelY, r.texelY),
+                 simd::select(lanes, q.depth, r.depth),   simd::select(lanes, q.slopeX, r.slopeX),
+                 simd::select(lanes, q.slopeY, r.slopeY), simd::select(lanes, q.tolerance, r.tolerance)};
+        });
+        simd::store(out.texelX + i, r.texelX), simd::store(out.texelY + i, r.texelY), simd::store(out.depth + i, r.depth);
+        if constexpr (kPlane) {
+            simd::store(out.slopeX + i, r.slopeX), simd::store(out.slopeY + i, r.slopeY);
+            simd::store(out.tolerance + i, r.tolerance);
+        }
+    }
+}
+
+// Stage 3: the filter's taps for every served receiver, V = 0 elsewhere. Its vectors do not
+// depend on each other, so the map reads of several are in flight at once.
+template <class Filter, bool kPlane>
+void filterRun(const LookupConstants& c, const LookupRow& row) {
+    const ReceiverArrays& in = row.receivers;
+    for (int i = 0; i < row.count; i += kWidth) {
+        Receiver r{};
+        r.texelX = simd::load(in.texelX + i), r.texelY = simd::load(in.texelY + i), r.depth = simd::load(in.depth + i);
+        if constexpr (kPlane) {
+            r.slopeX = simd::load(in.slopeX + i), r.slopeY = simd::load(in.slopeY + i);
+            r.tolerance = simd::load(in.tolerance + i);
+        }
+        F32 visibility = simd::splat(0.0f);
+        forEachServingMap(c, row.served + i, [&](const LookupMap& map, Mask lanes) {
+            visibility = simd::select(lanes, Filter::template lit<kPlane>(c, map, r, row, i), visibility);
+        });
+        simd::store(row.visibility + i, visibility);
+    }
+}
+
+template <class Filter>
+constexpr void addFilter(LookupKernels& table, int filter) {
+    table.filter[filter][0] = filterRun<Filter, false>;
+    table.filter[filter][1] = filterRun<Filter, true>;
+}
+
+inline const LookupKernels& kernels() {
+    static const LookupKernels table = [] {
+        LookupKernels t{};
+        t.width = kWidth;
+        t.reach = reachRun;
+        t.project[0] = projectRun<false>;
+        t.project[1] = projectRun<true>;
+        addFilter<Nearest>(t, kLookupNearest);
+        addFilter<Bilinear>(t, kLookupBilinear);
+        addFilter<Grid>(t, kLookupGrid);
+        addFilter<Poisson>(t, kLookupPoisson);
+        return t;
+    }();
+    return table;
+}
