@@ -3,6 +3,8 @@
 // rasterization for each SIMD level; and a fill-rate sweep by triangle size (as Masked
 // Occlusion Culling's FillrateTest). Run: build/bench/bench_stages (Google Benchmark flags
 // apply, e.g. --benchmark_repetitions=10 --benchmark_report_aggregates_only=true).
+#include <malloc.h>
+
 #include <benchmark/benchmark.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,7 +13,10 @@
 #include "raster/bin.h"
 #include "raster/rasterizer.h"
 #include "raster/setup.h"
+#include "frame/render.h"
 #include "scenes/scene_file.h"
+#include "shadows/maps/shadow_lookup.h"
+#include "shadows/technique.h"
 
 using namespace shadowlab;
 using namespace shadowlab::raster;
@@ -162,6 +167,46 @@ void BM_FillRate(benchmark::State& state) {
     state.counters["Mpix/s"] = benchmark::Counter(2.0 * kSize * kSize * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// The shadow-map lookup (the receiver pass of `shadow-map`, filter nearest or 3x3 grid) on
+// sphere-box's camera G-buffer, one thread, for a map of range(1) texels per side.
+void BM_ShadowLookup(benchmark::State& state) {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const auto level = SimdLevel(state.range(0));
+    if (!simdLevelSupported(level)) {
+        state.SkipWithError("SIMD level not supported on this CPU");
+        return;
+    }
+    const Scene scene = loadScene("sphere-box");
+    const WorldGeometry world = flatten(scene);
+    const GBuffer g = renderGBuffer(world, scene.camera, level);
+    const Light light = pointLightFor(scene.lights[0]);
+    LightFitOptions fit;
+    fit.resolution = int(state.range(1));
+    DepthMapSettings settings;
+    settings.size = fit.resolution;
+    settings.offset = polygonOffsetFor(BiasSettings{});
+    const std::vector<DepthMap> maps = {renderDepthMap(world, fitLightView(light, g, world, fit), settings, level)};
+    FilterSettings filter;
+    filter.kind = state.range(2) == 1 ? FilterKind::Nearest : FilterKind::Grid;
+    filter.gridSize = int(state.range(2));
+    const PcfKernel kernel = makePcfKernel(filter);
+    for (auto _ : state) {
+        const ShadowLookup lookup = lookUpShadows(g, scene.camera, light, maps, OneMap{}, BiasSettings{}, kernel, level);
+        benchmark::DoNotOptimize(lookup.visibility.data());
+    }
+    state.SetLabel(std::string(simdLevelName(level)) + (filter.kind == FilterKind::Nearest ? ", nearest" : ", 3x3 grid"));
+    state.counters["ns/pixel"] = benchmark::Counter(double(g.pixelCount()) * 1e-9,
+                                                    benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void lookupCases(benchmark::internal::Benchmark* b) {
+    for (int taps : {1, 3}) {
+        for (int size : {256, 2048}) {
+            for (SimdLevel l : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) b->Args({int(l), size, taps});
+        }
+    }
+}
+
 void simdLevels(benchmark::internal::Benchmark* b) {
     for (SimdLevel l : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) b->Arg(int(l));
 }
@@ -179,4 +224,15 @@ BENCHMARK(BM_Setup)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Binning)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RasterTiles)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);
-BENCHMARK_MAIN();
+BENCHMARK(BM_ShadowLookup)->Apply(lookupCases)->Unit(benchmark::kMillisecond);
+// As the shadowlab program (app/main.cpp): freed memory is kept for reuse, so a frame's
+// fresh buffers do not pay page faults in every timed run.
+int main(int argc, char** argv) {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, -1);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
