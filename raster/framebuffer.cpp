@@ -29,7 +29,7 @@ void LazyClearedBuffer<T>::fillTile(size_t tile) {
 }
 
 template <class T>
-std::vector<T>& LazyClearedBuffer<T>::resolved() {
+BufferStorage<T>& LazyClearedBuffer<T>::resolved() {
     tbb::parallel_for(size_t(0), pending_.size(), [&](size_t tile) { fillTile(tile); });
     return data_;
 }

@@ -10,6 +10,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -27,6 +29,29 @@ inline size_t blockLinearIndex(int x, int y, int tilesX) {
     return tile * kPixelsPerTile + size_t(blockY * kBlocksPerTileSide + blockX) * kPixelsPerBlock + size_t(inBlock);
 }
 
+// An allocator whose new elements are left uninitialised (default-initialised). A lazily
+// cleared buffer fills every tile before anything reads it, so zeroing its fresh storage
+// first would cost a pass over memory for nothing: 16 MiB, about 1.5 ms on one core, for
+// a 2048^2 depth map drawn every frame.
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = UninitializedAllocator<U>;
+    };
+    UninitializedAllocator() = default;
+    template <class U>
+    UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) { ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...); }
+};
+
+// The storage of a framebuffer's buffers (and of the depth a shadow map keeps).
+template <class T>
+using BufferStorage = std::vector<T, UninitializedAllocator<T>>;
+
 // One block-linear buffer with a per-tile pending clear.
 template <class T>
 class LazyClearedBuffer {
@@ -38,7 +63,7 @@ public:
     void fillTile(size_t tile);
     // The storage with every pending tile filled (in parallel): the only way out for the
     // data as a whole, so nothing leaves the framebuffer unresolved.
-    std::vector<T>& resolved();
+    BufferStorage<T>& resolved();
     // The storage as it is, pending tiles unfilled: for the rasterizer, which calls
     // fillTile before writing a tile.
     T* unresolvedData() { return data_.empty() ? nullptr : data_.data(); }
@@ -47,7 +72,7 @@ public:
     void copyRun(size_t from, size_t count, T* out) const;
 
 private:
-    std::vector<T> data_;
+    BufferStorage<T> data_;
     std::vector<uint8_t> pending_;   // per tile: 1 while the tile still holds stale data
     T value_{};
 };
@@ -83,7 +108,7 @@ public:
     std::vector<float> depthImage() const;
     // The depth buffer itself, block-linear (index()), resolved and moved out without a
     // copy; the framebuffer has no depth afterwards.
-    std::vector<float> takeDepth() { return std::move(depth_.resolved()); }
+    BufferStorage<float> takeDepth() { return std::move(depth_.resolved()); }
     std::vector<uint8_t> stencilImage() const;
     std::vector<float> colorImage(int channel) const;
     std::vector<uint32_t> primitiveIdImage() const;

@@ -10,7 +10,7 @@ namespace {
 // One depth-only pass. Without culling it keeps the nearest surface of any facing (the
 // first depth: a one-sided or open occluder casts whichever side the light sees); culling
 // front faces keeps the back faces (the second depth, RTR 7.4).
-std::vector<float> depthLayer(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
+raster::BufferStorage<float> depthLayer(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
                               const glm::mat4& clipFromWorld,
                               const DepthMapSettings& settings, raster::CullMode cull, raster::SimdLevel simd) {
     raster::Framebuffer framebuffer(settings.size, settings.size);   // depth cleared to 1
@@ -69,7 +69,7 @@ DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const gl
             // Where there is no back face the second depth is the cleared 1, so a single-sided
             // receiver such as a ground plane stays in front of its own entry.
             map.depth = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::None, simd);
-            const std::vector<float> second = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::Front, simd);
+            const raster::BufferStorage<float> second = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::Front, simd);
             for (size_t k = 0; k < map.depth.size(); ++k) map.depth[k] = 0.5f * (map.depth[k] + second[k]);
             break;
         }

@@ -38,7 +38,7 @@ struct DepthMap {
     glm::dmat4 worldFromTexel{1.0};         // its inverse, for receiver planes and texel sizes
     // The rasterizer's depth buffer as it drew it, block-linear (raster::blockLinearIndex):
     // read in place, never copied to rows, so a lookup's neighbouring taps share a block.
-    std::vector<float> depth;
+    raster::BufferStorage<float> depth;
     int tilesX = 0;
 
     // The texel's depth; coordinates outside the map are clamped to its border.

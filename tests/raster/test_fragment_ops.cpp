@@ -303,7 +303,7 @@ TEST_CASE("lazy clears: untouched tiles read as the clear value, a second clear 
         }
         r.draw(fb, s, test::windowDraw(fb, p, t));
         const size_t inside = fb.index(80, 20), outside = fb.index(150, 100);
-        const std::vector<float> storage = fb.takeDepth();
+        const raster::BufferStorage<float> storage = fb.takeDepth();
         CHECK(storage[inside] == 0.25f);
         CHECK(storage[outside] == 0.5f);
     }
