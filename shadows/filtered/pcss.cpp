@@ -7,19 +7,20 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "shadows/debug_buffers.h"
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/pcf.h"
+#include "shadows/maps/shadow_lookup.h"
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
 
-// Below half a texel the disk's taps all fall in the receiver's own texel: the map's
-// resolution, not the light, limits the penumbra there (contact shadows are hard).
-constexpr double kMinFilterRadiusTexels = 0.5;
 // Beyond the blocker search's reach (soft_shadow_map.h), which also bounds the filter's:
 // the PCF radius is never below half a texel and its taps round to the texel they fall in.
 constexpr double kFitMarginTexels = 1.5;
@@ -28,24 +29,22 @@ struct PcssBuffers {
     std::vector<float> visibility, blockerDistance, widthTexels;
 };
 
+// The three steps per camera pixel in float, through the shadow lookup's vector kernel
+// (shadows/maps/lookup_kernel.inl, filter kLookupPcss); where the light's centre cannot
+// reach a pixel, V = 0.
 PcssBuffers runPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const BlockerSearchSettings& search,
                         int filterTaps) {
     const GBuffer& g = in.gbuffer;
-    const std::vector<glm::dvec2> searchDisk = makePcfKernel({FilterKind::Poisson, 3, search.taps, 1.0}).disk;
-    const std::vector<glm::dvec2> filterDisk = makePcfKernel({FilterKind::Poisson, 3, filterTaps, 1.0}).disk;
-    PcssBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f),
-                    std::vector<float>(g.pixelCount(), 0.0f)};
-    forEachReceiverFacingLight(g, soft, [&](size_t k, const glm::dvec3& P, const glm::dvec3& N, const SoftReceiver& receiver) {
-        const MapReceiver r = planeReceiver(soft, P, N);
-        const PenumbraEstimate e = estimatePenumbra(soft, r, receiver.distance, search, searchDisk, k);
-        if (e.blockers == 0) {
-            out.visibility[k] = 1.0f;
-            return;
+    const PcfKernel searchDisk = makePcfKernel({FilterKind::Poisson, 3, search.taps, 1.0});
+    const PcfKernel filterDisk = makePcfKernel({FilterKind::Poisson, 3, filterTaps, 1.0});
+    const LookupPass pass(soft.map, soft.light, {searchDisk, search.region, filterDisk, soft.lightTexels}, in.simd);
+    PcssBuffers out{std::vector<float>(g.pixelCount()), std::vector<float>(g.pixelCount()), std::vector<float>(g.pixelCount())};
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        LookupPass::Scratch scratch(g.width);
+        for (int j = rows.begin(); j < rows.end(); ++j) {
+            for (int i = 0; i < g.width; ++i) scratch.served[size_t(i)] = g.hit[g.index(i, j)];   // one map
+            pass.lookUpRow(g, j, scratch, {out.visibility.data(), out.blockerDistance.data(), out.widthTexels.data()});
         }
-        const glm::dvec2 radius = glm::max(0.5 * e.widthTexels, glm::dvec2(kMinFilterRadiusTexels));
-        out.visibility[k] = float(poissonVisibility(soft.map, r, filterDisk, k, radius));
-        out.blockerDistance[k] = float(e.blockerDistance);
-        out.widthTexels[k] = float(0.5 * (e.widthTexels.x + e.widthTexels.y));
     });
     return out;
 }

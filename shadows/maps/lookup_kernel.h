@@ -25,7 +25,8 @@ struct LookupMap {
 
 // The bias modes and filters, numbered as BiasMode and FilterKind (checked where they meet).
 enum LookupBias : int { kLookupConstant, kLookupSlopeScaled, kLookupNormalOffset, kLookupReceiverPlane };
-enum LookupFilter : int { kLookupNearest, kLookupBilinear, kLookupGrid, kLookupPoisson, kLookupFilterCount };
+// kLookupPcss is percentage-closer soft shadows, the filter of shadows/filtered/pcss.cpp.
+enum LookupFilter : int { kLookupNearest, kLookupBilinear, kLookupGrid, kLookupPoisson, kLookupPcss, kLookupFilterCount };
 
 struct LookupConstants {
     const LookupMap* maps;      // the maps a selector chooses from
@@ -38,10 +39,19 @@ struct LookupConstants {
     float reachAnchor[3];       // lightReaches' A: the light's direction as given, or its position
     bool spot;                  // a spot light: its cone is decided by the caller, in double
     int gridSize;               // grid: taps per side
-    const float* diskX;         // poisson: the unit-disk taps
+    const float* diskX;         // poisson, pcss: the unit-disk taps of the filter
     const float* diskY;
     int diskTaps;
     float radiusTexels[2];      // poisson: the disk's radius per axis, texels
+    // pcss: the blocker search's unit-disk taps and the fraction of the light's cone it
+    // covers, the light's width in texels at unit distance per axis (w_light of eq. 7.6),
+    // and the perspective map's near and far distances.
+    const float* searchX;
+    const float* searchY;
+    int searchTaps;
+    float searchRegion;
+    float lightTexels[2];
+    float zNear, zFar;
 };
 
 // Receivers as the map serving them sees them, one value per pixel of a run: where each
@@ -54,6 +64,7 @@ struct ReceiverArrays {
     float* slopeX;
     float* slopeY;
     float* tolerance;
+    float* distance;            // clip w: for a perspective map the distance along its axis
 };
 
 // One run of pixels of a row; count is a multiple of the kernel's width.
@@ -68,6 +79,8 @@ struct LookupRow {
     const float* rotationSin;
     ReceiverArrays receivers;   // written by the projection, read by the filter
     float* visibility;          // out: the lit fraction, 0 where served = 0
+    float* blockerDistance;     // out, pcss: the blockers' mean distance d_o, 0 without blockers
+    float* penumbraWidth;       // out, pcss: the filter's width in texels (eq. 7.6), 0 likewise
     int count;
 };
 

@@ -32,9 +32,13 @@ inline F32 transformRow(const float* m, int r, const Vec3& p) {
 }
 
 // M (p, 1) divided by w: for texelFromWorld, (texel x, texel y, window depth).
-inline Vec3 project(const float* m, const Vec3& p) {
-    const F32 w = transformRow(m, 3, p);
+inline Vec3 project(const float* m, const Vec3& p, F32& w) {
+    w = transformRow(m, 3, p);
     return {transformRow(m, 0, p) / w, transformRow(m, 1, p) / w, transformRow(m, 2, p) / w};
+}
+inline Vec3 project(const float* m, const Vec3& p) {
+    F32 w;
+    return project(m, p, w);
 }
 
 // floor(c) as an integer, saturated to +-2^30 (NaN to -2^30) so that every lane converts;
@@ -69,6 +73,7 @@ inline I32 texelStorageIndex(const LookupMap& map, I32 x, I32 y) {
 struct Receiver {
     F32 texelX, texelY, depth;
     F32 slopeX, slopeY, tolerance;
+    F32 distance;   // clip w (texelFromWorld's fourth row)
 };
 
 // The world-space width of one texel at P: the distance to the point one texel over in x
@@ -122,8 +127,9 @@ Receiver project(const LookupConstants& c, const LookupMap& map, const Vec3& P, 
             p = {p.x + N.x * along, p.y + N.y * along, p.z + N.z * along};
         }
     }
-    const Vec3 t = project(map.texelFromWorld, p);
-    Receiver r{t.x, t.y, t.z, simd::splat(0.0f), simd::splat(0.0f), simd::splat(0.0f)};
+    F32 w;
+    const Vec3 t = project(map.texelFromWorld, p, w);
+    Receiver r{t.x, t.y, t.z, simd::splat(0.0f), simd::splat(0.0f), simd::splat(0.0f), w};
     if constexpr (kPlane) receiverPlaneSlope(map, p, N, r);
     return r;
 }
@@ -131,9 +137,12 @@ Receiver project(const LookupConstants& c, const LookupMap& map, const Vec3& P, 
 // Lit by texel (x, y): the receiver is not farther from the light than what the map stores
 // there, or the texel is empty (the cleared 1 holds no occluder). For a receiver plane the
 // receiver's depth is the plane's at the texel centre, and the tolerance is added.
+inline F32 oneWhere(Mask m) { return simd::select(m, simd::splat(1.0f), simd::splat(0.0f)); }
+
+inline F32 storedDepth(const LookupMap& map, I32 x, I32 y) { return simd::gather(map.depth, texelStorageIndex(map, x, y)); }
+
 template <bool kPlane>
-Mask litBy(const LookupMap& map, const Receiver& r, I32 x, I32 y) {
-    const F32 stored = simd::gather(map.depth, texelStorageIndex(map, x, y));
+Mask litBy(const Receiver& r, I32 x, I32 y, F32 stored) {
     const Mask empty = simd::cmpLe(simd::splat(1.0f), stored);
     if constexpr (!kPlane) return empty | simd::cmpLe(r.depth, stored);
     const F32 half = simd::splat(0.5f);
@@ -142,7 +151,25 @@ Mask litBy(const LookupMap& map, const Receiver& r, I32 x, I32 y) {
     return empty | simd::cmpLe(depthAt, stored + r.tolerance);
 }
 
-inline F32 oneWhere(Mask m) { return simd::select(m, simd::splat(1.0f), simd::splat(0.0f)); }
+template <bool kPlane>
+Mask litBy(const LookupMap& map, const Receiver& r, I32 x, I32 y) {
+    return litBy<kPlane>(r, x, y, storedDepth(map, x, y));
+}
+
+// The Poisson disk (taps on the unit disk) rotated by (cosine, sine) per pixel and scaled
+// per axis: the fraction of its taps that are lit.
+template <bool kPlane>
+F32 poissonLitFraction(const LookupMap& map, const Receiver& r, F32 cosine, F32 sine, F32 radiusX, F32 radiusY,
+                       const float* diskX, const float* diskY, int taps) {
+    F32 sum = simd::splat(0.0f);
+    for (int k = 0; k < taps; ++k) {
+        const F32 dx = simd::splat(diskX[k]), dy = simd::splat(diskY[k]);
+        const F32 x = r.texelX + radiusX * (cosine * dx - sine * dy);
+        const F32 y = r.texelY + radiusY * (sine * dx + cosine * dy);
+        sum = sum + oneWhere(litBy<kPlane>(map, r, texelIndexOf(x), texelIndexOf(y)));
+    }
+    return sum / simd::splat(float(taps));
+}
 
 // The filters of pcf.h, each the fraction of its weight that is lit.
 struct Nearest {
@@ -186,16 +213,54 @@ struct Grid {
 struct Poisson {
     template <bool kPlane>
     static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
+        return poissonLitFraction<kPlane>(map, r, simd::load(row.rotationCos + i), simd::load(row.rotationSin + i),
+                                          simd::splat(c.radiusTexels[0]), simd::splat(c.radiusTexels[1]), c.diskX,
+                                          c.diskY, c.diskTaps);
+    }
+};
+
+// Percentage-closer soft shadows (Fernando 2005, steps 1 to 3; RTR 7.6) on a perspective
+// map from the light's centre, the receiver on its own plane (blocker_search.h says why):
+//   1. blocker search: the rotated search disk over the light's cone from the receiver cut
+//      at the near plane; the taps nearer the light are blockers, their mean distance d_o.
+//   2. eq. 7.6 in texels: w = w_light (d_r - d_o) / (d_r d_o), per map axis.
+//   3. the rotated filter disk of radius w / 2: the lit fraction. Never below half a texel,
+//      where the taps all fall in the receiver's own texel: the map's resolution, not the
+//      light, limits the penumbra there (contact shadows are hard).
+// No blocker (or a receiver nearer than the near plane): fully lit.
+struct Pcss {
+    template <bool kPlane>
+    static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
         const F32 cosine = simd::load(row.rotationCos + i), sine = simd::load(row.rotationSin + i);
-        const F32 radiusX = simd::splat(c.radiusTexels[0]), radiusY = simd::splat(c.radiusTexels[1]);
-        F32 sum = simd::splat(0.0f);
-        for (int k = 0; k < c.diskTaps; ++k) {
-            const F32 dx = simd::splat(c.diskX[k]), dy = simd::splat(c.diskY[k]);
-            const F32 x = r.texelX + radiusX * (cosine * dx - sine * dy);
-            const F32 y = r.texelY + radiusY * (sine * dx + cosine * dy);
-            sum = sum + oneWhere(litBy<kPlane>(map, r, texelIndexOf(x), texelIndexOf(y)));
+        const F32 zero = simd::splat(0.0f), half = simd::splat(0.5f), zNear = simd::splat(c.zNear), dr = r.distance;
+        const auto widthTexels = [&](F32 occluder, int axis) {   // eq. 7.6
+            return simd::splat(c.lightTexels[axis]) * ((dr - occluder) / (dr * occluder));
+        };
+        const F32 region = simd::splat(0.5f * c.searchRegion);
+        const F32 searchX = region * widthTexels(zNear, 0), searchY = region * widthTexels(zNear, 1);
+        const Mask searched = simd::cmpLt(zNear, dr);
+        // A stored window depth's distance, f n / (f - z (f - n)) (SoftShadowMap::distanceOf).
+        const F32 farNear = simd::splat(c.zFar * c.zNear), far = simd::splat(c.zFar), range = simd::splat(c.zFar - c.zNear);
+        F32 blockers = zero, distanceSum = zero;   // in tap order: the same sums at every width
+        for (int k = 0; k < c.searchTaps; ++k) {
+            const F32 dx = simd::splat(c.searchX[k]), dy = simd::splat(c.searchY[k]);
+            const I32 x = texelIndexOf(r.texelX + searchX * (cosine * dx - sine * dy));
+            const I32 y = texelIndexOf(r.texelY + searchY * (sine * dx + cosine * dy));
+            const F32 stored = storedDepth(map, x, y);
+            const Mask blocker = searched & !litBy<kPlane>(r, x, y, stored);
+            blockers = blockers + oneWhere(blocker);
+            distanceSum = distanceSum + simd::select(blocker, farNear / (far - stored * range), zero);
         }
-        return sum / simd::splat(float(c.diskTaps));
+        const Mask shadowed = simd::cmpLt(zero, blockers);
+        // The offset and the plane can put the mean at or behind the receiver by a rounding:
+        // clamped to near .. d_r (width 0 at contact), as blocker_search.cpp.
+        const F32 occluder = simd::min(simd::max(distanceSum / blockers, zNear), dr);
+        const F32 widthX = widthTexels(occluder, 0), widthY = widthTexels(occluder, 1);
+        const F32 visibility = poissonLitFraction<kPlane>(map, r, cosine, sine, simd::max(half * widthX, half),
+                                                          simd::max(half * widthY, half), c.diskX, c.diskY, c.diskTaps);
+        simd::store(row.blockerDistance + i, simd::select(shadowed, occluder, zero));
+        simd::store(row.penumbraWidth + i, simd::select(shadowed, half * (widthX + widthY), zero));
+        return simd::select(shadowed, visibility, simd::splat(1.0f));
     }
 };
 
@@ -256,11 +321,13 @@ void projectRun(const LookupConstants& c, const LookupRow& row) {
         Receiver r{};
         forEachServingMap(c, row.served + i, [&](const LookupMap& map, Mask lanes) {
             const Receiver q = project<kPlane>(c, map, loadVec3(row.position, i), loadVec3(row.normal, i));
-            r = {simd::select(lanes, q.texelX, r.texelX), simd::select(lanes, q.texelY, r.texelY),
-                 simd::select(lanes, q.depth, r.depth),   simd::select(lanes, q.slopeX, r.slopeX),
-                 simd::select(lanes, q.slopeY, r.slopeY), simd::select(lanes, q.tolerance, r.tolerance)};
+            r = {simd::select(lanes, q.texelX, r.texelX),     simd::select(lanes, q.texelY, r.texelY),
+                 simd::select(lanes, q.depth, r.depth),       simd::select(lanes, q.slopeX, r.slopeX),
+                 simd::select(lanes, q.slopeY, r.slopeY),     simd::select(lanes, q.tolerance, r.tolerance),
+                 simd::select(lanes, q.distance, r.distance)};
         });
         simd::store(out.texelX + i, r.texelX), simd::store(out.texelY + i, r.texelY), simd::store(out.depth + i, r.depth);
+        if (out.distance) simd::store(out.distance + i, r.distance);
         if constexpr (kPlane) {
             simd::store(out.slopeX + i, r.slopeX), simd::store(out.slopeY + i, r.slopeY);
             simd::store(out.tolerance + i, r.tolerance);
@@ -280,6 +347,7 @@ void filterRun(const LookupConstants& c, const LookupRow& row) {
             r.slopeX = simd::load(in.slopeX + i), r.slopeY = simd::load(in.slopeY + i);
             r.tolerance = simd::load(in.tolerance + i);
         }
+        if (in.distance) r.distance = simd::load(in.distance + i);
         F32 visibility = simd::splat(0.0f);
         forEachServingMap(c, row.served + i, [&](const LookupMap& map, Mask lanes) {
             visibility = simd::select(lanes, Filter::template lit<kPlane>(c, map, r, row, i), visibility);
@@ -305,6 +373,7 @@ inline const LookupKernels& kernels() {
         addFilter<Bilinear>(t, kLookupBilinear);
         addFilter<Grid>(t, kLookupGrid);
         addFilter<Poisson>(t, kLookupPoisson);
+        addFilter<Pcss>(t, kLookupPcss);
         return t;
     }();
     return table;

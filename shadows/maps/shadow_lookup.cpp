@@ -54,29 +54,29 @@ const LookupKernels& lookupKernels(raster::SimdLevel simd) {
 }
 
 struct LookupPass::Tables {
-    explicit Tables(const Light& light) : reaches(light) {}
+    Tables(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias, const PcfKernel& kernel,
+           int filter, raster::SimdLevel simd);
     LightReach reaches;       // where the float test cannot certify its answer
     std::vector<LookupMap> maps;
-    std::vector<float> diskX, diskY;
+    std::vector<float> diskX, diskY, searchX, searchY;
     LookupConstants constants{};
     // The SIMD level's stages, and the scalar twins that take each row's tail.
     LookupKernel reach = nullptr, project = nullptr, filter = nullptr;
     LookupKernel scalarReach = nullptr, scalarProject = nullptr, scalarFilter = nullptr;
     int width = 1;
-    bool poisson = false;
+    bool rotated = false;     // the filter turns a Poisson disk per pixel
 };
 
-LookupPass::LookupPass(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias,
-                       const PcfKernel& kernel, raster::SimdLevel simd)
-    : tables_(std::make_unique<Tables>(light)) {
-    Tables& t = *tables_;
+LookupPass::Tables::Tables(const std::vector<DepthMap>& depthMaps, const Light& light, const BiasSettings& bias,
+                           const PcfKernel& kernel, int filterIndex, raster::SimdLevel simd)
+    : reaches(light) {
     // served[] holds 1 + a map's index in the low seven bits of a byte (kReachUndecided).
-    if (maps.size() > 126) throw std::invalid_argument("shadow lookup: more than 126 maps");
-    for (const DepthMap& map : maps) t.maps.push_back(lookupMapOf(map));
-    for (const glm::dvec2& d : kernel.disk) t.diskX.push_back(float(d.x)), t.diskY.push_back(float(d.y));
-    LookupConstants& c = t.constants;
-    c.maps = t.maps.data();
-    c.mapCount = int(t.maps.size());
+    if (depthMaps.size() > 126) throw std::invalid_argument("shadow lookup: more than 126 maps");
+    for (const DepthMap& map : depthMaps) maps.push_back(lookupMapOf(map));
+    for (const glm::dvec2& d : kernel.disk) diskX.push_back(float(d.x)), diskY.push_back(float(d.y));
+    LookupConstants& c = constants;
+    c.maps = maps.data();
+    c.mapCount = int(maps.size());
     c.bias = int(bias.mode);
     c.constantMetres = float(bias.constantMetres);
     c.normalOffsetTexels = float(bias.normalOffsetTexels);
@@ -87,24 +87,43 @@ LookupPass::LookupPass(const std::vector<DepthMap>& maps, const Light& light, co
     c.reachAnchor[0] = anchor.x, c.reachAnchor[1] = anchor.y, c.reachAnchor[2] = anchor.z;
     c.spot = light.type == LightType::Spot;
     c.gridSize = kernel.settings.gridSize;
-    c.diskX = t.diskX.data(), c.diskY = t.diskY.data();
-    c.diskTaps = int(t.diskX.size());
+    c.diskX = diskX.data(), c.diskY = diskY.data();
+    c.diskTaps = int(diskX.size());
     c.radiusTexels[0] = c.radiusTexels[1] = float(kernel.settings.poissonRadiusTexels);
-    const int filter = int(kernel.settings.kind), plane = bias.mode == BiasMode::ReceiverPlane ? 1 : 0;
+    const int plane = bias.mode == BiasMode::ReceiverPlane ? 1 : 0;
     const LookupKernels& vector = lookupKernels(simd);
     const LookupKernels& scalar = lookupKernelsScalar();
-    t.reach = vector.reach, t.project = vector.project[plane], t.filter = vector.filter[filter][plane];
-    t.scalarReach = scalar.reach, t.scalarProject = scalar.project[plane], t.scalarFilter = scalar.filter[filter][plane];
-    t.width = vector.width;
-    t.poisson = kernel.settings.kind == FilterKind::Poisson;
+    reach = vector.reach, project = vector.project[plane], filter = vector.filter[filterIndex][plane];
+    scalarReach = scalar.reach, scalarProject = scalar.project[plane], scalarFilter = scalar.filter[filterIndex][plane];
+    width = vector.width;
+    rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss;
+}
+
+LookupPass::LookupPass(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias,
+                       const PcfKernel& kernel, raster::SimdLevel simd)
+    : tables_(std::make_unique<Tables>(maps, light, bias, kernel, int(kernel.settings.kind), simd)) {}
+
+LookupPass::LookupPass(const DepthMap& map, const Light& light, const Pcss& pcss, raster::SimdLevel simd) {
+    BiasSettings plane;
+    plane.mode = BiasMode::ReceiverPlane;
+    tables_ = std::make_unique<Tables>(std::vector<DepthMap>{}, light, plane, pcss.filter, kLookupPcss, simd);
+    Tables& t = *tables_;
+    t.maps = {lookupMapOf(map)};
+    for (const glm::dvec2& d : pcss.search.disk) t.searchX.push_back(float(d.x)), t.searchY.push_back(float(d.y));
+    LookupConstants& c = t.constants;
+    c.maps = t.maps.data(), c.mapCount = 1;
+    c.searchX = t.searchX.data(), c.searchY = t.searchY.data(), c.searchTaps = int(t.searchX.size());
+    c.searchRegion = float(pcss.searchRegion);
+    c.lightTexels[0] = float(pcss.lightTexels.x), c.lightTexels[1] = float(pcss.lightTexels.y);
+    c.zNear = float(map.view.zNear), c.zFar = float(map.view.zFar);
 }
 
 LookupPass::~LookupPass() = default;
 
-void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, float* visibility) const {
+void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outputs& out) const {
     const Tables& t = *tables_;
     const int count = g.width;
-    if (t.poisson) {
+    if (t.rotated) {
         // The per-pixel rotation of the Poisson disk, a hash of the pixel index (pcf.h).
         for (int i = 0; i < count; ++i) {
             const double angle = poissonRotation(g.index(i, j));
@@ -113,18 +132,21 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, float* vis
     }
     float* r = scratch.receivers.data();
     const int n = int(scratch.served.size());
-    const ReceiverArrays arrays{r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n};
+    const ReceiverArrays arrays{r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n, r + 6 * n};
     const size_t k = g.index(0, j);
     const int vectors = count - count % t.width;
+    const auto image = [&](float* a, int at) { return a ? a + k + size_t(at) : a; };
     const LookupRow row{glm::value_ptr(g.position[k]), glm::value_ptr(g.normal[k]), scratch.served.data(),
-                        scratch.rotationCos.data(), scratch.rotationSin.data(), arrays, visibility + k, vectors};
+                        scratch.rotationCos.data(), scratch.rotationSin.data(), arrays, image(out.visibility, 0),
+                        image(out.blockerDistance, 0), image(out.penumbraWidth, 0), vectors};
     // The row's tail, fewer pixels than a vector, goes through the scalar twins (the same bits).
     const auto at = [&](float* a) { return a + vectors; };
     const LookupRow tail{row.position + 3 * vectors, row.normal + 3 * vectors, row.served + vectors,
                          row.rotationCos + vectors, row.rotationSin + vectors,
                          {at(arrays.texelX), at(arrays.texelY), at(arrays.depth), at(arrays.slopeX), at(arrays.slopeY),
-                          at(arrays.tolerance)},
-                         visibility + k + size_t(vectors), count - vectors};
+                          at(arrays.tolerance), at(arrays.distance)},
+                         image(out.visibility, vectors), image(out.blockerDistance, vectors),
+                         image(out.penumbraWidth, vectors), count - vectors};
     t.reach(t.constants, row);
     t.scalarReach(t.constants, tail);
     for (int i = 0; i < count; ++i) {

@@ -71,6 +71,17 @@ class LookupPass {
 public:
     LookupPass(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias, const PcfKernel& kernel,
                raster::SimdLevel simd);
+    // Percentage-closer soft shadows (the kernel's kLookupPcss filter) on one perspective map
+    // from an area light's centre, with receiver-plane bias: the blocker search's and the
+    // filter's Poisson disks (unit disk), the search region, and w_light of eq. 7.6 in
+    // texels at unit distance.
+    struct Pcss {
+        const PcfKernel& search;
+        double searchRegion = 1.0;
+        const PcfKernel& filter;
+        glm::dvec2 lightTexels{0.0};
+    };
+    LookupPass(const DepthMap& map, const Light& light, const Pcss& pcss, raster::SimdLevel simd);
     ~LookupPass();
 
     // A row's working memory: which map serves each pixel, the receivers as the maps see
@@ -79,13 +90,19 @@ public:
         std::vector<uint8_t> served;   // 1 + the serving map, else 0 (LookupRow::served)
         std::vector<float> receivers, rotationCos, rotationSin;
         explicit Scratch(int count)
-            : served(size_t(count)), receivers(6 * size_t(count)), rotationCos(size_t(count)), rotationSin(size_t(count)) {}
+            : served(size_t(count)), receivers(7 * size_t(count)), rotationCos(size_t(count)), rotationSin(size_t(count)) {}
     };
 
-    // V of row j's pixels into visibility (the whole image's), given which map serves each
-    // in scratch.served; the scratch holds a row. Decides where the light reaches, as
-    // lightReaches() does.
-    void lookUpRow(const GBuffer& g, int j, Scratch& scratch, float* visibility) const;
+    // Whole images the pass writes, row by row; the last two only for pcss.
+    struct Outputs {
+        float* visibility;
+        float* blockerDistance = nullptr;
+        float* penumbraWidth = nullptr;
+    };
+
+    // Row j's pixels into the outputs, given which map serves each in scratch.served; the
+    // scratch holds a row. Decides where the light reaches, as lightReaches() does.
+    void lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outputs& out) const;
 
 private:
     struct Tables;
@@ -123,7 +140,7 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
                 out.texelDensity[k] = float(texelsPerPixel(maps[size_t(out.mapIndex[k])], rays, i, j,
                                                            glm::dvec3(g.position[k]), glm::dvec3(g.normal[k])));
             }
-            pass.lookUpRow(g, j, scratch, out.visibility.data());
+            pass.lookUpRow(g, j, scratch, {out.visibility.data()});
         }
     });
     return out;

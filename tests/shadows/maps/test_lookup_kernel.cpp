@@ -178,7 +178,7 @@ TEST_CASE("shadow lookup: the float projection stays within 1e-3 texel and 6 flo
             LookupPass::Scratch scratch(s.g.width);
             for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
             std::vector<float> visibility(s.g.pixelCount());
-            pass.lookUpRow(s.g, j, scratch, visibility.data());
+            pass.lookUpRow(s.g, j, scratch, {visibility.data()});
             const float* texelX = scratch.receivers.data();
             const float* texelY = texelX + s.g.width;
             const float* depth = texelY + s.g.width;
