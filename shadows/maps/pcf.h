@@ -55,9 +55,9 @@ inline glm::dvec2 rotatedTap(const glm::dvec2& d, const glm::dvec2& rotation, co
     return radiusTexels * glm::dvec2(rotation.x * d.x - rotation.y * d.y, rotation.y * d.x + rotation.x * d.y);
 }
 
-// The double-precision taps the soft-shadow techniques use (PCSS's filter, multi-sample's
-// maps), filter(map, receiver, pixel) = the fraction lit; the shadow map's own lookup runs
-// every kernel above in float (lookup_kernel.inl).
+// The double-precision tap that multi-sample's maps use, filter(map, receiver, pixel) = the
+// fraction lit; the shadow map's and PCSS's lookups run every kernel above in float
+// (lookup_kernel.inl).
 namespace pcf {
 
 // The one texel holding texel position `at`, compared with the receiver's depth.
@@ -69,24 +69,6 @@ struct Nearest {
     double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const { return nearestAt(map, r, r.texel); }
 };
 
-struct Poisson {
-    const std::vector<glm::dvec2>* disk;
-    glm::dvec2 radiusTexels;
-    double operator()(const DepthMap& map, const MapReceiver& r, uint64_t pixel) const {
-        const double angle = poissonRotation(pixel);
-        const glm::dvec2 rotation(std::cos(angle), std::sin(angle));
-        double lit = 0.0;
-        for (const glm::dvec2& d : *disk) lit += nearestAt(map, r, r.texel + rotatedTap(d, rotation, radiusTexels));
-        return lit / double(disk->size());
-    }
-};
-
 }  // namespace pcf
-
-// The poisson kernel's taps at `radiusTexels` per axis around the receiver (the fraction lit).
-inline double poissonVisibility(const DepthMap& map, const MapReceiver& receiver, const std::vector<glm::dvec2>& disk,
-                                uint64_t pixel, const glm::dvec2& radiusTexels) {
-    return pcf::Poisson{&disk, radiusTexels}(map, receiver, pixel);
-}
 
 }  // namespace shadowlab

@@ -9,6 +9,8 @@
 #include <random>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 #include "raster/thread_count.h"
 #include "shadows/maps/lookup_kernel.h"
 #include "shadows/maps/shadow_lookup.h"
@@ -88,6 +90,41 @@ TEST_CASE("shadow lookup: every SIMD level and thread count gives the scalar twi
                 }
             }
         }
+    }
+}
+
+TEST_CASE("shadow lookup: PCSS gives the scalar twin's bytes at every SIMD level and thread count") {
+    // The pcss filter on sphere-box's perspective map, a light 40 texels wide at 1 m: wide
+    // penumbrae, so the blocker search, the width and the filter all matter.
+    const LookupScene& s = lookupScene();
+    BiasSettings plane;
+    plane.mode = BiasMode::ReceiverPlane;
+    const std::vector<DepthMap> maps = s.maps(plane, 512);
+    const PcfKernel search = makePcfKernel({FilterKind::Poisson, 3, 16, 1.0});
+    const PcfKernel filter = makePcfKernel({FilterKind::Poisson, 3, 32, 1.0});
+    const auto run = [&](raster::SimdLevel level, int threads) {
+        const LookupPass pass(maps[0], s.light, {search, 1.0, filter, glm::dvec2(40.0)}, level);
+        const size_t n = s.g.pixelCount();
+        std::vector<float> v(n), blocker(n), width(n);
+        withThreads(threads, [&] {
+            tbb::parallel_for(0, s.g.height, [&](int j) {
+                LookupPass::Scratch scratch(s.g.width);
+                for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
+                pass.lookUpRow(s.g, j, scratch, {v.data(), blocker.data(), width.data()});
+            });
+        });
+        v.insert(v.end(), blocker.begin(), blocker.end());
+        v.insert(v.end(), width.begin(), width.end());
+        return v;
+    };
+    const std::vector<float> twin = run(raster::SimdLevel::Scalar, 1);
+    const size_t n = s.g.pixelCount();
+    int penumbra = 0, blocked = 0;
+    for (size_t k = 0; k < n; ++k) penumbra += twin[k] > 0.0f && twin[k] < 1.0f, blocked += twin[n + k] > 0.0f;
+    CHECK(penumbra > 30);   // 65 of the 203 x 131 pixels
+    CHECK(blocked > penumbra);
+    for (raster::SimdLevel level : vectorLevels()) {
+        for (int threads : {1, 2}) CHECK(sameBytes(run(level, threads), twin));
     }
 }
 
