@@ -2,7 +2,8 @@
 // Graphics Hardware", section 2: the shadow of an area light as the average of hard
 // shadows from points on it; Real-Time Rendering, 4th ed., 7.1 and 7.6): N ordinary shadow
 // maps (shadow_map.cpp's machinery: a light view fitted to the receivers, depth_map.h,
-// slope-scaled bias, nearest lookups), each from one point on the light, averaged.
+// slope-scaled bias, the float nearest lookup of shadow_lookup.h), each from one point on
+// the light, averaged.
 //
 // The points are stratified: sqrt(N) x sqrt(N) strata of the unit square, one jittered
 // point each, mapped to the disk (concentric map) or rectangle by light_sampling.h, the
@@ -27,8 +28,8 @@
 #include "shadows/light_view.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
+#include "shadows/maps/shadow_lookup.h"
 #include "shadows/maps/shadow_map_debug.h"
-#include "shadows/receiver_pass.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
@@ -40,15 +41,15 @@ constexpr int kMaxSamples = 4096;                        // counts fit uint16_t
 // texel, and the receiver's texel may differ by another from where the fit put it.
 constexpr double kFitMarginTexels = 1.5;
 
-// Adds the hard shadow of the light point `position` from `map` to every pixel's count.
-void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const glm::dvec3& position, std::vector<uint16_t>& lit) {
-    const BiasSettings bias;   // slope-scaled: the offset is in the map, the receiver stays put
-    forEachSurfacePixel(g, [&](int, int, size_t k) {
-        const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-        if (!(glm::dot(N, position - P) > 0.0)) return;   // the light point is behind the surface
-        const MapReceiver r = mapReceiverFromPoint(map, P, N, position, bias);
-        lit[k] = uint16_t(lit[k] + (pcf::Nearest{}(map, r, k) > 0.5 ? 1 : 0));
-    });
+// Adds the hard shadow of the point light `point` from `map` to every pixel's count: the
+// shadow map's nearest lookup (shadow_lookup.h), in float through its vector kernel, with
+// V = 0 where the point is behind the surface. `v` is working memory, one float a pixel.
+void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const Light& point, raster::SimdLevel simd,
+                          std::vector<float>& v, std::vector<uint16_t>& lit) {
+    // Slope-scaled bias: the offset is in the map, the receiver stays put.
+    const LookupPass pass(std::span(&map, 1), point, BiasSettings{}, makePcfKernel({}), simd);
+    lookUpEveryRow(g, pass, {v.data()});
+    for (size_t k = 0; k < lit.size(); ++k) lit[k] = uint16_t(lit[k] + (v[k] > 0.5f ? 1 : 0));
 }
 
 ShadowOutputs runMultiSample(const ShadowInputs& in) {
@@ -67,6 +68,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     fit.marginTexels = kFitMarginTexels;
     const DepthMapSettings depth{resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
     std::vector<uint16_t> lit(in.gbuffer.pixelCount(), 0);
+    std::vector<float> v(in.gbuffer.pixelCount());
     StageTimer timer;
     Pcg32 rng(kLightSampleSeed, 0);
     for (int b = 0; b < perAxis; ++b) {
@@ -75,7 +77,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
             Light point = pointLightFor(in.light);
             point.position = glm::vec3(areaLightPoint(frame, u));
             const DepthMap map = renderDepthMap(in.world(), fitLightView(point, in.gbuffer, in.world(), fit), depth, in.simd);
-            accumulateHardShadow(in.gbuffer, map, glm::dvec3(point.position), lit);
+            accumulateHardShadow(in.gbuffer, map, point, in.simd, v, lit);
             if (a == 0 && b == 0) writeDepthMap(debug, "depth-sample0", map);
         }
     }

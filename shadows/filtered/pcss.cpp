@@ -7,9 +7,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "shadows/debug_buffers.h"
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
@@ -39,13 +36,7 @@ PcssBuffers runPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const
     const PcfKernel filterDisk = makePcfKernel({FilterKind::Poisson, 3, filterTaps, 1.0});
     const LookupPass pass(soft.map, soft.light, {searchDisk, search.region, filterDisk, soft.lightTexels}, in.simd);
     PcssBuffers out{std::vector<float>(g.pixelCount()), std::vector<float>(g.pixelCount()), std::vector<float>(g.pixelCount())};
-    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-        LookupPass::Scratch scratch(g.width);
-        for (int j = rows.begin(); j < rows.end(); ++j) {
-            for (int i = 0; i < g.width; ++i) scratch.served[size_t(i)] = g.hit[g.index(i, j)];   // one map
-            pass.lookUpRow(g, j, scratch, {out.visibility.data(), out.blockerDistance.data(), out.widthTexels.data()});
-        }
-    });
+    lookUpEveryRow(g, pass, {out.visibility.data(), out.blockerDistance.data(), out.widthTexels.data()});
     return out;
 }
 

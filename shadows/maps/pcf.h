@@ -55,20 +55,4 @@ inline glm::dvec2 rotatedTap(const glm::dvec2& d, const glm::dvec2& rotation, co
     return radiusTexels * glm::dvec2(rotation.x * d.x - rotation.y * d.y, rotation.y * d.x + rotation.x * d.y);
 }
 
-// The double-precision tap that multi-sample's maps use, filter(map, receiver, pixel) = the
-// fraction lit; the shadow map's and PCSS's lookups run every kernel above in float
-// (lookup_kernel.inl).
-namespace pcf {
-
-// The one texel holding texel position `at`, compared with the receiver's depth.
-inline double nearestAt(const DepthMap& map, const MapReceiver& r, const glm::dvec2& at) {
-    return r.litBy(map, texelIndexOf(at.x), texelIndexOf(at.y)) ? 1.0 : 0.0;
-}
-
-struct Nearest {
-    double operator()(const DepthMap& map, const MapReceiver& r, uint64_t) const { return nearestAt(map, r, r.texel); }
-};
-
-}  // namespace pcf
-
 }  // namespace shadowlab

@@ -54,7 +54,7 @@ const LookupKernels& lookupKernels(raster::SimdLevel simd) {
 }
 
 struct LookupPass::Tables {
-    Tables(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias, const PcfKernel& kernel,
+    Tables(std::span<const DepthMap> maps, const Light& light, const BiasSettings& bias, const PcfKernel& kernel,
            int filter, raster::SimdLevel simd);
     LightReach reaches;       // where the float test cannot certify its answer
     std::vector<LookupMap> maps;
@@ -67,7 +67,7 @@ struct LookupPass::Tables {
     bool rotated = false;     // the filter turns a Poisson disk per pixel
 };
 
-LookupPass::Tables::Tables(const std::vector<DepthMap>& depthMaps, const Light& light, const BiasSettings& bias,
+LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& light, const BiasSettings& bias,
                            const PcfKernel& kernel, int filterIndex, raster::SimdLevel simd)
     : reaches(light) {
     // served[] holds 1 + a map's index in the low seven bits of a byte (kReachUndecided).
@@ -99,19 +99,17 @@ LookupPass::Tables::Tables(const std::vector<DepthMap>& depthMaps, const Light& 
     rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss;
 }
 
-LookupPass::LookupPass(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias,
+LookupPass::LookupPass(std::span<const DepthMap> maps, const Light& light, const BiasSettings& bias,
                        const PcfKernel& kernel, raster::SimdLevel simd)
     : tables_(std::make_unique<Tables>(maps, light, bias, kernel, int(kernel.settings.kind), simd)) {}
 
 LookupPass::LookupPass(const DepthMap& map, const Light& light, const Pcss& pcss, raster::SimdLevel simd) {
     BiasSettings plane;
     plane.mode = BiasMode::ReceiverPlane;
-    tables_ = std::make_unique<Tables>(std::vector<DepthMap>{}, light, plane, pcss.filter, kLookupPcss, simd);
+    tables_ = std::make_unique<Tables>(std::span(&map, 1), light, plane, pcss.filter, kLookupPcss, simd);
     Tables& t = *tables_;
-    t.maps = {lookupMapOf(map)};
     for (const glm::dvec2& d : pcss.search.disk) t.searchX.push_back(float(d.x)), t.searchY.push_back(float(d.y));
     LookupConstants& c = t.constants;
-    c.maps = t.maps.data(), c.mapCount = 1;
     c.searchX = t.searchX.data(), c.searchY = t.searchY.data(), c.searchTaps = int(t.searchX.size());
     c.searchRegion = float(pcss.searchRegion);
     c.lightTexels[0] = float(pcss.lightTexels.x), c.lightTexels[1] = float(pcss.lightTexels.y);
@@ -157,6 +155,16 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
     t.scalarProject(t.constants, tail);
     t.filter(t.constants, row);
     t.scalarFilter(t.constants, tail);
+}
+
+void lookUpEveryRow(const GBuffer& g, const LookupPass& pass, const LookupPass::Outputs& out) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        LookupPass::Scratch scratch(g.width);
+        for (int j = rows.begin(); j < rows.end(); ++j) {
+            for (int i = 0; i < g.width; ++i) scratch.served[size_t(i)] = g.hit[g.index(i, j)];
+            pass.lookUpRow(g, j, scratch, out);
+        }
+    });
 }
 
 double texelsPerPixel(const DepthMap& map, const PixelRays& rays, int i, int j, const glm::dvec3& P, const glm::dvec3& N) {

@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -69,7 +70,8 @@ const LookupKernels& lookupKernels(raster::SimdLevel simd);
 // on rows of receivers.
 class LookupPass {
 public:
-    LookupPass(const std::vector<DepthMap>& maps, const Light& light, const BiasSettings& bias, const PcfKernel& kernel,
+    // The pass reads the maps in place: they must outlive it.
+    LookupPass(std::span<const DepthMap> maps, const Light& light, const BiasSettings& bias, const PcfKernel& kernel,
                raster::SimdLevel simd);
     // Percentage-closer soft shadows (the kernel's kLookupPcss filter) on one perspective map
     // from an area light's centre, with receiver-plane bias: the blocker search's and the
@@ -108,6 +110,10 @@ private:
     struct Tables;
     std::unique_ptr<Tables> tables_;
 };
+
+// The pass over every row of g, rows in parallel, its one map serving every surface pixel
+// (no selector, no texel density): PCSS and multi-sample.
+void lookUpEveryRow(const GBuffer& g, const LookupPass& pass, const LookupPass::Outputs& out);
 
 // everyPixelDensity: measure the texel density at every pixel (the debug view), not only
 // at the sample its median is taken over.
