@@ -199,6 +199,17 @@ void BM_ShadowLookup(benchmark::State& state) {
                                                     benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+// Fitting the light's frustum to sphere-box's receivers (fitLightView: the receivers'
+// bounding box, their bounds in the light's view, the nearest occluder), one thread.
+void BM_LightView(benchmark::State& state) {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const Scene scene = loadScene("sphere-box");
+    const WorldGeometry world = flatten(scene);
+    const GBuffer g = renderGBuffer(world, scene.camera, bestSimdLevel());
+    const Light light = pointLightFor(scene.lights[0]);
+    for (auto _ : state) benchmark::DoNotOptimize(fitLightView(light, g, world));
+}
+
 void lookupCases(benchmark::internal::Benchmark* b) {
     for (int taps : {1, 3}) {
         for (int size : {256, 2048}) {
@@ -225,6 +236,7 @@ BENCHMARK(BM_Binning)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RasterTiles)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadowLookup)->Apply(lookupCases)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LightView)->Unit(benchmark::kMillisecond);
 // As the shadowlab program (app/main.cpp): freed memory is kept for reuse, so a frame's
 // fresh buffers do not pay page faults in every timed run.
 int main(int argc, char** argv) {
