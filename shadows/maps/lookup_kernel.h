@@ -42,7 +42,7 @@ struct LookupConstants {
     const float* diskX;         // poisson, pcss: the unit-disk taps of the filter
     const float* diskY;
     int diskTaps;
-    float radiusTexels[2];      // poisson: the disk's radius per axis, texels
+    float radiusTexels;         // poisson: the disk's radius, texels
     // pcss: the blocker search's unit-disk taps and the fraction of the light's cone it
     // covers, the light's width in texels at unit distance per axis (w_light of eq. 7.6),
     // and the perspective map's near and far distances.
@@ -64,7 +64,7 @@ struct ReceiverArrays {
     float* slopeX;
     float* slopeY;
     float* tolerance;
-    float* distance;            // clip w: for a perspective map the distance along its axis
+    float* distance;            // clip w, for a perspective map the distance along its axis (pcss; null otherwise)
 };
 
 // One run of pixels of a row; count is a multiple of the kernel's width.
@@ -79,8 +79,9 @@ struct LookupRow {
     const float* rotationSin;
     ReceiverArrays receivers;   // written by the projection, read by the filter
     float* visibility;          // out: the lit fraction, 0 where served = 0
-    float* blockerDistance;     // out, pcss: the blockers' mean distance d_o, 0 without blockers
-    float* penumbraWidth;       // out, pcss: the filter's width in texels (eq. 7.6), 0 likewise
+    // out, pcss only (zeroed by the caller: vectors with no served pixel are not written):
+    float* blockerDistance;     // the blockers' mean distance d_o, 0 without blockers
+    float* penumbraWidth;       // the filter's width in texels (eq. 7.6), 0 likewise
     int count;
 };
 

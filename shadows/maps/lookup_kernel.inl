@@ -10,13 +10,9 @@ using simd::I32;
 using simd::Mask;
 using simd::kWidth;
 
-// The rasterizer snaps vertices to 1/256 texel and stores float depth; the receiver plane's
-// tolerance covers both (shadow_bias.cpp derives the same bounds for the double lookup).
-// The 16 float steps of depth take the float projection of the receiver too: its rounding
-// is a few steps of 2^-24 at window depths below 1.
-constexpr float kRasterPositionErrorTexels = 1.0f / 256.0f;
-constexpr float kDepthErrorSteps = 16.0f;
-constexpr float kDepthStep = 1.0f / 16777216.0f;   // 2^-24
+// The receiver plane's tolerance (receiver_plane_tolerance.h), in float.
+constexpr float kRasterPositionErrorTexels = float(receiver_plane::kRasterPositionErrorTexels);
+constexpr float kDepthTolerance = float(receiver_plane::kDepthErrorSteps * receiver_plane::kDepthStep);
 
 struct Vec3 {
     F32 x, y, z;
@@ -101,7 +97,7 @@ inline void receiverPlaneSlope(const LookupMap& map, const Vec3& p, const Vec3& 
     r.slopeX = simd::select(finite, sx, simd::splat(0.0f));
     r.slopeY = simd::select(finite, sy, simd::splat(0.0f));
     r.tolerance = (abs(r.slopeX) + abs(r.slopeY)) * simd::splat(kRasterPositionErrorTexels) +
-                  simd::splat(kDepthErrorSteps * kDepthStep);
+                  simd::splat(kDepthTolerance);
 }
 
 // The bias of shadow_bias.h in float: constant and normal-offset move the receiver towards
@@ -214,7 +210,7 @@ struct Poisson {
     template <bool kPlane>
     static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
         return poissonLitFraction<kPlane>(map, r, simd::load(row.rotationCos + i), simd::load(row.rotationSin + i),
-                                          simd::splat(c.radiusTexels[0]), simd::splat(c.radiusTexels[1]), c.diskX,
+                                          simd::splat(c.radiusTexels), simd::splat(c.radiusTexels), c.diskX,
                                           c.diskY, c.diskTaps);
     }
 };

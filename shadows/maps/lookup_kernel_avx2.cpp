@@ -5,6 +5,7 @@
 #include "raster/fixed_point.h"
 #include "raster/simd/simd_avx2.h"
 #include "shadows/maps/lookup_kernel.h"
+#include "shadows/maps/receiver_plane_tolerance.h"
 
 namespace shadowlab::lookup_avx2 {
 namespace simd = shadowlab::simd_avx2;

@@ -1,19 +1,12 @@
 #include "shadows/maps/shadow_bias.h"
 
+#include "shadows/maps/receiver_plane_tolerance.h"
+
 #include <cmath>
 
 namespace shadowlab {
 namespace {
 
-// The rasterizer snaps vertices to 1/256 texel (README, "Setup"), so a stored depth is the
-// depth of a plane through vertices moved by up to 1/512 texel in x and y: at most
-// (|dz/dx| + |dz/dy|) / 512 away from the true plane there. The float transform of the
-// vertices adds well under 1e-3 texel at 8192 texels. Twice the snapping bound covers both.
-constexpr double kRasterPositionErrorTexels = 1.0 / 256.0;
-// Window depth is stored as float (2^-24 steps just below 1) after a float matrix product
-// whose terms can exceed the result ten-fold; 16 steps of 2^-24 bound the rounding.
-constexpr double kDepthErrorUlps = 16.0;
-constexpr double kDepthUlp = 1.0 / 16777216.0;   // 2^-24, window depth units
 
 glm::dvec3 project(const glm::dmat4& m, const glm::dvec3& p) {
     const glm::dvec4 h = m * glm::dvec4(p, 1.0);
@@ -60,8 +53,9 @@ MapReceiver mapReceiver(const DepthMap& map, const glm::dvec3& P, const glm::dve
     r.depth = t.z;
     if (bias.mode == BiasMode::ReceiverPlane) {
         r.depthSlope = receiverPlaneSlope(map, p, N);
+        using namespace receiver_plane;
         r.tolerance = (std::abs(r.depthSlope.x) + std::abs(r.depthSlope.y)) * kRasterPositionErrorTexels +
-                      kDepthErrorUlps * kDepthUlp;
+                      kDepthErrorSteps * kDepthStep;
     }
     return r;
 }

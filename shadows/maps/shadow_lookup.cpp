@@ -65,6 +65,7 @@ struct LookupPass::Tables {
     LookupKernel scalarReach = nullptr, scalarProject = nullptr, scalarFilter = nullptr;
     int width = 1;
     bool rotated = false;     // the filter turns a Poisson disk per pixel
+    bool pcss = false;        // the filter reads the receivers' distance and writes two more images
 };
 
 LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& light, const BiasSettings& bias,
@@ -89,7 +90,7 @@ LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& lig
     c.gridSize = kernel.settings.gridSize;
     c.diskX = diskX.data(), c.diskY = diskY.data();
     c.diskTaps = int(diskX.size());
-    c.radiusTexels[0] = c.radiusTexels[1] = float(kernel.settings.poissonRadiusTexels);
+    c.radiusTexels = float(kernel.settings.poissonRadiusTexels);
     const int plane = bias.mode == BiasMode::ReceiverPlane ? 1 : 0;
     const LookupKernels& vector = lookupKernels(simd);
     const LookupKernels& scalar = lookupKernelsScalar();
@@ -97,6 +98,7 @@ LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& lig
     scalarReach = scalar.reach, scalarProject = scalar.project[plane], scalarFilter = scalar.filter[filterIndex][plane];
     width = vector.width;
     rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss;
+    pcss = filterIndex == kLookupPcss;
 }
 
 LookupPass::LookupPass(std::span<const DepthMap> maps, const Light& light, const BiasSettings& bias,
@@ -118,8 +120,14 @@ LookupPass::LookupPass(const DepthMap& map, const Light& light, const Pcss& pcss
 
 LookupPass::~LookupPass() = default;
 
+// The G-buffer's vectors are read as packed x, y, z floats.
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+
 void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outputs& out) const {
     const Tables& t = *tables_;
+    if (t.pcss && (!out.blockerDistance || !out.penumbraWidth)) {
+        throw std::invalid_argument("shadow lookup: a PCSS pass writes the blocker distance and penumbra width too");
+    }
     const int count = g.width;
     if (t.rotated) {
         // The per-pixel rotation of the Poisson disk, a hash of the pixel index (pcf.h).
@@ -130,7 +138,7 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
     }
     float* r = scratch.receivers.data();
     const int n = int(scratch.served.size());
-    const ReceiverArrays arrays{r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n, r + 6 * n};
+    const ReceiverArrays arrays{r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n, t.pcss ? r + 6 * n : nullptr};
     const size_t k = g.index(0, j);
     const int vectors = count - count % t.width;
     const auto image = [&](float* a, int at) { return a ? a + k + size_t(at) : a; };
@@ -138,7 +146,7 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
                         scratch.rotationCos.data(), scratch.rotationSin.data(), arrays, image(out.visibility, 0),
                         image(out.blockerDistance, 0), image(out.penumbraWidth, 0), vectors};
     // The row's tail, fewer pixels than a vector, goes through the scalar twins (the same bits).
-    const auto at = [&](float* a) { return a + vectors; };
+    const auto at = [&](float* a) { return a ? a + vectors : a; };
     const LookupRow tail{row.position + 3 * vectors, row.normal + 3 * vectors, row.served + vectors,
                          row.rotationCos + vectors, row.rotationSin + vectors,
                          {at(arrays.texelX), at(arrays.texelY), at(arrays.depth), at(arrays.slopeX), at(arrays.slopeY),
@@ -181,8 +189,7 @@ double medianTexelDensity(const ShadowLookup& lookup) {
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < lookup.width; ++i) {
             const size_t k = size_t(j) * size_t(lookup.width) + size_t(i);
-            const bool sampled = i % kDensitySampleStride == 0 && j % kDensitySampleStride == 0;
-            if (lookup.mapIndex[k] >= 0 && sampled) served.push_back(lookup.texelDensity[k]);
+            if (lookup.mapIndex[k] >= 0 && inDensitySample(i, j)) served.push_back(lookup.texelDensity[k]);
         }
     }
     if (served.empty()) return 0.0;

@@ -15,8 +15,8 @@
 // projection into the map with the bias; and the filter's taps. Float moves a receiver by
 // at most 5e-4 texel and 3.6 steps of 2^-24 in depth from the double lookup it replaced
 // (sphere-box, test_lookup_kernel.cpp), the order of the map's own float rounding, which
-// the slope-scaled bias's 4 units cover; of the golden cases only two changed, and both for
-// the better or by rounding (docs/shadow-maps.md, "Precision of the lookup").
+// the slope-scaled bias's 4 units cover; of the 32 golden cases three changed, each for the
+// better or by a rounding (docs/shadow-maps.md, "Precision of the lookup").
 #pragma once
 
 #include <cstdint>
@@ -66,11 +66,13 @@ double texelsPerPixel(const DepthMap& map, const PixelRays& rays, int i, int j, 
 // The lookup's kernels for a SIMD level this CPU supports (std::invalid_argument otherwise).
 const LookupKernels& lookupKernels(raster::SimdLevel simd);
 
+inline bool inDensitySample(int i, int j) { return i % kDensitySampleStride == 0 && j % kDensitySampleStride == 0; }
+
 // The float lookup for one set of maps, bias and filter (lookup_kernel.h), ready to run
 // on rows of receivers.
 class LookupPass {
 public:
-    // The pass reads the maps in place: they must outlive it.
+    // The pass reads the maps and the light in place: they must outlive it.
     LookupPass(std::span<const DepthMap> maps, const Light& light, const BiasSettings& bias, const PcfKernel& kernel,
                raster::SimdLevel simd);
     // Percentage-closer soft shadows (the kernel's kLookupPcss filter) on one perspective map
@@ -139,10 +141,9 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
                 out.mapIndex[k] = int8_t(m);
                 scratch.served[size_t(i)] = uint8_t(m + 1);
             }
-            const int stride = everyPixelDensity ? 1 : kDensitySampleStride;
-            for (int i = 0; i < g.width && j % stride == 0; i += stride) {
+            for (int i = 0; i < g.width; ++i) {
                 const size_t k = g.index(i, j);
-                if (out.mapIndex[k] < 0) continue;
+                if (out.mapIndex[k] < 0 || !(everyPixelDensity || inDensitySample(i, j))) continue;
                 out.texelDensity[k] = float(texelsPerPixel(maps[size_t(out.mapIndex[k])], rays, i, j,
                                                            glm::dvec3(g.position[k]), glm::dvec3(g.normal[k])));
             }

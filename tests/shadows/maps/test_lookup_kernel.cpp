@@ -33,7 +33,8 @@ struct LookupScene {
         g = renderGBuffer(world, scene.camera, raster::SimdLevel::Scalar);
         light = pointLightFor(scene.lights[0]);
     }
-    std::vector<DepthMap> maps(const BiasSettings& bias, int size) const {
+    std::vector<DepthMap> maps(const BiasSettings& bias, int size) const { return maps(bias, size, light); }
+    std::vector<DepthMap> maps(const BiasSettings& bias, int size, const Light& light) const {
         LightFitOptions fit;
         fit.resolution = size;
         DepthMapSettings settings;
@@ -93,6 +94,40 @@ TEST_CASE("shadow lookup: every SIMD level and thread count gives the scalar twi
     }
 }
 
+TEST_CASE("shadow lookup: a sun and a spot light give the scalar twin's bytes, and V = 0 outside the spot's cone") {
+    const LookupScene& s = lookupScene();
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(4, 8, 3));
+    Light spot = s.light;
+    spot.type = LightType::Spot;
+    spot.direction = glm::normalize(-spot.position);   // at the origin
+    spot.coneAngleDeg = 20.0f;
+    for (const Light& light : {sun, spot}) {
+        for (BiasMode mode : {BiasMode::SlopeScaled, BiasMode::Constant}) {
+            BiasSettings bias;
+            bias.mode = mode;
+            const std::vector<DepthMap> maps = s.maps(bias, 256, light);
+            const PcfKernel kernel = makePcfKernel({FilterKind::Grid});
+            const ShadowLookup twin = lookUpShadows(s.g, s.scene.camera, light, maps, OneMap{}, bias, kernel, raster::SimdLevel::Scalar);
+            int lit = 0, outsideCone = 0, litOutsideCone = 0;
+            for (size_t k = 0; k < twin.visibility.size(); ++k) {
+                lit += twin.visibility[k] > 0.0f;
+                if (light.type != LightType::Spot || !s.g.hit[k] || insideSpotCone(light, s.g.position[k])) continue;
+                ++outsideCone, litOutsideCone += twin.visibility[k] != 0.0f;
+            }
+            CAPTURE(int(light.type));
+            CHECK(lit > 1000);
+            if (light.type == LightType::Spot) CHECK(outsideCone > 1000);
+            CHECK(litOutsideCone == 0);
+            for (raster::SimdLevel level : vectorLevels()) {
+                const ShadowLookup v = lookUpShadows(s.g, s.scene.camera, light, maps, OneMap{}, bias, kernel, level);
+                CHECK(sameBytes(v.visibility, twin.visibility));
+            }
+        }
+    }
+}
+
 TEST_CASE("shadow lookup: PCSS gives the scalar twin's bytes at every SIMD level and thread count") {
     // The pcss filter on sphere-box's perspective map, a light 40 texels wide at 1 m: wide
     // penumbrae, so the blocker search, the width and the filter all matter.
@@ -137,7 +172,9 @@ TEST_CASE("shadow lookup: a vector across two maps takes each lane from its own 
     maps.push_back(s.maps({}, 64)[0]);
     const PcfKernel kernel = makePcfKernel({});
     const auto alternate = [](const glm::dvec3& P) { return int(std::fabs(P.x) * 64.0) % 2; };
-    for (raster::SimdLevel level : {raster::SimdLevel::Scalar, raster::bestSimdLevel()}) {
+    std::vector<raster::SimdLevel> levels = vectorLevels();
+    levels.push_back(raster::SimdLevel::Scalar);
+    for (raster::SimdLevel level : levels) {
         const ShadowLookup both = lookUpShadows(s.g, s.scene.camera, s.light, maps, alternate, {}, kernel, level);
         const ShadowLookup first = lookUpShadows(s.g, s.scene.camera, s.light, {maps[0]}, OneMap{}, {}, kernel, level);
         const ShadowLookup second = lookUpShadows(s.g, s.scene.camera, s.light, {maps[1]}, OneMap{}, {}, kernel, level);
@@ -203,34 +240,42 @@ TEST_CASE("shadow lookup: the reach stage decides exactly as lightReaches, where
 
 TEST_CASE("shadow lookup: the float projection stays within 1e-3 texel and 6 float steps of depth of the double one") {
     // The projection stage's receivers against mapReceiver() in double, for every pixel
-    // of sphere-box, under each bias that moves or projects the receiver.
+    // of sphere-box, under every bias mode; for receiver planes also the plane's depth
+    // slope (relative) and the tolerance it gives.
     const LookupScene& s = lookupScene();
-    for (BiasMode mode : {BiasMode::Constant, BiasMode::SlopeScaled, BiasMode::NormalOffset}) {
+    for (BiasMode mode : {BiasMode::Constant, BiasMode::SlopeScaled, BiasMode::NormalOffset, BiasMode::ReceiverPlane}) {
         BiasSettings bias;
         bias.mode = mode;
         const std::vector<DepthMap> maps = s.maps(bias, 2048);
         const LookupPass pass(maps, s.light, bias, makePcfKernel({}), raster::SimdLevel::Scalar);
-        double worstTexel = 0.0, worstDepth = 0.0;
+        double worstTexel = 0.0, worstDepth = 0.0, worstSlope = 0.0, worstTolerance = 0.0;
         for (int j = 0; j < s.g.height; ++j) {
             LookupPass::Scratch scratch(s.g.width);
             for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
             std::vector<float> visibility(s.g.pixelCount());
             pass.lookUpRow(s.g, j, scratch, {visibility.data()});
+            const size_t n = size_t(s.g.width);
             const float* texelX = scratch.receivers.data();
-            const float* texelY = texelX + s.g.width;
-            const float* depth = texelY + s.g.width;
-            for (int i = 0; i < s.g.width; ++i) {
-                if (!scratch.served[size_t(i)]) continue;
-                const size_t k = s.g.index(i, j);
+            const float *texelY = texelX + n, *depth = texelX + 2 * n, *slopeX = texelX + 3 * n, *slopeY = texelX + 4 * n,
+                        *tolerance = texelX + 5 * n;
+            for (size_t i = 0; i < n; ++i) {
+                if (!scratch.served[i]) continue;
+                const size_t k = s.g.index(int(i), j);
                 const MapReceiver r = mapReceiverFromPoint(maps[0], glm::dvec3(s.g.position[k]), glm::dvec3(s.g.normal[k]),
                                                            glm::dvec3(s.light.position), bias);
                 worstTexel = std::max({worstTexel, std::abs(texelX[i] - r.texel.x), std::abs(texelY[i] - r.texel.y)});
                 worstDepth = std::max(worstDepth, std::abs(depth[i] - r.depth));
+                if (mode != BiasMode::ReceiverPlane) continue;
+                const double slopeSize = std::abs(r.depthSlope.x) + std::abs(r.depthSlope.y);
+                worstSlope = std::max(worstSlope, (std::abs(slopeX[i] - r.depthSlope.x) + std::abs(slopeY[i] - r.depthSlope.y)) / slopeSize);
+                worstTolerance = std::max(worstTolerance, std::abs(tolerance[i] - r.tolerance) / r.tolerance);
             }
         }
         CAPTURE(int(mode));
         CHECK(worstTexel > 0.0);   // float really differs: the comparison is not vacuous
         CHECK(worstTexel < 1e-3);
         CHECK(worstDepth < 6.0 / 16777216.0);   // 3.6 steps measured
+        CHECK(worstSlope < 1e-4);       // 3.5e-6 measured
+        CHECK(worstTolerance < 1e-4);
     }
 }

@@ -74,7 +74,7 @@ TEST_CASE("PCF over a straight edge equals the kernel's cumulative weights, at e
             LookupConstants c{};
             c.maps = &lookupMap, c.mapCount = 1, c.gridSize = settings.gridSize;
             c.diskX = diskX.data(), c.diskY = diskY.data(), c.diskTaps = int(diskX.size());
-            c.radiusTexels[0] = c.radiusTexels[1] = float(settings.poissonRadiusTexels);
+            c.radiusTexels = float(settings.poissonRadiusTexels);
             const size_t n = size_t(count);
             std::vector<uint8_t> served(n, 1);
             std::vector<float> y(n, 12.3f), depth(n, 0.5f), visibility(n), rotationCos, rotationSin;
