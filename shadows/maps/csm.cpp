@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/maps/shadow_map_debug.h"
@@ -53,9 +54,9 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     StageTimer timer;
     const CascadedMaps cm = renderCascades(in.light, in.scene().camera, in.gbuffer, in.world(), cs, depthMapSettings(s), in.simd);
     timer.lap("cascades");
-    const ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, in.light, cm.maps,
-                                              CascadeSelector{cm, in.scene().camera}, s.bias, makePcfKernel(s.filter), in.simd,
-                                              !in.debugDir.empty());
+    ShadowLookup lookup = lookUpShadows(in.gbuffer, in.scene().camera, in.light, cm.maps,
+                                        CascadeSelector{cm, in.scene().camera}, s.bias, makePcfKernel(s.filter), in.simd,
+                                        !in.debugDir.empty());
     timer.lap("lookup");
     addStats(out, cm, s.resolution, lookup);
     timer.appendTo(out.stats);
@@ -65,7 +66,7 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     }
     if (debug.enabled()) writeTexelDensity(debug, in.gbuffer, lookup);
     writeMapColouring(in.debugDir, "csm", "cascades", in.gbuffer, lookup);
-    out.visibility = lookup.visibility;
+    out.visibility = std::move(lookup.visibility);   // the last use
     return out;
 }
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
@@ -148,12 +149,12 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
     ShadowOutputs out;
     StageTimer timer;
     const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm, timer);
-    const ShadowLookup lookup = lookUp(in, light, lm, s);
+    ShadowLookup lookup = lookUp(in, light, lm, s);
     timer.lap("lookup");
     addStats(out, lm, s, lookup);
     timer.appendTo(out.stats);
     writeDebug(in, lm, s, lookup);
-    out.visibility = lookup.visibility;
+    out.visibility = std::move(lookup.visibility);   // the last use
     return out;
 }
 
