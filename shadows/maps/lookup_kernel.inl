@@ -104,7 +104,7 @@ inline void receiverPlaneSlope(const LookupMap& map, const Vec3& p, const Vec3& 
 // the light, normal-offset also along N by texels times the sine of the light angle
 // (Holbert; RTR 7.4); slope-scaled was applied when the map was drawn.
 template <bool kPlane>
-Receiver project(const LookupConstants& c, const LookupMap& map, const Vec3& P, const Vec3& N) {
+Receiver projectReceiver(const LookupConstants& c, const LookupMap& map, const Vec3& P, const Vec3& N) {
     Vec3 p = P;
     if (c.bias == kLookupConstant || c.bias == kLookupNormalOffset) {
         const Vec3 light{simd::splat(c.light[0]), simd::splat(c.light[1]), simd::splat(c.light[2])};
@@ -130,13 +130,14 @@ Receiver project(const LookupConstants& c, const LookupMap& map, const Vec3& P, 
     return r;
 }
 
-// Lit by texel (x, y): the receiver is not farther from the light than what the map stores
-// there, or the texel is empty (the cleared 1 holds no occluder). For a receiver plane the
-// receiver's depth is the plane's at the texel centre, and the tolerance is added.
 inline F32 oneWhere(Mask m) { return simd::select(m, simd::splat(1.0f), simd::splat(0.0f)); }
 
+// The depth texel (x, y) of the map stores, clamped to its border.
 inline F32 storedDepth(const LookupMap& map, I32 x, I32 y) { return simd::gather(map.depth, texelStorageIndex(map, x, y)); }
 
+// Lit by texel (x, y), which stores `stored`: the receiver is not farther from the light
+// than that, or the texel is empty (the cleared 1 holds no occluder). For a receiver plane
+// the receiver's depth is the plane's at the texel centre, and the tolerance is added.
 template <bool kPlane>
 Mask litBy(const Receiver& r, I32 x, I32 y, F32 stored) {
     const Mask empty = simd::cmpLe(simd::splat(1.0f), stored);
@@ -316,7 +317,7 @@ void projectRun(const LookupConstants& c, const LookupRow& row) {
     for (int i = 0; i < row.count; i += kWidth) {
         Receiver r{};
         forEachServingMap(c, row.served + i, [&](const LookupMap& map, Mask lanes) {
-            const Receiver q = project<kPlane>(c, map, loadVec3(row.position, i), loadVec3(row.normal, i));
+            const Receiver q = projectReceiver<kPlane>(c, map, loadVec3(row.position, i), loadVec3(row.normal, i));
             r = {simd::select(lanes, q.texelX, r.texelX),     simd::select(lanes, q.texelY, r.texelY),
                  simd::select(lanes, q.depth, r.depth),       simd::select(lanes, q.slopeX, r.slopeX),
                  simd::select(lanes, q.slopeY, r.slopeY),     simd::select(lanes, q.tolerance, r.tolerance),

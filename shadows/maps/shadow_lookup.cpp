@@ -6,8 +6,6 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "shadows/maps/lookup_kernel.h"
-
 namespace shadowlab {
 namespace {
 
@@ -153,16 +151,17 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
                           at(arrays.tolerance), at(arrays.distance)},
                          image(out.visibility, vectors), image(out.blockerDistance, vectors),
                          image(out.penumbraWidth, vectors), count - vectors};
-    t.reach(t.constants, row);
-    t.scalarReach(t.constants, tail);
+    const auto stage = [&](LookupKernel vector, LookupKernel scalar) {
+        vector(t.constants, row);
+        scalar(t.constants, tail);
+    };
+    stage(t.reach, t.scalarReach);
     for (int i = 0; i < count; ++i) {
         uint8_t& s = scratch.served[size_t(i)];
         if (s & kReachUndecided) s = t.reaches(g.position[k + size_t(i)], g.normal[k + size_t(i)]) ? s & ~kReachUndecided : 0;
     }
-    t.project(t.constants, row);
-    t.scalarProject(t.constants, tail);
-    t.filter(t.constants, row);
-    t.scalarFilter(t.constants, tail);
+    stage(t.project, t.scalarProject);
+    stage(t.filter, t.scalarFilter);
 }
 
 void lookUpEveryRow(const GBuffer& g, const LookupPass& pass, const LookupPass::Outputs& out) {

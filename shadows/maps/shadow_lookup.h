@@ -28,6 +28,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "raster/tile_kernels.h"
 #include "scenes/camera.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
@@ -36,7 +37,6 @@
 #include "shadows/maps/lookup_kernel.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
-#include "raster/tile_kernels.h"
 
 namespace shadowlab {
 
@@ -141,7 +141,8 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
                 out.mapIndex[k] = int8_t(m);
                 scratch.served[size_t(i)] = uint8_t(m + 1);
             }
-            for (int i = 0; i < g.width; ++i) {
+            // Only the sampled columns are visited: this runs per row of the hot pass.
+            for (int i = 0; i < g.width; i += everyPixelDensity ? 1 : kDensitySampleStride) {
                 const size_t k = g.index(i, j);
                 if (out.mapIndex[k] < 0 || !(everyPixelDensity || inDensitySample(i, j))) continue;
                 out.texelDensity[k] = float(texelsPerPixel(maps[size_t(out.mapIndex[k])], rays, i, j,
