@@ -87,4 +87,33 @@ inline int countLanes(Mask a) { return __builtin_popcount(unsigned(_mm256_movema
 inline F32 select(Mask m, F32 a, F32 b) { return {_mm256_blendv_ps(b.v, a.v, _mm256_castsi256_ps(m.v))}; }
 inline I32 select(Mask m, I32 a, I32 b) { return {_mm256_blendv_epi8(b.v, a.v, m.v)}; }
 
+// ---- Doubles, for exact tests (shadows/izb): kWidth64 lanes with their own mask ----
+inline constexpr int kWidth64 = 4;
+struct F64 { __m256d v; };
+struct Mask64 { __m256d v; };   // all bits of a true lane set
+
+inline F64 splat64(double x) { return {_mm256_set1_pd(x)}; }
+inline F64 load(const double* p) { return {_mm256_loadu_pd(p)}; }
+inline F64 operator+(F64 a, F64 b) { return {_mm256_add_pd(a.v, b.v)}; }
+inline F64 operator-(F64 a, F64 b) { return {_mm256_sub_pd(a.v, b.v)}; }
+inline F64 operator*(F64 a, F64 b) { return {_mm256_mul_pd(a.v, b.v)}; }
+inline F64 operator/(F64 a, F64 b) { return {_mm256_div_pd(a.v, b.v)}; }
+inline F64 abs(F64 a) { return {_mm256_andnot_pd(_mm256_set1_pd(-0.0), a.v)}; }
+inline F64 max(F64 a, F64 b) { return {_mm256_max_pd(a.v, b.v)}; }
+inline F64 sqrt(F64 a) { return {_mm256_sqrt_pd(a.v)}; }
+inline F64 roundToFloat(F64 a) { return {_mm256_cvtps_pd(_mm256_cvtpd_ps(a.v))}; }
+inline void store(double* p, F64 a) { _mm256_storeu_pd(p, a.v); }
+inline Mask64 cmpLt(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
+inline Mask64 cmpLe(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)}; }
+inline Mask64 cmpNe(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_NEQ_UQ)}; }
+inline Mask64 operator&(Mask64 a, Mask64 b) { return {_mm256_and_pd(a.v, b.v)}; }
+inline Mask64 operator!(Mask64 a) { return {_mm256_xor_pd(a.v, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)))}; }
+// The first n lanes (n >= 0).
+inline Mask64 firstLanes64(int n) {
+    return {_mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(n), _mm256_setr_epi64x(0, 1, 2, 3)))};
+}
+// Bit k set where lane k is true.
+inline unsigned laneBits(Mask64 a) { return unsigned(_mm256_movemask_pd(a.v)); }
+inline F64 select(Mask64 m, F64 a, F64 b) { return {_mm256_blendv_pd(b.v, a.v, m.v)}; }
+
 }  // namespace shadowlab::simd_avx2

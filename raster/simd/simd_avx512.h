@@ -88,4 +88,31 @@ inline int countLanes(Mask a) { return __builtin_popcount(unsigned(a.v)); }
 inline F32 select(Mask m, F32 a, F32 b) { return {_mm512_mask_blend_ps(m.v, b.v, a.v)}; }
 inline I32 select(Mask m, I32 a, I32 b) { return {_mm512_mask_blend_epi32(m.v, b.v, a.v)}; }
 
+// ---- Doubles, for exact tests (shadows/izb): kWidth64 lanes with their own mask ----
+inline constexpr int kWidth64 = 8;
+struct F64 { __m512d v; };
+struct Mask64 { __mmask8 v; };
+
+inline F64 splat64(double x) { return {_mm512_set1_pd(x)}; }
+inline F64 load(const double* p) { return {_mm512_loadu_pd(p)}; }
+inline F64 operator+(F64 a, F64 b) { return {_mm512_add_pd(a.v, b.v)}; }
+inline F64 operator-(F64 a, F64 b) { return {_mm512_sub_pd(a.v, b.v)}; }
+inline F64 operator*(F64 a, F64 b) { return {_mm512_mul_pd(a.v, b.v)}; }
+inline F64 operator/(F64 a, F64 b) { return {_mm512_div_pd(a.v, b.v)}; }
+inline F64 abs(F64 a) { return {_mm512_castsi512_pd(_mm512_andnot_si512(_mm512_set1_epi64(int64_t(1) << 63), _mm512_castpd_si512(a.v)))}; }
+inline F64 max(F64 a, F64 b) { return {_mm512_max_pd(a.v, b.v)}; }
+inline F64 sqrt(F64 a) { return {_mm512_sqrt_pd(a.v)}; }
+inline F64 roundToFloat(F64 a) { return {_mm512_cvtps_pd(_mm512_cvtpd_ps(a.v))}; }
+inline void store(double* p, F64 a) { _mm512_storeu_pd(p, a.v); }
+inline Mask64 cmpLt(F64 a, F64 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LT_OQ)}; }
+inline Mask64 cmpLe(F64 a, F64 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LE_OQ)}; }
+inline Mask64 cmpNe(F64 a, F64 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_NEQ_UQ)}; }
+inline Mask64 operator&(Mask64 a, Mask64 b) { return {__mmask8(a.v & b.v)}; }
+inline Mask64 operator!(Mask64 a) { return {__mmask8(~a.v)}; }
+// The first n lanes (n >= 0).
+inline Mask64 firstLanes64(int n) { return {__mmask8(n >= 8 ? 0xff : (1u << n) - 1u)}; }
+// Bit k set where lane k is true.
+inline unsigned laneBits(Mask64 a) { return unsigned(a.v); }
+inline F64 select(Mask64 m, F64 a, F64 b) { return {_mm512_mask_blend_pd(m.v, b.v, a.v)}; }
+
 }  // namespace shadowlab::simd_avx512

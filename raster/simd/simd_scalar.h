@@ -72,4 +72,33 @@ inline int countLanes(Mask a) { return a.v ? 1 : 0; }
 inline F32 select(Mask m, F32 a, F32 b) { return m.v ? a : b; }
 inline I32 select(Mask m, I32 a, I32 b) { return m.v ? a : b; }
 
+// ---- Doubles, for exact tests (shadows/izb): kWidth64 lanes with their own mask ----
+inline constexpr int kWidth64 = 1;
+struct F64 { double v; };
+struct Mask64 { bool v; };
+
+inline F64 splat64(double x) { return {x}; }
+inline F64 load(const double* p) { return {*p}; }
+inline F64 operator+(F64 a, F64 b) { return {a.v + b.v}; }
+inline F64 operator-(F64 a, F64 b) { return {a.v - b.v}; }
+inline F64 operator*(F64 a, F64 b) { return {a.v * b.v}; }
+inline F64 operator/(F64 a, F64 b) { return {a.v / b.v}; }
+inline F64 abs(F64 a) { return {__builtin_fabs(a.v)}; }
+// As maxpd: the second operand when the lanes are unordered or both zero.
+inline F64 max(F64 a, F64 b) { return {a.v > b.v ? a.v : b.v}; }
+inline F64 sqrt(F64 a) { return {__builtin_sqrt(a.v)}; }
+// Rounded to the nearest float and widened back: the value a float variable would hold.
+inline F64 roundToFloat(F64 a) { return {double(float(a.v))}; }
+inline void store(double* p, F64 a) { *p = a.v; }
+inline Mask64 cmpLt(F64 a, F64 b) { return {a.v < b.v}; }
+inline Mask64 cmpLe(F64 a, F64 b) { return {a.v <= b.v}; }
+inline Mask64 cmpNe(F64 a, F64 b) { return {a.v != b.v}; }
+inline Mask64 operator&(Mask64 a, Mask64 b) { return {a.v && b.v}; }
+inline Mask64 operator!(Mask64 a) { return {!a.v}; }
+// The first n lanes (n >= 0).
+inline Mask64 firstLanes64(int n) { return {n > 0}; }
+// Bit k set where lane k is true.
+inline unsigned laneBits(Mask64 a) { return a.v ? 1u : 0u; }
+inline F64 select(Mask64 m, F64 a, F64 b) { return m.v ? a : b; }
+
 }  // namespace shadowlab::simd_scalar
