@@ -59,7 +59,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     const double diagonal = sceneDiagonal(in.world());
     ShadowOutputs out;
     StageTimer timer;
-    const izb::Receivers receivers = izb::gatherReceivers(in.gbuffer, light, diagonal, out.visibility);
+    const izb::Receivers receivers = izb::gatherReceivers(in.gbuffer, light, diagonal, out.visibility, in.simd);
     out.stats.push_back({"receiver_pixels", double(receivers.size())});
     timer.lap("receivers");
     if (receivers.size() == 0) {
@@ -76,6 +76,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     timer.lap("light_grid");
 
     const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid.resolution, places), grid.texelCount());
+    const izb::ListedReceivers listed = izb::listReceivers(receivers, lists);
     addListStats(lists, grid.texelCount(), out.stats);
     timer.lap("lists");
 
@@ -84,9 +85,9 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     timer.lap("binning");
 
     const izb::Occlusion occlusion =
-        izb::traverseOccluders(grid, izb::homogeneousLight(light), receivers, lists, bins, in.world());
-    for (size_t r = 0; r < receivers.size(); ++r) {
-        if (occlusion.blocked[r]) out.visibility[receivers.pixel[r]] = 0.0f;
+        izb::traverseOccluders(grid, izb::homogeneousLight(light), listed, lists, bins, in.world(), in.simd);
+    for (size_t e = 0; e < listed.size(); ++e) {
+        if (occlusion.blocked[e]) out.visibility[listed.pixel[e]] = 0.0f;
     }
     out.stats.push_back({"texel_triangle_pairs_count", double(occlusion.texelPairs)});
     out.stats.push_back({"segment_tests_count", double(occlusion.segmentTests)});

@@ -14,15 +14,17 @@
 //      receivers' density;
 //   3. lists      (lists.cpp): each texel lists the receivers that project into it,
 //      built by a counting sort, so every list is in pixel order (RTR4 Figure 7.30, lower
-//      left);
+//      left); the receivers are then copied in list order, so a texel's, and a row of
+//      texels', are consecutive;
 //   4. coverage   (coverage.cpp): each occluder's conservative footprint in the grid,
 //      every texel whose closed square its projection touches (RTR4 Figure 7.30, lower
 //      right);
 //   5. binning    (binning.cpp): occluders sorted into tiles of the grid;
-//   6. occlusion  (occlusion.cpp): the exact test of one receiver against one triangle
-//      (is the triangle on the segment from the receiver to the light?);
+//   6. occlusion  (occlusion.inl): the exact test of receivers against one triangle
+//      (is the triangle on the segment from the receiver to the light?), a run of
+//      consecutive receivers at once in SIMD lanes;
 //   7. traversal  (traversal.cpp): tiles in parallel, each testing its texels' receivers
-//      against the occluders binned to it.
+//      against the occluders binned to it, one row of covered texels per kernel call.
 // The result equals a ray tracer's up to floating-point ties, since it asks the same
 // question per receiver: "It's really just a different ordering of the loops" (Lehtinen,
 // Real-time shadows lecture, 2015).
@@ -37,9 +39,11 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/tile_kernels.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
 #include "shadows/depth_map.h"
+#include "shadows/izb/kernels.h"
 #include "shadows/light_view.h"
 #include "shadows/technique.h"
 
@@ -50,26 +54,33 @@ Technique irregularZBufferTechnique();
 
 namespace izb {
 
+// The vector kernels of stages 1 and 6 (kernels.h) for a SIMD level; throws
+// std::invalid_argument where this CPU lacks it.
+Kernels kernels(raster::SimdLevel simd);
+
 // ---- 1. Receivers ------------------------------------------------------------------------
 // A point or directional light as a homogeneous point: (L, 1) or (towards-light, 0), so
 // the direction from O to the light is always light.xyz - light.w * O.
 using HomogeneousLight = glm::dvec4;
 HomogeneousLight homogeneousLight(const Light& pointOrDirectional);
 
-// Camera samples that face the light, in pixel order. A receiver is shadowed when a
-// triangle meets the segment origin + t * (light.xyz - light.w * origin), t in [0, tFar].
-struct Receivers {
-    std::vector<uint32_t> pixel;        // index into the G-buffer
-    std::vector<glm::vec3> origin;      // P moved along N by the reference's offset (reference.cpp), in float as its ray's
-    std::vector<double> tFar;           // the reference's end of the segment
-    size_t size() const { return pixel.size(); }
+// A camera sample that faces the light. It is shadowed when a triangle meets the segment
+// origin + t * (light.xyz - light.w * origin), t in [0, tFar]. One record of 24 bytes, so
+// moving it into list order (listReceivers) costs one scattered load, not three.
+struct Receiver {
+    glm::vec3 origin;                   // P moved along N by the reference's offset (reference.cpp), in float as its ray's
+    uint32_t pixel;                     // index into the G-buffer
+    double tFar;                        // the reference's end of the segment
 };
+// The receivers in pixel order.
+using Receivers = std::vector<Receiver>;
 
 // Fills `visibility` (one float per pixel): 0 where hit = 0, where the light is behind the
 // surface (dot(N, L - P) <= 0) or outside a spot cone; 1 elsewhere, and returns the points
 // still to be tested. A point light nearer than the offset is seen (as by the reference).
+// `simd` picks the segments kernel; every level gives the same bytes.
 Receivers gatherReceivers(const GBuffer& gbuffer, const Light& pointOrDirectional, double sceneDiagonal,
-                          std::vector<float>& visibility);
+                          std::vector<float>& visibility, raster::SimdLevel simd);
 
 // ---- 2. Light grid -------------------------------------------------------------------------
 // One or six light views, each divided into resolution x resolution texels; texel (i, j) of
@@ -132,6 +143,17 @@ inline TexelLists buildTexelLists(const std::vector<uint32_t>& texelOfReceiver, 
     return countingSort(texelOfReceiver, texelCount);
 }
 
+// The receivers in list order: receiver e here is Receivers' lists.entry[e], so texel t's
+// are e in [lists.first[t], lists.first[t + 1]) and a row of texels' are consecutive too.
+// Structure-of-arrays doubles, as the traversal's vector test reads them, each array
+// followed by kKernelPadding zeros (kernels.h).
+struct ListedReceivers {
+    std::vector<double> x, y, z, tFar;
+    std::vector<uint32_t> pixel;   // index into the G-buffer
+    size_t size() const { return pixel.size(); }
+};
+ListedReceivers listReceivers(const Receivers& receivers, const TexelLists& lists);
+
 // ---- 4. Coverage ---------------------------------------------------------------------------
 // A triangle's part in a view, clipped and projected to texel coordinates (a convex polygon
 // of up to 3 + 5 vertices; count 0 when nothing of it lies in the view).
@@ -163,19 +185,22 @@ struct TileBins {
 TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const WorldGeometry& world);
 
 // ---- 6. Occlusion --------------------------------------------------------------------------
-// True if the triangle meets the segment origin + t * towardsLight, t in [0, tFar].
+// True if the triangle meets the segment origin + t * towardsLight, t in [0, tFar]: the
+// scalar build of the test the traversal runs over many receivers (kernels.h).
 bool segmentBlocked(const glm::dvec3& origin, const glm::dvec3& towardsLight, double tFar,
                     const glm::dvec3 (&triangle)[3]);
 
 // ---- 7. Traversal --------------------------------------------------------------------------
 struct Occlusion {
-    std::vector<uint8_t> blocked;          // per receiver
+    std::vector<uint8_t> blocked;          // per listed receiver
     std::vector<uint32_t> occluders;       // per texel: triangles tested against its receivers
     uint64_t texelPairs = 0;               // (texel with receivers, triangle) pairs visited
-    uint64_t segmentTests = 0;             // segmentBlocked() calls
+    uint64_t segmentTests = 0;             // (receiver, triangle) pairs tested
 };
-Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const Receivers& receivers,
-                            const TexelLists& lists, const TileBins& bins, const WorldGeometry& world);
+// `simd` picks the occlusion kernel; every level gives the same bytes.
+Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const ListedReceivers& receivers,
+                            const TexelLists& lists, const TileBins& bins, const WorldGeometry& world,
+                            raster::SimdLevel simd);
 
 }  // namespace izb
 }  // namespace shadowlab

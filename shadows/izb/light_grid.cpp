@@ -36,7 +36,11 @@ int viewOf(const std::vector<LightView>& views, const glm::dvec3& point) {
     return best;
 }
 
-int cell(double coordinate, int resolution) { return std::clamp(int(std::floor(coordinate)), 0, resolution - 1); }
+// floor(coordinate) clamped to [0, resolution - 1]; truncation agrees with floor wherever
+// the clamp keeps the value, and costs no library call on baseline x86-64.
+int cell(double coordinate, int resolution) {
+    return coordinate < 1.0 ? 0 : coordinate >= resolution - 1 ? resolution - 1 : int(coordinate);
+}
 
 std::vector<glm::dmat4> clipMatrices(const std::vector<LightView>& views) {
     std::vector<glm::dmat4> clip;
@@ -106,7 +110,7 @@ ReceiverPlaces placeReceivers(const std::vector<LightView>& views, const Receive
     places.unitUV.resize(receivers.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, receivers.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t k = r.begin(); k != r.end(); ++k) {
-            const glm::dvec3 origin(receivers.origin[k]);
+            const glm::dvec3 origin(receivers[k].origin);
             const int view = viewOf(views, origin);
             places.view[k] = uint8_t(view);
             places.unitUV[k] = unitUV(clipFromWorld[size_t(view)], origin);

@@ -6,9 +6,17 @@
 // the receivers per texel, turn the counts into offsets by an exclusive prefix sum, then
 // place each receiver at its texel's next free slot, in receiver order. Every list is
 // therefore sorted by pixel, whatever the number of threads; the three passes are linear.
+//
+// The traversal then reads the receivers of a texel, and of a row of texels, as one run:
+// listReceivers() copies them in list order (Johnson et al. 2005 keep each sample's data in
+// the list node for the same reason), which turns its scattered loads into streams.
 #include <algorithm>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "shadows/izb/izb.h"
+#include "shadows/izb/kernels.h"
 
 namespace shadowlab::izb {
 
@@ -25,6 +33,22 @@ Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const st
     std::copy_backward(b.first.begin(), b.first.end() - 1, b.first.end());
     b.first[0] = 0;
     return b;
+}
+
+ListedReceivers listReceivers(const Receivers& receivers, const TexelLists& lists) {
+    const size_t n = receivers.size();
+    ListedReceivers listed;
+    for (std::vector<double>* column : {&listed.x, &listed.y, &listed.z, &listed.tFar}) column->assign(n + kKernelPadding, 0.0);
+    listed.pixel.resize(n);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t e = r.begin(); e != r.end(); ++e) {
+            const Receiver& receiver = receivers[lists.entry[e]];
+            listed.x[e] = receiver.origin.x, listed.y[e] = receiver.origin.y, listed.z[e] = receiver.origin.z;
+            listed.tFar[e] = receiver.tFar;
+            listed.pixel[e] = receiver.pixel;
+        }
+    });
+    return listed;
 }
 
 }  // namespace shadowlab::izb

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "shading/lights.h"
@@ -11,57 +12,73 @@
 #include "shadows/ray_offset.h"
 
 namespace shadowlab::izb {
+namespace {
+
+constexpr size_t kChunk = 4096;   // pixels per task
+
+// A chunk's lit points and their segments, as the segments kernel reads and writes them.
+struct SegmentBatch {
+    std::vector<double> column[10];   // P x y z, N x y z; origin x y z, tFar
+    std::vector<uint32_t> pixel;
+
+    SegmentBatch() {
+        for (std::vector<double>& c : column) c.resize(kChunk + kKernelPadding);
+        pixel.resize(kChunk);
+    }
+    void add(uint32_t k, const glm::vec3& P, const glm::vec3& N, size_t n) {
+        column[0][n] = P.x, column[1][n] = P.y, column[2][n] = P.z;
+        column[3][n] = N.x, column[4][n] = N.y, column[5][n] = N.z;
+        pixel[n] = k;
+    }
+    PointColumns points() const {
+        return {column[0].data(), column[1].data(), column[2].data(), column[3].data(), column[4].data(), column[5].data()};
+    }
+    SegmentColumns segments() { return {column[6].data(), column[7].data(), column[8].data(), column[9].data()}; }
+    Receiver receiver(size_t n) const {
+        return {glm::vec3(float(column[6][n]), float(column[7][n]), float(column[8][n])), pixel[n], column[9][n]};
+    }
+};
+
+}  // namespace
 
 HomogeneousLight homogeneousLight(const Light& light) {
     if (light.type == LightType::Directional) return {glm::dvec3(light.direction), 0.0};
     return {glm::dvec3(light.position), 1.0};
 }
 
-Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal, std::vector<float>& visibility) {
+Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal, std::vector<float>& visibility,
+                          raster::SimdLevel simd) {
     const HomogeneousLight h = homogeneousLight(light);
-    // The origin is rounded to float once, as the reference's ray origin is (so it is kept
-    // as a float, exactly); a point light nearer than the offset leaves no segment
-    // (tFar <= 0): seen, as in the reference.
-    const auto segment = [&](size_t k, glm::vec3& origin) {
-        const double offset = shadowRayOffset(g.position[k], diagonal);
-        origin = glm::vec3(glm::dvec3(g.position[k]) + offset * glm::dvec3(g.normal[k]));
-        return h.w == 0.0 ? INFINITY : 1.0 - offset / glm::length(glm::dvec3(h) - glm::dvec3(origin));
-    };
-    // Decide per pixel in parallel (each writes only its own bytes) and count the survivors
-    // per chunk of pixels; an exclusive prefix sum over the chunks then gives each chunk the
-    // first slot of its survivors, which it fills in parallel, in pixel order. A survivor's
-    // segment is computed again there, which costs less than keeping an origin for every pixel.
-    constexpr size_t kChunk = 4096;
+    const LightReach reaches(light);
+    const SegmentConstants constants{{h.x, h.y, h.z, h.w}, diagonal, shadowRayOffset(glm::vec3(0.0f), 1.0)};
+    const SegmentKernel computeSegments = kernels(simd).segments;
+    // Chunks of pixels in parallel: each decides its own pixels (writing only their bytes),
+    // computes the lit ones' segments a vector at a time and keeps, in pixel order, those
+    // with a segment left (a point light nearer than the offset leaves none: seen, as in the
+    // reference). The chunks are then joined in order, each copied to the slot an exclusive
+    // prefix sum of their sizes gives it.
     const size_t chunks = (g.pixelCount() + kChunk - 1) / kChunk;
-    const auto chunkEnd = [&](size_t c) { return std::min(g.pixelCount(), (c + 1) * kChunk); };
     visibility.assign(g.pixelCount(), 0.0f);
-    std::vector<uint8_t> keep(g.pixelCount(), 0);
-    std::vector<uint32_t> first(chunks + 1, 0);
+    std::vector<Receivers> kept(chunks);
+    tbb::enumerable_thread_specific<SegmentBatch> batches;   // one per worker, reused by its chunks
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-        uint32_t kept = 0;   // counted locally: neighbouring chunks' counts share a cache line
-        for (size_t k = c * kChunk; k < chunkEnd(c); ++k) {
-            if (!g.hit[k] || !lightReaches(light, g.position[k], g.normal[k])) continue;
+        SegmentBatch& batch = batches.local();
+        size_t lit = 0;
+        for (size_t k = c * kChunk; k < std::min(g.pixelCount(), (c + 1) * kChunk); ++k) {
+            if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
             visibility[k] = 1.0f;
-            glm::vec3 origin;
-            keep[k] = segment(k, origin) > 0.0;
-            kept += keep[k];
+            batch.add(uint32_t(k), g.position[k], g.normal[k], lit++);
         }
-        first[c + 1] = kept;
-    });
-    for (size_t c = 0; c < chunks; ++c) first[c + 1] += first[c];
-    Receivers receivers;
-    receivers.pixel.resize(first[chunks]);
-    receivers.origin.resize(first[chunks]);
-    receivers.tFar.resize(first[chunks]);
-    tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-        uint32_t n = first[c];
-        for (size_t k = c * kChunk; k < chunkEnd(c); ++k) {
-            if (!keep[k]) continue;
-            receivers.pixel[n] = uint32_t(k);
-            receivers.tFar[n] = segment(k, receivers.origin[n]);
-            ++n;
+        computeSegments(constants, batch.points(), uint32_t(lit), batch.segments());
+        kept[c].reserve(lit);
+        for (size_t n = 0; n < lit; ++n) {
+            if (batch.column[9][n] > 0.0) kept[c].push_back(batch.receiver(n));
         }
     });
+    std::vector<size_t> first(chunks + 1, 0);
+    for (size_t c = 0; c < chunks; ++c) first[c + 1] = first[c] + kept[c].size();
+    Receivers receivers(first[chunks]);
+    tbb::parallel_for(size_t(0), chunks, [&](size_t c) { std::copy(kept[c].begin(), kept[c].end(), receivers.begin() + first[c]); });
     return receivers;
 }
 

@@ -5,12 +5,15 @@
 // Tiles run in parallel; a tile's task is the only one that reads or writes the receivers of
 // its texels, and a receiver's answer is an OR over triangles, so the result does not depend
 // on the schedule. The footprint of a triangle that spans several tiles is recomputed in
-// each (a few hundred flops) rather than stored.
+// each (a few hundred flops) rather than stored. Receivers are in list order
+// (ListedReceivers), so the covered texels of one row of a tile hold one run of receivers,
+// which the occlusion kernel tests a vector at a time.
 #include <algorithm>
 
 #include <tbb/parallel_for.h>
 
 #include "shadows/izb/izb.h"
+#include "shadows/izb/kernels.h"
 
 namespace shadowlab::izb {
 namespace {
@@ -21,23 +24,24 @@ struct TileWork {
 
 struct Traversal {
     const LightGrid& grid;
-    const HomogeneousLight& light;
-    const Receivers& receivers;
     const TexelLists& lists;
     const WorldGeometry& world;
+    OcclusionKernel kernel;
+    ReceiverColumns receivers;
+    OccluderTriangle occluder;   // the light filled in once; the vertices per triangle
     Occlusion& out;
 
-    // One triangle against the receivers of one texel; returns the tests made.
-    uint64_t testTexel(size_t texel, const glm::dvec3 (&triangle)[3]) {
-        uint64_t tests = 0;
-        for (uint32_t e = lists.first[texel]; e < lists.first[texel + 1]; ++e) {
-            const uint32_t r = lists.entry[e];
-            if (out.blocked[r]) continue;   // already shadowed: another OR term cannot change it
-            const glm::dvec3 o(receivers.origin[r]);
-            out.blocked[r] = segmentBlocked(o, glm::dvec3(light) - light.w * o, receivers.tFar[r], triangle);
-            ++tests;
+    // One triangle over the texels [begin, end) of one row: their receivers are one run.
+    void testRow(size_t begin, size_t end, TileWork& work) {
+        const uint32_t first = lists.first[begin], last = lists.first[end];
+        if (first == last) return;
+        for (size_t texel = begin; texel < end; ++texel) {
+            if (lists.length(texel) == 0) continue;
+            ++out.occluders[texel];
+            ++work.texelPairs;
         }
-        return tests;
+        work.segmentTests += last - first;
+        kernel(occluder, receivers, first, last, out.blocked.data());
     }
 
     // One triangle over the texels of tile (view, tx, ty) its footprint touches.
@@ -45,35 +49,39 @@ struct Traversal {
         const glm::uvec3& index = world.triangles[t];
         const glm::dvec3 triangle[3] = {glm::dvec3(world.positions[index.x]), glm::dvec3(world.positions[index.y]),
                                         glm::dvec3(world.positions[index.z])};
+        for (int k = 0; k < 3; ++k) {
+            for (int c = 0; c < 3; ++c) occluder.vertex[3 * k + c] = triangle[k][c];
+        }
         const int R = grid.resolution;
         const LightPolygon polygon = projectOccluder(grid, view, triangle);
         const TexelRange rows = coveredRows(polygon, R);
         for (int j = std::max(rows.begin, ty * kTileSize); j < std::min(rows.end, (ty + 1) * kTileSize); ++j) {
             const TexelRange columns = coveredColumns(polygon, j, j + 1, R);
-            for (int i = std::max(columns.begin, tx * kTileSize); i < std::min(columns.end, (tx + 1) * kTileSize); ++i) {
-                const size_t texel = (size_t(view) * R + j) * R + i;
-                if (lists.length(texel) == 0) continue;
-                ++out.occluders[texel];
-                ++work.texelPairs;
-                work.segmentTests += testTexel(texel, triangle);
-            }
+            const int begin = std::max(columns.begin, tx * kTileSize), end = std::min(columns.end, (tx + 1) * kTileSize);
+            if (begin >= end) continue;
+            const size_t row = (size_t(view) * R + j) * R;
+            testRow(row + begin, row + end, work);
         }
     }
 };
 
 }  // namespace
 
-Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const Receivers& receivers,
-                            const TexelLists& lists, const TileBins& bins, const WorldGeometry& world) {
+Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const ListedReceivers& receivers,
+                            const TexelLists& lists, const TileBins& bins, const WorldGeometry& world,
+                            raster::SimdLevel simd) {
     Occlusion out;
     out.blocked.assign(receivers.size(), 0);
     out.occluders.assign(grid.texelCount(), 0);
     const size_t tiles = bins.triangles.first.size() - 1;
     std::vector<TileWork> work(tiles);
-    Traversal traversal{grid, light, receivers, lists, world, out};
+    const ReceiverColumns columns{receivers.x.data(), receivers.y.data(), receivers.z.data(), receivers.tFar.data()};
+    const OccluderTriangle lightOnly{{}, {light.x, light.y, light.z, light.w}};
+    const OcclusionKernel kernel = kernels(simd).occlusion;
     const int side = bins.tilesPerSide;
     tbb::parallel_for(size_t(0), tiles, [&](size_t tile) {
         const int view = int(tile / (size_t(side) * side)), ty = int(tile / side % side), tx = int(tile % side);
+        Traversal traversal{grid, lists, world, kernel, columns, lightOnly, out};
         for (uint32_t e = bins.triangles.first[tile]; e < bins.triangles.first[tile + 1]; ++e) {
             traversal.testTriangle(view, tx, ty, bins.triangles.entry[e], work[tile]);
         }

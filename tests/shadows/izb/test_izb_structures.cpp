@@ -23,13 +23,13 @@ TEST_CASE("izb texel lists equal lists built by appending receivers in pixel ord
     const GBuffer g = renderGBuffer(world, scene.camera, raster::bestSimdLevel());
     const Light light = pointLightFor(scene.lights[0]);
     std::vector<float> V;
-    const izb::Receivers receivers = izb::gatherReceivers(g, light, sceneDiagonal(world), V);
+    const izb::Receivers receivers = izb::gatherReceivers(g, light, sceneDiagonal(world), V, raster::bestSimdLevel());
     const izb::LightGrid grid = izb::makeLightGrid(izb::fitViews(light, g, world), 300, sceneDiagonal(world));
     const std::vector<uint32_t> texel = izb::receiverTexels(grid.resolution, izb::placeReceivers(grid.views, receivers));
     const izb::TexelLists lists = izb::buildTexelLists(texel, grid.texelCount());
 
     std::vector<std::vector<uint32_t>> naive(grid.texelCount());
-    for (uint32_t r = 0; r < receivers.size(); ++r) naive[izb::texelOf(grid, glm::dvec3(receivers.origin[r]))].push_back(r);
+    for (uint32_t r = 0; r < receivers.size(); ++r) naive[izb::texelOf(grid, glm::dvec3(receivers[r].origin))].push_back(r);
     size_t mismatches = 0;
     for (size_t t = 0; t < grid.texelCount(); ++t) {
         const std::vector<uint32_t> built(lists.entry.begin() + lists.first[t], lists.entry.begin() + lists.first[t + 1]);
@@ -38,8 +38,9 @@ TEST_CASE("izb texel lists equal lists built by appending receivers in pixel ord
     CHECK(mismatches == 0);
     CHECK(lists.entry.size() == receivers.size());
     // Receivers are the hit pixels facing the light, in pixel order.
-    CHECK(std::adjacent_find(receivers.pixel.begin(), receivers.pixel.end(), std::greater_equal<>()) ==
-          receivers.pixel.end());
+    CHECK(std::adjacent_find(receivers.begin(), receivers.end(), [](const izb::Receiver& a, const izb::Receiver& b) {
+              return a.pixel >= b.pixel;
+          }) == receivers.end());
 }
 
 TEST_CASE("izb counting sort keeps values in order within each key") {
