@@ -15,7 +15,9 @@
 #include "raster/setup.h"
 #include "frame/render.h"
 #include "scenes/scene_file.h"
+#include "shadows/izb/izb.h"
 #include "shadows/maps/shadow_lookup.h"
+#include "shadows/ray_offset.h"
 #include "shadows/technique.h"
 
 using namespace shadowlab;
@@ -210,6 +212,42 @@ void BM_LightView(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(fitLightView(light, g, world));
 }
 
+// The irregular z-buffer's stages (shadows/izb/izb.h) on sphere-box's camera G-buffer, one
+// thread, each timed alone on the previous stages' results: range(0) is the stage, 1 to 5.
+void BM_IrregularZBuffer(benchmark::State& state) {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const Scene scene = loadScene("sphere-box");
+    const WorldGeometry world = flatten(scene);
+    const GBuffer g = renderGBuffer(world, scene.camera, bestSimdLevel());
+    const Light light = pointLightFor(scene.lights[0]);
+    const double diagonal = sceneDiagonal(world);
+    std::vector<float> visibility;
+    const izb::Receivers receivers = izb::gatherReceivers(g, light, diagonal, visibility, bestSimdLevel());
+    const auto makeGrid = [&] {
+        std::vector<LightView> views = izb::fitViews(light, g, world);
+        const izb::ReceiverPlaces places = izb::placeReceivers(views, receivers);
+        const int resolution = izb::chooseResolution(views.size(), places, 2.0);
+        return std::make_pair(izb::makeLightGrid(std::move(views), resolution, diagonal), places);
+    };
+    const auto [grid, places] = makeGrid();
+    const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid.resolution, places), grid.texelCount());
+    const izb::ListedReceivers listed = izb::listReceivers(receivers, lists);
+    const izb::TileBins bins = izb::binOccluders(grid, lists, world);
+    const int stage = int(state.range(0));
+    for (auto _ : state) {
+        if (stage == 1) benchmark::DoNotOptimize(izb::gatherReceivers(g, light, diagonal, visibility, bestSimdLevel()));
+        if (stage == 2) benchmark::DoNotOptimize(makeGrid());
+        if (stage == 3) {
+            const izb::TexelLists texelLists = izb::buildTexelLists(izb::receiverTexels(grid.resolution, places), grid.texelCount());
+            benchmark::DoNotOptimize(izb::listReceivers(receivers, texelLists));
+        }
+        if (stage == 4) benchmark::DoNotOptimize(izb::binOccluders(grid, lists, world));
+        if (stage == 5) benchmark::DoNotOptimize(izb::traverseOccluders(grid, izb::homogeneousLight(light), listed, lists, bins, world, bestSimdLevel()));
+    }
+    static const char* const names[] = {"", "receivers", "light grid", "lists", "binning", "traversal"};
+    state.SetLabel(names[stage]);
+}
+
 void lookupCases(benchmark::internal::Benchmark* b) {
     for (int taps : {1, 3}) {
         for (int size : {256, 2048}) {
@@ -237,6 +275,7 @@ BENCHMARK(BM_RasterTiles)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadowLookup)->Apply(lookupCases)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LightView)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IrregularZBuffer)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
 // As the shadowlab program (app/main.cpp): freed memory is kept for reuse, so a frame's
 // fresh buffers do not pay page faults in every timed run.
 int main(int argc, char** argv) {
