@@ -94,6 +94,7 @@ struct Mask64 { __m256d v; };   // all bits of a true lane set
 
 inline F64 splat64(double x) { return {_mm256_set1_pd(x)}; }
 inline F64 load(const double* p) { return {_mm256_loadu_pd(p)}; }
+inline F64 loadWidened(const float* p) { return {_mm256_cvtps_pd(_mm_loadu_ps(p))}; }
 inline F64 operator+(F64 a, F64 b) { return {_mm256_add_pd(a.v, b.v)}; }
 inline F64 operator-(F64 a, F64 b) { return {_mm256_sub_pd(a.v, b.v)}; }
 inline F64 operator*(F64 a, F64 b) { return {_mm256_mul_pd(a.v, b.v)}; }

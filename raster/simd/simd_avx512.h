@@ -95,6 +95,7 @@ struct Mask64 { __mmask8 v; };
 
 inline F64 splat64(double x) { return {_mm512_set1_pd(x)}; }
 inline F64 load(const double* p) { return {_mm512_loadu_pd(p)}; }
+inline F64 loadWidened(const float* p) { return {_mm512_cvtps_pd(_mm256_loadu_ps(p))}; }
 inline F64 operator+(F64 a, F64 b) { return {_mm512_add_pd(a.v, b.v)}; }
 inline F64 operator-(F64 a, F64 b) { return {_mm512_sub_pd(a.v, b.v)}; }
 inline F64 operator*(F64 a, F64 b) { return {_mm512_mul_pd(a.v, b.v)}; }

@@ -79,6 +79,7 @@ struct Mask64 { bool v; };
 
 inline F64 splat64(double x) { return {x}; }
 inline F64 load(const double* p) { return {*p}; }
+inline F64 loadWidened(const float* p) { return {double(*p)}; }
 inline F64 operator+(F64 a, F64 b) { return {a.v + b.v}; }
 inline F64 operator-(F64 a, F64 b) { return {a.v - b.v}; }
 inline F64 operator*(F64 a, F64 b) { return {a.v * b.v}; }

@@ -20,13 +20,12 @@ struct TilePair {
     uint32_t tile, triangle;
 };
 
+// A tile's texels are consecutive numbers, so its receivers are one range of the lists.
 std::vector<uint8_t> tilesWithReceivers(const LightGrid& grid, const TexelLists& lists, int tilesPerSide) {
-    const int R = grid.resolution;
     std::vector<uint8_t> used(grid.views.size() * size_t(tilesPerSide) * tilesPerSide, 0);
-    for (size_t t = 0; t < grid.texelCount(); ++t) {
-        if (lists.length(t) == 0) continue;
-        const size_t view = t / (size_t(R) * R), j = t / R % R, i = t % R;
-        used[(view * tilesPerSide + j / kTileSize) * tilesPerSide + i / kTileSize] = 1;
+    constexpr size_t kTexelsPerTile = size_t(kTileSize) * kTileSize;
+    for (size_t tile = 0; tile < used.size(); ++tile) {
+        used[tile] = lists.first[tile * kTexelsPerTile] != lists.first[(tile + 1) * kTexelsPerTile];
     }
     return used;
 }
@@ -51,7 +50,7 @@ void binTriangle(const LightGrid& grid, int view, uint32_t index, const glm::dve
 
 TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const WorldGeometry& world) {
     TileBins bins;
-    bins.tilesPerSide = (grid.resolution + kTileSize - 1) / kTileSize;
+    bins.tilesPerSide = tilesPerSide(grid.resolution);
     const std::vector<uint8_t> used = tilesWithReceivers(grid, lists, bins.tilesPerSide);
     const size_t chunks = (world.triangles.size() + kChunk - 1) / kChunk;
     std::vector<std::vector<TilePair>> pairs(chunks);

@@ -15,15 +15,29 @@ namespace {
 // keep both the lists and the grid small; two is the middle of that range.
 constexpr double kTargetListLength = 2.0;
 
+// Calls visit(texel number, image index) for every texel of the grid, the image index
+// counting row by row with the views stacked vertically (the debug images' layout).
+template <class Visit>
+void forEachTexel(const izb::LightGrid& grid, Visit visit) {
+    const int R = grid.resolution;
+    size_t pixel = 0;
+    for (int view = 0; view < int(grid.views.size()); ++view) {
+        for (int j = 0; j < R; ++j) {
+            for (int i = 0; i < R; ++i) visit(grid.texelIndex(view, i, j), pixel++);
+        }
+    }
+}
+
 // Length figures over the texels' lists: longest, mean and 99th percentile (nearest rank) of
 // the non-empty ones, and how many are empty.
-void addListStats(const izb::TexelLists& lists, size_t texels, std::vector<TechniqueStat>& stats) {
+void addListStats(const izb::LightGrid& grid, const izb::TexelLists& lists, std::vector<TechniqueStat>& stats) {
     std::vector<uint64_t> histogram;
-    for (size_t t = 0; t < texels; ++t) {
+    size_t texels = 0;
+    forEachTexel(grid, [&](size_t t, size_t) {
         const uint32_t n = lists.length(t);
         if (histogram.size() <= n) histogram.resize(n + 1, 0);
-        ++histogram[n];
-    }
+        ++histogram[n], ++texels;
+    });
     const uint64_t nonEmpty = texels - histogram[0];
     // Nearest rank: the shortest length L with at least 99% of the non-empty lists <= L.
     uint64_t p99 = 0, seen = 0;
@@ -40,14 +54,15 @@ void writeDebugBuffers(const ShadowInputs& in, const izb::LightGrid& grid, const
     const DebugBuffers debug(in.debugDir, "izb");
     if (!debug.enabled()) return;
     const int width = grid.resolution, height = int(grid.views.size()) * grid.resolution;
-    std::vector<float> length(grid.texelCount()), occupied(grid.texelCount()), occluders(grid.texelCount());
+    const size_t pixels = size_t(width) * size_t(height);
+    std::vector<float> length(pixels), occupied(pixels), occluders(pixels);
     float longest = 0.0f, most = 0.0f;
-    for (size_t t = 0; t < grid.texelCount(); ++t) {
-        length[t] = float(lists.length(t));
-        occupied[t] = lists.length(t) > 0 ? 1.0f : 0.0f;
-        occluders[t] = float(occlusion.occluders[t]);
-        longest = std::max(longest, length[t]), most = std::max(most, occluders[t]);
-    }
+    forEachTexel(grid, [&](size_t t, size_t pixel) {
+        length[pixel] = float(lists.length(t));
+        occupied[pixel] = lists.length(t) > 0 ? 1.0f : 0.0f;
+        occluders[pixel] = float(occlusion.occluders[t]);
+        longest = std::max(longest, length[pixel]), most = std::max(most, occluders[pixel]);
+    });
     debug.write("list-length", width, height, length, 0.0f, longest);
     debug.write("occupancy", width, height, occupied, 0.0f, 1.0f);
     debug.write("occluders", width, height, occluders, 0.0f, most);
@@ -77,7 +92,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
 
     const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid.resolution, places), grid.texelCount());
     const izb::ListedReceivers listed = izb::listReceivers(receivers, lists);
-    addListStats(lists, grid.texelCount(), out.stats);
+    addListStats(grid, lists, out.stats);
     timer.lap("lists");
 
     const izb::TileBins bins = izb::binOccluders(grid, lists, in.world());

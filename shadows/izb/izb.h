@@ -39,6 +39,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/framebuffer.h"
 #include "raster/tile_kernels.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
@@ -83,10 +84,25 @@ Receivers gatherReceivers(const GBuffer& gbuffer, const Light& pointOrDirectiona
                           std::vector<float>& visibility, raster::SimdLevel simd);
 
 // ---- 2. Light grid -------------------------------------------------------------------------
-// One or six light views, each divided into resolution x resolution texels; texel (i, j) of
-// view k has index (k * resolution + j) * resolution + i, so the views stack vertically in
-// the debug images. Texel coordinates (u, v) run over [0, resolution]^2, u right, v down
-// (row 0 at the top, conventions.md).
+// One or six light views, each divided into resolution x resolution texels. Texel
+// coordinates (u, v) run over [0, resolution]^2, u right, v down (row 0 at the top,
+// conventions.md); texel (i, j) covers [i, i + 1] x [j, j + 1].
+//
+// Texels are numbered tile by tile: the grid is cut into tiles of kTileSize^2 texels (the
+// traversal's unit of parallel work), each numbered row by row, tiles in row order, views
+// one after the other. A tile's texels are then consecutive numbers and so, once the
+// receivers are in list order, are its receivers: the camera samples of one small patch of
+// the light's view, which lie close together in the G-buffer as well.
+inline constexpr int kTileSize = 32;   // texels per side of a tile
+
+// The tiles per side for a resolution, and texel (i, j) of `view`'s number.
+inline int tilesPerSide(int resolution) { return (resolution + kTileSize - 1) / kTileSize; }
+inline size_t texelIndex(int resolution, int view, int i, int j) {
+    const size_t side = size_t(tilesPerSide(resolution));
+    const size_t tile = (size_t(view) * side + size_t(j / kTileSize)) * side + size_t(i / kTileSize);
+    return tile * kTileSize * kTileSize + size_t(j % kTileSize) * kTileSize + size_t(i % kTileSize);
+}
+
 struct LightGrid {
     std::vector<LightView> views;
     std::vector<glm::dmat4> clipFromWorld;   // per view, computed once (projectOccluder runs per tile)
@@ -94,7 +110,12 @@ struct LightGrid {
     // Perspective views drop occluder parts nearer the light than this depth (view-space
     // -z), a thousandth of the reference's smallest offset (coverage.cpp).
     double minDepth = 0.0;
-    size_t texelCount() const { return views.size() * size_t(resolution) * size_t(resolution); }
+    // Texel numbers run over [0, texelCount()): the tiles at the right and bottom edges are
+    // whole, so numbers of texels beyond the resolution exist but never hold a receiver.
+    size_t texelCount() const {
+        return views.size() * size_t(tilesPerSide(resolution)) * size_t(tilesPerSide(resolution)) * kTileSize * kTileSize;
+    }
+    size_t texelIndex(int view, int i, int j) const { return izb::texelIndex(resolution, view, i, j); }
 };
 
 // The views that hold every receiver: fitLightView(), or the cube faces (fitCubeFace)
@@ -144,12 +165,14 @@ inline TexelLists buildTexelLists(const std::vector<uint32_t>& texelOfReceiver, 
 }
 
 // The receivers in list order: receiver e here is Receivers' lists.entry[e], so texel t's
-// are e in [lists.first[t], lists.first[t + 1]) and a row of texels' are consecutive too.
-// Structure-of-arrays doubles, as the traversal's vector test reads them, each array
-// followed by kKernelPadding zeros (kernels.h).
+// are e in [lists.first[t], lists.first[t + 1]), and a tile's, and a row of a tile's, are
+// consecutive too. Structure of arrays, as the traversal's vector test reads them, each
+// array followed by kKernelPadding zeros (kernels.h); no other clearing, since copying is
+// this stage's whole cost and it is bound by memory traffic.
 struct ListedReceivers {
-    std::vector<double> x, y, z, tFar;
-    std::vector<uint32_t> pixel;   // index into the G-buffer
+    raster::BufferStorage<float> x, y, z;
+    raster::BufferStorage<double> tFar;
+    raster::BufferStorage<uint32_t> pixel;   // index into the G-buffer
     size_t size() const { return pixel.size(); }
 };
 ListedReceivers listReceivers(const Receivers& receivers, const TexelLists& lists);
@@ -174,10 +197,8 @@ TexelRange coveredRows(const LightPolygon& polygon, int resolution);
 TexelRange coveredColumns(const LightPolygon& polygon, double v0, double v1, int resolution);
 
 // ---- 5. Binning ----------------------------------------------------------------------------
-inline constexpr int kTileSize = 32;   // texels per side of a tile, the unit of parallel work
-
-// Triangle indices per tile (tile index: (view * tilesPerSide + ty) * tilesPerSide + tx), in
-// increasing order, for tiles holding at least one receiver.
+// Triangle indices per tile (tile index: (view * tilesPerSide + ty) * tilesPerSide + tx, the
+// texel numbers' order), in increasing order, for tiles holding at least one receiver.
 struct TileBins {
     int tilesPerSide = 0;
     Buckets triangles;              // one bucket per tile

@@ -43,11 +43,12 @@ using SegmentKernel = void (*)(const SegmentConstants& constants, const PointCol
                                const SegmentColumns& segments);
 
 // ---- Stage 6: the exact test --------------------------------------------------------------
-// Receivers in list order (ListedReceivers, izb.h): segment origins and ends.
+// Receivers in list order (ListedReceivers, izb.h): segment origins (floats, as the
+// reference's ray origins) and ends.
 struct ReceiverColumns {
-    const double* x;
-    const double* y;
-    const double* z;
+    const float* x;
+    const float* y;
+    const float* z;
     const double* tFar;
 };
 // One occluder and the light: the vertices x0 y0 z0 x1 ... z2, and the homogeneous light.

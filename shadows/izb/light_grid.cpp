@@ -57,12 +57,13 @@ glm::dvec2 unitUV(const glm::dmat4& clipFromWorld, const glm::dvec3& point) {
 
 uint32_t texelAt(int view, const glm::dvec2& unitUV, int resolution) {
     const double u = unitUV.x * resolution, v = unitUV.y * resolution;
-    return uint32_t((size_t(view) * resolution + cell(v, resolution)) * resolution + cell(u, resolution));
+    return uint32_t(texelIndex(resolution, view, cell(u, resolution), cell(v, resolution)));
 }
 
 // Mean length of the non-empty lists at a resolution: receivers over occupied texels.
 double meanListLength(size_t viewCount, int resolution, const ReceiverPlaces& places) {
-    std::vector<uint8_t> occupied(viewCount * size_t(resolution) * size_t(resolution), 0);
+    const size_t side = size_t(tilesPerSide(resolution)) * kTileSize;
+    std::vector<uint8_t> occupied(viewCount * side * side, 0);
     size_t count = 0;
     for (const uint32_t t : receiverTexels(resolution, places)) {
         count += !occupied[t];

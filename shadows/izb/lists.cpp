@@ -38,7 +38,12 @@ Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const st
 ListedReceivers listReceivers(const Receivers& receivers, const TexelLists& lists) {
     const size_t n = receivers.size();
     ListedReceivers listed;
-    for (std::vector<double>* column : {&listed.x, &listed.y, &listed.z, &listed.tFar}) column->assign(n + kKernelPadding, 0.0);
+    for (raster::BufferStorage<float>* column : {&listed.x, &listed.y, &listed.z}) {
+        column->resize(n + kKernelPadding);
+        std::fill(column->begin() + n, column->end(), 0.0f);
+    }
+    listed.tFar.resize(n + kKernelPadding);
+    std::fill(listed.tFar.begin() + n, listed.tFar.end(), 0.0);
     listed.pixel.resize(n);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t e = r.begin(); e != r.end(); ++e) {

@@ -65,7 +65,8 @@ inline void blockRun(const OccluderTriangle& occluder, const ReceiverColumns& re
     const Vec3Lanes light = splat(occluder.light);
     const F64 w = simd::splat64(occluder.light[3]);
     for (uint32_t k = begin; k < end; k += simd::kWidth64) {
-        const Vec3Lanes origin = {simd::load(receivers.x + k), simd::load(receivers.y + k), simd::load(receivers.z + k)};
+        const Vec3Lanes origin = {simd::loadWidened(receivers.x + k), simd::loadWidened(receivers.y + k),
+                                  simd::loadWidened(receivers.z + k)};
         const Vec3Lanes towardsLight = {light.x - w * origin.x, light.y - w * origin.y, light.z - w * origin.z};
         const Mask64 hit = segmentsBlocked(origin, towardsLight, simd::load(receivers.tFar + k), triangle) &
                            simd::firstLanes64(int(end - k));

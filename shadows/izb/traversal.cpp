@@ -31,7 +31,8 @@ struct Traversal {
     OccluderTriangle occluder;   // the light filled in once; the vertices per triangle
     Occlusion& out;
 
-    // One triangle over the texels [begin, end) of one row: their receivers are one run.
+    // One triangle over the texels [begin, end) of one row of a tile (consecutive numbers):
+    // their receivers are one run.
     void testRow(size_t begin, size_t end, TileWork& work) {
         const uint32_t first = lists.first[begin], last = lists.first[end];
         if (first == last) return;
@@ -59,8 +60,8 @@ struct Traversal {
             const TexelRange columns = coveredColumns(polygon, j, j + 1, R);
             const int begin = std::max(columns.begin, tx * kTileSize), end = std::min(columns.end, (tx + 1) * kTileSize);
             if (begin >= end) continue;
-            const size_t row = (size_t(view) * R + j) * R;
-            testRow(row + begin, row + end, work);
+            const size_t first = grid.texelIndex(view, begin, j);
+            testRow(first, first + size_t(end - begin), work);
         }
     }
 };

@@ -101,9 +101,10 @@ TEST_CASE("izb occlusion kernel: every SIMD level sets exactly the bytes segment
     // Receivers on the plane y = 0 below a triangle fan at y = 1, a third of them exactly
     // below a shared edge or a vertex (where only watertightness keeps the segment blocked).
     const glm::dvec3 fan[4] = {{-1.0, 1.0, -1.0}, {1.0, 1.0, -1.0}, {1.0, 1.0, 1.0}, {-1.0, 1.0, 1.0}};
-    std::vector<double> x(n + izb::kKernelPadding, 0.0), y = x, z = x, tFar = x;
+    std::vector<float> x(n + izb::kKernelPadding, 0.0f), y = x, z = x;
+    std::vector<double> tFar(n + izb::kKernelPadding, 0.0);
     for (size_t k = 0; k < n; ++k) {
-        x[k] = 1.5 * unit(rng), z[k] = 1.5 * unit(rng);
+        x[k] = float(1.5 * unit(rng)), z[k] = float(1.5 * unit(rng));
         if (k % 3 == 0) z[k] = x[k];   // under the diagonal shared by the fan's two triangles
     }
     const izb::ReceiverColumns receivers{x.data(), y.data(), z.data(), tFar.data()};

@@ -43,6 +43,38 @@ TEST_CASE("izb texel lists equal lists built by appending receivers in pixel ord
           }) == receivers.end());
 }
 
+TEST_CASE("izb texel numbers: one per texel, below texelCount, a tile's and a tile row's consecutive") {
+    for (const int R : {16, 32, 33, 100}) {
+        CAPTURE(R);
+        izb::LightGrid grid;
+        grid.views.resize(2);
+        grid.resolution = R;
+        std::vector<uint8_t> seen(grid.texelCount(), 0);
+        size_t repeats = 0, outOfRow = 0;
+        for (int view = 0; view < 2; ++view) {
+            for (int j = 0; j < R; ++j) {
+                for (int i = 0; i < R; ++i) {
+                    const size_t t = grid.texelIndex(view, i, j);
+                    REQUIRE(t < grid.texelCount());
+                    repeats += seen[t]++;
+                    // Inside a tile, the next texel of a row is the next number.
+                    if (i % izb::kTileSize != 0) outOfRow += t != grid.texelIndex(view, i - 1, j) + 1;
+                }
+            }
+        }
+        CHECK(repeats == 0);
+        CHECK(outOfRow == 0);
+        const size_t tilesPerView = size_t(izb::tilesPerSide(R)) * size_t(izb::tilesPerSide(R));
+        // Tiles follow each other in row order, views after all of the previous view's tiles.
+        constexpr size_t kPerTile = size_t(izb::kTileSize) * izb::kTileSize;
+        if (R > izb::kTileSize) {
+            CHECK(grid.texelIndex(0, izb::kTileSize, 0) == kPerTile);
+            CHECK(grid.texelIndex(0, 0, izb::kTileSize) == size_t(izb::tilesPerSide(R)) * kPerTile);
+        }
+        CHECK(grid.texelIndex(1, 0, 0) == tilesPerView * kPerTile);
+    }
+}
+
 TEST_CASE("izb counting sort keeps values in order within each key") {
     std::mt19937 rng(7);
     std::vector<uint32_t> key(5000), value(5000);
@@ -104,6 +136,7 @@ void checkCoverage(bool orthographic) {
     std::mt19937 rng(orthographic ? 11 : 12);
     const SmallCase c = smallCase(orthographic, rng);
     const int R = c.grid.resolution;
+    REQUIRE(R <= izb::kTileSize);
     size_t shadowed = 0, missed = 0;
     for (int n = 0; n < 300; ++n) {
         glm::dvec3 triangle[3];
@@ -115,7 +148,8 @@ void checkCoverage(bool orthographic) {
             if (!izb::segmentBlocked(o, towardsLight, orthographic ? INFINITY : 1.0, triangle)) continue;
             ++shadowed;
             const uint32_t texel = izb::texelOf(c.grid, o);
-            const int j = int(texel / R), i = int(texel % R);
+            // The grid is one tile, so its texels are numbered row by row, kTileSize per row.
+            const int j = int(texel / izb::kTileSize), i = int(texel % izb::kTileSize);
             const izb::TexelRange columns = izb::coveredColumns(polygon, j, j + 1, R);
             missed += !(j >= rows.begin && j < rows.end && i >= columns.begin && i < columns.end);
         }
