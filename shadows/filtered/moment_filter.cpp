@@ -24,6 +24,11 @@ struct CompensatedSum {
     double value() const { return sum + compensation; }
 };
 
+// out[i] += weight * in[i] for i < n.
+void addWeighted(double* __restrict out, const double* __restrict in, double weight, size_t n) {
+    for (size_t i = 0; i < n; ++i) out[i] += weight * in[i];
+}
+
 // S at a continuous corner: bilinear between the four grid points around it.
 void cornerSum(const SummedAreaTable& t, glm::dvec2 p, double* out) {
     p = glm::clamp(p, glm::dvec2(0.0), glm::dvec2(t.size));
@@ -67,18 +72,28 @@ std::vector<double> blurWeights(BlurKind kind, int width) {
 }
 
 MomentMap blurMoments(const MomentMap& in, const std::vector<double>& weights) {
-    const int half = int(weights.size() / 2);
-    // One pass along x (dx = 1) or y: out(x, y) = sum_k w_k in(x + (k - half) dx, ...), taps in order.
+    const int half = int(weights.size() / 2), size = in.size;
+    const size_t channels = size_t(in.channels), rowValues = size_t(size) * channels;
+    // out(x, y) = sum_k w_k in(x + (k - half) dx, y + (k - half) dy), the taps in order: each
+    // pass adds one tap's weighted row to every output of a row before the next tap, so the
+    // inner loops run over contiguous values (vectorised by the compiler) and every output
+    // still sums its taps in order, as one texel at a time would.
     const auto pass = [&](const MomentMap& from, bool alongX) {
-        MomentMap to{from.size, from.channels, std::vector<double>(from.values.size(), 0.0)};
-        tbb::parallel_for(0, from.size, [&](int y) {
-            for (int x = 0; x < from.size; ++x) {
-                double* out = &to.values[(size_t(y) * size_t(from.size) + size_t(x)) * size_t(from.channels)];
-                for (int k = 0; k < int(weights.size()); ++k) {
-                    const int o = k - half;
-                    const double* v = alongX ? from.at(x + o, y) : from.at(x, y + o);
-                    for (int c = 0; c < from.channels; ++c) out[c] += weights[k] * v[c];
+        MomentMap to{size, from.channels, std::vector<double>(from.values.size(), 0.0)};
+        tbb::parallel_for(0, size, [&](int y) {
+            double* out = &to.values[size_t(y) * rowValues];
+            for (int k = 0; k < int(weights.size()); ++k) {
+                const int o = k - half;
+                if (!alongX) {
+                    addWeighted(out, from.at(0, y + o), weights[k], rowValues);
+                    continue;
                 }
+                // Along x: the taps inside the row are a shifted copy of it; those past an
+                // edge read the border texel.
+                const int first = std::clamp(-o, 0, size), last = std::clamp(size - o, first, size);
+                for (int x = 0; x < first; ++x) addWeighted(out + size_t(x) * channels, from.at(x + o, y), weights[k], channels);
+                addWeighted(out + size_t(first) * channels, from.at(first + o, y), weights[k], size_t(last - first) * channels);
+                for (int x = last; x < size; ++x) addWeighted(out + size_t(x) * channels, from.at(x + o, y), weights[k], channels);
             }
         });
         return to;
