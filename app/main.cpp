@@ -347,13 +347,15 @@ void addExportObjCommand(CLI::App& app, ExportArgs& a) {
 // Frames allocate their buffers afresh (maps, G-buffers, lists: tens of MB each), and a
 // fresh page costs a fault and a zero fill, about 5 us per 4 KiB on the VMs we measure on:
 // some 20 ms for one 2048^2 map. A renderer keeps such buffers from frame to frame; this
-// program gets the same effect by keeping freed memory for reuse, serving blocks up to
-// glibc's largest mmap threshold (32 MiB) from the heap and never trimming it, so that only
-// the first (warm-up) frame pays the faults. Set once, before any work, by the program, not
-// by the library (docs/peers.md, "Measured").
+// program gets the same effect by keeping freed memory for reuse: every block comes from
+// the heap (no mmap, whose threshold cannot exceed 32 MiB, so the 32 MiB moment maps of
+// evsm and msm would be mapped and faulted afresh every frame) and the heap is never
+// trimmed, so only the first (warm-up) frame pays the faults. Set once, before any work,
+// by the program, not by the library (docs/peers.md, "Measured").
 void keepFreedMemoryForReuse() {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, -1);
+    mallopt(M_MMAP_MAX, 0);
 }
 
 }  // namespace
