@@ -31,13 +31,15 @@ void forEachTexel(const izb::LightGrid& grid, Visit visit) {
 // Length figures over the texels' lists: longest, mean and 99th percentile (nearest rank) of
 // the non-empty ones, and how many are empty.
 void addListStats(const izb::LightGrid& grid, const izb::TexelLists& lists, std::vector<TechniqueStat>& stats) {
-    std::vector<uint64_t> histogram;
-    size_t texels = 0;
-    forEachTexel(grid, [&](size_t t, size_t) {
+    std::vector<uint64_t> histogram(1, 0);
+    for (size_t t = 0; t < grid.texelCount(); ++t) {
         const uint32_t n = lists.length(t);
         if (histogram.size() <= n) histogram.resize(n + 1, 0);
-        ++histogram[n], ++texels;
-    });
+        ++histogram[n];
+    }
+    // The numbers past the resolution in the edge tiles are no texels (and always empty).
+    const uint64_t texels = uint64_t(grid.views.size()) * uint64_t(grid.resolution) * uint64_t(grid.resolution);
+    histogram[0] -= grid.texelCount() - texels;
     const uint64_t nonEmpty = texels - histogram[0];
     // Nearest rank: the shortest length L with at least 99% of the non-empty lists <= L.
     uint64_t p99 = 0, seen = 0;
