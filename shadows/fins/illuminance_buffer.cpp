@@ -25,14 +25,24 @@ double fallOff(double s, Falloff falloff) {
 IlluminanceBuffer::IlluminanceBuffer(const GBuffer& gbuffer, const std::vector<uint8_t>& lit)
     : gbuffer_(gbuffer), values_(lit.begin(), lit.end()) {}
 
-double IlluminanceBuffer::localIlluminance(size_t k, const LayerMaps& maps, const IlluminanceSettings& s) const {
+IlluminanceBuffer::PlacedReceiver IlluminanceBuffer::place(size_t k, const DepthMap& hard, const IlluminanceSettings& s) const {
     const glm::dvec3 P(gbuffer_.position[k]), N(gbuffer_.normal[k]);
-    const MapReceiver receiver = mapReceiverFromPoint(maps.hard, P, N, s.light.centre, s.bias);
-    const int x = texelOf(receiver.texel.x, maps.hard.size), y = texelOf(receiver.texel.y, maps.hard.size);
-    double local = receiver.litBy(maps.hard, x, y) ? 1.0 : 0.0;
+    const MapReceiver receiver = mapReceiverFromPoint(hard, P, N, s.light.centre, s.bias);
+    PlacedReceiver r;
+    r.x = texelOf(receiver.texel.x, hard.size), r.y = texelOf(receiver.texel.y, hard.size);
+    r.depthAtCentre = receiver.depthAt(glm::dvec2(r.x + 0.5, r.y + 0.5));
+    r.tolerance = receiver.tolerance;
+    r.lightDistance = s.light.distance(P);
+    return r;
+}
+
+double IlluminanceBuffer::localIlluminance(const PlacedReceiver& r, const LayerMaps& maps, const IlluminanceSettings& s) const {
+    // MapReceiver::litBy, with the receiver's depth at the texel centre found once.
+    const float stored = maps.hard.at(r.x, r.y);
+    double local = stored >= 1.0f || r.depthAtCentre <= double(stored) + r.tolerance ? 1.0 : 0.0;
     // All maps of the frame share one view, so the texel is the same in each.
-    const size_t texel = size_t(y) * size_t(maps.hard.size) + size_t(x);
-    const double Lr = s.light.distance(P);
+    const size_t texel = size_t(r.y) * size_t(maps.hard.size) + size_t(r.x);
+    const double Lr = r.lightDistance;
     auto adjustment = [&](const PenumbraMap& map) {
         if (!map.covered(texel)) return 0.0;
         const double Lb = lightDistanceOfDepth(s.view, map.depth[texel]);
@@ -45,11 +55,14 @@ double IlluminanceBuffer::localIlluminance(size_t k, const LayerMaps& maps, cons
 }
 
 void IlluminanceBuffer::combineLayer(const LayerMaps& maps, const IlluminanceSettings& settings) {
+    const bool first = placed_.empty();
+    if (first) placed_.resize(values_.size());
     tbb::parallel_for(0, gbuffer_.height, [&](int j) {
         for (int i = 0; i < gbuffer_.width; ++i) {
             const size_t k = gbuffer_.index(i, j);
             if (values_[k] == 0.0f) continue;   // no light left to take away
-            values_[k] = std::min(values_[k], float(localIlluminance(k, maps, settings)));
+            if (first) placed_[k] = place(k, maps.hard, settings);
+            values_[k] = std::min(values_[k], float(localIlluminance(placed_[k], maps, settings)));
         }
     });
 }

@@ -71,10 +71,21 @@ public:
     const std::vector<float>& values() const { return values_; }
 
 private:
-    double localIlluminance(size_t pixel, const LayerMaps& maps, const IlluminanceSettings& settings) const;
+    // Where a pixel's receiver falls in the frame's maps and what its tests compare. Every
+    // layer's maps share one view and resolution (fin_shadows.cpp), so this is found once,
+    // at the first layer, and each later layer only reads its own maps' values.
+    struct PlacedReceiver {
+        int x = 0, y = 0;              // its texel
+        double depthAtCentre = 0.0;    // the biased receiver depth at the texel's centre
+        double tolerance = 0.0;        // added to the stored depth (receiver-plane bias)
+        double lightDistance = 0.0;    // L_r
+    };
+    PlacedReceiver place(size_t pixel, const DepthMap& hard, const IlluminanceSettings& settings) const;
+    double localIlluminance(const PlacedReceiver& receiver, const LayerMaps& maps, const IlluminanceSettings& settings) const;
 
     const GBuffer& gbuffer_;
     std::vector<float> values_;
+    std::vector<PlacedReceiver> placed_;   // per pixel, once the first layer is combined
 };
 
 }  // namespace shadowlab
