@@ -101,6 +101,33 @@ inline F64 operator*(F64 a, F64 b) { return {_mm256_mul_pd(a.v, b.v)}; }
 inline F64 operator/(F64 a, F64 b) { return {_mm256_div_pd(a.v, b.v)}; }
 inline F64 abs(F64 a) { return {_mm256_andnot_pd(_mm256_set1_pd(-0.0), a.v)}; }
 inline F64 max(F64 a, F64 b) { return {_mm256_max_pd(a.v, b.v)}; }
+inline F64 min(F64 a, F64 b) { return {_mm256_min_pd(a.v, b.v)}; }
+// Lane k of x, y, z from p[3k], p[3k + 1], p[3k + 2], widened: three loads of four floats,
+// a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3, shuffled (gathers are slow here).
+inline void loadTriplesWidened(const float* p, F64& x, F64& y, F64& z) {
+    const __m128 a = _mm_loadu_ps(p), b = _mm_loadu_ps(p + 4), c = _mm_loadu_ps(p + 8);
+    const __m128 xs = _mm_blend_ps(_mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 2, 3, 0)), _mm_shuffle_ps(c, c, _MM_SHUFFLE(1, 1, 1, 1)), 0x8);
+    const __m128 ab = _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 0, 0, 1));   // y0 x0 y1 y2
+    const __m128 ys = _mm_blend_ps(_mm_shuffle_ps(ab, ab, _MM_SHUFFLE(3, 3, 2, 0)), _mm_shuffle_ps(c, c, _MM_SHUFFLE(2, 2, 2, 2)), 0x8);
+    const __m128 zz = _mm_shuffle_ps(a, b, _MM_SHUFFLE(1, 1, 2, 2));   // z0 z0 z1 z1
+    const __m128 zs = _mm_shuffle_ps(zz, c, _MM_SHUFFLE(3, 0, 2, 0));
+    x = {_mm256_cvtps_pd(xs)}, y = {_mm256_cvtps_pd(ys)}, z = {_mm256_cvtps_pd(zs)};
+}
+inline Mask64 nonZero64(const uint8_t* p) {
+    int32_t bytes;
+    __builtin_memcpy(&bytes, p, 4);
+    const __m256i wide = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(bytes));
+    return {_mm256_castsi256_pd(_mm256_xor_si256(_mm256_cmpeq_epi64(wide, _mm256_setzero_si256()), _mm256_set1_epi64x(-1)))};
+}
+inline Mask64 operator|(Mask64 a, Mask64 b) { return {_mm256_or_pd(a.v, b.v)}; }
+inline double reduceMin(F64 a) {
+    const __m128d m = _mm_min_pd(_mm256_castpd256_pd128(a.v), _mm256_extractf128_pd(a.v, 1));
+    return _mm_cvtsd_f64(_mm_min_sd(m, _mm_unpackhi_pd(m, m)));
+}
+inline double reduceMax(F64 a) {
+    const __m128d m = _mm_max_pd(_mm256_castpd256_pd128(a.v), _mm256_extractf128_pd(a.v, 1));
+    return _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
+}
 inline F64 sqrt(F64 a) { return {_mm256_sqrt_pd(a.v)}; }
 inline F64 roundToFloat(F64 a) { return {_mm256_cvtps_pd(_mm256_cvtpd_ps(a.v))}; }
 inline void store(double* p, F64 a) { _mm256_storeu_pd(p, a.v); }

@@ -102,6 +102,26 @@ inline F64 operator*(F64 a, F64 b) { return {_mm512_mul_pd(a.v, b.v)}; }
 inline F64 operator/(F64 a, F64 b) { return {_mm512_div_pd(a.v, b.v)}; }
 inline F64 abs(F64 a) { return {_mm512_castsi512_pd(_mm512_andnot_si512(_mm512_set1_epi64(int64_t(1) << 63), _mm512_castpd_si512(a.v)))}; }
 inline F64 max(F64 a, F64 b) { return {_mm512_max_pd(a.v, b.v)}; }
+inline F64 min(F64 a, F64 b) { return {_mm512_min_pd(a.v, b.v)}; }
+// Lane k of x, y, z from p[3k], p[3k + 1], p[3k + 2], widened: the 24 floats in two
+// registers (the second load masked to 8, so it reads nothing past them), picked by two-
+// source permutes (gathers are slow here).
+inline void loadTriplesWidened(const float* p, F64& x, F64& y, F64& z) {
+    const __m512 a = _mm512_loadu_ps(p), b = _mm512_maskz_loadu_ps(0x00ff, p + 16);
+    const __m512i lanes = _mm512_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21, 0, 0, 0, 0, 0, 0, 0, 0);
+    const __m512i one = _mm512_set1_epi32(1);
+    const __m512i lanesY = _mm512_add_epi32(lanes, one), lanesZ = _mm512_add_epi32(lanesY, one);
+    x = {_mm512_cvtps_pd(_mm512_castps512_ps256(_mm512_permutex2var_ps(a, lanes, b)))};
+    y = {_mm512_cvtps_pd(_mm512_castps512_ps256(_mm512_permutex2var_ps(a, lanesY, b)))};
+    z = {_mm512_cvtps_pd(_mm512_castps512_ps256(_mm512_permutex2var_ps(a, lanesZ, b)))};
+}
+inline Mask64 nonZero64(const uint8_t* p) {
+    return {_mm512_test_epi64_mask(_mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p))),
+                                   _mm512_set1_epi64(0xff))};
+}
+inline Mask64 operator|(Mask64 a, Mask64 b) { return {__mmask8(a.v | b.v)}; }
+inline double reduceMin(F64 a) { return _mm512_reduce_min_pd(a.v); }
+inline double reduceMax(F64 a) { return _mm512_reduce_max_pd(a.v); }
 inline F64 sqrt(F64 a) { return {_mm512_sqrt_pd(a.v)}; }
 inline F64 roundToFloat(F64 a) { return {_mm512_cvtps_pd(_mm512_cvtpd_ps(a.v))}; }
 inline void store(double* p, F64 a) { _mm512_storeu_pd(p, a.v); }

@@ -87,6 +87,15 @@ inline F64 operator/(F64 a, F64 b) { return {a.v / b.v}; }
 inline F64 abs(F64 a) { return {__builtin_fabs(a.v)}; }
 // As maxpd: the second operand when the lanes are unordered or both zero.
 inline F64 max(F64 a, F64 b) { return {a.v > b.v ? a.v : b.v}; }
+inline F64 min(F64 a, F64 b) { return {a.v < b.v ? a.v : b.v}; }
+// Lane k of x, y, z from the floats p[3k], p[3k + 1], p[3k + 2], widened.
+inline void loadTriplesWidened(const float* p, F64& x, F64& y, F64& z) { x = {p[0]}, y = {p[1]}, z = {p[2]}; }
+// Lanes where p[k] != 0.
+inline Mask64 nonZero64(const uint8_t* p) { return {*p != 0}; }
+inline Mask64 operator|(Mask64 a, Mask64 b) { return {a.v || b.v}; }
+// The smallest and the largest lane.
+inline double reduceMin(F64 a) { return a.v; }
+inline double reduceMax(F64 a) { return a.v; }
 inline F64 sqrt(F64 a) { return {__builtin_sqrt(a.v)}; }
 // Rounded to the nearest float and widened back: the value a float variable would hold.
 inline F64 roundToFloat(F64 a) { return {double(float(a.v))}; }
