@@ -6,11 +6,13 @@
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
 #include "shading/lights.h"
+#include "shadows/receiver_bounds.h"
 
 namespace shadowlab {
 namespace {
@@ -57,19 +59,52 @@ Bounds merged(const Bounds& a, const Bounds& b) {
             std::min(a.nearest, b.nearest), std::max(a.farthest, b.farthest)};
 }
 
-Bounds receiverBounds(const Light& light, const GBuffer& g, const glm::dmat4& viewFromWorld, bool orthographic) {
-    const auto add = [&](Bounds& b, size_t k) {
-        const glm::dvec3 q = glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(g.position[k]), 1.0));
-        const double depth = -q.z;
-        if (!orthographic && !(depth > 0.0)) {
-            throw std::invalid_argument("light view: a receiver lies beside or behind the light; use cube faces");
-        }
-        const double x = orthographic ? q.x : q.x / depth, y = orthographic ? q.y : q.y / depth;
-        b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x), b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
-        b.nearest = std::min(b.nearest, depth), b.farthest = std::max(b.farthest, depth);
-    };
-    const Bounds b = overServedPixels(light, g, Bounds{}, add, merged);
-    if (!(b.farthest > 0.0) && !orthographic) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
+const BoundsKernels& boundsKernels(raster::SimdLevel simd) {
+    raster::tileKernels(simd);   // throws where this CPU lacks the level
+    switch (simd) {
+        case raster::SimdLevel::Avx2: return boundsKernelsAvx2();
+        case raster::SimdLevel::Avx512: return boundsKernelsAvx512();
+        case raster::SimdLevel::Scalar: break;
+    }
+    return boundsKernelsScalar();
+}
+
+// The bounds (receiver_bounds.h) of the pixels the map serves: chunks in parallel, each
+// through the vector kernel and its tail through the scalar twin; minima and maxima merge
+// exactly in any order.
+BoundsResult servedBounds(const Light& light, const GBuffer& g, BoundsSpace space, const glm::dmat4& viewFromWorld,
+                          raster::SimdLevel simd) {
+    std::vector<uint8_t> inCone;
+    if (light.type == LightType::Spot) {
+        inCone.resize(g.pixelCount());
+        tbb::parallel_for(size_t(0), g.pixelCount(), [&](size_t k) { inCone[k] = served(light, g, k); });
+    }
+    const uint8_t* servedBytes = inCone.empty() ? g.hit.data() : inCone.data();
+    const float* positions = reinterpret_cast<const float*>(g.position.data());   // x, y, z per pixel
+    const double* matrix = glm::value_ptr(viewFromWorld);
+    const BoundsKernels &vector = boundsKernels(simd), &scalar = boundsKernelsScalar();
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, g.pixelCount(), 4096), emptyBounds(),
+        [&](const tbb::blocked_range<size_t>& r, BoundsResult b) {
+            const size_t body = r.size() / size_t(vector.width) * size_t(vector.width);
+            vector.space[space]({positions + 3 * r.begin(), servedBytes + r.begin(), body, matrix}, b);
+            const size_t tail = r.begin() + body;
+            scalar.space[space]({positions + 3 * tail, servedBytes + tail, r.end() - tail, matrix}, b);
+            return b;
+        },
+        [](BoundsResult a, const BoundsResult& b) {
+            for (int c = 0; c < 3; ++c) a.lo[c] = std::min(a.lo[c], b.lo[c]), a.hi[c] = std::max(a.hi[c], b.hi[c]);
+            a.behindApex = a.behindApex || b.behindApex;
+            return a;
+        });
+}
+
+// Tangents (perspective) or coordinates (orthographic) and depths of the served receivers.
+Bounds receiverBounds(const Light& light, const GBuffer& g, const glm::dmat4& viewFromWorld, bool orthographic,
+                      raster::SimdLevel simd) {
+    const BoundsResult r = servedBounds(light, g, orthographic ? kOrthographicView : kPerspectiveView, viewFromWorld, simd);
+    if (r.behindApex) throw std::invalid_argument("light view: a receiver lies beside or behind the light; use cube faces");
+    const Bounds b{r.lo[0], r.hi[0], r.lo[1], r.hi[1], r.lo[2], r.hi[2]};
     if (b.x0 > b.x1) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
     return b;
 }
@@ -145,7 +180,7 @@ LightView perspectiveView(const Light& light, const glm::dvec3& axis, const GBuf
     LightView view;
     const glm::dvec3 apex(light.position);
     view.viewFromWorld = glm::lookAtRH(apex, apex + axis, anyPerpendicular(axis));
-    Bounds b = receiverBounds(light, g, view.viewFromWorld, false);
+    Bounds b = receiverBounds(light, g, view.viewFromWorld, false, o.simd);
     widen(b, o);
     fitDepthRange(view, b, world, o);
     const double n = view.zNear;
@@ -163,13 +198,8 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     if (light.type != LightType::Directional) {
         // Aim along options.axis or at the centre of the receivers' bounding box, then fit the
         // sides around them.
-        using Box = std::pair<glm::dvec3, glm::dvec3>;
-        const auto [lo, hi] = overServedPixels(
-            light, receivers, Box(glm::dvec3(kInfinity), glm::dvec3(-kInfinity)),
-            [&](Box& box, size_t k) {
-                box = {glm::min(box.first, glm::dvec3(receivers.position[k])), glm::max(box.second, glm::dvec3(receivers.position[k]))};
-            },
-            [](const Box& a, const Box& b) { return Box(glm::min(a.first, b.first), glm::max(a.second, b.second)); });
+        const BoundsResult box = servedBounds(light, receivers, kWorldBox, glm::dmat4(1.0), options.simd);
+        const glm::dvec3 lo(box.lo[0], box.lo[1], box.lo[2]), hi(box.hi[0], box.hi[1], box.hi[2]);
         if (lo.x > hi.x) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1, or none in the spot's cone)");
         const glm::dvec3 axis = options.axis != glm::dvec3(0.0) ? options.axis : 0.5 * (lo + hi) - glm::dvec3(light.position);
         return perspectiveView(light, glm::normalize(axis), receivers, world, options);
@@ -179,14 +209,10 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(light.direction));
     // The eye sits anywhere on the light's side; depths are then measured from it.
     view.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, anyPerpendicular(towardsLight));
-    Bounds b = receiverBounds(light, receivers, view.viewFromWorld, true);
+    // Depths here may be negative (the eye is anywhere on the light's side): the farthest is
+    // the largest of them, not of them and 0.
+    Bounds b = receiverBounds(light, receivers, view.viewFromWorld, true, options.simd);
     widen(b, options);
-    b.farthest = overServedPixels(
-        light, receivers, -kInfinity,
-        [&](double& farthest, size_t k) {
-            farthest = std::max(farthest, -(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0)).z);
-        },
-        [](double a, double b) { return std::max(a, b); });
     fitDepthRange(view, b, world, options);
     view.clipFromView = glm::orthoRH_NO(b.x0, b.x1, b.y0, b.y1, view.zNear, view.zFar);
     return view;

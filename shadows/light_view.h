@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/tile_kernels.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
 
@@ -35,6 +36,8 @@ struct LightFitOptions {
     // the centre of the receivers' bounding box. A disk light's normal makes the depth planes
     // parallel to the light's plane (what shadow fins measure distances from).
     glm::dvec3 axis{0.0};
+    // The receivers' bounds kernel (receiver_bounds.h); every level gives the same view.
+    raster::SimdLevel simd = raster::bestSimdLevel();
 };
 
 // Throws std::invalid_argument when there are no receivers, the light is an area light
