@@ -209,7 +209,14 @@ void BM_LightView(benchmark::State& state) {
     const WorldGeometry world = flatten(scene);
     const GBuffer g = renderGBuffer(world, scene.camera, bestSimdLevel());
     const Light light = pointLightFor(scene.lights[0]);
-    for (auto _ : state) benchmark::DoNotOptimize(fitLightView(light, g, world));
+    LightFitOptions options;
+    options.simd = SimdLevel(state.range(0));
+    if (!simdLevelSupported(options.simd)) {
+        state.SkipWithError("SIMD level not supported on this CPU");
+        return;
+    }
+    for (auto _ : state) benchmark::DoNotOptimize(fitLightView(light, g, world, options));
+    state.SetLabel(simdLevelName(options.simd));
 }
 
 // The irregular z-buffer's stages (shadows/izb/izb.h) on sphere-box's camera G-buffer, one
@@ -274,7 +281,7 @@ BENCHMARK(BM_Binning)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RasterTiles)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadowLookup)->Apply(lookupCases)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_LightView)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LightView)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IrregularZBuffer)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
 // As the shadowlab program (app/main.cpp): freed memory is kept for reuse, so a frame's
 // fresh buffers do not pay page faults in every timed run.
