@@ -58,6 +58,13 @@ double kernelRadiusTexels(const FilterSettings& s) {
     return 0.0;
 }
 
-double poissonRotation(uint64_t pixel) { return 2.0 * std::numbers::pi * unitInterval(splitMix64(pixel)); }
+int poissonRotationIndex(uint64_t pixel) {
+    static_assert(kPoissonRotations == 1 << 10);
+    return int(splitMix64(pixel) >> 54);   // the hash's top 10 bits
+}
+
+double poissonRotationAngle(int index) { return 2.0 * std::numbers::pi * double(index) / double(kPoissonRotations); }
+
+double poissonRotation(uint64_t pixel) { return poissonRotationAngle(poissonRotationIndex(pixel)); }
 
 }  // namespace shadowlab

@@ -46,8 +46,16 @@ PcfKernel makePcfKernel(const FilterSettings& settings);
 // How far (texels) from the receiver the kernel reaches, for fitting margins.
 double kernelRadiusTexels(const FilterSettings& settings);
 
-// The per-pixel rotation of the poisson kernel, radians in [0, 2 pi).
+// The per-pixel rotation of the poisson kernel: one of kPoissonRotations angles evenly
+// spaced over the turn, picked by a hash of the pixel index. A quantised angle lets a
+// receiver pass read its cosine and sine from a table of kPoissonRotations entries instead
+// of calling the library per pixel; adjacent angles are 0.35 degrees apart, far finer
+// than the spacing of 16 taps, so the noise looks the same.
+inline constexpr int kPoissonRotations = 1024;
+int poissonRotationIndex(uint64_t pixel);
+// Radians in [0, 2 pi): 2 pi poissonRotationIndex(pixel) / kPoissonRotations.
 double poissonRotation(uint64_t pixel);
+double poissonRotationAngle(int index);
 
 // Offset (texels) of unit-disk tap d rotated by (cos, sin) = rotation and scaled by
 // radiusTexels per axis (an ellipse where a map's texels are not square in the world).

@@ -63,6 +63,7 @@ struct LookupPass::Tables {
     LookupKernel scalarReach = nullptr, scalarProject = nullptr, scalarFilter = nullptr;
     int width = 1;
     bool rotated = false;     // the filter turns a Poisson disk per pixel
+    std::vector<float> rotationCos, rotationSin;   // rotated: per angle of pcf.h, its cosine and sine
     bool pcss = false;        // the filter reads the receivers' distance and writes two more images
 };
 
@@ -97,6 +98,10 @@ LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& lig
     width = vector.width;
     rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss;
     pcss = filterIndex == kLookupPcss;
+    for (int a = 0; rotated && a < kPoissonRotations; ++a) {
+        rotationCos.push_back(float(std::cos(poissonRotationAngle(a))));
+        rotationSin.push_back(float(std::sin(poissonRotationAngle(a))));
+    }
 }
 
 LookupPass::LookupPass(std::span<const DepthMap> maps, const Light& light, const BiasSettings& bias,
@@ -130,8 +135,8 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
     if (t.rotated) {
         // The per-pixel rotation of the Poisson disk, a hash of the pixel index (pcf.h).
         for (int i = 0; i < count; ++i) {
-            const double angle = poissonRotation(g.index(i, j));
-            scratch.rotationCos[size_t(i)] = float(std::cos(angle)), scratch.rotationSin[size_t(i)] = float(std::sin(angle));
+            const int a = poissonRotationIndex(g.index(i, j));
+            scratch.rotationCos[size_t(i)] = t.rotationCos[size_t(a)], scratch.rotationSin[size_t(i)] = t.rotationSin[size_t(a)];
         }
     }
     float* r = scratch.receivers.data();
