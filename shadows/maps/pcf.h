@@ -9,9 +9,9 @@
 //   grid      N x N nearest taps one texel apart, centred on the receiver, equal weights
 //             (Figure 7.23, far left).
 //   poisson   a Poisson-disk pattern of taps (best-candidate sampling of the unit disk,
-//             fixed), scaled to a radius in texels and rotated per pixel by an angle
-//             hashed from the pixel index (Figure 7.23, middle right: aliasing becomes
-//             noise). The hash is a pure function of the index, so no random state is
+//             fixed), scaled to a radius in texels and rotated per pixel by one of 1024
+//             angles hashed from the pixel index (Figure 7.23, middle right: aliasing
+//             becomes noise). The hash is a pure function of the index, so no random state is
 //             shared between threads and the result does not depend on them.
 #pragma once
 
