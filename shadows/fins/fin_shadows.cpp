@@ -104,7 +104,8 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
                IlluminanceBuffer& buffer) {
     const IlluminanceSettings settings{s.light, scene.view, scene.L0, s.style.edgeWeight, s.falloff, s.bias};
     const DepthMapSettings hardSettings{s.resolution, DepthLayer::First, polygonOffsetFor(s.bias)};
-    int drawn = 0;
+    int drawn = 0, last = -1;   // the last layer with contents
+    for (int layer = 0; layer < scene.layering.layers.count(); ++layer) last = scene.layering.contents[layer].empty() ? last : layer;
     for (int layer = 0; layer < scene.layering.layers.count(); ++layer) {
         const LayerContents& c = scene.layering.contents[layer];
         if (c.empty()) continue;
@@ -117,7 +118,7 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
         const PenumbraMap outer =
             renderPenumbraMap(scene.fins.outer, c.outerFins, scene.view, s.resolution, FinKind::Outer, in.simd);
         const PenumbraMap* innerOrNone = s.style.innerFins ? &inner : nullptr;
-        buffer.combineLayer({hard, innerOrNone, outer}, settings);
+        buffer.combineLayer({hard, innerOrNone, outer}, settings, layer < last);
         debug.writeLayer(layer, hard, innerOrNone, outer, s.style.edgeWeight, in.gbuffer, buffer.values());
     }
     return drawn;

@@ -54,15 +54,16 @@ double IlluminanceBuffer::localIlluminance(const PlacedReceiver& r, const LayerM
     return std::clamp(local, 0.0, 1.0);
 }
 
-void IlluminanceBuffer::combineLayer(const LayerMaps& maps, const IlluminanceSettings& settings) {
-    const bool first = placed_.empty();
-    if (first) placed_.resize(values_.size());
+void IlluminanceBuffer::combineLayer(const LayerMaps& maps, const IlluminanceSettings& settings, bool moreLayersFollow) {
+    const bool placedBefore = !placed_.empty(), keep = !placedBefore && moreLayersFollow;
+    if (keep) placed_.resize(values_.size());
     tbb::parallel_for(0, gbuffer_.height, [&](int j) {
         for (int i = 0; i < gbuffer_.width; ++i) {
             const size_t k = gbuffer_.index(i, j);
             if (values_[k] == 0.0f) continue;   // no light left to take away
-            if (first) placed_[k] = place(k, maps.hard, settings);
-            values_[k] = std::min(values_[k], float(localIlluminance(placed_[k], maps, settings)));
+            const PlacedReceiver r = placedBefore ? placed_[k] : place(k, maps.hard, settings);
+            if (keep) placed_[k] = r;
+            values_[k] = std::min(values_[k], float(localIlluminance(r, maps, settings)));
         }
     });
 }

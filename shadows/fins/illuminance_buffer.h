@@ -65,15 +65,17 @@ public:
     // the reference), else 0 (V = 0 there).
     IlluminanceBuffer(const GBuffer& gbuffer, const std::vector<uint8_t>& lit);
 
-    // I = min(I, local) at every pixel that faces the light.
-    void combineLayer(const LayerMaps& maps, const IlluminanceSettings& settings);
+    // I = min(I, local) at every pixel that faces the light. With moreLayersFollow, the
+    // receivers' places are kept for the layers after this one.
+    void combineLayer(const LayerMaps& maps, const IlluminanceSettings& settings, bool moreLayersFollow);
 
     const std::vector<float>& values() const { return values_; }
 
 private:
     // Where a pixel's receiver falls in the frame's maps and what its tests compare. Every
-    // layer's maps share one view and resolution (fin_shadows.cpp), so this is found once,
-    // at the first layer, and each later layer only reads its own maps' values.
+    // layer's maps share one view and resolution (fin_shadows.cpp), so with several layers
+    // this is found once, at the first, and each later layer only reads its own maps'
+    // values; a single layer finds it per pixel and keeps nothing.
     struct PlacedReceiver {
         int x = 0, y = 0;              // its texel
         double depthAtCentre = 0.0;    // the biased receiver depth at the texel's centre
@@ -85,7 +87,7 @@ private:
 
     const GBuffer& gbuffer_;
     std::vector<float> values_;
-    std::vector<PlacedReceiver> placed_;   // per pixel, once the first layer is combined
+    std::vector<PlacedReceiver> placed_;   // per pixel, once a layer with more to follow is combined
 };
 
 }  // namespace shadowlab
