@@ -19,15 +19,14 @@ SimdLevel bestSimdLevel() {
     return SimdLevel::Scalar;
 }
 
-const TileKernels& tileKernels(SimdLevel level) {
+void requireSimdLevel(SimdLevel level) {
     if (!simdLevelSupported(level)) {
         throw std::invalid_argument(std::string("this CPU does not support SIMD level ") + simdLevelName(level));
     }
-    switch (level) {
-        case SimdLevel::Avx2: return tileKernelsAvx2();
-        case SimdLevel::Avx512: return tileKernelsAvx512();
-        default: return tileKernelsScalar();
-    }
+}
+
+const TileKernels& tileKernels(SimdLevel level) {
+    return forSimdLevel(level, tileKernelsScalar, tileKernelsAvx2, tileKernelsAvx512);
 }
 
 const char* simdLevelName(SimdLevel level) {

@@ -14,6 +14,23 @@ SimdLevel bestSimdLevel();
 bool simdLevelSupported(SimdLevel level);
 const TileKernels& tileKernels(SimdLevel level);
 
+// Throws std::invalid_argument naming the level unless this CPU supports it.
+void requireSimdLevel(SimdLevel level);
+
+// What the function of the level returns: scalar(), avx2() or avx512(), for the families of
+// kernels compiled once per instruction set (the tile kernels, the shadow lookup's, ...).
+// Throws as requireSimdLevel.
+template <class Scalar, class Avx2, class Avx512>
+decltype(auto) forSimdLevel(SimdLevel level, Scalar scalar, Avx2 avx2, Avx512 avx512) {
+    requireSimdLevel(level);
+    switch (level) {
+        case SimdLevel::Avx2: return avx2();
+        case SimdLevel::Avx512: return avx512();
+        case SimdLevel::Scalar: break;
+    }
+    return scalar();
+}
+
 const char* simdLevelName(SimdLevel level);
 // Parses "scalar", "avx2", "avx512" or "auto" (the best supported); throws std::invalid_argument.
 SimdLevel parseSimdLevel(const std::string& name);

@@ -60,13 +60,7 @@ Bounds merged(const Bounds& a, const Bounds& b) {
 }
 
 const BoundsKernels& boundsKernels(raster::SimdLevel simd) {
-    raster::tileKernels(simd);   // throws where this CPU lacks the level
-    switch (simd) {
-        case raster::SimdLevel::Avx2: return boundsKernelsAvx2();
-        case raster::SimdLevel::Avx512: return boundsKernelsAvx512();
-        case raster::SimdLevel::Scalar: break;
-    }
-    return boundsKernelsScalar();
+    return raster::forSimdLevel(simd, boundsKernelsScalar, boundsKernelsAvx2, boundsKernelsAvx512);
 }
 
 // The bounds (receiver_bounds.h) of the pixels the map serves: chunks in parallel, each

@@ -15,15 +15,7 @@ namespace simd = shadowlab::simd_scalar;
 
 Kernels kernelsScalar() { return {kernels_scalar::computeSegments, kernels_scalar::blockRun}; }
 
-Kernels kernels(raster::SimdLevel simd) {
-    raster::tileKernels(simd);   // throws where this CPU lacks the level
-    switch (simd) {
-        case raster::SimdLevel::Avx2: return kernelsAvx2();
-        case raster::SimdLevel::Avx512: return kernelsAvx512();
-        case raster::SimdLevel::Scalar: break;
-    }
-    return kernelsScalar();
-}
+Kernels kernels(raster::SimdLevel simd) { return raster::forSimdLevel(simd, kernelsScalar, kernelsAvx2, kernelsAvx512); }
 
 bool segmentBlocked(const glm::dvec3& origin, const glm::dvec3& towardsLight, double tFar,
                     const glm::dvec3 (&triangle)[3]) {

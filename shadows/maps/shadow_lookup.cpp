@@ -42,13 +42,7 @@ static_assert(int(FilterKind::Nearest) == kLookupNearest && int(FilterKind::Bili
 }  // namespace
 
 const LookupKernels& lookupKernels(raster::SimdLevel simd) {
-    raster::tileKernels(simd);   // throws where this CPU lacks the level
-    switch (simd) {
-        case raster::SimdLevel::Avx2: return lookupKernelsAvx2();
-        case raster::SimdLevel::Avx512: return lookupKernelsAvx512();
-        case raster::SimdLevel::Scalar: break;
-    }
-    return lookupKernelsScalar();
+    return raster::forSimdLevel(simd, lookupKernelsScalar, lookupKernelsAvx2, lookupKernelsAvx512);
 }
 
 struct LookupPass::Tables {
