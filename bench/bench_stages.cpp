@@ -169,6 +169,20 @@ void BM_FillRate(benchmark::State& state) {
     state.counters["Mpix/s"] = benchmark::Counter(2.0 * kSize * kSize * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// sphere-box seen by its camera: the receivers of the benchmarks below (the G-buffer is the
+// same bytes at every SIMD level).
+struct CameraView {
+    Scene scene = loadScene("sphere-box");
+    WorldGeometry world = flatten(scene);
+    GBuffer g = renderGBuffer(world, scene.camera, bestSimdLevel());
+    Light light = pointLightFor(scene.lights[0]);
+};
+
+const CameraView& cameraView() {
+    static const CameraView view;
+    return view;
+}
+
 // The shadow-map lookup (the receiver pass of `shadow-map`, filter nearest or 3x3 grid) on
 // sphere-box's camera G-buffer, one thread, for a map of range(1) texels per side.
 void BM_ShadowLookup(benchmark::State& state) {
@@ -178,10 +192,7 @@ void BM_ShadowLookup(benchmark::State& state) {
         state.SkipWithError("SIMD level not supported on this CPU");
         return;
     }
-    const Scene scene = loadScene("sphere-box");
-    const WorldGeometry world = flatten(scene);
-    const GBuffer g = renderGBuffer(world, scene.camera, level);
-    const Light light = pointLightFor(scene.lights[0]);
+    const auto& [scene, world, g, light] = cameraView();
     LightFitOptions fit;
     fit.resolution = int(state.range(1));
     DepthMapSettings settings;
@@ -205,10 +216,7 @@ void BM_ShadowLookup(benchmark::State& state) {
 // bounding box, their bounds in the light's view, the nearest occluder), one thread.
 void BM_LightView(benchmark::State& state) {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    const Scene scene = loadScene("sphere-box");
-    const WorldGeometry world = flatten(scene);
-    const GBuffer g = renderGBuffer(world, scene.camera, bestSimdLevel());
-    const Light light = pointLightFor(scene.lights[0]);
+    const auto& [scene, world, g, light] = cameraView();
     LightFitOptions options;
     options.simd = SimdLevel(state.range(0));
     if (!simdLevelSupported(options.simd)) {
@@ -223,10 +231,7 @@ void BM_LightView(benchmark::State& state) {
 // thread, each timed alone on the previous stages' results: range(0) is the stage, 1 to 5.
 void BM_IrregularZBuffer(benchmark::State& state) {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    const Scene scene = loadScene("sphere-box");
-    const WorldGeometry world = flatten(scene);
-    const GBuffer g = renderGBuffer(world, scene.camera, bestSimdLevel());
-    const Light light = pointLightFor(scene.lights[0]);
+    const auto& [scene, world, g, light] = cameraView();
     const double diagonal = sceneDiagonal(world);
     std::vector<float> visibility;
     const izb::Receivers receivers = izb::gatherReceivers(g, light, diagonal, visibility, bestSimdLevel());
