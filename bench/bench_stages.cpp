@@ -236,7 +236,7 @@ void BM_IrregularZBuffer(benchmark::State& state) {
     std::vector<float> visibility;
     const izb::Receivers receivers = izb::gatherReceivers(g, light, diagonal, visibility, bestSimdLevel());
     const auto makeGrid = [&] {
-        std::vector<LightView> views = izb::fitViews(light, g, world);
+        std::vector<LightView> views = izb::fitViews(light, g, world, bestSimdLevel());
         const izb::ReceiverPlaces places = izb::placeReceivers(views, receivers);
         const int resolution = izb::chooseResolution(views.size(), places, 2.0);
         return std::make_pair(izb::makeLightGrid(std::move(views), resolution, diagonal), places);

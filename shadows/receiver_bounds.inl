@@ -32,9 +32,12 @@ void boundsOf(const BoundsRun& run, BoundsResult& result) {
             hi[c] = simd::max(simd::select(served, value[c], minusInf), hi[c]);
         }
     }
+    // Plain comparisons, not std::min: this file is built per instruction set and may
+    // define no function the rest of the program could link to.
     for (int c = 0; c < 3; ++c) {
-        result.lo[c] = std::min(result.lo[c], simd::reduceMin(lo[c]));
-        result.hi[c] = std::max(result.hi[c], simd::reduceMax(hi[c]));
+        const double low = simd::reduceMin(lo[c]), high = simd::reduceMax(hi[c]);
+        result.lo[c] = low < result.lo[c] ? low : result.lo[c];
+        result.hi[c] = result.hi[c] < high ? high : result.hi[c];
     }
     result.behindApex = result.behindApex || simd::laneBits(behind) != 0;
 }

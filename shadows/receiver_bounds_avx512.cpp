@@ -2,8 +2,6 @@
 // instruction set's flags (shadows/CMakeLists.txt). It includes only plain-data headers
 // besides the kernel, so no inline function built for a wider instruction set can be
 // picked by the linker for the rest of the program.
-#include <algorithm>
-
 #include "raster/simd/simd_avx512.h"
 #include "shadows/receiver_bounds.h"
 

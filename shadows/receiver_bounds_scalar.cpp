@@ -1,7 +1,5 @@
 // The receivers' bounds (receiver_bounds.inl) compiled for the scalar SIMD types: the plain
 // twin of the vector builds, and the one that takes every run's tail.
-#include <algorithm>
-
 #include "raster/simd/simd_scalar.h"
 #include "shadows/receiver_bounds.h"
 

@@ -66,6 +66,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     LightFitOptions fit;
     fit.resolution = resolution;
     fit.marginTexels = kFitMarginTexels;
+    fit.simd = in.simd;
     const DepthMapSettings depth{resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
     std::vector<uint16_t> lit(in.gbuffer.pixelCount(), 0);
     std::vector<float> v(in.gbuffer.pixelCount());

@@ -60,6 +60,7 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
     const Light centre = pointLightFor(in.light);
     LightFitOptions fit;
     fit.resolution = resolution;
+    fit.simd = in.simd;
     fit.marginTexels = marginTexels;
     LightView view = fitLightView(centre, in.gbuffer, in.world(), fit);
     if (coverBlockerSearch) {

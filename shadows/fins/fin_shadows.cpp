@@ -51,6 +51,7 @@ LightView fitFinView(const ShadowInputs& in, const FinSettings& s) {
     LightFitOptions fit;
     fit.resolution = s.resolution;
     fit.axis = s.light.normal;
+    fit.simd = in.simd;
     return fitLightView(pointLightFor(in.light), in.gbuffer, in.world(), fit);
 }
 

@@ -84,7 +84,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
         return out;
     }
 
-    std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world());
+    std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world(), in.simd);
     const izb::ReceiverPlaces places = izb::placeReceivers(views, receivers);
     const int resolution = requested ? *requested : izb::chooseResolution(views.size(), places, kTargetListLength);
     const izb::LightGrid grid = izb::makeLightGrid(std::move(views), resolution, diagonal);

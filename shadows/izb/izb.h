@@ -121,7 +121,8 @@ struct LightGrid {
 // The views that hold every receiver: fitLightView(), or the cube faces (fitCubeFace)
 // when the receivers surround a point light. Throws std::invalid_argument when there are
 // no receivers.
-std::vector<LightView> fitViews(const Light& pointOrDirectional, const GBuffer& gbuffer, const WorldGeometry& world);
+std::vector<LightView> fitViews(const Light& pointOrDirectional, const GBuffer& gbuffer, const WorldGeometry& world,
+                               raster::SimdLevel simd);
 
 // Where the receivers lie in the views, found once and reused by chooseResolution and the
 // lists: each receiver's view and its texel coordinates over the resolution, (u, v) / R in

@@ -39,10 +39,10 @@ int viewOf(const std::vector<LightView>& views, const glm::dvec3& point) {
     return best;
 }
 
-// floor(coordinate) clamped to [0, resolution - 1]; truncation agrees with floor wherever
-// the clamp keeps the value, and costs no library call on baseline x86-64.
+// floor(coordinate) clamped to [0, resolution - 1] (NaN to 0); truncation agrees with floor
+// wherever the clamp keeps the value, and costs no library call on baseline x86-64.
 int cell(double coordinate, int resolution) {
-    return coordinate < 1.0 ? 0 : coordinate >= resolution - 1 ? resolution - 1 : int(coordinate);
+    return !(coordinate >= 1.0) ? 0 : coordinate >= resolution - 1 ? resolution - 1 : int(coordinate);
 }
 
 std::vector<glm::dmat4> clipMatrices(const std::vector<LightView>& views) {
@@ -83,10 +83,11 @@ double meanListLength(size_t viewCount, int resolution, const ReceiverPlaces& pl
 
 }  // namespace
 
-std::vector<LightView> fitViews(const Light& light, const GBuffer& gbuffer, const WorldGeometry& world) {
+std::vector<LightView> fitViews(const Light& light, const GBuffer& gbuffer, const WorldGeometry& world,
+                               raster::SimdLevel simd) {
     // The sides only need to clear the ray-origin offset (micrometres): a margin of 2 texels
     // of the largest grid is ample for every resolution.
-    const LightFitOptions options{.resolution = kMaxMapResolution};
+    const LightFitOptions options{.resolution = kMaxMapResolution, .simd = simd};
     try {
         return {fitLightView(light, gbuffer, world, options)};
     } catch (const std::invalid_argument&) {

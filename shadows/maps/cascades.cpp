@@ -100,7 +100,7 @@ std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const G
     const glm::dvec3 up = std::abs(towardsLight.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
     const glm::dmat4 lightFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, up);
     LightFitOptions options;
-    options.resolution = s.resolution, options.marginTexels = s.marginTexels;
+    options.resolution = s.resolution, options.marginTexels = s.marginTexels, options.simd = s.simd;
     for (int k = 0; k < s.count; ++k) {
         Cascade& c = cascades[k];
         const GBuffer receivers = cascadeReceivers(g, camera, cascades, k);

@@ -41,6 +41,7 @@ struct CascadeSettings {
     bool snap = true;
     int resolution = 2048;
     double marginTexels = 2.0;      // receivers stay this far inside (filter footprints, snapping)
+    raster::SimdLevel simd = raster::bestSimdLevel();   // for fitting each cascade's depth range
 };
 
 struct Cascade {

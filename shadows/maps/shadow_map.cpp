@@ -61,6 +61,7 @@ LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapS
     LightFitOptions options;
     options.resolution = s.resolution;
     options.marginTexels = kernelRadiusTexels(s.filter) + 1.5;
+    options.simd = in.simd;
     if (forceCube) return cubeMaps(in, light, s, options, timer);
     LightView view;
     try {

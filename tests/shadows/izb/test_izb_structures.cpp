@@ -24,7 +24,7 @@ TEST_CASE("izb texel lists equal lists built by appending receivers in pixel ord
     const Light light = pointLightFor(scene.lights[0]);
     std::vector<float> V;
     const izb::Receivers receivers = izb::gatherReceivers(g, light, sceneDiagonal(world), V, raster::bestSimdLevel());
-    const izb::LightGrid grid = izb::makeLightGrid(izb::fitViews(light, g, world), 300, sceneDiagonal(world));
+    const izb::LightGrid grid = izb::makeLightGrid(izb::fitViews(light, g, world, raster::bestSimdLevel()), 300, sceneDiagonal(world));
     const std::vector<uint32_t> texel = izb::receiverTexels(grid.resolution, izb::placeReceivers(grid.views, receivers));
     const izb::TexelLists lists = izb::buildTexelLists(texel, grid.texelCount());
 
