@@ -31,16 +31,12 @@ namespace shadowlab {
 // shadows of the reference do not visibly detach (peter-panning).
 // The same distance is taken off the far end of a ray to a light point, so a light
 // placed on a surface (a lamp on a ceiling) is not shadowed by that surface.
-namespace {
-constexpr double kFloatUnitRoundoff = 0x1p-24;
-constexpr double kShadowRayOffsetInUnitRoundoffs = 32.0;  // units of u * S, see above
-}  // namespace
-
+// kShadowRayOffsetPerScale (ray_offset.h) is that 32 u.
 double shadowRayOffset(const glm::vec3& P, double sceneDiagonal) {
     const double largestCoordinate =
         std::max({std::abs(double(P.x)), std::abs(double(P.y)), std::abs(double(P.z))});
     const double scale = std::max(largestCoordinate, sceneDiagonal);
-    return kShadowRayOffsetInUnitRoundoffs * kFloatUnitRoundoff * scale;
+    return kShadowRayOffsetPerScale * scale;
 }
 
 double sceneDiagonal(const WorldGeometry& world) {

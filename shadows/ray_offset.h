@@ -17,5 +17,7 @@ double sceneDiagonal(const WorldGeometry& world);
 // S = max(max_k |P_k|, sceneDiagonal), derived in ray_offset.cpp. The same distance is
 // taken off the far end of a ray to a light point.
 double shadowRayOffset(const glm::vec3& P, double sceneDiagonal);
+// The offset per unit of S: 32 u (vector code that computes S itself multiplies by it).
+inline constexpr double kShadowRayOffsetPerScale = 32.0 * 0x1p-24;
 
 }  // namespace shadowlab

@@ -37,7 +37,7 @@ struct SegmentColumns {
 struct SegmentConstants {
     double light[4];          // homogeneous light (x, y, z, w), homogeneousLight()
     double sceneDiagonal;     // D of shadowRayOffset()
-    double offsetPerScale;    // shadowRayOffset() = offsetPerScale * max(max_k |P_k|, D)
+    double offsetPerScale;    // kShadowRayOffsetPerScale: shadowRayOffset() = it * max(max_k |P_k|, D)
 };
 using SegmentKernel = void (*)(const SegmentConstants& constants, const PointColumns& points, uint32_t count,
                                const SegmentColumns& segments);

@@ -34,8 +34,9 @@ struct SegmentBatch {
         return {column[0].data(), column[1].data(), column[2].data(), column[3].data(), column[4].data(), column[5].data()};
     }
     SegmentColumns segments() { return {column[6].data(), column[7].data(), column[8].data(), column[9].data()}; }
+    double tFar(size_t n) const { return column[9][n]; }
     Receiver receiver(size_t n) const {
-        return {glm::vec3(float(column[6][n]), float(column[7][n]), float(column[8][n])), pixel[n], column[9][n]};
+        return {glm::vec3(float(column[6][n]), float(column[7][n]), float(column[8][n])), pixel[n], tFar(n)};
     }
 };
 
@@ -50,7 +51,7 @@ Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal,
                           raster::SimdLevel simd) {
     const HomogeneousLight h = homogeneousLight(light);
     const LightReach reaches(light);
-    const SegmentConstants constants{{h.x, h.y, h.z, h.w}, diagonal, shadowRayOffset(glm::vec3(0.0f), 1.0)};
+    const SegmentConstants constants{{h.x, h.y, h.z, h.w}, diagonal, kShadowRayOffsetPerScale};
     const SegmentKernel computeSegments = kernels(simd).segments;
     // Chunks of pixels in parallel: each decides its own pixels (writing only their bytes),
     // computes the lit ones' segments a vector at a time and keeps, in pixel order, those
@@ -72,7 +73,7 @@ Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal,
         computeSegments(constants, batch.points(), uint32_t(lit), batch.segments());
         kept[c].reserve(lit);
         for (size_t n = 0; n < lit; ++n) {
-            if (batch.column[9][n] > 0.0) kept[c].push_back(batch.receiver(n));
+            if (batch.tFar(n) > 0.0) kept[c].push_back(batch.receiver(n));
         }
     });
     std::vector<size_t> first(chunks + 1, 0);
