@@ -79,7 +79,7 @@ int cascadeOf(const std::vector<Cascade>& cascades, double depth) {
 }
 
 std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const GBuffer& g, const WorldGeometry& world,
-                                 const CascadeSettings& s) {
+                                 const CascadeSettings& s, raster::SimdLevel simd) {
     if (sun.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
     double n = camera.zNear, f = camera.zFar;
     if (s.sampleBounds) {
@@ -100,7 +100,7 @@ std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const G
     const glm::dvec3 up = std::abs(towardsLight.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
     const glm::dmat4 lightFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, up);
     LightFitOptions options;
-    options.resolution = s.resolution, options.marginTexels = s.marginTexels, options.simd = s.simd;
+    options.resolution = s.resolution, options.marginTexels = s.marginTexels, options.simd = simd;
     for (int k = 0; k < s.count; ++k) {
         Cascade& c = cascades[k];
         const GBuffer receivers = cascadeReceivers(g, camera, cascades, k);

@@ -41,7 +41,6 @@ struct CascadeSettings {
     bool snap = true;
     int resolution = 2048;
     double marginTexels = 2.0;      // receivers stay this far inside (filter footprints, snapping)
-    raster::SimdLevel simd = raster::bestSimdLevel();   // for fitting each cascade's depth range
 };
 
 struct Cascade {
@@ -55,8 +54,9 @@ double viewDepth(const Camera& camera, const glm::dvec3& P);
 // The cascade whose slice holds that distance (the first or last beyond the ends).
 int cascadeOf(const std::vector<Cascade>& cascades, double depth);
 
-// Throws std::invalid_argument for a light that is not directional or no receivers.
+// Throws std::invalid_argument for a light that is not directional or no receivers. `simd`
+// picks light-view fitting's kernel (LightFitOptions::simd); every level gives the same views.
 std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const GBuffer& receivers,
-                                 const WorldGeometry& world, const CascadeSettings& settings);
+                                 const WorldGeometry& world, const CascadeSettings& settings, raster::SimdLevel simd);
 
 }  // namespace shadowlab

@@ -75,9 +75,7 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
 CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffer& receivers, const WorldGeometry& world,
                             const CascadeSettings& cascades, const DepthMapSettings& maps, raster::SimdLevel simd) {
     CascadedMaps out;
-    CascadeSettings fitted = cascades;
-    fitted.simd = simd;
-    out.cascades = fitCascades(sun, camera, receivers, world, fitted);
+    out.cascades = fitCascades(sun, camera, receivers, world, cascades, simd);
     out.maps.resize(out.cascades.size());
     for (size_t k = 0; k < out.cascades.size(); ++k) {
         if (out.cascades[k].hasReceivers) out.maps[k] = renderDepthMap(world, out.cascades[k].view, maps, simd);

@@ -116,7 +116,7 @@ TEST_CASE("csm: sample bounds put the splits around the receivers, on the 2^(1/8
         nearest = std::min(nearest, depth), farthest = std::max(farthest, depth);
     }
     CascadeSettings settings;   // sample bounds, the default
-    const std::vector<Cascade> cascades = fitCascades(scene.lights[0], scene.camera, g, world, settings);
+    const std::vector<Cascade> cascades = fitCascades(scene.lights[0], scene.camera, g, world, settings, raster::bestSimdLevel());
     const double n = cascades.front().nearDistance, f = cascades.back().farDistance;
     const double step = std::exp2(1.0 / 8.0);
     CHECK(n <= nearest);
@@ -127,7 +127,7 @@ TEST_CASE("csm: sample bounds put the splits around the receivers, on the 2^(1/8
     // Every cascade has receivers: none is wasted on empty depth, as camera bounds would.
     for (const Cascade& c : cascades) CHECK(c.hasReceivers);
     settings.sampleBounds = false;
-    const std::vector<Cascade> camera = fitCascades(scene.lights[0], scene.camera, g, world, settings);
+    const std::vector<Cascade> camera = fitCascades(scene.lights[0], scene.camera, g, world, settings, raster::bestSimdLevel());
     CHECK_FALSE(camera.back().hasReceivers);
 }
 
