@@ -15,21 +15,15 @@
 #include "scenes/scene_file.h"
 #include "shadows/light_view.h"
 #include "shadows/receiver_bounds.h"
+#include "tests/raster/raster_test_util.h"
 
 using namespace shadowlab;
 
 namespace {
 
-std::vector<raster::SimdLevel> vectorLevels() {
-    std::vector<raster::SimdLevel> levels;
-    for (raster::SimdLevel l : {raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
-        if (raster::simdLevelSupported(l)) levels.push_back(l);
-    }
-    return levels;
-}
-
+// Every level's kernels, chosen as light_view.cpp chooses them.
 const BoundsKernels& kernelsOf(raster::SimdLevel level) {
-    return level == raster::SimdLevel::Avx2 ? boundsKernelsAvx2() : boundsKernelsAvx512();
+    return raster::forSimdLevel(level, boundsKernelsScalar, boundsKernelsAvx2, boundsKernelsAvx512);
 }
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -69,7 +63,7 @@ TEST_CASE("receiver bounds: the scalar twin is glm's double expression, every SI
             CHECK(sameBits(scalar.hi[c], expected.hi[c]));
         }
         CHECK_FALSE(scalar.behindApex);
-        for (raster::SimdLevel level : vectorLevels()) {
+        for (raster::SimdLevel level : test::supportedLevels()) {
             CAPTURE(raster::simdLevelName(level));
             const BoundsKernels& k = kernelsOf(level);
             const size_t body = n / size_t(k.width) * size_t(k.width);
@@ -90,10 +84,10 @@ TEST_CASE("receiver bounds: the scalar twin is glm's double expression, every SI
         BoundsResult scalar = emptyBounds();
         boundsKernelsScalar().space[kPerspectiveView]({p, served.data(), n, glm::value_ptr(view)}, scalar);
         CHECK(scalar.behindApex == bool(flag));
-        for (raster::SimdLevel level : vectorLevels()) {
+        for (raster::SimdLevel level : test::supportedLevels()) {
             const BoundsKernels& k = kernelsOf(level);
             BoundsResult vector = emptyBounds();
-            k.space[kPerspectiveView]({p, served.data(), size_t(k.width) * 4, glm::value_ptr(view)}, vector);
+            k.space[kPerspectiveView]({p, served.data(), n / size_t(k.width) * size_t(k.width), glm::value_ptr(view)}, vector);
             CHECK(vector.behindApex == bool(flag));
         }
     }
@@ -116,7 +110,7 @@ TEST_CASE("fitLightView gives the same view at every SIMD level, for point, spot
         LightFitOptions options;
         options.simd = raster::SimdLevel::Scalar;
         const LightView scalar = fitLightView(light, g, world, options);
-        for (raster::SimdLevel level : vectorLevels()) {
+        for (raster::SimdLevel level : test::supportedLevels()) {
             options.simd = level;
             const LightView other = fitLightView(light, g, world, options);
             CHECK(std::memcmp(glm::value_ptr(other.viewFromWorld), glm::value_ptr(scalar.viewFromWorld), 16 * sizeof(double)) == 0);

@@ -15,18 +15,13 @@
 #include "scenes/scene_file.h"
 #include "shadows/izb/izb.h"
 #include "shadows/ray_offset.h"
+#include "tests/raster/raster_test_util.h"
 
 using namespace shadowlab;
 
-namespace {
+using test::supportedLevels;
 
-std::vector<raster::SimdLevel> supportedLevels() {
-    std::vector<raster::SimdLevel> levels;
-    for (raster::SimdLevel l : {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
-        if (raster::simdLevelSupported(l)) levels.push_back(l);
-    }
-    return levels;
-}
+namespace {
 
 // Points on a 10 m scene, some far outside it (so max |P_k| sets the offset), unit normals;
 // a few within a hair of the point light (no segment left).
@@ -66,7 +61,7 @@ TEST_CASE("izb segments kernel: every SIMD level gives the scalar twin's bits, w
     for (const glm::dvec4 light : {glm::dvec4(1.5, 6.0, -2.0, 1.0), glm::dvec4(glm::normalize(glm::dvec3(0.3, 1.0, 0.2)), 0.0)}) {
         CAPTURE(light.w);
         const PointSet points(n, glm::dvec3(light), rng);
-        const izb::SegmentConstants constants{{light.x, light.y, light.z, light.w}, diagonal, shadowRayOffset(glm::vec3(0.0f), 1.0)};
+        const izb::SegmentConstants constants{{light.x, light.y, light.z, light.w}, diagonal, kShadowRayOffsetPerScale};
         SegmentSet scalar(n);
         izb::kernelsScalar().segments(constants, points.points(), uint32_t(n), scalar.segments());
         size_t noSegment = 0;
