@@ -191,6 +191,15 @@ struct PixelRect {
 inline I32 blockLaneX(int v) { return (simd::splat(int32_t(v * simd::kWidth)) + simd::laneIndex()) & simd::splat(int32_t(kBlockSize - 1)); }
 inline I32 blockLaneY(int v) { return simd::shiftRight<kBlockShift>(simd::splat(int32_t(v * simd::kWidth)) + simd::laneIndex()); }
 
+// The vectors of a block that hold its rows [rowFirst, rowEnd): a triangle a row or two
+// high (most of a dense mesh's) pays only for the vectors its rows lie in.
+struct VectorRange {
+    int first, end;
+};
+inline VectorRange vectorsOfRows(int rowFirst, int rowEnd) {
+    return {rowFirst * kBlockSize / simd::kWidth, (rowEnd * kBlockSize + simd::kWidth - 1) / simd::kWidth};
+}
+
 inline Mask insideRect(I32 x, I32 y, const PixelRect& r) {
     return simd::cmpGt(x, simd::splat(int32_t(r.x0 - 1))) & simd::cmpGt(simd::splat(int32_t(r.x1)), x) &
            simd::cmpGt(y, simd::splat(int32_t(r.y0 - 1))) & simd::cmpGt(simd::splat(int32_t(r.y1)), y);
@@ -227,9 +236,10 @@ uint64_t rasterizeBlock(const TileTriangle& t, int blockX, int blockY, size_t bl
     const PixelRect& region = t.region;
     const bool blockInsideRegion = blockX >= region.x0 && blockX + kBlockSize <= region.x1 &&
                                    blockY >= region.y0 && blockY + kBlockSize <= region.y1;
+    const VectorRange rows = vectorsOfRows(maxInt(region.y0 - blockY, 0), minInt(region.y1 - blockY, kBlockSize));
     const I32 minusOne = simd::splat(int32_t(-1));
     uint64_t fragments = 0;
-    for (int v = 0; v < kPixelsPerBlock / simd::kWidth; ++v) {
+    for (int v = rows.first; v < rows.end; ++v) {
         Mask covered = simd::allLanes();
         for (int k = 0; k < edgeCount; ++k) {
             covered = covered & simd::cmpGt(simd::splat(atBlock[k]) + edges[k]->laneOffset[v], minusOne);
@@ -251,6 +261,11 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const Draw
                               minInt(tri.maxX, tileX + kTileSize), minInt(tri.maxY, tileY + kTileSize)};
     if (region.x0 >= region.x1 || region.y0 >= region.y1) return;
 
+    // The lane offsets of the vectors the blocks will test: within one row of blocks, the
+    // vectors of the region's rows (rasterizeBlock tests no others).
+    const int blockRowY = region.y0 & ~(kBlockSize - 1);
+    const VectorRange vectors = region.y1 - blockRowY <= kBlockSize ? vectorsOfRows(region.y0 - blockRowY, region.y1 - blockRowY)
+                                                                    : vectorsOfRows(0, kBlockSize);
     // Tile test in int64 over the region's extreme corners (fixed_point.h, range argument).
     CrossingEdge edges[3];
     int edgeCount = 0;
@@ -262,7 +277,7 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const Draw
         if (lowest >= 0) continue;
         CrossingEdge& e = edges[edgeCount++];
         e.a = int32_t(a), e.b = int32_t(b), e.atTile = int32_t(c + a * tileX + b * tileY);
-        for (int v = 0; v < kPixelsPerBlock / simd::kWidth; ++v) {
+        for (int v = vectors.first; v < vectors.end; ++v) {
             e.laneOffset[v] = simd::splat(e.a) * blockLaneX(v) + simd::splat(e.b) * blockLaneY(v);
         }
     }
