@@ -89,18 +89,38 @@ void setupEdges(const SetupVertex c[3], int64_t sign, bool conservative, Triangl
     }
 }
 
-// The affine function of window (x, y) taking values q[k] at the three vertices, evaluated
-// in double and handed to the kernels as float at the centre of the reference pixel.
-Plane planeThrough(const SetupVertex c[3], const double q[3], int32_t refX, int32_t refY, double offset = 0.0) {
-    const WindowVertex *v0 = &c[0].window, *v1 = &c[1].window, *v2 = &c[2].window;
-    const double x0 = v0->x / double(kSubpixelOne), y0 = v0->y / double(kSubpixelOne);
-    const double x1 = v1->x / double(kSubpixelOne) - x0, y1 = v1->y / double(kSubpixelOne) - y0;
-    const double x2 = v2->x / double(kSubpixelOne) - x0, y2 = v2->y / double(kSubpixelOne) - y0;
-    const double inverseDet = 1.0 / (x1 * y2 - x2 * y1);
-    const double perX = ((q[1] - q[0]) * y2 - (q[2] - q[0]) * y1) * inverseDet;
-    const double perY = ((q[2] - q[0]) * x1 - (q[1] - q[0]) * x2) * inverseDet;
-    const double atRef = q[0] + perX * (refX + 0.5 - x0) + perY * (refY + 0.5 - y0) + offset;
-    return {float(atRef), float(perX), float(perY)};
+// What every attribute's plane over one triangle shares: the base vertex and the other two
+// relative to it, in pixels, the inverse of their determinant, and the reference pixel.
+struct PlaneBasis {
+    double x0, y0, x1, y1, x2, y2, inverseDet;
+    int32_t refX, refY;
+};
+
+PlaneBasis planeBasis(const SetupVertex c[3], int32_t refX, int32_t refY) {
+    PlaneBasis b;
+    b.x0 = c[0].window.x / double(kSubpixelOne), b.y0 = c[0].window.y / double(kSubpixelOne);
+    b.x1 = c[1].window.x / double(kSubpixelOne) - b.x0, b.y1 = c[1].window.y / double(kSubpixelOne) - b.y0;
+    b.x2 = c[2].window.x / double(kSubpixelOne) - b.x0, b.y2 = c[2].window.y / double(kSubpixelOne) - b.y0;
+    b.inverseDet = 1.0 / (b.x1 * b.y2 - b.x2 * b.y1);
+    b.refX = refX, b.refY = refY;
+    return b;
+}
+
+// The affine function of window (x, y) taking values q[k] at the three vertices, in double:
+// its value at the centre of the reference pixel and its slopes.
+struct DoublePlane {
+    double atRef, perX, perY;
+};
+
+DoublePlane planeThrough(const PlaneBasis& b, const double q[3]) {
+    const double perX = ((q[1] - q[0]) * b.y2 - (q[2] - q[0]) * b.y1) * b.inverseDet;
+    const double perY = ((q[2] - q[0]) * b.x1 - (q[1] - q[0]) * b.x2) * b.inverseDet;
+    return {q[0] + perX * (b.refX + 0.5 - b.x0) + perY * (b.refY + 0.5 - b.y0), perX, perY};
+}
+
+// As the kernels take it: float, with `offset` added in double first.
+Plane toKernelPlane(const DoublePlane& p, double offset = 0.0) {
+    return {float(p.atRef + offset), float(p.perX), float(p.perY)};
 }
 
 // OpenGL 4.6 section 14.6.5: factor * max slope + units * r, where for a float depth
@@ -116,20 +136,21 @@ double polygonOffset(const PolygonOffset& offset, double maxDepth, const Plane& 
 
 void setupPlanes(const SetupVertex v[3], double maxDepth, const SetupContext& context, TriangleSetup& out,
                  std::vector<Plane>& planes) {
+    const PlaneBasis basis = planeBasis(v, out.minX, out.minY);
     const double z[3] = {v[0].window.z, v[1].window.z, v[2].window.z};
-    out.depth = planeThrough(v, z, out.minX, out.minY);
-    // The offset needs the slope, so the plane is found first; it is then rebuilt with the
-    // offset added in double, rather than adding the offset to the float plane.
-    const double offset = polygonOffset(context.state->offset, maxDepth, out.depth);
-    if (offset != 0.0) out.depth = planeThrough(v, z, out.minX, out.minY, offset);
+    const DoublePlane depth = planeThrough(basis, z);
+    // The offset takes the slope of the float plane, and is added to the depth in double,
+    // not to the float plane.
+    out.depth = toKernelPlane(depth);
+    out.depth = toKernelPlane(depth, polygonOffset(context.state->offset, maxDepth, out.depth));
     if (context.state->output != FragmentOutput::VaryingColor) return;
     // Perspective-correct interpolation: 1/w and a/w are affine in window space.
     const double inverseW[3] = {v[0].window.inverseW, v[1].window.inverseW, v[2].window.inverseW};
-    planes.push_back(planeThrough(v, inverseW, out.minX, out.minY));
+    planes.push_back(toKernelPlane(planeThrough(basis, inverseW)));
     for (int k = 0; k < context.varyingCount; ++k) {
         const double q[3] = {v[0].varyings[k] * inverseW[0], v[1].varyings[k] * inverseW[1],
                              v[2].varyings[k] * inverseW[2]};
-        planes.push_back(planeThrough(v, q, out.minX, out.minY));
+        planes.push_back(toKernelPlane(planeThrough(basis, q)));
     }
 }
 
