@@ -45,17 +45,14 @@ const LightPass& lightPass() {
 }
 
 // The front end up to setup, on one thread, for triangles that need no clipping.
-SetupChunk setUp(const LightPass& p, const TransformedVertices& v) {
+SetupChunk setUp(const LightPass& p, const TransformedVertices& v, SimdLevel level = bestSimdLevel()) {
     SetupChunk chunk;
-    const SetupContext context = {kMapSize, kMapSize, &p.state, 0};
+    SetupQueue queue(tileKernels(level).setup, setupConstants(kMapSize, kMapSize, p.state, 0), chunk);
     for (const glm::uvec3& t : p.world.triangles) {
         if ((v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) != 0) continue;
-        TriangleSetup s;
-        if (setupTriangle({{v.window[t.x], nullptr}, {v.window[t.y], nullptr}, {v.window[t.z], nullptr}}, {0, 1.0}, context, s, chunk.planes)) {
-            chunk.triangles.push_back(s);
-            chunk.planeStart.push_back(0);
-        }
+        queue.push({{v.window[t.x], nullptr}, {v.window[t.y], nullptr}, {v.window[t.z], nullptr}}, {0, 1.0});
     }
+    queue.flush();
     return chunk;
 }
 
@@ -70,14 +67,21 @@ void BM_VertexStage(benchmark::State& state) {
     state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(p.world.positions.size()));
 }
 
+// Setup on one thread; argument: SIMD level.
 void BM_Setup(benchmark::State& state) {
+    const auto level = SimdLevel(state.range(0));
+    if (!simdLevelSupported(level)) {
+        state.SkipWithError("SIMD level not supported on this CPU");
+        return;
+    }
     const LightPass& p = lightPass();
     TransformedVertices v;
     transformVertices(std::span<const glm::vec3>(p.world.positions), p.clipFromWorld, p.viewport, v);
     for (auto _ : state) {
-        SetupChunk chunk = setUp(p, v);
+        SetupChunk chunk = setUp(p, v, level);
         benchmark::DoNotOptimize(chunk.triangles.data());
     }
+    state.SetLabel(simdLevelName(level));
     state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(p.world.triangles.size()));
 }
 
@@ -281,7 +285,7 @@ void fillRateSizes(benchmark::internal::Benchmark* b) {
 }  // namespace
 
 BENCHMARK(BM_VertexStage)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Setup)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Setup)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Binning)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RasterTiles)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);

@@ -19,7 +19,7 @@ namespace shadowlab::raster {
 struct SetupChunk {
     std::vector<TriangleSetup> triangles;
     std::vector<Plane> planes;            // varying planes, referenced by index until binning
-    std::vector<uint32_t> planeStart;     // per triangle, its first plane in `planes`
+    std::vector<uint32_t> planeStart;     // per triangle, its first plane (empty when no planes)
     std::vector<uint32_t> tileCounts;     // per tile, triangles touching it
     size_t entryCount = 0;                // sum of tileCounts
 };

@@ -12,9 +12,10 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/triangle_setup.h"
+
 namespace shadowlab::raster {
 
-inline constexpr int kMaxVaryings = 8;
 // In exact arithmetic a triangle clipped by six planes keeps at most 3 + 6 vertices; in
 // floating point a polygon lying almost in a plane can cross it more often. Clipping
 // drops a polygon that would outgrow this capacity (only such slivers can).

@@ -9,9 +9,10 @@
 //    are clipped against guard-band planes in clip space (raster/clip.cpp), so every snapped
 //    coordinate lies within +-(4096 + 8192) pixels < 2^14 pixels = 2^22 sub-pixel units;
 //  * an edge coefficient (a difference of two coordinates) is then below 2^23, and the
-//    edge constant (a 2x2 determinant) below 2^46: setup works in int64;
+//    edge constant (a 2x2 determinant) below 2^46: integers that setup's double lanes
+//    hold exactly (setup_triangles.inl);
 //  * per pixel, the edge function is evaluated in pixel units, e = A*i + B*j + c (see
-//    setup.cpp for the exact reduction). An edge is tested per pixel only inside a tile
+//    setup_triangles.inl for the exact reduction). An edge is tested per pixel only inside a tile
 //    where it takes both signs over the triangle's pixels, so anywhere in that 64x64 tile
 //    (its origin, its blocks' corners, its pixels) e stays within twice its variation
 //    across the tile: |e| <= 2 * 63 * (|A| + |B|) < 2^31. The per-pixel tests therefore run

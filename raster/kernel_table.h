@@ -1,7 +1,9 @@
-// The table of tile kernels one instruction set provides (one per fragment output and
-// stencil use). Plain declarations only: the per-ISA translation units include it.
+// The rasterizer's kernels one instruction set provides: triangle setup, and a tile kernel
+// per fragment output and stencil use. Plain declarations only: the per-ISA translation
+// units include it.
 #pragma once
 
+#include "raster/setup_kernel.h"
 #include "raster/triangle_setup.h"
 
 namespace shadowlab::raster {
@@ -13,8 +15,10 @@ using TileKernel = void (*)(const TriangleSetup&, int tileIndex, const DrawConst
 
 inline constexpr int kFragmentOutputCount = 4;
 
-// One kernel per fragment output and stencil use, compiled for one instruction set.
+// Compiled for one instruction set: setup, and one tile kernel per fragment output and
+// stencil use.
 struct TileKernels {
+    SetupKernel setup;
     TileKernel kernel[kFragmentOutputCount][2];
 };
 

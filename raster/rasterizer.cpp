@@ -20,15 +20,6 @@ namespace {
 constexpr size_t kChunkTriangles = 4096;
 constexpr size_t kChunksPerBatch = 64;
 
-void addSetup(SetupChunk& chunk, const SetupVertex (&corners)[3], const Primitive& primitive,
-              const SetupContext& context) {
-    TriangleSetup setup;
-    const auto firstPlane = uint32_t(chunk.planes.size());
-    if (!setupTriangle(corners, primitive, context, setup, chunk.planes)) return;
-    chunk.triangles.push_back(setup);
-    chunk.planeStart.push_back(firstPlane);
-}
-
 const float* varyingsOf(const VertexStream& stream, uint32_t index) {
     return stream.varyingCount == 0 ? nullptr : stream.varyings.data() + size_t(index) * size_t(stream.varyingCount);
 }
@@ -65,8 +56,8 @@ glm::uvec3 canonicalIndexOrder(const glm::uvec3& t, const TransformedVertices& v
 // The slow path, for a triangle with a vertex outside the guard band, near or far plane,
 // or one that cannot be projected: clip it, then set up the fan of triangles the clipped
 // polygon forms, all with the polygon's largest depth for the polygon offset.
-void clipAndSetup(SetupChunk& chunk, const TransformedVertices& v, const VertexStream& stream, const glm::uvec3& triangle,
-                  uint32_t id, const Viewport& viewport, const SetupContext& context) {
+void clipAndSetup(SetupQueue& queue, const TransformedVertices& v, const VertexStream& stream, const glm::uvec3& triangle,
+                  uint32_t id, const Viewport& viewport) {
     const glm::uvec3 t = canonicalIndexOrder(triangle, v);
     ClipVertex polygon[kMaxClippedVertices] = {clipVertex(v, stream, t.x), clipVertex(v, stream, t.y),
                                                clipVertex(v, stream, t.z)};
@@ -81,7 +72,7 @@ void clipAndSetup(SetupChunk& chunk, const TransformedVertices& v, const VertexS
         window[k] = {toWindow(polygon[k].position, viewport.width, viewport.height), polygon[k].varyings};
         primitive.maxDepth = std::max(primitive.maxDepth, std::abs(window[k].window.z));
     }
-    for (int k = 1; k + 1 < n; ++k) addSetup(chunk, {window[0], window[k], window[k + 1]}, primitive, context);
+    for (int k = 1; k + 1 < n; ++k) queue.push({window[0], window[k], window[k + 1]}, primitive);
 }
 
 Viewport viewportFor(const Framebuffer& fb, const PipelineState& state) {
@@ -124,12 +115,13 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
 
 void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& viewport, const PipelineState& state,
                              const DrawCall& call, size_t firstTriangle, size_t triangleCount, size_t chunkCount) {
-    const SetupContext context = {framebuffer.width(), framebuffer.height(), &state, call.vertices.varyingCount};
+    const SetupConstants constants = setupConstants(framebuffer.width(), framebuffer.height(), state, call.vertices.varyingCount);
     tbb::parallel_for(size_t(0), chunkCount, [&](size_t c) {
         SetupChunk& chunk = chunks_[c];
         RasterStats& stats = chunkStats_[c];
         chunk.triangles.clear(), chunk.planes.clear(), chunk.planeStart.clear();
         stats = {};
+        SetupQueue queue(kernels_->setup, constants, chunk);
         const size_t begin = firstTriangle + c * kChunkTriangles;
         const size_t end = std::min(begin + kChunkTriangles, firstTriangle + triangleCount);
         const TransformedVertices& v = vertices_;
@@ -140,13 +132,14 @@ void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& vie
                 ++stats.trianglesTriviallyRejected;   // wholly outside one side of the view volume
             } else if ((v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) == 0) {
                 const double maxDepth = std::max({std::abs(v.window[t.x].z), std::abs(v.window[t.y].z), std::abs(v.window[t.z].z)});
-                addSetup(chunk, {{v.window[t.x], varyingsOf(call.vertices, t.x)}, {v.window[t.y], varyingsOf(call.vertices, t.y)},
-                                 {v.window[t.z], varyingsOf(call.vertices, t.z)}}, {id, maxDepth}, context);
+                queue.push({{v.window[t.x], varyingsOf(call.vertices, t.x)}, {v.window[t.y], varyingsOf(call.vertices, t.y)},
+                            {v.window[t.z], varyingsOf(call.vertices, t.z)}}, {id, maxDepth});
             } else {
                 ++stats.trianglesClipped;
-                clipAndSetup(chunk, v, call.vertices, t, id, viewport, context);
+                clipAndSetup(queue, v, call.vertices, t, id, viewport);
             }
         }
+        queue.flush();
         countTiles(chunk, framebuffer.tilesX(), framebuffer.tilesY());
     });
 }

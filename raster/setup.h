@@ -1,21 +1,17 @@
-// Triangle setup: perspective divide, viewport, snapping to fixed point, culling, the
-// integer edge functions with the top-left rule, pixel bounds, and the depth and varying
-// planes. Everything that decides coverage is integer; see fixed_point.h for the ranges.
+// Triangle setup as the front end drives it: triangles are queued in submission order, set
+// up kSetupBatchSize at a time by the kernel of the draw's SIMD level (setup_kernel.h,
+// setup_triangles.inl: culling, snapping's consequences, edge functions, planes), and the
+// survivors appended to the chunk the front end is filling.
 #pragma once
 
-#include <vector>
+#include <cstdint>
 
+#include "raster/bin.h"
 #include "raster/pipeline_state.h"
-#include "raster/triangle_setup.h"
+#include "raster/setup_kernel.h"
 #include "raster/window.h"
 
 namespace shadowlab::raster {
-
-struct SetupContext {
-    int width, height;
-    const PipelineState* state;
-    int varyingCount;
-};
 
 // A triangle corner after the viewport transform, with its varyings (null when none).
 struct SetupVertex {
@@ -31,11 +27,22 @@ struct Primitive {
     double maxDepth;
 };
 
-// Sets up one triangle. Returns false when it is culled, degenerate after snapping, or its
-// pixel bounds hold no pixel centre (no pixel at all, in conservative mode). Its varying
-// planes are appended to `planes`; `out.varyings` is left for the caller to point at them
-// once `planes` stops growing.
-bool setupTriangle(const SetupVertex (&corners)[3], const Primitive& primitive, const SetupContext& context,
-                   TriangleSetup& out, std::vector<Plane>& planes);
+// Varying planes are set up only for a draw that interpolates them.
+SetupConstants setupConstants(int width, int height, const PipelineState& state, int varyingCount);
+
+class SetupQueue {
+public:
+    SetupQueue(SetupKernel kernel, const SetupConstants& constants, SetupChunk& chunk);
+    void push(const SetupVertex (&corners)[3], const Primitive& primitive);
+    // Sets up the queued triangles; call before reading the chunk.
+    void flush();
+
+private:
+    SetupKernel kernel_;
+    SetupConstants constants_;
+    SetupChunk& chunk_;
+    SetupBatch batch_{};   // zeroed once, so lanes past a short batch's count hold numbers
+    SetupOutput output_;
+};
 
 }  // namespace shadowlab::raster

@@ -294,9 +294,10 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const Draw
     }
 }
 
+// The level's table: setup (setup_triangles.inl, included before this file) and the tiles.
 inline const TileKernels& kernels() {
     using O = FragmentOutput;
-    static const TileKernels table = {{
+    static const TileKernels table = {&setupTriangles, {
         {&rasterizeTriangleInTile<O::DepthOnly, false>, &rasterizeTriangleInTile<O::DepthOnly, true>},
         {&rasterizeTriangleInTile<O::PrimitiveId, false>, &rasterizeTriangleInTile<O::PrimitiveId, true>},
         {&rasterizeTriangleInTile<O::ConstantColor, false>, &rasterizeTriangleInTile<O::ConstantColor, true>},

@@ -1,4 +1,4 @@
-// What triangle setup (setup.cpp) hands to the tile kernels: integer edge functions,
+// What triangle setup (setup_triangles.inl) hands to the tile kernels: integer edge functions,
 // the pixel bounds, and float planes for depth and varyings. Plain data only, because
 // the per-ISA kernels (tile_raster.inl) include it.
 #pragma once
@@ -10,6 +10,9 @@
 #include "raster/pipeline_state.h"
 
 namespace shadowlab::raster {
+
+// Values a vertex carries besides its position, interpolated perspective-correctly.
+inline constexpr int kMaxVaryings = 8;
 
 // An attribute that varies affinely across the screen: value at the centre of the
 // reference pixel (minX, minY) and its change per pixel step in x and in y.

@@ -87,7 +87,7 @@ inline int countLanes(Mask a) { return __builtin_popcount(unsigned(_mm256_movema
 inline F32 select(Mask m, F32 a, F32 b) { return {_mm256_blendv_ps(b.v, a.v, _mm256_castsi256_ps(m.v))}; }
 inline I32 select(Mask m, I32 a, I32 b) { return {_mm256_blendv_epi8(b.v, a.v, m.v)}; }
 
-// ---- Doubles, for exact tests (shadows/izb): kWidth64 lanes with their own mask ----
+// ---- Doubles, for exact work (setup, shadows/izb): kWidth64 lanes with their own mask ----
 inline constexpr int kWidth64 = 4;
 struct F64 { __m256d v; };
 struct Mask64 { __m256d v; };   // all bits of a true lane set
@@ -130,10 +130,13 @@ inline double reduceMax(F64 a) {
 }
 inline F64 sqrt(F64 a) { return {_mm256_sqrt_pd(a.v)}; }
 inline F64 roundToFloat(F64 a) { return {_mm256_cvtps_pd(_mm256_cvtpd_ps(a.v))}; }
+inline F64 floor(F64 a) { return {_mm256_round_pd(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)}; }
+inline F64 binade(F64 a) { return {_mm256_and_pd(a.v, _mm256_castsi256_pd(_mm256_set1_epi64x(0x7ff0000000000000ll)))}; }
 inline void store(double* p, F64 a) { _mm256_storeu_pd(p, a.v); }
 inline Mask64 cmpLt(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
 inline Mask64 cmpLe(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)}; }
 inline Mask64 cmpNe(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_NEQ_UQ)}; }
+inline Mask64 cmpEq(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ)}; }
 inline Mask64 operator&(Mask64 a, Mask64 b) { return {_mm256_and_pd(a.v, b.v)}; }
 inline Mask64 operator!(Mask64 a) { return {_mm256_xor_pd(a.v, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)))}; }
 // The first n lanes (n >= 0).

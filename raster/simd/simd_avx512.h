@@ -88,7 +88,7 @@ inline int countLanes(Mask a) { return __builtin_popcount(unsigned(a.v)); }
 inline F32 select(Mask m, F32 a, F32 b) { return {_mm512_mask_blend_ps(m.v, b.v, a.v)}; }
 inline I32 select(Mask m, I32 a, I32 b) { return {_mm512_mask_blend_epi32(m.v, b.v, a.v)}; }
 
-// ---- Doubles, for exact tests (shadows/izb): kWidth64 lanes with their own mask ----
+// ---- Doubles, for exact work (setup, shadows/izb): kWidth64 lanes with their own mask ----
 inline constexpr int kWidth64 = 8;
 struct F64 { __m512d v; };
 struct Mask64 { __mmask8 v; };
@@ -124,10 +124,15 @@ inline double reduceMin(F64 a) { return _mm512_reduce_min_pd(a.v); }
 inline double reduceMax(F64 a) { return _mm512_reduce_max_pd(a.v); }
 inline F64 sqrt(F64 a) { return {_mm512_sqrt_pd(a.v)}; }
 inline F64 roundToFloat(F64 a) { return {_mm512_cvtps_pd(_mm512_cvtpd_ps(a.v))}; }
+inline F64 floor(F64 a) { return {_mm512_roundscale_pd(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)}; }
+inline F64 binade(F64 a) {
+    return {_mm512_castsi512_pd(_mm512_and_si512(_mm512_castpd_si512(a.v), _mm512_set1_epi64(0x7ff0000000000000ll)))};
+}
 inline void store(double* p, F64 a) { _mm512_storeu_pd(p, a.v); }
 inline Mask64 cmpLt(F64 a, F64 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LT_OQ)}; }
 inline Mask64 cmpLe(F64 a, F64 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LE_OQ)}; }
 inline Mask64 cmpNe(F64 a, F64 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_NEQ_UQ)}; }
+inline Mask64 cmpEq(F64 a, F64 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_EQ_OQ)}; }
 inline Mask64 operator&(Mask64 a, Mask64 b) { return {__mmask8(a.v & b.v)}; }
 inline Mask64 operator!(Mask64 a) { return {__mmask8(~a.v)}; }
 // The first n lanes (n >= 0).

@@ -72,7 +72,7 @@ inline int countLanes(Mask a) { return a.v ? 1 : 0; }
 inline F32 select(Mask m, F32 a, F32 b) { return m.v ? a : b; }
 inline I32 select(Mask m, I32 a, I32 b) { return m.v ? a : b; }
 
-// ---- Doubles, for exact tests (shadows/izb): kWidth64 lanes with their own mask ----
+// ---- Doubles, for exact work (setup, shadows/izb): kWidth64 lanes with their own mask ----
 inline constexpr int kWidth64 = 1;
 struct F64 { double v; };
 struct Mask64 { bool v; };
@@ -99,10 +99,16 @@ inline double reduceMax(F64 a) { return a.v; }
 inline F64 sqrt(F64 a) { return {__builtin_sqrt(a.v)}; }
 // Rounded to the nearest float and widened back: the value a float variable would hold.
 inline F64 roundToFloat(F64 a) { return {double(float(a.v))}; }
+inline F64 floor(F64 a) { return {__builtin_floor(a.v)}; }
+// 2^e for a = m 2^e, 1 <= |m| < 2 (a normal, positive): a with its mantissa bits cleared.
+inline F64 binade(F64 a) {
+    return {__builtin_bit_cast(double, __builtin_bit_cast(uint64_t, a.v) & 0x7ff0000000000000ull)};
+}
 inline void store(double* p, F64 a) { *p = a.v; }
 inline Mask64 cmpLt(F64 a, F64 b) { return {a.v < b.v}; }
 inline Mask64 cmpLe(F64 a, F64 b) { return {a.v <= b.v}; }
 inline Mask64 cmpNe(F64 a, F64 b) { return {a.v != b.v}; }
+inline Mask64 cmpEq(F64 a, F64 b) { return {a.v == b.v}; }
 inline Mask64 operator&(Mask64 a, Mask64 b) { return {a.v && b.v}; }
 inline Mask64 operator!(Mask64 a) { return {!a.v}; }
 // The first n lanes (n >= 0).
