@@ -125,8 +125,9 @@ void BM_RasterTiles(benchmark::State& state) {
         fb.clearDepth(1.0f);
         const FramebufferView view = fb.view();   // fills the whole map, as a full clear
         for (int tile = 0; tile < tiles * tiles; ++tile) {
+            const Tile at = tileAt(tile, tiles);
             for (size_t e = bins.start[size_t(tile)]; e < bins.start[size_t(tile) + 1]; ++e)
-                kernel(*bins.entries[e], tile, constants, view, fragments);
+                kernel(*bins.entries[e], at, constants, view, fragments);
         }
         benchmark::DoNotOptimize(view.depth);
     }

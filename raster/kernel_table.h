@@ -8,9 +8,18 @@
 
 namespace shadowlab::raster {
 
-// Rasterizes one triangle into one tile. tileIndex is row-major over tiles. Adds the
-// number of covered pixels (fragments, before any test) to `fragments`.
-using TileKernel = void (*)(const TriangleSetup&, int tileIndex, const DrawConstants&, const FramebufferView&,
+// A tile as the kernels address it: its index, row-major over tiles, and its first pixel.
+struct Tile {
+    int index, x, y;
+};
+
+inline Tile tileAt(int index, int tilesX) {
+    return {index, (index % tilesX) * kTileSize, (index / tilesX) * kTileSize};
+}
+
+// Rasterizes one triangle into one tile. Adds the number of covered pixels (fragments,
+// before any test) to `fragments`.
+using TileKernel = void (*)(const TriangleSetup&, const Tile& tile, const DrawConstants&, const FramebufferView&,
                             uint64_t& fragments);
 
 inline constexpr int kFragmentOutputCount = 4;

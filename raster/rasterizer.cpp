@@ -154,9 +154,10 @@ uint64_t Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& c
     tbb::parallel_for(0, tileCount, [&](int tile) {
         if (bins_.start[size_t(tile)] == bins_.start[size_t(tile) + 1]) return;
         framebuffer.fillPendingTile(tile);
+        const Tile at = tileAt(tile, framebuffer.tilesX());
         uint64_t fragments = 0;
         for (size_t e = bins_.start[size_t(tile)]; e < bins_.start[size_t(tile) + 1]; ++e) {
-            kernel(*bins_.entries[e], tile, constants, view, fragments);
+            kernel(*bins_.entries[e], at, constants, view, fragments);
         }
         tileFragments_[size_t(tile)] = fragments;
     });

@@ -254,9 +254,9 @@ uint64_t rasterizeBlock(const TileTriangle& t, int blockX, int blockY, size_t bl
 }
 
 template <FragmentOutput kOutput, bool kStencil>
-void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const DrawConstants& draw,
+void rasterizeTriangleInTile(const TriangleSetup& tri, const Tile& tile, const DrawConstants& draw,
                              const FramebufferView& fb, uint64_t& fragments) {
-    const int tileX = (tileIndex % fb.tilesX) * kTileSize, tileY = (tileIndex / fb.tilesX) * kTileSize;
+    const int tileX = tile.x, tileY = tile.y;
     const PixelRect region = {maxInt(tri.minX, tileX), maxInt(tri.minY, tileY),
                               minInt(tri.maxX, tileX + kTileSize), minInt(tri.maxY, tileY + kTileSize)};
     if (region.x0 >= region.x1 || region.y0 >= region.y1) return;
@@ -283,7 +283,7 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, int tileIndex, const Draw
     }
 
     const TileTriangle triangle{tri, draw, fb, edges, edgeCount, tileX, tileY, region};
-    const size_t tileOffset = size_t(tileIndex) * kPixelsPerTile;
+    const size_t tileOffset = size_t(tile.index) * kPixelsPerTile;
     for (int blockY = region.y0 & ~(kBlockSize - 1); blockY < region.y1; blockY += kBlockSize) {
         for (int blockX = region.x0 & ~(kBlockSize - 1); blockX < region.x1; blockX += kBlockSize) {
             const size_t blockIndex = size_t(((blockY - tileY) >> kBlockShift) * kBlocksPerTileSide +
