@@ -47,7 +47,7 @@ const LightPass& lightPass() {
 // The front end up to setup, on one thread, for triangles that need no clipping.
 SetupChunk setUp(const LightPass& p, const TransformedVertices& v, SimdLevel level = bestSimdLevel()) {
     SetupChunk chunk;
-    SetupQueue queue(tileKernels(level).setup, setupConstants(kMapSize, kMapSize, p.state, 0), chunk);
+    SetupQueue queue(rasterKernels(level).setup, setupConstants(kMapSize, kMapSize, p.state, 0), chunk);
     for (const glm::uvec3& t : p.world.triangles) {
         if ((v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) != 0) continue;
         queue.push({{v.window[t.x], nullptr}, {v.window[t.y], nullptr}, {v.window[t.z], nullptr}}, {0, 1.0});
@@ -119,7 +119,7 @@ void BM_RasterTiles(benchmark::State& state) {
     fillBins(chunks, 0, 1, tiles, tiles, bins);
     Framebuffer fb(kMapSize, kMapSize);
     const DrawConstants constants = {p.state, {1, 1, 1, 1}, 0};
-    const TileKernel kernel = tileKernels(level).kernel[int(FragmentOutput::DepthOnly)][0];
+    const TileKernel kernel = rasterKernels(level).kernel[int(FragmentOutput::DepthOnly)][0];
     uint64_t fragments = 0;
     for (auto _ : state) {
         fb.clearDepth(1.0f);

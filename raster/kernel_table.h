@@ -26,13 +26,13 @@ inline constexpr int kFragmentOutputCount = 4;
 
 // Compiled for one instruction set: setup, and one tile kernel per fragment output and
 // stencil use.
-struct TileKernels {
+struct RasterKernels {
     SetupKernel setup;
     TileKernel kernel[kFragmentOutputCount][2];
 };
 
-const TileKernels& tileKernelsScalar();
-const TileKernels& tileKernelsAvx2();
-const TileKernels& tileKernelsAvx512();
+const RasterKernels& rasterKernelsScalar();
+const RasterKernels& rasterKernelsAvx2();
+const RasterKernels& rasterKernelsAvx512();
 
 }  // namespace shadowlab::raster

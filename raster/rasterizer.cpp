@@ -82,7 +82,7 @@ Viewport viewportFor(const Framebuffer& fb, const PipelineState& state) {
 }  // namespace
 
 Rasterizer::Rasterizer(SimdLevel level, size_t binEntryBudget)
-    : level_(level), kernels_(&tileKernels(level)), binEntryBudget_(binEntryBudget) {}
+    : level_(level), kernels_(&rasterKernels(level)), binEntryBudget_(binEntryBudget) {}
 
 void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) const {
     const VertexStream& vs = call.vertices;

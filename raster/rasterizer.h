@@ -83,7 +83,7 @@ private:
     uint64_t runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel);
 
     SimdLevel level_;
-    const TileKernels* kernels_;
+    const RasterKernels* kernels_;
     size_t binEntryBudget_;
     TransformedVertices vertices_;
     std::vector<SetupChunk> chunks_;

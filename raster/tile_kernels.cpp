@@ -25,8 +25,8 @@ void requireSimdLevel(SimdLevel level) {
     }
 }
 
-const TileKernels& tileKernels(SimdLevel level) {
-    return forSimdLevel(level, tileKernelsScalar, tileKernelsAvx2, tileKernelsAvx512);
+const RasterKernels& rasterKernels(SimdLevel level) {
+    return forSimdLevel(level, rasterKernelsScalar, rasterKernelsAvx2, rasterKernelsAvx512);
 }
 
 const char* simdLevelName(SimdLevel level) {

@@ -1,4 +1,5 @@
-// The tile kernels compiled for each instruction set, and the choice between them.
+// The rasterizer's kernels (setup and tiles) compiled for each instruction set, and the
+// choice between them.
 #pragma once
 
 #include <string>
@@ -12,7 +13,7 @@ enum class SimdLevel { Scalar, Avx2, Avx512 };
 // The widest level this CPU runs, and the kernels of a level (which must be supported).
 SimdLevel bestSimdLevel();
 bool simdLevelSupported(SimdLevel level);
-const TileKernels& tileKernels(SimdLevel level);
+const RasterKernels& rasterKernels(SimdLevel level);
 
 // Throws std::invalid_argument naming the level unless this CPU supports it.
 void requireSimdLevel(SimdLevel level);

@@ -295,9 +295,9 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, const Tile& tile, const D
 }
 
 // The level's table: setup (setup_triangles.inl, included before this file) and the tiles.
-inline const TileKernels& kernels() {
+inline const RasterKernels& kernels() {
     using O = FragmentOutput;
-    static const TileKernels table = {&setupTriangles, {
+    static const RasterKernels table = {&setupTriangles, {
         {&rasterizeTriangleInTile<O::DepthOnly, false>, &rasterizeTriangleInTile<O::DepthOnly, true>},
         {&rasterizeTriangleInTile<O::PrimitiveId, false>, &rasterizeTriangleInTile<O::PrimitiveId, true>},
         {&rasterizeTriangleInTile<O::ConstantColor, false>, &rasterizeTriangleInTile<O::ConstantColor, true>},

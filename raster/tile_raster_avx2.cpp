@@ -13,5 +13,5 @@ namespace simd = shadowlab::simd_avx2;
 }  // namespace shadowlab::raster::isa_avx2
 
 namespace shadowlab::raster {
-const TileKernels& tileKernelsAvx2() { return isa_avx2::kernels(); }
+const RasterKernels& rasterKernelsAvx2() { return isa_avx2::kernels(); }
 }  // namespace shadowlab::raster

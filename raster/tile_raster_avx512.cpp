@@ -13,5 +13,5 @@ namespace simd = shadowlab::simd_avx512;
 }  // namespace shadowlab::raster::isa_avx512
 
 namespace shadowlab::raster {
-const TileKernels& tileKernelsAvx512() { return isa_avx512::kernels(); }
+const RasterKernels& rasterKernelsAvx512() { return isa_avx512::kernels(); }
 }  // namespace shadowlab::raster

@@ -13,5 +13,5 @@ namespace simd = shadowlab::simd_scalar;
 }  // namespace shadowlab::raster::isa_scalar
 
 namespace shadowlab::raster {
-const TileKernels& tileKernelsScalar() { return isa_scalar::kernels(); }
+const RasterKernels& rasterKernelsScalar() { return isa_scalar::kernels(); }
 }  // namespace shadowlab::raster

@@ -147,7 +147,7 @@ bool oracleSetup(const SetupBatch& batch, int t, const SetupConstants& k, Triang
 
 TEST_CASE("setup kernels: every SIMD level gives the scalar build's bytes, for every state and short batches") {
     std::mt19937 rng(7);
-    const SetupKernel scalar = tileKernels(SimdLevel::Scalar).setup;
+    const SetupKernel scalar = rasterKernels(SimdLevel::Scalar).setup;
     int compared = 0;
     for (const SetupConstants& k : constantCases()) {
         for (int count : {1, 5, 13, kSetupBatchSize}) {
@@ -156,7 +156,7 @@ TEST_CASE("setup kernels: every SIMD level gives the scalar build's bytes, for e
             scalar(batch, k, expected);
             for (SimdLevel level : test::supportedLevels()) {
                 SetupOutput got;
-                tileKernels(level).setup(batch, k, got);
+                rasterKernels(level).setup(batch, k, got);
                 CHECK_MESSAGE(sameBytes(got, expected, k.planeCount), simdLevelName(level));
                 compared += got.count;
             }
@@ -177,7 +177,7 @@ TEST_CASE("setup kernel: edges, bounds and planes equal the int64 and frexp/ldex
             }
             for (SimdLevel level : test::supportedLevels()) {
                 SetupOutput got;
-                tileKernels(level).setup(batch, k, got);
+                rasterKernels(level).setup(batch, k, got);
                 REQUIRE_MESSAGE(sameBytes(got, expected, k.planeCount), simdLevelName(level));
             }
             accepted += expected.count;
