@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -132,18 +133,52 @@ double nearestInside(const glm::dvec3 (&triangle)[3], const SidePlanes& sides) {
     return nearest;
 }
 
+glm::dvec3 inView(const WorldGeometry& world, const glm::dmat4& viewFromWorld, uint32_t vertex) {
+    return glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(world.positions[vertex]), 1.0));
+}
+
+// Each vertex once in the view: its depth (-z), and bit k set when it lies inside side plane
+// k, by the same expression nearestInside() evaluates.
+struct ViewVertices {
+    std::vector<double> depth;
+    std::vector<uint8_t> insideBits;
+};
+
+constexpr uint8_t kInsideAll = 0xf;
+
+ViewVertices viewVertices(const WorldGeometry& world, const glm::dmat4& viewFromWorld, const SidePlanes& sides) {
+    ViewVertices out{std::vector<double>(world.positions.size()), std::vector<uint8_t>(world.positions.size())};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, world.positions.size(), 16384), [&](const auto& range) {
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+            const glm::dvec3 q = inView(world, viewFromWorld, uint32_t(i));
+            uint8_t bits = 0;
+            for (int k = 0; k < 4; ++k) bits |= uint8_t(glm::dot(glm::dvec3(sides.plane[k]), q) + sides.plane[k].w >= 0.0) << k;
+            out.depth[i] = -q.z, out.insideBits[i] = bits;
+        }
+    });
+    return out;
+}
+
 // The nearest geometry inside the sides, over all triangles; a minimum is exact and
-// independent of the order, so the per-chunk minima can be combined in any order.
+// independent of the order, so the per-chunk minima can be combined in any order. A
+// triangle with every corner inside every side is its own clipped polygon, so its nearest
+// is its nearest corner's depth, the bits nearestInside() would return; only the others
+// are clipped.
 double nearestGeometry(const WorldGeometry& world, const glm::dmat4& viewFromWorld, const SidePlanes& sides) {
     constexpr size_t kChunk = 16384;
+    const ViewVertices vertices = viewVertices(world, viewFromWorld, sides);
     const size_t chunks = (world.triangles.size() + kChunk - 1) / kChunk;
     std::vector<double> nearest(chunks, kInfinity);
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
         for (size_t t = c * kChunk; t < std::min(world.triangles.size(), (c + 1) * kChunk); ++t) {
-            glm::dvec3 v[3];
-            for (int k = 0; k < 3; ++k) {
-                v[k] = glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(world.positions[world.triangles[t][k]]), 1.0));
+            const glm::uvec3& corner = world.triangles[t];
+            const auto& inside = vertices.insideBits;
+            if ((inside[corner.x] & inside[corner.y] & inside[corner.z]) == kInsideAll) {
+                nearest[c] = std::min({nearest[c], vertices.depth[corner.x], vertices.depth[corner.y], vertices.depth[corner.z]});
+                continue;
             }
+            const glm::dvec3 v[3] = {inView(world, viewFromWorld, corner.x), inView(world, viewFromWorld, corner.y),
+                                     inView(world, viewFromWorld, corner.z)};
             nearest[c] = std::min(nearest[c], nearestInside(v, sides));
         }
     });

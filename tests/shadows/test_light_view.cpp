@@ -89,3 +89,35 @@ TEST_CASE("a point light inside the scene needs cube faces, each face holds its 
     }
     CHECK(faces >= 4);
 }
+
+TEST_CASE("a triangle reaching out of the light's sides sets the near plane by its part inside, not its corner outside") {
+    const Scene scene = loadScene("sphere-box");
+    WorldGeometry world = flatten(scene);
+    const GBuffer g = renderGBuffer(world, scene.camera, raster::bestSimdLevel());
+    const Light point = pointLightFor(scene.lights[0]);
+    const LightView before = fitLightView(point, g, world);
+    // In the view: two corners on the axis at depth 4, nearer than every occluder, and one far
+    // outside the +x side at depth 1. The sides depend on the receivers only, so they stay.
+    const glm::dmat4 worldFromView = glm::inverse(before.viewFromWorld);
+    const glm::dvec3 corners[3] = {{50.0, 0.0, -1.0}, {-0.2, -0.2, -4.0}, {0.2, 0.2, -4.0}};
+    const auto first = uint32_t(world.positions.size());
+    for (const glm::dvec3& c : corners) world.positions.push_back(glm::vec3(worldFromView * glm::dvec4(c, 1.0)));
+    world.triangles.push_back({first, first + 1, first + 2});
+    world.triangleMaterial.push_back(0), world.triangleInstance.push_back(0);
+    const LightView view = fitLightView(point, g, world);
+    // The nearest depth of the part inside the sides, from samples of the triangle.
+    double nearest = INFINITY;
+    constexpr int kSteps = 600;
+    for (int i = 0; i <= kSteps; ++i) {
+        for (int j = 0; i + j <= kSteps; ++j) {
+            const double a = double(i) / kSteps, b = double(j) / kSteps;
+            const glm::dvec3 q = (1.0 - a - b) * corners[0] + a * corners[1] + b * corners[2];
+            const glm::dvec4 clip = view.clipFromView * glm::dvec4(q, 1.0);
+            if (std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w) nearest = std::min(nearest, -q.z);
+        }
+    }
+    REQUIRE(nearest > 1.5);   // the corner at depth 1 is outside
+    REQUIRE(nearest < before.zNear);
+    CHECK(view.zNear <= nearest);
+    CHECK(view.zNear > nearest * (1.0 - 1e-4) - 0.02);
+}
