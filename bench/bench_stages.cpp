@@ -249,7 +249,8 @@ void BM_IrregularZBuffer(benchmark::State& state) {
     const auto [grid, places] = makeGrid();
     const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid.resolution, places), grid.texelCount());
     const izb::ListedReceivers listed = izb::listReceivers(receivers, lists);
-    const izb::TileBins bins = izb::binOccluders(grid, lists, world);
+    const izb::ProjectedOccluders occluders = izb::projectOccluders(grid, world);
+    const izb::TileBins bins = izb::binOccluders(grid, lists, occluders);
     const int stage = int(state.range(0));
     for (auto _ : state) {
         if (stage == 1) benchmark::DoNotOptimize(izb::gatherReceivers(g, light, diagonal, visibility, bestSimdLevel()));
@@ -258,8 +259,8 @@ void BM_IrregularZBuffer(benchmark::State& state) {
             const izb::TexelLists texelLists = izb::buildTexelLists(izb::receiverTexels(grid.resolution, places), grid.texelCount());
             benchmark::DoNotOptimize(izb::listReceivers(receivers, texelLists));
         }
-        if (stage == 4) benchmark::DoNotOptimize(izb::binOccluders(grid, lists, world));
-        if (stage == 5) benchmark::DoNotOptimize(izb::traverseOccluders(grid, izb::homogeneousLight(light), listed, lists, bins, world, bestSimdLevel()));
+        if (stage == 4) benchmark::DoNotOptimize(izb::binOccluders(grid, lists, izb::projectOccluders(grid, world)));
+        if (stage == 5) benchmark::DoNotOptimize(izb::traverseOccluders(grid, izb::homogeneousLight(light), listed, lists, bins, occluders, bestSimdLevel()));
     }
     static const char* const names[] = {"", "receivers", "light grid", "lists", "binning", "traversal"};
     state.SetLabel(names[stage]);

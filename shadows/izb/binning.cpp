@@ -31,9 +31,9 @@ std::vector<uint8_t> tilesWithReceivers(const LightGrid& grid, const TexelLists&
 }
 
 // The tiles one triangle's footprint touches in one view, band of tile rows by band.
-void binTriangle(const LightGrid& grid, int view, uint32_t index, const glm::dvec3 (&triangle)[3], int tilesPerSide,
+void binTriangle(const LightGrid& grid, int view, uint32_t index, const ProjectedOccluders& occluders, int tilesPerSide,
                  const std::vector<uint8_t>& used, std::vector<TilePair>& pairs) {
-    const LightPolygon polygon = projectOccluder(grid, view, triangle);
+    const LightPolygon polygon = occluders.polygon(grid, view, index);
     const TexelRange rows = coveredRows(polygon, grid.resolution);
     if (rows.empty()) return;
     for (int ty = rows.begin / kTileSize; ty <= (rows.end - 1) / kTileSize; ++ty) {
@@ -48,24 +48,25 @@ void binTriangle(const LightGrid& grid, int view, uint32_t index, const glm::dve
 
 }  // namespace
 
-TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const WorldGeometry& world) {
+TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const ProjectedOccluders& occluders) {
     TileBins bins;
     bins.tilesPerSide = tilesPerSide(grid.resolution);
     const std::vector<uint8_t> used = tilesWithReceivers(grid, lists, bins.tilesPerSide);
-    const size_t chunks = (world.triangles.size() + kChunk - 1) / kChunk;
+    const size_t triangles = occluders.world.triangles.size();
+    const size_t chunks = (triangles + kChunk - 1) / kChunk;
     std::vector<std::vector<TilePair>> pairs(chunks);
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-        for (size_t t = c * kChunk; t < std::min(world.triangles.size(), (c + 1) * kChunk); ++t) {
-            const glm::uvec3& index = world.triangles[t];
-            const glm::dvec3 triangle[3] = {glm::dvec3(world.positions[index.x]), glm::dvec3(world.positions[index.y]),
-                                            glm::dvec3(world.positions[index.z])};
+        for (size_t t = c * kChunk; t < std::min(triangles, (c + 1) * kChunk); ++t) {
             for (int view = 0; view < int(grid.views.size()); ++view) {
-                binTriangle(grid, view, uint32_t(t), triangle, bins.tilesPerSide, used, pairs[c]);
+                binTriangle(grid, view, uint32_t(t), occluders, bins.tilesPerSide, used, pairs[c]);
             }
         }
     });
     // Concatenated in chunk order, then sorted by tile: each tile's triangles stay in order.
+    size_t total = 0;
+    for (const std::vector<TilePair>& chunk : pairs) total += chunk.size();
     std::vector<uint32_t> tile, triangle;
+    tile.reserve(total), triangle.reserve(total);
     for (const std::vector<TilePair>& chunk : pairs) {
         for (const TilePair& p : chunk) tile.push_back(p.tile), triangle.push_back(p.triangle);
     }

@@ -14,6 +14,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "shadows/izb/izb.h"
 
 namespace shadowlab::izb {
@@ -48,26 +51,85 @@ int clipAgainst(const HalfSpace& h, const glm::dvec4* in, int n, glm::dvec4* out
 // depth >= minDepth. The latter keeps x / w finite; it drops only points within a thousandth
 // of the reference's offset of the light's plane, which the reference ignores too (its rays
 // stop that far short of the light).
-LightPolygon projectOccluder(const LightGrid& grid, int view, const glm::dvec3 (&triangle)[3]) {
-    const LightView& v = grid.views[view];
-    glm::dvec4 polygon[8], next[8];
-    for (int k = 0; k < 3; ++k) polygon[k] = grid.clipFromWorld[size_t(view)] * glm::dvec4(triangle[k], 1.0);
+namespace {
+
+struct ClipRegion {
+    HalfSpace planes[5];
+    int count;
+};
+
+ClipRegion clipRegion(const LightGrid& grid, int view) {
     const double side = 1.0 + 2.0 / grid.resolution;   // one texel, in normalised device units
     // |x|, |y| <= side * w; and w >= minDepth, since clip space w is the view depth of a
     // perspective view (glm::frustumRH_NO). An orthographic view has w = 1 everywhere.
-    const HalfSpace planes[5] = {{{-1, 0, 0, side}, 0.0}, {{1, 0, 0, side}, 0.0}, {{0, -1, 0, side}, 0.0},
-                                 {{0, 1, 0, side}, 0.0}, {{0, 0, 0, 1}, -grid.minDepth}};
+    return {{{{-1, 0, 0, side}, 0.0}, {{1, 0, 0, side}, 0.0}, {{0, -1, 0, side}, 0.0}, {{0, 1, 0, side}, 0.0},
+             {{0, 0, 0, 1}, -grid.minDepth}},
+            grid.views[size_t(view)].orthographic ? 4 : 5};
+}
+
+glm::dvec4 clipPoint(const LightGrid& grid, int view, const glm::dvec3& p) {
+    return grid.clipFromWorld[size_t(view)] * glm::dvec4(p, 1.0);
+}
+
+glm::dvec2 texelPoint(const glm::dvec4& c, int resolution) {
+    return {(c.x / c.w + 1.0) * 0.5 * resolution, (1.0 - c.y / c.w) * 0.5 * resolution};
+}
+
+// Inside every half-space, by the test clipAgainst() makes.
+bool insideRegion(const ClipRegion& region, const glm::dvec4& c) {
+    for (int p = 0; p < region.count; ++p) {
+        if (!(glm::dot(region.planes[p].normal, c) + region.planes[p].offset >= 0.0)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+LightPolygon projectOccluder(const LightGrid& grid, int view, const glm::dvec3 (&triangle)[3]) {
+    const ClipRegion region = clipRegion(grid, view);
+    glm::dvec4 polygon[8], next[8];
+    for (int k = 0; k < 3; ++k) polygon[k] = clipPoint(grid, view, triangle[k]);
     int n = 3;
-    for (int p = 0; p < (v.orthographic ? 4 : 5) && n > 0; ++p) {
-        n = clipAgainst(planes[p], polygon, n, next);
+    for (int p = 0; p < region.count && n > 0; ++p) {
+        n = clipAgainst(region.planes[p], polygon, n, next);
         std::copy(next, next + n, polygon);
     }
     LightPolygon out;
     out.count = n;
-    for (int k = 0; k < n; ++k) {
-        const glm::dvec4& c = polygon[k];
-        out.vertex[k] = {(c.x / c.w + 1.0) * 0.5 * grid.resolution, (1.0 - c.y / c.w) * 0.5 * grid.resolution};
+    for (int k = 0; k < n; ++k) out.vertex[k] = texelPoint(polygon[k], grid.resolution);
+    return out;
+}
+
+ProjectedOccluders projectOccluders(const LightGrid& grid, const WorldGeometry& world) {
+    const size_t vertices = world.positions.size();
+    ProjectedOccluders out{world, vertices, std::vector<glm::dvec2>(grid.views.size() * vertices),
+                           std::vector<uint8_t>(grid.views.size() * vertices)};
+    for (int view = 0; view < int(grid.views.size()); ++view) {
+        const ClipRegion region = clipRegion(grid, view);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices, 16384), [&](const auto& range) {
+            for (size_t i = range.begin(); i != range.end(); ++i) {
+                const glm::dvec4 c = clipPoint(grid, view, glm::dvec3(world.positions[i]));
+                const size_t at = size_t(view) * vertices + i;
+                out.inside[at] = insideRegion(region, c);
+                if (out.inside[at]) out.texel[at] = texelPoint(c, grid.resolution);
+            }
+        });
     }
+    return out;
+}
+
+// Clipping keeps a polygon wholly inside every half-space as it is, so such a triangle is
+// its three projected corners: the polygon projectOccluder() returns, the same bits.
+LightPolygon ProjectedOccluders::polygon(const LightGrid& grid, int view, uint32_t triangle) const {
+    const glm::uvec3& corner = world.triangles[triangle];
+    const size_t base = size_t(view) * vertexCount;
+    if (!(inside[base + corner.x] && inside[base + corner.y] && inside[base + corner.z])) {
+        return projectOccluder(grid, view, {glm::dvec3(world.positions[corner.x]), glm::dvec3(world.positions[corner.y]),
+                                            glm::dvec3(world.positions[corner.z])});
+    }
+    LightPolygon out;
+    out.count = 3;
+    for (int k = 0; k < 3; ++k) out.vertex[k] = texel[base + corner[k]];
     return out;
 }
 

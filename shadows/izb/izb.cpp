@@ -97,12 +97,13 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     addListStats(grid, lists, out.stats);
     timer.lap("lists");
 
-    const izb::TileBins bins = izb::binOccluders(grid, lists, in.world());
+    const izb::ProjectedOccluders occluders = izb::projectOccluders(grid, in.world());
+    const izb::TileBins bins = izb::binOccluders(grid, lists, occluders);
     out.stats.push_back({"tile_triangle_pairs_count", double(bins.triangles.entry.size())});
     timer.lap("binning");
 
     const izb::Occlusion occlusion =
-        izb::traverseOccluders(grid, izb::homogeneousLight(light), listed, lists, bins, in.world(), in.simd);
+        izb::traverseOccluders(grid, izb::homogeneousLight(light), listed, lists, bins, occluders, in.simd);
     for (size_t e = 0; e < listed.size(); ++e) {
         if (occlusion.blocked[e]) out.visibility[listed.pixel[e]] = 0.0f;
     }

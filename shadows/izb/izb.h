@@ -187,6 +187,19 @@ struct LightPolygon {
 };
 LightPolygon projectOccluder(const LightGrid& grid, int view, const glm::dvec3 (&triangle)[3]);
 
+// The occluders as binning and traversal read them: the world's triangles, and every vertex
+// projected into each view once (its texel coordinates, when it lies inside all of the
+// view's clipping half-spaces), so that a triangle wholly inside costs no clipping.
+struct ProjectedOccluders {
+    const WorldGeometry& world;
+    size_t vertexCount;
+    std::vector<glm::dvec2> texel;   // [view * vertexCount + vertex], valid where inside
+    std::vector<uint8_t> inside;     // 1: inside every half-space of the view
+    // projectOccluder() of the triangle, from the projected corners when all are inside.
+    LightPolygon polygon(const LightGrid& grid, int view, uint32_t triangle) const;
+};
+ProjectedOccluders projectOccluders(const LightGrid& grid, const WorldGeometry& world);
+
 // Half-open range of rows or columns.
 struct TexelRange {
     int begin = 0, end = 0;
@@ -204,7 +217,7 @@ struct TileBins {
     int tilesPerSide = 0;
     Buckets triangles;              // one bucket per tile
 };
-TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const WorldGeometry& world);
+TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const ProjectedOccluders& occluders);
 
 // ---- 6. Occlusion --------------------------------------------------------------------------
 // True if the triangle meets the segment origin + t * towardsLight, t in [0, tFar]: the
@@ -221,7 +234,7 @@ struct Occlusion {
 };
 // `simd` picks the occlusion kernel; every level gives the same bytes.
 Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const ListedReceivers& receivers,
-                            const TexelLists& lists, const TileBins& bins, const WorldGeometry& world,
+                            const TexelLists& lists, const TileBins& bins, const ProjectedOccluders& occluders,
                             raster::SimdLevel simd);
 
 }  // namespace izb

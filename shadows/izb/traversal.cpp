@@ -4,10 +4,10 @@
 //
 // Tiles run in parallel; a tile's task is the only one that reads or writes the receivers of
 // its texels, and a receiver's answer is an OR over triangles, so the result does not depend
-// on the schedule. The footprint of a triangle that spans several tiles is recomputed in
-// each (a few hundred flops) rather than stored. Receivers are in list order
-// (ListedReceivers), so the covered texels of one row of a tile hold one run of receivers,
-// which the occlusion kernel tests a vector at a time.
+// on the schedule. The footprint of a triangle that spans several tiles is found again in
+// each, from its corners projected once (ProjectedOccluders), rather than stored. Receivers
+// are in list order (ListedReceivers), so the covered texels of one row of a tile hold one
+// run of receivers, which the occlusion kernel tests a vector at a time.
 #include <algorithm>
 
 #include <tbb/parallel_for.h>
@@ -25,7 +25,7 @@ struct TileWork {
 struct Traversal {
     const LightGrid& grid;
     const TexelLists& lists;
-    const WorldGeometry& world;
+    const ProjectedOccluders& occluders;
     OcclusionKernel kernel;
     ReceiverColumns receivers;
     OccluderTriangle occluder;   // the light filled in once; the vertices per triangle
@@ -47,14 +47,13 @@ struct Traversal {
 
     // One triangle over the texels of tile (view, tx, ty) its footprint touches.
     void testTriangle(int view, int tx, int ty, uint32_t t, TileWork& work) {
-        const glm::uvec3& index = world.triangles[t];
-        const glm::dvec3 triangle[3] = {glm::dvec3(world.positions[index.x]), glm::dvec3(world.positions[index.y]),
-                                        glm::dvec3(world.positions[index.z])};
+        const glm::uvec3& index = occluders.world.triangles[t];
         for (int k = 0; k < 3; ++k) {
-            for (int c = 0; c < 3; ++c) occluder.vertex[3 * k + c] = triangle[k][c];
+            const glm::vec3& p = occluders.world.positions[index[k]];
+            for (int c = 0; c < 3; ++c) occluder.vertex[3 * k + c] = p[c];
         }
         const int R = grid.resolution;
-        const LightPolygon polygon = projectOccluder(grid, view, triangle);
+        const LightPolygon polygon = occluders.polygon(grid, view, t);
         const TexelRange rows = coveredRows(polygon, R);
         for (int j = std::max(rows.begin, ty * kTileSize); j < std::min(rows.end, (ty + 1) * kTileSize); ++j) {
             const TexelRange columns = coveredColumns(polygon, j, j + 1, R);
@@ -69,7 +68,7 @@ struct Traversal {
 }  // namespace
 
 Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const ListedReceivers& receivers,
-                            const TexelLists& lists, const TileBins& bins, const WorldGeometry& world,
+                            const TexelLists& lists, const TileBins& bins, const ProjectedOccluders& occluders,
                             raster::SimdLevel simd) {
     Occlusion out;
     out.blocked.assign(receivers.size(), 0);
@@ -82,7 +81,7 @@ Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light
     const int side = bins.tilesPerSide;
     tbb::parallel_for(size_t(0), tiles, [&](size_t tile) {
         const int view = int(tile / (size_t(side) * side)), ty = int(tile / side % side), tx = int(tile % side);
-        Traversal traversal{grid, lists, world, kernel, columns, lightOnly, out};
+        Traversal traversal{grid, lists, occluders, kernel, columns, lightOnly, out};
         for (uint32_t e = bins.triangles.first[tile]; e < bins.triangles.first[tile + 1]; ++e) {
             traversal.testTriangle(view, tx, ty, bins.triangles.entry[e], work[tile]);
         }

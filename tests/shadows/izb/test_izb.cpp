@@ -101,7 +101,7 @@ TEST_CASE("izb lists and V are the same bytes with 1 and 2 threads") {
             const izb::Receivers receivers = izb::gatherReceivers(v.gbuffer, light, diagonal, V, raster::bestSimdLevel());
             const izb::LightGrid grid = izb::makeLightGrid(izb::fitViews(light, v.gbuffer, v.world, raster::bestSimdLevel()), 512, diagonal);
             const izb::TexelLists lists = izb::buildTexelLists(izb::receiverTexels(grid.resolution, izb::placeReceivers(grid.views, receivers)), grid.texelCount());
-            const izb::TileBins bins = izb::binOccluders(grid, lists, v.world);
+            const izb::TileBins bins = izb::binOccluders(grid, lists, izb::projectOccluders(grid, v.world));
             return std::tuple(lists.first, lists.entry, bins.triangles.entry, run("izb", v).visibility);
         });
     };

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <functional>
 #include <random>
 #include <string>
@@ -178,4 +179,31 @@ TEST_CASE("izb exact test: blocked strictly between the receiver and the light, 
     CHECK_FALSE(izb::segmentBlocked(below, light - below, 0.4, a));          // the segment stops short
     const glm::dvec3 beside(3.0, 0.0, 0.2);
     CHECK_FALSE(izb::segmentBlocked(beside, light - beside, 1.0, a));
+}
+
+TEST_CASE("izb occluders projected once give projectOccluder's polygon, bit for bit, inside, across and outside the view") {
+    for (bool orthographic : {false, true}) {
+        std::mt19937 rng(orthographic ? 21 : 22);
+        const SmallCase c = smallCase(orthographic, rng);
+        WorldGeometry world;
+        int wholeInside = 0, clipped = 0;
+        for (uint32_t n = 0; n < 600; ++n) {
+            glm::dvec3 t[3];
+            randomTriangle(rng, t);
+            for (const glm::dvec3& v : t) world.positions.push_back(glm::vec3(v));
+            world.triangles.push_back({3 * n, 3 * n + 1, 3 * n + 2});
+        }
+        const izb::ProjectedOccluders occluders = izb::projectOccluders(c.grid, world);
+        for (uint32_t n = 0; n < world.triangles.size(); ++n) {
+            const glm::dvec3 t[3] = {glm::dvec3(world.positions[3 * n]), glm::dvec3(world.positions[3 * n + 1]),
+                                     glm::dvec3(world.positions[3 * n + 2])};
+            const izb::LightPolygon expected = izb::projectOccluder(c.grid, 0, t), got = occluders.polygon(c.grid, 0, n);
+            REQUIRE(got.count == expected.count);
+            CHECK(std::memcmp(got.vertex, expected.vertex, sizeof(glm::dvec2) * size_t(got.count)) == 0);
+            const bool inside = occluders.inside[3 * n] && occluders.inside[3 * n + 1] && occluders.inside[3 * n + 2];
+            wholeInside += inside, clipped += !inside;
+        }
+        CHECK(wholeInside > 50);   // both paths taken
+        CHECK(clipped > 50);
+    }
 }
