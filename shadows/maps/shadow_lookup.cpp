@@ -155,9 +155,11 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
         scalar(t.constants, tail);
     };
     stage(t.reach, t.scalarReach);
+    uint8_t* served = scratch.served.data();   // a local: a byte stored through the vector could alias its pointer
     for (int i = 0; i < count; ++i) {
-        uint8_t& s = scratch.served[size_t(i)];
-        if (s & kReachUndecided) s = t.reaches(g.position[k + size_t(i)], g.normal[k + size_t(i)]) ? s & ~kReachUndecided : 0;
+        if (served[i] & kReachUndecided) {
+            served[i] = t.reaches(g.position[k + size_t(i)], g.normal[k + size_t(i)]) ? served[i] & ~kReachUndecided : 0;
+        }
     }
     stage(t.project, t.scalarProject);
     stage(t.filter, t.scalarFilter);
@@ -167,7 +169,7 @@ void lookUpEveryRow(const GBuffer& g, const LookupPass& pass, const LookupPass::
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
         LookupPass::Scratch scratch(g.width);
         for (int j = rows.begin(); j < rows.end(); ++j) {
-            for (int i = 0; i < g.width; ++i) scratch.served[size_t(i)] = g.hit[g.index(i, j)];
+            std::copy_n(g.hit.begin() + ptrdiff_t(g.index(0, j)), g.width, scratch.served.begin());
             pass.lookUpRow(g, j, scratch, out);
         }
     });

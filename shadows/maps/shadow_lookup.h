@@ -135,11 +135,18 @@ ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& 
         for (int j = rows.begin(); j < rows.end(); ++j) {
             // The map serving each surface pixel, whether or not the light reaches it: the
             // debug views show it, and the texel density is measured wherever there is a surface.
-            for (int i = 0; i < g.width; ++i) {
-                const size_t k = g.index(i, j);
-                const int m = g.hit[k] ? select(glm::dvec3(g.position[k])) : -1;
-                out.mapIndex[k] = int8_t(m);
-                scratch.served[size_t(i)] = uint8_t(m + 1);
+            // The row's arrays and width are held in locals: through the containers, every byte
+            // stored could alias them, and the loop reloaded them per pixel.
+            const int width = g.width;
+            const size_t k0 = g.index(0, j);
+            const uint8_t* hit = g.hit.data() + k0;
+            const glm::vec3* position = g.position.data() + k0;
+            int8_t* mapIndex = out.mapIndex.data() + k0;
+            uint8_t* served = scratch.served.data();
+            for (int i = 0; i < width; ++i) {
+                const int m = hit[i] ? select(glm::dvec3(position[i])) : -1;
+                mapIndex[i] = int8_t(m);
+                served[i] = uint8_t(m + 1);
             }
             // Only the sampled columns are visited: this runs per row of the hot pass.
             for (int i = 0; i < g.width; i += everyPixelDensity ? 1 : kDensitySampleStride) {
