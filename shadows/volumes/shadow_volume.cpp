@@ -47,7 +47,11 @@
 #include "shadows/volumes/shadow_volume.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include "raster/rasterizer.h"
 #include "scenes/edge_adjacency.h"
@@ -152,20 +156,26 @@ std::vector<float> fillPerPixel(raster::Rasterizer& rasterizer, raster::Framebuf
     return fb.colorImage(0);
 }
 
-// Step 6, with the stencil as a signed count per pixel.
+// Step 6, with the stencil as a signed count per pixel; rows in parallel (the count of
+// shadowed pixels is an integer sum, the same in any order).
 ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light,
                                     const std::vector<uint8_t>& stencil) {
     ShadowOutputs out;
-    out.visibility.assign(g.pixelCount(), 0.0f);
+    out.visibility.resize(g.pixelCount());
     out.stencil.resize(g.pixelCount());
-    double shadowed = 0;
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        out.stencil[k] = float(int8_t(stencil[k]));   // wrapped count read as signed
-        const bool lit = g.hit[k] && stencil[k] == 0 && lightReaches(light, g.position[k], g.normal[k]);
-        out.visibility[k] = lit ? 1.0f : 0.0f;
-        shadowed += g.hit[k] && !lit;
-    }
-    out.stats.push_back({"shadowed_pixels", shadowed});
+    const size_t shadowed = tbb::parallel_reduce(
+        tbb::blocked_range<int>(0, g.height), size_t(0),
+        [&](const tbb::blocked_range<int>& rows, size_t count) {
+            for (size_t k = g.index(0, rows.begin()); k < g.index(0, rows.end()); ++k) {
+                out.stencil[k] = float(int8_t(stencil[k]));   // wrapped count read as signed
+                const bool lit = g.hit[k] && stencil[k] == 0 && lightReaches(light, g.position[k], g.normal[k]);
+                out.visibility[k] = lit ? 1.0f : 0.0f;
+                count += g.hit[k] && !lit;
+            }
+            return count;
+        },
+        std::plus<>());
+    out.stats.push_back({"shadowed_pixels", double(shadowed)});
     return out;
 }
 
