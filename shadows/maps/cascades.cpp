@@ -5,8 +5,12 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "shadows/technique.h"
 
@@ -33,16 +37,20 @@ Sphere sliceSphere(const Camera& camera, double d0, double d1) {
     return {glm::dvec3(camera.eye) + t * viewAxis(camera), radius};
 }
 
-// The receivers of one cascade, as a G-buffer for fitLightView (hit and position only).
-GBuffer cascadeReceivers(const GBuffer& g, const Camera& camera, const std::vector<Cascade>& cascades, int k) {
-    GBuffer subset;
-    subset.width = g.width, subset.height = g.height;
-    subset.hit.assign(g.pixelCount(), 0);
-    subset.position = g.position;
-    for (size_t p = 0; p < g.pixelCount(); ++p) {
-        subset.hit[p] = g.hit[p] && cascadeOf(cascades, viewDepth(camera, glm::dvec3(g.position[p]))) == k;
+// The receivers of cascade k, as a G-buffer for fitLightView (hit and position only): its
+// positions are copied once, and `hit` is refilled for each cascade.
+void selectCascadeReceivers(const GBuffer& g, const Camera& camera, const std::vector<Cascade>& cascades, int k,
+                            GBuffer& subset) {
+    if (subset.position.empty()) {
+        subset.width = g.width, subset.height = g.height;
+        subset.hit.resize(g.pixelCount());
+        subset.position = g.position;
     }
-    return subset;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t p = r.begin(); p != r.end(); ++p) {
+            subset.hit[p] = g.hit[p] && cascadeOf(cascades, viewDepth(camera, glm::dvec3(g.position[p]))) == k;
+        }
+    });
 }
 
 // A sample bound rounded outwards to the ladder 2^(k/8), steps of about 9%: a small camera
@@ -83,10 +91,20 @@ std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const G
     if (sun.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
     double n = camera.zNear, f = camera.zFar;
     if (s.sampleBounds) {
-        n = std::numeric_limits<double>::infinity(), f = 0.0;
-        for (size_t k = 0; k < g.pixelCount(); ++k) {
-            if (g.hit[k]) n = std::min(n, viewDepth(camera, glm::dvec3(g.position[k]))), f = std::max(f, viewDepth(camera, glm::dvec3(g.position[k])));
-        }
+        // The nearest and farthest receivers, rows in parallel (a minimum is exact in any order).
+        using Range = std::pair<double, double>;
+        const Range range = tbb::parallel_reduce(
+            tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), Range{std::numeric_limits<double>::infinity(), 0.0},
+            [&](const tbb::blocked_range<size_t>& r, Range b) {
+                for (size_t k = r.begin(); k != r.end(); ++k) {
+                    if (!g.hit[k]) continue;
+                    const double d = viewDepth(camera, glm::dvec3(g.position[k]));
+                    b.first = std::min(b.first, d), b.second = std::max(b.second, d);
+                }
+                return b;
+            },
+            [](Range a, Range b) { return Range{std::min(a.first, b.first), std::max(a.second, b.second)}; });
+        n = range.first, f = range.second;
         if (!(f > 0.0)) throw std::invalid_argument("csm: no receivers (no pixel has hit = 1)");
         n = std::max(n, 1e-3 * f), f *= 1.0 + 1e-6;
         n = boundOnLadder(n, false), f = boundOnLadder(f, true);
@@ -101,9 +119,10 @@ std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const G
     const glm::dmat4 lightFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, up);
     LightFitOptions options;
     options.resolution = s.resolution, options.marginTexels = s.marginTexels, options.simd = simd;
+    GBuffer receivers;
     for (int k = 0; k < s.count; ++k) {
         Cascade& c = cascades[k];
-        const GBuffer receivers = cascadeReceivers(g, camera, cascades, k);
+        selectCascadeReceivers(g, camera, cascades, k, receivers);
         c.hasReceivers = anySurface(receivers);
         if (!c.hasReceivers) continue;
         // Near and far along the light from the receivers and what lies in front of them.
