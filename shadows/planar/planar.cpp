@@ -27,6 +27,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include "raster/rasterizer.h"
 #include "scenes/camera.h"
@@ -139,15 +143,23 @@ ShadowOutputs run(const ShadowInputs& in) {
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
     out.stencil.resize(g.pixelCount());
-    double receiverPixels = 0, shadowed = 0;
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        out.stencil[k] = float(stencil[k]);
-        // Outside a spot's cone no light arrives (the V convention), shadow or not.
-        const bool inCone = in.light.type != LightType::Spot || insideSpotCone(in.light, g.position[k]);
-        out.visibility[k] = g.hit[k] && inCone && stencil[k] != kShadowed ? 1.0f : 0.0f;
-        receiverPixels += stencil[k] != kNoReceiver;
-        shadowed += stencil[k] == kShadowed;
-    }
+    // Rows in parallel; the counts are integer sums, the same in any order.
+    using Counts = std::pair<size_t, size_t>;   // receiver pixels, shadowed ones
+    const Counts counts = tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), Counts{0, 0},
+        [&](const tbb::blocked_range<size_t>& r, Counts c) {
+            for (size_t k = r.begin(); k != r.end(); ++k) {
+                out.stencil[k] = float(stencil[k]);
+                // Outside a spot's cone no light arrives (the V convention), shadow or not.
+                const bool inCone = in.light.type != LightType::Spot || insideSpotCone(in.light, g.position[k]);
+                out.visibility[k] = g.hit[k] && inCone && stencil[k] != kShadowed ? 1.0f : 0.0f;
+                c.first += stencil[k] != kNoReceiver;
+                c.second += stencil[k] == kShadowed;
+            }
+            return c;
+        },
+        [](Counts a, Counts b) { return Counts{a.first + b.first, a.second + b.second}; });
+    const double receiverPixels = double(counts.first), shadowed = double(counts.second);
     out.stats = {
         {"receiver_triangles", double(split.receivers.size())},
         {"caster_triangles", double(split.casters.size())},
