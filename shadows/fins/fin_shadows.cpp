@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "scenes/edge_adjacency.h"
 #include "shading/lights.h"
 #include "shadows/depth_map.h"
@@ -95,7 +98,9 @@ FinScene buildFinScene(const ShadowInputs& in, const FinSettings& s) {
 // 1 where the light can reach a surface (lightReaches: it faces the disk's centre), else 0.
 std::vector<uint8_t> facingLight(const GBuffer& g, const Light& light) {
     std::vector<uint8_t> facing(g.pixelCount(), 0);
-    for (size_t k = 0; k < g.pixelCount(); ++k) facing[k] = g.hit[k] && lightReaches(light, g.position[k], g.normal[k]);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) facing[k] = g.hit[k] && lightReaches(light, g.position[k], g.normal[k]);
+    });
     return facing;
 }
 
