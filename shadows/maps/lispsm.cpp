@@ -1,8 +1,12 @@
 #include "shadows/maps/lispsm.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 namespace shadowlab {
 namespace {
@@ -14,11 +18,33 @@ constexpr double kMinSinGamma = 1e-3;
 struct Range {
     double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
     void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); }
+    void add(const Range& r) { lo = std::min(lo, r.lo), hi = std::max(hi, r.hi); }
     void widen(double fraction) {
         const double m = (hi - lo) * fraction;
         lo -= m, hi += m;
     }
 };
+
+// The ranges of the three coordinates of values(P) over the receivers, in parallel: a
+// minimum or maximum is exact in any order, so the thread count does not change them.
+template <class Values>
+std::array<Range, 3> receiverRanges(const GBuffer& g, Values values) {
+    using Ranges = std::array<Range, 3>;
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), Ranges{},
+        [&](const tbb::blocked_range<size_t>& r, Ranges ranges) {
+            for (size_t k = r.begin(); k != r.end(); ++k) {
+                if (!g.hit[k]) continue;
+                const glm::dvec3 v = values(glm::dvec3(g.position[k]));
+                ranges[0].add(v.x), ranges[1].add(v.y), ranges[2].add(v.z);
+            }
+            return ranges;
+        },
+        [](Ranges a, const Ranges& b) {
+            for (int c = 0; c < 3; ++c) a[c].add(b[c]);
+            return a;
+        });
+}
 
 // Rows x, y, z of a rotation matrix (column-major glm) from three unit axes.
 glm::dmat4 rotationRows(const glm::dvec3& x, const glm::dvec3& y, const glm::dvec3& z) {
@@ -50,12 +76,9 @@ LispsmView lispsmView(const LightView& uniform, const Light& sun, const Camera& 
     // Light space: z towards the light, y the view direction projected onto the map plane.
     const glm::dvec3 yL = glm::normalize(viewDir - glm::dot(viewDir, zL) * zL), xL = glm::cross(yL, zL);
     const glm::dmat4 lightFromWorld = rotationRows(xL, yL, zL);
-    Range across, along, cameraDepth;
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        if (!g.hit[k]) continue;
-        const glm::dvec3 p(g.position[k]);
-        across.add(glm::dot(p, xL)), along.add(glm::dot(p, yL)), cameraDepth.add(glm::dot(p - eye, viewDir));
-    }
+    const auto [across, along, cameraDepth] = receiverRanges(g, [&](const glm::dvec3& p) {
+        return glm::dvec3(glm::dot(p, xL), glm::dot(p, yL), glm::dot(p - eye, viewDir));
+    });
     const double zn = std::max(cameraDepth.lo, 1e-3 * cameraDepth.hi), zf = cameraDepth.hi;
     const double n = (zn + std::sqrt(zn * zf)) / out.sinGamma, f = n + (along.hi - along.lo);
     out.nOpt = n;
@@ -72,12 +95,10 @@ LispsmView lispsmView(const LightView& uniform, const Light& sun, const Camera& 
     warp[1][3] = 1.0, warp[3][3] = -c.y;                 // W = y - c_y
 
     // Fit the warped receivers into the map, as fitLightView does for the uniform one.
-    Range u, v, depth;
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        if (!g.hit[k]) continue;
-        const glm::dvec4 h = warp * lightFromWorld * glm::dvec4(glm::dvec3(g.position[k]), 1.0);
-        u.add(h.x / h.w), v.add(h.y / h.w), depth.add(h.z / h.w);
-    }
+    auto [u, v, depth] = receiverRanges(g, [&](const glm::dvec3& p) {
+        const glm::dvec4 h = warp * lightFromWorld * glm::dvec4(p, 1.0);
+        return glm::dvec3(h.x / h.w, h.y / h.w, h.z / h.w);
+    });
     u.widen(marginTexels / resolution), v.widen(marginTexels / resolution);
     depth.lo = 0.0;                        // the uniform view's near plane: every occluder
     depth.hi *= 1.0 + 1e-4;
