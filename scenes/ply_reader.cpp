@@ -102,6 +102,12 @@ public:
                 fail("unknown header keyword \"" + keyword + "\"");
         }
         if (!sawFormat) fail("the header has no \"format\" line");
+        // A row of an element without properties is no bytes at all: its count would make
+        // the body loop run without reading (up to 2^64 times), so it is refused.
+        for (const PlyElement& element : header_.elements) {
+            if (element.properties.empty() && element.count > 0)
+                fail("element \"" + element.name + "\" has " + std::to_string(element.count) + " rows but no properties");
+        }
         header_.bodyOffset = pos_;
         header_.bodyFirstLine = line_ + 1;
         return header_;

@@ -135,6 +135,9 @@ TEST_CASE("readPly: malformed files are SceneErrors naming the file and the row"
         {replaced("vertex_indices", "corners"), {"no list property \"vertex_indices\""}},
         {replaced("property float z", "property float w"), {"no scalar property \"z\""}},
         {replaced("ply\n", "plyx\n"), {"not a PLY file"}},
+        // Rows without properties consume nothing: this count made the reader loop forever.
+        {replaced("element face 2", "element empty 18446744073709551615\nelement face 2"),
+         {"element \"empty\" has 18446744073709551615 rows but no properties"}},
     };
     for (const Case& c : cases) {
         CAPTURE(c.pieces.front());
