@@ -43,7 +43,14 @@ void applyOverrides(Scene& scene, const SceneOverrides& o) {
         throw std::invalid_argument("image size must be within 1.." + std::to_string(raster::kMaxViewport));
     }
     if (!(c.fovyDeg > 0.0f && c.fovyDeg < 180.0f)) throw std::invalid_argument("--fovy must be in (0, 180) degrees");
-    if (c.eye == c.target) throw std::invalid_argument("the eye and the target must differ");
+    // The same rule as a scene file's camera (scene_file.cpp): the view matrix needs a frame.
+    switch (viewFrameProblem(c)) {
+        case ViewFrameProblem::EyeAtTarget: throw std::invalid_argument("the eye and the target must differ");
+        case ViewFrameProblem::UpParallel:
+            throw std::invalid_argument((std::ostringstream() << "--eye, --target: the viewing direction is parallel to the camera's up ("
+                                         << c.up.x << ", " << c.up.y << ", " << c.up.z << "); look along another direction").str());
+        case ViewFrameProblem::None: break;
+    }
     if (o.lightPosition) {
         requireFinite(*o.lightPosition, "--light-pos");
         if (scene.lights.empty()) throw std::invalid_argument("--light-pos: the scene has no light");

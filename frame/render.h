@@ -27,7 +27,8 @@ struct SceneOverrides {
 };
 
 // Applies the overrides; throws std::invalid_argument for a size outside 1..8192, a fovy
-// outside (0, 180), a non-finite vector, an eye equal to the target, or a light radius
+// outside (0, 180), a non-finite vector, an eye equal to the target or a viewing direction
+// parallel to the camera's up (the scene file's rule, viewFrameProblem), or a light radius
 // that is not > 0 (and finite) or whose first light is not a disk.
 void applyOverrides(Scene& scene, const SceneOverrides& overrides);
 

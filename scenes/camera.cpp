@@ -4,6 +4,16 @@
 
 namespace shadowlab {
 
+ViewFrameProblem viewFrameProblem(const Camera& camera) {
+    constexpr double kParallelSine = 1e-6;
+    const glm::dvec3 forward = glm::dvec3(camera.target) - glm::dvec3(camera.eye);
+    const glm::dvec3 up(camera.up);
+    if (!(glm::length(forward) > 0.0)) return ViewFrameProblem::EyeAtTarget;
+    if (!(glm::length(glm::cross(forward, up)) > kParallelSine * glm::length(forward) * glm::length(up)))
+        return ViewFrameProblem::UpParallel;
+    return ViewFrameProblem::None;
+}
+
 glm::mat4 viewFromWorld(const Camera& camera) {
     return glm::lookAtRH(camera.eye, camera.target, camera.up);
 }

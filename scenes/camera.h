@@ -9,6 +9,12 @@
 
 namespace shadowlab {
 
+// Why the camera's view frame is undefined, or nothing: the eye must differ from the target,
+// and "up" must be neither zero nor parallel to the viewing direction (whose angle has a
+// sine below 1e-6), which would leave the image's roll, and the view matrix, undefined.
+enum class ViewFrameProblem { None, EyeAtTarget, UpParallel };
+ViewFrameProblem viewFrameProblem(const Camera& camera);
+
 glm::mat4 viewFromWorld(const Camera& camera);
 glm::mat4 clipFromView(const Camera& camera);
 glm::dmat4 clipFromWorldD(const Camera& camera);   // the same product in double precision

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "raster/fixed_point.h"
+#include "scenes/camera.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file_parts.h"
 
@@ -24,10 +25,6 @@ constexpr std::array<std::pair<std::string_view, MaterialModel>, 2> kMaterialMod
 constexpr Interval kFovyDeg{0.0, 180.0, true, true};
 // The rasterizer's viewport limit: a scene that loads can be rendered.
 constexpr Interval kImageSize{1.0, double(raster::kMaxViewport), false, false};
-
-// Vectors whose angle has a sine below this count as parallel (a camera "up" along the
-// viewing direction leaves the image's roll undefined).
-constexpr double kParallelSine = 1e-6;
 
 // Specular terms exist only for Blinn-Phong; accepting them on a Lambert material would
 // silently ignore them.
@@ -49,12 +46,12 @@ void readMaterial(const JsonField& field, Scene& scene, SceneNames& names) {
 }
 
 void checkViewFrame(const JsonObject& object, const Camera& camera) {
-    const glm::dvec3 forward = glm::dvec3(camera.target) - glm::dvec3(camera.eye);
-    const glm::dvec3 up(camera.up);
-    if (!(glm::length(forward) > 0.0)) object["target"].fail("must differ from eye");
-    const JsonField upField = object.has("up") ? object["up"] : object.field();
-    if (!(glm::length(glm::cross(forward, up)) > kParallelSine * glm::length(forward) * glm::length(up)))
-        upField.fail("up must not be zero or parallel to the viewing direction");
+    switch (viewFrameProblem(camera)) {
+        case ViewFrameProblem::EyeAtTarget: object["target"].fail("must differ from eye");
+        case ViewFrameProblem::UpParallel:
+            (object.has("up") ? object["up"] : object.field()).fail("up must not be zero or parallel to the viewing direction");
+        case ViewFrameProblem::None: break;
+    }
 }
 
 Camera readCamera(const JsonField& field) {
