@@ -223,6 +223,7 @@ void runBenchCommand(BenchArgs a) {
     Progress progress(std::cerr);
     a.options.progress = progressIfWanted(progress, a.progress);
     a.options.simd = raster::parseSimdLevel(a.simd);
+    requireOutputDirectories({&a.json});   // before the runs, not after them
     const BenchResults results = runBench(a.options);
     std::cout << formatBenchText(results);
     if (!a.json.empty()) writeTextFile(a.json, formatBenchJson(results));
@@ -269,7 +270,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     r->add_option("--aov", a.aov, "OpenEXR file with R G B, P.*, N.*, hit, V, depth (and stencil)");
     r->add_option("--width", a.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
     r->add_option("--height", a.overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
-    r->add_option("--threads", a.threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+    r->add_option("--threads", a.threads, "worker threads (0: all cores)")->check(CLI::Range(0, kMaxThreads));
     addSimdOption(r, a.simd);
     addVec3Option(r, "--eye", a.overrides.eye, "camera position, overriding the scene's");
     addVec3Option(r, "--target", a.overrides.target, "point the camera looks at");
@@ -291,7 +292,7 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("scene", a.options.scene, "built-in scene name or scene file (.json)")->required();
     s->add_option("--technique", a.techniques, "techniques to compare, comma-separated")->delimiter(',')->required();
     s->add_option("--param", a.params, "one axis: name=v1,v2,... (repeatable; the cross product is run)");
-    s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, 1024));
+    s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(s, "frames per row", a.options.runs, a.options.warmupRuns, a.simd);
     s->add_option("--out", a.outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
     s->add_option("--plot-y", a.plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
@@ -306,7 +307,7 @@ void addScalingCommand(CLI::App& app, ScalingArgs& a) {
     s->add_option("scenes", a.options.scenes, "two or more built-in scene names or scene files (e.g. scenes/scaling/*.json)")->required();
     s->add_option("--technique", a.technique, "the technique to time")->required();
     s->add_option("--param", a.params, "technique setting name=value (repeatable)");
-    s->add_option("--threads", a.options.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
+    s->add_option("--threads", a.options.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, kMaxThreads));
     addTimingOptions(s, "frames per scene", a.options.runs, a.options.warmupRuns, a.simd);
     s->add_option("--out", a.outDir, "directory for scaling-TECHNIQUE.csv, .json and .svg")->capture_default_str();
     addProgressFlag(s, a.progress);
@@ -326,7 +327,7 @@ void addCompareCommand(CLI::App& app, CompareArgs& a) {
 void addBenchCommand(CLI::App& app, BenchArgs& a) {
     CLI::App* b = app.add_subcommand("bench", "time depth-only passes and reference rays on the built-in scenes");
     b->add_option("--scenes", a.options.scenes, "scenes to measure")->delimiter(',')->capture_default_str();
-    b->add_option("--threads", a.options.threads, "thread counts")->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
+    b->add_option("--threads", a.options.threads, "thread counts")->delimiter(',')->capture_default_str()->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(b, "runs per row", a.options.runs, a.options.warmupRuns, a.simd);
     b->add_option("--json", a.json, "also write the rows as JSON");
     addProgressFlag(b, a.progress);

@@ -9,6 +9,10 @@
 
 namespace shadowlab {
 
+// The most worker threads a command accepts: far beyond any core count this project runs
+// on, and few enough that creating them takes a moment, not minutes.
+inline constexpr int kMaxThreads = 1024;
+
 // Runs f() on `threads` threads (0 or less: TBB's default, every core) and returns its
 // result. A global_control alone only caps the count at the machine's cores, so 8 threads
 // on a 2-core machine need an arena of 8 as well; the determinism tests rely on it, since
