@@ -13,6 +13,7 @@
 #include "scenes/camera.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file_parts.h"
+#include "scenes/scene_limits.h"
 
 namespace shadowlab {
 namespace {
@@ -80,7 +81,8 @@ Environment readEnvironment(const JsonField& field) {
     return environment;
 }
 
-// Nothing to render is a mistake, and WorldGeometry indexes all vertices with 32 bits.
+// Nothing to render is a mistake, and a scene beyond the limits (scene_limits.h) would not
+// fit the machine; both are found from the meshes and instances, before flattening.
 void checkSize(const JsonField& root, const Scene& scene) {
     uint64_t vertices = 0, triangles = 0;
     for (const MeshInstance& instance : scene.instances) {
@@ -88,8 +90,12 @@ void checkSize(const JsonField& root, const Scene& scene) {
         triangles += scene.meshes[instance.mesh].triangles.size();
     }
     if (triangles == 0) root.fail("the scene has no triangles");
-    if (vertices > std::numeric_limits<uint32_t>::max())
-        root.fail("the scene has " + std::to_string(vertices) + " world-space vertices, more than 32-bit indices can address");
+    if (triangles > kMaxSceneTriangles)
+        root.fail("the scene has " + std::to_string(triangles) + " world-space triangles, more than the limit of " +
+                  std::to_string(kMaxSceneTriangles));
+    if (vertices > kMaxSceneVertices)
+        root.fail("the scene has " + std::to_string(vertices) + " world-space vertices, more than the limit of " +
+                  std::to_string(kMaxSceneVertices));
 }
 
 Scene readScene(const JsonField& root, const std::string& directory, const std::string& name) {

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scenes/scene_file_parts.h"
+#include "scenes/scene_limits.h"
 
 namespace shadowlab {
 namespace {
@@ -82,10 +83,15 @@ glm::mat4 readTransform(const JsonObject& object) {
 
 // Copy (i, j, k) of the lattice is shifted by (i, j, k) * offset in world space; copies
 // are listed with i varying fastest.
-std::vector<glm::vec3> readRepeat(const JsonField& field) {
+// The copies are counted before they are made (1024^3 of them would exhaust memory).
+std::vector<glm::vec3> readRepeat(const JsonField& field, size_t instancesBefore) {
     const JsonObject object = field.object({"count", "offset"});
     const std::vector<JsonField> count = object["count"].elements(3);
     const glm::ivec3 n(count[0].integer(kRepeatCount), count[1].integer(kRepeatCount), count[2].integer(kRepeatCount));
+    const uint64_t copies = uint64_t(n.x) * uint64_t(n.y) * uint64_t(n.z);
+    if (instancesBefore + copies > kMaxInstances)
+        object["count"].fail("makes " + std::to_string(copies) + " copies; a scene holds at most " +
+                             std::to_string(kMaxInstances) + " instances");
     const glm::vec3 offset = object["offset"].vec3();
     std::vector<glm::vec3> shifts;
     for (int k = 0; k < n.z; ++k)
@@ -108,10 +114,12 @@ void readInstance(const JsonField& field, const SceneNames& names, Scene& scene)
         readTransform(object) * (fit ? readFit(*fit, scene.meshes[instance.mesh]) : glm::mat4(1.0f));
     const auto repeat = object.optional("repeat");
     if (!repeat) {
+        if (scene.instances.size() >= kMaxInstances)
+            field.fail("a scene holds at most " + std::to_string(kMaxInstances) + " instances");
         scene.instances.push_back(instance);
         return;
     }
-    const std::vector<glm::vec3> shifts = readRepeat(*repeat);
+    const std::vector<glm::vec3> shifts = readRepeat(*repeat, scene.instances.size());
     for (size_t copy = 0; copy < shifts.size(); ++copy) {
         MeshInstance shifted = instance;
         shifted.name = instance.name + "[" + std::to_string(copy) + "]";

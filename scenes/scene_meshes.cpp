@@ -9,6 +9,7 @@
 #include "scenes/procedural.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_file_parts.h"
+#include "scenes/scene_limits.h"
 
 namespace shadowlab {
 namespace {
@@ -23,18 +24,28 @@ enum class Procedural { Grid, UvSphere, Box };
 constexpr std::array<std::pair<std::string_view, Procedural>, 3> kProcedurals{{
     {"grid", Procedural::Grid}, {"uv-sphere", Procedural::UvSphere}, {"box", Procedural::Box}}};
 
+// A procedural mesh's triangles are counted before it is made: 16384 x 16384 divisions
+// would be half a billion triangles from a line of JSON.
+void checkProceduralSize(const JsonField& field, uint64_t triangles) {
+    if (triangles > kMaxSceneTriangles)
+        field.fail("makes " + std::to_string(triangles) + " triangles, more than a scene may hold (" +
+                   std::to_string(kMaxSceneTriangles) + ")");
+}
+
 Mesh readGrid(const JsonObject& object) {
     object.allowOnly({"name", "procedural", "size", "divisions"});
     const std::vector<JsonField> size = object["size"].elements(2);
     const std::vector<JsonField> divisions = object["divisions"].elements(2);
-    return makeGrid({size[0].number(kPositive), size[1].number(kPositive)},
-                    {divisions[0].integer(kDivisions), divisions[1].integer(kDivisions)});
+    const glm::ivec2 n(divisions[0].integer(kDivisions), divisions[1].integer(kDivisions));
+    checkProceduralSize(object["divisions"], 2 * uint64_t(n.x) * uint64_t(n.y));
+    return makeGrid({size[0].number(kPositive), size[1].number(kPositive)}, n);
 }
 
 Mesh readUvSphere(const JsonObject& object) {
     object.allowOnly({"name", "procedural", "radius", "slices", "stacks"});
-    return makeUvSphere(object["radius"].number(kPositive), object["slices"].integer(kSlices),
-                        object["stacks"].integer(kStacks));
+    const int slices = object["slices"].integer(kSlices), stacks = object["stacks"].integer(kStacks);
+    checkProceduralSize(object["stacks"], 2 * uint64_t(slices) * uint64_t(stacks));
+    return makeUvSphere(object["radius"].number(kPositive), slices, stacks);
 }
 
 Mesh readBox(const JsonObject& object) {

@@ -239,6 +239,26 @@ TEST_CASE("camera, sizes and transforms out of range") {
     });
 }
 
+// Each of these asked for gigabytes before it was refused: the limits (scene_limits.h) are
+// checked before the meshes or instances are made.
+TEST_CASE("scene limits: counted before anything is allocated") {
+    checkCases({
+        {"a repeat of 1024^3 copies", [](json& s) { s["instances"][1]["repeat"] = {{"count", {1024, 1024, 1024}}, {"offset", {1, 1, 1}}}; },
+         {"instances[1].repeat.count: makes 1073741824 copies; a scene holds at most 65536 instances"}},
+        {"a repeat past the instance limit with the instances before it", [](json& s) {
+             s["instances"][1]["repeat"] = {{"count", {256, 256, 1}}, {"offset", {1, 1, 1}}};
+         }, {"instances[1].repeat.count: makes 65536 copies; a scene holds at most 65536 instances"}},
+        {"a 16384 x 16384 grid", [](json& s) { s["meshes"][0]["divisions"] = {16384, 16384}; },
+         {"meshes[0].divisions: makes 536870912 triangles, more than a scene may hold (33554432)"}},
+        {"a 16384 x 16384 sphere", [](json& s) { s["meshes"][2]["slices"] = 16384; s["meshes"][2]["stacks"] = 16384; },
+         {"meshes[2].stacks: makes 536870912 triangles, more than a scene may hold (33554432)"}},
+        {"instances past the triangle limit", [](json& s) {
+             s["meshes"][0]["divisions"] = {2048, 2048};   // 8.4 M triangles, five copies
+             s["instances"][0]["repeat"] = {{"count", {5, 1, 1}}, {"offset", {1, 0, 0}}};
+         }, {"the scene has 41943041 world-space triangles, more than the limit of 33554432"}},
+    });
+}
+
 TEST_CASE("mesh files: missing, unreadable, malformed, empty scenes") {
     auto meshFile = [](const char* file) { return [file](json& s) { s["meshes"][1]["file"] = file; }; };
     checkCases({

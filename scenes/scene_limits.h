@@ -1,0 +1,16 @@
+// The largest scene shadowlab loads, checked before anything of that size is allocated, so
+// a small file cannot ask for more memory than a 24 GB machine has (docs/scene-format.md,
+// "Limits"). A scene at the limits needs a few GB: its world geometry, Embree's BVH for the
+// reference (about 100 bytes per triangle) and one technique's buffers.
+#pragma once
+
+#include <cstdint>
+
+namespace shadowlab {
+
+inline constexpr uint64_t kMaxSceneTriangles = uint64_t(1) << 25;   // world-space, after instancing
+inline constexpr uint64_t kMaxSceneVertices = uint64_t(1) << 25;
+inline constexpr uint64_t kMaxInstances = uint64_t(1) << 16;        // after "repeat"
+inline constexpr uint64_t kMaxFileBytes = uint64_t(1) << 31;        // any scene, mesh or image file read
+
+}  // namespace shadowlab
