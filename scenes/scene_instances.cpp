@@ -3,6 +3,7 @@
 // Fit normalises the mesh in its own space (height, lowest point), Transform places it
 // (translate/rotate/scale or a matrix), Repeat shifts each copy of a lattice.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <glm/gtc/matrix_access.hpp>
@@ -100,6 +101,18 @@ std::vector<glm::vec3> readRepeat(const JsonField& field, size_t instancesBefore
     return shifts;
 }
 
+// Every vertex must land at a finite float in world space, as flatten() computes it (a
+// translation of 3e38 with a scale of 2 overflows): otherwise infinities would reach the
+// rasterizer, Embree and the ray offsets.
+void checkFiniteInWorld(const JsonField& field, const MeshInstance& instance, const Mesh& mesh) {
+    for (size_t k = 0; k < mesh.positions.size(); ++k) {
+        const glm::vec4 q = instance.worldFromObject * glm::vec4(mesh.positions[k], 1.0f);
+        if (std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)) continue;
+        field.fail("instance \"" + instance.name + "\": vertex " + std::to_string(k) +
+                   " is not finite in world space (the transform overflows float)");
+    }
+}
+
 }  // namespace
 
 void readInstance(const JsonField& field, const SceneNames& names, Scene& scene) {
@@ -116,6 +129,7 @@ void readInstance(const JsonField& field, const SceneNames& names, Scene& scene)
     if (!repeat) {
         if (scene.instances.size() >= kMaxInstances)
             field.fail("a scene holds at most " + std::to_string(kMaxInstances) + " instances");
+        checkFiniteInWorld(field, instance, scene.meshes[instance.mesh]);
         scene.instances.push_back(instance);
         return;
     }
@@ -124,6 +138,7 @@ void readInstance(const JsonField& field, const SceneNames& names, Scene& scene)
         MeshInstance shifted = instance;
         shifted.name = instance.name + "[" + std::to_string(copy) + "]";
         shifted.worldFromObject = glm::translate(glm::mat4(1.0f), shifts[copy]) * instance.worldFromObject;
+        checkFiniteInWorld(field, shifted, scene.meshes[instance.mesh]);
         scene.instances.push_back(shifted);
     }
 }
