@@ -6,6 +6,7 @@
 
 #include "scenes/float_range.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_limits.h"
 
 namespace shadowlab {
 namespace {
@@ -85,7 +86,11 @@ private:
 nlohmann::json parseJson(const std::string& text, const std::string& file) {
     PathTracker tracker;
     try {
-        return nlohmann::json::parse(text, [&tracker](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        return nlohmann::json::parse(text, [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+            // Refused while parsing: a deeper document would only ever be an attack on the
+            // recursive code that reads and prints JSON (a scene needs 4 levels).
+            if (depth > kMaxJsonDepth)
+                throw SceneError(located(file, tracker.path(), "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels"));
             tracker.onEvent(event, parsed);
             return true;
         });

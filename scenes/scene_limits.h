@@ -12,5 +12,6 @@ inline constexpr uint64_t kMaxSceneTriangles = uint64_t(1) << 25;   // world-spa
 inline constexpr uint64_t kMaxSceneVertices = uint64_t(1) << 25;
 inline constexpr uint64_t kMaxInstances = uint64_t(1) << 16;        // after "repeat"
 inline constexpr uint64_t kMaxFileBytes = uint64_t(1) << 31;        // any scene, mesh or image file read
+inline constexpr int kMaxJsonDepth = 64;                            // nesting of a scene file
 
 }  // namespace shadowlab

@@ -295,3 +295,13 @@ TEST_CASE("scene files that cannot be read at all") {
     test::checkMessage(test::sceneErrorOf([&] { loadScene("not-a-built-in"); }),
                        {"unknown scene \"not-a-built-in\"", "sphere-box"});
 }
+
+TEST_CASE("JSON nested past the limit is refused while parsing (200000 levels crashed the loader)") {
+    const test::TempDir dir;
+    const std::string deep = dir.write("deep.json", std::string(200000, '[') + std::string(200000, ']'));
+    test::checkMessage(test::sceneErrorOf([&] { loadScene(deep); }), {deep + ": [0][0]", "nested deeper than 64 levels"});
+    // A scene nested to the limit is refused by its fields, not its depth.
+    const std::string atLimit = dir.write("limit.json", "{\"meshes\": " + std::string(63, '[') + std::string(63, ']') + "}");
+    const std::string message = test::sceneErrorOf([&] { loadScene(atLimit); });
+    CHECK(message.find("nested deeper") == std::string::npos);
+}
