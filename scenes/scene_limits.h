@@ -4,6 +4,7 @@
 // reference (about 100 bytes per triangle) and one technique's buffers.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace shadowlab {
@@ -13,5 +14,6 @@ inline constexpr uint64_t kMaxSceneVertices = uint64_t(1) << 25;
 inline constexpr uint64_t kMaxInstances = uint64_t(1) << 16;        // after "repeat"
 inline constexpr uint64_t kMaxFileBytes = uint64_t(1) << 31;        // any scene, mesh or image file read
 inline constexpr int kMaxJsonDepth = 64;                            // nesting of a scene file
+inline constexpr size_t kMaxImageChannels = 16;                     // channels of an EXR read (compare)
 
 }  // namespace shadowlab

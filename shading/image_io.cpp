@@ -18,6 +18,9 @@
 #include <ImfOutputFile.h>
 #include <stb_image_write.h>
 
+#include "raster/fixed_point.h"
+#include "scenes/scene_limits.h"
+
 namespace shadowlab {
 namespace fs = std::filesystem;
 
@@ -75,14 +78,29 @@ std::vector<std::string> channelNamesOf(const Imf::Header& header) {
     return names;
 }
 
+// The buffers are sized from the header, so the header is checked first: no larger than the
+// images shadowlab writes (raster::kMaxViewport on a side, kMaxImageChannels channels).
+void checkExrSize(const fs::path& path, int64_t width, int64_t height, size_t channels) {
+    if (width < 1 || height < 1 || width > raster::kMaxViewport || height > raster::kMaxViewport) {
+        throw std::runtime_error("EXR file " + quoted(path) + ": its data window is " + std::to_string(width) + " x " +
+                                 std::to_string(height) + " pixels; images must be 1.." + std::to_string(raster::kMaxViewport) +
+                                 " on a side");
+    }
+    if (channels > kMaxImageChannels) {
+        throw std::runtime_error("EXR file " + quoted(path) + ": " + std::to_string(channels) + " channels, more than " +
+                                 std::to_string(kMaxImageChannels));
+    }
+}
+
 ImageChannels readExrFile(const fs::path& path, const std::vector<std::string>* wanted) {
     Imf::InputFile input(path.c_str());
     const Imath::Box2i window = input.header().dataWindow();
     ImageChannels image;
     image.source = path.string();
+    image.names = wanted ? *wanted : channelNamesOf(input.header());
+    checkExrSize(path, int64_t(window.max.x) - window.min.x + 1, int64_t(window.max.y) - window.min.y + 1, image.names.size());
     image.width = window.max.x - window.min.x + 1;
     image.height = window.max.y - window.min.y + 1;
-    image.names = wanted ? *wanted : channelNamesOf(input.header());
     image.data.resize(image.names.size());
     Imf::FrameBuffer frameBuffer;
     for (size_t k = 0; k < image.names.size(); ++k) {

@@ -154,3 +154,32 @@ TEST_CASE("reading errors name the file and the channel") {
     }
     CHECK_THROWS_AS(readExr(file).at("Z"), std::runtime_error);
 }
+
+// Buffers are sized from the header: a header larger than shadowlab's images is refused
+// before anything is allocated (a data window of 2^31 x 2^31 would otherwise be allocated).
+TEST_CASE("reading refuses images wider than 8192 pixels or with more than 16 channels") {
+    ScratchDirectory dir("read_limits");
+    const auto message = [](const fs::path& path) {
+        try {
+            readExr(path);
+        } catch (const std::runtime_error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    ImageChannels wide;
+    wide.width = 8193, wide.height = 1;
+    wide.set("V", std::vector<float>(wide.pixelCount(), 1.0f));
+    const fs::path wideFile = dir.path / "wide.exr";
+    writeExr(wideFile, wide);
+    CHECK(message(wideFile).find("data window is 8193 x 1 pixels; images must be 1..8192 on a side") != std::string::npos);
+    ImageChannels many;
+    many.width = many.height = 1;
+    for (int c = 0; c < 17; ++c) many.set(std::string(1, char('A' + c)), {float(c)});
+    const fs::path manyFile = dir.path / "many.exr";
+    writeExr(manyFile, many);
+    CHECK(message(manyFile).find("17 channels, more than 16") != std::string::npos);
+    many.data.pop_back(), many.names.pop_back();   // 16 channels: read
+    writeExr(manyFile, many);
+    CHECK(readExr(manyFile).names.size() == 16);
+}
