@@ -3,8 +3,11 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <random>
+#include <sstream>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -118,4 +121,23 @@ TEST_CASE("scalar, AVX2 and AVX-512 kernels at 1, 2 and 8 threads give identical
             CHECK(sameBytes(o.ids, reference.ids));
         }
     }
+}
+
+// Tests pass over a SIMD level this CPU lacks. So that a broken detection cannot turn every
+// vector test into a silent skip, .ci/run lists the levels /proc/cpuinfo shows in
+// SHADOWLAB_REQUIRE_SIMD, and each must be detected (and so tested).
+TEST_CASE("every SIMD level the CI machine has is detected, so none of its tests is skipped") {
+    const char* required = std::getenv("SHADOWLAB_REQUIRE_SIMD");
+    if (!required || !*required) {
+        MESSAGE("SHADOWLAB_REQUIRE_SIMD is not set (.ci/run sets it): nothing required");
+        return;
+    }
+    std::stringstream names(required);
+    int checked = 0;
+    for (std::string name; std::getline(names, name, ',');) {
+        INFO("SHADOWLAB_REQUIRE_SIMD names " << name);
+        CHECK(simdLevelSupported(parseSimdLevel(name)));
+        ++checked;
+    }
+    CHECK(checked > 0);
 }
