@@ -111,11 +111,6 @@ expect_error "render without output" render sphere-box "${tiny[@]}"
 expect_error "render without scene" render -o "$scratch/x.png"
 expect_error "bad --width" render sphere-box --width 0 -o "$scratch/x.png"
 expect_error "csm without a sun" render sphere-box --technique csm "${tiny[@]}" -o "$scratch/x.png"
-expect_error "view parallel to up" render sphere-box --eye 0,9,0 --target 0,0,0 "${tiny[@]}" -o "$scratch/x.png"
-expect_error "render --threads beyond the limit" render sphere-box --threads 100000 "${tiny[@]}" -o "$scratch/x.png"
-expect_error "bench --threads beyond the limit" bench --scenes sphere-box --threads 100000 --runs 1
-# Checked before the runs (a bench of throughput takes minutes): the error comes at once.
-expect_error "bench --json into a missing directory" bench --scenes throughput --runs 1000 --json "$scratch/missing/b.json"
 expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
 
 # ---- Whole or nothing -------------------------------------------------------------------

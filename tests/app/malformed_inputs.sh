@@ -1,0 +1,169 @@
+#!/usr/bin/env bash
+# The catalogue of malformed inputs (issue 10): scene JSON, OBJ, PLY (ASCII and binary), EXR
+# given to `compare`, and bad values of every command's options. Each case must exit
+# non-zero within 10 s under a 4 GiB address-space limit, print exactly one stderr line
+# "shadowlab: error: ..." holding the expected text, and leave no output file.
+# The inputs are made here, in the scratch directory: truncated, empty, binary-garbage and
+# wrong-type files, enormous declared counts, a symlink loop, directories given as files.
+# Usage: malformed_inputs.sh PATH/TO/shadowlab SCRATCH_DIR
+set -u
+
+bin=${1:?usage: malformed_inputs.sh SHADOWLAB SCRATCH_DIR}
+dir=${2:?usage: malformed_inputs.sh SHADOWLAB SCRATCH_DIR}
+rm -rf "$dir"
+mkdir -p "$dir"
+cases=0
+failed=0
+out=$dir/out.png   # every render case names this output; none may leave it
+
+# expect NAME EXPECTED ARGS...: the case described above.
+expect() {
+    local name=$1 expected=$2
+    shift 2
+    cases=$((cases + 1))
+    rm -f "$out"
+    # A subshell keeps the limits to this case: 4 GiB of address space, 10 s.
+    (ulimit -v 4194304; exec timeout 10 "$bin" "$@") >"$dir/stdout" 2>"$dir/stderr"
+    local rc=$? problem=""
+    if [ "$rc" -eq 0 ]; then problem="exited 0"
+    elif [ "$rc" -eq 124 ]; then problem="did not finish in 10 s"
+    elif [ "$rc" -gt 128 ]; then problem="died of signal $((rc - 128))"
+    elif [ "$(wc -l <"$dir/stderr")" -ne 1 ]; then problem="printed $(wc -l <"$dir/stderr") stderr lines"
+    elif ! grep -q "^shadowlab: error: " "$dir/stderr"; then problem="stderr is not 'shadowlab: error: ...'"
+    elif ! grep -qF -- "$expected" "$dir/stderr"; then problem="the message lacks \"$expected\""
+    elif [ -e "$out" ]; then problem="left $out behind"
+    fi
+    if [ -n "$problem" ]; then
+        failed=$((failed + 1))
+        echo "FAIL: $name: $problem; 'shadowlab $*' stderr:"
+        head -c 400 "$dir/stderr" | sed 's/^/    /'
+    fi
+}
+
+# ---- Inputs -----------------------------------------------------------------------------
+scene() {   # scene FILE MESHES INSTANCES [CAMERA]: a scene file around the given parts
+    local camera=${4:-'{"eye": [0, 3, 6], "target": [0, 0, 0], "fovy": 45, "width": 32, "height": 24}'}
+    printf '{"meshes": %s, "materials": [{"name": "m"}], "instances": %s,\n "lights": [{"type": "point", "position": [0, 5, 0], "power": 10}],\n "camera": %s}\n' \
+        "$2" "$3" "$camera" >"$dir/$1"
+}
+box='[{"name": "box", "procedural": "box", "min": [-1, 0, -1], "max": [1, 1, 1]}]'
+onBox='[{"mesh": "box", "material": "m"}]'
+meshFile() { echo "[{\"name\": \"f\", \"file\": \"$1\"}]"; }
+onFile='[{"mesh": "f", "material": "m"}]'
+
+: >"$dir/empty.json"
+head -c 4096 /dev/urandom >"$dir/garbage.json"
+scene valid.json "$box" "$onBox"
+head -c 100 "$dir/valid.json" >"$dir/truncated.json"
+echo '[1, 2, 3]' >"$dir/array.json"
+scene string-meshes.json '"box"' "$onBox"
+scene overflow-number.json '[{"name": "box", "procedural": "box", "min": [-1e999, 0, -1], "max": [1, 1, 1]}]' "$onBox"
+python3 -c "print('[' * 100000 + ']' * 100000)" >"$dir/deep.json"
+scene repeat.json "$box" '[{"mesh": "box", "material": "m", "repeat": {"count": [1024, 1024, 1024], "offset": [1, 1, 1]}}]'
+scene grid.json '[{"name": "g", "procedural": "grid", "size": [1, 1], "divisions": [16384, 16384]}]' '[{"mesh": "g", "material": "m"}]'
+scene sphere.json '[{"name": "s", "procedural": "uv-sphere", "radius": 1, "slices": 16384, "stacks": 16384}]' '[{"mesh": "s", "material": "m"}]'
+scene overflow.json "$box" '[{"mesh": "box", "material": "m", "translate": [3e38, 0, 0], "scale": 2e38}]'
+scene wide.json "$box" "$onBox" '{"eye": [0, 3, 6], "target": [0, 0, 0], "fovy": 45, "width": 16384, "height": 24}'
+scene parallel.json "$box" "$onBox" '{"eye": [0, 9, 0], "target": [0, 0, 0], "fovy": 45, "width": 32, "height": 24}'
+scene typo.json "$box" '[{"mesh": "box", "material": "m", "transalte": [0, 1, 0]}]'
+mkdir -p "$dir/folder.json" "$dir/folder.obj"
+ln -sf loop-b.json "$dir/loop-a.json"
+ln -sf loop-a.json "$dir/loop-b.json"
+scene missing-mesh.json "$(meshFile none.obj)" "$onFile"
+scene folder-mesh.json "$(meshFile folder.obj)" "$onFile"
+ln -sf loop-b.obj "$dir/loop-a.obj"
+ln -sf loop-a.obj "$dir/loop-b.obj"
+scene loop-mesh.json "$(meshFile loop-a.obj)" "$onFile"
+for name in no-faces garbage index nan short empty-ply header-ply truncated-ply huge-ply rows-ply text-ply \
+            big-endian-ply list-ply; do
+    ext=obj
+    [[ $name == *-ply ]] && ext=ply
+    scene "mesh-$name.json" "$(meshFile "$name.$ext")" "$onFile"
+done
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n' >"$dir/no-faces.obj"
+head -c 4096 /dev/urandom >"$dir/garbage.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' >"$dir/index.obj"
+printf 'v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n' >"$dir/nan.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n' >"$dir/short.obj"
+: >"$dir/empty-ply.ply"
+printf 'ply\nformat ascii 1.0\nelement vertex 3\n' >"$dir/header-ply.ply"
+plyBinary='ply\nformat binary_little_endian 1.0\nelement vertex %s\nproperty float x\nproperty float y\nproperty float z\nelement face %s\nproperty list uchar int vertex_indices\nend_header\n'
+{ printf "$plyBinary" 3 1; head -c 20 /dev/zero; } >"$dir/truncated-ply.ply"
+{ printf "$plyBinary" 4000000000 4000000000; head -c 64 /dev/zero; } >"$dir/huge-ply.ply"
+printf 'ply\nformat ascii 1.0\nelement junk 18446744073709551615\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$dir/rows-ply.ply"
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n' >"$dir/text-ply.ply"
+printf 'ply\nformat binary_big_endian 1.0\nend_header\n' >"$dir/big-endian-ply.ply"
+{ printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n'
+  head -c 36 /dev/zero; printf '\xff\xff\xff\xff'; head -c 12 /dev/zero; } >"$dir/list-ply.ply"
+head -c 4096 /dev/urandom >"$dir/garbage.exr"
+: >"$dir/empty.exr"
+mkdir -p "$dir/folder.exr"
+
+# ---- Scene files --------------------------------------------------------------------------
+expect "empty scene file" "invalid JSON: [json.exception.parse_error.101] parse error at line 1, column 1: syntax error while parsing value - unexpected end of input" render "$dir/empty.json" -o "$out"
+expect "binary garbage as a scene" "garbage.json: invalid JSON: [json.exception.parse_error.101] parse error at line 1" render "$dir/garbage.json" -o "$out"
+expect "truncated scene" "invalid JSON: [json.exception.parse_error.101] parse error at line 1, column 101" render "$dir/truncated.json" -o "$out"
+expect "an array, not an object" "array.json: must be an object, got [1,2,3]" render "$dir/array.json" -o "$out"
+expect "meshes as a string" "meshes: must be an array" render "$dir/string-meshes.json" -o "$out"
+expect "a number beyond double" "meshes[0].min[0]: invalid JSON: [json.exception.out_of_range.406] number overflow parsing '-1e999'" render "$dir/overflow-number.json" -o "$out"
+expect "JSON nested 100000 deep" "nested deeper than 64 levels" render "$dir/deep.json" -o "$out"
+expect "a repeat of 1024^3 copies" "makes 1073741824 copies; a scene holds at most 65536 instances" render "$dir/repeat.json" -o "$out"
+expect "a 16384^2 grid" "makes 536870912 triangles, more than a scene may hold" render "$dir/grid.json" -o "$out"
+expect "a 16384^2 sphere" "makes 536870912 triangles, more than a scene may hold" render "$dir/sphere.json" -o "$out"
+expect "a transform overflowing float" "is not finite in world space" render "$dir/overflow.json" -o "$out"
+expect "a 16384-pixel camera" "camera.width: must be in [1, 8192], got 16384" render "$dir/wide.json" -o "$out"
+expect "a view parallel to up" "up must not be zero or parallel to the viewing direction" render "$dir/parallel.json" -o "$out"
+expect "a misspelt key" "unknown key \"transalte\"" render "$dir/typo.json" -o "$out"
+expect "a directory as the scene" "is a directory, not a file" render "$dir/folder.json" -o "$out"
+expect "a symlink loop as the scene" "cannot open" render "$dir/loop-a.json" -o "$out"
+expect "a missing scene" "cannot open" render "$dir/none.json" -o "$out"
+expect "a missing mesh file" "none.obj: cannot open" render "$dir/missing-mesh.json" -o "$out"
+expect "a directory as the mesh" "folder.obj: is a directory, not a file" render "$dir/folder-mesh.json" -o "$out"
+expect "a symlink loop as the mesh" "loop-a.obj: cannot open" render "$dir/loop-mesh.json" -o "$out"
+
+# ---- OBJ ------------------------------------------------------------------------------------
+expect "an OBJ without faces" "the scene has no triangles" render "$dir/mesh-no-faces.json" -o "$out"
+expect "binary garbage as OBJ (no line is OBJ)" "the scene has no triangles" render "$dir/mesh-garbage.json" -o "$out"
+expect "an OBJ index out of range" "vertex index 9 (1-based) is out of range" render "$dir/mesh-index.json" -o "$out"
+expect "an OBJ NaN vertex" "vertex x \"nan\"" render "$dir/mesh-nan.json" -o "$out"
+expect "an OBJ face of two corners" "short.obj: 1 face(s) with fewer than 3 vertices" render "$dir/mesh-short.json" -o "$out"
+
+# ---- PLY ------------------------------------------------------------------------------------
+expect "an empty PLY" "the file ends before \"end_header\"" render "$dir/mesh-empty-ply.json" -o "$out"
+expect "a PLY header without end" "the file ends before \"end_header\"" render "$dir/mesh-header-ply.json" -o "$out"
+expect "a truncated binary PLY" "element vertex 1: truncated" render "$dir/mesh-truncated-ply.json" -o "$out"
+expect "a PLY declaring 4e9 vertices" "truncated" render "$dir/mesh-huge-ply.json" -o "$out"
+expect "a PLY element of 2^64 - 1 empty rows" "has 18446744073709551615 rows but no properties" render "$dir/mesh-rows-ply.json" -o "$out"
+expect "a word in an ASCII PLY" "\"zero\" is not a valid float" render "$dir/mesh-text-ply.json" -o "$out"
+expect "a big-endian PLY" "binary_big_endian PLY is not supported" render "$dir/mesh-big-endian-ply.json" -o "$out"
+expect "a PLY list of 2^32 - 1 items" "truncated" render "$dir/mesh-list-ply.json" -o "$out"
+
+# ---- EXR given to compare ---------------------------------------------------------------------
+"$bin" render sphere-box --width 32 --height 20 --aov "$dir/ok.exr" -o "$dir/ok.png" >/dev/null 2>&1 ||
+    { echo "FAIL: could not render the valid EXR the compare cases use"; failed=$((failed + 1)); }
+expect "binary garbage as EXR" "garbage.exr': Cannot read image file \"$dir/garbage.exr\". File is not an image file." compare "$dir/garbage.exr" "$dir/ok.exr" --heatmap "$out"
+expect "an empty EXR" "empty.exr\". Early end of file: read 0 out of 4 requested bytes." compare "$dir/ok.exr" "$dir/empty.exr" --heatmap "$out"
+expect "a directory as EXR" "reference: File is actually a directory: $dir/folder.exr" compare "$dir/folder.exr" "$dir/ok.exr" --heatmap "$out"
+expect "a channel the EXR lacks" "has no channel 'Q'" compare "$dir/ok.exr" "$dir/ok.exr" --channel Q --heatmap "$out"
+
+# ---- Command-line values --------------------------------------------------------------------
+tiny=(--width 32 --height 20)
+expect "render --threads 100000" "--threads: Value 100000 not in range 0 to 1024" render sphere-box --threads 100000 -o "$out"
+expect "render --width 0" "--width: Value 0 not in range 1 to 8192" render sphere-box --width 0 -o "$out"
+expect "render --width 9000" "--width: Value 9000 not in range 1 to 8192" render sphere-box --width 9000 -o "$out"
+expect "render --fovy 0" "--fovy must be in (0, 180) degrees" render sphere-box --fovy 0 "${tiny[@]}" -o "$out"
+expect "render --eye nan" "--eye: expected three numbers as x,y,z, got 'nan,0,0'" render sphere-box --eye nan,0,0 "${tiny[@]}" -o "$out"
+expect "render --eye above the target" "parallel to the camera's up" render sphere-box --eye 0,9,0 --target 0,0,0 "${tiny[@]}" -o "$out"
+expect "render --light-radius -1" "--light-radius must be a finite number > 0" render sphere-box --light-radius -1 "${tiny[@]}" -o "$out"
+expect "render --simd bogus" "unknown SIMD level 'bogus'" render sphere-box --simd bogus "${tiny[@]}" -o "$out"
+expect "render --param resolution=abc" "shadow-map: parameter resolution=abc: must be an integer in 16..8192" render sphere-box --technique shadow-map --param resolution=abc "${tiny[@]}" -o "$out"
+expect "sweep --threads 0" "--threads: Value 0 not in range 1 to 1024" sweep sphere-box --technique shadow-map --threads 0 --out "$dir/sweep"
+expect "sweep --runs 0" "--runs: Value 0 not in range 1 to 10000" sweep sphere-box --technique shadow-map --runs 0 --out "$dir/sweep"
+expect "scaling with one scene" "scaling: give at least two scenes" scaling sphere-box --technique shadow-map --out "$dir/scaling"
+expect "bench --threads 100000" "--threads: Value 100000 not in range 1 to 1024" bench --scenes sphere-box --threads 100000
+expect "bench --json into a missing directory" "cannot write '$dir/missing/b.json': no directory '$dir/missing'" bench --scenes throughput --runs 1000 --json "$dir/missing/b.json"
+expect "export-obj into a missing directory" "x.obj.partial: cannot open for writing: No such file or directory" export-obj sphere-box "$dir/missing/x.obj"
+
+echo "$cases cases, $failed failed"
+[ "$cases" -ge 40 ] || { echo "FAIL: the catalogue holds only $cases cases"; exit 1; }
+[ "$failed" -eq 0 ]
