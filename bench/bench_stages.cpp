@@ -236,7 +236,10 @@ void BM_LightView(benchmark::State& state) {
 // thread, each timed alone on the previous stages' results: range(0) is the stage, 1 to 5.
 void BM_IrregularZBuffer(benchmark::State& state) {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    const auto& [scene, world, g, light] = cameraView();
+    const CameraView& view = cameraView();
+    const WorldGeometry& world = view.world;
+    const GBuffer& g = view.g;
+    const Light& light = view.light;
     const double diagonal = sceneDiagonal(world);
     std::vector<float> visibility;
     const izb::Receivers receivers = izb::gatherReceivers(g, light, diagonal, visibility, bestSimdLevel());

@@ -65,7 +65,8 @@ TEST_CASE("grid: counts, exact corners, faces +Y") {
 }
 
 TEST_CASE("uv-sphere: slices*(stacks-1)*2 triangles, radius to one ulp, outward, closed") {
-    for (const auto& [slices, stacks] : {std::pair{3, 2}, std::pair{64, 32}, std::pair{128, 64}, std::pair{7, 5}}) {
+    for (const std::pair<int, int>& size : {std::pair{3, 2}, std::pair{64, 32}, std::pair{128, 64}, std::pair{7, 5}}) {
+        const int slices = size.first, stacks = size.second;   // named, not bound: CAPTURE takes them by reference
         CAPTURE(slices);
         CAPTURE(stacks);
         const float radius = 0.4f;

@@ -124,7 +124,9 @@ TEST_CASE("pcss, vsm, esm, evsm, msm: V in [0, 1], lit away from shadows, close 
         {"vsm", {{"filter", "sat"}, {"width", "pcss"}}}, {"msm", {{"filter", "sat"}, {"width", "pcss"}}},
         {"esm", {{"filter", "sat"}, {"width", "pcss"}, {"exponent", "10"}}}, {"evsm", {{"blur", "gaussian"}}},
     };
-    for (const auto& [name, params] : runs) {
+    for (const auto& run : runs) {
+        const std::string& name = run.first;
+        const std::map<std::string, std::string>& params = run.second;
         const ShadowOutputs out = s.run(name, params);
         size_t outside = 0, darkFar = 0, farPixels = 0;
         for (size_t k = 0; k < g.pixelCount(); ++k) {
@@ -192,7 +194,9 @@ TEST_CASE("soft techniques: the same V bytes with 1 and 2 threads") {
         {"pcss", {}}, {"vsm", {{"filter", "sat"}, {"width", "pcss"}}}, {"esm", {}}, {"evsm", {{"blur", "gaussian"}}},
         {"msm", {{"filter", "sat"}}}, {"multi-sample", {{"samples", "4"}, {"resolution", "512"}}},
     };
-    for (const auto& [name, params] : runs) {
+    for (const auto& run : runs) {
+        const std::string& name = run.first;
+        const std::map<std::string, std::string>& params = run.second;
         std::vector<float> v[2];
         for (int threads : {1, 2}) {
             v[threads - 1] = withThreads(threads, [&] { return s.run(name, params).visibility; });

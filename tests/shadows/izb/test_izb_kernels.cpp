@@ -126,7 +126,8 @@ TEST_CASE("izb occlusion kernel: every SIMD level sets exactly the bytes segment
             CHECK(blocked > n / 10);
             for (raster::SimdLevel level : supportedLevels()) {
                 CAPTURE(raster::simdLevelName(level));
-                for (const auto& [begin, end] : {std::pair<uint32_t, uint32_t>{0, uint32_t(n)}, {3, 4}, {5, 18}, {100, 100}, {7, uint32_t(n - 2)}}) {
+                for (const auto& range : {std::pair<uint32_t, uint32_t>{0, uint32_t(n)}, {3, 4}, {5, 18}, {100, 100}, {7, uint32_t(n - 2)}}) {
+                    const uint32_t begin = range.first, end = range.second;
                     CAPTURE(begin);
                     CAPTURE(end);
                     std::vector<uint8_t> got(n, 2);   // 2: untouched

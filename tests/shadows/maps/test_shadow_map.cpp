@@ -81,7 +81,9 @@ TEST_CASE("shadow-map and csm: the same V bytes with 1 and 2 threads") {
         {"shadow-map", {{"warp", "lispsm"}, {"filter", "bilinear"}, {"resolution", "512"}}},
         {"csm", {{"filter", "grid"}, {"resolution", "512"}}},
     };
-    for (const auto& [technique, params] : runs) {
+    for (const auto& run : runs) {
+        const std::string& technique = run.first;
+        const std::map<std::string, std::string>& params = run.second;
         std::vector<float> v[2];
         for (int threads : {1, 2}) {
             v[threads - 1] = withThreads(threads, [&] { return frameOf(prepared, technique, params).shadow.visibility; });
