@@ -6,6 +6,9 @@
 # The inputs are made here, in the scratch directory: truncated, empty, binary-garbage and
 # wrong-type files, enormous declared counts, a symlink loop, directories given as files.
 # Usage: malformed_inputs.sh PATH/TO/shadowlab SCRATCH_DIR
+# SHADOWLAB_CATALOGUE_MEMORY: the address-space limit in KiB (default 4194304), or
+# "unlimited" for a sanitizer build, whose shadow memory needs terabytes of address space
+# (AddressSanitizer bounds each allocation itself).
 set -u
 
 bin=${1:?usage: malformed_inputs.sh SHADOWLAB SCRATCH_DIR}
@@ -22,8 +25,8 @@ expect() {
     shift 2
     cases=$((cases + 1))
     rm -f "$out"
-    # A subshell keeps the limits to this case: 4 GiB of address space, 10 s.
-    (ulimit -v 4194304; exec timeout 10 "$bin" "$@") >"$dir/stdout" 2>"$dir/stderr"
+    # A subshell keeps the limits to this case: 4 GiB of address space (by default), 10 s.
+    (ulimit -v "${SHADOWLAB_CATALOGUE_MEMORY:-4194304}"; exec timeout 10 "$bin" "$@") >"$dir/stdout" 2>"$dir/stderr"
     local rc=$? problem=""
     if [ "$rc" -eq 0 ]; then problem="exited 0"
     elif [ "$rc" -eq 124 ]; then problem="did not finish in 10 s"
