@@ -165,7 +165,7 @@ expect "sweep --runs 0" "--runs: Value 0 not in range 1 to 10000" sweep sphere-b
 expect "scaling with one scene" "scaling: give at least two scenes" scaling sphere-box --technique shadow-map --out "$dir/scaling"
 expect "bench --threads 100000" "--threads: Value 100000 not in range 1 to 1024" bench --scenes sphere-box --threads 100000
 expect "bench --json into a missing directory" "cannot write '$dir/missing/b.json': no directory '$dir/missing'" bench --scenes throughput --runs 1000 --json "$dir/missing/b.json"
-expect "export-obj into a missing directory" "x.obj.partial: cannot open for writing: No such file or directory" export-obj sphere-box "$dir/missing/x.obj"
+expect "export-obj into a missing directory" "$dir/missing/x.obj: cannot open for writing: No such file or directory" export-obj sphere-box "$dir/missing/x.obj"
 
 echo "$cases cases, $failed failed"
 [ "$cases" -ge 40 ] || { echo "FAIL: the catalogue holds only $cases cases"; exit 1; }
