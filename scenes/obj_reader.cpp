@@ -108,6 +108,9 @@ Mesh readObj(const std::string& path) {
     for (const tinyobj::shape_t& shape : reader.GetShapes()) addFaces(shape, mesh.positions.size(), face, mesh, path);
     if (face != faceLines)
         throw SceneError(path + ": " + std::to_string(faceLines - face) + " face(s) with fewer than 3 vertices");
+    // OBJ readers skip lines they do not know, so any file parses: one with nothing in it is
+    // named here rather than reported later as a scene without triangles.
+    if (mesh.positions.empty() && faceLines == 0) throw SceneError(path + ": holds no vertices and no faces (not an OBJ file?)");
     return mesh;
 }
 

@@ -126,7 +126,7 @@ expect "a symlink loop as the mesh" "loop-a.obj: cannot open" render "$dir/loop-
 
 # ---- OBJ ------------------------------------------------------------------------------------
 expect "an OBJ without faces" "the scene has no triangles" render "$dir/mesh-no-faces.json" -o "$out"
-expect "binary garbage as OBJ (no line is OBJ)" "the scene has no triangles" render "$dir/mesh-garbage.json" -o "$out"
+expect "binary garbage as OBJ" "garbage.obj: holds no vertices and no faces (not an OBJ file?)" render "$dir/mesh-garbage.json" -o "$out"
 expect "an OBJ index out of range" "vertex index 9 (1-based) is out of range" render "$dir/mesh-index.json" -o "$out"
 expect "an OBJ NaN vertex" "vertex x \"nan\"" render "$dir/mesh-nan.json" -o "$out"
 expect "an OBJ face of two corners" "short.obj: 1 face(s) with fewer than 3 vertices" render "$dir/mesh-short.json" -o "$out"
