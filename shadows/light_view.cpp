@@ -27,6 +27,10 @@ struct SidePlanes {
     glm::dvec4 plane[4];   // (nx, ny, nz, d): inside when dot(n, p) + d >= 0
 };
 
+// How far inside side plane p the point q lies (negative outside): the one expression the
+// clipping (nearestInside) and the per-vertex test (viewVertices) both decide by.
+double sideDistance(const glm::dvec4& p, const glm::dvec3& q) { return glm::dot(glm::dvec3(p), q) + p.w; }
+
 // Receiver bounds in the view: tangents (perspective) or coordinates (orthographic).
 struct Bounds {
     double x0 = kInfinity, x1 = -kInfinity, y0 = kInfinity, y1 = -kInfinity;
@@ -120,7 +124,7 @@ double nearestInside(const glm::dvec3 (&triangle)[3], const SidePlanes& sides) {
         int m = 0;
         for (int i = 0; i < n; ++i) {
             const glm::dvec3 &a = polygon[i], &b = polygon[(i + 1) % n];
-            const double da = glm::dot(glm::dvec3(p), a) + p.w, db = glm::dot(glm::dvec3(p), b) + p.w;
+            const double da = sideDistance(p, a), db = sideDistance(p, b);
             if (da >= 0.0) next[m++] = a;
             if ((da >= 0.0) != (db >= 0.0)) next[m++] = da >= 0.0 ? a + (b - a) * (da / (da - db)) : b + (a - b) * (db / (db - da));
         }
@@ -138,7 +142,7 @@ glm::dvec3 inView(const WorldGeometry& world, const glm::dmat4& viewFromWorld, u
 }
 
 // Each vertex once in the view: its depth (-z), and bit k set when it lies inside side plane
-// k, by the same expression nearestInside() evaluates.
+// k (sideDistance, as nearestInside() decides).
 struct ViewVertices {
     std::vector<double> depth;
     std::vector<uint8_t> insideBits;
@@ -152,7 +156,7 @@ ViewVertices viewVertices(const WorldGeometry& world, const glm::dmat4& viewFrom
         for (size_t i = range.begin(); i != range.end(); ++i) {
             const glm::dvec3 q = inView(world, viewFromWorld, uint32_t(i));
             uint8_t bits = 0;
-            for (int k = 0; k < 4; ++k) bits |= uint8_t(glm::dot(glm::dvec3(sides.plane[k]), q) + sides.plane[k].w >= 0.0) << k;
+            for (int k = 0; k < 4; ++k) bits |= uint8_t(sideDistance(sides.plane[k], q) >= 0.0) << k;
             out.depth[i] = -q.z, out.insideBits[i] = bits;
         }
     });

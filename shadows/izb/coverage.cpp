@@ -28,6 +28,9 @@ constexpr double kSlack = 1e-4;   // texels
 struct HalfSpace {
     glm::dvec4 normal;
     double offset;
+    // How far inside c lies (negative outside): the one expression clipping and the
+    // projected-vertex test (insideRegion) both decide by.
+    double distance(const glm::dvec4& c) const { return glm::dot(normal, c) + offset; }
 };
 
 // Sutherland-Hodgman against one half-space.
@@ -35,7 +38,7 @@ int clipAgainst(const HalfSpace& h, const glm::dvec4* in, int n, glm::dvec4* out
     int m = 0;
     for (int i = 0; i < n; ++i) {
         const glm::dvec4 &a = in[i], &b = in[(i + 1) % n];
-        const double da = glm::dot(h.normal, a) + h.offset, db = glm::dot(h.normal, b) + h.offset;
+        const double da = h.distance(a), db = h.distance(b);
         if (da >= 0.0) out[m++] = a;
         // The crossing is interpolated from the inside end, as in raster/clip.cpp.
         if (da >= 0.0 && db < 0.0) out[m++] = a + (b - a) * (da / (da - db));
@@ -78,7 +81,7 @@ glm::dvec2 texelPoint(const glm::dvec4& c, int resolution) {
 // Inside every half-space, by the test clipAgainst() makes.
 bool insideRegion(const ClipRegion& region, const glm::dvec4& c) {
     for (int p = 0; p < region.count; ++p) {
-        if (!(glm::dot(region.planes[p].normal, c) + region.planes[p].offset >= 0.0)) return false;
+        if (!(region.planes[p].distance(c) >= 0.0)) return false;
     }
     return true;
 }
