@@ -2,16 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <stdexcept>
-#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
+#include "shadows/maps/receiver_ranges.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -91,20 +89,9 @@ std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const G
     if (sun.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
     double n = camera.zNear, f = camera.zFar;
     if (s.sampleBounds) {
-        // The nearest and farthest receivers, rows in parallel (a minimum is exact in any order).
-        using Range = std::pair<double, double>;
-        const Range range = tbb::parallel_reduce(
-            tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), Range{std::numeric_limits<double>::infinity(), 0.0},
-            [&](const tbb::blocked_range<size_t>& r, Range b) {
-                for (size_t k = r.begin(); k != r.end(); ++k) {
-                    if (!g.hit[k]) continue;
-                    const double d = viewDepth(camera, glm::dvec3(g.position[k]));
-                    b.first = std::min(b.first, d), b.second = std::max(b.second, d);
-                }
-                return b;
-            },
-            [](Range a, Range b) { return Range{std::min(a.first, b.first), std::max(a.second, b.second)}; });
-        n = range.first, f = range.second;
+        // The nearest and farthest receivers (none, or none in front: no receivers).
+        const Range depth = receiverRanges<1>(g, [&](const glm::dvec3& p) { return glm::dvec1(viewDepth(camera, p)); })[0];
+        n = depth.lo, f = depth.hi;
         if (!(f > 0.0)) throw std::invalid_argument("csm: no receivers (no pixel has hit = 1)");
         n = std::max(n, 1e-3 * f), f *= 1.0 + 1e-6;
         n = boundOnLadder(n, false), f = boundOnLadder(f, true);

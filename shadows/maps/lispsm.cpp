@@ -1,12 +1,10 @@
 #include "shadows/maps/lispsm.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
+#include "shadows/maps/receiver_ranges.h"
 
 namespace shadowlab {
 namespace {
@@ -14,37 +12,6 @@ namespace {
 // Below this sin(gamma) the warp would be indistinguishable from uniform (n_opt over a
 // thousand times z_n + sqrt(z_n z_f)); it is skipped rather than computed in the limit.
 constexpr double kMinSinGamma = 1e-3;
-
-struct Range {
-    double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
-    void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); }
-    void add(const Range& r) { lo = std::min(lo, r.lo), hi = std::max(hi, r.hi); }
-    void widen(double fraction) {
-        const double m = (hi - lo) * fraction;
-        lo -= m, hi += m;
-    }
-};
-
-// The ranges of the three coordinates of values(P) over the receivers, in parallel: a
-// minimum or maximum is exact in any order, so the thread count does not change them.
-template <class Values>
-std::array<Range, 3> receiverRanges(const GBuffer& g, Values values) {
-    using Ranges = std::array<Range, 3>;
-    return tbb::parallel_reduce(
-        tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), Ranges{},
-        [&](const tbb::blocked_range<size_t>& r, Ranges ranges) {
-            for (size_t k = r.begin(); k != r.end(); ++k) {
-                if (!g.hit[k]) continue;
-                const glm::dvec3 v = values(glm::dvec3(g.position[k]));
-                ranges[0].add(v.x), ranges[1].add(v.y), ranges[2].add(v.z);
-            }
-            return ranges;
-        },
-        [](Ranges a, const Ranges& b) {
-            for (int c = 0; c < 3; ++c) a[c].add(b[c]);
-            return a;
-        });
-}
 
 // Rows x, y, z of a rotation matrix (column-major glm) from three unit axes.
 glm::dmat4 rotationRows(const glm::dvec3& x, const glm::dvec3& y, const glm::dvec3& z) {
@@ -76,7 +43,7 @@ LispsmView lispsmView(const LightView& uniform, const Light& sun, const Camera& 
     // Light space: z towards the light, y the view direction projected onto the map plane.
     const glm::dvec3 yL = glm::normalize(viewDir - glm::dot(viewDir, zL) * zL), xL = glm::cross(yL, zL);
     const glm::dmat4 lightFromWorld = rotationRows(xL, yL, zL);
-    const auto [across, along, cameraDepth] = receiverRanges(g, [&](const glm::dvec3& p) {
+    const auto [across, along, cameraDepth] = receiverRanges<3>(g, [&](const glm::dvec3& p) {
         return glm::dvec3(glm::dot(p, xL), glm::dot(p, yL), glm::dot(p - eye, viewDir));
     });
     const double zn = std::max(cameraDepth.lo, 1e-3 * cameraDepth.hi), zf = cameraDepth.hi;
@@ -95,7 +62,7 @@ LispsmView lispsmView(const LightView& uniform, const Light& sun, const Camera& 
     warp[1][3] = 1.0, warp[3][3] = -c.y;                 // W = y - c_y
 
     // Fit the warped receivers into the map, as fitLightView does for the uniform one.
-    auto [u, v, depth] = receiverRanges(g, [&](const glm::dvec3& p) {
+    auto [u, v, depth] = receiverRanges<3>(g, [&](const glm::dvec3& p) {
         const glm::dvec4 h = warp * lightFromWorld * glm::dvec4(p, 1.0);
         return glm::dvec3(h.x / h.w, h.y / h.w, h.z / h.w);
     });
