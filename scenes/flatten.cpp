@@ -26,10 +26,7 @@ WorldGeometry flatten(const Scene& scene) {
         const MeshInstance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[instance.mesh];
         const uint32_t base = uint32_t(world.positions.size());
-        // Plain float mat4 * vec4, so that anyone can reproduce these positions bit for
-        // bit; instance transforms are affine (the loader checks), so w stays 1.
-        for (const glm::vec3& p : mesh.positions)
-            world.positions.emplace_back(instance.worldFromObject * glm::vec4(p, 1.0f));
+        for (const glm::vec3& p : mesh.positions) world.positions.push_back(worldPosition(instance, p));
         for (const glm::uvec3& t : mesh.triangles) {
             world.triangles.push_back(t + base);
             world.triangleMaterial.push_back(instance.material);

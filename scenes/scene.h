@@ -84,6 +84,13 @@ struct WorldGeometry {
 
 WorldGeometry flatten(const Scene& scene);
 
+// Where an instance puts a vertex of its mesh, as flatten() computes it: plain float mat4 *
+// vec4, so that anyone can reproduce the positions bit for bit; instance transforms are
+// affine (the loader checks), so w stays 1.
+inline glm::vec3 worldPosition(const MeshInstance& instance, const glm::vec3& p) {
+    return glm::vec3(instance.worldFromObject * glm::vec4(p, 1.0f));
+}
+
 // Where one instance's vertices and triangles are in the WorldGeometry flatten() makes.
 struct InstanceRange {
     uint32_t mesh;

@@ -101,12 +101,12 @@ std::vector<glm::vec3> readRepeat(const JsonField& field, size_t instancesBefore
     return shifts;
 }
 
-// Every vertex must land at a finite float in world space, as flatten() computes it (a
-// translation of 3e38 with a scale of 2 overflows): otherwise infinities would reach the
-// rasterizer, Embree and the ray offsets.
+// Every vertex must land at a finite float in world space (worldPosition, as flatten()
+// places it; a translation of 3e38 with a scale of 2e38 overflows): otherwise infinities
+// would reach the rasterizer, Embree and the ray offsets.
 void checkFiniteInWorld(const JsonField& field, const MeshInstance& instance, const Mesh& mesh) {
     for (size_t k = 0; k < mesh.positions.size(); ++k) {
-        const glm::vec4 q = instance.worldFromObject * glm::vec4(mesh.positions[k], 1.0f);
+        const glm::vec3 q = worldPosition(instance, mesh.positions[k]);
         if (std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)) continue;
         field.fail("instance \"" + instance.name + "\": vertex " + std::to_string(k) +
                    " is not finite in world space (the transform overflows float)");
