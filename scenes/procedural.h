@@ -4,6 +4,8 @@
 // are exactly symmetric and sphere vertices lie within one float ulp of the radius.
 #pragma once
 
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 #include "scenes/scene.h"
@@ -19,6 +21,11 @@ Mesh makeGrid(glm::vec2 size, glm::ivec2 divisions);
 // caps are triangle fans: slices * (stacks - 1) * 2 triangles, none degenerate.
 // Requires radius > 0, slices >= 3, stacks >= 2.
 Mesh makeUvSphere(float radius, int slices, int stacks);
+
+// The triangles makeGrid and makeUvSphere make, known before making them (the loader
+// checks a scene's limits from these).
+inline uint64_t gridTriangleCount(glm::ivec2 divisions) { return 2 * uint64_t(divisions.x) * uint64_t(divisions.y); }
+inline uint64_t uvSphereTriangleCount(int slices, int stacks) { return 2 * uint64_t(slices) * uint64_t(stacks - 1); }
 
 // An axis-aligned box with 8 shared corners and 12 triangles. Requires min < max.
 Mesh makeBox(glm::vec3 min, glm::vec3 max);

@@ -37,14 +37,14 @@ Mesh readGrid(const JsonObject& object) {
     const std::vector<JsonField> size = object["size"].elements(2);
     const std::vector<JsonField> divisions = object["divisions"].elements(2);
     const glm::ivec2 n(divisions[0].integer(kDivisions), divisions[1].integer(kDivisions));
-    checkProceduralSize(object["divisions"], 2 * uint64_t(n.x) * uint64_t(n.y));
+    checkProceduralSize(object["divisions"], gridTriangleCount(n));
     return makeGrid({size[0].number(kPositive), size[1].number(kPositive)}, n);
 }
 
 Mesh readUvSphere(const JsonObject& object) {
     object.allowOnly({"name", "procedural", "radius", "slices", "stacks"});
     const int slices = object["slices"].integer(kSlices), stacks = object["stacks"].integer(kStacks);
-    checkProceduralSize(object["stacks"], 2 * uint64_t(slices) * uint64_t(stacks));
+    checkProceduralSize(object["stacks"], uvSphereTriangleCount(slices, stacks));
     return makeUvSphere(object["radius"].number(kPositive), slices, stacks);
 }
 

@@ -112,7 +112,7 @@ expect "a number beyond double" "meshes[0].min[0]: invalid JSON: [json.exception
 expect "JSON nested 100000 deep" "nested deeper than 64 levels" render "$dir/deep.json" -o "$out"
 expect "a repeat of 1024^3 copies" "makes 1073741824 copies; a scene holds at most 65536 instances" render "$dir/repeat.json" -o "$out"
 expect "a 16384^2 grid" "makes 536870912 triangles, more than a scene may hold" render "$dir/grid.json" -o "$out"
-expect "a 16384^2 sphere" "makes 536870912 triangles, more than a scene may hold" render "$dir/sphere.json" -o "$out"
+expect "a 16384^2 sphere" "makes 536838144 triangles, more than a scene may hold" render "$dir/sphere.json" -o "$out"
 expect "a transform overflowing float" "is not finite in world space" render "$dir/overflow.json" -o "$out"
 expect "a 16384-pixel camera" "camera.width: must be in [1, 8192], got 16384" render "$dir/wide.json" -o "$out"
 expect "a view parallel to up" "up must not be zero or parallel to the viewing direction" render "$dir/parallel.json" -o "$out"

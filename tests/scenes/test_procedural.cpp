@@ -53,6 +53,7 @@ TEST_CASE("grid: counts, exact corners, faces +Y") {
     const Mesh grid = makeGrid({20.0f, 10.0f}, {64, 32});
     CHECK(grid.positions.size() == 65u * 33u);
     CHECK(grid.triangles.size() == 64u * 32u * 2u);
+    CHECK(grid.triangles.size() == gridTriangleCount({64, 32}));   // the count the loader checks limits by
     CHECK(grid.positions.front() == glm::vec3(-10.0f, 0.0f, -5.0f));
     CHECK(grid.positions.back() == glm::vec3(10.0f, 0.0f, 5.0f));
     CHECK(grid.positions[32] == glm::vec3(0.0f, 0.0f, -5.0f));   // the middle column is exactly x = 0
@@ -72,6 +73,7 @@ TEST_CASE("uv-sphere: slices*(stacks-1)*2 triangles, radius to one ulp, outward,
         const float radius = 0.4f;
         const Mesh sphere = makeUvSphere(radius, slices, stacks);
         CHECK(sphere.triangles.size() == size_t(slices) * size_t(stacks - 1) * 2);
+        CHECK(sphere.triangles.size() == uvSphereTriangleCount(slices, stacks));
         CHECK(sphere.positions.size() == size_t(slices) * size_t(stacks - 1) + 2);
         CHECK(sphere.positions.front() == glm::vec3(0.0f, radius, 0.0f));
         CHECK(sphere.positions.back() == glm::vec3(0.0f, -radius, 0.0f));
