@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <limits>
 
 #include "raster/fixed_point.h"
 #include "scenes/camera.h"
