@@ -4,6 +4,7 @@
 # progress line on stderr only.
 # Usage: cli_test.sh PATH/TO/shadowlab SCRATCH_DIR
 set -u
+source "$(dirname "${BASH_SOURCE[0]}")/one_line_error.sh"
 
 bin=${1:?usage: cli_test.sh SHADOWLAB SCRATCH_DIR}
 scratch=${2:?usage: cli_test.sh SHADOWLAB SCRATCH_DIR}
@@ -43,17 +44,11 @@ expect_error() {
     local what=$1
     shift
     run "$@"
-    local lines
-    lines=$(wc -l <"$err")
-    if [ "$rc" -eq 0 ]; then
-        fail "$what: 'shadowlab $*' exited 0, expected an error"
-    elif [ "$rc" -gt 128 ]; then
-        fail "$what: 'shadowlab $*' died of signal $((rc - 128))"
-    elif [ "$lines" -ne 1 ]; then
-        fail "$what: 'shadowlab $*' printed $lines lines on stderr, expected 1:"
+    local problem
+    problem=$(one_line_error_problem "$rc" "$err")
+    if [ -n "$problem" ]; then
+        fail "$what: 'shadowlab $*' $problem; stderr:"
         sed 's/^/    /' "$err"
-    elif ! head -n 1 "$err" | grep -q "^shadowlab: error: "; then
-        fail "$what: stderr does not start with 'shadowlab: error: ': $(cat "$err")"
     else
         pass
     fi

@@ -10,6 +10,7 @@
 # "unlimited" for a sanitizer build, whose shadow memory needs terabytes of address space
 # (AddressSanitizer bounds each allocation itself).
 set -u
+source "$(dirname "${BASH_SOURCE[0]}")/one_line_error.sh"
 
 bin=${1:?usage: malformed_inputs.sh SHADOWLAB SCRATCH_DIR}
 dir=${2:?usage: malformed_inputs.sh SHADOWLAB SCRATCH_DIR}
@@ -28,13 +29,11 @@ expect() {
     # A subshell keeps the limits to this case: 4 GiB of address space (by default), 10 s.
     (ulimit -v "${SHADOWLAB_CATALOGUE_MEMORY:-4194304}"; exec timeout 10 "$bin" "$@") >"$dir/stdout" 2>"$dir/stderr"
     local rc=$? problem=""
-    if [ "$rc" -eq 0 ]; then problem="exited 0"
-    elif [ "$rc" -eq 124 ]; then problem="did not finish in 10 s"
-    elif [ "$rc" -gt 128 ]; then problem="died of signal $((rc - 128))"
-    elif [ "$(wc -l <"$dir/stderr")" -ne 1 ]; then problem="printed $(wc -l <"$dir/stderr") stderr lines"
-    elif ! grep -q "^shadowlab: error: " "$dir/stderr"; then problem="stderr is not 'shadowlab: error: ...'"
-    elif ! grep -qF -- "$expected" "$dir/stderr"; then problem="the message lacks \"$expected\""
-    elif [ -e "$out" ]; then problem="left $out behind"
+    if [ "$rc" -eq 124 ]; then problem="did not finish in 10 s"   # timeout's status
+    else problem=$(one_line_error_problem "$rc" "$dir/stderr")
+    fi
+    if [ -z "$problem" ] && ! grep -qF -- "$expected" "$dir/stderr"; then problem="the message lacks \"$expected\""
+    elif [ -z "$problem" ] && [ -e "$out" ]; then problem="left $out behind"
     fi
     if [ -n "$problem" ]; then
         failed=$((failed + 1))
