@@ -1,7 +1,9 @@
 // Golden hashes of every technique's output: V and the stencil image of each case below,
-// hashed byte for byte and compared with tests/golden/techniques.hash. A change of
-// structure must leave them all alone; a change that means to alter bits (a new precision,
-// a fixed bug) records new ones with SHADOWLAB_UPDATE_GOLDEN=1 and says why in its commit.
+// hashed byte for byte and compared with tests/golden/techniques.hash, at every SIMD level
+// and with 1, 2 and 8 threads (README, "Determinism": one set of bytes for all of them).
+// A change of structure must leave them all alone; a change that means to alter bits (a
+// new precision, a fixed bug) records new ones with SHADOWLAB_UPDATE_GOLDEN=1 (scalar, one
+// thread) and says why in its commit.
 //
 // The Embree references are not hashed (their kernels are not ours, test_golden.cpp says
 // why); every technique of our own is, on a small view so the whole table takes seconds.
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include "frame/render.h"
+#include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 
 using namespace shadowlab;
@@ -79,14 +82,15 @@ std::string describe(const GoldenCase& c) {
 }
 
 // "<case> <hash of V> <hash of the stencil image>" for one case, on a 320 x 200 view.
-std::string caseLine(const GoldenCase& c) {
+std::string caseLine(const GoldenCase& c, raster::SimdLevel simd, int threads) {
     const bool builtin = c.scene.find('/') == std::string::npos;
     Scene scene = loadScene(builtin ? c.scene : std::string(SHADOWLAB_SOURCE_DIR) + "/" + c.scene);
     scene.camera.width = 320, scene.camera.height = 200;
     const PreparedScene prepared(scene);
     FrameSettings settings;
+    settings.simd = simd;
     settings.params = c.params;
-    const Frame frame = renderFrame(prepared, findTechnique(c.technique), settings);
+    const Frame frame = withThreads(threads, [&] { return renderFrame(prepared, findTechnique(c.technique), settings); });
     char hashes[40];
     std::snprintf(hashes, sizeof hashes, " %016llx %016llx", static_cast<unsigned long long>(fnv1a(frame.shadow.visibility)),
                   static_cast<unsigned long long>(fnv1a(frame.shadow.stencil)));
@@ -95,23 +99,36 @@ std::string caseLine(const GoldenCase& c) {
 
 std::string goldenPath() { return std::string(SHADOWLAB_SOURCE_DIR) + "/tests/golden/techniques.hash"; }
 
-}  // namespace
-
-TEST_CASE("every technique gives its golden V and stencil bytes") {
-    std::map<std::string, std::string> expected;
+// Every case at every level this CPU has, with `threads` threads, against the golden file.
+// .ci/run requires the machine's levels (test_determinism.cpp), so none is skipped there.
+void checkGolden(int threads) {
     if (std::getenv("SHADOWLAB_UPDATE_GOLDEN")) {
+        if (threads != 1) return;
         std::ofstream out(goldenPath());
-        for (const GoldenCase& c : goldenCases()) out << caseLine(c) << "\n";
+        for (const GoldenCase& c : goldenCases()) out << caseLine(c, raster::SimdLevel::Scalar, 1) << "\n";
         return;
     }
+    std::map<std::string, std::string> expected;
     std::ifstream in(goldenPath());
     REQUIRE_MESSAGE(in.good(), "no golden at " << goldenPath() << ": run with SHADOWLAB_UPDATE_GOLDEN=1");
     std::string line;
     while (std::getline(in, line)) expected[line.substr(0, line.size() - 34)] = line;
-    for (const GoldenCase& c : goldenCases()) {
-        INFO(describe(c));
-        const auto it = expected.find(describe(c));
-        REQUIRE_MESSAGE(it != expected.end(), "no golden line for this case");
-        CHECK(caseLine(c) == it->second);
+    for (raster::SimdLevel level : {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
+        if (!raster::simdLevelSupported(level)) {
+            MESSAGE("this CPU has no " << raster::simdLevelName(level) << ": not checked");
+            continue;
+        }
+        for (const GoldenCase& c : goldenCases()) {
+            INFO(describe(c) << " at " << raster::simdLevelName(level) << " with " << threads << " thread(s)");
+            const auto it = expected.find(describe(c));
+            REQUIRE_MESSAGE(it != expected.end(), "no golden line for this case");
+            CHECK(caseLine(c, level, threads) == it->second);
+        }
     }
 }
+
+}  // namespace
+
+TEST_CASE("every technique gives its golden V and stencil bytes at every SIMD level with 1 thread") { checkGolden(1); }
+TEST_CASE("every technique gives its golden V and stencil bytes at every SIMD level with 2 threads") { checkGolden(2); }
+TEST_CASE("every technique gives its golden V and stencil bytes at every SIMD level with 8 threads") { checkGolden(8); }
