@@ -89,8 +89,7 @@ void addFaces(const tinyobj::shape_t& shape, size_t vertexCount, size_t& face, M
 
 }  // namespace
 
-Mesh readObj(const std::string& path) {
-    const std::string text = readWholeFile(path);
+Mesh parseObj(const std::string& text, const std::string& path) {
     const size_t faceLines = checkObjText(text, path);
 
     // Parsing from a string skips "mtllib": materials come from the scene file.
@@ -113,5 +112,7 @@ Mesh readObj(const std::string& path) {
     if (mesh.positions.empty() && faceLines == 0) throw SceneError(path + ": holds no vertices and no faces (not an OBJ file?)");
     return mesh;
 }
+
+Mesh readObj(const std::string& path) { return parseObj(readWholeFile(path), path); }
 
 }  // namespace shadowlab

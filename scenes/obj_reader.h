@@ -13,4 +13,7 @@ namespace shadowlab {
 // coordinates, indices out of range and faces with fewer than 3 vertices.
 Mesh readObj(const std::string& path);
 
+// The same for a file's text already in memory; `path` names it in errors.
+Mesh parseObj(const std::string& text, const std::string& path);
+
 }  // namespace shadowlab

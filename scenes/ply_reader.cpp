@@ -386,13 +386,14 @@ private:
 
 }  // namespace
 
-Mesh readPly(const std::string& path) {
-    const std::string bytes = readWholeFile(path);
+Mesh parsePly(const std::string& bytes, const std::string& path) {
     const PlyHeader header = HeaderParser(bytes, path).parse();
     const PlyLayout layout = findLayout(header, path);
     const std::string_view body = std::string_view(bytes).substr(std::min(header.bodyOffset, bytes.size()));
     if (header.binary) return BodyReader(header, layout, BinaryCursor(body), path).read();
     return BodyReader(header, layout, AsciiCursor(body, header.bodyFirstLine), path).read();
 }
+
+Mesh readPly(const std::string& path) { return parsePly(readWholeFile(path), path); }
 
 }  // namespace shadowlab

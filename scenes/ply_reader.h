@@ -14,4 +14,7 @@ namespace shadowlab {
 // non-finite positions, indices out of range, faces with fewer than 3 vertices.
 Mesh readPly(const std::string& path);
 
+// The same for a file's bytes already in memory; `path` names them in errors.
+Mesh parsePly(const std::string& bytes, const std::string& path);
+
 }  // namespace shadowlab

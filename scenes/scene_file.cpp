@@ -161,12 +161,15 @@ std::vector<std::string> sceneNamesIn(const std::string& sceneDir) {
     return names;
 }
 
-Scene loadScene(const std::string& nameOrPath, const std::string& sceneDir) {
-    const std::string path = scenePath(nameOrPath, sceneDir);
-    const std::string text = readWholeFile(path);
+Scene parseScene(const std::string& text, const std::string& path) {
     const nlohmann::json document = parseJson(text, path);
     const std::string directory = fs::path(path).parent_path().string();
     return readScene(JsonField(document, path, ""), directory, fs::path(path).stem().string());
+}
+
+Scene loadScene(const std::string& nameOrPath, const std::string& sceneDir) {
+    const std::string path = scenePath(nameOrPath, sceneDir);
+    return parseScene(readWholeFile(path), path);
 }
 
 }  // namespace shadowlab

@@ -21,6 +21,10 @@ public:
 // scene file in sceneDir. Throws SceneError for every invalid or unreadable input.
 Scene loadScene(const std::string& nameOrPath, const std::string& sceneDir);
 
+// A scene file's text already in memory; `path` names it in errors, and the meshes it names
+// are found relative to its directory.
+Scene parseScene(const std::string& text, const std::string& path);
+
 // Stems of the *.json files in sceneDir, sorted (none if it cannot be read).
 std::vector<std::string> sceneNamesIn(const std::string& sceneDir);
 
