@@ -5,8 +5,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
+#include <string_view>
+#include <utility>
 
 #include <unistd.h>
 
@@ -16,6 +20,7 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <stb_image_write.h>
 
 #include "raster/fixed_point.h"
@@ -92,8 +97,124 @@ void checkExrSize(const fs::path& path, int64_t width, int64_t height, size_t ch
     }
 }
 
-ImageChannels readExrFile(const fs::path& path, const std::vector<std::string>* wanted) {
-    Imf::InputFile input(path.c_str());
+// OpenEXR 3.1 allocates what a header declares before it learns whether the file holds it:
+// a value of any declared size for an attribute of unknown type, a string of any length in
+// a stringvector, a preview image of any width and height, line-offset tables for the data
+// window; and it reads a value of a known type by the type's own layout, whatever size the
+// header declares, so a header can say one thing to a checker and another to the library.
+// (Found by tests/fuzz: files of 400 bytes that asked for 2 GB.) So the headers are walked
+// here first, value by value as the library reads them, in the layout of "OpenEXR File
+// Layout": the magic number, a version word (bit 12: multi-part), then per part the
+// attributes as "name\0type\0", an int32 size and the value, ended by an empty name; a
+// multi-part file ends its list of headers with an empty one. Every value must take exactly
+// the bytes it declares, within the file, and every data window must pass checkExrSize().
+[[noreturn]] void refuseExrHeader(const fs::path& path, const std::string& why) {
+    throw std::runtime_error("EXR file " + quoted(path) + ": " + why);
+}
+
+// Names are at most 31 bytes, or 255 in a file with the long-names flag (version bit 10);
+// the library stops reading a name at that length, so a longer one would desynchronise it.
+std::string readExrName(Imf::IStream& stream, size_t maxLength, const fs::path& path) {
+    std::string name;
+    for (char c = 0; stream.read(&c, 1), c != '\0';) {
+        if (name.size() == maxLength)
+            refuseExrHeader(path, "a header name longer than " + std::to_string(maxLength) + " bytes" +
+                                      (maxLength < 255 ? " (the file does not set the long-names flag)" : ""));
+        name += c;
+    }
+    return name;
+}
+
+int32_t readExrInt32(Imf::IStream& stream) {
+    char bytes[4];
+    stream.read(bytes, 4);
+    int32_t value;
+    std::memcpy(&value, bytes, 4);   // little-endian, as the file format and x86-64 are
+    return value;
+}
+
+// The bytes of a value of a fixed-size type, or -1 for a type of variable size.
+int64_t fixedExrValueBytes(std::string_view type) {
+    static constexpr std::pair<std::string_view, int64_t> kFixed[] = {
+        {"box2i", 16}, {"box2f", 16},   {"chromaticities", 32}, {"compression", 1}, {"double", 8}, {"envmap", 1},
+        {"float", 4},  {"int", 4},      {"keycode", 28},        {"lineOrder", 1},   {"m33f", 36},  {"m33d", 72},
+        {"m44f", 64},  {"m44d", 128},   {"rational", 8},        {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
+        {"v2f", 8},    {"v2d", 16},     {"v3i", 12},            {"v3f", 12},        {"v3d", 24},   {"deepImageState", 1}};
+    for (const auto& [name, bytes] : kFixed)
+        if (name == type) return bytes;
+    return -1;
+}
+
+// Reads one attribute's value of `size` bytes (already known to lie within the file) as
+// OpenEXR will, and leaves the stream after it.
+void checkExrValue(Imf::IStream& stream, const std::string& name, const std::string& type, int64_t size, size_t maxNameLength,
+                   const fs::path& path) {
+    const uint64_t start = stream.tellg();
+    const auto mismatch = [&](const std::string& holds) {
+        refuseExrHeader(path, "header attribute '" + name + "' of type '" + type + "' declares " + std::to_string(size) +
+                                  " bytes but holds " + holds);
+    };
+    const auto consumed = [&] { return int64_t(stream.tellg() - start); };
+    if (const int64_t fixed = fixedExrValueBytes(type); fixed >= 0) {
+        if (size != fixed) mismatch(std::to_string(fixed));
+        if (name == "dataWindow" && type == "box2i") {
+            const int64_t xMin = readExrInt32(stream), yMin = readExrInt32(stream);
+            const int64_t xMax = readExrInt32(stream), yMax = readExrInt32(stream);
+            checkExrSize(path, xMax - xMin + 1, yMax - yMin + 1, 0);
+        } else if (type == "tiledesc") {   // the library allocates a tile's pixels per thread
+            const int64_t tileWidth = uint32_t(readExrInt32(stream)), tileHeight = uint32_t(readExrInt32(stream));
+            if (tileWidth < 1 || tileHeight < 1 || tileWidth > raster::kMaxViewport || tileHeight > raster::kMaxViewport) {
+                refuseExrHeader(path, "tiles of " + std::to_string(tileWidth) + " x " + std::to_string(tileHeight) +
+                                          " pixels; tiles must be 1.." + std::to_string(raster::kMaxViewport) + " on a side");
+            }
+        }
+    } else if (type == "chlist") {   // channels until an empty name, 16 bytes after each name
+        while (consumed() <= size && !readExrName(stream, maxNameLength, path).empty()) stream.seekg(stream.tellg() + 16);
+        if (consumed() != size) mismatch(std::to_string(consumed()) + (consumed() > size ? " or more" : ""));
+    } else if (type == "stringvector") {   // int32 length + bytes, until the size is used up
+        while (consumed() < size) {
+            const int64_t length = readExrInt32(stream);
+            if (length < 0 || length > size - consumed()) mismatch("a string of " + std::to_string(length) + " bytes");
+            stream.seekg(stream.tellg() + uint64_t(length));
+        }
+        if (consumed() != size) mismatch(std::to_string(consumed()));
+    } else if (type == "preview") {   // width, height, then 4 bytes per pixel
+        if (size < 8) mismatch("a width and a height (8 bytes)");
+        const uint64_t width = uint32_t(readExrInt32(stream)), height = uint32_t(readExrInt32(stream));
+        if (8 + 4 * width * height != uint64_t(size)) mismatch("a " + std::to_string(width) + " x " + std::to_string(height) + " preview");
+    } else if (type == "idmanifest") {   // OpenEXR 3.1 reads 4 bytes more than the size says
+        refuseExrHeader(path, "header attribute '" + name + "' is an ID manifest, which shadowlab does not read");
+    }
+    stream.seekg(start + uint64_t(size));
+}
+
+void checkExrHeaders(Imf::IStream& stream, uint64_t fileBytes, const fs::path& path) {
+    if (readExrInt32(stream) != 20000630) refuseExrHeader(path, "not an EXR file (no magic number)");
+    const int32_t version = readExrInt32(stream);
+    const bool multiPart = (version & 0x1000) != 0;
+    const size_t maxNameLength = (version & 0x400) ? 255 : 31;
+    const auto readName = [&] { return readExrName(stream, maxNameLength, path); };
+    for (bool anotherPart = true; anotherPart;) {
+        bool attributes = false;
+        for (std::string name = readName(); !name.empty(); name = readName()) {
+            attributes = true;
+            const std::string type = readName();
+            const int64_t size = readExrInt32(stream);
+            const uint64_t left = fileBytes - std::min<uint64_t>(stream.tellg(), fileBytes);
+            if (size < 0 || uint64_t(size) > left) {
+                refuseExrHeader(path, "header attribute '" + name + "' declares " + std::to_string(size) + " bytes, more than the " +
+                                          std::to_string(left) + " left in the file");
+            }
+            checkExrValue(stream, name, type, size, maxNameLength, path);
+        }
+        anotherPart = multiPart && attributes;
+    }
+    stream.seekg(0);
+}
+
+ImageChannels readExrStream(Imf::IStream& stream, uint64_t fileBytes, const fs::path& path, const std::vector<std::string>* wanted) {
+    checkExrHeaders(stream, fileBytes, path);
+    Imf::InputFile input(stream);
     const Imath::Box2i window = input.header().dataWindow();
     ImageChannels image;
     image.source = path.string();
@@ -117,13 +238,27 @@ ImageChannels readExrFile(const fs::path& path, const std::vector<std::string>* 
 }
 
 // OpenEXR reports errors (missing file, not an EXR, truncated data) as Iex exceptions;
-// turn them into the documented std::runtime_error that names the file.
-ImageChannels readExrOrThrow(const fs::path& path, const std::vector<std::string>* wanted) {
+// turn them into the documented std::runtime_error that names the file. `open` makes the
+// stream: from the file, or from bytes in memory, and says how many bytes it holds.
+template <typename OpenStream>
+ImageChannels readExrOrThrow(const fs::path& path, const std::vector<std::string>* wanted, OpenStream open) {
     try {
-        return readExrFile(path, wanted);
+        uint64_t fileBytes = 0;
+        auto stream = open(fileBytes);
+        return readExrStream(*stream, fileBytes, path, wanted);
     } catch (const Iex::BaseExc& e) {
         throw std::runtime_error("cannot read EXR file " + quoted(path) + ": " + e.what());
     }
+}
+
+ImageChannels readExrFromFile(const fs::path& path, const std::vector<std::string>* wanted) {
+    return readExrOrThrow(path, wanted, [&](uint64_t& fileBytes) {
+        auto stream = std::make_unique<Imf::StdIFStream>(path.c_str());
+        std::error_code error;
+        fileBytes = fs::file_size(path, error);
+        if (error) throw std::runtime_error("cannot read EXR file " + quoted(path) + ": " + error.message());
+        return stream;
+    });
 }
 
 }  // namespace
@@ -194,10 +329,19 @@ void writeExr(const fs::path& path, const ImageChannels& image) {
     writeFileAtomically(path, [&](const fs::path& temporary) { writeExrFile(temporary, image); });
 }
 
-ImageChannels readExr(const fs::path& path) { return readExrOrThrow(path, nullptr); }
+ImageChannels readExr(const fs::path& path) { return readExrFromFile(path, nullptr); }
 
 ImageChannels readExr(const fs::path& path, const std::vector<std::string>& names) {
-    return readExrOrThrow(path, &names);
+    return readExrFromFile(path, &names);
+}
+
+ImageChannels parseExr(const std::string& bytes, const fs::path& path) {
+    return readExrOrThrow(path, nullptr, [&](uint64_t& fileBytes) {
+        auto stream = std::make_unique<Imf::StdISStream>();
+        stream->str(bytes);
+        fileBytes = bytes.size();
+        return stream;
+    });
 }
 
 void writePng(const fs::path& path, int width, int height, const std::vector<uint8_t>& rgb) {

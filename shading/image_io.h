@@ -70,6 +70,8 @@ void writeExr(const std::filesystem::path& path, const ImageChannels& image);
 ImageChannels readExr(const std::filesystem::path& path);
 // Only the named channels; throws std::runtime_error if one is missing.
 ImageChannels readExr(const std::filesystem::path& path, const std::vector<std::string>& names);
+// Every channel of an EXR file's bytes already in memory; `path` names them in errors.
+ImageChannels parseExr(const std::string& bytes, const std::filesystem::path& path);
 
 // 8-bit RGB, 3 bytes per pixel interleaved, row 0 at the top.
 void writePng(const std::filesystem::path& path, int width, int height,

@@ -100,6 +100,11 @@ printf 'ply\nformat binary_big_endian 1.0\nend_header\n' >"$dir/big-endian-ply.p
 head -c 4096 /dev/urandom >"$dir/garbage.exr"
 : >"$dir/empty.exr"
 mkdir -p "$dir/folder.exr"
+# Magic number, version 2, then one attribute: "x" of type "blob" declaring 2^31 - 1 bytes;
+# and a "dataWindow" box2i of (0, 0) - (0, 2^31 - 2).
+printf 'v/1\x01\x02\x00\x00\x00x\x00blob\x00\xff\xff\xff\x7f' >"$dir/huge-attribute.exr"
+{ printf 'v/1\x01\x02\x00\x00\x00dataWindow\x00box2i\x00\x10\x00\x00\x00'
+  head -c 12 /dev/zero; printf '\xfe\xff\xff\x7f\x00'; } >"$dir/tall-window.exr"
 
 # ---- Scene files --------------------------------------------------------------------------
 expect "empty scene file" "invalid JSON: [json.exception.parse_error.101] parse error at line 1, column 1: syntax error while parsing value - unexpected end of input" render "$dir/empty.json" -o "$out"
@@ -143,9 +148,11 @@ expect "a PLY list of 2^32 - 1 items" "truncated" render "$dir/mesh-list-ply.jso
 # ---- EXR given to compare ---------------------------------------------------------------------
 "$bin" render sphere-box --width 32 --height 20 --aov "$dir/ok.exr" -o "$dir/ok.png" >/dev/null 2>&1 ||
     { echo "FAIL: could not render the valid EXR the compare cases use"; failed=$((failed + 1)); }
-expect "binary garbage as EXR" "garbage.exr': Cannot read image file \"$dir/garbage.exr\". File is not an image file." compare "$dir/garbage.exr" "$dir/ok.exr" --heatmap "$out"
-expect "an empty EXR" "empty.exr\". Early end of file: read 0 out of 4 requested bytes." compare "$dir/ok.exr" "$dir/empty.exr" --heatmap "$out"
+expect "binary garbage as EXR" "EXR file '$dir/garbage.exr': not an EXR file (no magic number)" compare "$dir/garbage.exr" "$dir/ok.exr" --heatmap "$out"
+expect "an empty EXR" "empty.exr': Early end of file: read 0 out of 4 requested bytes." compare "$dir/ok.exr" "$dir/empty.exr" --heatmap "$out"
 expect "a directory as EXR" "reference: File is actually a directory: $dir/folder.exr" compare "$dir/folder.exr" "$dir/ok.exr" --heatmap "$out"
+expect "an EXR attribute of 2^31 - 1 bytes in 24" "header attribute 'x' declares 2147483647 bytes, more than the 0 left in the file" compare "$dir/ok.exr" "$dir/huge-attribute.exr" --heatmap "$out"
+expect "an EXR data window of 2^31 - 1 rows" "data window is 1 x 2147483647 pixels; images must be 1..8192 on a side" compare "$dir/tall-window.exr" "$dir/ok.exr" --heatmap "$out"
 expect "a channel the EXR lacks" "has no channel 'Q'" compare "$dir/ok.exr" "$dir/ok.exr" --channel Q --heatmap "$out"
 
 # ---- Command-line values --------------------------------------------------------------------

@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -182,4 +183,79 @@ TEST_CASE("reading refuses images wider than 8192 pixels or with more than 16 ch
     many.data.pop_back(), many.names.pop_back();   // 16 channels: read
     writeExr(manyFile, many);
     CHECK(readExr(manyFile).names.size() == 16);
+}
+
+namespace {
+
+// EXR bytes by hand (OpenEXR file layout): the magic number, a version word, then
+// attributes "name\0type\0" + int32 size + value, each header ended by an empty name.
+std::string int32Bytes(int32_t value) { return std::string(reinterpret_cast<const char*>(&value), 4); }
+
+std::string exrAttribute(const std::string& name, const std::string& type, int32_t size, const std::string& value = "") {
+    return name + '\0' + type + '\0' + int32Bytes(size) + value;
+}
+
+std::string exrStart(int32_t versionFlags = 0) { return int32Bytes(20000630) + int32Bytes(2 | versionFlags); }
+
+std::string parseMessage(const std::string& bytes) {
+    try {
+        parseExr(bytes, "crafted.exr");
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+}  // namespace
+
+// OpenEXR 3.1 allocates what a header declares before reading it (the fuzz target found a
+// 400-byte file that asked for 2 GB); image_io.cpp walks the headers first.
+TEST_CASE("an EXR header that declares more bytes than the file holds is refused before OpenEXR reads it") {
+    CHECK(parseMessage(exrStart() + exrAttribute("x", "blob", 0x7fffffff)) ==
+          "EXR file 'crafted.exr': header attribute 'x' declares 2147483647 bytes, more than the 0 left in the file");
+    CHECK(parseMessage(exrStart() + exrAttribute("x", "int", -4)).find("declares -4 bytes") != std::string::npos);
+    const std::string tallWindow = int32Bytes(0) + int32Bytes(0) + int32Bytes(0) + int32Bytes(0x7ffffffe);
+    CHECK(parseMessage(exrStart() + exrAttribute("dataWindow", "box2i", 16, tallWindow) + '\0')
+              .find("data window is 1 x 2147483647 pixels; images must be 1..8192 on a side") != std::string::npos);
+    // In a multi-part file (version bit 12) every part's header is walked, not only the first.
+    const std::string firstPart = exrAttribute("a", "int", 4, int32Bytes(7)) + '\0';
+    CHECK(parseMessage(exrStart(0x1000) + firstPart + exrAttribute("b", "blob", 1000) + '\0' + '\0')
+              .find("header attribute 'b' declares 1000 bytes") != std::string::npos);
+    // A known type is read by its own layout, whatever the size says: the two must agree.
+    CHECK(parseMessage(exrStart() + exrAttribute("displayWindow", "box2i", 0) + tallWindow + '\0')
+              .find("header attribute 'displayWindow' of type 'box2i' declares 0 bytes but holds 16") != std::string::npos);
+    CHECK(parseMessage(exrStart() + exrAttribute("preview", "preview", 8, int32Bytes(40000) + int32Bytes(40000)) + '\0')
+              .find("declares 8 bytes but holds a 40000 x 40000 preview") != std::string::npos);
+    CHECK(parseMessage(exrStart() + exrAttribute("views", "stringvector", 8, int32Bytes(0x7fffffff) + int32Bytes(0)) + '\0')
+              .find("declares 8 bytes but holds a string of 2147483647 bytes") != std::string::npos);
+    CHECK(parseMessage(exrStart() + exrAttribute("channels", "chlist", 4, std::string("R\0", 2) + std::string(16, '\0') + '\0') + '\0')
+              .find("declares 4 bytes but holds 18 or more") != std::string::npos);
+    CHECK(parseMessage(exrStart(0x200) + exrAttribute("tiles", "tiledesc", 9, int32Bytes(4) + int32Bytes(12976132) + '\0') + '\0')
+              .find("tiles of 4 x 12976132 pixels; tiles must be 1..8192 on a side") != std::string::npos);
+    CHECK(parseMessage(exrStart() + exrAttribute("ids", "idmanifest", 4, int32Bytes(0)) + '\0').find("is an ID manifest") != std::string::npos);
+    CHECK(parseMessage("ply\n" + int32Bytes(2)).find("not an EXR file (no magic number)") != std::string::npos);
+    CHECK(parseMessage(std::string("\x76\x2f\x31", 3)).find("Early end of file") != std::string::npos);
+    CHECK(parseMessage(exrStart() + std::string(40, 'n')).find("a header name longer than 31 bytes (the file does not set the long-names flag)") !=
+          std::string::npos);
+    CHECK(parseMessage(exrStart(0x400) + std::string(300, 'n')).find("a header name longer than 255 bytes") != std::string::npos);
+}
+
+TEST_CASE("an EXR's bytes in memory read as its file does") {
+    ScratchDirectory dir("parse_exr");
+    ImageChannels image;
+    image.width = 5, image.height = 3;
+    for (const char* name : {"R", "G", "B"}) {
+        std::vector<float> values(image.pixelCount());
+        for (size_t i = 0; i < values.size(); ++i) values[i] = float(i) * 0.25f - float(name[0]);
+        image.set(name, values);
+    }
+    const fs::path file = dir.path / "image.exr";
+    writeExr(file, image);
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const ImageChannels fromMemory = parseExr(bytes, file), fromFile = readExr(file);
+    CHECK(fromMemory.names == fromFile.names);
+    CHECK(fromMemory.data == fromFile.data);
+    for (const std::string& name : image.names) CHECK(fromMemory.at(name) == image.at(name));
+    CHECK(parseMessage(bytes.substr(0, bytes.size() / 2)).find("crafted.exr") != std::string::npos);
 }
