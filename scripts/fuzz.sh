@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Runs each libFuzzer target of tests/fuzz for a bounded time, starting from its seed corpus
+# in the repository. The targets are built by scripts/sanitize.sh (clang-14, ASan + UBSan,
+# SHADOWLAB_FUZZ=ON) in build-asan/, so a memory error, undefined behaviour, a leak, an
+# input that runs longer than 10 s or grows past 8 GiB, or an exception other than the
+# loader's documented error stops the run and fails this script; the input that did it is
+# written to <build>/fuzz/artifacts/. The memory bounds leave room for the largest inputs
+# the limits allow (an EXR of 16 float channels at 8192 x 8192 pixels is 4 GiB).
+#
+#   scripts/fuzz.sh [build-dir] [seconds per target] [targets...]
+#
+# .ci/run gives each target 60 s; README "Reliability" says how to run them for hours.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+build=${1:-build-asan}
+seconds=${2:-60}
+shift $(( $# < 2 ? $# : 2 ))
+targets=("$@")
+[[ ${#targets[@]} -gt 0 ]] || targets=(scene_file obj_reader ply_reader exr_reader)
+
+# Extra seeds beside tests/fuzz/corpus/<target>: the built-in scenes and the tiny meshes.
+declare -A more_seeds=(
+  [scene_file]="scenes scenes/hard scenes/soft"
+  [obj_reader]="tests/fuzz/meshes"
+  [ply_reader]="tests/fuzz/meshes"
+  [exr_reader]=""
+)
+export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+mkdir -p "$build/fuzz/artifacts"
+for target in "${targets[@]}"; do
+  binary=$build/tests/fuzz/fuzz_$target
+  [[ -x $binary ]] || { echo "fuzz.sh: no $binary; build it with scripts/sanitize.sh" >&2; exit 1; }
+  corpus=$build/fuzz/corpus/$target   # what the fuzzer finds; the repository's seeds stay as they are
+  mkdir -p "$corpus"
+  dictionary=()
+  [[ -f tests/fuzz/$target.dict ]] && dictionary=(-dict="tests/fuzz/$target.dict")
+  echo "fuzz.sh: $target for $seconds s" >&2
+  # shellcheck disable=SC2086 # the extra seed folders are a word list
+  "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=8192 -malloc_limit_mb=4608 -print_final_stats=1 \
+      -artifact_prefix="$build/fuzz/artifacts/$target-" "${dictionary[@]}" \
+      "$corpus" "tests/fuzz/corpus/$target" ${more_seeds[$target]}
+done
