@@ -1,0 +1,201 @@
+// Elementary functions that give the same bits on every x86-64 CPU (README, "Determinism").
+//
+// glibc picks among several builds of exp, log, pow, sin, cos, tan and acos at run time
+// (with or without FMA, AVX2) and they differ in the last bit for some arguments: set
+// GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA and their results change. Every value that
+// reaches an output (procedural meshes, transforms, projections, Poisson rotations,
+// moment warps, cascade splits, fin arcs, shading) is computed here instead: a fixed
+// sequence of IEEE double additions, multiplications and divisions (the project compiles
+// with -ffp-contract=off), with exact scaling by powers of two, so the bits depend only on
+// the argument. The methods are the textbook ones (Muller, "Elementary Functions", 2016,
+// ch. 11): reduce the argument by an exactly representable split of the period (Cody and
+// Waite 1980), then sum a Taylor series far enough that its truncation lies below half an
+// ulp. tests/raster/test_portable_math.cpp holds each within a few ulps of libm.
+//
+// Arguments are those of geometry and shading: sin, cos and tan are reduced with a two-part
+// pi/2 that is exact for |x| < 2^20 (beyond, the result loses accuracy, never determinism).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+namespace shadowlab::portable {
+
+namespace detail {
+
+// pi/2 = kHalfPiHigh + kHalfPiLow, the high part with 33 significant bits so that
+// k * kHalfPiHigh is exact for |k| < 2^20; ln 2 likewise with 32 bits.
+inline constexpr double kHalfPiHigh = 0x1.921fb544p+0;
+inline constexpr double kHalfPiLow = 0x1.0b4611a626331p-34;
+inline constexpr double kTwoOverPi = 0.6366197723675814;
+inline constexpr double kLn2High = 0x1.62e42feep-1;
+inline constexpr double kLn2Low = 0x1.a39ef35793c76p-33;
+inline constexpr double kLn2 = 0.6931471805599453;
+inline constexpr double kInvLn2 = 1.4426950408889634;
+inline constexpr double kPi = 3.141592653589793;
+inline constexpr double kHalfPi = 1.5707963267948966;
+inline constexpr double kSixthPi = 0.5235987755982989;
+inline constexpr double kSqrt3 = 1.7320508075688772;
+inline constexpr double kTanTwelfthPi = 0.2679491924311227;   // 2 - sqrt(3)
+
+// 1/n! for n = 0..22, computed by the compiler in IEEE double (n! is exact up to 18!), so
+// the same constants on every machine.
+struct InverseFactorials {
+    double value[23];
+    constexpr InverseFactorials() : value() {
+        double factorial = 1.0;
+        for (int n = 0; n < 23; ++n) {
+            if (n > 0) factorial *= n;
+            value[n] = 1.0 / factorial;
+        }
+    }
+};
+inline constexpr InverseFactorials kInverseFactorial{};
+
+// sin and cos of r, |r| <= pi/4: Taylor to r^21 and r^22 (truncation below 1e-22).
+inline double sinReduced(double r) {
+    const double r2 = r * r;
+    double sum = 0.0;
+    for (int n = 21; n >= 3; n -= 2) sum = (sum + ((n / 2) % 2 ? -1.0 : 1.0) * kInverseFactorial.value[n]) * r2;
+    return r + r * sum;
+}
+inline double cosReduced(double r) {
+    const double r2 = r * r;
+    double sum = 0.0;
+    for (int n = 22; n >= 2; n -= 2) sum = (sum + ((n / 2) % 2 ? -1.0 : 1.0) * kInverseFactorial.value[n]) * r2;
+    return 1.0 + sum;
+}
+
+// x = k pi/2 + r with |r| <= pi/4 (about); returns r and sets the quadrant k mod 4.
+inline double reduceHalfPi(double x, int& quadrant) {
+    const double k = std::floor(x * kTwoOverPi + 0.5);
+    quadrant = int(std::fmod(k, 4.0) + 4.0) % 4;
+    return (x - k * kHalfPiHigh) - k * kHalfPiLow;
+}
+
+// atan(u) for |u| <= tan(pi/12): Taylor to u^31 (truncation below 1e-19).
+inline double atanReduced(double u) {
+    const double u2 = u * u;
+    double sum = 0.0;
+    for (int n = 31; n >= 3; n -= 2) sum = (sum + ((n / 2) % 2 ? -1.0 : 1.0) / n) * u2;
+    return u + u * sum;
+}
+
+}  // namespace detail
+
+inline double sin(double x) {
+    if (!std::isfinite(x)) return std::numeric_limits<double>::quiet_NaN();
+    int quadrant;
+    const double r = detail::reduceHalfPi(x, quadrant);
+    switch (quadrant) {
+        case 0: return detail::sinReduced(r);
+        case 1: return detail::cosReduced(r);
+        case 2: return -detail::sinReduced(r);
+        default: return -detail::cosReduced(r);
+    }
+}
+
+inline double cos(double x) {
+    if (!std::isfinite(x)) return std::numeric_limits<double>::quiet_NaN();
+    int quadrant;
+    const double r = detail::reduceHalfPi(x, quadrant);
+    switch (quadrant) {
+        case 0: return detail::cosReduced(r);
+        case 1: return -detail::sinReduced(r);
+        case 2: return -detail::cosReduced(r);
+        default: return detail::sinReduced(r);
+    }
+}
+
+inline double tan(double x) { return sin(x) / cos(x); }
+
+// e^x: x = k ln 2 + r, |r| <= ln 2 / 2, Taylor to r^16, scaled by 2^k exactly.
+inline double exp(double x) {
+    if (std::isnan(x)) return x;
+    if (x > 709.782712893384) return std::numeric_limits<double>::infinity();
+    if (x < -745.1332191019412) return 0.0;
+    const double k = std::floor(x * detail::kInvLn2 + 0.5);
+    const double r = (x - k * detail::kLn2High) - k * detail::kLn2Low;
+    double sum = detail::kInverseFactorial.value[16];
+    for (int n = 15; n >= 0; --n) sum = sum * r + detail::kInverseFactorial.value[n];
+    // Two steps of 2^(k/2): 2^k alone may not be a double near the ends of the range.
+    const int half = int(k) / 2;
+    return std::ldexp(std::ldexp(sum, half), int(k) - half);
+}
+
+// ln x: x = m 2^e with m in [sqrt(1/2), sqrt(2)), ln m = 2 atanh(s) with s = (m-1)/(m+1),
+// |s| <= 0.172, summed to s^23. Powers of two give exactly e ln 2 in log2.
+namespace detail {
+inline double logOfMantissa(double x, int& exponent) {
+    double m = std::frexp(x, &exponent);
+    if (m < 0.7071067811865476) m *= 2.0, --exponent;
+    const double s = (m - 1.0) / (m + 1.0), s2 = s * s;
+    double sum = 0.0;
+    for (int n = 23; n >= 3; n -= 2) sum = (sum + 1.0 / n) * s2;
+    return 2.0 * (s + s * sum);
+}
+}  // namespace detail
+
+inline double log(double x) {
+    if (std::isnan(x) || x < 0.0) return std::numeric_limits<double>::quiet_NaN();
+    if (x == 0.0) return -std::numeric_limits<double>::infinity();
+    if (std::isinf(x)) return x;
+    int e;
+    const double lnM = detail::logOfMantissa(x, e);
+    return e * detail::kLn2High + (lnM + e * detail::kLn2Low);
+}
+
+inline double log2(double x) {
+    if (std::isnan(x) || x < 0.0) return std::numeric_limits<double>::quiet_NaN();
+    if (x == 0.0) return -std::numeric_limits<double>::infinity();
+    if (std::isinf(x)) return x;
+    int e;
+    const double lnM = detail::logOfMantissa(x, e);
+    return e + lnM * detail::kInvLn2;
+}
+
+// 2^x = 2^k e^{f ln 2} with k the nearest integer: exact for integral x.
+inline double exp2(double x) {
+    if (std::isnan(x)) return x;
+    if (x > 1024.0) return std::numeric_limits<double>::infinity();
+    if (x < -1075.0) return 0.0;
+    const double k = std::floor(x + 0.5);
+    return std::ldexp(exp((x - k) * detail::kLn2), int(k));
+}
+
+// a^b for a >= 0 as e^{b ln a} (relative error about |b ln a| ulps, ample for exponents of
+// shading and splits); a < 0 gives NaN, as std::pow does for non-integral b.
+inline double pow(double a, double b) {
+    if (b == 0.0) return 1.0;
+    if (a == 0.0) return b > 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+    return exp(b * log(a));
+}
+
+// atan by the symmetries atan(x) = pi/2 - atan(1/x) and atan(t) = pi/6 + atan((t sqrt 3 - 1) /
+// (t + sqrt 3)), which bring the argument within tan(pi/12).
+inline double atan(double x) {
+    if (std::isnan(x)) return x;
+    const double t = std::abs(x);
+    const bool inverted = t > 1.0;
+    double u = inverted ? 1.0 / t : t;
+    double offset = 0.0;
+    if (u > detail::kTanTwelfthPi) {
+        u = (u * detail::kSqrt3 - 1.0) / (u + detail::kSqrt3);
+        offset = detail::kSixthPi;
+    }
+    double angle = offset + detail::atanReduced(u);
+    if (inverted) angle = detail::kHalfPi - angle;
+    return x < 0.0 ? -angle : angle;
+}
+
+// acos x = 2 atan(sqrt((1 - x) / (1 + x))); NaN outside [-1, 1].
+inline double acos(double x) {
+    if (!(x >= -1.0 && x <= 1.0)) return std::numeric_limits<double>::quiet_NaN();
+    if (x == -1.0) return detail::kPi;
+    return 2.0 * atan(std::sqrt((1.0 - x) / (1.0 + x)));
+}
+
+// sqrt(a^2 + b^2) (sqrt is correctly rounded by IEEE 754; no overflow at scene scales).
+inline double hypot(double a, double b) { return std::sqrt(a * a + b * b); }
+
+}  // namespace shadowlab::portable
