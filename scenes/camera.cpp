@@ -2,6 +2,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 
 ViewFrameProblem viewFrameProblem(const Camera& camera) {
@@ -18,18 +20,23 @@ glm::mat4 viewFromWorld(const Camera& camera) {
     return glm::lookAtRH(camera.eye, camera.target, camera.up);
 }
 
-glm::mat4 clipFromView(const Camera& camera) {
-    const float aspect = float(camera.width) / float(camera.height);
-    return glm::perspectiveRH_NO(glm::radians(camera.fovyDeg), aspect, camera.zNear, camera.zFar);
+glm::dmat4 clipFromViewD(const Camera& camera) {
+    const double aspect = double(camera.width) / double(camera.height);
+    const double n = double(camera.zNear), f = double(camera.zFar);
+    const double tanHalfFovy = portable::tan(0.5 * glm::radians(double(camera.fovyDeg)));
+    glm::dmat4 proj(0.0);
+    proj[0][0] = 1.0 / (aspect * tanHalfFovy);
+    proj[1][1] = 1.0 / tanHalfFovy;
+    proj[2][2] = -(f + n) / (f - n);
+    proj[2][3] = -1.0;
+    proj[3][2] = -(2.0 * f * n) / (f - n);
+    return proj;
 }
 
 glm::dmat4 clipFromWorldD(const Camera& camera) {
-    const double aspect = double(camera.width) / double(camera.height);
     const glm::dmat4 view = glm::lookAtRH(glm::dvec3(camera.eye), glm::dvec3(camera.target),
                                           glm::dvec3(camera.up));
-    const glm::dmat4 proj = glm::perspectiveRH_NO(glm::radians(double(camera.fovyDeg)), aspect,
-                                                  double(camera.zNear), double(camera.zFar));
-    return proj * view;
+    return clipFromViewD(camera) * view;
 }
 
 PixelRays::PixelRays(const Camera& camera)

@@ -16,8 +16,11 @@ enum class ViewFrameProblem { None, EyeAtTarget, UpParallel };
 ViewFrameProblem viewFrameProblem(const Camera& camera);
 
 glm::mat4 viewFromWorld(const Camera& camera);
-glm::mat4 clipFromView(const Camera& camera);
-glm::dmat4 clipFromWorldD(const Camera& camera);   // the same product in double precision
+// OpenGL's perspective projection (the entries of glm::perspectiveRH_NO), its tangent from
+// raster/portable_math.h so that the matrix is the same bits on every CPU.
+glm::dmat4 clipFromViewD(const Camera& camera);
+inline glm::mat4 clipFromView(const Camera& camera) { return glm::mat4(clipFromViewD(camera)); }
+glm::dmat4 clipFromWorldD(const Camera& camera);   // clipFromViewD * the view, in double precision
 
 inline glm::mat4 clipFromWorld(const Camera& camera) {
     return glm::mat4(clipFromWorldD(camera));

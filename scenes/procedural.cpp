@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 
 Mesh makeGrid(glm::vec2 size, glm::ivec2 divisions) {
@@ -39,9 +41,9 @@ Mesh makeUvSphere(float radius, int slices, int stacks) {
         const double theta = std::numbers::pi * k / stacks;
         for (int j = 0; j < slices; ++j) {
             const double phi = 2.0 * std::numbers::pi * j / slices;
-            mesh.positions.emplace_back(float(r * std::sin(theta) * std::cos(phi)),
-                                        float(r * std::cos(theta)),
-                                        float(-r * std::sin(theta) * std::sin(phi)));
+            mesh.positions.emplace_back(float(r * portable::sin(theta) * portable::cos(phi)),
+                                        float(r * portable::cos(theta)),
+                                        float(-r * portable::sin(theta) * portable::sin(phi)));
         }
     }
     mesh.positions.emplace_back(0.0f, -radius, 0.0f);

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "raster/portable_math.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
 
@@ -60,6 +61,19 @@ glm::mat4 readMatrix(const JsonField& field) {
     return matrix;
 }
 
+// A turn of `degrees` about world axis `axis` (0: x, 1: y, 2: z), counter-clockwise seen
+// from the axis' positive end; its sine and cosine from raster/portable_math.h, so that
+// transformed vertices are the same bits on every CPU.
+glm::mat4 rotationAbout(int axis, float degrees) {
+    const double radians = double(glm::radians(degrees));
+    const float c = float(portable::cos(radians)), s = float(portable::sin(radians));
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;   // the plane turned: u towards v
+    glm::mat4 rotation(1.0f);
+    rotation[u][u] = c, rotation[u][v] = s;
+    rotation[v][u] = -s, rotation[v][v] = c;
+    return rotation;
+}
+
 // translate * rotateZ * rotateY * rotateX * scale: scaled, then turned about x, y and z
 // (world axes, in that order), then moved.
 glm::mat4 readTranslateRotateScale(const JsonObject& object) {
@@ -69,9 +83,7 @@ glm::mat4 readTranslateRotateScale(const JsonObject& object) {
     if (const auto field = object.optional("scale"))
         scale = field->raw().is_number() ? glm::vec3(field->number(kPositive)) : field->vec3(kPositive);
     glm::mat4 m = glm::translate(glm::mat4(1.0f), translate);
-    m = glm::rotate(m, glm::radians(rotateDeg.z), glm::vec3(0.0f, 0.0f, 1.0f));
-    m = glm::rotate(m, glm::radians(rotateDeg.y), glm::vec3(0.0f, 1.0f, 0.0f));
-    m = glm::rotate(m, glm::radians(rotateDeg.x), glm::vec3(1.0f, 0.0f, 0.0f));
+    m = m * rotationAbout(2, rotateDeg.z) * rotationAbout(1, rotateDeg.y) * rotationAbout(0, rotateDeg.x);
     return glm::scale(m, scale);
 }
 

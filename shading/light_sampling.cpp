@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "raster/portable_math.h"
 #include "shading/lights.h"
 
 namespace shadowlab {
@@ -37,7 +38,7 @@ glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
     const bool nearXAxis = std::abs(s.x) > std::abs(s.y);
     const double r = nearXAxis ? s.x : s.y;
     const double phi = nearXAxis ? quarter * (s.y / s.x) : 2.0 * quarter - quarter * (s.x / s.y);
-    return r * glm::dvec2(std::cos(phi), std::sin(phi));
+    return r * glm::dvec2(portable::cos(phi), portable::sin(phi));
 }
 
 AreaLightFrame areaLightFrame(const Light& light) {

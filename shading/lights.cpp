@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 namespace {
 
@@ -36,7 +38,7 @@ bool insideSpotCone(const Light& light, const glm::vec3& point) {
     const glm::dvec3 axis(light.direction);
     const glm::dvec3 fromLight = glm::dvec3(point) - glm::dvec3(light.position);
     // angle(axis, fromLight) <= half-angle  <=>  cos(angle) >= cos(half-angle).
-    const double cosHalfAngle = std::cos(double(light.coneAngleDeg) * std::numbers::pi / 180.0);
+    const double cosHalfAngle = portable::cos(double(light.coneAngleDeg) * std::numbers::pi / 180.0);
     return glm::dot(axis, fromLight) >= cosHalfAngle * glm::length(axis) * glm::length(fromLight);
 }
 

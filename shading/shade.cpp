@@ -16,6 +16,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "raster/portable_math.h"
 #include "shading/gbuffer_build.h"
 #include "shading/lights.h"
 
@@ -31,7 +32,7 @@ glm::vec3 brdf(const Material& material, const glm::vec3& N, const glm::vec3& wi
     const glm::vec3 H = glm::normalize(wi + wo);
     const float cosH = std::max(0.0f, glm::dot(N, H));
     const float normalisation = (material.shininess + 8.0f) * (invPi / 8.0f);
-    return diffuse + material.specular * (normalisation * std::pow(cosH, material.shininess));
+    return diffuse + material.specular * (normalisation * float(portable::pow(cosH, material.shininess)));
 }
 
 namespace {

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 namespace {
 
@@ -25,7 +27,7 @@ glm::vec3 reinhard(const glm::vec3& c) {
 }  // namespace
 
 glm::vec3 toneMap(const glm::vec3& radiance, const ToneMapOptions& options) {
-    const glm::vec3 exposed = radiance * std::exp2(options.exposureStops);
+    const glm::vec3 exposed = radiance * float(portable::exp2(options.exposureStops));
     const glm::vec3 mapped = options.op == ToneOperator::Reinhard ? reinhard(exposed) : exposed;
     return glm::clamp(mapped, 0.0f, 1.0f);
 }
@@ -33,7 +35,7 @@ glm::vec3 toneMap(const glm::vec3& radiance, const ToneMapOptions& options) {
 double srgbEncode(double linear) {
     // IEC 61966-2-1:1999, section 5.2: the linear segment below 0.0031308 avoids the
     // infinite slope of the power curve at 0; the two pieces meet at 0.04045.
-    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * portable::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
 uint8_t toSrgb8(float linear) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/portable_math.h"
 #include "shadows/maps/pcf.h"
 
 namespace shadowlab {
@@ -34,7 +35,7 @@ PenumbraEstimate estimatePenumbra(const SoftShadowMap& soft, const MapReceiver& 
     if (!(dr > soft.zNear())) return {};
     const glm::dvec2 radius = 0.5 * settings.region * sampleWidthTexels(soft, dr, soft.zNear());
     const double angle = poissonRotation(pixel);
-    const glm::dvec2 rotation(std::cos(angle), std::sin(angle));
+    const glm::dvec2 rotation(portable::cos(angle), portable::sin(angle));
     PenumbraEstimate e;
     double distanceSum = 0.0;   // in tap order: the same sum for any thread count
     for (const glm::dvec2& d : disk) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/portable_math.h"
 #include "shadows/filtered/moments.h"
 
 namespace shadowlab {
@@ -18,13 +19,13 @@ std::vector<ParamSpec> exponentialParams() {
 
 void readExponential(const TechniqueParams& p, MomentSettings& s) { s.exponent = p.real("exponent"); }
 
-void exponentialMoments(const MomentSettings& s, double z, double* out) { out[0] = std::exp(s.exponent * z); }
+void exponentialMoments(const MomentSettings& s, double z, double* out) { out[0] = portable::exp(s.exponent * z); }
 
 double exponentialVisibility(const MomentSettings& s, const double* m, double t) {
-    return std::clamp(m[0] * std::exp(-s.exponent * t), 0.0, 1.0);
+    return std::clamp(m[0] * portable::exp(-s.exponent * t), 0.0, 1.0);
 }
 
-double exponentialRange(const MomentSettings& s) { return std::exp(s.exponent); }   // V = E e^{-c t}, t in [0, 1]
+double exponentialRange(const MomentSettings& s) { return portable::exp(s.exponent); }   // V = E e^{-c t}, t in [0, 1]
 
 }  // namespace
 

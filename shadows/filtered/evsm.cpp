@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/portable_math.h"
 #include "shadows/filtered/chebyshev.h"
 #include "shadows/filtered/moments.h"
 
@@ -24,8 +25,8 @@ void readExponentialVariance(const TechniqueParams& p, MomentSettings& s) {
     s.negativeExponent = p.real("negative-exponent");
 }
 
-double positiveWarp(const MomentSettings& s, double z) { return std::exp(s.positiveExponent * (2.0 * z - 1.0)); }
-double negativeWarp(const MomentSettings& s, double z) { return -std::exp(-s.negativeExponent * (2.0 * z - 1.0)); }
+double positiveWarp(const MomentSettings& s, double z) { return portable::exp(s.positiveExponent * (2.0 * z - 1.0)); }
+double negativeWarp(const MomentSettings& s, double z) { return -portable::exp(-s.negativeExponent * (2.0 * z - 1.0)); }
 
 // The minimum variance carried through a warp: var_w = (dw/dz)^2 var_z at the receiver.
 double warpedMinVariance(double exponentTimesTwo, double warped) {
@@ -47,7 +48,7 @@ double exponentialVarianceVisibility(const MomentSettings& s, const double* m, d
 
 // The second moments over w in [-1, 1].
 double exponentialVarianceRange(const MomentSettings& s) {
-    return std::exp(4.0 * std::max(s.positiveExponent, s.negativeExponent));
+    return portable::exp(4.0 * std::max(s.positiveExponent, s.negativeExponent));
 }
 
 }  // namespace

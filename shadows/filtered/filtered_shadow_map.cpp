@@ -22,6 +22,7 @@
 #include <string>
 
 #include "shadows/debug_buffers.h"
+#include "raster/portable_math.h"
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/moment_filter.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
@@ -68,7 +69,7 @@ FilteredSettings readSettings(MomentKind kind, const TechniqueParams& p) {
 void checkTablePrecision(const FilteredSettings& s, const MomentMap& moments) {
     const double bound = satRelativeError(s.moments, moments);
     if (bound <= kSatRelativeErrorLimit) return;
-    const double logRangeAllowed = std::log(kSatRelativeErrorLimit / (bound / momentDynamicRange(s.moments)));
+    const double logRangeAllowed = portable::log(kSatRelativeErrorLimit / (bound / momentDynamicRange(s.moments)));
     throw std::invalid_argument(
         std::string(momentKindName(s.moments.kind)) + ": filter=sat cannot resolve V to 2^-10 with these exponents at " +
         std::to_string(moments.size) + "^2 texels (error bound " + std::to_string(bound) +

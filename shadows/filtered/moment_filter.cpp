@@ -6,6 +6,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 namespace {
 
@@ -63,7 +65,7 @@ std::vector<double> blurWeights(BlurKind kind, int width) {
     std::vector<double> w(size_t(width), 1.0);
     const double sigma = width / 6.0, centre = 0.5 * (width - 1);
     if (kind == BlurKind::Gaussian) {
-        for (int k = 0; k < width; ++k) w[k] = std::exp(-0.5 * (k - centre) * (k - centre) / (sigma * sigma));
+        for (int k = 0; k < width; ++k) w[k] = portable::exp(-0.5 * (k - centre) * (k - centre) / (sigma * sigma));
     }
     double total = 0.0;
     for (double x : w) total += x;

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 namespace {
 
@@ -63,7 +65,7 @@ public:
     // The circular sector of radius `width` around v from direction `from` to `to` (unit,
     // both perpendicular to the light's normal), through the smaller angle.
     void fan(const glm::dvec3& v, const glm::dvec3& from, const glm::dvec3& to, double width, uint32_t owner) {
-        const double angle = std::acos(std::clamp(glm::dot(from, to), -1.0, 1.0));
+        const double angle = portable::acos(std::clamp(glm::dot(from, to), -1.0, 1.0));
         if (angle < kMinFanRadians || !(width > 0.0)) return;
         const glm::dvec3 towards = glm::normalize(to - glm::dot(to, from) * from);
         const int steps = int(std::ceil(angle / kFanStepRadians));
@@ -71,7 +73,7 @@ public:
         uint32_t previous = vertex(v + width * from, 0.0f);
         for (int k = 1; k <= steps; ++k) {
             const double phi = angle * k / steps;
-            const uint32_t next = vertex(v + width * (std::cos(phi) * from + std::sin(phi) * towards), 0.0f);
+            const uint32_t next = vertex(v + width * (portable::cos(phi) * from + portable::sin(phi) * towards), 0.0f);
             triangle({centre, previous, next}, owner);
             previous = next;
         }

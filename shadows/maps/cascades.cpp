@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "raster/portable_math.h"
 #include "shadows/maps/receiver_ranges.h"
 #include "shadows/technique.h"
 
@@ -27,11 +28,11 @@ struct Sphere {
     double radius;
 };
 Sphere sliceSphere(const Camera& camera, double d0, double d1) {
-    const double tanY = std::tan(0.5 * double(camera.fovyDeg) * std::numbers::pi / 180.0);
-    const double spread = tanY * std::sqrt(1.0 + std::pow(double(camera.width) / camera.height, 2.0));
+    const double tanY = portable::tan(0.5 * double(camera.fovyDeg) * std::numbers::pi / 180.0);
+    const double spread = tanY * std::sqrt(1.0 + portable::pow(double(camera.width) / camera.height, 2.0));
     const double r0 = d0 * spread, r1 = d1 * spread;
     const double t = std::clamp((d1 * d1 + r1 * r1 - d0 * d0 - r0 * r0) / (2.0 * (d1 - d0)), d0, d1);
-    const double radius = std::max(std::hypot(t - d0, r0), std::hypot(d1 - t, r1));
+    const double radius = std::max(portable::hypot(t - d0, r0), portable::hypot(d1 - t, r1));
     return {glm::dvec3(camera.eye) + t * viewAxis(camera), radius};
 }
 
@@ -56,8 +57,8 @@ void selectCascadeReceivers(const GBuffer& g, const Camera& camera, const std::v
 // snapping keeps the texel grid in place with sample bounds too.
 double boundOnLadder(double distance, bool up) {
     constexpr double kStepsPerOctave = 8.0;
-    const double step = std::log2(distance) * kStepsPerOctave;
-    return std::exp2((up ? std::ceil(step) : std::floor(step)) / kStepsPerOctave);
+    const double step = portable::log2(distance) * kStepsPerOctave;
+    return portable::exp2((up ? std::ceil(step) : std::floor(step)) / kStepsPerOctave);
 }
 
 }  // namespace
@@ -67,7 +68,7 @@ std::vector<double> cascadeSplits(double n, double f, int count, SplitScheme sch
     std::vector<double> d(count + 1);
     for (int i = 0; i <= count; ++i) {
         const double x = double(i) / count;
-        d[i] = weight * n * std::pow(f / n, x) + (1.0 - weight) * (n + (f - n) * x);
+        d[i] = weight * n * portable::pow(f / n, x) + (1.0 - weight) * (n + (f - n) * x);
     }
     d.front() = n, d.back() = f;
     return d;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 namespace {
 
@@ -30,7 +32,7 @@ std::vector<glm::dvec2> bestCandidateDisk(int taps) {
         for (int c = 0; c < kCandidatesPerTap * (t + 1); ++c) {
             const double radius = std::sqrt(unitInterval(splitMix64(counter++)));
             const double angle = 2.0 * std::numbers::pi * unitInterval(splitMix64(counter++));
-            const glm::dvec2 candidate(radius * std::cos(angle), radius * std::sin(angle));
+            const glm::dvec2 candidate(radius * portable::cos(angle), radius * portable::sin(angle));
             double distance = 4.0;
             for (const glm::dvec2& p : disk) distance = std::min(distance, glm::length(candidate - p));
             if (distance > bestDistance) bestDistance = distance, best = candidate;

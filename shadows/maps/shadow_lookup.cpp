@@ -6,6 +6,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 namespace {
 
@@ -93,8 +95,8 @@ LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& lig
     rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss;
     pcss = filterIndex == kLookupPcss;
     for (int a = 0; rotated && a < kPoissonRotations; ++a) {
-        rotationCos.push_back(float(std::cos(poissonRotationAngle(a))));
-        rotationSin.push_back(float(std::sin(poissonRotationAngle(a))));
+        rotationCos.push_back(float(portable::cos(poissonRotationAngle(a))));
+        rotationSin.push_back(float(portable::sin(poissonRotationAngle(a))));
     }
 }
 

@@ -2,13 +2,13 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scenes/camera.h"
+
 namespace shadowlab {
 
 glm::dmat4 clipFromViewInfiniteD(const Camera& camera) {
-    const double aspect = double(camera.width) / double(camera.height);
-    // Start from the same call as camera.cpp so that rows x, y, w are the same bits.
-    glm::dmat4 proj = glm::perspectiveRH_NO(glm::radians(double(camera.fovyDeg)), aspect, double(camera.zNear),
-                                            double(camera.zFar));
+    // Start from the camera's own matrix so that rows x, y, w are the same bits.
+    glm::dmat4 proj = clipFromViewD(camera);
     proj[2][2] = -1.0;                          // (f + n) / (n - f) as f -> inf
     proj[3][2] = -2.0 * double(camera.zNear);   // 2 f n / (n - f) as f -> inf
     return proj;
