@@ -10,6 +10,8 @@
 #   scripts/fuzz.sh [build-dir] [seconds per target] [targets...]
 #
 # .ci/run gives each target 60 s; README "Reliability" says how to run them for hours.
+# SHADOWLAB_FUZZ_FLAGS adds libFuzzer flags after the defaults (a later flag wins): on a
+# busy machine, -timeout=60, since the timeout is wall-clock time.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build=${1:-build-asan}
@@ -37,6 +39,6 @@ for target in "${targets[@]}"; do
   echo "fuzz.sh: $target for $seconds s" >&2
   # shellcheck disable=SC2086 # the extra seed folders are a word list
   "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=8192 -malloc_limit_mb=4608 -print_final_stats=1 \
-      -artifact_prefix="$build/fuzz/artifacts/$target-" "${dictionary[@]}" \
+      -artifact_prefix="$build/fuzz/artifacts/$target-" "${dictionary[@]}" ${SHADOWLAB_FUZZ_FLAGS:-} \
       "$corpus" "tests/fuzz/corpus/$target" ${more_seeds[$target]}
 done
