@@ -1,12 +1,15 @@
 // Shared by the shadow-map tests: scenes, frames and error figures against the reference.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "frame/render.h"
 #include "scenes/scene_file.h"
+#include "shadows/light_view.h"
 
 namespace shadowlab::test {
 
@@ -79,6 +82,35 @@ inline BandedErrors bandedErrors(const Frame& reference, const Frame& test, int 
         }
     }
     return m;
+}
+
+// Texels of a `resolution`-texel map per screen pixel, measured here rather than taken from
+// the technique's median_texels_per_pixel: the light's view fitted to the frame's receivers
+// (fitLightView, the stage the technique runs), each pixel's right and lower neighbours on
+// the same surface moved into texel coordinates, and the area of the parallelogram they
+// span (the Jacobian's determinant, RTR 7.4 "perspective aliasing"). The median over the
+// pixels that have both neighbours.
+inline double measuredTexelsPerPixel(const Frame& frame, const PreparedScene& prepared, int resolution) {
+    const GBuffer& g = frame.gbuffer;
+    const LightView view = fitLightView(pointLightFor(prepared.scene().lights[0]), g, prepared.world(), {.resolution = resolution});
+    const glm::dmat4 clipFromWorld = view.clipFromWorld();
+    const auto texel = [&](size_t k) {
+        const glm::dvec4 c = clipFromWorld * glm::dvec4(glm::dvec3(g.position[k]), 1.0);
+        return glm::dvec2(c.x / c.w, c.y / c.w) * (0.5 * resolution);
+    };
+    std::vector<double> density;
+    for (int j = 0; j + 1 < g.height; ++j) {
+        for (int i = 0; i + 1 < g.width; ++i) {
+            const size_t k = g.index(i, j), right = g.index(i + 1, j), below = g.index(i, j + 1);
+            if (!g.hit[k] || !g.hit[right] || !g.hit[below] || g.normal[right] != g.normal[k] || g.normal[below] != g.normal[k])
+                continue;
+            const glm::dvec2 t = texel(k), du = texel(right) - t, dv = texel(below) - t;
+            density.push_back(std::abs(du.x * dv.y - du.y * dv.x));
+        }
+    }
+    if (density.empty()) return 0.0;
+    std::nth_element(density.begin(), density.begin() + density.size() / 2, density.end());
+    return density[density.size() / 2];
 }
 
 // The leak band: a hard shadow-map edge is off by up to about one texel (the nearest texel
