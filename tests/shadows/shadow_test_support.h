@@ -54,6 +54,27 @@ struct Misclassified {
 
 // The light's side of the surface at pixel k, as the reference decides it (reference.h):
 // dot(N, L - P) > 0 for the light's centre (or its direction).
+// A shadow ray in double precision, by brute force over every triangle: is the light's
+// centre L visible from P? No offset: P's own triangle is skipped and hits closer than
+// 10 um are ignored (the float rounding of P is below 1 um in these scenes).
+inline bool visibleByBruteForce(const WorldGeometry& world, const glm::dvec3& P, uint32_t ownTriangle, const glm::dvec3& L) {
+    const glm::dvec3 d = L - P;
+    const double minT = 1e-5 / glm::length(d);
+    for (uint32_t t = 0; t < world.triangles.size(); ++t) {
+        if (t == ownTriangle) continue;
+        const glm::dvec3 a(world.positions[world.triangles[t].x]), b(world.positions[world.triangles[t].y]),
+            c(world.positions[world.triangles[t].z]);
+        const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+        const double det = glm::dot(e1, p);
+        if (det == 0.0) continue;
+        const glm::dvec3 s = P - a, q = glm::cross(s, e1);
+        const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det, tHit = glm::dot(e2, q) / det;
+        if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && tHit > minT && tHit < 1.0) return false;
+    }
+    return true;
+}
+
+
 inline bool facesLight(const GBuffer& g, size_t k, const Light& light) {
     const glm::dvec3 towards = light.type == LightType::Directional
                                    ? glm::dvec3(light.direction)

@@ -10,30 +10,6 @@
 
 using namespace shadowlab;
 
-namespace {
-
-// Offset-free shadow ray in double precision, by brute force over every triangle: is the
-// light's centre visible from P? P's own triangle is skipped and hits closer than 10 um
-// are ignored (the float rounding of P is below 1 um in these scenes).
-bool visibleWithoutOffset(const WorldGeometry& world, const glm::dvec3& P, uint32_t ownTriangle, const glm::dvec3& L) {
-    const glm::dvec3 d = L - P;
-    const double minT = 1e-5 / glm::length(d);
-    for (uint32_t t = 0; t < world.triangles.size(); ++t) {
-        if (t == ownTriangle) continue;
-        const glm::dvec3 a(world.positions[world.triangles[t].x]), b(world.positions[world.triangles[t].y]),
-            c(world.positions[world.triangles[t].z]);
-        const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
-        const double det = glm::dot(e1, p);
-        if (det == 0.0) continue;
-        const glm::dvec3 s = P - a, q = glm::cross(s, e1);
-        const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det, tHit = glm::dot(e2, q) / det;
-        if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && tHit > minT && tHit < 1.0) return false;
-    }
-    return true;
-}
-
-}  // namespace
-
 TEST_CASE("shadow-volume hard cases within the bound") {
     // open-mesh: the teapot is open (192 boundary edges), so each of its triangles casts a
     // volume from its light-facing side (silhouette.h, Crow's rule) and the bound holds.
@@ -90,7 +66,7 @@ TEST_CASE("shadow-volume hard case huge-depth-range: the differences are the ref
             checked++;
             auto exact = [&](int x, int y) {
                 const size_t n = g.index(x, y);
-                return visibleWithoutOffset(s.world, glm::dvec3(g.position[n]), g.triangle[n], L);
+                return test::visibleByBruteForce(s.world, glm::dvec3(g.position[n]), g.triangle[n], L);
             };
             const bool visible = exact(i, j);
             bool nearExactBoundary = false;
