@@ -13,6 +13,7 @@
 //     than the hard shadow, so their RMS may exceed the hard shadow's (measured 0.9 - 1.5).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -47,29 +48,36 @@ struct HardAndSoft {
     }
 };
 
+struct Score {
+    double rmsRatio, penumbraRatio;   // of the hard shadow's RMS, of the reference's penumbra pixels
+};
+
+// Scores a run and prints it (the README's table: test_shadows -tc="soft techniques against
+// the hard shadow*" -s | grep MESSAGE).
+Score score(const HardAndSoft& h, const std::string& scene, const Run& run) {
+    const std::vector<float> v = h.s.run(run.technique, run.params).visibility;
+    const Score result{h.s.rms(v) / h.s.rms(h.hard), double(h.penumbraPixels(v)) / double(h.penumbraPixels(h.s.reference))};
+    const std::string label = scene + " " + run.technique + (run.params.count("width") ? " width=pcss" : "");
+    MESSAGE(label << ": RMS " << result.rmsRatio
+                  << " of the hard shadow's, penumbra " << result.penumbraRatio << " of the reference's");
+    return result;
+}
+
 // Width-estimating techniques: RMS at most 0.7 of the hard shadow's; a penumbra within
-// `penumbraTolerance` of the reference's pixel count.
-void checkBeatsHardClearly(const HardAndSoft& h, const std::vector<Run>& runs) {
-    const double hardRms = h.s.rms(h.hard);
-    const double referencePenumbra = double(h.penumbraPixels(h.s.reference));
+// `penumbraTolerance` of the reference's pixel count. Runs with a negative tolerance are
+// only printed.
+void checkBeatsHardClearly(const HardAndSoft& h, const std::string& scene, const std::vector<Run>& runs) {
     for (const Run& run : runs) {
-        const std::vector<float> v = h.s.run(run.technique, run.params).visibility;
-        const double ratio = h.s.rms(v) / hardRms, penumbra = double(h.penumbraPixels(v)) / referencePenumbra;
-        const std::string label = run.technique + (run.params.empty() ? "" : " width=pcss");
-        INFO(label << ": RMS " << ratio << " of the hard shadow's, penumbra "
-                           << penumbra << " of the reference's " << referencePenumbra << " pixels");
-        CHECK(ratio <= 0.7);
-        CHECK(std::abs(penumbra - 1.0) <= run.penumbraTolerance);
+        const Score s = score(h, scene, run);
+        if (run.penumbraTolerance < 0.0) continue;
+        CHECK(s.rmsRatio <= 0.7);
+        CHECK(std::abs(s.penumbraRatio - 1.0) <= run.penumbraTolerance);
     }
 }
 
 // Fixed-width filtered maps: better than the hard shadow (measured 0.61 - 0.96 of its RMS).
-void checkBeatsHard(const HardAndSoft& h) {
-    for (const std::string technique : {"vsm", "esm", "evsm", "msm"}) {
-        const double ratio = h.s.rms(h.s.run(technique).visibility) / h.s.rms(h.hard);
-        INFO(technique << ": RMS " << ratio << " of the hard shadow's");
-        CHECK(ratio < 1.0);
-    }
+void checkBeatsHard(const HardAndSoft& h, const std::string& scene) {
+    for (const std::string technique : {"vsm", "esm", "evsm", "msm"}) CHECK(score(h, scene, {technique, {}, 0.0}).rmsRatio < 1.0);
 }
 
 // Outer-penumbra methods: lighter than the hard shadow (by more than 0.01) at no more than
@@ -77,8 +85,9 @@ void checkBeatsHard(const HardAndSoft& h) {
 // map's texels and the rays disagree), and darker than it around its edge at 0.4% or more
 // (measured 0.6% for smoothies under the large light, 0.7 - 4% elsewhere; a technique
 // that returned the hard shadow would have none).
-void checkOuterPenumbraOnly(const HardAndSoft& h) {
+void checkOuterPenumbraOnly(const HardAndSoft& h, const std::string& scene) {
     for (const std::string technique : {"smoothies", "penumbra-maps"}) {
+        score(h, scene, {technique, {}, 0.0});
         const std::vector<float> v = h.s.run(technique).visibility;
         size_t hit = 0, lighter = 0, darker = 0;
         for (size_t k = 0; k < v.size(); ++k) {
@@ -103,39 +112,33 @@ const std::vector<Run> kWidthEstimating = {
     {"evsm", {{"filter", "sat"}, {"width", "pcss"}, {"positive-exponent", "3"}, {"negative-exponent", "3"}}, 0.45},
 };
 
+void checkScene(const std::string& scene, const std::vector<Run>& widthEstimating) {
+    const HardAndSoft h(scene + ".json");
+    checkBeatsHardClearly(h, scene, widthEstimating);
+    checkBeatsHard(h, scene);
+    checkOuterPenumbraOnly(h, scene);
+}
+
+// The same runs, with a negative tolerance: printed, not held to the bound.
+std::vector<Run> onlyPrinted(std::vector<Run> runs, const std::vector<std::string>& techniques) {
+    for (Run& run : runs)
+        if (std::find(techniques.begin(), techniques.end(), run.technique) != techniques.end()) run.penumbraTolerance = -1.0;
+    return runs;
+}
+
 }  // namespace
 
-TEST_CASE("soft techniques against the hard shadow: two-boxes") {
-    const HardAndSoft h("two-boxes.json");
-    checkBeatsHardClearly(h, kWidthEstimating);
-    checkBeatsHard(h);
-    checkOuterPenumbraOnly(h);
-}
+TEST_CASE("soft techniques against the hard shadow: two-boxes") { checkScene("two-boxes", kWidthEstimating); }
+TEST_CASE("soft techniques against the hard shadow: torus-over-plane") { checkScene("torus-over-plane", kWidthEstimating); }
+TEST_CASE("soft techniques against the hard shadow: sharp-corner") { checkScene("sharp-corner", kWidthEstimating); }
 
-TEST_CASE("soft techniques against the hard shadow: torus-over-plane") {
-    const HardAndSoft h("torus-over-plane.json");
-    checkBeatsHardClearly(h, kWidthEstimating);
-    checkBeatsHard(h);
-    checkOuterPenumbraOnly(h);
+// Where the penumbra is widest, only some keep the promise: under the large light PCSS's
+// blocker search misses far blockers (RMS 0.77 of the hard shadow's), fins reach 0.86, the
+// width=pcss moment maps 0.79 to 1.07; on the tilted receiver fins reach 0.71 and the
+// width=pcss VSM's penumbra is 0.67 of the reference's (README, "Soft shadows").
+TEST_CASE("soft techniques against the hard shadow: large-light") {
+    checkScene("large-light", onlyPrinted(kWidthEstimating, {"pcss", "fins", "vsm", "msm", "evsm"}));
 }
-
-TEST_CASE("soft techniques against the hard shadow: sharp-corner") {
-    const HardAndSoft h("sharp-corner.json");
-    checkBeatsHardClearly(h, kWidthEstimating);
-    checkBeatsHard(h);
-    checkOuterPenumbraOnly(h);
-}
-
-// Where the penumbra is widest, only some keep the promise: PCSS's blocker search misses
-// far blockers under the large light (RMS 0.77 of the hard shadow's), fins reach 0.86 and
-// 0.71, the width=pcss moment maps 0.79 to 1.07 (see the README, "Soft shadows").
-TEST_CASE("soft techniques against the hard shadow: large-light and tilted-receiver") {
-    const HardAndSoft large("large-light.json");
-    checkBeatsHardClearly(large, {{"multi-sample", {}, 0.3}});
-    checkBeatsHard(large);
-    checkOuterPenumbraOnly(large);
-    const HardAndSoft tilted("tilted-receiver.json");
-    checkBeatsHardClearly(tilted, {{"multi-sample", {}, 0.3}, {"pcss", {}, 0.3}, {"msm", {{"filter", "sat"}, {"width", "pcss"}}, 0.3}});
-    checkBeatsHard(tilted);
-    checkOuterPenumbraOnly(tilted);
+TEST_CASE("soft techniques against the hard shadow: tilted-receiver") {
+    checkScene("tilted-receiver", onlyPrinted(kWidthEstimating, {"fins", "vsm"}));
 }
