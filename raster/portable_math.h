@@ -83,29 +83,23 @@ inline double atanReduced(double u) {
 
 }  // namespace detail
 
-inline double sin(double x) {
+namespace detail {
+// sin(x + turns pi/2): the reduced argument's sine or cosine, by quadrant.
+inline double sinQuarterTurns(double x, int turns) {
     if (!std::isfinite(x)) return std::numeric_limits<double>::quiet_NaN();
     int quadrant;
-    const double r = detail::reduceHalfPi(x, quadrant);
-    switch (quadrant) {
-        case 0: return detail::sinReduced(r);
-        case 1: return detail::cosReduced(r);
-        case 2: return -detail::sinReduced(r);
-        default: return -detail::cosReduced(r);
+    const double r = reduceHalfPi(x, quadrant);
+    switch ((quadrant + turns) % 4) {
+        case 0: return sinReduced(r);
+        case 1: return cosReduced(r);
+        case 2: return -sinReduced(r);
+        default: return -cosReduced(r);
     }
 }
+}  // namespace detail
 
-inline double cos(double x) {
-    if (!std::isfinite(x)) return std::numeric_limits<double>::quiet_NaN();
-    int quadrant;
-    const double r = detail::reduceHalfPi(x, quadrant);
-    switch (quadrant) {
-        case 0: return detail::cosReduced(r);
-        case 1: return -detail::sinReduced(r);
-        case 2: return -detail::cosReduced(r);
-        default: return detail::sinReduced(r);
-    }
-}
+inline double sin(double x) { return detail::sinQuarterTurns(x, 0); }
+inline double cos(double x) { return detail::sinQuarterTurns(x, 1); }
 
 inline double tan(double x) { return sin(x) / cos(x); }
 
