@@ -16,13 +16,13 @@ sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 
 if [[ ! -f $tbb/install/lib/cmake/TBB/TBBConfig.cmake ]]; then
-  dpkg-query -W -f='${Status}' dpkg-dev 2>/dev/null | grep -q "install ok installed" ||
-      DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends dpkg-dev
   if ! grep -rqs "deb-src" /etc/apt/sources.list /etc/apt/sources.list.d/; then
     printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm bookworm-updates\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' |
         $sudo tee /etc/apt/sources.list.d/shadowlab-deb-src.sources >/dev/null
-    $sudo apt-get update -qq
   fi
+  $sudo apt-get update -qq
+  dpkg-query -W -f='${Status}' dpkg-dev 2>/dev/null | grep -q "install ok installed" ||
+      DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends dpkg-dev
   rm -rf "$tbb" && mkdir -p "$tbb"
   version=$(dpkg-query -W -f='${source:Version}' libtbb-dev)
   (cd "$tbb" && apt-get source -qq "onetbb=$version" >/dev/null)
