@@ -4,6 +4,7 @@
 // operation fails (libm itself changes with GLIBC_TUNABLES; these must not).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -20,7 +21,7 @@ namespace {
 // Distance in ulps between two finite doubles of the same sign (0 when equal).
 double ulps(double a, double b) {
     if (a == b) return 0.0;
-    const double scale = std::ldexp(1.0, std::ilogb(std::max(std::abs(a), std::abs(b))) - 52);
+    const double scale = std::ldexp(1.0, std::ilogb(std::max({std::abs(a), std::abs(b), std::numeric_limits<double>::min()})) - 52);
     return std::abs(a - b) / scale;
 }
 
@@ -36,7 +37,7 @@ double worstUlps(const std::function<double(double)>& f, const std::function<dou
     double worst = 0.0;
     for (int i = 0; i < sweep.count; ++i) {
         const double x = sweep.at(i), expected = g(x), got = f(x);
-        const double scale = std::ldexp(1.0, std::ilogb(std::max(std::abs(expected), floor)) - 52);
+        const double scale = std::ldexp(1.0, std::ilogb(std::max({std::abs(expected), floor, std::numeric_limits<double>::min()})) - 52);
         worst = std::max(worst, std::abs(got - expected) / scale);
     }
     return worst;
