@@ -128,21 +128,27 @@ inline double logOfMantissa(double x, int& exponent) {
     for (int n = 23; n >= 3; n -= 2) sum = (sum + 1.0 / n) * s2;
     return 2.0 * (s + s * sum);
 }
+
+// log and log2 of NaN, negative, zero and infinite x, as libm gives them; false for a
+// positive finite x.
+inline bool logOfSpecial(double x, double& result) {
+    if (std::isnan(x) || x < 0.0) result = std::numeric_limits<double>::quiet_NaN();
+    else if (x == 0.0) result = -std::numeric_limits<double>::infinity();
+    else if (std::isinf(x)) result = x;
+    else return false;
+    return true;
+}
 }  // namespace detail
 
 inline double log(double x) {
-    if (std::isnan(x) || x < 0.0) return std::numeric_limits<double>::quiet_NaN();
-    if (x == 0.0) return -std::numeric_limits<double>::infinity();
-    if (std::isinf(x)) return x;
+    if (double special; detail::logOfSpecial(x, special)) return special;
     int e;
     const double lnM = detail::logOfMantissa(x, e);
     return e * detail::kLn2High + (lnM + e * detail::kLn2Low);
 }
 
 inline double log2(double x) {
-    if (std::isnan(x) || x < 0.0) return std::numeric_limits<double>::quiet_NaN();
-    if (x == 0.0) return -std::numeric_limits<double>::infinity();
-    if (std::isinf(x)) return x;
+    if (double special; detail::logOfSpecial(x, special)) return special;
     int e;
     const double lnM = detail::logOfMantissa(x, e);
     return e + lnM * detail::kInvLn2;
