@@ -112,6 +112,10 @@ void checkExrSize(const fs::path& path, int64_t width, int64_t height, size_t ch
     throw std::runtime_error("EXR file " + quoted(path) + ": " + why);
 }
 
+// Tiles: more than any writer uses (32 to 256 are usual), and small enough that a tile of
+// 16 float channels stays within 256 MB, the size of one channel of the largest image.
+constexpr int64_t kMaxExrTileSide = 2048;
+
 // Names are at most 31 bytes, or 255 in a file with the long-names flag (version bit 10);
 // the library stops reading a name at that length, so a longer one would desynchronise it.
 std::string readExrName(Imf::IStream& stream, size_t maxLength, const fs::path& path) {
@@ -163,9 +167,9 @@ void checkExrValue(Imf::IStream& stream, const std::string& name, const std::str
             checkExrSize(path, xMax - xMin + 1, yMax - yMin + 1, 0);
         } else if (type == "tiledesc") {   // the library allocates a tile's pixels per thread
             const int64_t tileWidth = uint32_t(readExrInt32(stream)), tileHeight = uint32_t(readExrInt32(stream));
-            if (tileWidth < 1 || tileHeight < 1 || tileWidth > raster::kMaxViewport || tileHeight > raster::kMaxViewport) {
+            if (tileWidth < 1 || tileHeight < 1 || tileWidth > kMaxExrTileSide || tileHeight > kMaxExrTileSide) {
                 refuseExrHeader(path, "tiles of " + std::to_string(tileWidth) + " x " + std::to_string(tileHeight) +
-                                          " pixels; tiles must be 1.." + std::to_string(raster::kMaxViewport) + " on a side");
+                                          " pixels; tiles must be 1.." + std::to_string(kMaxExrTileSide) + " on a side");
             }
         }
     } else if (type == "chlist") {   // channels until an empty name, 16 bytes after each name
@@ -181,7 +185,12 @@ void checkExrValue(Imf::IStream& stream, const std::string& name, const std::str
     } else if (type == "preview") {   // width, height, then 4 bytes per pixel
         if (size < 8) mismatch("a width and a height (8 bytes)");
         const uint64_t width = uint32_t(readExrInt32(stream)), height = uint32_t(readExrInt32(stream));
-        if (8 + 4 * width * height != uint64_t(size)) mismatch("a " + std::to_string(width) + " x " + std::to_string(height) + " preview");
+        // 4 w h is compared only where it cannot wrap: w h <= (size - 8) / 4 < 2^29.
+        const bool small = width == 0 || height <= (uint64_t(size) - 8) / 4 / width;
+        if (!small || 8 + 4 * width * height != uint64_t(size))
+            mismatch("a " + std::to_string(width) + " x " + std::to_string(height) + " preview");
+    } else if (type == "floatvector" && size % 4 != 0) {   // the library reads size / 4 floats
+        mismatch("whole floats only (a multiple of 4 bytes)");
     } else if (type == "idmanifest") {   // OpenEXR 3.1 reads 4 bytes more than the size says
         refuseExrHeader(path, "header attribute '" + name + "' is an ID manifest, which shadowlab does not read");
     }

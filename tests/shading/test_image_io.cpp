@@ -231,7 +231,13 @@ TEST_CASE("an EXR header that declares more bytes than the file holds is refused
     CHECK(parseMessage(exrStart() + exrAttribute("channels", "chlist", 4, std::string("R\0", 2) + std::string(16, '\0') + '\0') + '\0')
               .find("declares 4 bytes but holds 18 or more") != std::string::npos);
     CHECK(parseMessage(exrStart(0x200) + exrAttribute("tiles", "tiledesc", 9, int32Bytes(4) + int32Bytes(12976132) + '\0') + '\0')
-              .find("tiles of 4 x 12976132 pixels; tiles must be 1..8192 on a side") != std::string::npos);
+              .find("tiles of 4 x 12976132 pixels; tiles must be 1..2048 on a side") != std::string::npos);
+    // A float vector is read as size / 4 floats: 7 bytes would leave the library 3 bytes behind.
+    CHECK(parseMessage(exrStart() + exrAttribute("weights", "floatvector", 7, std::string(7, '\0')) + '\0')
+              .find("declares 7 bytes but holds whole floats only") != std::string::npos);
+    // 4 w h wraps to 0 in 64 bits for w = h = 2^31: compared by division instead.
+    CHECK(parseMessage(exrStart() + exrAttribute("preview", "preview", 8, int32Bytes(int32_t(0x80000000u)) + int32Bytes(int32_t(0x80000000u))) + '\0')
+              .find("holds a 2147483648 x 2147483648 preview") != std::string::npos);
     CHECK(parseMessage(exrStart() + exrAttribute("ids", "idmanifest", 4, int32Bytes(0)) + '\0').find("is an ID manifest") != std::string::npos);
     CHECK(parseMessage("ply\n" + int32Bytes(2)).find("not an EXR file (no magic number)") != std::string::npos);
     CHECK(parseMessage(std::string("\x76\x2f\x31", 3)).find("Early end of file") != std::string::npos);
