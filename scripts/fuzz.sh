@@ -2,10 +2,11 @@
 # Runs each libFuzzer target of tests/fuzz for a bounded time, starting from its seed corpus
 # in the repository. The targets are built by scripts/sanitize.sh (clang-14, ASan + UBSan,
 # SHADOWLAB_FUZZ=ON) in build-asan/, so a memory error, undefined behaviour, a leak, an
-# input that runs longer than 10 s or grows past 8 GiB, or an exception other than the
+# input that runs longer than 10 s, grows past 8 GiB or asks for too much at once, or an exception other than the
 # loader's documented error stops the run and fails this script; the input that did it is
-# written to <build>/fuzz/artifacts/. The memory bounds leave room for the largest inputs
-# the limits allow (an EXR of 16 float channels at 8192 x 8192 pixels is 4 GiB).
+# written to <build>/fuzz/artifacts/. The total memory bound leaves room for the largest
+# input the limits allow (an EXR of 16 float channels at 8192 x 8192 pixels is 4 GiB);
+# single allocations are bounded per target, below.
 #
 #   scripts/fuzz.sh [build-dir] [seconds per target] [targets...]
 #
@@ -20,13 +21,21 @@ shift $(( $# < 2 ? $# : 2 ))
 targets=("$@")
 [[ ${#targets[@]} -gt 0 ]] || targets=(scene_file obj_reader ply_reader exr_reader)
 
-# Extra seeds beside tests/fuzz/corpus/<target>: the built-in scenes and the tiny meshes.
+# Extra seeds beside tests/fuzz/corpus/<target>: the built-in scene files (copied, since
+# libFuzzer reads folders recursively and scenes/ also holds sources and large meshes) and
+# the tiny meshes.
+rm -rf "$build/fuzz/seeds/scene_file" && mkdir -p "$build/fuzz/seeds/scene_file"
+for file in scenes/*.json scenes/*/*.json; do cp "$file" "$build/fuzz/seeds/scene_file/${file//\//_}"; done
 declare -A more_seeds=(
-  [scene_file]="scenes scenes/hard scenes/soft"
+  [scene_file]="$build/fuzz/seeds/scene_file"
   [obj_reader]="tests/fuzz/meshes"
   [ply_reader]="tests/fuzz/meshes"
   [exr_reader]=""
 )
+# The largest single allocation an input within the limits may ask for: an EXR channel of
+# 8192 x 8192 floats or a tile of 16 (256 MB); a scene's vectors of 2^25 triangles (400 MB,
+# twice that while growing). A larger one is a finding (the EXR headers that asked for 2 GB).
+declare -A malloc_limit_mb=([scene_file]=2048 [obj_reader]=2048 [ply_reader]=2048 [exr_reader]=1024)
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p "$build/fuzz/artifacts"
 for target in "${targets[@]}"; do
@@ -38,7 +47,7 @@ for target in "${targets[@]}"; do
   [[ -f tests/fuzz/$target.dict ]] && dictionary=(-dict="tests/fuzz/$target.dict")
   echo "fuzz.sh: $target for $seconds s" >&2
   # shellcheck disable=SC2086 # the extra seed folders are a word list
-  "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=8192 -malloc_limit_mb=4608 -print_final_stats=1 \
+  "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=8192 -malloc_limit_mb="${malloc_limit_mb[$target]}" -print_final_stats=1 \
       -artifact_prefix="$build/fuzz/artifacts/$target-" "${dictionary[@]}" ${SHADOWLAB_FUZZ_FLAGS:-} \
       "$corpus" "tests/fuzz/corpus/$target" ${more_seeds[$target]}
 done
