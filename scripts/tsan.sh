@@ -16,7 +16,8 @@ sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 
 if [[ ! -f $tbb/install/lib/cmake/TBB/TBBConfig.cmake ]]; then
-  if ! grep -rqs "deb-src" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+  # An active deb-src entry, one-line or deb822 (a commented-out line does not count).
+  if ! grep -rqsE '^[[:space:]]*deb-src[[:space:]]|^Types:.*deb-src' /etc/apt/sources.list /etc/apt/sources.list.d/; then
     printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm bookworm-updates\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' |
         $sudo tee /etc/apt/sources.list.d/shadowlab-deb-src.sources >/dev/null
   fi
