@@ -185,7 +185,7 @@ inline double atan(double x) {
     }
     double angle = offset + detail::atanReduced(u);
     if (inverted) angle = detail::kHalfPi - angle;
-    return x < 0.0 ? -angle : angle;
+    return std::signbit(x) ? -angle : angle;   // atan(-0) = -0
 }
 
 // acos x = 2 atan(sqrt((1 - x) / (1 + x))); NaN outside [-1, 1].

@@ -29,7 +29,8 @@ struct Sphere {
 };
 Sphere sliceSphere(const Camera& camera, double d0, double d1) {
     const double tanY = portable::tan(0.5 * double(camera.fovyDeg) * std::numbers::pi / 180.0);
-    const double spread = tanY * std::sqrt(1.0 + portable::pow(double(camera.width) / camera.height, 2.0));
+    const double aspect = double(camera.width) / camera.height;
+    const double spread = tanY * std::sqrt(1.0 + aspect * aspect);
     const double r0 = d0 * spread, r1 = d1 * spread;
     const double t = std::clamp((d1 * d1 + r1 * r1 - d0 * d0 - r0 * r0) / (2.0 * (d1 - d0)), d0, d1);
     const double radius = std::max(portable::hypot(t - d0, r0), portable::hypot(d1 - t, r1));
