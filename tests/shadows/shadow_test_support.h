@@ -52,8 +52,6 @@ struct Misclassified {
     double percent() const { return hitPixels ? 100.0 * double(count) / double(hitPixels) : 0.0; }
 };
 
-// The light's side of the surface at pixel k, as the reference decides it (reference.h):
-// dot(N, L - P) > 0 for the light's centre (or its direction).
 // A shadow ray in double precision, by brute force over every triangle: is the light's
 // centre L visible from P? No offset: P's own triangle is skipped and hits closer than
 // 10 um are ignored (the float rounding of P is below 1 um in these scenes).
@@ -75,6 +73,8 @@ inline bool visibleByBruteForce(const WorldGeometry& world, const glm::dvec3& P,
 }
 
 
+// The light's side of the surface at pixel k, as the reference decides it (reference.h):
+// dot(N, L - P) > 0 for the light's centre (or its direction).
 inline bool facesLight(const GBuffer& g, size_t k, const Light& light) {
     const glm::dvec3 towards = light.type == LightType::Directional
                                    ? glm::dvec3(light.direction)

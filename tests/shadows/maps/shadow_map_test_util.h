@@ -89,7 +89,10 @@ inline BandedErrors bandedErrors(const Frame& reference, const Frame& test, int 
 // (fitLightView, the stage the technique runs), each pixel's right and lower neighbours on
 // the same surface moved into texel coordinates, and the area of the parallelogram they
 // span (the Jacobian's determinant, RTR 7.4 "perspective aliasing"). The median over the
-// pixels that have both neighbours.
+// pixels whose two neighbours share their normal: flat surfaces only (the ground and the
+// box on sphere-box, most of the view), which is where the leaks the band bounds lie. It
+// shares fitLightView with the technique, so it checks the lookup's density figure and the
+// band, not the fitting.
 inline double measuredTexelsPerPixel(const Frame& frame, const PreparedScene& prepared, int resolution) {
     const GBuffer& g = frame.gbuffer;
     const LightView view = fitLightView(pointLightFor(prepared.scene().lights[0]), g, prepared.world(), {.resolution = resolution});
