@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     // Tiled, PIZ (wavelet + Huffman) and B44 (lossy, 4x4 blocks).
     writeTiles(dir + "/tiled-half-piz.exr", header(Box(V(0, 0), V(7, 5)), Imf::PIZ_COMPRESSION), {"B", "G", "R"}, Imf::HALF);
     writeScanlines(dir + "/half-b44.exr", header(Box(V(0, 0), V(7, 3)), Imf::B44_COMPRESSION), {"V"}, Imf::HALF);
-    // PXR24 (lossy float) and DWAB (the envmaps' compression, issue 11).
+    // PXR24 (lossy float) and DWAB (the compression of the HDR environment maps).
     writeScanlines(dir + "/float-pxr24.exr", header(Box(V(0, 0), V(4, 3)), Imf::PXR24_COMPRESSION), {"Z"}, Imf::FLOAT);
     writeScanlines(dir + "/half-dwab.exr", header(Box(V(0, 0), V(7, 7)), Imf::DWAB_COMPRESSION), {"R", "G", "B"}, Imf::HALF);
     return 0;
