@@ -81,9 +81,6 @@ inline double atanReduced(double u) {
     return u + u * sum;
 }
 
-}  // namespace detail
-
-namespace detail {
 // sin(x + turns pi/2): the reduced argument's sine or cosine, by quadrant.
 inline double sinQuarterTurns(double x, int turns) {
     if (!std::isfinite(x)) return std::numeric_limits<double>::quiet_NaN();
