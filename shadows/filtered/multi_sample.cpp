@@ -77,12 +77,15 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
             const glm::dvec2 u = jitteredSample(a, b, perAxis, rng);
             Light point = pointLightFor(in.light);
             point.position = glm::vec3(areaLightPoint(frame, u));
-            const DepthMap map = renderDepthMap(in.world(), fitLightView(point, in.gbuffer, in.world(), fit), depth, in.simd);
+            const LightView view = fitLightView(point, in.gbuffer, in.world(), fit);
+            timer.lap("light_view");
+            const DepthMap map = renderDepthMap(in.world(), view, depth, in.simd);
+            timer.lap("depth_map");
             accumulateHardShadow(in.gbuffer, map, point, in.simd, v, lit);
+            timer.lap("lookup");
             if (a == 0 && b == 0) writeDepthMap(debug, "depth-sample0", map);
         }
     }
-    timer.lap("maps_and_lookups");
     ShadowOutputs out;
     out.visibility.resize(lit.size());
     for (size_t k = 0; k < lit.size(); ++k) out.visibility[k] = float(lit[k]) / float(samples);

@@ -107,7 +107,7 @@ std::vector<uint8_t> facingLight(const GBuffer& g, const Light& light) {
 // Step 4, near to far; layers without objects or fins are lit everywhere and skipped.
 // Returns the number of layers drawn.
 int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings& s, const FinDebug& debug,
-               IlluminanceBuffer& buffer) {
+               IlluminanceBuffer& buffer, StageTimer& timer) {
     const IlluminanceSettings settings{s.light, scene.view, scene.L0, s.style.edgeWeight, s.falloff, s.bias};
     const DepthMapSettings hardSettings{s.resolution, DepthLayer::First, polygonOffsetFor(s.bias)};
     int drawn = 0, last = -1;   // the last layer with contents
@@ -117,6 +117,7 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
         if (c.empty()) continue;
         ++drawn;
         const DepthMap hard = renderDepthMap(in.world().positions, c.geometry, scene.view, hardSettings, in.simd);
+        timer.lap("hard_maps");
         PenumbraMap inner;
         if (s.style.innerFins) {
             inner = renderPenumbraMap(scene.fins.inner, c.innerFins, scene.view, s.resolution, FinKind::Inner, in.simd);
@@ -124,7 +125,9 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
         const PenumbraMap outer =
             renderPenumbraMap(scene.fins.outer, c.outerFins, scene.view, s.resolution, FinKind::Outer, in.simd);
         const PenumbraMap* innerOrNone = s.style.innerFins ? &inner : nullptr;
+        timer.lap("penumbra_maps");
         buffer.combineLayer({hard, innerOrNone, outer}, settings, layer < last);
+        timer.lap("illuminance");
         debug.writeLayer(layer, hard, innerOrNone, outer, s.style.edgeWeight, in.gbuffer, buffer.values());
     }
     return drawn;
@@ -169,9 +172,9 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
     timer.lap("silhouette_and_fins");
 
     IlluminanceBuffer buffer(in.gbuffer, facingLight(in.gbuffer, in.light));
+    timer.lap("facing");
     const FinDebug debug(in.debugDir, s.technique, scene.view);
-    const int layersDrawn = drawLayers(in, scene, s, debug, buffer);
-    timer.lap("maps_and_illuminance");
+    const int layersDrawn = drawLayers(in, scene, s, debug, buffer, timer);
     debug.writeFinCoverage(scene.fins, s.resolution, in.simd);
     debug.writePixelLayers(in.gbuffer, in.world(), scene.layering.instanceLayer, scene.layering.layers.count());
 

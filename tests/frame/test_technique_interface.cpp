@@ -40,15 +40,21 @@ TEST_CASE("every technique's stat names are snake_case and end in a unit (docs/a
         if (t.name == "reference-soft") settings.params = {{"samples-per-axis", "2"}};
         if (t.name == "shadow-map") settings.params = {{"warp", "lispsm"}};
         const Frame frame = renderFrame(needsDirectionalLight(t) || t.name == "shadow-map" ? sun : disk, t, settings);
+        int stageLaps = 0;
         for (const TechniqueStat& s : frame.shadow.stats) {
             INFO(t.name << ": " << s.name);
             CHECK(std::regex_match(s.name, rule));
             seen.insert(s.name);
+            stageLaps += s.name.ends_with("_ms");
         }
         for (const TechniqueStat& s : frame.preparation) CHECK(std::regex_match(s.name, rule));
+        // Every technique but `none` says where its frame goes: two stages at least.
+        INFO(t.name);
+        CHECK(stageLaps >= (t.name == "none" ? 0 : 2));
     }
     // The stage timer's laps are among them, one per stage of the timed techniques.
-    for (const char* stage : {"traversal_ms", "stencil_ms", "maps_and_illuminance_ms", "fill_fragments_per_pixel"})
+    for (const char* stage : {"traversal_ms", "stencil_ms", "illuminance_ms", "penumbra_maps_ms", "lookup_ms",
+                              "fill_fragments_per_pixel"})
         CHECK(seen.count(stage) == 1);
 }
 
