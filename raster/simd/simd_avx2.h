@@ -133,6 +133,7 @@ inline F64 roundToFloat(F64 a) { return {_mm256_cvtps_pd(_mm256_cvtpd_ps(a.v))};
 inline F64 floor(F64 a) { return {_mm256_round_pd(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)}; }
 inline F64 binade(F64 a) { return {_mm256_and_pd(a.v, _mm256_castsi256_pd(_mm256_set1_epi64x(0x7ff0000000000000ll)))}; }
 inline void store(double* p, F64 a) { _mm256_storeu_pd(p, a.v); }
+inline void storeNarrowed(float* p, F64 a) { _mm_storeu_ps(p, _mm256_cvtpd_ps(a.v)); }
 inline Mask64 cmpLt(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
 inline Mask64 cmpLe(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)}; }
 inline Mask64 cmpNe(F64 a, F64 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_NEQ_UQ)}; }

@@ -105,6 +105,8 @@ inline F64 binade(F64 a) {
     return {__builtin_bit_cast(double, __builtin_bit_cast(uint64_t, a.v) & 0x7ff0000000000000ull)};
 }
 inline void store(double* p, F64 a) { *p = a.v; }
+// Each lane rounded to the nearest float, as float(x) does.
+inline void storeNarrowed(float* p, F64 a) { *p = float(a.v); }
 inline Mask64 cmpLt(F64 a, F64 b) { return {a.v < b.v}; }
 inline Mask64 cmpLe(F64 a, F64 b) { return {a.v <= b.v}; }
 inline Mask64 cmpNe(F64 a, F64 b) { return {a.v != b.v}; }

@@ -15,6 +15,7 @@
 #include "shadows/fins/fin_layers.h"
 #include "shadows/fins/fin_maps.h"
 #include "shadows/fins/fins_debug.h"
+#include "shadows/maps/shadow_bias.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/stage_timer.h"
 
@@ -108,10 +109,10 @@ std::vector<uint8_t> facingLight(const GBuffer& g, const Light& light) {
 // Returns the number of layers drawn.
 int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings& s, const FinDebug& debug,
                IlluminanceBuffer& buffer, StageTimer& timer) {
-    const IlluminanceSettings settings{s.light, scene.view, scene.L0, s.style.edgeWeight, s.falloff, s.bias};
-    const DepthMapSettings hardSettings{s.resolution, DepthLayer::First, polygonOffsetFor(s.bias)};
-    int drawn = 0, last = -1;   // the last layer with contents
-    for (int layer = 0; layer < scene.layering.layers.count(); ++layer) last = scene.layering.contents[layer].empty() ? last : layer;
+    const IlluminanceSettings settings{s.light, scene.view, scene.L0, s.style.edgeWeight, s.falloff, in.simd};
+    // Slope-scaled, the shadow map's default: the illuminance compares receivers where they are.
+    const DepthMapSettings hardSettings{s.resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
+    int drawn = 0;
     for (int layer = 0; layer < scene.layering.layers.count(); ++layer) {
         const LayerContents& c = scene.layering.contents[layer];
         if (c.empty()) continue;
@@ -126,7 +127,7 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
             renderPenumbraMap(scene.fins.outer, c.outerFins, scene.view, s.resolution, FinKind::Outer, in.simd);
         const PenumbraMap* innerOrNone = s.style.innerFins ? &inner : nullptr;
         timer.lap("penumbra_maps");
-        buffer.combineLayer({hard, innerOrNone, outer}, settings, layer < last);
+        buffer.combineLayer({hard, innerOrNone, outer}, settings);
         timer.lap("illuminance");
         debug.writeLayer(layer, hard, innerOrNone, outer, s.style.edgeWeight, in.gbuffer, buffer.values());
     }

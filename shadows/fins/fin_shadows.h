@@ -28,7 +28,6 @@
 
 #include "shadows/fins/fin_geometry.h"
 #include "shadows/fins/illuminance_buffer.h"
-#include "shadows/maps/shadow_bias.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -40,7 +39,6 @@ struct FinSettings {
     int layers = 1;
     int resolution = 1024;
     Falloff falloff = Falloff::Linear;
-    BiasSettings bias;   // slope-scaled, as the shadow-map default (shadow_bias.h)
 };
 
 // `resolution` and `falloff`, which every fin technique has.

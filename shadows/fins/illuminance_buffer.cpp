@@ -1,69 +1,80 @@
 #include "shadows/fins/illuminance_buffer.h"
 
 #include <algorithm>
-#include <cmath>
 
+#include <glm/gtc/type_ptr.hpp>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+
+#include "shadows/fins/illuminance_kernel.h"
 
 namespace shadowlab {
 namespace {
 
-// The texel holding coordinate v (texel units) of a size-texel map, clamped to its border.
-int texelOf(double v, int size) { return std::clamp(texelIndexOf(v), 0, size - 1); }
+// Pixels a task takes through the kernels at a time: its working columns stay in L1/L2.
+constexpr uint32_t kChunkPixels = 512;
+
+fins::IlluminanceKernels illuminanceKernels(raster::SimdLevel simd) {
+    return raster::forSimdLevel(simd, fins::illuminanceKernelsScalar, fins::illuminanceKernelsAvx2,
+                                fins::illuminanceKernelsAvx512);
+}
+
+fins::PlaceConstants placeConstants(const DepthMap& hard, const LightPlane& light) {
+    fins::PlaceConstants c{};
+    std::copy_n(glm::value_ptr(hard.texelFromWorld), 16, c.texelFromWorld);
+    c.lastTexel = double(hard.size - 1);
+    for (int i = 0; i < 3; ++i) c.lightCentre[i] = light.centre[i], c.lightNormal[i] = light.normal[i];
+    return c;
+}
+
+// One chunk's working columns: where each pixel's receiver falls, and the maps' values there.
+struct ChunkColumns {
+    double x[kChunkPixels], y[kChunkPixels], depthAtCentre[kChunkPixels], lightDistance[kChunkPixels];
+    double hard[kChunkPixels], innerDepth[kChunkPixels], innerWeight[kChunkPixels];
+    double outerDepth[kChunkPixels], outerWeight[kChunkPixels];
+
+    fins::PlacedColumns placed(uint32_t from) { return {x + from, y + from, depthAtCentre + from, lightDistance + from}; }
+    fins::TexelColumns texels(uint32_t from, bool inner) const {
+        return {hard + from, inner ? innerDepth + from : nullptr, inner ? innerWeight + from : nullptr, outerDepth + from,
+                outerWeight + from};
+    }
+};
+
+// The maps at each placed texel. Every map of a frame shares one view and resolution
+// (fin_shadows.cpp), so one texel serves them all.
+void readTexels(const LayerMaps& maps, uint32_t count, ChunkColumns& c) {
+    for (uint32_t k = 0; k < count; ++k) {
+        const int x = int(c.x[k]), y = int(c.y[k]);
+        const size_t texel = size_t(y) * size_t(maps.hard.size) + size_t(x);
+        c.hard[k] = maps.hard.at(x, y);
+        if (maps.inner) c.innerDepth[k] = maps.inner->depth[texel], c.innerWeight[k] = maps.inner->weight[texel];
+        c.outerDepth[k] = maps.outer.depth[texel], c.outerWeight[k] = maps.outer.weight[texel];
+    }
+}
 
 }  // namespace
-
-double refinedWeight(double s0, double edgeWeight, double Lb, double Lr, double L0) {
-    const double widthRatio = ((L0 - Lb) / L0) * (Lr / (Lr - Lb));   // B_0 / B_r, eqs. 2 and 3
-    return std::clamp(edgeWeight + widthRatio * (s0 - edgeWeight), 0.0, double(edgeWeight));
-}
-
-double fallOff(double s, Falloff falloff) {
-    return falloff == Falloff::Linear ? s : s * s * (3.0 - 2.0 * s);
-}
 
 IlluminanceBuffer::IlluminanceBuffer(const GBuffer& gbuffer, const std::vector<uint8_t>& lit)
     : gbuffer_(gbuffer), values_(lit.begin(), lit.end()) {}
 
-IlluminanceBuffer::PlacedReceiver IlluminanceBuffer::place(size_t k, const DepthMap& hard, const IlluminanceSettings& s) const {
-    const glm::dvec3 P(gbuffer_.position[k]), N(gbuffer_.normal[k]);
-    const MapReceiver receiver = mapReceiverFromPoint(hard, P, N, s.light.centre, s.bias);
-    PlacedReceiver r;
-    r.x = texelOf(receiver.texel.x, hard.size), r.y = texelOf(receiver.texel.y, hard.size);
-    r.depthAtCentre = receiver.depthAt(glm::dvec2(r.x + 0.5, r.y + 0.5));
-    r.tolerance = receiver.tolerance;
-    r.lightDistance = s.light.distance(P);
-    return r;
-}
-
-double IlluminanceBuffer::localIlluminance(const PlacedReceiver& r, const LayerMaps& maps, const IlluminanceSettings& s) const {
-    // MapReceiver::litBy, with the receiver's depth at the texel centre found once.
-    const float stored = maps.hard.at(r.x, r.y);
-    double local = stored >= 1.0f || r.depthAtCentre <= double(stored) + r.tolerance ? 1.0 : 0.0;
-    // All maps of the frame share one view, so the texel is the same in each.
-    const size_t texel = size_t(r.y) * size_t(maps.hard.size) + size_t(r.x);
-    const double Lr = r.lightDistance;
-    auto adjustment = [&](const PenumbraMap& map) {
-        if (!map.covered(texel)) return 0.0;
-        const double Lb = lightDistanceOfDepth(s.view, map.depth[texel]);
-        if (!(Lb < Lr)) return 0.0;   // the fin lies behind the receiver
-        return fallOff(refinedWeight(map.weight[texel], s.edgeWeight, Lb, Lr, s.referenceDistance), s.falloff);
-    };
-    if (maps.inner) local += adjustment(*maps.inner);
-    local -= adjustment(maps.outer);
-    return std::clamp(local, 0.0, 1.0);
-}
-
-void IlluminanceBuffer::combineLayer(const LayerMaps& maps, const IlluminanceSettings& settings, bool moreLayersFollow) {
-    const bool placedBefore = !placed_.empty(), keep = !placedBefore && moreLayersFollow;
-    if (keep) placed_.resize(values_.size());
-    tbb::parallel_for(0, gbuffer_.height, [&](int j) {
-        for (int i = 0; i < gbuffer_.width; ++i) {
-            const size_t k = gbuffer_.index(i, j);
-            if (values_[k] == 0.0f) continue;   // no light left to take away
-            const PlacedReceiver r = placedBefore ? placed_[k] : place(k, maps.hard, settings);
-            if (keep) placed_[k] = r;
-            values_[k] = std::min(values_[k], float(localIlluminance(r, maps, settings)));
+void IlluminanceBuffer::combineLayer(const LayerMaps& maps, const IlluminanceSettings& s) {
+    const fins::IlluminanceKernels vector = illuminanceKernels(s.simd), scalar = fins::illuminanceKernelsScalar();
+    const fins::PlaceConstants place = placeConstants(maps.hard, s.light);
+    const fins::IlluminateConstants illuminate{s.view.clipFromView[2][2], s.view.clipFromView[3][2], s.referenceDistance,
+                                               double(s.edgeWeight), s.falloff == Falloff::Bernstein};
+    const float* positions = &gbuffer_.position.data()->x;   // x, y, z per pixel
+    const bool inner = maps.inner != nullptr;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, values_.size(), kChunkPixels), [&](const tbb::blocked_range<size_t>& r) {
+        ChunkColumns c;
+        for (size_t first = r.begin(); first < r.end(); first += kChunkPixels) {
+            const uint32_t count = uint32_t(std::min<size_t>(kChunkPixels, r.end() - first));
+            // The vector kernels take whole vectors, the scalar twin the tail.
+            const uint32_t body = count / uint32_t(vector.width) * uint32_t(vector.width);
+            vector.place(place, positions + 3 * first, body, c.placed(0));
+            scalar.place(place, positions + 3 * (first + body), count - body, c.placed(body));
+            readTexels(maps, count, c);
+            vector.illuminate(illuminate, c.placed(0), c.texels(0, inner), body, &values_[first]);
+            scalar.illuminate(illuminate, c.placed(body), c.texels(body, inner), count - body, &values_[first + body]);
         }
     });
 }

@@ -28,20 +28,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "raster/tile_kernels.h"
 #include "shading/gbuffer.h"
 #include "shadows/depth_map.h"
 #include "shadows/fins/fin_geometry.h"
 #include "shadows/fins/fin_maps.h"
-#include "shadows/maps/shadow_bias.h"
 
 namespace shadowlab {
 
 enum class Falloff { Linear, Bernstein };
-
-// s_r from s_0 (eq. 5 generalised to the edge weight e), for L_b < L_r <= L_0.
-double refinedWeight(double s0, double edgeWeight, double Lb, double Lr, double L0);
-// The weight after the fall-off: s itself, or 3 s^2 - 2 s^3.
-double fallOff(double s, Falloff falloff);
 
 struct IlluminanceSettings {
     LightPlane light;
@@ -49,10 +44,12 @@ struct IlluminanceSettings {
     double referenceDistance = 0.0; // L_0
     float edgeWeight = 0.5f;
     Falloff falloff = Falloff::Linear;
-    BiasSettings bias;              // for the hard shadow maps
+    raster::SimdLevel simd = raster::SimdLevel::Scalar;
 };
 
-// One layer's maps; inner is null for outer-only methods.
+// One layer's maps; inner is null for outer-only methods. The hard map is drawn with the
+// slope-scaled bias (polygonOffsetFor(BiasSettings{})), so receivers are compared where
+// they are.
 struct LayerMaps {
     const DepthMap& hard;
     const PenumbraMap* inner;
@@ -65,29 +62,14 @@ public:
     // the reference), else 0 (V = 0 there).
     IlluminanceBuffer(const GBuffer& gbuffer, const std::vector<uint8_t>& lit);
 
-    // I = min(I, local) at every pixel that faces the light. With moreLayersFollow, the
-    // receivers' places are kept for the layers after this one.
-    void combineLayer(const LayerMaps& maps, const IlluminanceSettings& settings, bool moreLayersFollow);
+    // I = min(I, local) at every pixel, through the kernels of illuminance_kernel.h.
+    void combineLayer(const LayerMaps& maps, const IlluminanceSettings& settings);
 
     const std::vector<float>& values() const { return values_; }
 
 private:
-    // Where a pixel's receiver falls in the frame's maps and what its tests compare. Every
-    // layer's maps share one view and resolution (fin_shadows.cpp), so with several layers
-    // this is found once, at the first, and each later layer only reads its own maps'
-    // values; a single layer finds it per pixel and keeps nothing.
-    struct PlacedReceiver {
-        int x = 0, y = 0;              // its texel
-        double depthAtCentre = 0.0;    // the biased receiver depth at the texel's centre
-        double tolerance = 0.0;        // added to the stored depth (receiver-plane bias)
-        double lightDistance = 0.0;    // L_r
-    };
-    PlacedReceiver place(size_t pixel, const DepthMap& hard, const IlluminanceSettings& settings) const;
-    double localIlluminance(const PlacedReceiver& receiver, const LayerMaps& maps, const IlluminanceSettings& settings) const;
-
     const GBuffer& gbuffer_;
     std::vector<float> values_;
-    std::vector<PlacedReceiver> placed_;   // per pixel, once a layer with more to follow is combined
 };
 
 }  // namespace shadowlab
