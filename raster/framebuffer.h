@@ -109,6 +109,8 @@ public:
     // The depth buffer itself, block-linear (index()), resolved and moved out without a
     // copy; the framebuffer has no depth afterwards.
     BufferStorage<float> takeDepth() { return std::move(depth_.resolved()); }
+    // A colour plane likewise (0 = R); the framebuffer has no such plane afterwards.
+    BufferStorage<float> takeColor(int channel) { return std::move(color_[channel].resolved()); }
     std::vector<uint8_t> stencilImage() const;
     std::vector<float> colorImage(int channel) const;
     std::vector<uint32_t> primitiveIdImage() const;

@@ -49,11 +49,7 @@ PenumbraMap renderPenumbraMap(const FinPrimitives& fins, std::span<const glm::uv
     raster::Rasterizer rasterizer(simd);
     rasterizer.draw(framebuffer, finDepthState(), call);
     rasterizer.draw(framebuffer, finWeightState(kind), call);
-    PenumbraMap map;
-    map.size = size;
-    map.depth = framebuffer.depthImage();
-    map.weight = framebuffer.colorImage(0);
-    return map;
+    return {size, framebuffer.tilesX(), framebuffer.takeDepth(), framebuffer.takeColor(0)};
 }
 
 double lightDistanceOfDepth(const LightView& view, double windowDepth) {

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/framebuffer.h"
 #include "raster/tile_kernels.h"
 #include "scenes/scene.h"
 #include "shadows/depth_map.h"
@@ -27,12 +28,15 @@ namespace shadowlab {
 
 enum class FinKind { Inner, Outer };
 
+// Both planes block-linear, as the rasterizer drew them (raster::blockLinearIndex with
+// tilesX), read in place.
 struct PenumbraMap {
-    int size = 0;
-    std::vector<float> depth;    // window depth of the nearest fin, 1 where no fin covers
-    std::vector<float> weight;   // min (inner) or max (outer) of s_0; meaningless where depth = 1
+    int size = 0, tilesX = 0;
+    raster::BufferStorage<float> depth;    // window depth of the nearest fin, 1 where no fin covers
+    raster::BufferStorage<float> weight;   // min (inner) or max (outer) of s_0; meaningless where depth = 1
 
-    bool covered(size_t texel) const { return depth[texel] < 1.0f; }
+    size_t index(int x, int y) const { return raster::blockLinearIndex(x, y, tilesX); }
+    bool covered(int x, int y) const { return depth[index(x, y)] < 1.0f; }
 };
 
 // The fin triangles `triangles` (indices into fins.positions) drawn into a size x size map.

@@ -31,11 +31,15 @@ FinDebug::FinDebug(std::filesystem::path directory, const std::string& technique
     : debug_(std::move(directory), technique), view_(view) {}
 
 void FinDebug::writePenumbraMap(const std::string& prefix, const PenumbraMap& map, float edgeWeight) const {
-    std::vector<float> weight(map.weight.size(), 0.0f), distance(map.depth.size(), 0.0f);
-    for (size_t t = 0; t < weight.size(); ++t) {
-        if (!map.covered(t)) continue;
-        weight[t] = map.weight[t];
-        distance[t] = float(lightDistanceOfDepth(view_, map.depth[t]));
+    const size_t texels = size_t(map.size) * size_t(map.size);
+    std::vector<float> weight(texels, 0.0f), distance(texels, 0.0f);
+    for (int y = 0; y < map.size; ++y) {
+        for (int x = 0; x < map.size; ++x) {
+            if (!map.covered(x, y)) continue;
+            const size_t t = size_t(y) * size_t(map.size) + size_t(x);
+            weight[t] = map.weight[map.index(x, y)];
+            distance[t] = float(lightDistanceOfDepth(view_, map.depth[map.index(x, y)]));
+        }
     }
     debug_.write(prefix + "weight", map.size, map.size, weight, 0.0f, edgeWeight);
     debug_.write(prefix + "depth", map.size, map.size, distance, float(view_.zNear), float(view_.zFar));

@@ -1,6 +1,7 @@
 #include "shadows/fins/illuminance_buffer.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include <glm/gtc/type_ptr.hpp>
 #include <tbb/blocked_range.h>
@@ -40,16 +41,22 @@ struct ChunkColumns {
     }
 };
 
-// The maps at each placed texel. Every map of a frame shares one view and resolution
-// (fin_shadows.cpp), so one texel serves them all.
+// The maps at each placed texel (inside the map: place clamps). Every map of a frame shares
+// one view and resolution (fin_shadows.cpp), and all are block-linear, so one storage index
+// serves them all.
 void readTexels(const LayerMaps& maps, uint32_t count, ChunkColumns& c) {
     for (uint32_t k = 0; k < count; ++k) {
-        const int x = int(c.x[k]), y = int(c.y[k]);
-        const size_t texel = size_t(y) * size_t(maps.hard.size) + size_t(x);
-        c.hard[k] = maps.hard.at(x, y);
+        const size_t texel = raster::blockLinearIndex(int(c.x[k]), int(c.y[k]), maps.hard.tilesX);
+        c.hard[k] = maps.hard.depth[texel];
         if (maps.inner) c.innerDepth[k] = maps.inner->depth[texel], c.innerWeight[k] = maps.inner->weight[texel];
         c.outerDepth[k] = maps.outer.depth[texel], c.outerWeight[k] = maps.outer.weight[texel];
     }
+}
+
+void requireOneLayout(const LayerMaps& maps) {
+    const auto same = [&](const PenumbraMap& m) { return m.size == maps.hard.size && m.tilesX == maps.hard.tilesX; };
+    if (!same(maps.outer) || (maps.inner && !same(*maps.inner)))
+        throw std::logic_error("illuminance buffer: a layer's maps differ in size");
 }
 
 }  // namespace
@@ -58,6 +65,7 @@ IlluminanceBuffer::IlluminanceBuffer(const GBuffer& gbuffer, const std::vector<u
     : gbuffer_(gbuffer), values_(lit.begin(), lit.end()) {}
 
 void IlluminanceBuffer::combineLayer(const LayerMaps& maps, const IlluminanceSettings& s) {
+    requireOneLayout(maps);
     const fins::IlluminanceKernels vector = illuminanceKernels(s.simd), scalar = fins::illuminanceKernelsScalar();
     const fins::PlaceConstants place = placeConstants(maps.hard, s.light);
     const fins::IlluminateConstants illuminate{s.view.clipFromView[2][2], s.view.clipFromView[3][2], s.referenceDistance,
