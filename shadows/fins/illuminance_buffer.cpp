@@ -43,9 +43,14 @@ struct ChunkColumns {
 
 // The maps at each placed texel (inside the map: place clamps). Every map of a frame shares
 // one view and resolution (fin_shadows.cpp), and all are block-linear, so one storage index
-// serves them all.
-void readTexels(const LayerMaps& maps, uint32_t count, ChunkColumns& c) {
+// serves them all. A pixel whose I is 0 already stays 0 (min(0, local) = 0 for any local in
+// [0, 1], and a NaN local keeps I), so its texels are not read: it is given an empty one.
+void readTexels(const LayerMaps& maps, const float* values, uint32_t count, ChunkColumns& c) {
     for (uint32_t k = 0; k < count; ++k) {
+        if (values[k] == 0.0f) {
+            c.hard[k] = c.innerDepth[k] = c.outerDepth[k] = 1.0, c.innerWeight[k] = c.outerWeight[k] = 0.0;
+            continue;
+        }
         const size_t texel = raster::blockLinearIndex(int(c.x[k]), int(c.y[k]), maps.hard.tilesX);
         c.hard[k] = maps.hard.depth[texel];
         if (maps.inner) c.innerDepth[k] = maps.inner->depth[texel], c.innerWeight[k] = maps.inner->weight[texel];
@@ -80,7 +85,7 @@ void IlluminanceBuffer::combineLayer(const LayerMaps& maps, const IlluminanceSet
             const uint32_t body = count / uint32_t(vector.width) * uint32_t(vector.width);
             vector.place(place, positions + 3 * first, body, c.placed(0));
             scalar.place(place, positions + 3 * (first + body), count - body, c.placed(body));
-            readTexels(maps, count, c);
+            readTexels(maps, &values_[first], count, c);
             vector.illuminate(illuminate, c.placed(0), c.texels(0, inner), body, &values_[first]);
             scalar.illuminate(illuminate, c.placed(body), c.texels(body, inner), count - body, &values_[first + body]);
         }
