@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace shadowlab::portable {
@@ -51,6 +52,9 @@ struct InverseFactorials {
     }
 };
 inline constexpr InverseFactorials kInverseFactorial{};
+
+// 2^e for a normal exponent, -1022 <= e <= 1023: its biased exponent in the bits.
+inline double powerOfTwo(int e) { return __builtin_bit_cast(double, uint64_t(e + 1023) << 52); }
 
 // sin and cos of r, |r| <= pi/4: Taylor to r^21 and r^22 (truncation below 1e-22).
 inline double sinReduced(double r) {
@@ -109,9 +113,11 @@ inline double exp(double x) {
     const double r = (x - k * detail::kLn2High) - k * detail::kLn2Low;
     double sum = detail::kInverseFactorial.value[16];
     for (int n = 15; n >= 0; --n) sum = sum * r + detail::kInverseFactorial.value[n];
-    // Two steps of 2^(k/2): 2^k alone may not be a double near the ends of the range.
+    // Two steps of 2^(k/2): 2^k alone may not be a double near the ends of the range. Each
+    // factor is a normal power of two (|k / 2| <= 538), so the first product is exact and
+    // the second rounds once, as ldexp does, without ldexp's library call.
     const int half = int(k) / 2;
-    return std::ldexp(std::ldexp(sum, half), int(k) - half);
+    return (sum * detail::powerOfTwo(half)) * detail::powerOfTwo(int(k) - half);
 }
 
 // ln x: x = m 2^e with m in [sqrt(1/2), sqrt(2)), ln m = 2 atanh(s) with s = (m-1)/(m+1),
