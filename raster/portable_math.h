@@ -20,38 +20,11 @@
 #include <cstdint>
 #include <limits>
 
+#include "raster/portable_constants.h"
+
 namespace shadowlab::portable {
 
 namespace detail {
-
-// pi/2 = kHalfPiHigh + kHalfPiLow, the high part with 33 significant bits so that
-// k * kHalfPiHigh is exact for |k| < 2^20; ln 2 likewise with 32 bits.
-inline constexpr double kHalfPiHigh = 0x1.921fb544p+0;
-inline constexpr double kHalfPiLow = 0x1.0b4611a626331p-34;
-inline constexpr double kTwoOverPi = 0.6366197723675814;
-inline constexpr double kLn2High = 0x1.62e42feep-1;
-inline constexpr double kLn2Low = 0x1.a39ef35793c76p-33;
-inline constexpr double kLn2 = 0.6931471805599453;
-inline constexpr double kInvLn2 = 1.4426950408889634;
-inline constexpr double kPi = 3.141592653589793;
-inline constexpr double kHalfPi = 1.5707963267948966;
-inline constexpr double kSixthPi = 0.5235987755982989;
-inline constexpr double kSqrt3 = 1.7320508075688772;
-inline constexpr double kTanTwelfthPi = 0.2679491924311227;   // 2 - sqrt(3)
-
-// 1/n! for n = 0..22, computed by the compiler in IEEE double (n! is exact up to 18!), so
-// the same constants on every machine.
-struct InverseFactorials {
-    double value[23];
-    constexpr InverseFactorials() : value() {
-        double factorial = 1.0;
-        for (int n = 0; n < 23; ++n) {
-            if (n > 0) factorial *= n;
-            value[n] = 1.0 / factorial;
-        }
-    }
-};
-inline constexpr InverseFactorials kInverseFactorial{};
 
 // 2^e for a normal exponent, -1022 <= e <= 1023: its biased exponent in the bits.
 inline double powerOfTwo(int e) { return __builtin_bit_cast(double, uint64_t(e + 1023) << 52); }
@@ -107,8 +80,8 @@ inline double tan(double x) { return sin(x) / cos(x); }
 // e^x: x = k ln 2 + r, |r| <= ln 2 / 2, Taylor to r^16, scaled by 2^k exactly.
 inline double exp(double x) {
     if (std::isnan(x)) return x;
-    if (x > 709.782712893384) return std::numeric_limits<double>::infinity();
-    if (x < -745.1332191019412) return 0.0;
+    if (x > detail::kExpOverflow) return std::numeric_limits<double>::infinity();
+    if (x < detail::kExpUnderflow) return 0.0;
     const double k = std::floor(x * detail::kInvLn2 + 0.5);
     const double r = (x - k * detail::kLn2High) - k * detail::kLn2Low;
     double sum = detail::kInverseFactorial.value[16];

@@ -131,6 +131,10 @@ inline double reduceMax(F64 a) {
 inline F64 sqrt(F64 a) { return {_mm256_sqrt_pd(a.v)}; }
 inline F64 roundToFloat(F64 a) { return {_mm256_cvtps_pd(_mm256_cvtpd_ps(a.v))}; }
 inline F64 floor(F64 a) { return {_mm256_round_pd(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)}; }
+inline F64 powerOfTwo(F64 e) {
+    const __m256d biased = _mm256_add_pd(e.v, _mm256_set1_pd(0x1.00000000003ffp52));
+    return {_mm256_castsi256_pd(_mm256_slli_epi64(_mm256_castpd_si256(biased), 52))};
+}
 inline F64 binade(F64 a) { return {_mm256_and_pd(a.v, _mm256_castsi256_pd(_mm256_set1_epi64x(0x7ff0000000000000ll)))}; }
 inline void store(double* p, F64 a) { _mm256_storeu_pd(p, a.v); }
 inline void storeNarrowed(float* p, F64 a) { _mm_storeu_ps(p, _mm256_cvtpd_ps(a.v)); }

@@ -125,6 +125,10 @@ inline double reduceMax(F64 a) { return _mm512_reduce_max_pd(a.v); }
 inline F64 sqrt(F64 a) { return {_mm512_sqrt_pd(a.v)}; }
 inline F64 roundToFloat(F64 a) { return {_mm512_cvtps_pd(_mm512_cvtpd_ps(a.v))}; }
 inline F64 floor(F64 a) { return {_mm512_roundscale_pd(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)}; }
+inline F64 powerOfTwo(F64 e) {
+    const __m512d biased = _mm512_add_pd(e.v, _mm512_set1_pd(0x1.00000000003ffp52));
+    return {_mm512_castsi512_pd(_mm512_slli_epi64(_mm512_castpd_si512(biased), 52))};
+}
 inline F64 binade(F64 a) {
     return {_mm512_castsi512_pd(_mm512_and_si512(_mm512_castpd_si512(a.v), _mm512_set1_epi64(0x7ff0000000000000ll)))};
 }

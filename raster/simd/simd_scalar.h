@@ -100,6 +100,11 @@ inline F64 sqrt(F64 a) { return {__builtin_sqrt(a.v)}; }
 // Rounded to the nearest float and widened back: the value a float variable would hold.
 inline F64 roundToFloat(F64 a) { return {double(float(a.v))}; }
 inline F64 floor(F64 a) { return {__builtin_floor(a.v)}; }
+// 2^e for integral lanes -1022 <= e <= 1023: e + (2^52 + 1023) is exact and holds e + 1023
+// in its low mantissa bits, which a shift moves into the exponent field.
+inline F64 powerOfTwo(F64 e) {
+    return {__builtin_bit_cast(double, __builtin_bit_cast(uint64_t, e.v + 0x1.00000000003ffp52) << 52)};
+}
 // 2^e for a = m 2^e, 1 <= |m| < 2 (a normal, positive): a with its mantissa bits cleared.
 inline F64 binade(F64 a) {
     return {__builtin_bit_cast(double, __builtin_bit_cast(uint64_t, a.v) & 0x7ff0000000000000ull)};

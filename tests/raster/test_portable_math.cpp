@@ -11,10 +11,15 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <vector>
 
+#include "raster/portable_exp.h"
 #include "raster/portable_math.h"
+#include "tests/raster/raster_test_util.h"
 
 namespace portable = shadowlab::portable;
+namespace raster = shadowlab::raster;
+namespace test = shadowlab::test;
 
 namespace {
 
@@ -114,6 +119,29 @@ TEST_CASE("portable exp scales by powers of two exactly as ldexp does, subnormal
         REQUIRE(std::memcmp(&expected, &got, sizeof expected) == 0);
     }
     CHECK(subnormal > 1000);
+}
+
+// The array form, at every SIMD level, against portable::exp value by value: the whole
+// range, its ends, subnormal results, overflow, underflow, NaN and infinities, with a tail
+// shorter than any vector.
+TEST_CASE("portable expRun gives portable exp's bits at every SIMD level") {
+    std::vector<double> x;
+    for (int i = 0; i <= 40000; ++i) x.push_back(-800.0 + i * (1600.0 / 40000.0));
+    for (double v : {0.0, -0.0, 709.782712893384, 709.7827128933841, -745.1332191019412, -745.1332191019413, 1e-300,
+                     -1e-300, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                     std::numeric_limits<double>::quiet_NaN(), 0.5 * 0.6931471805599453, -0.5 * 0.6931471805599453})
+        x.push_back(v);
+    for (raster::SimdLevel level : test::supportedLevels()) {
+        INFO(raster::simdLevelName(level));
+        std::vector<double> out(x.size(), -1.0);
+        portable::expRun(level, x.data(), out.data(), x.size());
+        for (size_t k = 0; k < x.size(); ++k) {
+            const double expected = portable::exp(x[k]);
+            INFO("x = " << x[k]);
+            REQUIRE(std::memcmp(&expected, &out[k], sizeof expected) == 0);
+        }
+        portable::expRun(level, x.data(), x.data(), 0);   // nothing to do, nothing touched
+    }
 }
 
 // The bits themselves, hashed over every function and a spread of arguments. Recorded on
