@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/portable_exp.h"
 #include "raster/portable_math.h"
 #include "shadows/filtered/moments.h"
 
@@ -19,10 +20,18 @@ std::vector<ParamSpec> exponentialParams() {
 
 void readExponential(const TechniqueParams& p, MomentSettings& s) { s.exponent = p.real("exponent"); }
 
-void exponentialMoments(const MomentSettings& s, double z, double* out) { out[0] = portable::exp(s.exponent * z); }
+// e^{c z}, the exponentials a vector at a time.
+void exponentialMoments(const MomentSettings& s, const double* z, size_t count, double* out, raster::SimdLevel simd) {
+    for (size_t k = 0; k < count; ++k) out[k] = s.exponent * z[k];
+    portable::expRun(simd, out, out, count);
+}
 
-double exponentialVisibility(const MomentSettings& s, const double* m, double t) {
-    return std::clamp(m[0] * portable::exp(-s.exponent * t), 0.0, 1.0);
+// V = E[e^{c z}] e^{-c t}, clamped to 1.
+void exponentialVisibility(const MomentSettings& s, const double* m, const double* t, size_t count, double* out,
+                           raster::SimdLevel simd) {
+    for (size_t k = 0; k < count; ++k) out[k] = -s.exponent * t[k];
+    portable::expRun(simd, out, out, count);
+    for (size_t k = 0; k < count; ++k) out[k] = std::clamp(m[k] * out[k], 0.0, 1.0);
 }
 
 double exponentialRange(const MomentSettings& s) { return portable::exp(s.exponent); }   // V = E e^{-c t}, t in [0, 1]

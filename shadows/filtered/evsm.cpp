@@ -5,7 +5,9 @@
 // the smaller bound wins.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "raster/portable_exp.h"
 #include "raster/portable_math.h"
 #include "shadows/filtered/chebyshev.h"
 #include "shadows/filtered/moments.h"
@@ -25,8 +27,18 @@ void readExponentialVariance(const TechniqueParams& p, MomentSettings& s) {
     s.negativeExponent = p.real("negative-exponent");
 }
 
-double positiveWarp(const MomentSettings& s, double z) { return portable::exp(s.positiveExponent * (2.0 * z - 1.0)); }
-double negativeWarp(const MomentSettings& s, double z) { return -portable::exp(-s.negativeExponent * (2.0 * z - 1.0)); }
+// Both warps of count depths, e^{c+ w} into positive and -e^{-c- w} into negative, the
+// exponentials a vector at a time.
+void warps(const MomentSettings& s, const double* z, size_t count, double* positive, double* negative,
+           raster::SimdLevel simd) {
+    for (size_t k = 0; k < count; ++k) {
+        const double w = 2.0 * z[k] - 1.0;
+        positive[k] = s.positiveExponent * w, negative[k] = -s.negativeExponent * w;
+    }
+    portable::expRun(simd, positive, positive, count);
+    portable::expRun(simd, negative, negative, count);
+    for (size_t k = 0; k < count; ++k) negative[k] = -negative[k];
+}
 
 // The minimum variance carried through a warp: var_w = (dw/dz)^2 var_z at the receiver.
 double warpedMinVariance(double exponentTimesTwo, double warped) {
@@ -34,16 +46,26 @@ double warpedMinVariance(double exponentTimesTwo, double warped) {
     return slope * slope * kMinVariance;
 }
 
-void exponentialVarianceMoments(const MomentSettings& s, double z, double* out) {
-    const double pos = positiveWarp(s, z), neg = negativeWarp(s, z);
-    out[0] = pos, out[1] = pos * pos, out[2] = neg, out[3] = neg * neg;
+void exponentialVarianceMoments(const MomentSettings& s, const double* z, size_t count, double* out,
+                                raster::SimdLevel simd) {
+    std::vector<double> pos(count), neg(count);
+    warps(s, z, count, pos.data(), neg.data(), simd);
+    for (size_t k = 0; k < count; ++k) {
+        double* m = out + 4 * k;
+        m[0] = pos[k], m[1] = pos[k] * pos[k], m[2] = neg[k], m[3] = neg[k] * neg[k];
+    }
 }
 
-double exponentialVarianceVisibility(const MomentSettings& s, const double* m, double t) {
-    const double pos = positiveWarp(s, t), neg = negativeWarp(s, t);
-    const double positive = chebyshevUpperBound(m[0], m[1], pos, warpedMinVariance(2.0 * s.positiveExponent, pos));
-    const double negative = chebyshevUpperBound(m[2], m[3], neg, warpedMinVariance(2.0 * s.negativeExponent, neg));
-    return std::min(positive, negative);
+void exponentialVarianceVisibility(const MomentSettings& s, const double* m, const double* t, size_t count, double* out,
+                                   raster::SimdLevel simd) {
+    std::vector<double> pos(count), neg(count);
+    warps(s, t, count, pos.data(), neg.data(), simd);
+    for (size_t k = 0; k < count; ++k) {
+        const double* mk = m + 4 * k;
+        const double positive = chebyshevUpperBound(mk[0], mk[1], pos[k], warpedMinVariance(2.0 * s.positiveExponent, pos[k]));
+        const double negative = chebyshevUpperBound(mk[2], mk[3], neg[k], warpedMinVariance(2.0 * s.negativeExponent, neg[k]));
+        out[k] = std::min(positive, negative);
+    }
 }
 
 // The second moments over w in [-1, 1].

@@ -81,13 +81,22 @@ struct PixelBuffers {
     std::vector<float> visibility, widthTexels;
 };
 
-// Step 4 for every pixel: the filtered moments at the receiver, then V.
+// A row's receivers on their way to V: their pixels, filtered moments and depths.
+struct ReceiverRow {
+    std::vector<size_t> pixels;
+    std::vector<double> moments, depths, visibility;
+};
+
+// Step 4 for every pixel: the filtered moments at the receiver, then V, a row's receivers
+// in one run of the kind's visibility (whose exponentials go a vector at a time).
 PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const FilteredSettings& s,
                                 const MomentMap& blurred, const SummedAreaTable& table) {
     const GBuffer& g = in.gbuffer;
     const std::vector<glm::dvec2> searchDisk = makePcfKernel({FilterKind::Poisson, 3, s.search.taps, 1.0}).disk;
+    const int channels = momentCount(s.moments.kind);
     PixelBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f)};
-    forEachReceiverFacingLight(g, soft, [&](size_t k, const glm::dvec3& P, const glm::dvec3& N, const SoftReceiver& receiver) {
+    const auto perPixel = [&](ReceiverRow& row, size_t k, const glm::dvec3& P, const glm::dvec3& N,
+                              const SoftReceiver& receiver) {
         glm::dvec2 width(s.widthTexels);
         if (s.pcssWidth) {
             const PenumbraEstimate e =
@@ -104,9 +113,18 @@ PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& sof
         } else {
             sampleBilinear(blurred, receiver.texel, m);
         }
-        out.visibility[k] = float(momentVisibility(s.moments, m, soft.normalised(receiver.distance)));
+        row.pixels.push_back(k);
+        row.moments.insert(row.moments.end(), m, m + channels);
+        row.depths.push_back(soft.normalised(receiver.distance));
         out.widthTexels[k] = float(0.5 * (width.x + width.y));
-    });
+    };
+    const auto endOfRow = [&](ReceiverRow& row) {
+        row.visibility.resize(row.pixels.size());
+        momentVisibilityRun(s.moments, row.moments.data(), row.depths.data(), row.pixels.size(), row.visibility.data(),
+                            in.simd);
+        for (size_t r = 0; r < row.pixels.size(); ++r) out.visibility[row.pixels[r]] = float(row.visibility[r]);
+    };
+    forEachReceiverFacingLight<ReceiverRow>(g, soft, perPixel, endOfRow);
     return out;
 }
 
@@ -145,7 +163,7 @@ ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
     const SoftShadowMap soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),
                                                    kFitMarginTexels + 0.5 * s.widthTexels, s.pcssWidth);
     timer.lap("map");
-    const MomentMap moments = momentMap(soft, s.moments);
+    const MomentMap moments = momentMap(soft, s.moments, in.simd);
     timer.lap("moments");
     MomentMap blurred;
     SummedAreaTable table;

@@ -13,6 +13,7 @@ namespace {
 
 constexpr double kUnitRoundoff = 0x1p-53;   // u of double
 constexpr size_t kColumnBand = 64;          // columns summed together down the rows
+constexpr size_t kMomentRun = 1024;         // texels whose moments are taken together
 
 // Neumaier's compensated running sum: the rounding error of every addition is kept in
 // `compensation` (TwoSum, exact in IEEE arithmetic without contraction) and added back.
@@ -53,11 +54,17 @@ const double* MomentMap::at(int x, int y) const {
     return &values[(size_t(y) * size_t(size) + size_t(x)) * size_t(channels)];
 }
 
-MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings) {
+MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings, raster::SimdLevel simd) {
     MomentMap m{soft.map.size, momentCount(settings.kind), {}};
     m.values.resize(soft.linear.size() * size_t(m.channels));
-    tbb::parallel_for(size_t(0), soft.linear.size(),
-                      [&](size_t k) { momentsOf(settings, soft.linear[k], &m.values[k * size_t(m.channels)]); });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, soft.linear.size(), kMomentRun), [&](const tbb::blocked_range<size_t>& r) {
+        double z[kMomentRun];
+        for (size_t first = r.begin(); first < r.end(); first += kMomentRun) {
+            const size_t count = std::min(kMomentRun, r.end() - first);
+            std::copy_n(&soft.linear[first], count, z);
+            momentsOfRun(settings, z, count, &m.values[first * size_t(m.channels)], simd);
+        }
+    });
     return m;
 }
 

@@ -52,8 +52,9 @@ struct SummedAreaTable {
     std::vector<double> sums;       // (size + 1)^2 entries of `channels`: S(X, Y) at (Y (size + 1) + X)
 };
 
-// The kind's moments of every texel's normalised linear depth.
-MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings);
+// The kind's moments of every texel's normalised linear depth (the same bits at every SIMD
+// level and thread count).
+MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings, raster::SimdLevel simd);
 
 // Weights of an odd `width` of taps: equal (box) or Gaussian with sigma = width / 6, so
 // the taps span +-3 sigma; normalised to sum 1.

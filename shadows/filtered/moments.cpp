@@ -32,9 +32,22 @@ MomentSettings readMomentSettings(MomentKind kind, const TechniqueParams& p) {
     return s;
 }
 
-void momentsOf(const MomentSettings& s, double z, double* out) { model(s.kind).moments(s, z, out); }
+void momentsOf(const MomentSettings& s, double z, double* out) { momentsOfRun(s, &z, 1, out, raster::SimdLevel::Scalar); }
 
-double momentVisibility(const MomentSettings& s, const double* m, double t) { return model(s.kind).visibility(s, m, t); }
+void momentsOfRun(const MomentSettings& s, const double* z, size_t count, double* out, raster::SimdLevel simd) {
+    model(s.kind).moments(s, z, count, out, simd);
+}
+
+double momentVisibility(const MomentSettings& s, const double* m, double t) {
+    double v;
+    momentVisibilityRun(s, m, &t, 1, &v, raster::SimdLevel::Scalar);
+    return v;
+}
+
+void momentVisibilityRun(const MomentSettings& s, const double* m, const double* t, size_t count, double* out,
+                         raster::SimdLevel simd) {
+    model(s.kind).visibility(s, m, t, count, out, simd);
+}
 
 double momentDynamicRange(const MomentSettings& s) { return model(s.kind).dynamicRange(s); }
 

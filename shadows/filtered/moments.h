@@ -16,9 +16,11 @@
 // (moment_filter.h).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
+#include "raster/tile_kernels.h"
 #include "shadows/technique_params.h"
 
 namespace shadowlab {
@@ -45,24 +47,32 @@ MomentSettings readMomentSettings(MomentKind kind, const TechniqueParams& params
 
 // The moments of depth z, written to out[0 .. momentCount - 1].
 void momentsOf(const MomentSettings& s, double z, double* out);
+// The same for count depths, out holding momentCount values per depth; the exponential
+// kinds take their exponentials a vector at a time (raster/portable_exp.h), with the bits
+// of momentsOf at every SIMD level.
+void momentsOfRun(const MomentSettings& s, const double* z, size_t count, double* out, raster::SimdLevel simd);
 
 // The lit fraction in [0, 1] of a receiver at depth t under the filtered moments.
 double momentVisibility(const MomentSettings& s, const double* filtered, double t);
+// The same for count receivers, filtered holding momentCount values per receiver.
+void momentVisibilityRun(const MomentSettings& s, const double* filtered, const double* t, size_t count, double* out,
+                         raster::SimdLevel simd);
 
 // The largest |moment| over z in [0, 1] divided by the smallest value a visibility
 // resolves against it (the dynamic range the summed-area table must hold, moment_filter.h).
 double momentDynamicRange(const MomentSettings& s);
 
 // One kind of moments, as the file named after its technique defines it; the functions
-// above dispatch to it.
+// above dispatch to it, once per run of texels or receivers (never per value in a pass).
 struct MomentModel {
     const char* technique;
     const char* description;
     int count;   // moments per texel, at most kMaxMoments
     std::vector<ParamSpec> (*params)();
     void (*read)(const TechniqueParams& params, MomentSettings& into);
-    void (*moments)(const MomentSettings& s, double z, double* out);
-    double (*visibility)(const MomentSettings& s, const double* filtered, double t);
+    void (*moments)(const MomentSettings& s, const double* z, size_t count, double* out, raster::SimdLevel simd);
+    void (*visibility)(const MomentSettings& s, const double* filtered, const double* t, size_t count, double* out,
+                       raster::SimdLevel simd);
     double (*dynamicRange)(const MomentSettings& s);
 };
 

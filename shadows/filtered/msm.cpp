@@ -19,8 +19,11 @@ std::vector<ParamSpec> hamburgerParams() { return {}; }
 
 void readHamburger(const TechniqueParams&, MomentSettings&) {}
 
-void hamburgerMoments(const MomentSettings&, double z, double* out) {
-    out[0] = z, out[1] = z * z, out[2] = z * z * z, out[3] = z * z * z * z;
+void hamburgerMoments(const MomentSettings&, const double* z, size_t count, double* out, raster::SimdLevel) {
+    for (size_t k = 0; k < count; ++k) {
+        double* m = out + 4 * k;
+        m[0] = z[k], m[1] = z[k] * z[k], m[2] = z[k] * z[k] * z[k], m[3] = z[k] * z[k] * z[k] * z[k];
+    }
 }
 
 // Peters and Klein 2015, Algorithm 3 ("Hamburger 4MSM"), in double. Returns the shadow
@@ -46,8 +49,9 @@ double hamburgerShadowIntensity(const double* moments, double t) {
     return 1.0 - (z2 * z3 - b[0] * (z2 + z3) + b[1]) / ((t - z2) * (t - z3));
 }
 
-double hamburgerVisibility(const MomentSettings&, const double* m, double t) {
-    return 1.0 - std::clamp(hamburgerShadowIntensity(m, t), 0.0, 1.0);
+void hamburgerVisibility(const MomentSettings&, const double* m, const double* t, size_t count, double* out,
+                         raster::SimdLevel) {
+    for (size_t k = 0; k < count; ++k) out[k] = 1.0 - std::clamp(hamburgerShadowIntensity(m + 4 * k, t[k]), 0.0, 1.0);
 }
 
 double hamburgerRange(const MomentSettings&) { return 1.0; }   // moments in [0, 1], compared absolutely

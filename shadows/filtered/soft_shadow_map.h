@@ -24,11 +24,11 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <tbb/parallel_for.h>
 
 #include "raster/tile_kernels.h"
 #include "shading/gbuffer.h"
 #include "shadows/depth_map.h"
-#include "shadows/receiver_pass.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -67,15 +67,23 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
 
 SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N);
 
-// Calls perPixel(k, P, N, receiver) for every camera pixel k whose surface faces the light's
-// centre (the others keep V = 0), rows in parallel. Each call writes only pixel k's
-// outputs, so the results are the same for any thread count.
-template <class PerPixel>
-void forEachReceiverFacingLight(const GBuffer& g, const SoftShadowMap& soft, PerPixel perPixel) {
-    forEachSurfacePixel(g, [&](int, int, size_t k) {
-        const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-        const SoftReceiver receiver = softReceiver(soft, P, N);
-        if (receiver.facesLight) perPixel(k, P, N, receiver);
+// Calls perPixel(row, k, P, N, receiver) for every camera pixel k whose surface faces the
+// light's centre (the others keep V = 0), rows in parallel, then endOfRow(row): the pixels of
+// a row share one RowState, made afresh for the row, so a pass can finish them together (a
+// run of the moments' visibility). Each call writes only its own pixels' outputs, so the
+// results are the same for any thread count.
+template <class RowState, class PerPixel, class EndOfRow>
+void forEachReceiverFacingLight(const GBuffer& g, const SoftShadowMap& soft, PerPixel perPixel, EndOfRow endOfRow) {
+    tbb::parallel_for(0, g.height, [&](int j) {
+        RowState row;
+        for (int i = 0; i < g.width; ++i) {
+            const size_t k = g.index(i, j);
+            if (!g.hit[k]) continue;
+            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
+            const SoftReceiver receiver = softReceiver(soft, P, N);
+            if (receiver.facesLight) perPixel(row, k, P, N, receiver);
+        }
+        endOfRow(row);
     });
 }
 

@@ -19,13 +19,18 @@ std::vector<ParamSpec> varianceParams() {
 
 void readVariance(const TechniqueParams& p, MomentSettings& s) { s.bleedingReduction = p.real("bleeding-reduction"); }
 
-void varianceMoments(const MomentSettings&, double z, double* out) { out[0] = z, out[1] = z * z; }
+void varianceMoments(const MomentSettings&, const double* z, size_t count, double* out, raster::SimdLevel) {
+    for (size_t k = 0; k < count; ++k) out[2 * k] = z[k], out[2 * k + 1] = z[k] * z[k];
+}
 
 // Lauritzen's light-bleeding reduction: linstep(amount, 1, p).
 double reduceBleeding(double p, double amount) { return std::clamp((p - amount) / (1.0 - amount), 0.0, 1.0); }
 
-double varianceVisibility(const MomentSettings& s, const double* m, double t) {
-    return reduceBleeding(chebyshevUpperBound(m[0], m[1], t, kMinVariance), s.bleedingReduction);
+void varianceVisibility(const MomentSettings& s, const double* m, const double* t, size_t count, double* out,
+                        raster::SimdLevel) {
+    for (size_t k = 0; k < count; ++k) {
+        out[k] = reduceBleeding(chebyshevUpperBound(m[2 * k], m[2 * k + 1], t[k], kMinVariance), s.bleedingReduction);
+    }
 }
 
 double varianceRange(const MomentSettings&) { return 1.0; }   // moments in [0, 1], compared absolutely
