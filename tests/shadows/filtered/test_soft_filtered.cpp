@@ -10,10 +10,12 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
 #include "raster/thread_count.h"
 #include "shadows/filtered/moment_filter.h"
 #include "shadows/filtered/moments.h"
+#include "tests/raster/raster_test_util.h"
 #include "tests/shadows/soft_test_support.h"
 
 using namespace shadowlab;
@@ -61,6 +63,36 @@ TEST_CASE("vsm: Chebyshev's bound equals the lit fraction for a planar occluder 
     double m[kMaxMoments];
     sampleBilinear(blurred, glm::dvec2(kEdge + 0.5, 20.5), m);   // lit fraction 5/9
     CHECK(momentVisibility(s, m, zReceiver) == doctest::Approx((5.0 / 9.0 - 0.2) / 0.8).epsilon(1e-9));
+}
+
+TEST_CASE("moment kinds: runs of moments and visibility give the one-value bits at every SIMD level") {
+    const size_t n = 1000 + 3;   // a tail shorter than any vector
+    std::vector<double> z(n), t(n);
+    uint64_t state = 99;
+    for (size_t k = 0; k < n; ++k) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        z[k] = double(state >> 11) * 0x1p-53;
+        t[k] = k % 17 == 0 ? z[k] : std::min(1.0, z[k] + double(k % 5) * 0.01);   // equal, behind, far behind
+    }
+    for (MomentKind kind : {MomentKind::Variance, MomentKind::Exponential, MomentKind::ExponentialVariance,
+                            MomentKind::Hamburger4}) {
+        MomentSettings s;
+        s.kind = kind;
+        const size_t c = size_t(momentCount(kind));
+        std::vector<double> one(n * c), filtered(n * c), expected(n);
+        for (size_t k = 0; k < n; ++k) momentsOf(s, z[k], &one[k * c]);
+        // Filtered moments: neighbours' means, so the receivers see spread distributions.
+        for (size_t k = 0; k < n * c; ++k) filtered[k] = 0.5 * (one[k] + one[(k + c) % (n * c)]);
+        for (size_t k = 0; k < n; ++k) expected[k] = momentVisibility(s, &filtered[k * c], t[k]);
+        for (raster::SimdLevel level : supportedLevels()) {
+            INFO(momentKindName(kind) << " at " << raster::simdLevelName(level));
+            std::vector<double> moments(n * c), visibility(n);
+            momentsOfRun(s, z.data(), n, moments.data(), level);
+            momentVisibilityRun(s, filtered.data(), t.data(), n, visibility.data(), level);
+            CHECK(std::memcmp(moments.data(), one.data(), n * c * sizeof(double)) == 0);
+            CHECK(std::memcmp(visibility.data(), expected.data(), n * sizeof(double)) == 0);
+        }
+    }
 }
 
 TEST_CASE("summed-area table: a box equals the direct box filter within the stated bound") {
