@@ -20,6 +20,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "shading/light_sampling.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
@@ -49,7 +52,9 @@ void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const Light& po
     // Slope-scaled bias: the offset is in the map, the receiver stays put.
     const LookupPass pass(std::span(&map, 1), point, BiasSettings{}, makePcfKernel({}), simd);
     lookUpEveryRow(g, pass, {v.data()});
-    for (size_t k = 0; k < lit.size(); ++k) lit[k] = uint16_t(lit[k] + (v[k] > 0.5f ? 1 : 0));
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, lit.size(), 16384), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) lit[k] = uint16_t(lit[k] + (v[k] > 0.5f ? 1 : 0));
+    });
 }
 
 ShadowOutputs runMultiSample(const ShadowInputs& in) {

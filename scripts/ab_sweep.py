@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+"""A/B of two shadowlab builds on one scene: runs `shadowlab sweep` with build A, then build
+B, alternately, ROUNDS times each in one session (the VM's speed drifts over minutes, so
+alternating spreads the drift over both), and prints a markdown table per technique: the
+median over the rounds of each build's median technique ms, B / A, and both builds' RMS
+against the same reference (equal RMS: the same error). Extra arguments go to both sweeps.
+
+usage: scripts/ab_sweep.py A_SHADOWLAB B_SHADOWLAB SCENE TECHNIQUES [--rounds N] [--out DIR]
+                           [sweep arguments ...]
+example: scripts/ab_sweep.py old/build/app/shadowlab build/app/shadowlab sphere-box pcss,fins \\
+             --rounds 2 -- --threads 2 --runs 5 --reference reference-soft"""
+import argparse
+import json
+import pathlib
+import statistics
+import subprocess
+import sys
+
+
+def sweep(binary, scene, techniques, out, extra):
+    out.mkdir(parents=True, exist_ok=True)
+    subprocess.run([binary, "sweep", scene, "--technique", techniques, "--out", str(out), *extra], check=True,
+                   stdout=subprocess.DEVNULL)
+    (result,) = out.glob("*.json")
+    return {(r["technique"], r["settings"], r["threads"]): r for r in json.loads(result.read_text())["rows"]}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("a")
+    parser.add_argument("b")
+    parser.add_argument("scene")
+    parser.add_argument("techniques")
+    parser.add_argument("--rounds", type=int, default=2)
+    parser.add_argument("--out", default="out/ab")
+    parser.add_argument("sweep_args", nargs=argparse.REMAINDER)
+    args = parser.parse_args()
+    extra = [a for a in args.sweep_args if a != "--"]
+    runs = {"a": [], "b": []}
+    for round_ in range(args.rounds):
+        for side in ("a", "b"):
+            out = pathlib.Path(args.out) / f"{side}{round_}"
+            runs[side].append(sweep(getattr(args, side), args.scene, args.techniques, out, extra))
+    print(f"| technique | settings | threads | A ms | B ms | B / A | A RMS | B RMS |")
+    print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |")
+    for key in runs["a"][0]:
+        if key not in runs["b"][0]:
+            continue
+        a = statistics.median(r[key]["median_ms"] for r in runs["a"])
+        b = statistics.median(r[key]["median_ms"] for r in runs["b"])
+        rms = [runs[side][0][key]["errors"]["rms"] for side in ("a", "b")]
+        technique, settings, threads = key
+        print(f"| `{technique}` | {settings} | {threads} | {a:.1f} | {b:.1f} | {b / a:.2f} | {rms[0]:.4f} | {rms[1]:.4f} |")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
