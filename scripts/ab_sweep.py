@@ -6,7 +6,7 @@ median over the rounds of each build's median technique ms, B / A, and both buil
 against the same reference (equal RMS: the same error). Extra arguments go to both sweeps.
 
 usage: scripts/ab_sweep.py A_SHADOWLAB B_SHADOWLAB SCENE TECHNIQUES [--rounds N] [--out DIR]
-                           [sweep arguments ...]
+                           [-- sweep arguments ...]
 example: scripts/ab_sweep.py old/build/app/shadowlab build/app/shadowlab sphere-box pcss,fins \\
              --rounds 2 -- --threads 2 --runs 5 --reference reference-soft"""
 import argparse
@@ -17,12 +17,17 @@ import subprocess
 import sys
 
 
+def settingsName(settings):
+    return " ".join(f"{k}={v}" for k, v in sorted(settings.items())) or "defaults"
+
+
 def sweep(binary, scene, techniques, out, extra):
     out.mkdir(parents=True, exist_ok=True)
     subprocess.run([binary, "sweep", scene, "--technique", techniques, "--out", str(out), *extra], check=True,
                    stdout=subprocess.DEVNULL)
     (result,) = out.glob("*.json")
-    return {(r["technique"], r["settings"], r["threads"]): r for r in json.loads(result.read_text())["rows"]}
+    rows = json.loads(result.read_text())["rows"]
+    return {(r["technique"], settingsName(r["settings"]), r["threads"]): r for r in rows}
 
 
 def main():
@@ -33,15 +38,16 @@ def main():
     parser.add_argument("techniques")
     parser.add_argument("--rounds", type=int, default=2)
     parser.add_argument("--out", default="out/ab")
-    parser.add_argument("sweep_args", nargs=argparse.REMAINDER)
-    args = parser.parse_args()
-    extra = [a for a in args.sweep_args if a != "--"]
+    argv = sys.argv[1:]
+    split = argv.index("--") if "--" in argv else len(argv)
+    args = parser.parse_args(argv[:split])
+    extra = argv[split + 1:]
     runs = {"a": [], "b": []}
     for round_ in range(args.rounds):
         for side in ("a", "b"):
             out = pathlib.Path(args.out) / f"{side}{round_}"
             runs[side].append(sweep(getattr(args, side), args.scene, args.techniques, out, extra))
-    print(f"| technique | settings | threads | A ms | B ms | B / A | A RMS | B RMS |")
+    print("| technique | settings | threads | A ms | B ms | B / A | A RMS | B RMS |")
     print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |")
     for key in runs["a"][0]:
         if key not in runs["b"][0]:
