@@ -68,6 +68,13 @@ struct Placed {
     fins::PlacedColumns columns() { return {column[0].data(), column[1].data(), column[2].data(), column[3].data()}; }
 };
 
+// The receivers P placed by a level's kernel.
+Placed placedBy(raster::SimdLevel level, const Setup& setup, const std::vector<float>& P) {
+    Placed placed(P.size() / 3);
+    kernelsOf(level).place(setup.place(), P.data(), uint32_t(P.size() / 3), placed.columns());
+    return placed;
+}
+
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // The maps' values at the placed texels: hard depths around the receivers' own (some empty,
@@ -109,8 +116,7 @@ TEST_CASE("fins illuminance place kernel: every SIMD level gives the scalar twin
     const Setup setup;
     const size_t n = 2048;
     const std::vector<float> P = receivers(n, rng);
-    Placed twin(n);
-    kernelsOf(raster::SimdLevel::Scalar).place(setup.place(), P.data(), uint32_t(n), twin.columns());
+    const Placed twin = placedBy(raster::SimdLevel::Scalar, setup, P);
     int clampedOrSaturated = 0;
     for (size_t k = 0; k < n; ++k) {
         const glm::dvec3 p(P[3 * k], P[3 * k + 1], P[3 * k + 2]);
@@ -126,8 +132,7 @@ TEST_CASE("fins illuminance place kernel: every SIMD level gives the scalar twin
     CHECK(clampedOrSaturated > 100);   // the border cases were exercised
     for (raster::SimdLevel level : test::supportedLevels()) {
         INFO(raster::simdLevelName(level));
-        Placed got(n);
-        kernelsOf(level).place(setup.place(), P.data(), uint32_t(n), got.columns());
+        const Placed got = placedBy(level, setup, P);
         for (int c = 0; c < 4; ++c) {
             for (size_t k = 0; k < n; ++k) REQUIRE(sameBits(got.column[c][k], twin.column[c][k]));
         }
@@ -139,8 +144,7 @@ TEST_CASE("fins illuminance kernel: every SIMD level gives the scalar twin's bit
     const Setup setup;
     const size_t n = 2048;
     const std::vector<float> P = receivers(n, rng);
-    Placed placed(n);
-    kernelsOf(raster::SimdLevel::Scalar).place(setup.place(), P.data(), uint32_t(n), placed.columns());
+    Placed placed = placedBy(raster::SimdLevel::Scalar, setup, P);
     const Texels texels(placed, rng);
     std::vector<float> before(n);
     for (size_t k = 0; k < n; ++k) before[k] = k % 3 == 0 ? 0.0f : k % 3 == 1 ? 1.0f : 0.6f;
