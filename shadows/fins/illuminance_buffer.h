@@ -22,7 +22,7 @@
 // each pixel's value comes from the layers in front of it, as section 4.3's shading of each
 // triangle with its own layer's buffer does.
 //
-// Pixels are independent; rows run in parallel and no value is reduced across threads.
+// Pixels are independent; chunks of 512 pixels run in parallel and no value is reduced across threads.
 #pragma once
 
 #include <cstdint>

@@ -9,7 +9,8 @@
 //
 // Between them the caller reads the maps at the texels (DepthMap::at), outside the
 // per-ISA code. Every lane does the double operations of the plain expressions in their
-// order (glm's matrix product, refinedWeight, fallOff, lightDistanceOfDepth), so every
+// order (glm's matrix product, eqs. 2 to 5 and the fall-off as finTerm in
+// tests/shadows/fins/test_illuminance_kernel.cpp writes them, lightDistanceOfDepth), so every
 // level gives the same bytes and the scalar build is the twin the others are held to.
 //
 // Plain data only: the per-ISA translation units include this header, and no inline

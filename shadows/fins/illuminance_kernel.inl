@@ -1,6 +1,7 @@
 // The illuminance buffer's kernels (illuminance_kernel.h), written against the SIMD types
 // of raster/simd/ (a namespace alias `simd` chosen by the including file). Each line is the
-// double expression of the plain code it replaces, in the same order.
+// double expression of the plain scalar code (MapReceiver, LightPlane::distance, eqs. 2 to 5),
+// in the same order.
 
 using simd::F64;
 using simd::Mask64;
@@ -46,7 +47,7 @@ inline void placeReceivers(const PlaceConstants& c, const float* positions, uint
 
 // A penumbra map's term at the receiver (IlluminanceBuffer's adjustment): 0 where no fin
 // covers the texel or the fin lies behind the receiver, else the fin's weight refined to
-// the receiver's plane (refinedWeight, eqs. 2 to 5) after the fall-off (fallOff).
+// the receiver's plane (eqs. 2 to 5) after the fall-off.
 inline F64 finTerm(const IlluminateConstants& c, F64 finDepth, F64 s0, F64 Lr) {
     const F64 one = simd::splat64(1.0), two = simd::splat64(2.0), zero = simd::splat64(0.0);
     const F64 e = simd::splat64(c.edgeWeight), L0 = simd::splat64(c.referenceDistance);
