@@ -27,9 +27,15 @@ struct CompensatedSum {
     double value() const { return sum + compensation; }
 };
 
-// out[i] += weight * in[i] for i < n.
-void addWeighted(double* __restrict out, const double* __restrict in, double weight, size_t n) {
-    for (size_t i = 0; i < n; ++i) out[i] += weight * in[i];
+// out[i] += weight * in[i] for i < n; the first tap (first = true) starts the sum from 0
+// instead of reading out, which is 0 + weight in[i]: the same bits (a -0 product becomes
+// +0) without clearing the fresh output first.
+void addWeighted(double* __restrict out, const double* __restrict in, double weight, size_t n, bool first) {
+    if (first) {
+        for (size_t i = 0; i < n; ++i) out[i] = 0.0 + weight * in[i];
+    } else {
+        for (size_t i = 0; i < n; ++i) out[i] += weight * in[i];
+    }
 }
 
 // S at a continuous corner: bilinear between the four grid points around it.
@@ -88,21 +94,23 @@ MomentMap blurMoments(const MomentMap& in, const std::vector<double>& weights) {
     // inner loops run over contiguous values (vectorised by the compiler) and every output
     // still sums its taps in order, as one texel at a time would.
     const auto pass = [&](const MomentMap& from, bool alongX) {
-        MomentMap to{size, from.channels, std::vector<double>(from.values.size(), 0.0)};
+        MomentMap to{size, from.channels, {}};
+        to.values.resize(from.values.size());
         tbb::parallel_for(0, size, [&](int y) {
             double* out = &to.values[size_t(y) * rowValues];
             for (int k = 0; k < int(weights.size()); ++k) {
                 const int o = k - half;
+                const double w = weights[k];
                 if (!alongX) {
-                    addWeighted(out, from.at(0, y + o), weights[k], rowValues);
+                    addWeighted(out, from.at(0, y + o), w, rowValues, k == 0);
                     continue;
                 }
                 // Along x: the taps inside the row are a shifted copy of it; those past an
                 // edge read the border texel.
                 const int first = std::clamp(-o, 0, size), last = std::clamp(size - o, first, size);
-                for (int x = 0; x < first; ++x) addWeighted(out + size_t(x) * channels, from.at(x + o, y), weights[k], channels);
-                addWeighted(out + size_t(first) * channels, from.at(first + o, y), weights[k], size_t(last - first) * channels);
-                for (int x = last; x < size; ++x) addWeighted(out + size_t(x) * channels, from.at(x + o, y), weights[k], channels);
+                for (int x = 0; x < first; ++x) addWeighted(out + size_t(x) * channels, from.at(x + o, y), w, channels, k == 0);
+                addWeighted(out + size_t(first) * channels, from.at(first + o, y), w, size_t(last - first) * channels, k == 0);
+                for (int x = last; x < size; ++x) addWeighted(out + size_t(x) * channels, from.at(x + o, y), w, channels, k == 0);
             }
         });
         return to;
@@ -114,7 +122,16 @@ void sampleBilinear(const MomentMap& m, const glm::dvec2& texel, double* out) {
     const glm::dvec2 base = texel - 0.5;
     const int x = texelIndexOf(base.x), y = texelIndexOf(base.y);
     const double fx = base.x - x, fy = base.y - y;
-    const double *a = m.at(x, y), *b = m.at(x + 1, y), *c = m.at(x, y + 1), *d = m.at(x + 1, y + 1);
+    const double *a, *b, *c, *d;
+    if (x >= 0 && y >= 0 && x + 1 < m.size && y + 1 < m.size) {
+        // Inside the map (every receiver the fit keeps its margin from the sides): the four
+        // texels are neighbours in storage, no clamping.
+        const size_t channels = size_t(m.channels);
+        a = &m.values[(size_t(y) * size_t(m.size) + size_t(x)) * channels];
+        b = a + channels, c = a + size_t(m.size) * channels, d = c + channels;
+    } else {
+        a = m.at(x, y), b = m.at(x + 1, y), c = m.at(x, y + 1), d = m.at(x + 1, y + 1);
+    }
     for (int k = 0; k < m.channels; ++k) out[k] = (1.0 - fy) * ((1.0 - fx) * a[k] + fx * b[k]) + fy * ((1.0 - fx) * c[k] + fx * d[k]);
 }
 

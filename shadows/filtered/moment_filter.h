@@ -41,7 +41,9 @@ inline constexpr double kSatErrorUlps = 16.0;
 struct MomentMap {
     int size = 0;                   // texels per side
     int channels = 0;               // moments per texel
-    std::vector<double> values;     // (y size + x) channels + c, row 0 at the top
+    // (y size + x) channels + c, row 0 at the top; fresh storage is left uninitialised,
+    // since every stage writes each value before anything reads it.
+    raster::BufferStorage<double> values;
     const double* at(int x, int y) const;   // clamped to the border
 };
 
@@ -49,7 +51,7 @@ enum class BlurKind { Box, Gaussian };
 
 struct SummedAreaTable {
     int size = 0, channels = 0;
-    std::vector<double> sums;       // (size + 1)^2 entries of `channels`: S(X, Y) at (Y (size + 1) + X)
+    raster::BufferStorage<double> sums;   // (size + 1)^2 entries of `channels`: S(X, Y) at (Y (size + 1) + X)
 };
 
 // The kind's moments of every texel's normalised linear depth (the same bits at every SIMD

@@ -26,7 +26,8 @@ namespace {
 // A moment map of a straight edge: texels x < edge hold an occluder at depth zOccluder,
 // the rest the receiver's plane at zReceiver.
 MomentMap edgeMoments(const MomentSettings& s, int size, int edge, double zOccluder, double zReceiver) {
-    MomentMap m{size, momentCount(s.kind), std::vector<double>(size_t(size) * size_t(size) * size_t(momentCount(s.kind)))};
+    MomentMap m{size, momentCount(s.kind), {}};
+    m.values.resize(size_t(size) * size_t(size) * size_t(m.channels));
     for (int y = 0; y < size; ++y) {
         for (int x = 0; x < size; ++x) momentsOf(s, x < edge ? zOccluder : zReceiver, &m.values[(size_t(y) * size + x) * m.channels]);
     }
@@ -103,7 +104,8 @@ TEST_CASE("summed-area table: a box equals the direct box filter within the stat
         MomentSettings s;
         s.kind = kind;
         s.exponent = 10.0;
-        MomentMap m{kSize, momentCount(kind), std::vector<double>(size_t(kSize) * kSize * size_t(momentCount(kind)))};
+        MomentMap m{kSize, momentCount(kind), {}};
+        m.values.resize(size_t(kSize) * kSize * size_t(m.channels));
         uint64_t state = 12345;
         for (size_t k = 0; k < size_t(kSize) * kSize; ++k) {
             state = state * 6364136223846793005ull + 1442695040888963407ull;
