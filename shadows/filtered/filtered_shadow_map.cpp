@@ -81,10 +81,14 @@ struct PixelBuffers {
     std::vector<float> visibility, widthTexels;
 };
 
-// A row's receivers on their way to V: their pixels, filtered moments and depths.
+// A row's receivers on their way to V, one array per quantity: where each falls in the map,
+// its filter width and depth (gathered pixel by pixel), then its filtered moments (looked up
+// for the whole row in one loop, so the map reads of many receivers are in flight at once),
+// then V.
 struct ReceiverRow {
     std::vector<size_t> pixels;
-    std::vector<double> moments, depths, visibility;
+    std::vector<glm::dvec2> texels, widths;
+    std::vector<double> depths, moments, visibility;
 };
 
 // Step 4 for every pixel: the filtered moments at the receiver, then V, a row's receivers
@@ -93,7 +97,7 @@ PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& sof
                                 const MomentMap& blurred, const SummedAreaTable& table) {
     const GBuffer& g = in.gbuffer;
     const std::vector<glm::dvec2> searchDisk = makePcfKernel({FilterKind::Poisson, 3, s.search.taps, 1.0}).disk;
-    const int channels = momentCount(s.moments.kind);
+    const size_t channels = size_t(momentCount(s.moments.kind));
     PixelBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f)};
     const auto perPixel = [&](ReceiverRow& row, size_t k, const glm::dvec3& P, const glm::dvec3& N,
                               const SoftReceiver& receiver) {
@@ -107,22 +111,25 @@ PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& sof
             }
             width = e.widthTexels;
         }
-        double m[kMaxMoments];
-        if (s.summedAreaTable) {
-            boxMean(table, receiver.texel - 0.5 * width, receiver.texel + 0.5 * width, m);
-        } else {
-            sampleBilinear(blurred, receiver.texel, m);
-        }
         row.pixels.push_back(k);
-        row.moments.insert(row.moments.end(), m, m + channels);
+        row.texels.push_back(receiver.texel);
+        row.widths.push_back(width);
         row.depths.push_back(soft.normalised(receiver.distance));
         out.widthTexels[k] = float(0.5 * (width.x + width.y));
     };
     const auto endOfRow = [&](ReceiverRow& row) {
-        row.visibility.resize(row.pixels.size());
-        momentVisibilityRun(s.moments, row.moments.data(), row.depths.data(), row.pixels.size(), row.visibility.data(),
-                            in.simd);
-        for (size_t r = 0; r < row.pixels.size(); ++r) out.visibility[row.pixels[r]] = float(row.visibility[r]);
+        const size_t count = row.pixels.size();
+        row.moments.resize(count * channels);
+        if (s.summedAreaTable) {
+            for (size_t r = 0; r < count; ++r) {
+                boxMean(table, row.texels[r] - 0.5 * row.widths[r], row.texels[r] + 0.5 * row.widths[r], &row.moments[r * channels]);
+            }
+        } else {
+            for (size_t r = 0; r < count; ++r) sampleBilinear(blurred, row.texels[r], &row.moments[r * channels]);
+        }
+        row.visibility.resize(count);
+        momentVisibilityRun(s.moments, row.moments.data(), row.depths.data(), count, row.visibility.data(), in.simd);
+        for (size_t r = 0; r < count; ++r) out.visibility[row.pixels[r]] = float(row.visibility[r]);
     };
     forEachReceiverFacingLight<ReceiverRow>(g, soft, perPixel, endOfRow);
     return out;

@@ -41,6 +41,12 @@ LightView withFarPlane(LightView view, double zFar) {
     return view;
 }
 
+// Component `row` of m * (P, 1), with glm's operator*'s products and sums in its order,
+// (m0 x + m1 y) + (m2 z + m3 1), so the bits are those of the full product.
+double rowTimesPoint(const glm::dmat4& m, int row, const glm::dvec3& P) {
+    return (m[0][row] * P.x + m[1][row] * P.y) + (m[2][row] * P.z + m[3][row]);
+}
+
 }  // namespace
 
 double SoftShadowMap::distanceOf(float windowDepth) const {
@@ -90,10 +96,11 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
     return soft;
 }
 
-SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N) {
-    const glm::dvec4 t = soft.map.texelFromWorld * glm::dvec4(P, 1.0);
-    const glm::dvec4 v = soft.map.view.viewFromWorld * glm::dvec4(P, 1.0);
-    return {glm::dvec2(t) / t.w, -v.z, lightReaches(soft.light, glm::vec3(P), glm::vec3(N))};
+SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P) {
+    const glm::dmat4 &t = soft.map.texelFromWorld, &v = soft.map.view.viewFromWorld;
+    // Only the rows used: texel x, y and w, and view z (-d_r).
+    const double x = rowTimesPoint(t, 0, P), y = rowTimesPoint(t, 1, P), w = rowTimesPoint(t, 3, P);
+    return {glm::dvec2(x / w, y / w), -rowTimesPoint(v, 2, P)};
 }
 
 glm::dvec2 sampleWidthTexels(const SoftShadowMap& soft, double dr, double dOccluder) {

@@ -28,6 +28,7 @@
 
 #include "raster/tile_kernels.h"
 #include "shading/gbuffer.h"
+#include "shading/lights.h"
 #include "shadows/depth_map.h"
 #include "shadows/technique.h"
 
@@ -52,7 +53,6 @@ struct SoftShadowMap {
 struct SoftReceiver {
     glm::dvec2 texel{0.0};             // where it falls, texel units
     double distance = 0.0;             // d_r: view-space distance from the light's centre, m
-    bool facesLight = false;           // lightReaches(): dot(N, centre - P) > 0 (else V = 0)
 };
 
 // Throws std::invalid_argument naming the technique unless the light is a disk or a
@@ -65,23 +65,24 @@ void requireAreaLight(const Light& light, const std::string& technique);
 SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
                                   double marginTexels, bool coverBlockerSearch);
 
-SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N);
+SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P);
 
 // Calls perPixel(row, k, P, N, receiver) for every camera pixel k whose surface faces the
-// light's centre (the others keep V = 0), rows in parallel, then endOfRow(row): the pixels of
-// a row share one RowState, made afresh for the row, so a pass can finish them together (a
-// run of the moments' visibility). Each call writes only its own pixels' outputs, so the
-// results are the same for any thread count.
+// light's centre (lightReaches: dot(N, centre - P) > 0; the others keep V = 0), rows in
+// parallel, then endOfRow(row): the pixels of a row share one RowState, made afresh for the
+// row, so a pass can finish them together (the map lookups of the whole row, then a run of
+// the moments' visibility). Each call writes only its own pixels' outputs, so the results
+// are the same for any thread count.
 template <class RowState, class PerPixel, class EndOfRow>
 void forEachReceiverFacingLight(const GBuffer& g, const SoftShadowMap& soft, PerPixel perPixel, EndOfRow endOfRow) {
+    const LightReach reaches(soft.light);
     tbb::parallel_for(0, g.height, [&](int j) {
         RowState row;
         for (int i = 0; i < g.width; ++i) {
             const size_t k = g.index(i, j);
-            if (!g.hit[k]) continue;
+            if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
             const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            const SoftReceiver receiver = softReceiver(soft, P, N);
-            if (receiver.facesLight) perPixel(row, k, P, N, receiver);
+            perPixel(row, k, P, N, softReceiver(soft, P));
         }
         endOfRow(row);
     });
