@@ -5,7 +5,6 @@
 // the smaller bound wins.
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include "raster/portable_exp.h"
 #include "raster/portable_math.h"
@@ -27,8 +26,10 @@ void readExponentialVariance(const TechniqueParams& p, MomentSettings& s) {
     s.negativeExponent = p.real("negative-exponent");
 }
 
-// Both warps of count depths, e^{c+ w} into positive and -e^{-c- w} into negative, the
-// exponentials a vector at a time.
+constexpr size_t kWarpChunk = 256;   // depths warped together, on the stack
+
+// Both warps of count <= kWarpChunk depths, e^{c+ w} into positive and -e^{-c- w} into
+// negative, the exponentials a vector at a time.
 void warps(const MomentSettings& s, const double* z, size_t count, double* positive, double* negative,
            raster::SimdLevel simd) {
     for (size_t k = 0; k < count; ++k) {
@@ -40,6 +41,17 @@ void warps(const MomentSettings& s, const double* z, size_t count, double* posit
     for (size_t k = 0; k < count; ++k) negative[k] = -negative[k];
 }
 
+// perDepth(k, positive, negative) for each of count depths, warped kWarpChunk at a time.
+template <class PerDepth>
+void forEachWarped(const MomentSettings& s, const double* z, size_t count, raster::SimdLevel simd, PerDepth perDepth) {
+    double positive[kWarpChunk], negative[kWarpChunk];
+    for (size_t first = 0; first < count; first += kWarpChunk) {
+        const size_t n = std::min(kWarpChunk, count - first);
+        warps(s, z + first, n, positive, negative, simd);
+        for (size_t k = 0; k < n; ++k) perDepth(first + k, positive[k], negative[k]);
+    }
+}
+
 // The minimum variance carried through a warp: var_w = (dw/dz)^2 var_z at the receiver.
 double warpedMinVariance(double exponentTimesTwo, double warped) {
     const double slope = exponentTimesTwo * warped;
@@ -48,24 +60,20 @@ double warpedMinVariance(double exponentTimesTwo, double warped) {
 
 void exponentialVarianceMoments(const MomentSettings& s, const double* z, size_t count, double* out,
                                 raster::SimdLevel simd) {
-    std::vector<double> pos(count), neg(count);
-    warps(s, z, count, pos.data(), neg.data(), simd);
-    for (size_t k = 0; k < count; ++k) {
+    forEachWarped(s, z, count, simd, [&](size_t k, double pos, double neg) {
         double* m = out + 4 * k;
-        m[0] = pos[k], m[1] = pos[k] * pos[k], m[2] = neg[k], m[3] = neg[k] * neg[k];
-    }
+        m[0] = pos, m[1] = pos * pos, m[2] = neg, m[3] = neg * neg;
+    });
 }
 
 void exponentialVarianceVisibility(const MomentSettings& s, const double* m, const double* t, size_t count, double* out,
                                    raster::SimdLevel simd) {
-    std::vector<double> pos(count), neg(count);
-    warps(s, t, count, pos.data(), neg.data(), simd);
-    for (size_t k = 0; k < count; ++k) {
+    forEachWarped(s, t, count, simd, [&](size_t k, double pos, double neg) {
         const double* mk = m + 4 * k;
-        const double positive = chebyshevUpperBound(mk[0], mk[1], pos[k], warpedMinVariance(2.0 * s.positiveExponent, pos[k]));
-        const double negative = chebyshevUpperBound(mk[2], mk[3], neg[k], warpedMinVariance(2.0 * s.negativeExponent, neg[k]));
+        const double positive = chebyshevUpperBound(mk[0], mk[1], pos, warpedMinVariance(2.0 * s.positiveExponent, pos));
+        const double negative = chebyshevUpperBound(mk[2], mk[3], neg, warpedMinVariance(2.0 * s.negativeExponent, neg));
         out[k] = std::min(positive, negative);
-    }
+    });
 }
 
 // The second moments over w in [-1, 1].
