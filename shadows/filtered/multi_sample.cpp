@@ -88,7 +88,10 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
             timer.lap("depth_map");
             accumulateHardShadow(in.gbuffer, map, point, in.simd, v, lit);
             timer.lap("lookup");
-            if (a == 0 && b == 0) writeDepthMap(debug, "depth-sample0", map);
+            if (a == 0 && b == 0 && debug.enabled()) {
+                writeDepthMap(debug, "depth-sample0", map);
+                timer.lap("debug_buffers");   // not the next sample's light view
+            }
         }
     }
     ShadowOutputs out;

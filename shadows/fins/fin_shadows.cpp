@@ -130,6 +130,7 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
         buffer.combineLayer({hard, innerOrNone, outer}, settings);
         timer.lap("illuminance");
         debug.writeLayer(layer, hard, innerOrNone, outer, s.style.edgeWeight, in.gbuffer, buffer.values());
+        if (debug.enabled()) timer.lap("debug_buffers");   // not the next layer's hard map
     }
     return drawn;
 }

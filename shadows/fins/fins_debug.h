@@ -29,6 +29,7 @@ namespace shadowlab {
 class FinDebug {
 public:
     FinDebug(std::filesystem::path directory, const std::string& technique, const LightView& view);
+    bool enabled() const { return debug_.enabled(); }
 
     // edgeWeight: the largest weight (eq. 1: 0.5; outer-only methods: 1), for the PNGs' scale.
     void writeLayer(int layer, const DepthMap& hard, const PenumbraMap* inner, const PenumbraMap& outer,
