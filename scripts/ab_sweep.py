@@ -12,6 +12,7 @@ example: scripts/ab_sweep.py old/build/app/shadowlab build/app/shadowlab sphere-
 import argparse
 import json
 import pathlib
+import shutil
 import statistics
 import subprocess
 import sys
@@ -22,7 +23,8 @@ def settingsName(settings):
 
 
 def sweep(binary, scene, techniques, out, extra):
-    out.mkdir(parents=True, exist_ok=True)
+    shutil.rmtree(out, ignore_errors=True)   # one result per directory: never an earlier run's
+    out.mkdir(parents=True)
     subprocess.run([binary, "sweep", scene, "--technique", techniques, "--out", str(out), *extra], check=True,
                    stdout=subprocess.DEVNULL)
     (result,) = out.glob("*.json")
@@ -54,9 +56,11 @@ def main():
             continue
         a = statistics.median(r[key]["median_ms"] for r in runs["a"])
         b = statistics.median(r[key]["median_ms"] for r in runs["b"])
-        rms = [runs[side][0][key]["errors"]["rms"] for side in ("a", "b")]
+        # With --reference none the sweep scores nothing: no RMS to show.
+        rms = [runs[side][0][key].get("errors", {}).get("rms") for side in ("a", "b")]
+        rms = ["-" if e is None else f"{e:.4f}" for e in rms]
         technique, settings, threads = key
-        print(f"| `{technique}` | {settings} | {threads} | {a:.1f} | {b:.1f} | {b / a:.2f} | {rms[0]:.4f} | {rms[1]:.4f} |")
+        print(f"| `{technique}` | {settings} | {threads} | {a:.1f} | {b:.1f} | {b / a:.2f} | {rms[0]} | {rms[1]} |")
 
 
 if __name__ == "__main__":
