@@ -7,7 +7,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "shadows/fins/illuminance_kernel.h"
 
 namespace shadowlab {
 namespace {
@@ -18,14 +17,6 @@ constexpr uint32_t kChunkPixels = 512;
 fins::IlluminanceKernels illuminanceKernels(raster::SimdLevel simd) {
     return raster::forSimdLevel(simd, fins::illuminanceKernelsScalar, fins::illuminanceKernelsAvx2,
                                 fins::illuminanceKernelsAvx512);
-}
-
-fins::PlaceConstants placeConstants(const DepthMap& hard, const LightPlane& light) {
-    fins::PlaceConstants c{};
-    std::copy_n(glm::value_ptr(hard.texelFromWorld), 16, c.texelFromWorld);
-    c.lastTexel = double(hard.size - 1);
-    for (int i = 0; i < 3; ++i) c.lightCentre[i] = light.centre[i], c.lightNormal[i] = light.normal[i];
-    return c;
 }
 
 // One chunk's working columns: where each pixel's receiver falls, and the maps' values there.
@@ -65,6 +56,14 @@ void requireOneLayout(const LayerMaps& maps) {
 }
 
 }  // namespace
+
+fins::PlaceConstants placeConstants(const DepthMap& hard, const LightPlane& light) {
+    fins::PlaceConstants c{};
+    std::copy_n(glm::value_ptr(hard.texelFromWorld), 16, c.texelFromWorld);
+    c.lastTexel = double(hard.size - 1);
+    for (int i = 0; i < 3; ++i) c.lightCentre[i] = light.centre[i], c.lightNormal[i] = light.normal[i];
+    return c;
+}
 
 IlluminanceBuffer::IlluminanceBuffer(const GBuffer& gbuffer, const std::vector<uint8_t>& lit)
     : gbuffer_(gbuffer), values_(lit.begin(), lit.end()) {}

@@ -33,6 +33,7 @@
 #include "shadows/depth_map.h"
 #include "shadows/fins/fin_geometry.h"
 #include "shadows/fins/fin_maps.h"
+#include "shadows/fins/illuminance_kernel.h"
 
 namespace shadowlab {
 
@@ -55,6 +56,9 @@ struct LayerMaps {
     const PenumbraMap* inner;
     const PenumbraMap& outer;
 };
+
+// What the place kernel needs of a layer's hard map and the light (illuminance_kernel.h).
+fins::PlaceConstants placeConstants(const DepthMap& hard, const LightPlane& light);
 
 class IlluminanceBuffer {
 public:

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "shadows/fins/fin_maps.h"
+#include "shadows/fins/illuminance_buffer.h"
 #include "shadows/fins/illuminance_kernel.h"
 #include "shadows/maps/shadow_bias.h"
 #include "tests/raster/raster_test_util.h"
@@ -40,13 +40,7 @@ struct Setup {
         map.size = size;
         map.texelFromWorld = texelFromWorldOf(glm::mat4(view.clipFromView * view.viewFromWorld), size);
     }
-    fins::PlaceConstants place() const {
-        fins::PlaceConstants c{};
-        std::copy_n(glm::value_ptr(map.texelFromWorld), 16, c.texelFromWorld);
-        c.lastTexel = size - 1;
-        for (int i = 0; i < 3; ++i) c.lightCentre[i] = light.centre[i], c.lightNormal[i] = light.normal[i];
-        return c;
-    }
+    fins::PlaceConstants place() const { return placeConstants(map, light); }
 };
 
 // Receivers inside the frustum, some beyond its sides (clamped texels), on the light's plane
