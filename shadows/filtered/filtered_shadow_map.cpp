@@ -125,7 +125,7 @@ PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& sof
                 boxMean(table, row.texels[r] - 0.5 * row.widths[r], row.texels[r] + 0.5 * row.widths[r], &row.moments[r * channels]);
             }
         } else {
-            for (size_t r = 0; r < count; ++r) sampleBilinear(blurred, row.texels[r], &row.moments[r * channels]);
+            sampleBilinearRun(blurred, row.texels.data(), count, row.moments.data());
         }
         row.visibility.resize(count);
         momentVisibilityRun(s.moments, row.moments.data(), row.depths.data(), count, row.visibility.data(), in.simd);

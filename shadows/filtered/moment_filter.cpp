@@ -27,14 +27,24 @@ struct CompensatedSum {
     double value() const { return sum + compensation; }
 };
 
-// out[i] += weight * in[i] for i < n; the first tap (first = true) starts the sum from 0
-// instead of reading out, which is 0 + weight in[i]: the same bits (a -0 product becomes
-// +0) without clearing the fresh output first.
-void addWeighted(double* __restrict out, const double* __restrict in, double weight, size_t n, bool first) {
-    if (first) {
-        for (size_t i = 0; i < n; ++i) out[i] = 0.0 + weight * in[i];
-    } else {
-        for (size_t i = 0; i < n; ++i) out[i] += weight * in[i];
+// out[i] = sum_k weights[k] sources[k][i] for i < n, the taps added in order to a sum that
+// starts from 0 (as a cleared output would). A chunk of outputs stays in registers across
+// all the taps, so each is stored once instead of read and written back per tap.
+void weightedSum(double* __restrict out, const double* const* sources, const double* weights, size_t taps, size_t n) {
+    constexpr size_t kChunk = 8;
+    size_t i = 0;
+    for (; i + kChunk <= n; i += kChunk) {
+        double sum[kChunk];
+        for (size_t j = 0; j < kChunk; ++j) sum[j] = 0.0 + weights[0] * sources[0][i + j];
+        for (size_t k = 1; k < taps; ++k) {
+            for (size_t j = 0; j < kChunk; ++j) sum[j] += weights[k] * sources[k][i + j];
+        }
+        for (size_t j = 0; j < kChunk; ++j) out[i + j] = sum[j];
+    }
+    for (; i < n; ++i) {
+        double sum = 0.0 + weights[0] * sources[0][i];
+        for (size_t k = 1; k < taps; ++k) sum += weights[k] * sources[k][i];
+        out[i] = sum;
     }
 }
 
@@ -89,29 +99,34 @@ std::vector<double> blurWeights(BlurKind kind, int width) {
 MomentMap blurMoments(const MomentMap& in, const std::vector<double>& weights) {
     const int half = int(weights.size() / 2), size = in.size;
     const size_t channels = size_t(in.channels), rowValues = size_t(size) * channels;
-    // out(x, y) = sum_k w_k in(x + (k - half) dx, y + (k - half) dy), the taps in order: each
-    // pass adds one tap's weighted row to every output of a row before the next tap, so the
-    // inner loops run over contiguous values (vectorised by the compiler) and every output
-    // still sums its taps in order, as one texel at a time would.
+    // out(x, y) = sum_k w_k in(x + (k - half) dx, y + (k - half) dy), the taps in order.
+    // Where every tap lies inside the map, tap k's inputs for a run of outputs are a
+    // contiguous run too (the rows above and below, or the row shifted), so the run is one
+    // weightedSum over them; a texel with taps past an edge reads the border texel.
+    const size_t taps = weights.size();
     const auto pass = [&](const MomentMap& from, bool alongX) {
         MomentMap to{size, from.channels, {}};
         to.values.resize(from.values.size());
         tbb::parallel_for(0, size, [&](int y) {
+            std::vector<const double*> sources(taps);
             double* out = &to.values[size_t(y) * rowValues];
-            for (int k = 0; k < int(weights.size()); ++k) {
-                const int o = k - half;
-                const double w = weights[k];
-                if (!alongX) {
-                    addWeighted(out, from.at(0, y + o), w, rowValues, k == 0);
-                    continue;
-                }
-                // Along x: the taps inside the row are a shifted copy of it; those past an
-                // edge read the border texel.
-                const int first = std::clamp(-o, 0, size), last = std::clamp(size - o, first, size);
-                for (int x = 0; x < first; ++x) addWeighted(out + size_t(x) * channels, from.at(x + o, y), w, channels, k == 0);
-                addWeighted(out + size_t(first) * channels, from.at(first + o, y), w, size_t(last - first) * channels, k == 0);
-                for (int x = last; x < size; ++x) addWeighted(out + size_t(x) * channels, from.at(x + o, y), w, channels, k == 0);
+            if (!alongX) {
+                for (size_t k = 0; k < taps; ++k) sources[k] = from.at(0, y + int(k) - half);
+                return weightedSum(out, sources.data(), weights.data(), taps, rowValues);
             }
+            const int first = std::min(half, size), last = std::max(first, size - half);
+            const auto texels = [&](int x0, int x1, bool clamped) {
+                if (x1 <= x0) return;
+                const double* row = &from.values[size_t(y) * rowValues];
+                for (size_t k = 0; k < taps; ++k) {
+                    const int x = x0 + int(k) - half;
+                    sources[k] = clamped ? from.at(x, y) : row + size_t(x) * channels;
+                }
+                weightedSum(out + size_t(x0) * channels, sources.data(), weights.data(), taps, size_t(x1 - x0) * channels);
+            };
+            for (int x = 0; x < first; ++x) texels(x, x + 1, true);
+            texels(first, last, false);
+            for (int x = last; x < size; ++x) texels(x, x + 1, true);
         });
         return to;
     };
@@ -133,6 +148,21 @@ void sampleBilinear(const MomentMap& m, const glm::dvec2& texel, double* out) {
         a = m.at(x, y), b = m.at(x + 1, y), c = m.at(x, y + 1), d = m.at(x + 1, y + 1);
     }
     for (int k = 0; k < m.channels; ++k) out[k] = (1.0 - fy) * ((1.0 - fx) * a[k] + fx * b[k]) + fy * ((1.0 - fx) * c[k] + fx * d[k]);
+}
+
+void sampleBilinearRun(const MomentMap& m, const glm::dvec2* texels, size_t count, double* out) {
+    // The receivers of a camera row wander across the map, so most lookups miss the cache:
+    // the rows of texels a few receivers ahead are requested while this one is read.
+    constexpr size_t kAhead = 8;
+    const size_t channels = size_t(m.channels), rowValues = size_t(m.size) * channels;
+    for (size_t r = 0; r < count; ++r) {
+        if (r + kAhead < count) {
+            const glm::dvec2 ahead = glm::clamp(texels[r + kAhead] - 0.5, glm::dvec2(0.0), glm::dvec2(m.size - 2));
+            const double* corner = &m.values[size_t(ahead.y) * rowValues + size_t(ahead.x) * channels];
+            __builtin_prefetch(corner), __builtin_prefetch(corner + rowValues);
+        }
+        sampleBilinear(m, texels[r], out + r * channels);
+    }
 }
 
 SummedAreaTable summedAreaTable(const MomentMap& m) {

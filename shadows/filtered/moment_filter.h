@@ -65,6 +65,8 @@ MomentMap blurMoments(const MomentMap& moments, const std::vector<double>& weigh
 
 // The moments at a continuous texel position, bilinear between texel centres.
 void sampleBilinear(const MomentMap& moments, const glm::dvec2& texel, double* out);
+// The same for count texels, out holding `channels` values per texel.
+void sampleBilinearRun(const MomentMap& moments, const glm::dvec2* texels, size_t count, double* out);
 
 SummedAreaTable summedAreaTable(const MomentMap& moments);
 // The mean of the moments over the box [lo, hi] (texel units), clipped to the map; a box

@@ -96,6 +96,65 @@ TEST_CASE("moment kinds: runs of moments and visibility give the one-value bits 
     }
 }
 
+TEST_CASE("blur and bilinear runs: the bits of the plain per-texel sums, borders clamped, taps in order") {
+    // The blur sums runs of outputs with every tap inside the map and clamps the rest; the
+    // plain definition clamps every tap. Sizes below, at and above the filter's width.
+    for (const auto& [size, width] : {std::pair{5, 7}, std::pair{7, 7}, std::pair{37, 9}, std::pair{64, 3}}) {
+        MomentSettings s;
+        s.kind = MomentKind::Hamburger4;   // four channels, some negative
+        MomentMap m{size, momentCount(s.kind), {}};
+        m.values.resize(size_t(size) * size_t(size) * size_t(m.channels));
+        uint64_t state = 99;
+        for (size_t k = 0; k < size_t(size) * size_t(size); ++k) {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            momentsOf(s, double(state >> 11) * 0x1p-53, &m.values[k * size_t(m.channels)]);
+        }
+        const std::vector<double> w = blurWeights(BlurKind::Gaussian, width);
+        const MomentMap blurred = blurMoments(m, w);
+        const auto plainPass = [&](const MomentMap& from, int dx, int dy) {
+            MomentMap to{size, from.channels, {}};
+            to.values.resize(from.values.size());
+            for (int y = 0; y < size; ++y) {
+                for (int x = 0; x < size; ++x) {
+                    for (int c = 0; c < from.channels; ++c) {
+                        double sum = 0.0;
+                        for (int k = 0; k < width; ++k) {
+                            const int o = k - width / 2;
+                            sum += w[k] * from.at(x + o * dx, y + o * dy)[c];
+                        }
+                        to.values[(size_t(y) * size_t(size) + size_t(x)) * size_t(from.channels) + size_t(c)] = sum;
+                    }
+                }
+            }
+            return to;
+        };
+        const MomentMap plain = plainPass(plainPass(m, 1, 0), 0, 1);
+        INFO("size " << size << ", width " << width);
+        CHECK(std::memcmp(blurred.values.data(), plain.values.data(), plain.values.size() * sizeof(double)) == 0);
+        // Lookups inside the map and across its sides, one at a time and as a run.
+        std::vector<glm::dvec2> texels;
+        for (int k = 0; k < 200; ++k) {
+            texels.push_back(glm::dvec2(-1.3 + 0.0071 * k * size, size + 0.9 - 0.0067 * k * size));
+        }
+        std::vector<double> run(texels.size() * size_t(m.channels)), one(run.size());
+        sampleBilinearRun(blurred, texels.data(), texels.size(), run.data());
+        for (size_t k = 0; k < texels.size(); ++k) sampleBilinear(blurred, texels[k], &one[k * size_t(m.channels)]);
+        CHECK(std::memcmp(run.data(), one.data(), run.size() * sizeof(double)) == 0);
+        for (size_t k = 0; k < texels.size(); ++k) {
+            // Bilinear between the four clamped texel centres around the texel, as defined.
+            const glm::dvec2 base = texels[k] - 0.5;
+            const int x = int(std::floor(base.x)), y = int(std::floor(base.y));
+            const double fx = base.x - x, fy = base.y - y;
+            for (int c = 0; c < m.channels; ++c) {
+                const double a = blurred.at(x, y)[c], b = blurred.at(x + 1, y)[c];
+                const double below = blurred.at(x, y + 1)[c], belowRight = blurred.at(x + 1, y + 1)[c];
+                const double expected = (1.0 - fy) * ((1.0 - fx) * a + fx * b) + fy * ((1.0 - fx) * below + fx * belowRight);
+                CHECK(one[k * size_t(m.channels) + size_t(c)] == expected);
+            }
+        }
+    }
+}
+
 TEST_CASE("summed-area table: a box equals the direct box filter within the stated bound") {
     // Bound (moment_filter.h): |SAT mean - exact mean| <= 16 u T / A, T = sum of |moments|.
     // The direct (separable) filter adds its own rounding, a few u per tap of the mean.
