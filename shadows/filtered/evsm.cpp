@@ -5,6 +5,7 @@
 // the smaller bound wins.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "raster/portable_exp.h"
 #include "raster/portable_math.h"

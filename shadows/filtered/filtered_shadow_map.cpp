@@ -113,7 +113,7 @@ PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& sof
         }
         row.pixels.push_back(k);
         row.texels.push_back(receiver.texel);
-        row.widths.push_back(width);
+        if (s.summedAreaTable) row.widths.push_back(width);   // the blur's width is fixed
         row.depths.push_back(soft.normalised(receiver.distance));
         out.widthTexels[k] = float(0.5 * (width.x + width.y));
     };
@@ -204,7 +204,7 @@ Technique filteredShadowMapTechnique(MomentKind kind) {
                           {{"blur", false, "separable, fixed width"}, {"sat", true, "summed-area table, any width per pixel"}}),
         choiceParam<BlurKind>("blur", "box", {{"box", BlurKind::Box}, {"gaussian", BlurKind::Gaussian, "sigma = width / 6"}},
                               "filter=blur"),
-        integerParam("filter-width", 7, 1, 255, "fixed width: taps per side, odd"),
+        integerParam("filter-width", 7, 1, int(kMaxBlurTaps), "fixed width: taps per side, odd"),
         choiceParam<bool>("width", "fixed",
                           {{"fixed", false}, {"pcss", true, "blocker search and eq. 7.6 per pixel; needs filter=sat"}}),
     };

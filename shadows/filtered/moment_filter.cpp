@@ -1,7 +1,10 @@
 #include "shadows/filtered/moment_filter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -97,36 +100,42 @@ std::vector<double> blurWeights(BlurKind kind, int width) {
 }
 
 MomentMap blurMoments(const MomentMap& in, const std::vector<double>& weights) {
+    if (weights.empty() || weights.size() > kMaxBlurTaps) {
+        throw std::invalid_argument("blur of " + std::to_string(weights.size()) + " taps; 1 to " +
+                                    std::to_string(kMaxBlurTaps) + " are possible");
+    }
     const int half = int(weights.size() / 2), size = in.size;
     const size_t channels = size_t(in.channels), rowValues = size_t(size) * channels;
     // out(x, y) = sum_k w_k in(x + (k - half) dx, y + (k - half) dy), the taps in order.
     // Where every tap lies inside the map, tap k's inputs for a run of outputs are a
     // contiguous run too (the rows above and below, or the row shifted), so the run is one
     // weightedSum over them; a texel with taps past an edge reads the border texel.
-    const size_t taps = weights.size();
+    const size_t taps = weights.size();   // at most kMaxBlurTaps (filter-width's range)
     const auto pass = [&](const MomentMap& from, bool alongX) {
         MomentMap to{size, from.channels, {}};
         to.values.resize(from.values.size());
         tbb::parallel_for(0, size, [&](int y) {
-            std::vector<const double*> sources(taps);
+            std::array<const double*, kMaxBlurTaps> sources;
             double* out = &to.values[size_t(y) * rowValues];
             if (!alongX) {
                 for (size_t k = 0; k < taps; ++k) sources[k] = from.at(0, y + int(k) - half);
-                return weightedSum(out, sources.data(), weights.data(), taps, rowValues);
+                weightedSum(out, sources.data(), weights.data(), taps, rowValues);
+            } else {
+                // Texels [x0, x1) of the row: one run where every tap is inside the map,
+                // else a single texel whose taps past an edge read the border texel.
+                const auto blurRun = [&](int x0, int x1) {
+                    const bool inside = x0 - half >= 0 && x1 - 1 + half < size;
+                    for (size_t k = 0; k < taps; ++k) {
+                        const int x = x0 + int(k) - half;
+                        sources[k] = inside ? &from.values[size_t(y) * rowValues + size_t(x) * channels] : from.at(x, y);
+                    }
+                    weightedSum(out + size_t(x0) * channels, sources.data(), weights.data(), taps, size_t(x1 - x0) * channels);
+                };
+                const int first = std::min(half, size), last = std::max(first, size - half);
+                for (int x = 0; x < first; ++x) blurRun(x, x + 1);
+                if (first < last) blurRun(first, last);
+                for (int x = last; x < size; ++x) blurRun(x, x + 1);
             }
-            const int first = std::min(half, size), last = std::max(first, size - half);
-            const auto texels = [&](int x0, int x1, bool clamped) {
-                if (x1 <= x0) return;
-                const double* row = &from.values[size_t(y) * rowValues];
-                for (size_t k = 0; k < taps; ++k) {
-                    const int x = x0 + int(k) - half;
-                    sources[k] = clamped ? from.at(x, y) : row + size_t(x) * channels;
-                }
-                weightedSum(out + size_t(x0) * channels, sources.data(), weights.data(), taps, size_t(x1 - x0) * channels);
-            };
-            for (int x = 0; x < first; ++x) texels(x, x + 1, true);
-            texels(first, last, false);
-            for (int x = last; x < size; ++x) texels(x, x + 1, true);
         });
         return to;
     };
@@ -154,14 +163,13 @@ void sampleBilinearRun(const MomentMap& m, const glm::dvec2* texels, size_t coun
     // The receivers of a camera row wander across the map, so most lookups miss the cache:
     // the rows of texels a few receivers ahead are requested while this one is read.
     constexpr size_t kAhead = 8;
-    const size_t channels = size_t(m.channels), rowValues = size_t(m.size) * channels;
     for (size_t r = 0; r < count; ++r) {
         if (r + kAhead < count) {
-            const glm::dvec2 ahead = glm::clamp(texels[r + kAhead] - 0.5, glm::dvec2(0.0), glm::dvec2(m.size - 2));
-            const double* corner = &m.values[size_t(ahead.y) * rowValues + size_t(ahead.x) * channels];
-            __builtin_prefetch(corner), __builtin_prefetch(corner + rowValues);
+            const glm::dvec2 ahead = texels[r + kAhead] - 0.5;   // any value: texelIndexOf and at() clamp
+            const int x = texelIndexOf(ahead.x), y = texelIndexOf(ahead.y);
+            __builtin_prefetch(m.at(x, y)), __builtin_prefetch(m.at(x, y + 1));
         }
-        sampleBilinear(m, texels[r], out + r * channels);
+        sampleBilinear(m, texels[r], out + size_t(m.channels) * r);
     }
 }
 

@@ -48,6 +48,7 @@ struct MomentMap {
 };
 
 enum class BlurKind { Box, Gaussian };
+inline constexpr size_t kMaxBlurTaps = 255;   // the widest blur (filter-width's range)
 
 struct SummedAreaTable {
     int size = 0, channels = 0;
@@ -58,8 +59,8 @@ struct SummedAreaTable {
 // level and thread count).
 MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings, raster::SimdLevel simd);
 
-// Weights of an odd `width` of taps: equal (box) or Gaussian with sigma = width / 6, so
-// the taps span +-3 sigma; normalised to sum 1.
+// Weights of an odd `width` (at most kMaxBlurTaps) of taps: equal (box) or Gaussian with
+// sigma = width / 6, so the taps span +-3 sigma; normalised to sum 1.
 std::vector<double> blurWeights(BlurKind kind, int width);
 MomentMap blurMoments(const MomentMap& moments, const std::vector<double>& weights);
 

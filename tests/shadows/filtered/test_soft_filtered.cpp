@@ -1,6 +1,7 @@
 // The soft-shadow family (pcss, vsm, esm, evsm, msm, multi-sample) against analytic answers
 // and the exact soft reference: Chebyshev's bound equals the lit fraction for a planar
-// occluder and receiver (RTR 7.7), the summed-area table equals the direct box filter,
+// occluder and receiver (RTR 7.7), the blur and bilinear lookups are the bits of their plain
+// definitions, the summed-area table equals the direct box filter,
 // filtered maps stay in [0, 1] and lit away from shadows, PCSS's penumbra follows eq. 7.6,
 // determinism across threads, and bad parameters.
 #include <doctest/doctest.h>
@@ -9,8 +10,11 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "raster/thread_count.h"
 #include "shadows/filtered/moment_filter.h"
@@ -33,6 +37,41 @@ MomentMap edgeMoments(const MomentSettings& s, int size, int edge, double zOcclu
     }
     return m;
 }
+
+// A moment map of random depths (a fixed generator, so the same map every run).
+MomentMap randomMoments(MomentKind kind, int size, uint64_t seed, double exponent = 10.0) {
+    MomentSettings s;
+    s.kind = kind;
+    s.exponent = exponent;
+    MomentMap m{size, momentCount(kind), {}};
+    m.values.resize(size_t(size) * size_t(size) * size_t(m.channels));
+    uint64_t state = seed;
+    for (size_t k = 0; k < size_t(size) * size_t(size); ++k) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        momentsOf(s, double(state >> 11) * 0x1p-53, &m.values[k * size_t(m.channels)]);
+    }
+    return m;
+}
+
+// One blur pass by its definition: every output the sum from 0 of its taps in order, each
+// tap clamped to the border.
+MomentMap plainBlurPass(const MomentMap& from, const std::vector<double>& w, int dx, int dy) {
+    MomentMap to{from.size, from.channels, {}};
+    to.values.resize(from.values.size());
+    const int half = int(w.size() / 2);
+    for (int y = 0; y < from.size; ++y) {
+        for (int x = 0; x < from.size; ++x) {
+            for (int c = 0; c < from.channels; ++c) {
+                double sum = 0.0;
+                for (int k = 0; k < int(w.size()); ++k) sum += w[k] * from.at(x + (k - half) * dx, y + (k - half) * dy)[c];
+                to.values[(size_t(y) * size_t(from.size) + size_t(x)) * size_t(from.channels) + size_t(c)] = sum;
+            }
+        }
+    }
+    return to;
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 
@@ -98,49 +137,34 @@ TEST_CASE("moment kinds: runs of moments and visibility give the one-value bits 
 
 TEST_CASE("blur and bilinear runs: the bits of the plain per-texel sums, borders clamped, taps in order") {
     // The blur sums runs of outputs with every tap inside the map and clamps the rest; the
-    // plain definition clamps every tap. Sizes below, at and above the filter's width.
+    // plain definition clamps every tap. Sizes below, at and above the filter's width. EVSM's
+    // moments include a negative channel, and a block of -0 texels wider than the filter
+    // must blur to +0 as a sum that starts from 0 gives.
     for (const auto& [size, width] : {std::pair{5, 7}, std::pair{7, 7}, std::pair{37, 9}, std::pair{64, 3}}) {
-        MomentSettings s;
-        s.kind = MomentKind::Hamburger4;   // four channels, some negative
-        MomentMap m{size, momentCount(s.kind), {}};
-        m.values.resize(size_t(size) * size_t(size) * size_t(m.channels));
-        uint64_t state = 99;
-        for (size_t k = 0; k < size_t(size) * size_t(size); ++k) {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            momentsOf(s, double(state >> 11) * 0x1p-53, &m.values[k * size_t(m.channels)]);
+        MomentMap m = randomMoments(MomentKind::ExponentialVariance, size, 99);
+        for (int y = 0; y < std::min(size, 12); ++y) {
+            for (int x = 0; x < std::min(size, 12); ++x) {
+                for (int c = 0; c < m.channels; ++c) m.values[(size_t(y) * size_t(size) + size_t(x)) * size_t(m.channels) + size_t(c)] = -0.0;
+            }
         }
         const std::vector<double> w = blurWeights(BlurKind::Gaussian, width);
         const MomentMap blurred = blurMoments(m, w);
-        const auto plainPass = [&](const MomentMap& from, int dx, int dy) {
-            MomentMap to{size, from.channels, {}};
-            to.values.resize(from.values.size());
-            for (int y = 0; y < size; ++y) {
-                for (int x = 0; x < size; ++x) {
-                    for (int c = 0; c < from.channels; ++c) {
-                        double sum = 0.0;
-                        for (int k = 0; k < width; ++k) {
-                            const int o = k - width / 2;
-                            sum += w[k] * from.at(x + o * dx, y + o * dy)[c];
-                        }
-                        to.values[(size_t(y) * size_t(size) + size_t(x)) * size_t(from.channels) + size_t(c)] = sum;
-                    }
-                }
-            }
-            return to;
-        };
-        const MomentMap plain = plainPass(plainPass(m, 1, 0), 0, 1);
+        const MomentMap plain = plainBlurPass(plainBlurPass(m, w, 1, 0), w, 0, 1);
         INFO("size " << size << ", width " << width);
         CHECK(std::memcmp(blurred.values.data(), plain.values.data(), plain.values.size() * sizeof(double)) == 0);
-        // Lookups inside the map and across its sides, one at a time and as a run.
+        // Lookups on a grid over the map and past each side, and at extreme texels, one at a
+        // time and as a run.
         std::vector<glm::dvec2> texels;
-        for (int k = 0; k < 200; ++k) {
-            texels.push_back(glm::dvec2(-1.3 + 0.0071 * k * size, size + 0.9 - 0.0067 * k * size));
+        for (double y = -1.5; y <= size + 1.5; y += 0.37) {
+            for (double x = -1.5; x <= size + 1.5; x += 0.41) texels.push_back({x, y});
         }
+        const double inf = std::numeric_limits<double>::infinity();
+        for (double e : {std::nan(""), inf, -inf, 1e300, -1e300}) texels.push_back({e, 2.0}), texels.push_back({2.0, e});
         std::vector<double> run(texels.size() * size_t(m.channels)), one(run.size());
         sampleBilinearRun(blurred, texels.data(), texels.size(), run.data());
         for (size_t k = 0; k < texels.size(); ++k) sampleBilinear(blurred, texels[k], &one[k * size_t(m.channels)]);
         CHECK(std::memcmp(run.data(), one.data(), run.size() * sizeof(double)) == 0);
-        for (size_t k = 0; k < texels.size(); ++k) {
+        for (size_t k = 0; k + 10 < texels.size(); ++k) {
             // Bilinear between the four clamped texel centres around the texel, as defined.
             const glm::dvec2 base = texels[k] - 0.5;
             const int x = int(std::floor(base.x)), y = int(std::floor(base.y));
@@ -149,9 +173,29 @@ TEST_CASE("blur and bilinear runs: the bits of the plain per-texel sums, borders
                 const double a = blurred.at(x, y)[c], b = blurred.at(x + 1, y)[c];
                 const double below = blurred.at(x, y + 1)[c], belowRight = blurred.at(x + 1, y + 1)[c];
                 const double expected = (1.0 - fy) * ((1.0 - fx) * a + fx * b) + fy * ((1.0 - fx) * below + fx * belowRight);
-                CHECK(one[k * size_t(m.channels) + size_t(c)] == expected);
+                REQUIRE(sameBits(one[k * size_t(m.channels) + size_t(c)], expected));
             }
         }
+    }
+}
+
+TEST_CASE("soft receivers: the texel and distance are the bits of glm's full matrix products") {
+    // softReceiver computes only the rows it uses, in glm's order of products and sums.
+    SoftShadowMap soft;
+    soft.map.view.viewFromWorld = glm::lookAt(glm::dvec3(0.3, 6.0, -0.2), glm::dvec3(0.1, 0.0, 0.4), glm::dvec3(0.0, 0.0, 1.0));
+    soft.map.texelFromWorld = glm::dmat4(glm::dvec4(200.3, 0.7, -0.2, 0.01), glm::dvec4(-1.1, 190.0, 0.3, -0.02),
+                                         glm::dvec4(0.5, -0.25, 3.0, -1.0), glm::dvec4(256.5, 250.25, -0.125, 6.5)) *
+                                soft.map.view.viewFromWorld;
+    uint64_t state = 7;
+    for (int k = 0; k < 1000; ++k) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        const glm::dvec3 P(glm::vec3(double(state >> 40) * 0x1p-20 - 8.0, double((state >> 20) & 0xfffff) * 0x1p-19 - 1.0,
+                                     double(state & 0xfffff) * 0x1p-18 - 2.0));
+        const glm::dvec4 t = soft.map.texelFromWorld * glm::dvec4(P, 1.0), v = soft.map.view.viewFromWorld * glm::dvec4(P, 1.0);
+        const SoftReceiver r = softReceiver(soft, P);
+        REQUIRE(sameBits(r.texel.x, t.x / t.w));
+        REQUIRE(sameBits(r.texel.y, t.y / t.w));
+        REQUIRE(sameBits(r.distance, -v.z));
     }
 }
 
@@ -163,13 +207,7 @@ TEST_CASE("summed-area table: a box equals the direct box filter within the stat
         MomentSettings s;
         s.kind = kind;
         s.exponent = 10.0;
-        MomentMap m{kSize, momentCount(kind), {}};
-        m.values.resize(size_t(kSize) * kSize * size_t(m.channels));
-        uint64_t state = 12345;
-        for (size_t k = 0; k < size_t(kSize) * kSize; ++k) {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            momentsOf(s, double(state >> 11) * 0x1p-53, &m.values[k * m.channels]);
-        }
+        const MomentMap m = randomMoments(kind, kSize, 12345, s.exponent);
         double total = 0.0, largest = 0.0;
         for (double v : m.values) total += std::abs(v), largest = std::max(largest, std::abs(v));
         const SummedAreaTable table = summedAreaTable(m);
