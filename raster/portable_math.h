@@ -171,6 +171,24 @@ inline double acos(double x) {
     return 2.0 * atan(std::sqrt((1.0 - x) / (1.0 + x)));
 }
 
+// atan2(y, x) in [-pi, pi]: the angle in the first quadrant from atan of the ratio that is at
+// most 1 (pi/2 - atan of the other), then reflected by the signs, so atan2(+-0, -0) = +-pi
+// and atan2(+-0, +0) = +-0 as in libm.
+inline double atan2(double y, double x) {
+    if (std::isnan(x) || std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
+    const double ax = std::abs(x), ay = std::abs(y);
+    double angle;
+    if (std::isinf(ax) && std::isinf(ay)) {
+        angle = 0.5 * detail::kHalfPi;
+    } else if (ax >= ay) {
+        angle = ax == 0.0 ? 0.0 : atan(ay / ax);
+    } else {
+        angle = detail::kHalfPi - atan(ax / ay);
+    }
+    if (std::signbit(x)) angle = detail::kPi - angle;
+    return std::signbit(y) ? -angle : angle;
+}
+
 // sqrt(a^2 + b^2) (sqrt is correctly rounded by IEEE 754; no overflow at scene scales).
 inline double hypot(double a, double b) { return std::sqrt(a * a + b * b); }
 

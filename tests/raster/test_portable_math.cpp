@@ -76,6 +76,26 @@ TEST_CASE("portable sin, cos, tan, exp, log, log2, exp2, pow, atan, acos are wit
     CHECK(ulps(portable::hypot(3.0, 4.0), 5.0) == 0.0);
 }
 
+TEST_CASE("portable atan2 is within a few ulps of libm in every quadrant, with libm's signed zeros and axes") {
+    double worst = 0.0;
+    for (int k = 0; k < 100000; ++k) {
+        const double angle = -3.2 + 6.4 * k / 99999.0, radius = 0.01 + 3.0 * (k % 17);
+        const double y = radius * std::sin(angle), x = radius * std::cos(angle);
+        worst = std::max(worst, ulps(portable::atan2(y, x), std::atan2(y, x)));
+    }
+    CHECK(worst <= 3.0);
+    const double inf = std::numeric_limits<double>::infinity();
+    for (double y : {0.0, -0.0, 1.0, -1.0, inf, -inf}) {
+        for (double x : {0.0, -0.0, 2.0, -2.0, inf, -inf}) {
+            INFO("atan2(" << y << ", " << x << ")");
+            const double expected = std::atan2(y, x), got = portable::atan2(y, x);
+            CHECK(ulps(got, expected) <= 1.0);
+            CHECK(std::signbit(got) == std::signbit(expected));
+        }
+    }
+    CHECK(std::isnan(portable::atan2(std::numeric_limits<double>::quiet_NaN(), 1.0)));
+}
+
 TEST_CASE("portable math is exact where it promises and keeps libm's special values") {
     for (int k = -1074; k <= 1023; ++k) {
         INFO("k = " << k);
