@@ -1,0 +1,39 @@
+#include "shading/environment/environment_debug.h"
+
+#include <algorithm>
+
+namespace shadowlab {
+
+std::vector<glm::vec3> shImage(const EnvironmentMap& map, const ShCoefficients& coefficients, double scale) {
+    std::vector<glm::vec3> image(map.radiance.size());
+    for (int j = 0; j < map.height; ++j) {
+        for (int i = 0; i < map.width; ++i) {
+            const glm::dvec3 d = map.direction((i + 0.5) / map.width, (j + 0.5) / map.height);
+            image[size_t(j) * size_t(map.width) + size_t(i)] = glm::vec3(scale * evaluate(coefficients, d));
+        }
+    }
+    return image;
+}
+
+std::vector<uint8_t> lightsImage(const EnvironmentMap& map, const std::vector<EnvironmentLight>& lights,
+                                 const ToneMapOptions& tone) {
+    std::vector<uint8_t> rgb = toSrgb8Image(map.radiance, tone);
+    const auto paint = [&](int i, int j, glm::u8vec3 colour) {
+        if (i < 0 || j < 0 || i >= map.width || j >= map.height) return;
+        uint8_t* p = &rgb[3 * (size_t(j) * size_t(map.width) + size_t(i))];
+        p[0] = colour.r, p[1] = colour.g, p[2] = colour.b;
+    };
+    const glm::u8vec3 grey(128, 128, 128), red(255, 0, 0);
+    for (const EnvironmentLight& l : lights) {
+        for (int i = l.first.x; i < l.last.x; ++i) paint(i, l.first.y, grey), paint(i, l.last.y - 1, grey);
+        for (int j = l.first.y; j < l.last.y; ++j) paint(l.first.x, j, grey), paint(l.last.x - 1, j, grey);
+    }
+    for (const EnvironmentLight& l : lights) {
+        const glm::ivec2 t = map.texelToward(l.direction);
+        for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di) paint(t.x + di, t.y + dj, red);
+    }
+    return rgb;
+}
+
+}  // namespace shadowlab
