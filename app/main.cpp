@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_passes.h"
+#include "app/environment.h"
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
 #include "app/sweep.h"
@@ -334,6 +335,17 @@ void addBenchCommand(CLI::App& app, BenchArgs& a) {
     b->callback([&a] { runBenchCommand(a); });
 }
 
+void addEnvironmentCommand(CLI::App& app, EnvironmentArgs& a) {
+    CLI::App* e = app.add_subcommand("environment", "an environment map's buffers: SH reconstruction and irradiance, median-cut lights");
+    e->add_option("map", a.map, "latitude-longitude map (.exr or .hdr)")->required()->check(CLI::ExistingFile);
+    e->add_option("--rotation", a.rotationDegrees, "turn about +Y, degrees (right-handed)")->capture_default_str()->check(CLI::Range(-3600.0, 3600.0));
+    e->add_option("--lights", a.lights, "median-cut lights to draw")->capture_default_str()->check(CLI::Range(1, 1 << 20));
+    e->add_option("--sh-window", a.shWindow, "sinc^4 window width against ringing (0: off, else > 2)")->capture_default_str();
+    e->add_option("--exposure", a.exposure, "stops for the PNGs")->capture_default_str()->check(CLI::Range(-30.0f, 30.0f));
+    e->add_option("--out", a.outDir, "directory for the EXR, PNG and JSON files")->capture_default_str();
+    e->callback([&a] { runEnvironmentCommand(a); });
+}
+
 void addTechniquesCommand(CLI::App& app) {
     app.add_subcommand("techniques", "list the shadow techniques and their parameters")->callback(printTechniques);
 }
@@ -373,6 +385,7 @@ int main(int argc, char** argv) {
     CompareArgs compare;
     BenchArgs bench;
     ExportArgs exportObj;
+    EnvironmentArgs environment;
     addRenderCommand(app, render);
     addSweepCommand(app, sweep);
     addScalingCommand(app, scaling);
@@ -380,6 +393,7 @@ int main(int argc, char** argv) {
     addBenchCommand(app, bench);
     addTechniquesCommand(app);
     addExportObjCommand(app, exportObj);
+    addEnvironmentCommand(app, environment);
     try {
         requireKnownCommand(app, argc, argv);
         app.parse(argc, argv);

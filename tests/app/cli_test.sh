@@ -80,7 +80,7 @@ expect_png() {
 
 # ---- Help ---------------------------------------------------------------------------------
 expect_usage --help
-for command in render sweep compare bench scaling export-obj techniques; do
+for command in render sweep compare bench scaling export-obj techniques environment; do
     expect_usage "$command" --help
 done
 run techniques
@@ -107,6 +107,16 @@ expect_error "render without scene" render -o "$scratch/x.png"
 expect_error "bad --width" render sphere-box --width 0 -o "$scratch/x.png"
 expect_error "csm without a sun" render sphere-box --technique csm "${tiny[@]}" -o "$scratch/x.png"
 expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
+maps=$(dirname "${BASH_SOURCE[0]}")/../../scenes/environments
+expect_error "environment of a missing map" environment "$scratch/none.hdr"
+expect_error "environment with no lights" environment "$maps/pmndrs_sky.hdr" --lights 0 --out "$scratch/env"
+expect_error "environment with a bad SH window" environment "$maps/pmndrs_sky.hdr" --sh-window 1 --out "$scratch/env"
+printf 'P6 2 1 255\n......' >"$scratch/ldr.hdr"
+expect_error "environment of an 8-bit image" environment "$scratch/ldr.hdr" --out "$scratch/env"
+if grep -q "not a Radiance HDR file" "$err"; then pass; else fail "the 8-bit map's error does not say why: $(cat "$err")"; fi
+run environment "$maps/pmndrs_sky.hdr" --lights 8 --rotation 30 --out "$scratch/env"
+if [ "$rc" -eq 0 ] && grep -q "8 median-cut lights" "$out"; then pass; else fail "environment exited $rc: $(cat "$err")"; fi
+for image in environment sh-radiance sh-irradiance lights; do expect_png "$scratch/env/$image.png"; done
 
 # ---- Whole or nothing -------------------------------------------------------------------
 # Every failure above named -o x.png: none may have left it, or a temporary of it.

@@ -1,0 +1,69 @@
+#include "app/environment.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "raster/portable_constants.h"
+#include "shading/environment/environment_debug.h"
+#include "shading/environment/environment_file.h"
+#include "shading/image_io.h"
+
+namespace shadowlab {
+namespace {
+
+constexpr double kPi = portable::detail::kPi;
+
+void writeImage(const std::filesystem::path& dir, const std::string& name, const EnvironmentMap& map,
+                const std::vector<glm::vec3>& radiance, const ToneMapOptions& tone) {
+    ImageChannels image;
+    image.width = map.width, image.height = map.height;
+    setRadiance(image, radiance);
+    writeExr(dir / (name + ".exr"), image);
+    writePng(dir / (name + ".png"), map.width, map.height, toSrgb8Image(radiance, tone));
+}
+
+nlohmann::ordered_json lightsJson(const std::vector<EnvironmentLight>& lights) {
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (const EnvironmentLight& l : lights) {
+        rows.push_back({{"direction", {l.direction.x, l.direction.y, l.direction.z}},
+                        {"power", {l.power.r, l.power.g, l.power.b}},
+                        {"texels_first", {l.first.x, l.first.y}},
+                        {"texels_last", {l.last.x, l.last.y}}});
+    }
+    return rows;
+}
+
+}  // namespace
+
+void runEnvironmentCommand(const EnvironmentArgs& a) {
+    const EnvironmentMap map = readEnvironmentMap(a.map, a.rotationDegrees * kPi / 180.0);
+    const ShCoefficients radiance = projectRadiance(map);
+    const ShCoefficients irradiance = irradianceOf(radiance, a.shWindow);
+    const std::vector<EnvironmentLight> lights = medianCutLights(map, a.lights);
+    const std::filesystem::path dir(a.outDir);
+    std::filesystem::create_directories(dir);
+    const ToneMapOptions tone{a.exposure, ToneOperator::Reinhard};
+    writeImage(dir, "environment", map, map.radiance, tone);
+    writeImage(dir, "sh-radiance", map, shImage(map, radiance), tone);
+    writeImage(dir, "sh-irradiance", map, shImage(map, irradiance, 1.0 / kPi), tone);
+    writePng(dir / "lights.png", map.width, map.height, lightsImage(map, lights, tone));
+    const glm::dvec3 power = environmentPower(map);
+    nlohmann::ordered_json json = {{"map", map.source},
+                                   {"width", map.width},
+                                   {"height", map.height},
+                                   {"rotation_degrees", a.rotationDegrees},
+                                   {"power", {power.r, power.g, power.b}},
+                                   {"sh_radiance", nlohmann::ordered_json::array()},
+                                   {"lights", lightsJson(lights)}};
+    for (const glm::dvec3& c : radiance.c) json["sh_radiance"].push_back({c.r, c.g, c.b});
+    writeTextFile(dir / "environment.json", json.dump(2) + "\n");
+    std::printf("%s: %d x %d texels, integral of L dOmega (%.6g, %.6g, %.6g)\n", map.source.c_str(), map.width, map.height,
+                power.r, power.g, power.b);
+    std::printf("L_00 (%.6g, %.6g, %.6g); %d median-cut lights; buffers in %s\n", radiance.c[0].r, radiance.c[0].g,
+                radiance.c[0].b, a.lights, dir.c_str());
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,20 @@
+// `shadowlab environment MAP`: reads an environment map as the techniques would, and writes
+// its intermediate buffers (docs/environment-lighting.md): the map, its nine-coefficient
+// spherical-harmonic reconstruction, the irradiance of a white Lambert surface facing each
+// direction, and the median-cut lights drawn on the map, with the figures printed.
+#pragma once
+
+#include <string>
+
+namespace shadowlab {
+
+struct EnvironmentArgs {
+    std::string map, outDir = "out/environment";
+    double rotationDegrees = 0.0, shWindow = 0.0;
+    int lights = 16;
+    float exposure = 0.0f;
+};
+
+void runEnvironmentCommand(const EnvironmentArgs& args);
+
+}  // namespace shadowlab
