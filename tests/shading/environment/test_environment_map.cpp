@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include "raster/portable_constants.h"
 #include "shading/environment/environment_file.h"
 #include "shading/image_io.h"
+#include "tests/scratch_directory.h"
 
 using namespace shadowlab;
 
@@ -21,10 +23,17 @@ const std::filesystem::path kMaps = std::filesystem::path(SHADOWLAB_SOURCE_DIR) 
 
 double distance(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b); }
 
-std::filesystem::path scratch(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "shadowlab_test_environment";
-    std::filesystem::create_directories(dir);
-    return dir / name;
+// A Radiance HDR file's bytes: the header, "-Y h +X w", then the scanlines as given.
+std::string radianceFile(int width, int height, const std::string& scanlines, const std::string& extraHeader = "") {
+    return "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n" + extraHeader + "\n-Y " + std::to_string(height) + " +X " +
+           std::to_string(width) + "\n" + scanlines;
+}
+
+// One run-length scanline of width w (>= 8): every channel a run of w copies of its byte.
+std::string rleScanline(int w, uint8_t r, uint8_t g, uint8_t b, uint8_t e) {
+    std::string s = {char(2), char(2), char(w >> 8), char(w & 255)};
+    for (uint8_t c : {r, g, b, e}) s += {char(128 + w), char(c)};
+    return s;
 }
 
 }  // namespace
@@ -72,7 +81,8 @@ TEST_CASE("environment map: a rotation turns the map about +Y, counter-clockwise
 }
 
 TEST_CASE("environment map: texel solid angles are the exact areas, summing to 4 pi") {
-    for (const auto& [w, h] : {std::pair{2, 1}, std::pair{64, 32}, std::pair{1024, 512}, std::pair{30, 7}}) {
+    for (const glm::ivec2 size : {glm::ivec2(2, 1), glm::ivec2(64, 32), glm::ivec2(1024, 512), glm::ivec2(30, 7)}) {
+        const int w = size.x, h = size.y;
         const EnvironmentMap map = constantEnvironment(w, h, glm::vec3(1.0f));
         double total = 0.0;
         for (int j = 0; j < h; ++j) total += map.texelSolidAngle(j) * w;
@@ -113,6 +123,20 @@ TEST_CASE("environment files: the shipped EXR (DWAB) and Radiance HDR of one map
     CHECK(agree == compared);
 }
 
+TEST_CASE("environment files: Radiance HDR scanlines flat and run-length, RGBE decoded at the step's centre, EXPOSURE divided out") {
+    // (m + 0.5) 2^(E - 136): m = 127, E = 129 is 127.5 / 128; E = 0 is black.
+    const std::string flat = std::string("\x7f\x00\x40\x81", 4) + std::string("\x10\x20\x30\x00", 4);
+    const EnvironmentMap a = parseEnvironmentMap(radianceFile(2, 1, flat), "flat.hdr");
+    CHECK(a.at(0, 0) == glm::vec3(127.5f / 128.0f, 0.5f / 128.0f, 64.5f / 128.0f));
+    CHECK(a.at(1, 0) == glm::vec3(0.0f));
+    const EnvironmentMap b = parseEnvironmentMap(radianceFile(8, 2, rleScanline(8, 127, 0, 64, 129) + rleScanline(8, 1, 2, 3, 136)),
+                                                 "rle.hdr");
+    CHECK(b.at(7, 0) == a.at(0, 0));
+    CHECK(b.at(3, 1) == glm::vec3(1.5f, 2.5f, 3.5f));
+    const EnvironmentMap c = parseEnvironmentMap(radianceFile(2, 1, flat, "EXPOSURE=2\nEXPOSURE=0.25\n"), "exposed.hdr");
+    CHECK(c.at(0, 0) == a.at(0, 0) * 2.0f);   // stored values were multiplied by 2 x 0.25
+}
+
 TEST_CASE("environment files: bad files are errors that name the file") {
     const auto fails = [](const std::filesystem::path& path, const std::string& part) {
         INFO(path << ": " << part);
@@ -124,16 +148,33 @@ TEST_CASE("environment files: bad files are errors that name the file") {
             CHECK(std::string(e.what()).find(part) != std::string::npos);
         }
     };
+    const test::ScratchDirectory dir("environment_files");
+    const auto scratch = [&](const std::string& name) { return dir.path / name; };
+    const auto hdr = [&](const std::string& name, const std::string& bytes) {
+        std::ofstream(scratch(name), std::ios::binary) << bytes;
+        return scratch(name);
+    };
     fails(scratch("missing.exr"), "missing.exr");
-    fails(scratch("map.png"), "unknown format");
-    {
-        std::ofstream(scratch("eight-bit.hdr"), std::ios::binary) << "\x89PNG\r\n\x1a\n not radiance";
-        fails(scratch("eight-bit.hdr"), "not a Radiance HDR file");
-    }
-    {
-        std::ofstream(scratch("truncated.hdr"), std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n\x02\x02";
-        fails(scratch("truncated.hdr"), "truncated.hdr");
-    }
+    fails(hdr("eight-bit.hdr", "\x89PNG\r\n\x1a\n not radiance"), "neither OpenEXR nor Radiance HDR");
+    // Cut inside the scanline header, after it (stb_image 2.27 spins forever there), inside
+    // flat pixels, inside a run-length channel, and far too short for its rows.
+    // (A first row of literal runs, 40 bytes, keeps the file above the fewest bytes two rows
+    // need, so the second row's reads meet the end.)
+    std::string literalRow = {char(2), char(2), char(0), char(8)};
+    for (int c = 0; c < 4; ++c) literalRow += char(8) + std::string(8, char(100 + c));
+    CHECK(parseEnvironmentMap(radianceFile(8, 1, literalRow), "literal.hdr").at(3, 0).r == doctest::Approx(100.5 * 0x1p-33));
+    fails(hdr("cut-header.hdr", radianceFile(8, 2, literalRow + "\x02\x02")), "truncated (at byte");
+    fails(hdr("cut-after-header.hdr", radianceFile(8, 2, literalRow + "\x02\x02\x00\x08")), "truncated (at byte");
+    fails(hdr("cut-run.hdr", radianceFile(8, 2, literalRow + rleScanline(8, 1, 2, 3, 4).substr(0, 9))), "truncated (at byte");
+    fails(hdr("cut-flat.hdr", radianceFile(4, 1, "\x10\x20\x30\x81\x10")), "truncated");
+    fails(hdr("overrun.hdr", radianceFile(8, 1, std::string("\x02\x02\x00\x08\x89\x01", 6) + std::string(16, '\x01'))), "overruns");
+    fails(hdr("zero-run.hdr", radianceFile(8, 1, std::string("\x02\x02\x00\x08\x00", 5) + std::string(16, '\x01'))), "overruns");
+    fails(hdr("too-short.hdr", radianceFile(8, 1000, rleScanline(8, 1, 2, 3, 4))), "too few bytes for 1000 scanlines");
+    fails(hdr("orientation.hdr", "#?RADIANCE\n\n+Y 2 +X 4\n"), "is not '-Y H +X W'");
+    fails(hdr("huge.hdr", "#?RADIANCE\n\n-Y 2 +X 9000\n"), "1 to 8192 a side");
+    fails(hdr("format.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 2\n"), "unsupported FORMAT=32-bit_rle_xyze");
+    fails(hdr("exposure.hdr", "#?RADIANCE\nEXPOSURE=-1\n\n-Y 1 +X 2\n"), "EXPOSURE must be a positive number");
+    fails(hdr("no-end.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n"), "truncated");
     ImageChannels image;
     image.width = 4, image.height = 2;
     for (const char* name : {channel::R, channel::G, channel::B}) image.set(name, std::vector<float>(8, 1.0f));
@@ -155,6 +196,8 @@ TEST_CASE("environment files: bad files are errors that name the file") {
 }
 
 TEST_CASE("environment files: negative texels of an EXR are clamped to 0, the rest kept exactly") {
+    const test::ScratchDirectory dir("environment_negative");
+    const auto scratch = [&](const std::string& name) { return dir.path / name; };
     ImageChannels image;
     image.width = 4, image.height = 2;
     image.set(channel::R, {1.0f, -2.0f, 3.5f, 0.0f, -0.0f, 7.25f, 1e-30f, 2.0f});
