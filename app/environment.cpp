@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 
 #include <nlohmann/json.hpp>
 
@@ -39,6 +38,7 @@ nlohmann::ordered_json lightsJson(const std::vector<EnvironmentLight>& lights) {
 }  // namespace
 
 void runEnvironmentCommand(const EnvironmentArgs& a) {
+    checkShWindow(a.shWindow);   // before the work of reading the map
     const EnvironmentMap map = readEnvironmentMap(a.map, a.rotationDegrees * kPi / 180.0);
     const ShCoefficients radiance = projectRadiance(map);
     const ShCoefficients irradiance = irradianceOf(radiance, a.shWindow);

@@ -1,7 +1,5 @@
 #include "shading/environment/environment_debug.h"
 
-#include <algorithm>
-
 namespace shadowlab {
 
 std::vector<glm::vec3> shImage(const EnvironmentMap& map, const ShCoefficients& coefficients, double scale) {
@@ -9,7 +7,7 @@ std::vector<glm::vec3> shImage(const EnvironmentMap& map, const ShCoefficients& 
     for (int j = 0; j < map.height; ++j) {
         for (int i = 0; i < map.width; ++i) {
             const glm::dvec3 d = map.direction((i + 0.5) / map.width, (j + 0.5) / map.height);
-            image[size_t(j) * size_t(map.width) + size_t(i)] = glm::vec3(scale * evaluate(coefficients, d));
+            image[size_t(j) * size_t(map.width) + size_t(i)] = glm::vec3(scale * evaluateSh(coefficients, d));
         }
     }
     return image;

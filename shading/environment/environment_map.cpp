@@ -44,9 +44,13 @@ glm::ivec2 EnvironmentMap::texelToward(const glm::dvec3& d) const {
     return {std::min(int(uv.x * width), width - 1), std::min(int(uv.y * height), height - 1)};
 }
 
-glm::vec3 EnvironmentMap::radianceToward(const glm::dvec3& d) const {
-    const glm::ivec2 t = texelToward(d);
-    return at(t.x, t.y);
+glm::dvec3 environmentPower(const EnvironmentMap& map) {
+    glm::dvec3 total(0.0);
+    for (int j = 0; j < map.height; ++j) {
+        const double solidAngle = map.texelSolidAngle(j);
+        for (int i = 0; i < map.width; ++i) total += glm::dvec3(map.at(i, j)) * solidAngle;
+    }
+    return total;
 }
 
 EnvironmentMap constantEnvironment(int width, int height, const glm::vec3& radiance) {

@@ -46,11 +46,13 @@ struct EnvironmentMap {
     glm::dvec3 direction(double u, double v) const;
     // The map coordinates (u, v) of a world direction (any length but 0), u in [0, 1).
     glm::dvec2 coordinates(const glm::dvec3& direction) const;
-    // The texel whose region holds the direction, and its radiance (a NaN direction, which
-    // no caller should pass, gives texel (0, 0)).
+    // The texel whose region holds the direction (a NaN direction, which no caller should
+    // pass, gives texel (0, 0)).
     glm::ivec2 texelToward(const glm::dvec3& direction) const;
-    glm::vec3 radianceToward(const glm::dvec3& direction) const;
 };
+
+// The integral of the map's radiance over the sphere, sum of L dOmega over every texel.
+glm::dvec3 environmentPower(const EnvironmentMap& map);
 
 // A uniform map of one radiance (tests, furnace scenes).
 EnvironmentMap constantEnvironment(int width, int height, const glm::vec3& radiance);

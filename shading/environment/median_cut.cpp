@@ -1,6 +1,10 @@
 #include "shading/environment/median_cut.h"
 
+#include <algorithm>
+#include <cstddef>
+#include <queue>
 #include <stdexcept>
+#include <utility>
 #include <string>
 
 #include "raster/portable_constants.h"
@@ -47,20 +51,26 @@ bool cutsColumns(const Region& r, const EnergyGrid& g) {
     return width >= height;
 }
 
-// The two halves of a region: cut at the first texel edge where the first part's energy
-// reaches half (at least one texel each side), or in the middle for a region of no energy.
+// The two halves of a region: cut at the texel edge nearest to half the energy (at least one
+// texel each side), or in the middle for a region of no energy.
 std::pair<Region, Region> cut(const Region& r, const EnergyGrid& g) {
     const bool columns = cutsColumns(r, g);
     const int axis = columns ? 0 : 1, from = r.first[axis], to = r.last[axis];
     int edge = from + (to - from) / 2;
     if (r.energy > 0.0) {
-        double cumulative = 0.0;
-        for (edge = from + 1; edge < to - 1; ++edge) {
+        // The slice that crosses half goes to the side that leaves the halves closer.
+        double before = 0.0;
+        for (edge = from + 1; edge < to; ++edge) {
             glm::ivec2 sliceFirst = r.first, sliceLast = r.last;
             sliceFirst[axis] = edge - 1, sliceLast[axis] = edge;
-            cumulative += g.sum(sliceFirst, sliceLast);
-            if (cumulative >= 0.5 * r.energy) break;
+            const double after = before + g.sum(sliceFirst, sliceLast);
+            if (after >= 0.5 * r.energy) {
+                if (0.5 * r.energy - before < after - 0.5 * r.energy && edge - 1 > from) --edge;
+                break;
+            }
+            before = after;
         }
+        edge = std::min(edge, to - 1);
     }
     Region a = r, b = r;
     a.last[axis] = edge, b.first[axis] = edge;
@@ -81,10 +91,12 @@ EnvironmentLight lightOf(const Region& r, const EnvironmentMap& map, const Energ
             centroid += g.at(i, j) * map.direction((i + 0.5) / map.width, (j + 0.5) / map.height);
         }
     }
+    // Energy spread evenly around the sphere cancels to rounding noise: no direction there.
     const double length = glm::length(centroid);
     const glm::ivec2 middle = (r.first + r.last) / 2;
-    light.direction = length > 0.0 ? centroid / length
-                                   : map.direction((middle.x + 0.5) / map.width, (middle.y + 0.5) / map.height);
+    light.direction = length > 1e-9 * r.energy && length > 0.0
+                          ? centroid / length
+                          : map.direction((middle.x + 0.5) / map.width, (middle.y + 0.5) / map.height);
     return light;
 }
 
@@ -98,27 +110,23 @@ std::vector<EnvironmentLight> medianCutLights(const EnvironmentMap& map, int cou
     }
     const EnergyGrid grid(map);
     std::vector<Region> regions = {{{0, 0}, {map.width, map.height}, grid.sum({0, 0}, {map.width, map.height})}};
+    // Splittable regions by energy, ties to the earlier region: (energy, -index) in a max-heap.
+    std::priority_queue<std::pair<double, ptrdiff_t>> next;
+    const auto offer = [&](size_t k) {
+        if (splittable(regions[k])) next.push({regions[k].energy, -ptrdiff_t(k)});
+    };
+    offer(0);
     while (int(regions.size()) < count) {
-        size_t brightest = regions.size();
-        for (size_t k = 0; k < regions.size(); ++k) {
-            if (splittable(regions[k]) && (brightest == regions.size() || regions[k].energy > regions[brightest].energy)) brightest = k;
-        }
+        const size_t brightest = size_t(-next.top().second);
+        next.pop();
         const auto [a, b] = cut(regions[brightest], grid);
         regions[brightest] = a;
         regions.push_back(b);
+        offer(brightest), offer(regions.size() - 1);
     }
     std::vector<EnvironmentLight> lights;
     for (const Region& r : regions) lights.push_back(lightOf(r, map, grid));
     return lights;
-}
-
-glm::dvec3 environmentPower(const EnvironmentMap& map) {
-    glm::dvec3 total(0.0);
-    for (int j = 0; j < map.height; ++j) {
-        const double solidAngle = map.texelSolidAngle(j);
-        for (int i = 0; i < map.width; ++i) total += glm::dvec3(map.at(i, j)) * solidAngle;
-    }
-    return total;
 }
 
 }  // namespace shadowlab

@@ -7,13 +7,15 @@
 //             so a texel near a pole, which covers little of the sphere, weighs little;
 //   a cut     splits a region across its longer side on the sphere (its width in radians
 //             scaled by the sine of its middle latitude, against its height in radians), at
-//             the texel edge where the energy of the first part first reaches half;
+//             the texel edge that splits the energy most nearly in half;
 //   N lights  Debevec cuts every region k times for 2^k lights; any N comes from cutting, one
 //             at a time, the region with the most energy that still has two texels along a
-//             side (ties: the earlier region), so N = 2^k gives his regions exactly when the
-//             halves stay balanced, and the brightest parts get the most lights;
+//             side (ties: the earlier region; a heap, so N up to the texel count stays
+//             O(N log N) in choosing), so N = 2^k gives his regions when the halves stay
+//             balanced, and the brightest parts get the most lights;
 //   a light   its direction the energy-weighted mean of its texels' centre directions,
-//             normalised (a region of no energy: its centre texel's direction); its power, in
+//             normalised (a region whose mean cancels to rounding, such as a uniform map's
+//             one region, or of no energy: its centre texel's direction); its power, in
 //             RGB, the region's integral of radiance over solid angle, sum L dOmega, so the
 //             lights' total is the map's integral and a Lambert surface of normal n facing
 //             light l receives the irradiance power_l max(0, n . d_l).
@@ -31,14 +33,11 @@ namespace shadowlab {
 
 struct EnvironmentLight {
     glm::dvec3 direction{0.0, 1.0, 0.0};   // unit, towards the light (world space, rotation included)
-    glm::dvec3 power{0.0};                 // RGB, W m^-2 sr^0: the region's integral of L dOmega
+    glm::dvec3 power{0.0};                 // RGB: the region's integral of L dOmega, the irradiance it gives at normal incidence
     glm::ivec2 first{0}, last{0};          // the region's texels: [first, last) in (i, j)
 };
 
 // Throws std::invalid_argument unless 1 <= count <= the map's texel count.
 std::vector<EnvironmentLight> medianCutLights(const EnvironmentMap& map, int count);
-
-// The integral of the map's radiance over the sphere, sum of L dOmega over every texel.
-glm::dvec3 environmentPower(const EnvironmentMap& map);
 
 }  // namespace shadowlab

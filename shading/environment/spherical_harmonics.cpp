@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -73,11 +74,6 @@ std::array<double, kShCoefficients> shBasis(const glm::dvec3& d) {
             kC22 * (d.x * d.x - d.z * d.z)};
 }
 
-std::array<double, kShCoefficients> shTexelIntegrals(const EnvironmentMap& map, int i, int j) {
-    return texelIntegrals(rowIntegrals(map.rowEdgeTheta(j), map.rowEdgeTheta(j + 1)),
-                          columnIntegrals(map.columnEdgePhi(i), map.columnEdgePhi(i + 1)));
-}
-
 ShCoefficients projectRadiance(const EnvironmentMap& map) {
     std::vector<ColumnIntegrals> columns(size_t(map.width));
     for (int i = 0; i < map.width; ++i) columns[i] = columnIntegrals(map.columnEdgePhi(i), map.columnEdgePhi(i + 1));
@@ -98,11 +94,15 @@ ShCoefficients projectRadiance(const EnvironmentMap& map) {
     return total;
 }
 
-ShCoefficients irradianceOf(const ShCoefficients& radiance, double windowWidth) {
-    if (windowWidth != 0.0 && !(windowWidth > 2.0)) {
-        throw std::invalid_argument("spherical-harmonic window width must be 0 (off) or above 2, not " +
+void checkShWindow(double windowWidth) {
+    if (windowWidth != 0.0 && !(windowWidth > 2.0 && std::isfinite(windowWidth))) {
+        throw std::invalid_argument("spherical-harmonic window width must be 0 (off) or a number above 2, not " +
                                     std::to_string(windowWidth));
     }
+}
+
+ShCoefficients irradianceOf(const ShCoefficients& radiance, double windowWidth) {
+    checkShWindow(windowWidth);
     ShCoefficients out;
     for (int k = 0; k < kShCoefficients; ++k) {
         const int l = kBand[k];
@@ -116,7 +116,7 @@ ShCoefficients irradianceOf(const ShCoefficients& radiance, double windowWidth) 
     return out;
 }
 
-glm::dvec3 evaluate(const ShCoefficients& coefficients, const glm::dvec3& direction) {
+glm::dvec3 evaluateSh(const ShCoefficients& coefficients, const glm::dvec3& direction) {
     const std::array<double, kShCoefficients> y = shBasis(direction);
     glm::dvec3 sum(0.0);
     for (int k = 0; k < kShCoefficients; ++k) sum += coefficients.c[k] * y[k];

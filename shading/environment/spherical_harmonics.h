@@ -42,17 +42,18 @@ struct ShCoefficients {
 // The nine basis functions at a unit direction.
 std::array<double, kShCoefficients> shBasis(const glm::dvec3& direction);
 
-// The integrals of the nine basis functions over texel (i, j) of the map, rotation included.
-std::array<double, kShCoefficients> shTexelIntegrals(const EnvironmentMap& map, int i, int j);
-
 // L_lm of the map: rows summed in parallel, each by one task, then added in row order, so the
 // same bits for any thread count.
 ShCoefficients projectRadiance(const EnvironmentMap& map);
 
-// A_l sigma_l L_lm: coefficients whose evaluation at n is the irradiance E(n).
+// Throws std::invalid_argument unless the window width is 0 (off) or finite and above 2.
+void checkShWindow(double windowWidth);
+
+// A_l sigma_l L_lm: coefficients whose evaluation at n is the irradiance E(n) (checkShWindow
+// first).
 ShCoefficients irradianceOf(const ShCoefficients& radiance, double windowWidth = 0.0);
 
 // sum_k c_k Y_k(direction): radiance or irradiance, as the coefficients are.
-glm::dvec3 evaluate(const ShCoefficients& coefficients, const glm::dvec3& direction);
+glm::dvec3 evaluateSh(const ShCoefficients& coefficients, const glm::dvec3& direction);
 
 }  // namespace shadowlab

@@ -41,8 +41,8 @@ TEST_CASE("median cut: the regions tile the map and the lights' powers sum to it
 }
 
 TEST_CASE("median cut: regions of about equal energy, the light at its region's energy centroid") {
-    // A map dark but for one bright texel: one light of 2 holds it alone, its direction the
-    // texel's centre; with a constant map, four lights split the sphere into equal energies.
+    // A map dark but for one bright texel: of two lights, one carries all of its power, its
+    // direction the texel's centre; a constant map's four lights carry equal energies.
     EnvironmentMap map = constantEnvironment(64, 32, glm::vec3(0.0f));
     map.radiance[size_t(5) * 64 + 40] = glm::vec3(100.0f);
     const std::vector<EnvironmentLight> two = medianCutLights(map, 2);
@@ -60,8 +60,34 @@ TEST_CASE("median cut: regions of about equal energy, the light at its region's 
     const std::vector<EnvironmentLight> four = medianCutLights(constant, 4);
     for (const EnvironmentLight& l : four) {
         INFO("region " << l.first.x << "," << l.first.y << " .. " << l.last.x << "," << l.last.y);
-        CHECK(l.power.x == doctest::Approx(kPi).epsilon(0.02));   // 4 pi / 4, to a texel's share
+        CHECK(l.power.x == doctest::Approx(kPi).epsilon(1e-12));   // 4 pi / 4: the halves split exactly
     }
+}
+
+TEST_CASE("median cut: cuts follow the energy, not the middle, and the brightest region is cut next") {
+    // Two bright texels in one row, at columns 5 and 20 of 64: a cut in the middle (32) would
+    // leave both in one half; the energy median puts one in each. The brighter one's region
+    // is cut for the third light; the other's stays as it was.
+    EnvironmentMap map = constantEnvironment(64, 32, glm::vec3(0.0f));
+    map.radiance[size_t(16) * 64 + 5] = glm::vec3(10.0f);
+    map.radiance[size_t(16) * 64 + 20] = glm::vec3(1.0f);
+    const auto holding = [](const std::vector<EnvironmentLight>& lights, int column) {
+        for (const EnvironmentLight& l : lights) {
+            if (l.first.x <= column && column < l.last.x && l.first.y <= 16 && 16 < l.last.y) return l;
+        }
+        FAIL("no region holds the texel");
+        return EnvironmentLight{};
+    };
+    const std::vector<EnvironmentLight> two = medianCutLights(map, 2);
+    const EnvironmentLight bright = holding(two, 5), dim = holding(two, 20);
+    CHECK(bright.first != dim.first);
+    CHECK(bright.power.x == doctest::Approx(10.0 * map.texelSolidAngle(16)));
+    CHECK(dim.power.x == doctest::Approx(map.texelSolidAngle(16)));
+    const std::vector<EnvironmentLight> three = medianCutLights(map, 3);
+    const EnvironmentLight dimAfter = holding(three, 20);
+    CHECK(dimAfter.first == dim.first);
+    CHECK(dimAfter.last == dim.last);
+    CHECK(holding(three, 5).last - holding(three, 5).first != bright.last - bright.first);
 }
 
 TEST_CASE("median cut: the same lights on every run, and bad counts are errors") {

@@ -140,7 +140,8 @@ TEST_CASE("blur and bilinear runs: the bits of the plain per-texel sums, borders
     // plain definition clamps every tap. Sizes below, at and above the filter's width. EVSM's
     // moments include a negative channel, and a block of -0 texels wider than the filter
     // must blur to +0 as a sum that starts from 0 gives.
-    for (const auto& [size, width] : {std::pair{5, 7}, std::pair{7, 7}, std::pair{37, 9}, std::pair{64, 3}}) {
+    for (const glm::ivec2 sizeAndWidth : {glm::ivec2(5, 7), glm::ivec2(7, 7), glm::ivec2(37, 9), glm::ivec2(64, 3)}) {
+        const int size = sizeAndWidth.x, width = sizeAndWidth.y;
         MomentMap m = randomMoments(MomentKind::ExponentialVariance, size, 99);
         for (int y = 0; y < std::min(size, 12); ++y) {
             for (int x = 0; x < std::min(size, 12); ++x) {
