@@ -62,6 +62,11 @@ struct Camera {
 
 struct Environment {
     glm::vec3 ambient{0.0f};            // constant ambient radiance added to every surface
+    // A latitude-longitude map of distant radiance (conventions.md, "Lights"), read by
+    // shading/environment/environment_file.h where it is used: its path, resolved against
+    // the scene file's folder (empty: none), and its turn about +Y, right-handed.
+    std::string map;
+    float rotationDeg = 0.0f;
 };
 
 struct Scene {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 #include "raster/fixed_point.h"
 #include "scenes/camera.h"
@@ -73,10 +74,22 @@ Camera readCamera(const JsonField& field) {
     return camera;
 }
 
-Environment readEnvironment(const JsonField& field) {
-    const JsonObject object = field.object({"ambient"});
+// The map must be a file that opens now, so a mistyped name fails at load, naming the field;
+// its contents are read by the shading library (scenes/ reads no images).
+Environment readEnvironment(const JsonField& field, const std::string& directory) {
+    const JsonObject object = field.object({"ambient", "map", "rotation"});
     Environment environment;
     if (const auto ambient = object.optional("ambient")) environment.ambient = ambient->vec3(kNonNegative);
+    if (const auto map = object.optional("map")) {
+        environment.map = (fs::path(directory) / map->string()).string();
+        std::error_code ignored;
+        if (fs::is_directory(environment.map, ignored)) map->fail(environment.map + ": is a directory, not a file");
+        if (!std::ifstream(environment.map, std::ios::binary)) map->fail(environment.map + ": cannot open");
+    }
+    if (const auto rotation = object.optional("rotation")) {
+        if (environment.map.empty()) rotation->fail("turns the map, so needs \"map\"");
+        environment.rotationDeg = rotation->number({-360.0, 360.0, false, false});
+    }
     return environment;
 }
 
@@ -110,7 +123,7 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light));
     if (scene.lights.empty()) object["lights"].fail("needs at least one light");
     scene.camera = readCamera(object["camera"]);
-    if (const auto environment = object.optional("environment")) scene.environment = readEnvironment(*environment);
+    if (const auto environment = object.optional("environment")) scene.environment = readEnvironment(*environment, directory);
     checkSize(root, scene);
     return scene;
 }

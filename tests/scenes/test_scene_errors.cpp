@@ -286,6 +286,28 @@ TEST_CASE("mesh files: missing, unreadable, malformed, empty scenes") {
     });
 }
 
+TEST_CASE("environment maps: the path resolved against the scene file, the rotation in range") {
+    const test::TempDir dir;
+    writeMeshFiles(dir);
+    dir.write("sky.hdr", "#?RADIANCE\n");   // only opened here; its contents are the shading library's
+    json scene = validScene();
+    scene["environment"]["map"] = "sky.hdr";
+    scene["environment"]["rotation"] = 30;
+    const Scene loaded = loadScene(dir.write("scene.json", render(scene)));
+    CHECK(loaded.environment.map == (std::filesystem::path(dir.path("scene.json")).parent_path() / "sky.hdr").string());
+    CHECK(loaded.environment.rotationDeg == 30.0f);
+    CHECK(loadScene(dir.write("scene.json", render(validScene()))).environment.map.empty());
+    checkCases({
+        {"missing map", [](json& s) { s["environment"]["map"] = "none.exr"; }, {"environment.map: ", "none.exr: cannot open"}},
+        {"map is a directory", [](json& s) { s["environment"]["map"] = "folder.obj"; }, {"environment.map: ", "is a directory"}},
+        {"rotation out of range", [](json& s) {
+             s["environment"]["map"] = "tri.obj";
+             s["environment"]["rotation"] = 400;
+         }, {"environment.rotation: "}},
+        {"rotation without a map", [](json& s) { s["environment"]["rotation"] = 10; }, {"environment.rotation: turns the map, so needs \"map\""}},
+    });
+}
+
 TEST_CASE("scene files that cannot be read at all") {
     const test::TempDir dir;
     const std::string broken = dir.write("broken.json", "{\"meshes\": [{\"name\": \"a\",}]}");
