@@ -1,6 +1,9 @@
 // flatten(): the world-space triangle list that every technique renders, and where each
 // instance lies in it (scene.h).
+#include <optional>
+
 #include "scenes/scene.h"
+#include "scenes/shading_normals.h"
 
 namespace shadowlab {
 namespace {
@@ -15,6 +18,7 @@ void reserveFor(const Scene& scene, WorldGeometry& world) {
     world.triangles.reserve(triangles);
     world.triangleMaterial.reserve(triangles);
     world.triangleInstance.reserve(triangles);
+    world.cornerNormals.reserve(3 * triangles);
 }
 
 }  // namespace
@@ -22,6 +26,8 @@ void reserveFor(const Scene& scene, WorldGeometry& world) {
 WorldGeometry flatten(const Scene& scene) {
     WorldGeometry world;
     reserveFor(scene, world);
+    // Each mesh's corner normals once, however many instances use it.
+    std::vector<std::optional<std::vector<glm::vec3>>> meshNormals(scene.meshes.size());
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[instance.mesh];
@@ -32,6 +38,9 @@ WorldGeometry flatten(const Scene& scene) {
             world.triangleMaterial.push_back(instance.material);
             world.triangleInstance.push_back(i);
         }
+        if (!meshNormals[instance.mesh]) meshNormals[instance.mesh] = cornerShadingNormals(mesh);
+        const glm::dmat3 toWorld = normalMatrix(instance);
+        for (const glm::vec3& n : *meshNormals[instance.mesh]) world.cornerNormals.push_back(worldNormal(toWorld, n));
     }
     return world;
 }

@@ -18,8 +18,8 @@ namespace {
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
 // True for a statement "<keyword> ..." the way tinyobjloader recognises it.
-bool isStatement(std::string_view line, char keyword) {
-    return line.size() >= 2 && line[0] == keyword && isBlank(line[1]);
+bool isStatement(std::string_view line, std::string_view keyword) {
+    return line.size() > keyword.size() && line.starts_with(keyword) && isBlank(line[keyword.size()]);
 }
 
 bool isFiniteFloat(std::string_view token) {
@@ -28,22 +28,24 @@ bool isFiniteFloat(std::string_view token) {
     return error == std::errc() && end == token.data() + token.size() && roundsToFiniteFloat(value);
 }
 
-void checkVertexLine(std::string_view line, size_t lineNumber, const std::string& file) {
-    std::istringstream words{std::string(line.substr(1))};
+// A "v" or "vn" line (what names it in errors) must hold three finite numbers.
+void checkVectorLine(std::string_view line, std::string_view keyword, const char* what, size_t lineNumber,
+                     const std::string& file) {
+    std::istringstream words{std::string(line.substr(keyword.size()))};
     std::string token;
     for (const char* axis : {"x", "y", "z"}) {
         if (!(words >> token))
-            throw SceneError(file + ": line " + std::to_string(lineNumber) + ": vertex has no " + axis);
+            throw SceneError(file + ": line " + std::to_string(lineNumber) + ": " + what + " has no " + axis);
         if (!isFiniteFloat(token))
-            throw SceneError(file + ": line " + std::to_string(lineNumber) + ": vertex " + axis + " \"" +
+            throw SceneError(file + ": line " + std::to_string(lineNumber) + ": " + what + " " + axis + " \"" +
                              token + "\" is not a finite float");
     }
 }
 
 // tinyobjloader reads a coordinate it cannot parse ("nan", "1,5", a missing z) as 0
 // without a word, and drops faces with fewer than 3 vertices with only a warning. Such a
-// file would render plausibly and wrongly, so the text is checked first: every "v" line
-// must hold three finite numbers. Returns the number of "f" lines, so that any face
+// file would render plausibly and wrongly, so the text is checked first: every "v" and
+// "vn" line must hold three finite numbers. Returns the number of "f" lines, so that any face
 // tinyobjloader dropped can be noticed.
 size_t checkObjText(const std::string& text, const std::string& file) {
     size_t faceLines = 0, lineNumber = 0;
@@ -53,8 +55,9 @@ size_t checkObjText(const std::string& text, const std::string& file) {
         std::string_view line = std::string_view(text).substr(pos, end - pos);
         pos = end + 1;
         while (!line.empty() && isBlank(line.front())) line.remove_prefix(1);
-        if (isStatement(line, 'v')) checkVertexLine(line, lineNumber + 1, file);
-        faceLines += isStatement(line, 'f');
+        if (isStatement(line, "v")) checkVectorLine(line, "v", "vertex", lineNumber + 1, file);
+        if (isStatement(line, "vn")) checkVectorLine(line, "vn", "normal", lineNumber + 1, file);
+        faceLines += isStatement(line, "f");
     }
     return faceLines;
 }
@@ -64,8 +67,16 @@ std::string trimmed(std::string text) {
     return text;
 }
 
+std::string faceProblem(size_t face, const char* what, int index, size_t count, const char* plural) {
+    return "face " + std::to_string(face) + ": " + what + " index " + std::to_string(int64_t(index) + 1) +
+           " (1-based) is out of range (the file has " + std::to_string(count) + " " + plural + ")";
+}
+
 // Fan-triangulates every face, checking its indices; faces are counted from 0 in file order.
-void addFaces(const tinyobj::shape_t& shape, size_t vertexCount, size_t& face, Mesh& mesh, const std::string& file) {
+// With `normals` (the file's "vn" vectors, empty if it has none) each triangle's corners
+// get their "v//vn" normal, or 0 where the corner names none.
+void addFaces(const tinyobj::shape_t& shape, size_t vertexCount, const std::vector<glm::vec3>& normals, size_t& face,
+              Mesh& mesh, const std::string& file) {
     size_t next = 0;
     for (const unsigned char cornerCount : shape.mesh.num_face_vertices) {
         const tinyobj::index_t* corners = &shape.mesh.indices[next];
@@ -73,12 +84,16 @@ void addFaces(const tinyobj::shape_t& shape, size_t vertexCount, size_t& face, M
         for (size_t c = 0; c < cornerCount; ++c) {
             const int index = corners[c].vertex_index;
             if (index < 0 || size_t(index) >= vertexCount)
-                throw SceneError(file + ": face " + std::to_string(face) + ": vertex index " +
-                                 std::to_string(int64_t(index) + 1) + " (1-based) is out of range (the file has " +
-                                 std::to_string(vertexCount) + " vertices)");
+                throw SceneError(file + ": " + faceProblem(face, "vertex", index, vertexCount, "vertices"));
+            const int normal = corners[c].normal_index;
+            if (normal >= 0 && size_t(normal) >= normals.size())
+                throw SceneError(file + ": " + faceProblem(face, "normal", normal, normals.size(), "normals"));
         }
-        for (size_t c = 1; c + 1 < cornerCount; ++c)
+        auto normalOf = [&](size_t c) { return corners[c].normal_index < 0 ? glm::vec3(0.0f) : normals[corners[c].normal_index]; };
+        for (size_t c = 1; c + 1 < cornerCount; ++c) {
             mesh.triangles.emplace_back(corners[0].vertex_index, corners[c].vertex_index, corners[c + 1].vertex_index);
+            if (!normals.empty()) mesh.cornerNormals.insert(mesh.cornerNormals.end(), {normalOf(0), normalOf(c), normalOf(c + 1)});
+        }
         ++face;
     }
     // tinyobjloader stores corner counts as unsigned char, so a larger face leaves
@@ -103,8 +118,11 @@ Mesh parseObj(const std::string& text, const std::string& path) {
     mesh.source = path;
     const std::vector<tinyobj::real_t>& xyz = reader.GetAttrib().vertices;
     for (size_t i = 0; i + 2 < xyz.size(); i += 3) mesh.positions.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+    std::vector<glm::vec3> normals;
+    const std::vector<tinyobj::real_t>& nxyz = reader.GetAttrib().normals;
+    for (size_t i = 0; i + 2 < nxyz.size(); i += 3) normals.emplace_back(nxyz[i], nxyz[i + 1], nxyz[i + 2]);
     size_t face = 0;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) addFaces(shape, mesh.positions.size(), face, mesh, path);
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) addFaces(shape, mesh.positions.size(), normals, face, mesh, path);
     if (face != faceLines)
         throw SceneError(path + ": " + std::to_string(faceLines - face) + " face(s) with fewer than 3 vertices");
     // OBJ readers skip lines they do not know, so any file parses: one with nothing in it is

@@ -7,10 +7,12 @@
 
 namespace shadowlab {
 
-// Positions ("v") and polygons ("f", triangulated as fans) of every object and group;
-// normals, texture coordinates, lines, points and materials are ignored. Throws
-// SceneError naming the file and the line or face for non-finite or unparsable
-// coordinates, indices out of range and faces with fewer than 3 vertices.
+// Positions ("v"), polygons ("f", triangulated as fans) of every object and group, and the
+// normals ("vn") their corners name ("f 1//1 2//2 3//3"), as Mesh::cornerNormals with 0
+// for a corner that names none; texture coordinates, lines, points and materials are
+// ignored. Throws SceneError naming the file and the line or face for non-finite or
+// unparsable coordinates or normals, indices out of range and faces with fewer than 3
+// vertices.
 Mesh readObj(const std::string& path);
 
 // The same for a file's text already in memory; `path` names it in errors.

@@ -178,6 +178,7 @@ struct PlyLayout {
     const PlyElement* vertex = nullptr;
     const PlyElement* face = nullptr;
     std::array<size_t, 3> xyz{};   // property indices in the vertex element
+    std::optional<std::array<size_t, 3>> normal;   // nx, ny, nz, when the vertex element has all three
     size_t indexList = 0;          // property index in the face element
 };
 
@@ -207,6 +208,16 @@ PlyLayout findLayout(const PlyHeader& header, const std::string& file) {
             fail(std::string("the vertex element has no scalar property \"") + name + "\"");
         layout.xyz[axis] = *index;
     }
+    std::array<size_t, 3> normal{};
+    size_t normalAxes = 0;
+    for (size_t axis = 0; axis < 3; ++axis) {
+        const std::string name = std::string("n") + char('x' + axis);
+        const auto index = propertyIndex(*layout.vertex, name);
+        if (index && layout.vertex->properties[*index].countType) fail("the vertex property \"" + name + "\" is a list");
+        if (index) normal[normalAxes++] = *index;
+    }
+    if (normalAxes == 3) layout.normal = normal;
+    else if (normalAxes != 0) fail("the vertex element has some but not all of nx, ny, nz");
     auto list = propertyIndex(*layout.face, "vertex_indices");
     if (!list) list = propertyIndex(*layout.face, "vertex_index");
     if (!list || !layout.face->properties[*list].countType)
@@ -318,6 +329,9 @@ public:
                 if (&element == layout_.face) addFace();
             }
         }
+        if (layout_.normal)
+            for (const glm::uvec3& t : mesh_.triangles)
+                for (int c = 0; c < 3; ++c) mesh_.cornerNormals.push_back(vertexNormals_[t[c]]);
         return std::move(mesh_);
     }
 
@@ -359,6 +373,15 @@ private:
             fail(text.str());
         }
         mesh_.positions.emplace_back(p);
+        if (!layout_.normal) return;
+        const auto& axes = *layout_.normal;
+        const glm::dvec3 n(scalars_[axes[0]], scalars_[axes[1]], scalars_[axes[2]]);
+        if (!roundsToFiniteFloat(n.x) || !roundsToFiniteFloat(n.y) || !roundsToFiniteFloat(n.z)) {
+            std::ostringstream text;
+            text << "normal (" << n.x << ", " << n.y << ", " << n.z << ") is not finite as a float";
+            fail(text.str());
+        }
+        vertexNormals_.emplace_back(n);
     }
 
     void addFace() {
@@ -381,6 +404,7 @@ private:
     const PlyElement* element_ = nullptr;
     uint64_t row_ = 0;
     std::vector<double> scalars_, indices_;
+    std::vector<glm::vec3> vertexNormals_;   // nx, ny, nz per vertex, when the file has them
     Mesh mesh_;
 };
 

@@ -9,9 +9,10 @@ namespace shadowlab {
 
 // Positions from the "vertex" element (x, y, z of any numeric type) and polygons from the
 // "face" element's "vertex_indices" or "vertex_index" list, triangulated as fans
-// (v0, v[i], v[i+1]); every other element and property is skipped. Throws SceneError
+// (v0, v[i], v[i+1]); per-vertex normals (nx, ny, nz, all three or none) become
+// Mesh::cornerNormals; every other element and property is skipped. Throws SceneError
 // naming the file and the element row for malformed, truncated or inconsistent data:
-// non-finite positions, indices out of range, faces with fewer than 3 vertices.
+// non-finite positions or normals, indices out of range, faces with fewer than 3 vertices.
 Mesh readPly(const std::string& path);
 
 // The same for a file's bytes already in memory; `path` names them in errors.

@@ -27,6 +27,7 @@ Mesh makeGrid(glm::vec2 size, glm::ivec2 divisions) {
             mesh.triangles.emplace_back(a, c, d);
         }
     }
+    mesh.cornerNormals.assign(3 * mesh.triangles.size(), glm::vec3(0.0f, 1.0f, 0.0f));
     return mesh;
 }
 
@@ -62,6 +63,10 @@ Mesh makeUvSphere(float radius, int slices, int stacks) {
     }
     const uint32_t last = uint32_t(stacks) - 1;
     for (uint32_t j = 0; j < n; ++j) mesh.triangles.emplace_back(south, ring(last, j + 1), ring(last, j));
+    // The sphere's own normal at each vertex, p / r (computed from the float position in
+    // double, so it is unit to the last bit a float holds).
+    for (const glm::uvec3& t : mesh.triangles)
+        for (int c = 0; c < 3; ++c) mesh.cornerNormals.push_back(glm::vec3(glm::normalize(glm::dvec3(mesh.positions[t[c]]))));
     return mesh;
 }
 
@@ -74,9 +79,14 @@ Mesh makeBox(glm::vec3 min, glm::vec3 max) {
     // Each face as a quad, counter-clockwise seen from outside: -X, +X, -Y, +Y, -Z, +Z.
     constexpr std::array<std::array<uint32_t, 4>, 6> kFaces{{
         {0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}}};
-    for (const auto& q : kFaces) {
+    // A box is flat: each corner of a face shades with the face's normal.
+    constexpr std::array<glm::vec3, 6> kFaceNormals{{
+        {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}}};
+    for (size_t f = 0; f < kFaces.size(); ++f) {
+        const auto& q = kFaces[f];
         mesh.triangles.emplace_back(q[0], q[1], q[2]);
         mesh.triangles.emplace_back(q[0], q[2], q[3]);
+        mesh.cornerNormals.insert(mesh.cornerNormals.end(), 6, kFaceNormals[f]);
     }
     return mesh;
 }

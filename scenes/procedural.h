@@ -2,6 +2,8 @@
 // outside (from above, for the grid), as everywhere in shadowlab (conventions.md).
 // Positions are computed in double and rounded once to float, so that symmetric points
 // are exactly symmetric and sphere vertices lie within one float ulp of the radius.
+// Each mesh carries its exact shading normals (Mesh::cornerNormals): +Y for the grid, the
+// radial direction for the sphere, each face's normal for the box (which stays flat).
 #pragma once
 
 #include <cstdint>

@@ -16,6 +16,11 @@ struct Mesh {
     std::string source;                 // file it came from, or "procedural:<kind>"
     std::vector<glm::vec3> positions;   // object space
     std::vector<glm::uvec3> triangles;  // counter-clockwise = front face
+    // Shading normals given by the file, three per triangle in corner order (OBJ's "vn" are
+    // per corner, PLY's nx, ny, nz per vertex), object space; empty when the file has none.
+    // A zero vector marks a corner the file left without one. scenes/shading_normals.h
+    // fills the gaps with angle-weighted vertex normals.
+    std::vector<glm::vec3> cornerNormals;
 };
 
 enum class MaterialModel { Lambert, BlinnPhong };
@@ -85,6 +90,11 @@ struct WorldGeometry {
     std::vector<glm::uvec3> triangles;
     std::vector<uint32_t> triangleMaterial;   // per triangle, index into Scene::materials
     std::vector<uint32_t> triangleInstance;   // per triangle, index into Scene::instances
+    // Smooth shading normals, three per triangle (corner c of triangle t at 3 t + c), world
+    // space and unit length, or 0 at a corner of a degenerate triangle with no smooth
+    // neighbour (scenes/shading_normals.h). Only shading reads them: shadow bias and the
+    // references use the geometric normal of the triangle's plane.
+    std::vector<glm::vec3> cornerNormals;
 };
 
 WorldGeometry flatten(const Scene& scene);

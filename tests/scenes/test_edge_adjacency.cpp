@@ -48,6 +48,7 @@ TEST_CASE("prepared scene: the edge adjacency is built once, on first use, and r
     // An edited copy is another prepared scene with its own edges: without one triangle
     // the box is open.
     scene.meshes[0].triangles.pop_back();
+    scene.meshes[0].cornerNormals.resize(3 * scene.meshes[0].triangles.size());
     const PreparedScene edited(scene);
     CHECK_FALSE(edited.edgeAdjacency()[0].closed);
     CHECK(edited.edgeAdjacency()[0].edges.size() ==
