@@ -268,7 +268,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     r->add_option("scene", a.scene, "built-in scene name or scene file (.json)")->required();
     r->add_option("--technique", a.technique, "shadow technique (see `shadowlab techniques`)")->capture_default_str();
     r->add_option("-o,--output", a.png, "tone-mapped sRGB PNG to write");
-    r->add_option("--aov", a.aov, "OpenEXR file with R G B, P.*, N.*, hit, V, depth (and stencil)");
+    r->add_option("--aov", a.aov, "OpenEXR file with R G B, P.*, N.*, Ns.*, hit, V, depth (and stencil)");
     r->add_option("--width", a.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
     r->add_option("--height", a.overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
     r->add_option("--threads", a.threads, "worker threads (0: all cores)")->check(CLI::Range(0, kMaxThreads));

@@ -25,6 +25,7 @@ namespace {
 struct SurfacePoint {
     glm::dvec3 position;
     glm::dvec3 normal;  // unit, facing the ray origin
+    glm::dvec3 barycentric;  // of position, weights of v0, v1, v2
 };
 
 // Ray-plane intersection (e.g. Shirley & Marschner, Fundamentals of Computer Graphics,
@@ -43,13 +44,32 @@ std::optional<SurfacePoint> intersectTrianglePlane(const RayD& ray, const glm::d
     // The ray arrives against the front of the surface it sees, so the camera-facing
     // normal points against the ray: dot(N, eye - P) = -t * dot(N, d) > 0 for t > 0.
     const bool facesCamera = glm::dot(unitNormal, ray.origin - p) > 0.0;
-    return SurfacePoint{p, facesCamera ? unitNormal : -unitNormal};
+    // Each weight is the signed area of the sub-triangle with P in place of its vertex over
+    // the whole, areas measured along n (Shirley & Marschner 2.7).
+    const double area = glm::dot(n, n);
+    const double b1 = glm::dot(n, glm::cross(p - v0, v2 - v0)) / area;
+    const double b2 = glm::dot(n, glm::cross(v1 - v0, p - v0)) / area;
+    return SurfacePoint{p, facesCamera ? unitNormal : -unitNormal, {1.0 - b1 - b2, b1, b2}};
+}
+
+// The corner normals of triangle t weighted by `barycentric`, normalised and on the side of
+// the camera-facing geometric normal; the geometric normal where they cancel or are absent.
+glm::vec3 shadingNormal(const WorldGeometry& world, uint32_t t, const SurfacePoint& s) {
+    if (world.cornerNormals.empty()) return glm::vec3(s.normal);
+    const glm::vec3* n = &world.cornerNormals[3 * size_t(t)];
+    const glm::dvec3 sum = s.barycentric.x * glm::dvec3(n[0]) + s.barycentric.y * glm::dvec3(n[1]) +
+                           s.barycentric.z * glm::dvec3(n[2]);
+    const double length = glm::length(sum);
+    if (!(length > 0.0)) return glm::vec3(s.normal);
+    const glm::dvec3 unit = sum / length;
+    return glm::vec3(glm::dot(unit, s.normal) < 0.0 ? -unit : unit);
 }
 
 void writeBackground(GBuffer& g, size_t index) {
     g.hit[index] = 0;
     g.position[index] = glm::vec3(0.0f);
     g.normal[index] = glm::vec3(0.0f);
+    g.shadingNormal[index] = glm::vec3(0.0f);
     g.material[index] = 0;
     g.triangle[index] = kNoTriangle;
     g.depth[index] = 1.0f;
@@ -76,6 +96,7 @@ void writeSurface(GBuffer& g, size_t index, const WorldGeometry& world, const Pi
     g.hit[index] = 1;
     g.position[index] = glm::vec3(s->position);
     g.normal[index] = glm::vec3(s->normal);
+    g.shadingNormal[index] = shadingNormal(world, triangle, *s);
     g.material[index] = world.triangleMaterial[triangle];
     g.triangle[index] = triangle;
     g.depth[index] = depth;
@@ -86,7 +107,7 @@ void writeSurface(GBuffer& g, size_t index, const WorldGeometry& world, const Pi
 void requireConsistent(const GBuffer& g, const char* who) {
     const size_t n = g.pixelCount();
     const bool consistent = g.width >= 0 && g.height >= 0 && g.hit.size() == n && g.position.size() == n &&
-                            g.normal.size() == n && g.material.size() == n && g.triangle.size() == n &&
+                            g.normal.size() == n && g.shadingNormal.size() == n && g.material.size() == n && g.triangle.size() == n &&
                             g.depth.size() == n;
     if (!consistent) {
         throw std::invalid_argument(std::string(who) + ": G-buffer arrays do not all have " +
@@ -110,9 +131,14 @@ GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
     if (world.triangleMaterial.size() != world.triangles.size()) {
         throw std::invalid_argument("buildGBuffer: triangleMaterial size differs from triangles");
     }
+    if (!world.cornerNormals.empty() && world.cornerNormals.size() != 3 * world.triangles.size()) {
+        throw std::invalid_argument("buildGBuffer: " + std::to_string(world.cornerNormals.size()) +
+                                    " corner normals for " + std::to_string(world.triangles.size()) + " triangles");
+    }
     g.hit.resize(n);
     g.position.resize(n);
     g.normal.resize(n);
+    g.shadingNormal.resize(n);
     g.material.resize(n);
     g.triangle.resize(n);
     g.depth.resize(n);

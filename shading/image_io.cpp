@@ -316,14 +316,17 @@ void setGBuffer(ImageChannels& image, const GBuffer& gbuffer) {
     }
     const char* positionNames[3] = {channel::Px, channel::Py, channel::Pz};
     const char* normalNames[3] = {channel::Nx, channel::Ny, channel::Nz};
+    const char* shadingNormalNames[3] = {channel::Nsx, channel::Nsy, channel::Nsz};
     for (int c = 0; c < 3; ++c) {
-        std::vector<float> p(gbuffer.pixelCount()), n(gbuffer.pixelCount());
+        std::vector<float> p(gbuffer.pixelCount()), n(gbuffer.pixelCount()), ns(gbuffer.pixelCount());
         for (size_t k = 0; k < gbuffer.pixelCount(); ++k) {
             p[k] = gbuffer.position[k][c];
             n[k] = gbuffer.normal[k][c];
+            ns[k] = gbuffer.shadingNormal[k][c];
         }
         image.set(positionNames[c], std::move(p));
         image.set(normalNames[c], std::move(n));
+        image.set(shadingNormalNames[c], std::move(ns));
     }
     image.set(channel::hit, std::vector<float>(gbuffer.hit.begin(), gbuffer.hit.end()));
     image.set(channel::depth, gbuffer.depth);

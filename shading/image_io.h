@@ -32,6 +32,9 @@ inline constexpr const char* Pz = "P.z";
 inline constexpr const char* Nx = "N.x";
 inline constexpr const char* Ny = "N.y";
 inline constexpr const char* Nz = "N.z";
+inline constexpr const char* Nsx = "Ns.x";   // the shading normal
+inline constexpr const char* Nsy = "Ns.y";
+inline constexpr const char* Nsz = "Ns.z";
 inline constexpr const char* hit = "hit";
 inline constexpr const char* V = "V";
 inline constexpr const char* depth = "depth";
@@ -58,7 +61,7 @@ struct ImageChannels {
 
 // Radiance as channels R, G, B.
 void setRadiance(ImageChannels& image, const std::vector<glm::vec3>& radiance);
-// G-buffer as channels P.x P.y P.z N.x N.y N.z hit depth. Sets the size from the G-buffer
+// G-buffer as channels P.x P.y P.z N.x N.y N.z Ns.x Ns.y Ns.z hit depth. Sets the size from the G-buffer
 // when the image is still empty.
 void setGBuffer(ImageChannels& image, const GBuffer& gbuffer);
 

@@ -1,6 +1,6 @@
 // Golden images by hash (style.md: "goldens are hashes of exact bytes", as llvmpipe's
 // trace checksums). For every built-in scene the camera pass's visibility buffer, its
-// depth, the G-buffer and the unshadowed image are hashed, at every SIMD level with 1, 2
+// depth, the G-buffer (both normals) and the unshadowed image are hashed, at every SIMD level with 1, 2
 // and 8 threads, and must equal tests/golden/<scene>.hash, which also proves determinism
 // across threads and instruction sets on real scenes.
 //
@@ -54,7 +54,8 @@ std::string frameHashes(const PreparedScene& prepared, raster::SimdLevel simd) {
         return std::string(name) + " " + hex(h.state) + "\n";
     };
     return line("triangle", g.triangle) + line("depth", g.depth) + line("position", g.position) +
-           line("normal", g.normal) + line("image", toSrgb8Image(frame.radiance, {}));
+           line("normal", g.normal) + line("shading-normal", g.shadingNormal) +
+           line("image", toSrgb8Image(frame.radiance, {}));
 }
 
 std::string goldenPath(const std::string& scene) {

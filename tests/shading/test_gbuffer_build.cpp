@@ -67,6 +67,7 @@ TEST_CASE("buildGBuffer puts P on the triangle plane and the pixel ray, N unit a
                 CHECK(g.hit[k] == 0);
                 CHECK(g.position[k] == glm::vec3(0.0f));
                 CHECK(g.normal[k] == glm::vec3(0.0f));
+                CHECK(g.shadingNormal[k] == glm::vec3(0.0f));
                 CHECK(g.depth[k] == 1.0f);
                 CHECK(g.triangle[k] == kNoTriangle);
                 continue;
@@ -82,6 +83,7 @@ TEST_CASE("buildGBuffer puts P on the triangle plane and the pixel ray, N unit a
             CHECK(std::abs(glm::length(N) - 1.0) < 1e-6);
             CHECK(glm::dot(N, glm::dvec3(camera.eye) - P) > 0.0);
             CHECK(std::abs(std::abs(glm::dot(N, planeNormal)) - 1.0) < 1e-6);
+            CHECK(g.shadingNormal[k] == g.normal[k]);   // a world without corner normals shades flat
             (glm::dot(N, planeNormal) < 0.0 ? flipped : kept) += 1;
             CHECK(g.hit[k] == 1);
             CHECK(g.triangle[k] == t);
@@ -101,4 +103,36 @@ TEST_CASE("buildGBuffer rejects mismatched buffers and bad triangle indices") {
                     std::invalid_argument);
     CHECK_THROWS_AS(buildGBuffer(world, camera, std::vector<uint32_t>(n, 2), std::vector<float>(n)),
                     std::invalid_argument);
+}
+
+TEST_CASE("buildGBuffer interpolates corner normals at P by its barycentric coordinates, on the side of N") {
+    const Camera camera = smallCamera();
+    WorldGeometry world = twoTriangles();
+    // Unit corner normals far apart, so a wrong weight moves the result by degrees.
+    world.cornerNormals = {glm::normalize(glm::vec3(0.3f, 0.2f, 1.0f)), glm::normalize(glm::vec3(-0.6f, 0.1f, 1.0f)),
+                           glm::normalize(glm::vec3(0.1f, -0.7f, 1.0f)), glm::normalize(glm::vec3(0.5f, 0.5f, -1.0f)),
+                           glm::normalize(glm::vec3(-0.2f, 0.4f, -1.0f)), glm::normalize(glm::vec3(0.0f, -0.5f, -1.0f))};
+    const size_t n = size_t(camera.width) * size_t(camera.height);
+    std::vector<uint32_t> visible(n);
+    for (size_t k = 0; k < n; ++k) visible[k] = uint32_t(k % 2);
+    const GBuffer g = buildGBuffer(world, camera, visible, std::vector<float>(n, 0.5f));
+    for (size_t k = 0; k < n; ++k) {
+        CAPTURE(k);
+        const uint32_t t = visible[k];
+        const glm::dvec3 v0 = vertex(world, t, 0), v1 = vertex(world, t, 1), v2 = vertex(world, t, 2);
+        // Barycentric coordinates by Cramer's rule on P - v0 = b1 (v1 - v0) + b2 (v2 - v0),
+        // a different route from the one buildGBuffer takes.
+        const glm::dvec3 e1 = v1 - v0, e2 = v2 - v0, d = glm::dvec3(g.position[k]) - v0;
+        const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+        const double b1 = (d22 * glm::dot(d, e1) - d12 * glm::dot(d, e2)) / (d11 * d22 - d12 * d12);
+        const double b2 = (d11 * glm::dot(d, e2) - d12 * glm::dot(d, e1)) / (d11 * d22 - d12 * d12);
+        const glm::vec3* c = &world.cornerNormals[3 * t];
+        glm::dvec3 expected = glm::normalize((1.0 - b1 - b2) * glm::dvec3(c[0]) + b1 * glm::dvec3(c[1]) + b2 * glm::dvec3(c[2]));
+        if (glm::dot(expected, glm::dvec3(g.normal[k])) < 0.0) expected = -expected;
+        const glm::dvec3 Ns(g.shadingNormal[k]);
+        CHECK(std::abs(glm::length(Ns) - 1.0) < 1e-6);
+        CHECK(glm::length(Ns - expected) < 1e-5);
+    }
+    world.cornerNormals.pop_back();
+    CHECK_THROWS_AS(buildGBuffer(world, camera, visible, std::vector<float>(n, 0.5f)), std::invalid_argument);
 }

@@ -74,6 +74,7 @@ TEST_CASE("G-buffer and radiance land in the named channels") {
     g.hit = {1, 0};
     g.position = {{1.0f, 2.0f, 3.0f}, glm::vec3(0.0f)};
     g.normal = {{0.0f, 1.0f, 0.0f}, glm::vec3(0.0f)};
+    g.shadingNormal = g.normal;
     g.material = {0, 0};
     g.triangle = {4, kNoTriangle};
     g.depth = {0.25f, 1.0f};

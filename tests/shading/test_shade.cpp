@@ -23,6 +23,7 @@ GBuffer onePointAtOrigin(uint32_t material) {
     g.hit = {1, 0};
     g.position = {glm::vec3(0.0f), glm::vec3(0.0f)};
     g.normal = {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f)};
+    g.shadingNormal = g.normal;
     g.material = {material, 0};
     g.triangle = {0, kNoTriangle};
     g.depth = {0.5f, 1.0f};

@@ -86,7 +86,7 @@ GBuffer halfPlaneReceivers() {
     GBuffer g;
     g.width = kSamples, g.height = 6;
     const size_t n = g.pixelCount();
-    g.hit.assign(n, 1), g.normal.assign(n, glm::vec3(0, 1, 0)), g.material.assign(n, 0);
+    g.hit.assign(n, 1), g.normal.assign(n, glm::vec3(0, 1, 0)), g.shadingNormal.assign(n, glm::vec3(0, 1, 0)), g.material.assign(n, 0);
     g.triangle.assign(n, kNoTriangle), g.depth.assign(n, 0.5f), g.position.resize(n);
     for (int row = 0; row < 6; ++row) {
         for (int i = 0; i < kSamples; ++i) {

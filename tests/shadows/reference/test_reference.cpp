@@ -62,6 +62,7 @@ GBuffer emptyGBuffer(int width, int height) {
     g.hit.assign(n, 0);
     g.position.assign(n, glm::vec3(0.0f));
     g.normal.assign(n, glm::vec3(0.0f));
+    g.shadingNormal.assign(n, glm::vec3(0.0f));
     g.material.assign(n, 0);
     g.triangle.assign(n, kNoTriangle);
     g.depth.assign(n, 1.0f);
@@ -72,6 +73,7 @@ void setSurface(GBuffer& g, size_t k, const glm::dvec3& P, const glm::dvec3& N) 
     g.hit[k] = 1;
     g.position[k] = glm::vec3(P);  // rounded to float, as buildGBuffer does
     g.normal[k] = glm::vec3(N);
+    g.shadingNormal[k] = glm::vec3(N);
     g.depth[k] = 0.5f;
 }
 
