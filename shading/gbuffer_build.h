@@ -20,10 +20,10 @@ namespace shadowlab {
 // dividing by w. Ns is turned to the side of N (it is only ever far from N on a badly
 // tessellated mesh), and is N itself where the corner normals cancel or the world has none.
 // Background pixels get hit = 0, P = N = Ns = 0, material 0, triangle kNoTriangle and
-// depth 1. Throws std::invalid_argument if the buffer sizes do
-// not match the camera, or the corner normals the triangles (unless there are none), a
-// triangle index is out of range, or a pixel ray is parallel to
-// its triangle's plane (a rasterizer never covers a pixel centre with an edge-on triangle).
+// depth 1. Throws std::invalid_argument if the buffer sizes do not match the camera, the
+// world has corner normals but not three per triangle, a triangle index is out of range,
+// or a pixel ray is parallel to its triangle's plane (a rasterizer never covers a pixel
+// centre with an edge-on triangle).
 GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
                      const std::vector<uint32_t>& visibleTriangle,
                      const std::vector<float>& depth);
