@@ -299,14 +299,21 @@ void ImageChannels::set(std::string name, std::vector<float> values) {
     data.push_back(std::move(values));
 }
 
-void setRadiance(ImageChannels& image, const std::vector<glm::vec3>& radiance) {
-    const char* names[3] = {channel::R, channel::G, channel::B};
+namespace {
+
+// One channel per component of a vec3 buffer, named names[0..2].
+void setComponents(ImageChannels& image, const char* const (&names)[3], const std::vector<glm::vec3>& values) {
     for (int c = 0; c < 3; ++c) {
-        std::vector<float> values(radiance.size());
-        std::transform(radiance.begin(), radiance.end(), values.begin(),
-                       [c](const glm::vec3& v) { return v[c]; });
-        image.set(names[c], std::move(values));
+        std::vector<float> component(values.size());
+        std::transform(values.begin(), values.end(), component.begin(), [c](const glm::vec3& v) { return v[c]; });
+        image.set(names[c], std::move(component));
     }
+}
+
+}  // namespace
+
+void setRadiance(ImageChannels& image, const std::vector<glm::vec3>& radiance) {
+    setComponents(image, {channel::R, channel::G, channel::B}, radiance);
 }
 
 void setGBuffer(ImageChannels& image, const GBuffer& gbuffer) {
@@ -314,20 +321,9 @@ void setGBuffer(ImageChannels& image, const GBuffer& gbuffer) {
         image.width = gbuffer.width;
         image.height = gbuffer.height;
     }
-    const char* positionNames[3] = {channel::Px, channel::Py, channel::Pz};
-    const char* normalNames[3] = {channel::Nx, channel::Ny, channel::Nz};
-    const char* shadingNormalNames[3] = {channel::Nsx, channel::Nsy, channel::Nsz};
-    for (int c = 0; c < 3; ++c) {
-        std::vector<float> p(gbuffer.pixelCount()), n(gbuffer.pixelCount()), ns(gbuffer.pixelCount());
-        for (size_t k = 0; k < gbuffer.pixelCount(); ++k) {
-            p[k] = gbuffer.position[k][c];
-            n[k] = gbuffer.normal[k][c];
-            ns[k] = gbuffer.shadingNormal[k][c];
-        }
-        image.set(positionNames[c], std::move(p));
-        image.set(normalNames[c], std::move(n));
-        image.set(shadingNormalNames[c], std::move(ns));
-    }
+    setComponents(image, {channel::Px, channel::Py, channel::Pz}, gbuffer.position);
+    setComponents(image, {channel::Nx, channel::Ny, channel::Nz}, gbuffer.normal);
+    setComponents(image, {channel::Nsx, channel::Nsy, channel::Nsz}, gbuffer.shadingNormal);
     image.set(channel::hit, std::vector<float>(gbuffer.hit.begin(), gbuffer.hit.end()));
     image.set(channel::depth, gbuffer.depth);
 }
