@@ -2,6 +2,7 @@
 // shading interpolates (shading_normals.h).
 #include "scenes/shading_normals.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -47,7 +48,10 @@ std::vector<glm::vec3> cornerShadingNormals(const Mesh& mesh) {
         throw std::invalid_argument("cornerShadingNormals: " + mesh.source + " has " +
                                     std::to_string(mesh.cornerNormals.size()) + " corner normals for " +
                                     std::to_string(mesh.triangles.size()) + " triangles");
-    const std::vector<glm::vec3> vertexNormals = angleWeightedNormals(mesh);
+    // Vertex normals only when some corner needs one (procedural meshes give every corner).
+    const bool complete = !mesh.cornerNormals.empty() &&
+                          std::ranges::none_of(mesh.cornerNormals, [](const glm::vec3& n) { return n == glm::vec3(0.0f); });
+    const std::vector<glm::vec3> vertexNormals = complete ? std::vector<glm::vec3>{} : angleWeightedNormals(mesh);
     std::vector<glm::vec3> normals(corners);
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const glm::uvec3 tri = mesh.triangles[t];
