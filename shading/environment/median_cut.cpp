@@ -15,8 +15,6 @@ namespace {
 
 constexpr double kPi = portable::detail::kPi;
 
-double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
-
 struct Region {
     glm::ivec2 first, last;   // texels [first, last)
     double energy = 0.0;

@@ -13,22 +13,14 @@
 #include "shading/environment/environment_file.h"
 #include "shading/environment/spherical_harmonics.h"
 
+#include "sphere_directions.h"
+
 using namespace shadowlab;
 
 namespace {
 
 constexpr double kPi = portable::detail::kPi;
 const std::filesystem::path kMaps = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "environments";
-
-// Directions spread over the sphere (a Fibonacci lattice).
-std::vector<glm::dvec3> sphereDirections(int n) {
-    std::vector<glm::dvec3> d;
-    for (int k = 0; k < n; ++k) {
-        const double y = 1.0 - (2.0 * k + 1.0) / n, r = std::sqrt(1.0 - y * y), phi = 2.399963229728653 * k;
-        d.push_back({r * std::cos(phi), y, r * std::sin(phi)});
-    }
-    return d;
-}
 
 // The integral over texel (i, j) of f(direction), by a midpoint rule in (theta, phi) with
 // n x n points, each weighted by sin(theta) dtheta dphi.
@@ -48,7 +40,6 @@ double quadrature(const EnvironmentMap& map, int i, int j, int n, F f) {
     return sum * (theta1 - theta0) / n * (phi1 - phi0) / n;
 }
 
-double luminance(const glm::dvec3& rgb) { return glm::dot(rgb, glm::dvec3(0.2126, 0.7152, 0.0722)); }
 
 }  // namespace
 
