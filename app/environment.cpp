@@ -2,12 +2,14 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "raster/portable_constants.h"
 #include "shading/environment/environment_debug.h"
 #include "shading/environment/environment_file.h"
+#include "shading/environment/prefiltered_lobe.h"
 #include "shading/image_io.h"
 
 namespace shadowlab {
@@ -35,6 +37,17 @@ nlohmann::ordered_json lightsJson(const std::vector<EnvironmentLight>& lights) {
     return rows;
 }
 
+// The prefiltered map of each requested lobe, as `prefiltered-phong-40` or `prefiltered-ggx-0.25`.
+void writePrefiltered(const std::filesystem::path& dir, const EnvironmentMap& map, const EnvironmentPyramid& pyramid,
+                      GlossyLobe lobe, const std::vector<double>& parameters, const ToneMapOptions& tone) {
+    for (double parameter : parameters) {
+        const EnvironmentMap prefiltered = prefilterLobe(map, pyramid, lobe, parameter);
+        std::ostringstream name;
+        name << (lobe == GlossyLobe::NormalisedPhong ? "prefiltered-phong-" : "prefiltered-ggx-") << parameter;
+        writeImage(dir, name.str(), prefiltered, prefiltered.radiance, tone);
+    }
+}
+
 }  // namespace
 
 void runEnvironmentCommand(const EnvironmentArgs& a) {
@@ -43,6 +56,8 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
     const ShCoefficients radiance = projectRadiance(map);
     const ShCoefficients irradiance = irradianceOf(radiance, a.shWindow);
     const std::vector<EnvironmentLight> lights = medianCutLights(map, a.lights);
+    for (double n : a.phongShininess) checkLobe(GlossyLobe::NormalisedPhong, n, map);   // before any output
+    for (double alpha : a.ggxRoughness) checkLobe(GlossyLobe::Ggx, alpha, map);
     const std::filesystem::path dir(a.outDir);
     std::filesystem::create_directories(dir);
     const ToneMapOptions tone{a.exposure, ToneOperator::Reinhard};
@@ -50,6 +65,11 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
     writeImage(dir, "sh-radiance", map, shImage(map, radiance), tone);
     writeImage(dir, "sh-irradiance", map, shImage(map, irradiance, 1.0 / kPi), tone);
     writePng(dir / "lights.png", map.width, map.height, lightsImage(map, lights, tone));
+    if (!a.phongShininess.empty() || !a.ggxRoughness.empty()) {
+        const EnvironmentPyramid pyramid = buildPyramid(map);
+        writePrefiltered(dir, map, pyramid, GlossyLobe::NormalisedPhong, a.phongShininess, tone);
+        writePrefiltered(dir, map, pyramid, GlossyLobe::Ggx, a.ggxRoughness, tone);
+    }
     const glm::dvec3 power = environmentPower(map);
     nlohmann::ordered_json json = {{"map", map.source},
                                    {"width", map.width},

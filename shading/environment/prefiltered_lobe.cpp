@@ -139,9 +139,9 @@ void checkLobe(GlossyLobe lobe, double parameter, const EnvironmentMap& map) {
     const double narrowest = 4.0 * kPi / map.height;
     if (lobeWidth(lobe, parameter) < narrowest) {
         throw std::invalid_argument(std::string(lobeName(lobe)) + " " + std::to_string(parameter) +
-                                    " gives a lobe narrower than two texels of the " + std::to_string(map.width) +
+                                    " gives a lobe narrower than four texels of the " + std::to_string(map.width) +
                                     " x " + std::to_string(map.height) + " map " + map.source +
-                                    " (its width must be at least 2 pi / " + std::to_string(map.height) + " radians)");
+                                    " (its width must be at least 4 pi / " + std::to_string(map.height) + " radians)");
     }
 }
 

@@ -47,8 +47,8 @@ enum class GlossyLobe { NormalisedPhong, Ggx };
 double lobeWidth(GlossyLobe lobe, double parameter);
 
 // Throws std::invalid_argument unless the parameter is a Phong shininess >= 1 or a GGX
-// roughness in (0, 1], whose lobe is at least two of the map's texels wide (sigma >= 2 pi / H,
-// so the map's own texels resolve it): shininess up to about 6600 on a 1024 x 512 map.
+// roughness in (0, 1], whose lobe is at least four of the map's texels wide (sigma >= 4 pi / H,
+// so the map's own texels resolve it): shininess up to about 1600 on a 1024 x 512 map.
 void checkLobe(GlossyLobe lobe, double parameter, const EnvironmentMap& map);
 
 // P for one lobe (checkLobe first); the pyramid is buildPyramid(map).

@@ -111,12 +111,13 @@ maps=$(dirname "${BASH_SOURCE[0]}")/../../scenes/environments
 expect_error "environment of a missing map" environment "$scratch/none.hdr"
 expect_error "environment with no lights" environment "$maps/pmndrs_sky.hdr" --lights 0 --out "$scratch/env"
 expect_error "environment with a bad SH window" environment "$maps/pmndrs_sky.hdr" --sh-window 1 --out "$scratch/env"
+expect_error "environment with a lobe too sharp for the map" environment "$maps/pmndrs_sky.hdr" --phong 8 --phong 5000 --out "$scratch/env"
 printf 'P6 2 1 255\n......' >"$scratch/ldr.hdr"
 expect_error "environment of an 8-bit image" environment "$scratch/ldr.hdr" --out "$scratch/env"
 if grep -q "neither OpenEXR nor Radiance HDR" "$err"; then pass; else fail "the 8-bit map's error does not say why: $(cat "$err")"; fi
-run environment "$maps/pmndrs_sky.hdr" --lights 8 --rotation 30 --out "$scratch/env"
+run environment "$maps/pmndrs_sky.hdr" --lights 8 --rotation 30 --phong 8 --ggx 0.5 --out "$scratch/env"
 if [ "$rc" -eq 0 ] && grep -q "8 median-cut lights" "$out"; then pass; else fail "environment exited $rc: $(cat "$err")"; fi
-for image in environment sh-radiance sh-irradiance lights; do expect_png "$scratch/env/$image.png"; done
+for image in environment sh-radiance sh-irradiance lights prefiltered-phong-8 prefiltered-ggx-0.5; do expect_png "$scratch/env/$image.png"; done
 
 # ---- Whole or nothing -------------------------------------------------------------------
 # Every failure above named -o x.png: none may have left it, or a temporary of it.
