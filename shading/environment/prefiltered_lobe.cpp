@@ -46,23 +46,24 @@ void cosineRange(double c, double cosExtent, double sinExtent, double& nearest, 
 }
 
 // The sum of w(r . l) L dOmega over a tiling of the sphere by pyramid texels, for one r. A
-// texel is split while its weight could change across it by enough to matter: w is
-// monotone in the angle from r, so the spread over the texel is at most w(nearest) -
-// w(farthest), and the texel is split while that spread times its solid angle and its
-// brightest luminance exceeds kTolerance times the lobe's integral and the map's mean
-// luminance (an error budget relative to the map, so a dim texel near r or a sun far in the
-// tail is refined only as far as it can move P).
+// texel is split while the midpoint rule could be off on it by enough to matter: w is
+// monotone in the angle from r, so |w(nearest) + w(farthest) - 2 w(centre)| estimates its
+// curvature across the texel, and the texel is split while that times its solid angle and
+// its brightness exceeds kTolerance times the lobe's integral and the map's mean luminance
+// (an error budget relative to the map: a sun far in the tail is refined as far as it can
+// move P). The brightness is the brightest map texel's luminance but never below the mean,
+// so the weights are resolved in dark regions too and their sum, the normaliser, is right.
 template <class Weight>
 struct LobeIntegrator {
     const EnvironmentPyramid& pyramid;
     const Weight& weight;
-    double threshold;   // kTolerance * integral of w * mean luminance
+    double meanLuminance, threshold;   // threshold: kTolerance * integral of w * mean luminance
 
     bool split(double c, double cosExtent, double sinExtent, double solidAngle, double brightest) const {
         double nearest, farthest;
         cosineRange(c, cosExtent, sinExtent, nearest, farthest);
         const double curvature = std::abs(weight(nearest) + weight(farthest) - 2.0 * weight(c));
-        return curvature * solidAngle * brightest > threshold;
+        return curvature * solidAngle * std::max(brightest, meanLuminance) > threshold;
     }
 
     void accumulate(size_t level, int i, int j, const glm::dvec3& r, WeightedSum& sum) const {
@@ -105,7 +106,8 @@ EnvironmentMap prefilterWith(const EnvironmentMap& map, const EnvironmentPyramid
     out.source = map.source;
     out.radiance.resize(size_t(out.width) * size_t(out.height));
     const double meanLuminance = luminance(environmentPower(map)) / (4.0 * kPi);
-    const LobeIntegrator<Weight> integrator{pyramid, weight, kTolerance * lobeIntegral(weight) * meanLuminance};
+    if (meanLuminance == 0.0) return out;   // a black map: P is 0 everywhere
+    const LobeIntegrator<Weight> integrator{pyramid, weight, meanLuminance, kTolerance * lobeIntegral(weight) * meanLuminance};
     const PyramidLevel& top = pyramid.levels.back();
     tbb::parallel_for(0, out.height, [&](int j) {
         for (int i = 0; i < out.width; ++i) {

@@ -19,12 +19,13 @@
 //
 // The integral is a sum over a tiling of the sphere by texels of the map's pyramid
 // (environment_pyramid.h), each weighted by w at its centre times its solid angle, refined
-// where it matters: a texel of extent s at angle d from r is split into its children while
-// s > (sigma + d) / 4, sigma the lobe's width (1 / sqrt(n) for Phong, alpha for GGX), down to
-// the map's own texels. Near r the lobe is resolved by texels a quarter of its width; far
-// away, where w varies slowly in d, coarse texels carry the tail. Every texel of the sphere is
-// counted exactly once, so nothing is truncated and a sun anywhere is seen at its full power;
-// about a thousand texels per r instead of the map's million.
+// where the midpoint rule could matter: a texel is split into its children while the
+// weight's curvature across it, times its solid angle and its brightness (its brightest map
+// texel, at least the map's mean), exceeds 10^-3 of the lobe's integral times the map's mean
+// luminance. Near r the lobe is resolved by the map's own texels; far away, dim texels are
+// taken coarse. Every texel of the sphere is counted exactly once, so nothing is truncated
+// and a sun anywhere is seen at its full power; a few thousand texels per r instead of the
+// map's half million.
 //
 // The output map holds P at its texels' centres (read it with samplePrefiltered, bilinear) and
 // is finer for sharper lobes: 3 texels per sigma along a meridian, 2:1 like the input, at least

@@ -156,10 +156,10 @@ TEST_CASE("prefiltered lobes: GGX roughness 0.25 agrees with brute force over ev
     const EnvironmentMap prefiltered = prefilterLobe(map, buildPyramid(map), GlossyLobe::Ggx, 0.25);
     const Agreement a = agreement(map, 48, [&](const glm::dvec3& r) { return samplePrefiltered(prefiltered, r); },
                                   [](double cosine) { return ggxWeight(0.25, cosine); });
-    // Measured (2026-12-03): worst 1.17%, mean 0.19%.
+    // Measured (2026-12-03): worst 0.53%, mean 0.13%.
     MESSAGE("GGX 0.25: worst " << a.worst << ", mean " << a.mean);
-    CHECK(a.worst < 0.02);
-    CHECK(a.mean < 0.003);
+    CHECK(a.worst < 0.009);
+    CHECK(a.mean < 0.002);
 }
 
 TEST_CASE("prefiltered lobes: a table interpolates shininess 40 between 32 and 64 in log n") {
@@ -194,4 +194,19 @@ TEST_CASE("prefiltered lobes: shininess and roughness out of range or too sharp 
     CHECK_THROWS_AS(checkLobe(GlossyLobe::Ggx, 0.09, map), std::invalid_argument);
     CHECK(defaultLobeLadder(GlossyLobe::NormalisedPhong, map) == std::vector<double>{1, 2, 4, 8, 16, 32, 64});
     CHECK(defaultLobeLadder(GlossyLobe::Ggx, map).front() == doctest::Approx(0.125));
+}
+
+TEST_CASE("prefiltered lobes: a map dark on one side stays finite and dark there, a black map gives 0") {
+    // Top-level texel centres are 45 degrees apart, far outside a shininess-100 lobe: the
+    // weights must be resolved where the map is black too, or their sum is 0 and P is NaN.
+    EnvironmentMap map = constantEnvironment(256, 128, glm::vec3(0.0f));
+    for (int j = 0; j < 64; ++j) {
+        for (int i = 0; i < 256; ++i) map.radiance[size_t(j) * 256 + i] = glm::vec3(2.0f);
+    }
+    const EnvironmentMap prefiltered = prefilterLobe(map, buildPyramid(map), GlossyLobe::NormalisedPhong, 100.0);
+    for (const glm::vec3& p : prefiltered.radiance) REQUIRE(std::isfinite(p.x));
+    CHECK(samplePrefiltered(prefiltered, {0.0, 1.0, 0.0}).x == doctest::Approx(2.0).epsilon(1e-6));
+    CHECK(samplePrefiltered(prefiltered, {0.0, -1.0, 0.0}).x < 1e-6);
+    const EnvironmentMap black = constantEnvironment(64, 32, glm::vec3(0.0f));
+    for (const glm::vec3& p : prefilterLobe(black, buildPyramid(black), GlossyLobe::Ggx, 0.5).radiance) REQUIRE(p == glm::vec3(0.0f));
 }
