@@ -59,10 +59,11 @@ struct LobeIntegrator {
     const Weight& weight;
     double meanLuminance, threshold;   // threshold: kTolerance * integral of w * mean luminance
 
-    bool split(double c, double cosExtent, double sinExtent, double solidAngle, double brightest) const {
+    // wCentre: weight(c), which the caller needs for the texel anyway.
+    bool split(double c, double wCentre, double cosExtent, double sinExtent, double solidAngle, double brightest) const {
         double nearest, farthest;
         cosineRange(c, cosExtent, sinExtent, nearest, farthest);
-        const double curvature = std::abs(weight(nearest) + weight(farthest) - 2.0 * weight(c));
+        const double curvature = std::abs(weight(nearest) + weight(farthest) - 2.0 * wCentre);
         return curvature * solidAngle * std::max(brightest, meanLuminance) > threshold;
     }
 
@@ -70,14 +71,15 @@ struct LobeIntegrator {
         const PyramidLevel& texels = pyramid.levels[level];
         const size_t k = texels.index(i, j);
         const double c = r.x * texels.x[k] + r.y * texels.y[k] + r.z * texels.z[k];
-        if (level > 0 && split(c, texels.cosExtent[k], texels.sinExtent[k], texels.solidAngle[k], texels.brightest[k])) {
+        const double wCentre = weight(c);
+        if (level > 0 && split(c, wCentre, texels.cosExtent[k], texels.sinExtent[k], texels.solidAngle[k], texels.brightest[k])) {
             const PyramidLevel& children = pyramid.levels[level - 1];
             for (int cj = 2 * j; cj < std::min(2 * j + 2, children.height); ++cj) {
                 for (int ci = 2 * i; ci < std::min(2 * i + 2, children.width); ++ci) accumulate(level - 1, ci, cj, r, sum);
             }
             return;
         }
-        const double w = weight(c) * texels.solidAngle[k];
+        const double w = wCentre * texels.solidAngle[k];
         sum.radiance += w * texels.radiance[k];
         sum.weight += w;
     }
