@@ -126,6 +126,9 @@ EnvironmentMap prefilterWith(const EnvironmentMap& map, const EnvironmentPyramid
 
 const char* lobeName(GlossyLobe lobe) { return lobe == GlossyLobe::NormalisedPhong ? "Phong shininess" : "GGX roughness"; }
 
+// The narrowest lobe the map's texels resolve: four texel heights.
+double narrowestLobe(const EnvironmentMap& map) { return 4.0 * kPi / map.height; }
+
 }  // namespace
 
 double lobeWidth(GlossyLobe lobe, double parameter) {
@@ -140,7 +143,7 @@ void checkLobe(GlossyLobe lobe, double parameter, const EnvironmentMap& map) {
                                     (lobe == GlossyLobe::NormalisedPhong ? "at least 1" : "in (0, 1]") + ", not " +
                                     std::to_string(parameter));
     }
-    const double narrowest = 4.0 * kPi / map.height;
+    const double narrowest = narrowestLobe(map);
     if (lobeWidth(lobe, parameter) < narrowest) {
         throw std::invalid_argument(std::string(lobeName(lobe)) + " " + std::to_string(parameter) +
                                     " gives a lobe narrower than four texels of the " + std::to_string(map.width) +
@@ -168,7 +171,7 @@ glm::dvec3 samplePrefiltered(const EnvironmentMap& prefiltered, const glm::dvec3
 }
 
 std::vector<double> defaultLobeLadder(GlossyLobe lobe, const EnvironmentMap& map) {
-    const double narrowest = 4.0 * kPi / map.height;
+    const double narrowest = narrowestLobe(map);
     std::vector<double> ladder;
     if (lobe == GlossyLobe::NormalisedPhong) {
         for (double n = 1.0; lobeWidth(lobe, n) >= narrowest; n *= 2.0) ladder.push_back(n);
