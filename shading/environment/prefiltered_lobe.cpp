@@ -9,6 +9,7 @@
 
 #include "raster/portable_constants.h"
 #include "raster/portable_math.h"
+#include "shading/microfacet_ggx.h"
 
 namespace shadowlab {
 namespace {
@@ -25,11 +26,7 @@ struct PhongWeight {
 // D(h) (r . l) with cos^2(theta_h) = (1 + c) / 2, h halfway between r and l.
 struct GgxWeight {
     double alpha2;
-    double operator()(double c) const {
-        if (c <= 0.0) return 0.0;
-        const double denominator = 0.5 * (1.0 + c) * (alpha2 - 1.0) + 1.0;
-        return alpha2 / (kPi * denominator * denominator) * c;
-    }
+    double operator()(double c) const { return c > 0.0 ? ggxDistributionFromCos2(0.5 * (1.0 + c), alpha2) * c : 0.0; }
 };
 
 struct WeightedSum {
