@@ -10,6 +10,7 @@
 #include "shading/environment/environment_debug.h"
 #include "shading/environment/environment_file.h"
 #include "shading/environment/prefiltered_lobe.h"
+#include "shading/environment/split_sum_table.h"
 #include "shading/image_io.h"
 
 namespace shadowlab {
@@ -17,13 +18,27 @@ namespace {
 
 constexpr double kPi = portable::detail::kPi;
 
-void writeImage(const std::filesystem::path& dir, const std::string& name, const EnvironmentMap& map,
+void writeImage(const std::filesystem::path& dir, const std::string& name, int width, int height,
                 const std::vector<glm::vec3>& radiance, const ToneMapOptions& tone) {
     ImageChannels image;
-    image.width = map.width, image.height = map.height;
+    image.width = width, image.height = height;
     setRadiance(image, radiance);
     writeExr(dir / (name + ".exr"), image);
-    writePng(dir / (name + ".png"), map.width, map.height, toSrgb8Image(radiance, tone));
+    writePng(dir / (name + ".png"), width, height, toSrgb8Image(radiance, tone));
+}
+
+void writeImage(const std::filesystem::path& dir, const std::string& name, const EnvironmentMap& map,
+                const std::vector<glm::vec3>& radiance, const ToneMapOptions& tone) {
+    writeImage(dir, name, map.width, map.height, radiance, tone);
+}
+
+// The GGX split-sum table as an image: A in red, B in green, n . v growing to the right and
+// alpha downwards, one texel per entry, unscaled (both lie in [0, 1]).
+void writeSplitSum(const std::filesystem::path& dir) {
+    const SplitSumTable table = buildSplitSumTable();
+    std::vector<glm::vec3> texels(table.scale.size());
+    for (size_t k = 0; k < texels.size(); ++k) texels[k] = glm::vec3(table.scale[k], table.bias[k], 0.0f);
+    writeImage(dir, "split-sum", table.size, table.size, texels, ToneMapOptions{0.0f, ToneOperator::Clamp});
 }
 
 nlohmann::ordered_json lightsJson(const std::vector<EnvironmentLight>& lights) {
@@ -70,6 +85,7 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
         writePrefiltered(dir, map, pyramid, GlossyLobe::NormalisedPhong, a.phongShininess, tone);
         writePrefiltered(dir, map, pyramid, GlossyLobe::Ggx, a.ggxRoughness, tone);
     }
+    if (!a.ggxRoughness.empty()) writeSplitSum(dir);
     const glm::dvec3 power = environmentPower(map);
     nlohmann::ordered_json json = {{"map", map.source},
                                    {"width", map.width},

@@ -341,7 +341,7 @@ void addEnvironmentCommand(CLI::App& app, EnvironmentArgs& a) {
     e->add_option("--rotation", a.rotationDegrees, "turn about +Y, degrees (right-handed)")->capture_default_str()->check(CLI::Range(-3600.0, 3600.0));
     e->add_option("--lights", a.lights, "median-cut lights to draw")->capture_default_str()->check(CLI::Range(1, 1 << 20));
     e->add_option("--phong", a.phongShininess, "write the map prefiltered for normalised Phong of this shininess (repeatable)");
-    e->add_option("--ggx", a.ggxRoughness, "write the map prefiltered for GGX of this roughness (repeatable)");
+    e->add_option("--ggx", a.ggxRoughness, "write the map prefiltered for GGX of this roughness (repeatable), and the split-sum table");
     e->add_option("--sh-window", a.shWindow, "sinc^4 window width against ringing (0: off, else > 2)")->capture_default_str();
     e->add_option("--exposure", a.exposure, "stops for the PNGs")->capture_default_str()->check(CLI::Range(-30.0f, 30.0f));
     e->add_option("--out", a.outDir, "directory for the EXR, PNG and JSON files")->capture_default_str();

@@ -13,7 +13,7 @@
 //   GGX                w(c) = D(h) max(0, c), roughness alpha in (0, 1], h the half vector of
 //                      r and l, D the GGX distribution (Walter et al. 2007): the environment
 //                      half of the split sum (Karis 2013, "Real Shading in Unreal Engine 4"),
-//                      which takes N = V = r (the other half, the scale and bias table, is to come).
+//                      which takes N = V = r (the other half is split_sum_table.h).
 //
 // A weighted mean, so a constant environment gives exactly its radiance, to rounding.
 //
