@@ -23,14 +23,18 @@ struct Mesh {
     std::vector<glm::vec3> cornerNormals;
 };
 
-enum class MaterialModel { Lambert, BlinnPhong };
+// Every model is a Lambert diffuse term plus, except for Lambert, a specular lobe
+// (shading/shade.h, brdf()): Blinn-Phong and normalised Phong lobes of a shininess, or the
+// GGX microfacet lobe of a roughness (Torrance-Sparrow).
+enum class MaterialModel { Lambert, BlinnPhong, Phong, Ggx };
 
 struct Material {
     std::string name;
     MaterialModel model = MaterialModel::Lambert;
     glm::vec3 albedo{0.8f};    // diffuse reflectance in [0,1]
-    glm::vec3 specular{0.0f};  // Blinn-Phong specular reflectance in [0,1]
-    float shininess = 32.0f;   // Blinn-Phong exponent, > 0
+    glm::vec3 specular{0.0f};  // specular reflectance in [0,1]; GGX: Schlick's F0
+    float shininess = 32.0f;   // Blinn-Phong and Phong exponent, > 0
+    float roughness = 0.5f;    // GGX alpha, in (0, 1]
 };
 
 struct MeshInstance {

@@ -20,15 +20,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::array<std::pair<std::string_view, MaterialModel>, 2> kMaterialModels{{
-    {"lambert", MaterialModel::Lambert}, {"blinn-phong", MaterialModel::BlinnPhong}}};
+constexpr std::array<std::pair<std::string_view, MaterialModel>, 4> kMaterialModels{{
+    {"lambert", MaterialModel::Lambert}, {"blinn-phong", MaterialModel::BlinnPhong}, {"phong", MaterialModel::Phong},
+    {"ggx", MaterialModel::Ggx}}};
+constexpr Interval kRoughness{0.0, 1.0, true, false};
 
 constexpr Interval kFovyDeg{0.0, 180.0, true, true};
 // The rasterizer's viewport limit: a scene that loads can be rendered.
 constexpr Interval kImageSize{1.0, double(raster::kMaxViewport), false, false};
 
-// Specular terms exist only for Blinn-Phong; accepting them on a Lambert material would
-// silently ignore them.
+// Each model accepts only its own terms (specular and shininess for Blinn-Phong and Phong,
+// specular and roughness for GGX): another model's would be silently ignored.
 void readMaterial(const JsonField& field, Scene& scene, SceneNames& names) {
     const JsonObject object = field.object();
     Material material;
@@ -37,11 +39,16 @@ void readMaterial(const JsonField& field, Scene& scene, SceneNames& names) {
     if (std::ranges::find(names.materials, material.name) != names.materials.end())
         nameField.fail("another material is already named \"" + material.name + "\"");
     if (const auto model = object.optional("model")) material.model = model->choice(kMaterialModels);
-    if (material.model == MaterialModel::Lambert) object.allowOnly({"name", "model", "albedo"});
-    else object.allowOnly({"name", "model", "albedo", "specular", "shininess"});
+    switch (material.model) {
+        case MaterialModel::Lambert: object.allowOnly({"name", "model", "albedo"}); break;
+        case MaterialModel::BlinnPhong:
+        case MaterialModel::Phong: object.allowOnly({"name", "model", "albedo", "specular", "shininess"}); break;
+        case MaterialModel::Ggx: object.allowOnly({"name", "model", "albedo", "specular", "roughness"}); break;
+    }
     if (const auto albedo = object.optional("albedo")) material.albedo = albedo->vec3(kUnitInterval);
     if (const auto specular = object.optional("specular")) material.specular = specular->vec3(kUnitInterval);
     if (const auto shininess = object.optional("shininess")) material.shininess = shininess->number(kPositive);
+    if (const auto roughness = object.optional("roughness")) material.roughness = roughness->number(kRoughness);
     scene.materials.push_back(material);
     names.materials.push_back(material.name);
 }

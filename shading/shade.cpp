@@ -19,20 +19,45 @@
 #include "raster/portable_math.h"
 #include "shading/gbuffer_build.h"
 #include "shading/lights.h"
+#include "shading/microfacet_ggx.h"
 
 namespace shadowlab {
 
+namespace {
+
+// The specular lobe of each model, for unit N, wi, wo (shade.h).
+float blinnPhongLobe(float shininess, const glm::vec3& N, const glm::vec3& wi, const glm::vec3& wo) {
+    const float cosH = std::max(0.0f, glm::dot(N, glm::normalize(wi + wo)));
+    return (shininess + 8.0f) * (std::numbers::inv_pi_v<float> / 8.0f) * float(portable::pow(cosH, shininess));
+}
+
+float phongLobe(float shininess, const glm::vec3& N, const glm::vec3& wi, const glm::vec3& wo) {
+    const glm::vec3 mirror = 2.0f * glm::dot(N, wo) * N - wo;
+    const float cosR = std::max(0.0f, glm::dot(mirror, wi));
+    return (shininess + 2.0f) * (std::numbers::inv_pi_v<float> / 2.0f) * float(portable::pow(cosR, shininess));
+}
+
+glm::vec3 ggxLobe(const Material& material, const glm::vec3& N, const glm::vec3& wi, const glm::vec3& wo) {
+    const float cosL = glm::dot(N, wi), cosV = glm::dot(N, wo);
+    if (cosL <= 0.0f || cosV <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 H = glm::normalize(wi + wo);
+    const float w = schlickWeight(std::max(0.0f, glm::dot(wo, H)));
+    const float dv = ggxDistribution(glm::dot(N, H), material.roughness) * smithVisibility(cosL, cosV, material.roughness);
+    return dv * (material.specular * (1.0f - w) + w);
+}
+
+}  // namespace
+
 glm::vec3 brdf(const Material& material, const glm::vec3& N, const glm::vec3& wi,
                const glm::vec3& wo) {
-    const float invPi = std::numbers::inv_pi_v<float>;
-    const glm::vec3 diffuse = material.albedo * invPi;
-    if (material.model == MaterialModel::Lambert) {
-        return diffuse;
+    const glm::vec3 diffuse = material.albedo * std::numbers::inv_pi_v<float>;
+    switch (material.model) {
+        case MaterialModel::Lambert: return diffuse;
+        case MaterialModel::BlinnPhong: return diffuse + material.specular * blinnPhongLobe(material.shininess, N, wi, wo);
+        case MaterialModel::Phong: return diffuse + material.specular * phongLobe(material.shininess, N, wi, wo);
+        case MaterialModel::Ggx: return diffuse + ggxLobe(material, N, wi, wo);
     }
-    const glm::vec3 H = glm::normalize(wi + wo);
-    const float cosH = std::max(0.0f, glm::dot(N, H));
-    const float normalisation = (material.shininess + 8.0f) * (invPi / 8.0f);
-    return diffuse + material.specular * (normalisation * float(portable::pow(cosH, material.shininess)));
+    return diffuse;
 }
 
 namespace {

@@ -24,9 +24,14 @@ std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, size_t 
                              const std::vector<float>& V);
 
 // BRDF of a material, f(wi, wo) in 1/sr, for unit vectors N (normal), wi (to the light)
-// and wo (to the viewer). Lambert: albedo / pi. Blinn-Phong adds the energy-normalised lobe
-// specular * (s + 8) / (8 pi) * max(0, N.H)^s, H = normalize(wi + wo) (Akenine-Moeller,
-// Haines, Hoffman, Real-Time Rendering, 3rd ed., section 7.6).
+// and wo (to the viewer): albedo / pi plus the model's specular lobe.
+//   Blinn-Phong  specular (s + 8) / (8 pi) max(0, N.H)^s, H = normalize(wi + wo)
+//                (Akenine-Moeller, Haines, Hoffman, Real-Time Rendering, 3rd ed., section 7.6);
+//   Phong        specular (s + 2) / (2 pi) max(0, R.wi)^s, R = 2 (N.wo) N - wo the mirror
+//                direction (normalised Phong, Lafortune and Willems 1994: seen along N it
+//                reflects exactly specular);
+//   GGX          D G2 F / (4 (N.wi) (N.wo)) of shading/microfacet_ggx.h, alpha = roughness,
+//                F0 = specular; 0 when wi or wo is below the surface.
 glm::vec3 brdf(const Material& material, const glm::vec3& N, const glm::vec3& wi,
                const glm::vec3& wo);
 

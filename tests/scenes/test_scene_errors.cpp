@@ -107,6 +107,21 @@ TEST_CASE("the unbroken test scene loads") {
     CHECK(scene.materials[1].albedo == Material{}.albedo);   // default kept
 }
 
+TEST_CASE("phong and ggx materials load with their own terms") {
+    const test::TempDir dir;
+    writeMeshFiles(dir);
+    json s = validScene();
+    s["materials"].push_back({{"name", "glossy"}, {"model", "phong"}, {"specular", {0.5, 0.5, 0.5}}, {"shininess", 500}});
+    s["materials"].push_back({{"name", "metal"}, {"model", "ggx"}, {"specular", {0.9, 0.6, 0.3}}, {"roughness", 0.25}});
+    const Scene scene = loadScene(dir.write("scene.json", render(s)));
+    REQUIRE(scene.materials.size() == 4);
+    CHECK(scene.materials[2].model == MaterialModel::Phong);
+    CHECK(scene.materials[2].shininess == 500.0f);
+    CHECK(scene.materials[3].model == MaterialModel::Ggx);
+    CHECK(scene.materials[3].roughness == 0.25f);
+    CHECK(scene.materials[3].specular == glm::vec3(0.9f, 0.6f, 0.3f));
+}
+
 TEST_CASE("missing fields and wrong types") {
     checkCases({
         {"no camera", [](json& s) { s.erase("camera"); }, {"missing required field \"camera\""}},
@@ -138,8 +153,8 @@ TEST_CASE("non-finite numbers, unknown names, unknown keys") {
          {"materials[0].albedo[1]: must be a finite number within float range"}},
         {"light type", [](json& s) { s["lights"][0]["type"] = "area"; },
          {"lights[0].type: unknown value \"area\" (allowed: point, spot, directional, disk, rectangle)"}},
-        {"material model", [](json& s) { s["materials"][0]["model"] = "phong"; },
-         {"materials[0].model: unknown value \"phong\" (allowed: lambert, blinn-phong)"}},
+        {"material model", [](json& s) { s["materials"][0]["model"] = "cook-torrance"; },
+         {"materials[0].model: unknown value \"cook-torrance\" (allowed: lambert, blinn-phong, phong, ggx)"}},
         {"procedural kind", [](json& s) { s["meshes"][0]["procedural"] = "plane"; },
          {"meshes[0].procedural: unknown value \"plane\""}},
         {"typo in light", [](json& s) { s["lights"][0]["radus"] = 0.5; },
@@ -150,6 +165,10 @@ TEST_CASE("non-finite numbers, unknown names, unknown keys") {
          {"instances[1]: unknown key \"transalte\""}},
         {"specular on lambert", [](json& s) { s["materials"][0]["specular"] = {1, 1, 1}; },
          {"materials[0]: unknown key \"specular\""}},
+        {"roughness on blinn-phong", [](json& s) { s["materials"][1]["roughness"] = 0.3; },
+         {"materials[1]: unknown key \"roughness\""}},
+        {"shininess on ggx", [](json& s) { s["materials"][1]["model"] = "ggx"; },
+         {"materials[1]: unknown key \"shininess\""}},
         {"radius on grid", [](json& s) { s["meshes"][0]["radius"] = 1; }, {"meshes[0]: unknown key \"radius\""}},
         {"field of another light type", [](json& s) { s["lights"][1]["radius"] = 1; },
          {"lights[1]: unknown key \"radius\""}},
@@ -221,6 +240,8 @@ TEST_CASE("camera, sizes and transforms out of range") {
          {"materials[0].albedo[0]: must be in [0, 1], got 1.5"}},
         {"zero shininess", [](json& s) { s["materials"][1]["shininess"] = 0; },
          {"materials[1].shininess: must be > 0, got 0"}},
+        {"zero roughness", [](json& s) { s["materials"][1] = {{"name", "rough"}, {"model", "ggx"}, {"roughness", 0}}; },
+         {"materials[1].roughness: must be in (0, 1], got 0"}},
         {"negative scale", [](json& s) { s["instances"][1]["scale"] = -1; }, {"instances[1].scale: must be > 0, got -1"}},
         {"zero scale axis", [](json& s) { s["instances"][1]["scale"] = {1, 0, 1}; },
          {"instances[1].scale[1]: must be > 0, got 0"}},
