@@ -36,14 +36,20 @@ glm::dvec3 directionalAlbedo(const Material& material, double cosV) {
     return sum * (kPi / (double(kTheta) * kPhi));
 }
 
+// A material with its specular lobe alone.
+Material specularOnly(MaterialModel model, const glm::vec3& specular) {
+    Material m;
+    m.model = model;
+    m.albedo = glm::vec3(0.0f);
+    m.specular = specular;
+    return m;
+}
+
 }  // namespace
 
 TEST_CASE("normalised Phong seen along the normal reflects exactly its specular reflectance") {
     for (float shininess : {1.0f, 40.0f, 500.0f}) {
-        Material phong;
-        phong.model = MaterialModel::Phong;
-        phong.albedo = glm::vec3(0.0f);
-        phong.specular = glm::vec3(1.0f, 0.5f, 0.25f);
+        Material phong = specularOnly(MaterialModel::Phong, glm::vec3(1.0f, 0.5f, 0.25f));
         phong.shininess = shininess;
         const glm::dvec3 albedo = directionalAlbedo(phong, 1.0);
         CAPTURE(shininess);
@@ -57,10 +63,7 @@ TEST_CASE("GGX's directional albedo is the split-sum table's F0 A + B, and Lambe
     const SplitSumTable table = buildSplitSumTable(32);
     for (double cosV : {0.203125, 0.515625, 0.984375}) {
         for (float roughness : {0.140625f, 0.515625f, 0.984375f}) {
-            Material ggx;
-            ggx.model = MaterialModel::Ggx;
-            ggx.albedo = glm::vec3(0.0f);
-            ggx.specular = glm::vec3(1.0f, 0.5f, 0.04f);
+            Material ggx = specularOnly(MaterialModel::Ggx, glm::vec3(1.0f, 0.5f, 0.04f));
             ggx.roughness = roughness;
             const glm::dvec2 ab = lookupSplitSum(table, cosV, roughness);
             const glm::dvec3 albedo = directionalAlbedo(ggx, cosV);
