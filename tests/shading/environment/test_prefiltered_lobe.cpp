@@ -13,6 +13,7 @@
 #include "shading/environment/prefiltered_lobe.h"
 
 #include "sphere_directions.h"
+#include "sunny_map.h"
 
 using namespace shadowlab;
 
@@ -53,24 +54,6 @@ glm::dvec3 bruteForce(const EnvironmentMap& map, const glm::dvec3& r, W weight) 
     return sum / total;
 }
 
-// A map with smooth sky, a darker ground and a small bright sun of 2 x 2 texels: the sun is
-// 10^4 times the sky, as in the shipped maps.
-EnvironmentMap testMap(int width, int height) {
-    EnvironmentMap map = constantEnvironment(width, height, glm::vec3(0.0f));
-    for (int j = 0; j < height; ++j) {
-        for (int i = 0; i < width; ++i) {
-            const float v = (j + 0.5f) / height, u = (i + 0.5f) / width;
-            map.radiance[size_t(j) * width + i] = v < 0.5f ? glm::vec3(0.4f + 0.6f * v, 0.6f, 1.0f - u * 0.5f)
-                                                           : glm::vec3(0.2f, 0.15f + 0.1f * u, 0.1f);
-        }
-    }
-    for (int j = height / 4; j < height / 4 + 2; ++j) {
-        for (int i = width / 3; i < width / 3 + 2; ++i) map.radiance[size_t(j) * width + i] = glm::vec3(1e4f, 9e3f, 8e3f);
-    }
-    map.rotationRadians = 0.3;
-    return map;
-}
-
 // The worst and mean error of P against brute force, relative to the brute-force value's
 // luminance plus the map's mean radiance (so dim directions are judged on the scale of the
 // map, bright ones on their own).
@@ -94,7 +77,7 @@ Agreement agreement(const EnvironmentMap& map, int directions, Lookup lookup, W 
 }  // namespace
 
 TEST_CASE("environment pyramid: every level tiles the sphere and keeps the map's integral, odd sizes included") {
-    EnvironmentMap map = testMap(75, 37);
+    EnvironmentMap map = sunnyMap(75, 37);
     const glm::dvec3 power = environmentPower(map);
     const EnvironmentPyramid pyramid = buildPyramid(map);
     REQUIRE(pyramid.levels.size() == 5);   // 75 x 37, 38 x 19, 19 x 10, 10 x 5, 5 x 3
@@ -140,7 +123,7 @@ TEST_CASE("prefiltered lobes: Phong shininess 40 and 300 agree with brute force 
         double shininess, worst, mean;
     };
     for (const Case c : {Case{128, 40.0, 0.02, 0.0012}, Case{256, 300.0, 0.008, 0.0003}}) {
-        const EnvironmentMap map = testMap(2 * c.height, c.height);
+        const EnvironmentMap map = sunnyMap(2 * c.height, c.height);
         const EnvironmentMap prefiltered = prefilterLobe(map, buildPyramid(map), GlossyLobe::NormalisedPhong, c.shininess);
         const Agreement a = agreement(map, 48, [&](const glm::dvec3& r) { return samplePrefiltered(prefiltered, r); },
                                       [&](double cosine) { return phongWeight(c.shininess, cosine); });
@@ -152,7 +135,7 @@ TEST_CASE("prefiltered lobes: Phong shininess 40 and 300 agree with brute force 
 }
 
 TEST_CASE("prefiltered lobes: GGX roughness 0.25 agrees with brute force over every texel") {
-    const EnvironmentMap map = testMap(256, 128);
+    const EnvironmentMap map = sunnyMap(256, 128);
     const EnvironmentMap prefiltered = prefilterLobe(map, buildPyramid(map), GlossyLobe::Ggx, 0.25);
     const Agreement a = agreement(map, 48, [&](const glm::dvec3& r) { return samplePrefiltered(prefiltered, r); },
                                   [](double cosine) { return ggxWeight(0.25, cosine); });
@@ -163,7 +146,7 @@ TEST_CASE("prefiltered lobes: GGX roughness 0.25 agrees with brute force over ev
 }
 
 TEST_CASE("prefiltered lobes: a table interpolates shininess 40 between 32 and 64 in log n") {
-    const EnvironmentMap map = testMap(256, 128);
+    const EnvironmentMap map = sunnyMap(256, 128);
     const PrefilteredLobes table = prefilterLobes(map, GlossyLobe::NormalisedPhong, {64.0, 32.0, 32.0});
     REQUIRE(table.parameters == std::vector<double>{32.0, 64.0});
     const Agreement a = agreement(map, 48, [&](const glm::dvec3& r) { return lookupPrefiltered(table, 40.0, r); },
@@ -179,7 +162,7 @@ TEST_CASE("prefiltered lobes: a table interpolates shininess 40 between 32 and 6
 }
 
 TEST_CASE("prefiltered lobes: the same bits for 1 and 2 threads") {
-    const EnvironmentMap map = testMap(128, 64);
+    const EnvironmentMap map = sunnyMap(128, 64);
     const auto run = [&] { return prefilterLobe(map, buildPyramid(map), GlossyLobe::NormalisedPhong, 12.0).radiance; };
     CHECK(withThreads(1, run) == withThreads(2, run));
 }
