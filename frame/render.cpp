@@ -6,9 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "raster/rasterizer.h"
 #include "scenes/camera.h"
-#include "shading/gbuffer_build.h"
 #include "shading/shade.h"
 
 namespace shadowlab {
@@ -59,30 +57,22 @@ void applyOverrides(Scene& scene, const SceneOverrides& o) {
     if (o.lightRadius) applyLightRadius(scene, *o.lightRadius);
 }
 
-GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd) {
-    raster::Framebuffer fb(camera.width, camera.height, {.primitiveId = true});
-    fb.clearPrimitiveId(kNoTriangle);
-    raster::PipelineState state;
-    state.cull = raster::CullMode::None;
-    state.output = raster::FragmentOutput::PrimitiveId;
-    raster::Rasterizer rasterizer(simd);
-    rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld(camera)));
-    return buildGBuffer(world, camera, fb.primitiveIdImage(), fb.depthImage());
-}
-
 Frame renderFrame(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings) {
     const Scene& scene = prepared.scene();
-    if (scene.lights.empty()) throw std::invalid_argument("the scene has no light to cast shadows");
+    // A visibility technique shadows the scene's first light; a radiance technique lights the
+    // scene itself (an environment map, and any lights the scene has), so it needs none.
+    if (scene.lights.empty() && technique.output == TechniqueOutput::Visibility)
+        throw std::invalid_argument("the scene has no light to cast shadows");
+    const Light noLight{.intensity = glm::vec3(0.0f)};
+    const Light& light = scene.lights.empty() ? noLight : scene.lights[0];
     const TechniqueParams params(technique.name, technique.params, settings.params);
     Frame frame;
     frame.output = technique.output;
     frame.gbuffer = renderGBuffer(prepared.world(), scene.camera, settings.simd);
-    if (technique.usesEdgeAdjacency) {
-        if (const std::optional<double> ms = prepared.buildEdgeAdjacency()) frame.preparation.push_back({"edge_adjacency_ms", *ms});
-    }
+    if (technique.prepare) frame.preparation = technique.prepare(prepared);
 
     const auto start = std::chrono::steady_clock::now();
-    frame.shadow = technique.run({prepared, frame.gbuffer, scene.lights[0], settings.simd, params, settings.debugDir,
+    frame.shadow = technique.run({prepared, frame.gbuffer, light, settings.simd, params, settings.debugDir,
                                   settings.progress});
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (technique.output == TechniqueOutput::Visibility) {

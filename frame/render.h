@@ -14,6 +14,7 @@
 #include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shadows/camera_pass.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -32,18 +33,15 @@ struct SceneOverrides {
 // that is not > 0 (and finite) or whose first light is not a disk.
 void applyOverrides(Scene& scene, const SceneOverrides& overrides);
 
-// The camera pass: every pixel's nearest triangle (no culling, so open meshes show both
-// sides), then the exact G-buffer from it (shading/gbuffer_build.h).
-GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd);
-
 struct Frame {
     GBuffer gbuffer;
     ShadowOutputs shadow;
     TechniqueOutput output = TechniqueOutput::Visibility;   // the technique's
     std::vector<glm::vec3> radiance;   // linear, row-major: V shaded, or the technique's own
     double techniqueMs = 0.0;          // wall time of the technique alone
-    // Scene preparation this frame did (the edge adjacency, on the first frame of a
-    // technique that reads it: PreparedScene::buildEdgeAdjacency()), outside techniqueMs.
+    // Scene preparation this frame did (Technique::prepare: the edge adjacency or an
+    // environment's tables, on the first frame of a technique that reads them), outside
+    // techniqueMs.
     std::vector<TechniqueStat> preparation;
 };
 

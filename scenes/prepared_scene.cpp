@@ -28,6 +28,17 @@ std::optional<double> PreparedScene::buildEdgeAdjacency() const {
     return builtHere;
 }
 
+const void* PreparedScene::derivedData(std::type_index type, const std::function<std::shared_ptr<const void>()>& build,
+                                       std::optional<double>& builtMs) const {
+    const std::lock_guard lock(derivedMutex_);
+    std::shared_ptr<const void>& slot = derived_[type];
+    if (!slot) {
+        // Isolated for the reason buildEdgeAdjacency() gives: a build may run in parallel.
+        builtMs = millisecondsOf([&] { tbb::this_task_arena::isolate([&] { slot = build(); }); });
+    }
+    return slot.get();
+}
+
 const std::vector<EdgeAdjacency>& PreparedScene::edgeAdjacency() const {
     buildEdgeAdjacency();
     return adjacency_;

@@ -5,8 +5,12 @@
 // or an edited copy of one, can never share stale data.
 #pragma once
 
+#include <functional>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
+#include <typeindex>
 #include <vector>
 
 #include "scenes/edge_adjacency.h"
@@ -35,11 +39,31 @@ public:
     // call that built it, nothing to every other: the cost is reported once.
     std::optional<double> buildEdgeAdjacency() const;
 
+    // What a family of techniques derives from the fixed parts of the scene (its geometry,
+    // materials, environment: an environment map's tables, say), made by `build()` on the
+    // first call for the type T and kept for every later frame, as the edge adjacency is;
+    // so no family keeps a cache of its own. `builtMs`, if given, gets the wall time of the
+    // build to the one call that made it, and nothing otherwise. A build that throws keeps
+    // nothing, and the next call tries again. Thread-safe; one build runs at a time.
+    template <class T, class Build>
+    const T& derived(Build&& build, std::optional<double>* builtMs = nullptr) const {
+        std::optional<double> ms;
+        const void* data = derivedData(
+            typeid(T), [&]() -> std::shared_ptr<const void> { return std::make_shared<const T>(build()); }, ms);
+        if (builtMs) *builtMs = ms;
+        return *static_cast<const T*>(data);
+    }
+
 private:
+    const void* derivedData(std::type_index type, const std::function<std::shared_ptr<const void>()>& build,
+                            std::optional<double>& builtMs) const;
+
     Scene scene_;
     WorldGeometry world_;
     mutable std::once_flag adjacencyBuilt_;
     mutable std::vector<EdgeAdjacency> adjacency_;
+    mutable std::mutex derivedMutex_;
+    mutable std::map<std::type_index, std::shared_ptr<const void>> derived_;
 };
 
 }  // namespace shadowlab

@@ -1,6 +1,7 @@
 #include "shadows/technique.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace shadowlab {
 
@@ -10,6 +11,11 @@ ShadowOutputs unlitOutputs(const GBuffer& g) {
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
     return out;
+}
+
+std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared) {
+    if (const std::optional<double> ms = prepared.buildEdgeAdjacency()) return {{"edge_adjacency_ms", *ms}};
+    return {};
 }
 
 Light pointLightFor(const Light& light) {

@@ -29,9 +29,14 @@ struct ShadowInputs {
     const TechniqueParams& params;         // the technique's level-of-detail settings
     std::filesystem::path debugDir;        // empty: write no intermediate buffers
     Progress* progress = nullptr;          // where a slow technique reports; null: nowhere
+    // The camera the G-buffer was built with; null: the scene's. A technique that lights
+    // the scene from many lights may run another technique on a smaller G-buffer of the same
+    // view (subtractive shadows at a lower sampling detail), whose camera it names here.
+    const Camera* gbufferCamera = nullptr;
 
     const Scene& scene() const { return prepared.scene(); }
     const WorldGeometry& world() const { return prepared.world(); }
+    const Camera& camera() const { return gbufferCamera ? *gbufferCamera : prepared.scene().camera; }
 };
 
 // A named figure a technique reports about its own work (texels, fill, list lengths...).
@@ -63,10 +68,16 @@ struct Technique {
     // techniques; `reference-soft`, the visible fraction of an area light, for soft ones.
     std::string referenceName = "reference";
     TechniqueOutput output = TechniqueOutput::Visibility;
-    // It reads the prepared scene's edge adjacency: the frame builds it, once per prepared
-    // scene, before the technique's time starts (frame/render.h).
-    bool usesEdgeAdjacency = false;
+    // Scene preparation the technique reads (the edge adjacency, an environment's tables):
+    // the frame calls it before the technique's time starts (frame/render.h), so that what
+    // an engine builds at load time is not counted in a frame. It builds what is missing,
+    // once per prepared scene, and returns the wall time of what it built (`<what>_ms`),
+    // nothing when all was built already. Null: the technique needs none.
+    std::function<std::vector<TechniqueStat>(const PreparedScene&)> prepare = nullptr;
 };
+
+// Technique::prepare of the techniques that read the edge adjacency (silhouettes).
+std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared);
 
 // A view that sees no surface has one answer, V = 0 everywhere. A technique that fits a
 // light's view to its receivers (an error with none, light_view.h) checks its settings and

@@ -36,7 +36,7 @@ Technique finsTechnique() {
             .run = runFins,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility,
-            .usesEdgeAdjacency = true};
+            .prepare = prepareEdgeAdjacency};
 }
 
 }  // namespace shadowlab

@@ -26,7 +26,7 @@ Technique penumbraMapsTechnique() {
             .run = runPenumbraMaps,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility,
-            .usesEdgeAdjacency = true};
+            .prepare = prepareEdgeAdjacency};
 }
 
 }  // namespace shadowlab

@@ -30,7 +30,7 @@ Technique smoothiesTechnique() {
             .run = runSmoothies,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility,
-            .usesEdgeAdjacency = true};
+            .prepare = prepareEdgeAdjacency};
 }
 
 }  // namespace shadowlab

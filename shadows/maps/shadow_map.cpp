@@ -72,7 +72,7 @@ LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapS
     }
     LightMaps out;
     if (lispsm) {
-        const LispsmView warped = lispsmView(view, light, in.scene().camera, in.gbuffer, s.resolution, options.marginTexels);
+        const LispsmView warped = lispsmView(view, light, in.camera(), in.gbuffer, s.resolution, options.marginTexels);
         view = warped.view, out.nOpt = warped.nOpt;
     }
     timer.lap("light_view");
@@ -94,7 +94,7 @@ struct CubeFace {
 
 ShadowLookup lookUp(const ShadowInputs& in, const Light& light, const LightMaps& lm, const ShadowMapSettings& s) {
     const PcfKernel kernel = makePcfKernel(s.filter);
-    const Camera& camera = in.scene().camera;
+    const Camera& camera = in.camera();
     const bool everyPixelDensity = !in.debugDir.empty();
     if (lm.cube) return lookUpShadows(in.gbuffer, camera, light, lm.maps, CubeFace{lm.maps}, s.bias, kernel, in.simd,
                                          everyPixelDensity);

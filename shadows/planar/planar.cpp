@@ -119,7 +119,7 @@ raster::PipelineState shadowState() {
 }
 
 ShadowOutputs run(const ShadowInputs& in) {
-    const Camera& camera = in.scene().camera;
+    const Camera& camera = in.camera();
     const glm::dvec4 plane(0.0, 1.0, 0.0, -in.params.real("plane-y"));
     const float opacity = float(in.params.real("opacity"));
     const glm::dvec4 light = homogeneousLight(pointLightFor(in.light));

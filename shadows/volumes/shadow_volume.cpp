@@ -80,7 +80,7 @@ struct CountingChoice {
 
 // Step 2, taken first: step 1 builds the caps for z-fail only.
 CountingChoice chooseCounting(const ShadowInputs& in, const glm::dvec4& light) {
-    const bool nearPlaneShadowed = nearPlaneMayBeShadowed(in.scene().camera, light, instanceBounds(in.scene(), in.world()));
+    const bool nearPlaneShadowed = nearPlaneMayBeShadowed(in.camera(), light, instanceBounds(in.scene(), in.world()));
     switch (in.params.choice<Mode>("mode")) {
         case Mode::ZPass: return {Counting::ZPass, nearPlaneShadowed};
         case Mode::ZFail: return {Counting::ZFail, nearPlaneShadowed};
@@ -205,7 +205,7 @@ void addVolumeStats(const ShadowInputs& in, const CountingChoice& choice, const 
 
 void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowOutputs& out, const ShadowVolume& volume,
                 const std::vector<float>& fill) {
-    const Camera& camera = in.scene().camera;
+    const Camera& camera = in.camera();
     debug.write("stencil", camera.width, camera.height, out.stencil, -4.0f, 4.0f);
     debug.write("silhouette", camera.width, camera.height, silhouetteImage(camera, in.world().positions, volume.silhouette),
                 0.0f, 1.0f);
@@ -213,7 +213,7 @@ void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowO
 }
 
 ShadowOutputs run(const ShadowInputs& in) {
-    const Camera& camera = in.scene().camera;
+    const Camera& camera = in.camera();
     const Light light = pointLightFor(in.light);
     const glm::dvec4 lightH = homogeneousLight(light);
     StageTimer timer;
@@ -253,7 +253,7 @@ Technique shadowVolumeTechnique() {
             .run = run,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility,
-            .usesEdgeAdjacency = true};
+            .prepare = prepareEdgeAdjacency};
 }
 
 }  // namespace shadowlab

@@ -85,8 +85,8 @@ TEST_CASE("a view that sees no surface gives V = 0 everywhere for every techniqu
 TEST_CASE("the edge adjacency is built before the technique's time, once per prepared scene, and reported there") {
     const PreparedScene prepared(smallScene("sphere-box"));
     const Technique& volumes = findTechnique("shadow-volume");
-    REQUIRE(volumes.usesEdgeAdjacency);
-    CHECK_FALSE(findTechnique("shadow-map").usesEdgeAdjacency);
+    REQUIRE(volumes.prepare);
+    CHECK_FALSE(findTechnique("shadow-map").prepare);
     const Frame first = renderFrame(prepared, volumes), second = renderFrame(prepared, volumes);
     REQUIRE(first.preparation.size() == 1);
     CHECK(first.preparation[0].name == "edge_adjacency_ms");

@@ -1,0 +1,20 @@
+#include "shadows/camera_pass.h"
+
+#include "raster/rasterizer.h"
+#include "scenes/camera.h"
+#include "shading/gbuffer_build.h"
+
+namespace shadowlab {
+
+GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd) {
+    raster::Framebuffer fb(camera.width, camera.height, {.primitiveId = true});
+    fb.clearPrimitiveId(kNoTriangle);
+    raster::PipelineState state;
+    state.cull = raster::CullMode::None;
+    state.output = raster::FragmentOutput::PrimitiveId;
+    raster::Rasterizer rasterizer(simd);
+    rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld(camera)));
+    return buildGBuffer(world, camera, fb.primitiveIdImage(), fb.depthImage());
+}
+
+}  // namespace shadowlab
