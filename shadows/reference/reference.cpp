@@ -101,6 +101,12 @@ struct Receiver {
     double offset;
 };
 
+// The receiver of a G-buffer point, its rays' origin moved along N (shadows/ray_offset.h).
+Receiver receiverAt(const glm::vec3& P, const glm::vec3& N, double sceneDiagonal) {
+    const double offset = shadowRayOffset(P, sceneDiagonal);
+    return {glm::dvec3(P), glm::dvec3(N), glm::vec3(glm::dvec3(P) + offset * glm::dvec3(N)), offset};
+}
+
 bool faces(const Receiver& r, const glm::dvec3& direction) { return glm::dot(r.N, direction) > 0.0; }
 
 // Visibility of one point of a light: in front of the surface and nothing in between.
@@ -185,6 +191,11 @@ ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world)
 
 ReferenceVisibility::~ReferenceVisibility() = default;
 
+bool ReferenceVisibility::directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const {
+    ShadowRays rays(embree_->scene);
+    return shadowlab::directionVisible(rays, receiverAt(P, N, sceneDiagonal_), direction);
+}
+
 std::vector<float> ReferenceVisibility::visibility(const GBuffer& gbuffer, const Light& light,
                                                    const ReferenceOptions& options) const {
     requireConsistent(gbuffer, "ReferenceVisibility::visibility");
@@ -203,10 +214,7 @@ std::vector<float> ReferenceVisibility::visibility(const GBuffer& gbuffer, const
                 if (!gbuffer.hit[k]) {
                     continue;
                 }
-                const glm::dvec3 P(gbuffer.position[k]), N(gbuffer.normal[k]);
-                const double offset = shadowRayOffset(gbuffer.position[k]);
-                const Receiver receiver{P, N, glm::vec3(P + offset * N), offset};
-                V[k] = pixelVisibility(rays, query, receiver, k);
+                V[k] = pixelVisibility(rays, query, receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
             }
             progress.advance();
         }

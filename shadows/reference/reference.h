@@ -53,6 +53,12 @@ public:
     std::vector<float> visibility(const GBuffer& gbuffer, const Light& light,
                                   const ReferenceOptions& options = {}) const;
 
+    // Whether a distant light in `direction` (unit) reaches the surface point P of geometric
+    // normal N: in front of N's plane and nothing in the way of a ray to infinity from the
+    // origin visibility() uses. For integrators that choose their own directions (the
+    // environment reference); not counted in raysCast().
+    bool directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const;
+
     // Shadow rays cast by all visibility() calls so far (for Mrays/s in benchmarks).
     uint64_t raysCast() const { return raysCast_.load(); }
 
