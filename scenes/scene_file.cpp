@@ -128,9 +128,12 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     for (const JsonField& material : object["materials"].elements()) readMaterial(material, scene, names);
     for (const JsonField& instance : object["instances"].elements()) readInstance(instance, names, scene);
     for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light));
-    if (scene.lights.empty()) object["lights"].fail("needs at least one light");
     scene.camera = readCamera(object["camera"]);
     if (const auto environment = object.optional("environment")) scene.environment = readEnvironment(*environment, directory);
+    // Something must light the scene: a light, or an environment map (the environment
+    // techniques need no other light; the shadow techniques then say they have none).
+    if (scene.lights.empty() && scene.environment.map.empty())
+        object["lights"].fail("needs at least one light, or an environment map (environment.map)");
     checkSize(root, scene);
     return scene;
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "shading/image_io.h"
+#include "shading/tonemap.h"
 
 namespace shadowlab {
 
@@ -17,7 +18,7 @@ void DebugBuffers::write(const std::string& name, int width, int height, const s
                          float low, float high) const {
     if (!enabled()) return;
     if (values.size() != size_t(width) * size_t(height)) throw std::logic_error("debug buffer " + name + ": wrong size");
-    const std::filesystem::path base = directory_ / (technique_ + "-" + name);
+    const std::filesystem::path base = this->base(name);
     ImageChannels exr;
     exr.width = width, exr.height = height;
     exr.set("Y", values);
@@ -29,6 +30,22 @@ void DebugBuffers::write(const std::string& name, int width, int height, const s
         rgb[3 * k] = rgb[3 * k + 1] = rgb[3 * k + 2] = uint8_t(std::lround(t * 255.0f));
     }
     writePng(base.string() + ".png", width, height, rgb);
+}
+
+void DebugBuffers::writeRadiance(const std::string& name, int width, int height,
+                                 const std::vector<glm::vec3>& radiance) const {
+    if (!enabled()) return;
+    if (radiance.size() != size_t(width) * size_t(height)) throw std::logic_error("debug buffer " + name + ": wrong size");
+    ImageChannels exr;
+    exr.width = width, exr.height = height;
+    setRadiance(exr, radiance);
+    writeExr(base(name).string() + ".exr", exr);
+    writePng(base(name).string() + ".png", width, height, toSrgb8Image(radiance, {}));
+}
+
+void DebugBuffers::writePicture(const std::string& name, int width, int height, const std::vector<uint8_t>& rgb) const {
+    if (!enabled()) return;
+    writePng(base(name).string() + ".png", width, height, rgb);
 }
 
 }  // namespace shadowlab

@@ -1,12 +1,17 @@
 // Intermediate buffers a technique shows on request (`--debug-buffers DIR`): each is
 // written as DIR/<technique>-<name>.exr (the exact float values, channel "Y") and
 // DIR/<technique>-<name>.png (the values mapped linearly from [low, high] to black..white,
-// for people). Row 0 is the top row, as for every image (conventions.md).
+// for people); a radiance buffer as channels R, G, B and a tone-mapped PNG (the image's own
+// tone mapping, shading/tonemap.h); a picture made for people (lights drawn on a map) as a
+// PNG only. Row 0 is the top row, as for every image (conventions.md).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 namespace shadowlab {
 
@@ -18,8 +23,12 @@ public:
     bool enabled() const { return !directory_.empty(); }
     void write(const std::string& name, int width, int height, const std::vector<float>& values, float low,
                float high) const;
+    void writeRadiance(const std::string& name, int width, int height, const std::vector<glm::vec3>& radiance) const;
+    void writePicture(const std::string& name, int width, int height, const std::vector<uint8_t>& rgb) const;
 
 private:
+    std::filesystem::path base(const std::string& name) const { return directory_ / (technique_ + "-" + name); }
+
     std::filesystem::path directory_;
     std::string technique_;
 };

@@ -2,6 +2,7 @@
 // them. The one core file that includes the families (docs/architecture.md).
 #include <stdexcept>
 
+#include "compositing/environment_techniques.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/fins/fins.h"
 #include "shadows/izb/izb.h"
@@ -32,6 +33,10 @@ const std::vector<Technique>& techniques() {
         finsTechnique(),
         smoothiesTechnique(),
         penumbraMapsTechnique(),
+        environmentAdditiveTechnique(),
+        environmentSubtractiveTechnique(),
+        environmentLightsReferenceTechnique(),
+        environmentReferenceTechnique(),
     };
     return all;
 }

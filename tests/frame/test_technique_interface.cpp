@@ -4,6 +4,7 @@
 // its own image.
 #include <doctest/doctest.h>
 
+#include <map>
 #include <regex>
 #include <set>
 #include <string>
@@ -24,22 +25,35 @@ Scene smallScene(const std::string& nameOrPath) {
 
 std::string sunScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/hard/sun.json"; }
 
-// The techniques that need a directional light run on the sun case, the others on
-// sphere-box (a disk light, which the soft techniques need).
+// The techniques that need a directional light run on the sun case, the environment
+// techniques on a sphere under a sky map, the others on sphere-box (a disk light, which the
+// soft techniques need).
 bool needsDirectionalLight(const Technique& t) { return t.name == "csm"; }
+std::string skyScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/environment/sphere-sky.json"; }
+
+// Settings that keep each technique's frame small: few samples and lights.
+std::map<std::string, std::string> quickSettings(const Technique& t) {
+    if (t.name == "reference-soft") return {{"samples-per-axis", "2"}};
+    if (t.name == "shadow-map") return {{"warp", "lispsm"}};
+    if (t.name == "reference-env") return {{"samples", "2"}};
+    if (t.output == TechniqueOutput::Radiance) return {{"lights", "4"}};
+    return {};
+}
 
 }  // namespace
 
 TEST_CASE("every technique's stat names are snake_case and end in a unit (docs/architecture.md)") {
     const std::regex rule("[a-z][a-z0-9]*(_[a-z0-9]+)*_(ms|m|texels|pixels|triangles|edges|fragments|fragments_per_pixel|"
                           "texels_per_pixel|receivers|percent|count|flag|ratio)");
-    const PreparedScene disk(smallScene("sphere-box")), sun(smallScene(sunScene()));
+    const PreparedScene disk(smallScene("sphere-box")), sun(smallScene(sunScene())), sky(smallScene(skyScene()));
     std::set<std::string> seen;
     for (const Technique& t : techniques()) {
         FrameSettings settings;
-        if (t.name == "reference-soft") settings.params = {{"samples-per-axis", "2"}};
-        if (t.name == "shadow-map") settings.params = {{"warp", "lispsm"}};
-        const Frame frame = renderFrame(needsDirectionalLight(t) || t.name == "shadow-map" ? sun : disk, t, settings);
+        settings.params = quickSettings(t);
+        const PreparedScene& scene = t.output == TechniqueOutput::Radiance                       ? sky
+                                     : needsDirectionalLight(t) || t.name == "shadow-map" ? sun
+                                                                                          : disk;
+        const Frame frame = renderFrame(scene, t, settings);
         int stageLaps = 0;
         for (const TechniqueStat& s : frame.shadow.stats) {
             INFO(t.name << ": " << s.name);
@@ -58,12 +72,19 @@ TEST_CASE("every technique's stat names are snake_case and end in a unit (docs/a
         CHECK(seen.count(stage) == 1);
 }
 
-TEST_CASE("a view that sees no surface gives V = 0 everywhere for every technique") {
-    Scene looksUp = smallScene("sphere-box"), sunUp = smallScene(sunScene());
-    for (Scene* s : {&looksUp, &sunUp}) s->camera.target = s->camera.eye + glm::vec3(0.0f, 1.0f, 0.01f);
-    const PreparedScene disk(looksUp), sun(sunUp);
+TEST_CASE("a view that sees no surface gives V = 0 (or no radiance) everywhere for every technique") {
+    Scene looksUp = smallScene("sphere-box"), sunUp = smallScene(sunScene()), skyUp = smallScene(skyScene());
+    for (Scene* s : {&looksUp, &sunUp, &skyUp}) s->camera.target = s->camera.eye + glm::vec3(0.0f, 1.0f, 0.01f);
+    const PreparedScene disk(looksUp), sun(sunUp), sky(skyUp);
     for (const Technique& t : techniques()) {
         INFO(t.name);
+        if (t.output == TechniqueOutput::Radiance) {   // no surface, no light reflected
+            FrameSettings settings;
+            settings.params = quickSettings(t);
+            const Frame frame = renderFrame(sky, t, settings);
+            CHECK(std::count(frame.radiance.begin(), frame.radiance.end(), glm::vec3(0.0f)) == long(frame.gbuffer.pixelCount()));
+            continue;
+        }
         const Frame frame = renderFrame(needsDirectionalLight(t) ? sun : disk, t);
         REQUIRE(frame.shadow.visibility.size() == frame.gbuffer.pixelCount());
         CHECK(std::count(frame.gbuffer.hit.begin(), frame.gbuffer.hit.end(), 1) == 0);

@@ -209,7 +209,7 @@ TEST_CASE("degenerate lights") {
          {"lights[3].color[2]: must be >= 0, got -0.5"}},
         {"infinite intensity", [](json& s) { s["lights"][3]["color"] = {3e38, 1, 1}; },
          {"lights[3].power: color * power overflows float"}},
-        {"no lights", [](json& s) { s["lights"] = json::array(); }, {"lights: needs at least one light"}},
+        {"no lights", [](json& s) { s["lights"] = json::array(); }, {"lights: needs at least one light, or an environment map (environment.map)"}},
     });
 }
 

@@ -1,0 +1,144 @@
+// reference-env: the exact light a surface reflects from the environment,
+//
+//     L_o(wo) = integral over the sphere of f(wi, wo) L_env(wi) V(wi) max(0, Ns . wi) dwi,
+//
+// estimated per pixel by multiple importance sampling (Veach and Guibas 1995) of two
+// strategies, one sample of each per round with the balance heuristic, so a round adds
+//
+//     sum over s in {environment, BRDF} of f L V cos / (p_env(w_s) + p_brdf(w_s)),
+//
+// p_env the map's luminance (shading/environment/environment_distribution.h), p_brdf the
+// material's lobes (shading/brdf_sampling.h), V an Embree ray to infinity (with the
+// geometric normal's test and offset of every reference, shadows/reference/reference.h).
+// L_env is the map's piecewise-constant function, the one every other integral here uses.
+//
+// Convergence is measured, not assumed: the samples are two independent halves, A and B
+// (streams seeded apart), the image is their mean, and the stat `halves_rms` is
+// RMS(Y_A - Y_B) / 2 over hit pixels, which estimates the RMS error of the mean's
+// luminance (for independent halves E (A - B)^2 = 2 Var A = 4 Var((A + B) / 2)), and
+// `halves_rms_percent` the same against the mean luminance. It falls as 1 / sqrt(samples).
+// Every pixel draws the same count of numbers from its own stream (seed, pixel), so the
+// image is the same bytes for any number of threads.
+#include <cmath>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "compositing/environment_source.h"
+#include "compositing/environment_techniques.h"
+#include "compositing/light_contribution.h"
+#include "shading/brdf_sampling.h"
+#include "shading/environment/environment_distribution.h"
+#include "shading/light_sampling.h"
+#include "shading/shade.h"
+#include "shadows/reference/reference.h"
+#include "shadows/stage_timer.h"
+
+namespace shadowlab {
+namespace {
+
+constexpr uint64_t kHalfSeeds[2] = {0x656e762d41ull, 0x656e762d42ull};   // "env-A", "env-B"
+
+struct Integrand {
+    const EnvironmentMap& map;
+    const EnvironmentDistribution& environment;
+    const ReferenceVisibility& rays;
+    const Material& material;
+    glm::vec3 P, Ng, Ns, wo;
+
+    // f L V cos / (p_env + p_brdf) in direction wi; 0 below either normal's plane.
+    glm::dvec3 operator()(const glm::dvec3& wi) const {
+        const double cosine = glm::dot(glm::dvec3(Ns), wi);
+        if (!(cosine > 0.0)) return glm::dvec3(0.0);
+        const glm::ivec2 t = map.texelToward(wi);
+        const glm::dvec3 L(map.at(t.x, t.y));
+        const glm::dvec3 f(brdf(material, Ns, glm::vec3(wi), wo));
+        if (glm::dot(f * L, glm::dvec3(1.0)) == 0.0) return glm::dvec3(0.0);
+        const double pdf = (environment.empty() ? 0.0 : environment.pdf(wi)) +
+                           brdfPdf(material, glm::dvec3(Ns), glm::dvec3(wo), wi);
+        if (!(pdf > 0.0) || !rays.directionVisible(P, Ng, wi)) return glm::dvec3(0.0);
+        return f * L * cosine / pdf;
+    }
+};
+
+// One half's estimate: `rounds` rounds of one sample of each strategy.
+glm::dvec3 estimate(const Integrand& integrand, int rounds, Pcg32 rng) {
+    glm::dvec3 sum(0.0);
+    for (int r = 0; r < rounds; ++r) {
+        const glm::dvec4 ue(rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), rng.nextDouble());
+        const glm::dvec3 ub(rng.nextDouble(), rng.nextDouble(), rng.nextDouble());
+        if (!integrand.environment.empty()) sum += integrand(integrand.environment.sample(ue).direction);
+        sum += integrand(sampleBrdf(integrand.material, glm::dvec3(integrand.Ns), glm::dvec3(integrand.wo), ub).direction);
+    }
+    return sum / double(rounds);
+}
+
+double luminanceOf(const glm::dvec3& c) { return luminance(c); }
+
+ShadowOutputs run(const ShadowInputs& in) {
+    const int samples = in.params.integer("samples");
+    if (samples % 2 != 0) throw std::invalid_argument("reference-env: samples must be even (two halves)");
+    StageTimer timer;
+    const EnvironmentMap& map = sceneEnvironment(in.prepared);
+    const EnvironmentDistribution environment(map);
+    const ReferenceVisibility rays(in.world());
+    timer.lap("bvh");
+    const GBuffer& g = in.gbuffer;
+    const glm::vec3 eye = in.camera().eye;
+    ShadowOutputs out;
+    out.radiance.assign(g.pixelCount(), glm::vec3(0.0f));
+    std::vector<double> halvesDifference(g.pixelCount(), 0.0);
+    const ProgressStage progress(in.progress, "environment reference: row", uint64_t(g.height));
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        for (int j = rows.begin(); j != rows.end(); ++j) {
+            for (int i = 0; i < g.width; ++i) {
+                const size_t k = g.index(i, j);
+                if (!g.hit[k]) continue;
+                const Integrand integrand{map, environment, rays, in.scene().materials.at(g.material[k]),
+                                          g.position[k], g.normal[k], g.shadingNormal[k],
+                                          glm::normalize(eye - g.position[k])};
+                const glm::dvec3 a = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[0], k));
+                const glm::dvec3 b = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[1], k));
+                out.radiance[k] = glm::vec3(0.5 * (a + b));
+                halvesDifference[k] = luminanceOf(a) - luminanceOf(b);
+            }
+            progress.advance();
+        }
+    });
+    timer.lap("integration");
+    for (const Light& light : in.scene().lights) {
+        addSceneLight(g, in.scene(), eye, light, rays.visibility(g, light), LightPart::Lit, out.radiance);
+    }
+    timer.lap("scene_lights");
+
+    double squares = 0.0, meanY = 0.0;
+    uint64_t hits = 0;
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        squares += halvesDifference[k] * halvesDifference[k], hits += g.hit[k];
+        meanY += luminanceOf(glm::dvec3(out.radiance[k]));
+    }
+    const double halvesRms = hits ? 0.5 * std::sqrt(squares / double(hits)) : 0.0;
+    meanY = hits ? meanY / double(hits) : 0.0;
+    out.stats = {{"samples_count", double(samples)},
+                 {"halves_rms", halvesRms},
+                 {"halves_rms_percent", meanY > 0.0 ? 100.0 * halvesRms / meanY : 0.0}};
+    timer.appendTo(out.stats);
+    return out;
+}
+
+}  // namespace
+
+Technique environmentReferenceTechnique() {
+    return {.name = "reference-env",
+            .description = "exact environment light: the integral of BRDF, environment and Embree visibility by "
+                           "multiple importance sampling, in two independent halves",
+            .params = {integerParam("samples", 256, 2, 1 << 20,
+                                    "samples per pixel of each strategy, environment and BRDF (even: two halves)")},
+            .run = run,
+            .referenceName = "reference-env",
+            .output = TechniqueOutput::Radiance,
+            .prepare = prepareEnvironment};
+}
+
+}  // namespace shadowlab

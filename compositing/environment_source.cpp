@@ -1,0 +1,62 @@
+#include "compositing/environment_source.h"
+
+#include <numbers>
+#include <stdexcept>
+
+#include "shading/environment/environment_file.h"
+
+namespace shadowlab {
+namespace {
+
+// The map as a type of its own, so that PreparedScene::derived keeps it apart from other
+// environment maps a family might derive.
+struct SceneEnvironmentMap {
+    EnvironmentMap map;
+};
+
+void appendBuilt(std::vector<TechniqueStat>& stats, const char* name, const std::optional<double>& ms) {
+    if (ms) stats.push_back({name, *ms});
+}
+
+}  // namespace
+
+const EnvironmentMap& sceneEnvironment(const PreparedScene& prepared, std::optional<double>* builtMs) {
+    const Environment& environment = prepared.scene().environment;
+    if (environment.map.empty())
+        throw std::invalid_argument("the scene names no environment map (environment.map in the scene file)");
+    const double rotation = double(environment.rotationDeg) * (std::numbers::pi / 180.0);
+    return prepared
+        .derived<SceneEnvironmentMap>([&] { return SceneEnvironmentMap{readEnvironmentMap(environment.map, rotation)}; },
+                                      builtMs)
+        .map;
+}
+
+const LocalIllumination& sceneLocalIllumination(const PreparedScene& prepared, std::optional<double>* builtMs) {
+    const EnvironmentMap& map = sceneEnvironment(prepared);
+    return prepared.derived<LocalIllumination>(
+        [&] { return buildLocalIllumination(map, prepared.scene().materials); }, builtMs);
+}
+
+std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared) {
+    std::optional<double> ms;
+    sceneEnvironment(prepared, &ms);
+    std::vector<TechniqueStat> stats;
+    appendBuilt(stats, "environment_ms", ms);
+    return stats;
+}
+
+std::vector<TechniqueStat> prepareEnvironmentAndSilhouettes(const PreparedScene& prepared) {
+    std::vector<TechniqueStat> stats = prepareEnvironment(prepared);
+    for (TechniqueStat& s : prepareEdgeAdjacency(prepared)) stats.push_back(std::move(s));
+    return stats;
+}
+
+std::vector<TechniqueStat> prepareLocalIllumination(const PreparedScene& prepared) {
+    std::vector<TechniqueStat> stats = prepareEnvironmentAndSilhouettes(prepared);
+    std::optional<double> ms;
+    sceneLocalIllumination(prepared, &ms);
+    appendBuilt(stats, "local_illumination_ms", ms);
+    return stats;
+}
+
+}  // namespace shadowlab

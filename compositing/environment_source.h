@@ -1,0 +1,33 @@
+// The environment a scene is lit by, made ready once per prepared scene
+// (PreparedScene::derived) so that no frame reads a file: the map the scene file names
+// (`environment.map`, turned by `environment.rotation`; docs/scene-format.md), and, for the
+// techniques that shade with fast local illumination, its tables for the scene's materials
+// (shading/environment/local_illumination.h).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "scenes/prepared_scene.h"
+#include "shading/environment/environment_map.h"
+#include "shading/environment/local_illumination.h"
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+// The scene's map. Throws std::invalid_argument if the scene names none, and the reader's
+// std::runtime_error for a file it cannot read (environment_file.h).
+const EnvironmentMap& sceneEnvironment(const PreparedScene& prepared, std::optional<double>* builtMs = nullptr);
+
+// The local-illumination tables of the scene's map for its materials (buildLocalIllumination's
+// errors: a Blinn-Phong material, a lobe too sharp for the map).
+const LocalIllumination& sceneLocalIllumination(const PreparedScene& prepared, std::optional<double>* builtMs = nullptr);
+
+// Technique::prepare of the techniques that read the map (`environment_ms`); of those that
+// may also run shadow volumes per light (and `edge_adjacency_ms`); and of those that also
+// read the local-illumination tables (and `local_illumination_ms`).
+std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared);
+std::vector<TechniqueStat> prepareEnvironmentAndSilhouettes(const PreparedScene& prepared);
+std::vector<TechniqueStat> prepareLocalIllumination(const PreparedScene& prepared);
+
+}  // namespace shadowlab

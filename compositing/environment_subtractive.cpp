@@ -1,0 +1,124 @@
+// env-subtractive: subtractive shadows (DeCoro and Rusinkiewicz 2008, section 2). The five
+// steps, in the paper's order:
+//   1. sample the environment into N shadow-casting lights (environment_lights.h);
+//   2. for each light, find where it is occluded (light_visibility.h) and accumulate its
+//      contribution there into the shadow buffer S, at the sampling detail's resolution
+//      (light_contribution.h, LightPart::Occluded; sampling_detail.h);
+//   3. the unshadowed direct light C by fast local illumination (SH irradiance and
+//      prefiltered lobes; shading/environment/local_illumination.h);
+//   4. S resampled to full size, S' (bilateral_upsample.h);
+//   5. C - S', clamped at 0: the lights' contributions sum to the map's integral only
+//      approximately, so where every light is occluded S' may exceed C by the sampling's
+//      error (counted as `clamped_pixels`). The scene's own lights are added on top.
+#include <algorithm>
+#include <atomic>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "compositing/bilateral_upsample.h"
+#include "compositing/environment_lights.h"
+#include "compositing/environment_source.h"
+#include "compositing/environment_techniques.h"
+#include "compositing/light_contribution.h"
+#include "compositing/light_visibility.h"
+#include "compositing/sampling_detail.h"
+#include "compositing/scene_lights.h"
+#include "compositing/subtractive_debug.h"
+#include "shadows/camera_pass.h"
+#include "shadows/stage_timer.h"
+
+namespace shadowlab {
+namespace {
+
+// Step 3: C at every hit pixel, towards the camera, about the shading normal.
+std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, const LocalIllumination& local) {
+    const GBuffer& g = in.gbuffer;
+    const glm::dvec3 eye(in.camera().eye);
+    std::vector<glm::vec3> C(g.pixelCount(), glm::vec3(0.0f));
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount()), [&](const tbb::blocked_range<size_t>& pixels) {
+        for (size_t k = pixels.begin(); k != pixels.end(); ++k) {
+            if (!g.hit[k]) continue;
+            const glm::dvec3 wo = glm::normalize(eye - glm::dvec3(g.position[k]));
+            C[k] = glm::vec3(unshadowedRadiance(local, in.scene().materials.at(g.material[k]),
+                                                glm::dvec3(g.shadingNormal[k]), wo));
+        }
+    });
+    return C;
+}
+
+// Step 5: max(0, C - S'); returns the pixels where a channel was clamped.
+uint64_t subtract(const std::vector<glm::vec3>& C, const std::vector<glm::vec3>& shadow, std::vector<glm::vec3>& out) {
+    uint64_t clamped = 0;
+    for (size_t k = 0; k < C.size(); ++k) {
+        const glm::vec3 difference = C[k] - shadow[k];
+        out[k] += glm::max(difference, glm::vec3(0.0f));
+        clamped += difference.r < 0.0f || difference.g < 0.0f || difference.b < 0.0f;
+    }
+    return clamped;
+}
+
+ShadowOutputs run(const ShadowInputs& in) {
+    StageTimer timer;
+    const EnvironmentMap& map = sceneEnvironment(in.prepared);
+    const LocalIllumination& local = sceneLocalIllumination(in.prepared);
+    const std::vector<EnvironmentLight> lights = medianCutLights(map, in.params.integer("lights"));
+    timer.lap("sampling");
+
+    const int k = in.params.choice<int>("sampling-detail");
+    const Camera camera = sampledCamera(in.camera(), k);
+    const GBuffer sampledGBuffer = k == 1 ? GBuffer{} : renderGBuffer(in.world(), camera, in.simd);
+    const GBuffer& sampled = k == 1 ? in.gbuffer : sampledGBuffer;
+    timer.lap("sampled_gbuffer");
+    LightVisibility visibility(in);
+    std::vector<glm::vec3> S(sampled.pixelCount(), glm::vec3(0.0f));
+    uint64_t fragments = 0;
+    for (const EnvironmentLight& environmentLight : lights) {
+        const Light light = directionalLight(environmentLight);
+        const std::vector<float> V = visibility.of(light, sampled, camera);
+        timer.lap("visibility");
+        fragments += addDistantLight(sampled, in.scene(), camera.eye, light.direction, light.intensity, V,
+                                     LightPart::Occluded, S);
+        timer.lap("shadow_buffer");
+    }
+
+    const std::vector<glm::vec3> C = unshadowedLight(in, local);
+    timer.lap("unshadowed_light");
+    UpsampleCounts counts;
+    const std::vector<glm::vec3> resampled = upsampleShadowBuffer(in.gbuffer, in.camera(), sampled, S, &counts);
+    timer.lap("resample");
+    ShadowOutputs out;
+    out.radiance.assign(in.gbuffer.pixelCount(), glm::vec3(0.0f));
+    const uint64_t clamped = subtract(C, resampled, out.radiance);
+    addSceneLights(in, visibility, out.radiance);
+    timer.lap("composite");
+
+    const uint64_t sampledPixels = uint64_t(std::count(sampled.hit.begin(), sampled.hit.end(), uint8_t(1)));
+    out.stats = {{"lights_count", double(lights.size())},
+                 {"sampled_pixels", double(sampledPixels)},
+                 {"shadow_fragments", double(fragments)},
+                 {"clamped_pixels", double(clamped)},
+                 {"resample_nearest_pixels", double(counts.nearestPixels)},
+                 {"resample_empty_pixels", double(counts.emptyPixels)}};
+    timer.appendTo(out.stats);
+    visibility.appendStatsTo(out.stats);
+    writeSubtractiveDebug({in.debugDir, "env-subtractive"}, in, map, lights, local, {C, S, sampled, resampled});
+    return out;
+}
+
+}  // namespace
+
+Technique environmentSubtractiveTechnique() {
+    std::vector<ParamSpec> params = {environmentLightsParam(40), samplingDetailParam()};
+    for (ParamSpec& p : visibilityParams("shadow-map")) params.push_back(std::move(p));
+    return {.name = "env-subtractive",
+            .description = "environment light, subtractive shadows (DeCoro and Rusinkiewicz 2008): fast local "
+                           "illumination C less the occluded light of N lights, S, at a sampling detail",
+            .params = std::move(params),
+            .run = run,
+            .referenceName = "reference-env",
+            .output = TechniqueOutput::Radiance,
+            .prepare = prepareLocalIllumination};
+}
+
+}  // namespace shadowlab
