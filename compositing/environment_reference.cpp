@@ -13,7 +13,7 @@
 // L_env is the map's piecewise-constant function, the one every other integral here uses.
 //
 // Convergence is measured, not assumed: the samples are two independent halves, A and B
-// (streams seeded apart), the image is their mean, and the stat `halves_rms` is
+// (streams seeded apart), the image is their mean, and the stat `halves_rms_radiance` is
 // RMS(Y_A - Y_B) / 2 over hit pixels, which estimates the RMS error of the mean's
 // luminance (for independent halves E (A - B)^2 = 2 Var A = 4 Var((A + B) / 2)), and
 // `halves_rms_percent` the same against the mean luminance. It falls as 1 / sqrt(samples).
@@ -121,7 +121,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     const double halvesRms = hits ? 0.5 * std::sqrt(squares / double(hits)) : 0.0;
     meanY = hits ? meanY / double(hits) : 0.0;
     out.stats = {{"samples_count", double(samples)},
-                 {"halves_rms", halvesRms},
+                 {"halves_rms_radiance", halvesRms},
                  {"halves_rms_percent", meanY > 0.0 ? 100.0 * halvesRms / meanY : 0.0}};
     timer.appendTo(out.stats);
     return out;

@@ -77,7 +77,7 @@ TEST_CASE("furnace: an open floor under a constant sky reflects albedo times L")
     CHECK(worstRelativeError(n64) < 0.04);
     CHECK(worstRelativeError(n1024) < 0.004);
     // The exact reference: unbiased, so its image mean is a L within its noise, and its
-    // stated convergence (halves_rms, the RMS error it estimates) is of the size it has.
+    // stated convergence (halves_rms_percent, the RMS error it estimates) is of the size it has.
     const Frame reference = render(open, "reference-env", {{"samples", "64"}});
     const double noise = stat(reference, "halves_rms_percent") / 100.0;
     MESSAGE("reference: noise " << noise << ", mean error " << meanRelativeError(reference));

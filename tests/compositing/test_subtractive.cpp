@@ -50,7 +50,7 @@ struct BunnyCase {
 
 TEST_CASE("subtractive shadows: lower RMS than additive at equal N on the glossy bunny, and additive converges as N grows") {
     const BunnyCase sky;
-    MESSAGE("reference noise (RMS of Y) " << stat(sky.exact, "halves_rms"));
+    MESSAGE("reference noise (RMS of Y) " << stat(sky.exact, "halves_rms_radiance"));
     for (const char* lights : {"20", "40"}) {
         const double additive = sky.rms(render(sky.prepared, "env-additive", {{"lights", lights}}));
         const double subtractive = sky.rms(render(sky.prepared, "env-subtractive", {{"lights", lights}}));

@@ -44,7 +44,7 @@ std::map<std::string, std::string> quickSettings(const Technique& t) {
 
 TEST_CASE("every technique's stat names are snake_case and end in a unit (docs/architecture.md)") {
     const std::regex rule("[a-z][a-z0-9]*(_[a-z0-9]+)*_(ms|m|texels|pixels|triangles|edges|fragments|fragments_per_pixel|"
-                          "texels_per_pixel|receivers|percent|count|flag|ratio)");
+                          "texels_per_pixel|receivers|percent|count|flag|ratio|radiance)");
     const PreparedScene disk(smallScene("sphere-box")), sun(smallScene(sunScene())), sky(smallScene(skyScene()));
     std::set<std::string> seen;
     for (const Technique& t : techniques()) {
