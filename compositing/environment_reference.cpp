@@ -8,7 +8,8 @@
 //     sum over s in {environment, BRDF} of f L V cos / (p_env(w_s) + p_brdf(w_s)),
 //
 // p_env the map's luminance (shading/environment/environment_distribution.h), p_brdf the
-// material's lobes (shading/brdf_sampling.h), V an Embree ray to infinity (with the
+// material's lobes (shading/brdf_sampling.h), both stratified over the rounds by shifted
+// (0, 2)-sequences, V an Embree ray to infinity (with the
 // geometric normal's test and offset of every reference, shadows/reference/reference.h).
 // L_env is the map's piecewise-constant function, the one every other integral here uses.
 //
@@ -62,12 +63,17 @@ struct Integrand {
     }
 };
 
-// One half's estimate: `rounds` rounds of one sample of each strategy.
+// One half's estimate: `rounds` rounds of one sample of each strategy. The two numbers
+// that choose a texel (environment) and place a lobe's direction (BRDF) come from two
+// (0, 2)-sequences, each shifted by its own random offset (shading/light_sampling.h), so the
+// rounds stratify both strategies; the rest are independent.
 glm::dvec3 estimate(const Integrand& integrand, int rounds, Pcg32 rng) {
+    const glm::dvec2 environmentShift(rng.nextDouble(), rng.nextDouble()), brdfShift(rng.nextDouble(), rng.nextDouble());
     glm::dvec3 sum(0.0);
     for (int r = 0; r < rounds; ++r) {
-        const glm::dvec4 ue(rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), rng.nextDouble());
-        const glm::dvec3 ub(rng.nextDouble(), rng.nextDouble(), rng.nextDouble());
+        const glm::dvec2 texel = shiftedSobol02(uint32_t(r), environmentShift), lobe = shiftedSobol02(uint32_t(r), brdfShift);
+        const glm::dvec4 ue(texel, rng.nextDouble(), rng.nextDouble());
+        const glm::dvec3 ub(rng.nextDouble(), lobe);
         if (!integrand.environment.empty()) sum += integrand(integrand.environment.sample(ue).direction);
         sum += integrand(sampleBrdf(integrand.material, glm::dvec3(integrand.Ns), glm::dvec3(integrand.wo), ub).direction);
     }
@@ -133,7 +139,7 @@ Technique environmentReferenceTechnique() {
     return {.name = "reference-env",
             .description = "exact environment light: the integral of BRDF, environment and Embree visibility by "
                            "multiple importance sampling, in two independent halves",
-            .params = {integerParam("samples", 256, 2, 1 << 20,
+            .params = {integerParam("samples", 1024, 2, 1 << 20,
                                     "samples per pixel of each strategy, environment and BRDF (even: two halves)")},
             .run = run,
             .referenceName = "reference-env",

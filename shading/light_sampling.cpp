@@ -27,6 +27,25 @@ uint32_t Pcg32::next() {
 
 double Pcg32::nextDouble() { return double(next()) * 0x1p-32; }
 
+glm::dvec2 sobol02(uint32_t k) {
+    uint32_t reversed = k, sobol = 0;
+    // Bit reversal: the radical inverse in base 2.
+    reversed = (reversed << 16) | (reversed >> 16);
+    reversed = ((reversed & 0x00ff00ffu) << 8) | ((reversed & 0xff00ff00u) >> 8);
+    reversed = ((reversed & 0x0f0f0f0fu) << 4) | ((reversed & 0xf0f0f0f0u) >> 4);
+    reversed = ((reversed & 0x33333333u) << 2) | ((reversed & 0xccccccccu) >> 2);
+    reversed = ((reversed & 0x55555555u) << 1) | ((reversed & 0xaaaaaaaau) >> 1);
+    for (uint32_t v = 1u << 31; k != 0; k >>= 1, v ^= v >> 1) {
+        if (k & 1u) sobol ^= v;
+    }
+    return glm::dvec2(reversed, sobol) * 0x1p-32;
+}
+
+glm::dvec2 shiftedSobol02(uint32_t k, const glm::dvec2& shift) {
+    const glm::dvec2 p = sobol02(k) + shift;
+    return p - glm::floor(p);   // multiples of 2^-32 below 2 (Pcg32's shifts too): exact
+}
+
 glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
     const glm::dvec2 s = 2.0 * u - 1.0;  // [-1, 1]^2
     if (s.x == 0.0 && s.y == 0.0) {

@@ -32,6 +32,14 @@ private:
     uint64_t increment_ = 0;
 };
 
+// Point k of the (0, 2)-sequence in base 2 (Kollig and Keller, "Efficient Multidimensional
+// Sampling", 2002): the van der Corput radical inverse and Sobol's second dimension. Every
+// block of 2^m points puts one point in each of the 2^m elementary rectangles of any shape,
+// so integrals converge faster than with independent points. Shifted by a random offset
+// modulo 1 (Cranley and Patterson 1976), each point is uniform and an estimate stays unbiased.
+glm::dvec2 sobol02(uint32_t k);
+glm::dvec2 shiftedSobol02(uint32_t k, const glm::dvec2& shift);
+
 // Shirley & Chiu, "A Low Distortion Map Between Disk and Square", JGT 2(3), 1997: maps
 // concentric squares of [0,1]^2 to concentric circles of the unit disk, preserving
 // relative area and keeping strata compact (unlike r = sqrt(u), phi = 2 pi v).

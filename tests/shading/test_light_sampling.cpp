@@ -1,8 +1,10 @@
 // The pieces of area-light sampling: PCG32 output, the concentric map, light frames.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "shading/light_sampling.h"
 #include "shading/lights.h"
@@ -81,4 +83,27 @@ TEST_CASE("area light frames span the light") {
         CHECK(glm::length(p) <= 0.5 + 1e-12);
     }
     CHECK_THROWS(areaLightFrame(Light{}));
+}
+
+TEST_CASE("sobol02: every block of 2^m points puts one point in each elementary rectangle of area 2^-m") {
+    for (int m = 0; m <= 8; ++m) {
+        const uint32_t n = 1u << m;
+        for (uint32_t block = 0; block < 3; ++block) {
+            for (int a = 0; a <= m; ++a) {   // rectangles 2^-a wide and 2^-(m - a) high
+                std::vector<int> count(n, 0);
+                for (uint32_t k = block * n; k < (block + 1) * n; ++k) {
+                    const glm::dvec2 p = sobol02(k);
+                    REQUIRE(p.x >= 0.0);
+                    REQUIRE(p.y < 1.0);
+                    ++count[(uint32_t(p.x * (1u << a)) << (m - a)) | uint32_t(p.y * (1u << (m - a)))];
+                }
+                CHECK(std::count(count.begin(), count.end(), 1) == int(n));
+            }
+        }
+    }
+    // Shifted, the points stay in [0, 1).
+    for (uint32_t k = 0; k < 64; ++k) {
+        const glm::dvec2 p = shiftedSobol02(k, {0.999999999767169356, 0.5});
+        CHECK((p.x >= 0.0 && p.x < 1.0 && p.y >= 0.0 && p.y < 1.0));
+    }
 }
