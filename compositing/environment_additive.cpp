@@ -4,6 +4,7 @@
 #include "compositing/environment_source.h"
 #include "compositing/environment_techniques.h"
 #include "compositing/light_contribution.h"
+#include "compositing/light_lobes.h"
 #include "compositing/light_visibility.h"
 #include "compositing/scene_lights.h"
 #include "shadows/stage_timer.h"
@@ -13,7 +14,9 @@ namespace {
 
 ShadowOutputs run(const ShadowInputs& in) {
     StageTimer timer;
-    const std::vector<EnvironmentLight> lights = medianCutLights(sceneEnvironment(in.prepared), in.params.integer("lights"));
+    const EnvironmentMap& map = sceneEnvironment(in.prepared);
+    const std::vector<EnvironmentLight> lights = medianCutLights(map, in.params.integer("lights"));
+    const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
     timer.lap("sampling");
     LightVisibility visibility(in);
     const GBuffer& g = in.gbuffer;
@@ -24,7 +27,7 @@ ShadowOutputs run(const ShadowInputs& in) {
         const Light light = directionalLight(environmentLight);
         const std::vector<float> V = visibility.of(light, g, in.camera());
         timer.lap("visibility");
-        fragments += addDistantLight(g, in.scene(), in.camera().eye, light.direction, light.intensity, V, LightPart::Lit,
+        fragments += addDistantLight(g, lightMaterials(in.scene(), map, environmentLight, lobes), in.camera().eye, light.direction, light.intensity, V, LightPart::Lit,
                                      out.radiance);
         timer.lap("shading");
     }
@@ -37,7 +40,7 @@ ShadowOutputs run(const ShadowInputs& in) {
 }
 
 Technique additive(std::string name, std::string description, int lights, const char* visibility) {
-    std::vector<ParamSpec> params = {environmentLightsParam(lights)};
+    std::vector<ParamSpec> params = {environmentLightsParam(lights), lightLobesParam()};
     for (ParamSpec& p : visibilityParams(visibility)) params.push_back(std::move(p));
     return {.name = std::move(name),
             .description = std::move(description),

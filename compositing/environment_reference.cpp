@@ -114,7 +114,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     });
     timer.lap("integration");
     for (const Light& light : in.scene().lights) {
-        addSceneLight(g, in.scene(), eye, light, rays.visibility(g, light), LightPart::Lit, out.radiance);
+        addSceneLight(g, in.scene().materials, eye, light, rays.visibility(g, light), LightPart::Lit, out.radiance);
     }
     timer.lap("scene_lights");
 

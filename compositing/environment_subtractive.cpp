@@ -21,6 +21,7 @@
 #include "compositing/environment_source.h"
 #include "compositing/environment_techniques.h"
 #include "compositing/light_contribution.h"
+#include "compositing/light_lobes.h"
 #include "compositing/light_visibility.h"
 #include "compositing/sampling_detail.h"
 #include "compositing/scene_lights.h"
@@ -63,6 +64,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     const LocalIllumination& local = sceneLocalIllumination(in.prepared);
     const std::vector<EnvironmentLight> lights = medianCutLights(map, in.params.integer("lights"));
+    const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
     timer.lap("sampling");
 
     const int k = in.params.choice<int>("sampling-detail");
@@ -77,7 +79,7 @@ ShadowOutputs run(const ShadowInputs& in) {
         const Light light = directionalLight(environmentLight);
         const std::vector<float> V = visibility.of(light, sampled, camera);
         timer.lap("visibility");
-        fragments += addDistantLight(sampled, in.scene(), camera.eye, light.direction, light.intensity, V,
+        fragments += addDistantLight(sampled, lightMaterials(in.scene(), map, environmentLight, lobes), camera.eye, light.direction, light.intensity, V,
                                      LightPart::Occluded, S);
         timer.lap("shadow_buffer");
     }
@@ -109,7 +111,7 @@ ShadowOutputs run(const ShadowInputs& in) {
 }  // namespace
 
 Technique environmentSubtractiveTechnique() {
-    std::vector<ParamSpec> params = {environmentLightsParam(40), samplingDetailParam()};
+    std::vector<ParamSpec> params = {environmentLightsParam(40), samplingDetailParam(), lightLobesParam()};
     for (ParamSpec& p : visibilityParams("shadow-map")) params.push_back(std::move(p));
     return {.name = "env-subtractive",
             .description = "environment light, subtractive shadows (DeCoro and Rusinkiewicz 2008): fast local "

@@ -24,7 +24,7 @@ struct SceneArrival {
 
 // The one loop both kinds of light share; Arrival is compiled in, not called through a pointer.
 template <class Arrival>
-uint64_t addLight(const GBuffer& g, const Scene& scene, const glm::vec3& eye, const Arrival& arrivalAt,
+uint64_t addLight(const GBuffer& g, const std::vector<Material>& materials, const glm::vec3& eye, const Arrival& arrivalAt,
                   const std::vector<float>& V, LightPart part, std::vector<glm::vec3>& sum) {
     if (V.size() != g.pixelCount() || sum.size() != g.pixelCount())
         throw std::invalid_argument("light contribution: V and the sum need one entry per pixel");
@@ -42,7 +42,7 @@ uint64_t addLight(const GBuffer& g, const Scene& scene, const glm::vec3& eye, co
                 ++count;
                 if (!(cosine > 0.0f)) continue;
                 const glm::vec3 wo = glm::normalize(eye - g.position[k]);
-                sum[k] += weight * brdf(scene.materials.at(g.material[k]), N, a.toLight, wo) * a.irradiance * cosine;
+                sum[k] += weight * brdf(materials.at(g.material[k]), N, a.toLight, wo) * a.irradiance * cosine;
             }
         }
         shaded += count;   // an integer sum: the same in any order
@@ -52,15 +52,15 @@ uint64_t addLight(const GBuffer& g, const Scene& scene, const glm::vec3& eye, co
 
 }  // namespace
 
-uint64_t addDistantLight(const GBuffer& g, const Scene& scene, const glm::vec3& eye, const glm::vec3& toLight,
-                         const glm::vec3& irradiance, const std::vector<float>& V, LightPart part,
-                         std::vector<glm::vec3>& sum) {
-    return addLight(g, scene, eye, DistantArrival{{toLight, irradiance}}, V, part, sum);
+uint64_t addDistantLight(const GBuffer& g, const std::vector<Material>& materials, const glm::vec3& eye,
+                         const glm::vec3& toLight, const glm::vec3& irradiance, const std::vector<float>& V,
+                         LightPart part, std::vector<glm::vec3>& sum) {
+    return addLight(g, materials, eye, DistantArrival{{toLight, irradiance}}, V, part, sum);
 }
 
-uint64_t addSceneLight(const GBuffer& g, const Scene& scene, const glm::vec3& eye, const Light& light,
+uint64_t addSceneLight(const GBuffer& g, const std::vector<Material>& materials, const glm::vec3& eye, const Light& light,
                        const std::vector<float>& V, LightPart part, std::vector<glm::vec3>& sum) {
-    return addLight(g, scene, eye, SceneArrival{light}, V, part, sum);
+    return addLight(g, materials, eye, SceneArrival{light}, V, part, sum);
 }
 
 }  // namespace shadowlab

@@ -8,7 +8,7 @@ uint64_t addSceneLights(const ShadowInputs& in, LightVisibility& visibility, std
     uint64_t shaded = 0;
     for (const Light& light : in.scene().lights) {
         const std::vector<float> V = visibility.of(light, in.gbuffer, in.camera());
-        shaded += addSceneLight(in.gbuffer, in.scene(), in.camera().eye, light, V, LightPart::Lit, radiance);
+        shaded += addSceneLight(in.gbuffer, in.scene().materials, in.camera().eye, light, V, LightPart::Lit, radiance);
     }
     return shaded;
 }

@@ -1,0 +1,47 @@
+#include "compositing/light_lobes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "raster/portable_math.h"
+
+namespace shadowlab {
+
+ParamSpec lightLobesParam() {
+    return choiceParam<LightLobes>(
+        "light-lobes", "point",
+        {{"point", LightLobes::Point, "each light a point, as the paper"},
+         {"region", LightLobes::Region, "each light's lobe widened by its region's solid angle (ours)"}},
+        "how a sampled light's specular highlight is shaded");
+}
+
+double regionSolidAngle(const EnvironmentMap& map, const EnvironmentLight& light) {
+    double rows = 0.0;
+    for (int j = light.first.y; j < light.last.y; ++j) rows += map.texelSolidAngle(j);
+    return rows * double(light.last.x - light.first.x);
+}
+
+std::vector<Material> widenedForRegion(std::vector<Material> materials, double solidAngle) {
+    const double cosRho = std::clamp(1.0 - solidAngle / (2.0 * std::numbers::pi), -1.0, 1.0);
+    const double rho = portable::acos(cosRho), rho2 = rho * rho;
+    for (Material& m : materials) {
+        switch (m.model) {
+            case MaterialModel::Lambert: break;
+            case MaterialModel::Phong: m.shininess = float(1.0 / (1.0 / m.shininess + rho2 / 4.0)); break;
+            case MaterialModel::BlinnPhong: m.shininess = float(1.0 / (1.0 / m.shininess + rho2 / 16.0)); break;
+            case MaterialModel::Ggx:
+                m.roughness = float(std::min(1.0, std::sqrt(double(m.roughness) * m.roughness + rho2 / 8.0)));
+                break;
+        }
+    }
+    return materials;
+}
+
+std::vector<Material> lightMaterials(const Scene& scene, const EnvironmentMap& map, const EnvironmentLight& light,
+                                     LightLobes lobes) {
+    if (lobes == LightLobes::Point) return scene.materials;
+    return widenedForRegion(scene.materials, regionSolidAngle(map, light));
+}
+
+}  // namespace shadowlab
