@@ -11,6 +11,7 @@
 #include "shading/environment/environment_file.h"
 #include "shading/environment/prefiltered_lobe.h"
 #include "shading/environment/split_sum_table.h"
+#include "shading/environment/structured_sampling.h"
 #include "shading/image_io.h"
 
 namespace shadowlab {
@@ -46,6 +47,7 @@ nlohmann::ordered_json lightsJson(const std::vector<EnvironmentLight>& lights) {
     for (const EnvironmentLight& l : lights) {
         rows.push_back({{"direction", {l.direction.x, l.direction.y, l.direction.z}},
                         {"power", {l.power.r, l.power.g, l.power.b}},
+                        {"solid_angle", l.solidAngle},
                         {"texels_first", {l.first.x, l.first.y}},
                         {"texels_last", {l.last.x, l.last.y}}});
     }
@@ -71,6 +73,8 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
     const ShCoefficients radiance = projectRadiance(map);
     const ShCoefficients irradiance = irradianceOf(radiance, a.shWindow);
     const std::vector<EnvironmentLight> lights = medianCutLights(map, a.lights);
+    std::vector<uint32_t> structuredRegions;
+    const std::vector<EnvironmentLight> structured = structuredLights(map, a.lights, &structuredRegions);
     for (double n : a.phongShininess) checkLobe(GlossyLobe::NormalisedPhong, n, map);   // before any output
     for (double alpha : a.ggxRoughness) checkLobe(GlossyLobe::Ggx, alpha, map);
     const std::filesystem::path dir(a.outDir);
@@ -79,7 +83,8 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
     writeImage(dir, "environment", map, map.radiance, tone);
     writeImage(dir, "sh-radiance", map, shImage(map, radiance), tone);
     writeImage(dir, "sh-irradiance", map, shImage(map, irradiance, 1.0 / kPi), tone);
-    writePng(dir / "lights.png", map.width, map.height, lightsImage(map, lights, tone));
+    writePng(dir / "lights.png", map.width, map.height, lightsImage(map, lights, medianCutRegions(map, lights), tone));
+    writePng(dir / "structured-lights.png", map.width, map.height, lightsImage(map, structured, structuredRegions, tone));
     if (!a.phongShininess.empty() || !a.ggxRoughness.empty()) {
         const EnvironmentPyramid pyramid = buildPyramid(map);
         writePrefiltered(dir, map, pyramid, GlossyLobe::NormalisedPhong, a.phongShininess, tone);
@@ -93,12 +98,13 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
                                    {"rotation_degrees", a.rotationDegrees},
                                    {"power", {power.r, power.g, power.b}},
                                    {"sh_radiance", nlohmann::ordered_json::array()},
-                                   {"lights", lightsJson(lights)}};
+                                   {"lights", lightsJson(lights)},
+                                   {"structured_lights", lightsJson(structured)}};
     for (const glm::dvec3& c : radiance.c) json["sh_radiance"].push_back({c.r, c.g, c.b});
     writeTextFile(dir / "environment.json", json.dump(2) + "\n");
     std::printf("%s: %d x %d texels, integral of L dOmega (%.6g, %.6g, %.6g)\n", map.source.c_str(), map.width, map.height,
                 power.r, power.g, power.b);
-    std::printf("L_00 (%.6g, %.6g, %.6g); %d median-cut lights; buffers in %s\n", radiance.c[0].r, radiance.c[0].g,
+    std::printf("L_00 (%.6g, %.6g, %.6g); %d median-cut and structured lights; buffers in %s\n", radiance.c[0].r, radiance.c[0].g,
                 radiance.c[0].b, a.lights, dir.c_str());
 }
 

@@ -1,7 +1,7 @@
 // `shadowlab environment MAP`: reads an environment map as the techniques would, and writes
 // its intermediate buffers (docs/environment-lighting.md): the map, its nine-coefficient
 // spherical-harmonic reconstruction, the irradiance of a white Lambert surface facing each
-// direction, the median-cut lights drawn on the map and, on request, prefiltered maps for
+// direction, the median-cut and structured-importance lights drawn on the map and, on request, prefiltered maps for
 // Phong and GGX lobes (with GGX, the split-sum scale and bias table), with the figures printed.
 #pragma once
 

@@ -15,7 +15,7 @@ namespace {
 ShadowOutputs run(const ShadowInputs& in) {
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
-    const std::vector<EnvironmentLight> lights = medianCutLights(map, in.params.integer("lights"));
+    const std::vector<EnvironmentLight> lights = sampleLights(map, in.params);
     const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
     timer.lap("sampling");
     LightVisibility visibility(in);
@@ -27,7 +27,7 @@ ShadowOutputs run(const ShadowInputs& in) {
         const Light light = directionalLight(environmentLight);
         const std::vector<float> V = visibility.of(light, g, in.camera());
         timer.lap("visibility");
-        fragments += addDistantLight(g, lightMaterials(in.scene(), map, environmentLight, lobes), in.camera().eye, light.direction, light.intensity, V, LightPart::Lit,
+        fragments += addDistantLight(g, lightMaterials(in.scene(), environmentLight, lobes), in.camera().eye, light.direction, light.intensity, V, LightPart::Lit,
                                      out.radiance);
         timer.lap("shading");
     }
@@ -40,7 +40,7 @@ ShadowOutputs run(const ShadowInputs& in) {
 }
 
 Technique additive(std::string name, std::string description, int lights, const char* visibility) {
-    std::vector<ParamSpec> params = {environmentLightsParam(lights), lightLobesParam()};
+    std::vector<ParamSpec> params = {environmentLightsParam(lights), lightSamplerParam(), lightLobesParam()};
     for (ParamSpec& p : visibilityParams(visibility)) params.push_back(std::move(p));
     return {.name = std::move(name),
             .description = std::move(description),

@@ -1,9 +1,12 @@
 // The shadow-casting lights (DeCoro and Rusinkiewicz 2008, section 2, step 1): the scene's
-// environment sampled into N distant lights by median cut (shading/environment/median_cut.h),
-// each carrying its region's integral of radiance, so that together they hold all of the
-// map's light. N is the paper's illumination detail (section 2.2).
+// environment sampled into N distant lights, each carrying the integral of its region of
+// the map, so that together they hold all of the map's light. N is the paper's illumination
+// detail (section 2.2). Two samplers: median cut (Debevec 2005; median_cut.h), regions of
+// about equal energy, and structured importance sampling (Agarwal et al. 2003, the paper's;
+// structured_sampling.h), strata of luminance sampled by importance and spread evenly.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "scenes/scene.h"
@@ -12,8 +15,16 @@
 
 namespace shadowlab {
 
-// The `lights` parameter, N, with its default.
+enum class LightSampler { MedianCut, Structured };
+
+// The `lights` parameter, N, with its default, and the `sampler` parameter.
 ParamSpec environmentLightsParam(int defaultCount);
+ParamSpec lightSamplerParam();
+
+// The N lights of the `lights` and `sampler` parameters. `regionOfTexel`, if given,
+// receives each map texel's light (drawing the regions, environment_debug.h).
+std::vector<EnvironmentLight> sampleLights(const EnvironmentMap& map, const TechniqueParams& params,
+                                           std::vector<uint32_t>* regionOfTexel = nullptr);
 
 // The light as the shadow techniques see it: directional, towards the region's centroid,
 // its irradiance at normal incidence the region's power.

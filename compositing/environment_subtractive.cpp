@@ -1,6 +1,7 @@
 // env-subtractive: subtractive shadows (DeCoro and Rusinkiewicz 2008, section 2). The five
 // steps, in the paper's order:
-//   1. sample the environment into N shadow-casting lights (environment_lights.h);
+//   1. sample the environment into N shadow-casting lights (environment_lights.h: median
+//      cut, or the paper's structured importance sampling);
 //   2. for each light, find where it is occluded (light_visibility.h) and accumulate its
 //      contribution there into the shadow buffer S, at the sampling detail's resolution
 //      (light_contribution.h, LightPart::Occluded; sampling_detail.h);
@@ -63,7 +64,8 @@ ShadowOutputs run(const ShadowInputs& in) {
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     const LocalIllumination& local = sceneLocalIllumination(in.prepared);
-    const std::vector<EnvironmentLight> lights = medianCutLights(map, in.params.integer("lights"));
+    std::vector<uint32_t> regions;
+    const std::vector<EnvironmentLight> lights = sampleLights(map, in.params, in.debugDir.empty() ? nullptr : &regions);
     const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
     timer.lap("sampling");
 
@@ -79,7 +81,7 @@ ShadowOutputs run(const ShadowInputs& in) {
         const Light light = directionalLight(environmentLight);
         const std::vector<float> V = visibility.of(light, sampled, camera);
         timer.lap("visibility");
-        fragments += addDistantLight(sampled, lightMaterials(in.scene(), map, environmentLight, lobes), camera.eye, light.direction, light.intensity, V,
+        fragments += addDistantLight(sampled, lightMaterials(in.scene(), environmentLight, lobes), camera.eye, light.direction, light.intensity, V,
                                      LightPart::Occluded, S);
         timer.lap("shadow_buffer");
     }
@@ -104,14 +106,14 @@ ShadowOutputs run(const ShadowInputs& in) {
                  {"resample_empty_pixels", double(counts.emptyPixels)}};
     timer.appendTo(out.stats);
     visibility.appendStatsTo(out.stats);
-    writeSubtractiveDebug({in.debugDir, "env-subtractive"}, in, map, lights, local, {C, S, sampled, resampled});
+    writeSubtractiveDebug({in.debugDir, "env-subtractive"}, in, map, {lights, regions}, local, {C, S, sampled, resampled});
     return out;
 }
 
 }  // namespace
 
 Technique environmentSubtractiveTechnique() {
-    std::vector<ParamSpec> params = {environmentLightsParam(40), samplingDetailParam(), lightLobesParam()};
+    std::vector<ParamSpec> params = {environmentLightsParam(40), lightSamplerParam(), samplingDetailParam(), lightLobesParam()};
     for (ParamSpec& p : visibilityParams("shadow-map")) params.push_back(std::move(p));
     return {.name = "env-subtractive",
             .description = "environment light, subtractive shadows (DeCoro and Rusinkiewicz 2008): fast local "

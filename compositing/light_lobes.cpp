@@ -16,12 +16,6 @@ ParamSpec lightLobesParam() {
         "how a sampled light's specular highlight is shaded");
 }
 
-double regionSolidAngle(const EnvironmentMap& map, const EnvironmentLight& light) {
-    double rows = 0.0;
-    for (int j = light.first.y; j < light.last.y; ++j) rows += map.texelSolidAngle(j);
-    return rows * double(light.last.x - light.first.x);
-}
-
 std::vector<Material> widenedForRegion(std::vector<Material> materials, double solidAngle) {
     const double cosRho = std::clamp(1.0 - solidAngle / (2.0 * std::numbers::pi), -1.0, 1.0);
     const double rho = portable::acos(cosRho), rho2 = rho * rho;
@@ -38,10 +32,9 @@ std::vector<Material> widenedForRegion(std::vector<Material> materials, double s
     return materials;
 }
 
-std::vector<Material> lightMaterials(const Scene& scene, const EnvironmentMap& map, const EnvironmentLight& light,
-                                     LightLobes lobes) {
+std::vector<Material> lightMaterials(const Scene& scene, const EnvironmentLight& light, LightLobes lobes) {
     if (lobes == LightLobes::Point) return scene.materials;
-    return widenedForRegion(scene.materials, regionSolidAngle(map, light));
+    return widenedForRegion(scene.materials, light.solidAngle);
 }
 
 }  // namespace shadowlab

@@ -31,14 +31,10 @@ enum class LightLobes { Point, Region };
 
 ParamSpec lightLobesParam();
 
-// The solid angle of the light's region of the map (sr).
-double regionSolidAngle(const EnvironmentMap& map, const EnvironmentLight& light);
-
 // The materials with their specular lobes widened for a light whose region has that solid angle.
 std::vector<Material> widenedForRegion(std::vector<Material> materials, double solidAngle);
 
 // The materials a light is shaded with: the scene's, or widened for its region.
-std::vector<Material> lightMaterials(const Scene& scene, const EnvironmentMap& map, const EnvironmentLight& light,
-                                     LightLobes lobes);
+std::vector<Material> lightMaterials(const Scene& scene, const EnvironmentLight& light, LightLobes lobes);
 
 }  // namespace shadowlab

@@ -7,14 +7,14 @@
 namespace shadowlab {
 
 void writeSubtractiveDebug(const DebugBuffers& debug, const ShadowInputs& in, const EnvironmentMap& map,
-                           const std::vector<EnvironmentLight>& lights, const LocalIllumination& local,
+                           const SampledLightsView& lights, const LocalIllumination& local,
                            const SubtractiveBuffers& buffers) {
     if (!debug.enabled()) return;
     const GBuffer& g = in.gbuffer;
     debug.writeRadiance("C", g.width, g.height, buffers.C);
     debug.writeRadiance("S", buffers.sampled.width, buffers.sampled.height, buffers.S);
     debug.writeRadiance("S-resampled", g.width, g.height, buffers.resampled);
-    debug.writePicture("lights", map.width, map.height, lightsImage(map, lights, {}));
+    debug.writePicture("lights", map.width, map.height, lightsImage(map, lights.lights, lights.regionOfTexel, {}));
     debug.writeRadiance("sh-radiance", map.width, map.height, shImage(map, projectRadiance(map)));
     debug.writeRadiance("sh-irradiance", map.width, map.height, shImage(map, local.irradiance, std::numbers::inv_pi));
 }

@@ -5,6 +5,7 @@
 // latitude-longitude images).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -24,8 +25,13 @@ struct SubtractiveBuffers {
     const std::vector<glm::vec3>& resampled;
 };
 
+struct SampledLightsView {
+    const std::vector<EnvironmentLight>& lights;
+    const std::vector<uint32_t>& regionOfTexel;   // sampleLights()'s
+};
+
 void writeSubtractiveDebug(const DebugBuffers& debug, const ShadowInputs& in, const EnvironmentMap& map,
-                           const std::vector<EnvironmentLight>& lights, const LocalIllumination& local,
+                           const SampledLightsView& lights, const LocalIllumination& local,
                            const SubtractiveBuffers& buffers);
 
 }  // namespace shadowlab

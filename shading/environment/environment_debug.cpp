@@ -14,7 +14,7 @@ std::vector<glm::vec3> shImage(const EnvironmentMap& map, const ShCoefficients& 
 }
 
 std::vector<uint8_t> lightsImage(const EnvironmentMap& map, const std::vector<EnvironmentLight>& lights,
-                                 const ToneMapOptions& tone) {
+                                 const std::vector<uint32_t>& regionOfTexel, const ToneMapOptions& tone) {
     std::vector<uint8_t> rgb = toSrgb8Image(map.radiance, tone);
     const auto paint = [&](int i, int j, glm::u8vec3 colour) {
         if (i < 0 || j < 0 || i >= map.width || j >= map.height) return;
@@ -22,9 +22,13 @@ std::vector<uint8_t> lightsImage(const EnvironmentMap& map, const std::vector<En
         p[0] = colour.r, p[1] = colour.g, p[2] = colour.b;
     };
     const glm::u8vec3 grey(128, 128, 128), red(255, 0, 0);
-    for (const EnvironmentLight& l : lights) {
-        for (int i = l.first.x; i < l.last.x; ++i) paint(i, l.first.y, grey), paint(i, l.last.y - 1, grey);
-        for (int j = l.first.y; j < l.last.y; ++j) paint(l.first.x, j, grey), paint(l.last.x - 1, j, grey);
+    const auto regionAt = [&](int i, int j) { return regionOfTexel[size_t(j) * size_t(map.width) + size_t(i)]; };
+    for (int j = 0; j < map.height; ++j) {
+        for (int i = 0; i < map.width; ++i) {
+            const bool edge = (i + 1 < map.width && regionAt(i + 1, j) != regionAt(i, j)) ||
+                              (j + 1 < map.height && regionAt(i, j + 1) != regionAt(i, j));
+            if (edge) paint(i, j, grey);
+        }
     }
     for (const EnvironmentLight& l : lights) {
         const glm::ivec2 t = map.texelToward(l.direction);

@@ -22,9 +22,11 @@ namespace shadowlab {
 // direction.
 std::vector<glm::vec3> shImage(const EnvironmentMap& map, const ShCoefficients& coefficients, double scale = 1.0);
 
-// The map tone mapped, each light's region outlined in grey and its direction marked by a
-// red 3 x 3 square: 8-bit sRGB, R G B per texel.
+// The map tone mapped, each light's region outlined in grey (a texel whose right or lower
+// neighbour belongs to another light; regionOfTexel from medianCutRegions or
+// structuredLights) and its direction marked by a red 3 x 3 square: 8-bit sRGB, R G B per
+// texel.
 std::vector<uint8_t> lightsImage(const EnvironmentMap& map, const std::vector<EnvironmentLight>& lights,
-                                 const ToneMapOptions& tone);
+                                 const std::vector<uint32_t>& regionOfTexel, const ToneMapOptions& tone);
 
 }  // namespace shadowlab

@@ -84,6 +84,7 @@ EnvironmentLight lightOf(const Region& r, const EnvironmentMap& map, const Energ
     glm::dvec3 centroid(0.0);
     for (int j = r.first.y; j < r.last.y; ++j) {
         const double solidAngle = map.texelSolidAngle(j);
+        light.solidAngle += solidAngle * double(r.last.x - r.first.x);
         for (int i = r.first.x; i < r.last.x; ++i) {
             light.power += glm::dvec3(map.at(i, j)) * solidAngle;
             centroid += g.at(i, j) * map.direction((i + 0.5) / map.width, (j + 0.5) / map.height);
@@ -125,6 +126,16 @@ std::vector<EnvironmentLight> medianCutLights(const EnvironmentMap& map, int cou
     std::vector<EnvironmentLight> lights;
     for (const Region& r : regions) lights.push_back(lightOf(r, map, grid));
     return lights;
+}
+
+std::vector<uint32_t> medianCutRegions(const EnvironmentMap& map, const std::vector<EnvironmentLight>& lights) {
+    std::vector<uint32_t> region(map.radiance.size(), 0);
+    for (size_t l = 0; l < lights.size(); ++l) {
+        for (int j = lights[l].first.y; j < lights[l].last.y; ++j) {
+            for (int i = lights[l].first.x; i < lights[l].last.x; ++i) region[size_t(j) * size_t(map.width) + size_t(i)] = uint32_t(l);
+        }
+    }
+    return region;
 }
 
 }  // namespace shadowlab

@@ -23,6 +23,7 @@
 // Deterministic: one thread, a fixed order of cuts and sums.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -34,10 +35,14 @@ namespace shadowlab {
 struct EnvironmentLight {
     glm::dvec3 direction{0.0, 1.0, 0.0};   // unit, towards the light (world space, rotation included)
     glm::dvec3 power{0.0};                 // RGB: the region's integral of L dOmega, the irradiance it gives at normal incidence
-    glm::ivec2 first{0}, last{0};          // the region's texels: [first, last) in (i, j)
+    double solidAngle = 0.0;               // of the region, sr
+    glm::ivec2 first{0}, last{0};          // median cut: the region's texels, [first, last) in (i, j)
 };
 
 // Throws std::invalid_argument unless 1 <= count <= the map's texel count.
 std::vector<EnvironmentLight> medianCutLights(const EnvironmentMap& map, int count);
+
+// Each map texel's light (row-major), from the lights' rectangles, for drawing the regions.
+std::vector<uint32_t> medianCutRegions(const EnvironmentMap& map, const std::vector<EnvironmentLight>& lights);
 
 }  // namespace shadowlab

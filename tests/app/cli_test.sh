@@ -116,8 +116,8 @@ printf 'P6 2 1 255\n......' >"$scratch/ldr.hdr"
 expect_error "environment of an 8-bit image" environment "$scratch/ldr.hdr" --out "$scratch/env"
 if grep -q "neither OpenEXR nor Radiance HDR" "$err"; then pass; else fail "the 8-bit map's error does not say why: $(cat "$err")"; fi
 run environment "$maps/pmndrs_sky.hdr" --lights 8 --rotation 30 --phong 8 --ggx 0.5 --out "$scratch/env"
-if [ "$rc" -eq 0 ] && grep -q "8 median-cut lights" "$out"; then pass; else fail "environment exited $rc: $(cat "$err")"; fi
-for image in environment sh-radiance sh-irradiance lights prefiltered-phong-8 prefiltered-ggx-0.5 split-sum; do expect_png "$scratch/env/$image.png"; done
+if [ "$rc" -eq 0 ] && grep -q "8 median-cut and structured lights" "$out"; then pass; else fail "environment exited $rc: $(cat "$err")"; fi
+for image in environment sh-radiance sh-irradiance lights structured-lights prefiltered-phong-8 prefiltered-ggx-0.5 split-sum; do expect_png "$scratch/env/$image.png"; done
 
 # ---- Whole or nothing -------------------------------------------------------------------
 # Every failure above named -o x.png: none may have left it, or a temporary of it.
