@@ -1,17 +1,18 @@
 #!/bin/sh
 # Reproduces every speed and error figure in the README: the hard- and soft-shadow sweeps,
 # every hard case, the shadow map's bias-by-resolution grid, Figure 7's torus and the eq. 8
-# scaling fit. Writes CSV, JSON and SVG under out/figures, copies the plots and images the
+# scaling fit, and the environment techniques' images and buffers (the Figure 3 table is
+# scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench ...]   (default: all nine)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment ...]   (default: all ten)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench}
+parts=${*:-hard cases bias models soft torus views scaling bench environment}
 
 for part in $parts; do
   case $part in
@@ -103,6 +104,25 @@ for part in $parts; do
     build/bench/bench_stages --benchmark_filter=BM_RasterTiles --benchmark_repetitions=5 \
       --benchmark_report_aggregates_only=true
     ;;
-  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench)" >&2; exit 2 ;;
+  environment)
+    # docs/subtractive-shadows.md: the glossy bunny under the interior map, the exact
+    # reference beside additive and subtractive shadows at N = 40, subtractive at lower
+    # sampling detail and with region lobes, and the buffers of the subtractive frame.
+    bunny=scenes/environment/bunny-interior.json
+    small="--width 480 --height 300"
+    $app render $bunny --technique reference-env $small -o docs/images/env-reference.png --aov $out/env-reference.exr
+    $app render $bunny --technique env-additive $small -o docs/images/env-additive-40.png
+    for detail in 1 1/16 1/1024; do
+      $app render $bunny --technique env-subtractive $small --param sampling-detail=$detail \
+        -o docs/images/env-subtractive-40-$(echo $detail | tr / -).png
+    done
+    $app render $bunny --technique env-additive $small --param light-lobes=region -o docs/images/env-additive-40-region.png
+    $app render $bunny --technique env-subtractive $small --param light-lobes=region --param sampling-detail=1/16 \
+      --debug-buffers $out/env -o docs/images/env-subtractive-40-region.png
+    for buffer in C S S-resampled lights sh-irradiance; do
+      cp $out/env/env-subtractive-$buffer.png docs/images/env-buffer-$buffer.png
+    done
+    ;;
+  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench, environment)" >&2; exit 2 ;;
   esac
 done

@@ -1,0 +1,41 @@
+#!/usr/bin/env python3
+"""The Figure 3 table of docs/subtractive-shadows.md from scripts/figure3.sh's sweeps: one
+row per scene, technique, N and sampling detail; median ms at 1 and 2 threads; RMS of the
+luminance against the exact reference and against the 1000-light reference.
+
+usage: scripts/figure3_table.py EXACT_DIR LIGHTS_DIR"""
+import json
+import pathlib
+import sys
+
+
+def rows(directory):
+    """{(scene, technique, settings, threads): row} of every sweep JSON in the directory."""
+    found = {}
+    for path in sorted(pathlib.Path(directory).glob("*.json")):
+        sweep = json.loads(path.read_text())
+        for r in sweep["rows"]:
+            settings = " ".join(f"{k}={v}" for k, v in sorted(r["settings"].items()) if k != "sampler")
+            found[(sweep["scene"], r["technique"], settings, r["threads"])] = r
+    return found
+
+
+def main(exact_dir, lights_dir):
+    exact, lights = rows(exact_dir), rows(lights_dir)
+    print("| scene | technique | N | detail | ms, 1 thr. | ms, 2 thr. | RMS vs exact | RMS vs 1000 lights |")
+    print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |")
+    keys = sorted({k[:3] for k in exact}, key=lambda k: (k[0], k[1], int(dict(s.split("=") for s in k[2].split())["lights"]), k[2]))
+    for scene, technique, settings in keys:
+        values = dict(s.split("=") for s in settings.split())
+        one, two = exact.get((scene, technique, settings, 1)), exact.get((scene, technique, settings, 2))
+        other = lights.get((scene, technique, settings, 2))
+        cells = [scene, technique, values["lights"], values.get("sampling-detail", ""),
+                 f"{one['median_ms']:.0f}" if one else "", f"{two['median_ms']:.0f}" if two else "",
+                 f"{(one or two)['errors']['rms']:.4f}", f"{other['errors']['rms']:.4f}" if other else ""]
+        print("| " + " | ".join(cells) + " |")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    main(*sys.argv[1:])
