@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "shading/environment/environment_file.h"
+#include "shading/environment/prefiltered_lobe.h"
 
 namespace shadowlab {
 namespace {
@@ -31,10 +32,43 @@ const EnvironmentMap& sceneEnvironment(const PreparedScene& prepared, std::optio
         .map;
 }
 
+// A material the tables serve: not Blinn-Phong (no lobe about a fixed direction), and a
+// lobe the map resolves. The others are lit by the radiance cache, or refused by name.
+bool tablesServe(const Material& m, const EnvironmentMap& map) {
+    if (m.model == MaterialModel::BlinnPhong) return false;
+    try {
+        if (m.model == MaterialModel::Phong) checkLobe(GlossyLobe::NormalisedPhong, m.shininess, map);
+        if (m.model == MaterialModel::Ggx) checkLobe(GlossyLobe::Ggx, m.roughness, map);
+    } catch (const std::invalid_argument&) {
+        return false;
+    }
+    return true;
+}
+
 const LocalIllumination& sceneLocalIllumination(const PreparedScene& prepared, std::optional<double>* builtMs) {
     const EnvironmentMap& map = sceneEnvironment(prepared);
     return prepared.derived<LocalIllumination>(
-        [&] { return buildLocalIllumination(map, prepared.scene().materials); }, builtMs);
+        [&] {
+            std::vector<Material> served;
+            for (const Material& m : prepared.scene().materials) {
+                if (tablesServe(m, map)) served.push_back(m);
+            }
+            return buildLocalIllumination(map, served);
+        },
+        builtMs);
+}
+
+namespace {
+
+struct ScenePyramid {
+    EnvironmentPyramid pyramid;
+};
+
+}  // namespace
+
+const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared) {
+    const EnvironmentMap& map = sceneEnvironment(prepared);
+    return prepared.derived<ScenePyramid>([&] { return ScenePyramid{buildPyramid(map)}; }).pyramid;
 }
 
 std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared) {

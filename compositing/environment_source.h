@@ -10,6 +10,7 @@
 
 #include "scenes/prepared_scene.h"
 #include "shading/environment/environment_map.h"
+#include "shading/environment/environment_pyramid.h"
 #include "shading/environment/local_illumination.h"
 #include "shadows/technique.h"
 
@@ -19,9 +20,13 @@ namespace shadowlab {
 // std::runtime_error for a file it cannot read (environment_file.h).
 const EnvironmentMap& sceneEnvironment(const PreparedScene& prepared, std::optional<double>* builtMs = nullptr);
 
-// The local-illumination tables of the scene's map for its materials (buildLocalIllumination's
-// errors: a Blinn-Phong material, a lobe too sharp for the map).
+// The local-illumination tables of the scene's map for those of its materials they can serve
+// (tablesServe); unshadowedRadiance() refuses the others by name.
 const LocalIllumination& sceneLocalIllumination(const PreparedScene& prepared, std::optional<double>* builtMs = nullptr);
+bool tablesServe(const Material& material, const EnvironmentMap& map);
+
+// The scene map's pyramid (the radiance cache integrates over it), built once.
+const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared);
 
 // Technique::prepare of the techniques that read the map (`environment_ms`); of those that
 // may also run shadow volumes per light (and `edge_adjacency_ms`); and of those that also

@@ -5,17 +5,13 @@
 //   2. for each light, find where it is occluded (light_visibility.h) and accumulate its
 //      contribution there into the shadow buffer S, at the sampling detail's resolution
 //      (light_contribution.h, LightPart::Occluded; sampling_detail.h);
-//   3. the unshadowed direct light C by fast local illumination (SH irradiance and
-//      prefiltered lobes; shading/environment/local_illumination.h);
+//   3. the unshadowed direct light C by fast local illumination (unshadowed_light.h: SH
+//      irradiance and prefiltered lobes, or the radiance cache of section 3.1);
 //   4. S resampled to full size, S' (bilateral_upsample.h);
 //   5. C - S', clamped at 0: the lights' contributions sum to the map's integral only
 //      approximately, so where every light is occluded S' may exceed C by the sampling's
 //      error (counted as `clamped_pixels`). The scene's own lights are added on top.
 #include <algorithm>
-#include <atomic>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "compositing/bilateral_upsample.h"
 #include "compositing/environment_lights.h"
@@ -27,27 +23,12 @@
 #include "compositing/sampling_detail.h"
 #include "compositing/scene_lights.h"
 #include "compositing/subtractive_debug.h"
+#include "compositing/unshadowed_light.h"
 #include "shadows/camera_pass.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
-
-// Step 3: C at every hit pixel, towards the camera, about the shading normal.
-std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, const LocalIllumination& local) {
-    const GBuffer& g = in.gbuffer;
-    const glm::dvec3 eye(in.camera().eye);
-    std::vector<glm::vec3> C(g.pixelCount(), glm::vec3(0.0f));
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount()), [&](const tbb::blocked_range<size_t>& pixels) {
-        for (size_t k = pixels.begin(); k != pixels.end(); ++k) {
-            if (!g.hit[k]) continue;
-            const glm::dvec3 wo = glm::normalize(eye - glm::dvec3(g.position[k]));
-            C[k] = glm::vec3(unshadowedRadiance(local, in.scene().materials.at(g.material[k]),
-                                                glm::dvec3(g.shadingNormal[k]), wo));
-        }
-    });
-    return C;
-}
 
 // Step 5: max(0, C - S'); returns the pixels where a channel was clamped.
 uint64_t subtract(const std::vector<glm::vec3>& C, const std::vector<glm::vec3>& shadow, std::vector<glm::vec3>& out) {
@@ -63,7 +44,6 @@ uint64_t subtract(const std::vector<glm::vec3>& C, const std::vector<glm::vec3>&
 ShadowOutputs run(const ShadowInputs& in) {
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
-    const LocalIllumination& local = sceneLocalIllumination(in.prepared);
     std::vector<uint32_t> regions;
     const std::vector<EnvironmentLight> lights = sampleLights(map, in.params, in.debugDir.empty() ? nullptr : &regions);
     const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
@@ -86,7 +66,8 @@ ShadowOutputs run(const ShadowInputs& in) {
         timer.lap("shadow_buffer");
     }
 
-    const std::vector<glm::vec3> C = unshadowedLight(in, local);
+    std::vector<TechniqueStat> cStats;
+    const std::vector<glm::vec3> C = unshadowedLight(in, cStats);
     timer.lap("unshadowed_light");
     UpsampleCounts counts;
     const std::vector<glm::vec3> resampled = upsampleShadowBuffer(in.gbuffer, in.camera(), sampled, S, &counts);
@@ -104,9 +85,10 @@ ShadowOutputs run(const ShadowInputs& in) {
                  {"clamped_pixels", double(clamped)},
                  {"resample_nearest_pixels", double(counts.nearestPixels)},
                  {"resample_empty_pixels", double(counts.emptyPixels)}};
+    out.stats.insert(out.stats.end(), cStats.begin(), cStats.end());
     timer.appendTo(out.stats);
     visibility.appendStatsTo(out.stats);
-    writeSubtractiveDebug({in.debugDir, "env-subtractive"}, in, map, {lights, regions}, local, {C, S, sampled, resampled});
+    writeSubtractiveDebug({in.debugDir, "env-subtractive"}, in, map, {lights, regions}, {C, S, sampled, resampled});
     return out;
 }
 
@@ -114,6 +96,7 @@ ShadowOutputs run(const ShadowInputs& in) {
 
 Technique environmentSubtractiveTechnique() {
     std::vector<ParamSpec> params = {environmentLightsParam(40), lightSamplerParam(), samplingDetailParam(), lightLobesParam()};
+    for (ParamSpec& p : unshadowedParams()) params.push_back(std::move(p));
     for (ParamSpec& p : visibilityParams("shadow-map")) params.push_back(std::move(p));
     return {.name = "env-subtractive",
             .description = "environment light, subtractive shadows (DeCoro and Rusinkiewicz 2008): fast local "

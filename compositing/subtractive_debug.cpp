@@ -7,8 +7,7 @@
 namespace shadowlab {
 
 void writeSubtractiveDebug(const DebugBuffers& debug, const ShadowInputs& in, const EnvironmentMap& map,
-                           const SampledLightsView& lights, const LocalIllumination& local,
-                           const SubtractiveBuffers& buffers) {
+                           const SampledLightsView& lights, const SubtractiveBuffers& buffers) {
     if (!debug.enabled()) return;
     const GBuffer& g = in.gbuffer;
     debug.writeRadiance("C", g.width, g.height, buffers.C);
@@ -16,7 +15,7 @@ void writeSubtractiveDebug(const DebugBuffers& debug, const ShadowInputs& in, co
     debug.writeRadiance("S-resampled", g.width, g.height, buffers.resampled);
     debug.writePicture("lights", map.width, map.height, lightsImage(map, lights.lights, lights.regionOfTexel, {}));
     debug.writeRadiance("sh-radiance", map.width, map.height, shImage(map, projectRadiance(map)));
-    debug.writeRadiance("sh-irradiance", map.width, map.height, shImage(map, local.irradiance, std::numbers::inv_pi));
+    debug.writeRadiance("sh-irradiance", map.width, map.height, shImage(map, irradianceOf(projectRadiance(map)), std::numbers::inv_pi));
 }
 
 }  // namespace shadowlab

@@ -10,7 +10,6 @@
 
 #include <glm/glm.hpp>
 
-#include "shading/environment/local_illumination.h"
 #include "shading/environment/median_cut.h"
 #include "shading/gbuffer.h"
 #include "shadows/debug_buffers.h"
@@ -31,7 +30,6 @@ struct SampledLightsView {
 };
 
 void writeSubtractiveDebug(const DebugBuffers& debug, const ShadowInputs& in, const EnvironmentMap& map,
-                           const SampledLightsView& lights, const LocalIllumination& local,
-                           const SubtractiveBuffers& buffers);
+                           const SampledLightsView& lights, const SubtractiveBuffers& buffers);
 
 }  // namespace shadowlab

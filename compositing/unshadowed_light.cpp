@@ -1,0 +1,77 @@
+#include "compositing/unshadowed_light.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "compositing/environment_source.h"
+#include "shading/environment/radiance_cache.h"
+
+namespace shadowlab {
+
+std::vector<ParamSpec> unshadowedParams() {
+    return {choiceParam<UnshadowedMethod>(
+                "unshadowed", "tables",
+                {{"tables", UnshadowedMethod::Tables, "SH irradiance and prefiltered lobes (Lambert, Phong, GGX)"},
+                 {"radiance-cache", UnshadowedMethod::RadianceCache, "a table over normals per material and frame, any BRDF"}},
+                "how C, the unshadowed light, is computed"),
+            integerParam("cache-size", 128, 2, 1024, "radiance-cache: texels a side of each material's table")};
+}
+
+namespace {
+
+std::vector<bool> visibleMaterials(const GBuffer& g, size_t count) {
+    std::vector<bool> visible(count, false);
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (g.hit[k]) visible.at(g.material[k]) = true;
+    }
+    return visible;
+}
+
+// Per pixel, C from `at(material, N, wo)`; Lookup is compiled in.
+template <class Lookup>
+std::vector<glm::vec3> perPixel(const ShadowInputs& in, const Lookup& at) {
+    const GBuffer& g = in.gbuffer;
+    const glm::dvec3 eye(in.camera().eye);
+    std::vector<glm::vec3> C(g.pixelCount(), glm::vec3(0.0f));
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount()), [&](const tbb::blocked_range<size_t>& pixels) {
+        for (size_t k = pixels.begin(); k != pixels.end(); ++k) {
+            if (!g.hit[k]) continue;
+            const glm::dvec3 wo = glm::normalize(eye - glm::dvec3(g.position[k]));
+            C[k] = glm::vec3(at(g.material[k], glm::dvec3(g.shadingNormal[k]), wo));
+        }
+    });
+    return C;
+}
+
+}  // namespace
+
+std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats) {
+    const std::vector<Material>& materials = in.scene().materials;
+    const std::vector<bool> visible = visibleMaterials(in.gbuffer, materials.size());
+    const EnvironmentMap& map = sceneEnvironment(in.prepared);
+    if (in.params.choice<UnshadowedMethod>("unshadowed") == UnshadowedMethod::Tables) {
+        for (size_t m = 0; m < materials.size(); ++m) {
+            if (visible[m] && !tablesServe(materials[m], map))
+                throw std::invalid_argument("material \"" + materials[m].name +
+                                            "\": prefiltered tables cannot light it (Blinn-Phong, or a lobe too sharp "
+                                            "for the map); use --param unshadowed=radiance-cache");
+        }
+        const LocalIllumination& local = sceneLocalIllumination(in.prepared);
+        return perPixel(in, [&](uint32_t m, const glm::dvec3& N, const glm::dvec3& wo) {
+            return unshadowedRadiance(local, materials[m], N, wo);
+        });
+    }
+    const Camera& camera = in.camera();
+    const glm::dvec3 toViewer = glm::normalize(glm::dvec3(camera.eye) - glm::dvec3(camera.target));
+    std::vector<RadianceCache> caches(materials.size());
+    for (size_t m = 0; m < materials.size(); ++m) {
+        if (visible[m]) caches[m] = buildRadianceCache(map, scenePyramid(in.prepared), materials[m], toViewer, in.params.integer("cache-size"));
+    }
+    stats.push_back({"radiance_caches_count", double(std::count(visible.begin(), visible.end(), true))});
+    return perPixel(in, [&](uint32_t m, const glm::dvec3& N, const glm::dvec3&) { return lookupRadianceCache(caches[m], N); });
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,30 @@
+// C, the unshadowed light every pixel reflects towards the camera (DeCoro and Rusinkiewicz
+// 2008, section 2, step 3), by fast local illumination, either
+//
+//   tables          SH irradiance and prefiltered lobes built once per scene
+//                   (shading/environment/local_illumination.h): Lambert, Phong, GGX; or
+//   radiance-cache  a per-frame table over normals for each material, for any BRDF
+//                   (shading/environment/radiance_cache.h; the paper's section 3.1, 128^2):
+//                   Blinn-Phong too, under the distant-viewer approximation.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+enum class UnshadowedMethod { Tables, RadianceCache };
+
+// The `unshadowed` and `cache-size` parameters.
+std::vector<ParamSpec> unshadowedParams();
+
+// C at every hit pixel of in.gbuffer, about its shading normal. Throws std::invalid_argument,
+// before any work, naming a visible material the tables cannot serve (Blinn-Phong, a lobe
+// too sharp for the map) when `unshadowed` is `tables`. Adds `radiance_caches_count` with
+// the radiance cache.
+std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats);
+
+}  // namespace shadowlab
