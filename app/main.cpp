@@ -21,6 +21,7 @@
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
 #include "app/sweep.h"
+#include "app/sweep_json.h"
 #include "app/sweep_plot.h"
 #include "frame/render.h"
 #include "frame/score.h"

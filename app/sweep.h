@@ -91,8 +91,4 @@ std::string formatSweepCsv(const SweepResults& results);
 std::string csvLine(const std::vector<std::string>& fields);
 std::string csvNumber(double value);
 
-// {"scene", "rows": [{"technique", "reference", "settings": {...}, "threads", "median_ms",
-//  "min_ms", "errors": formatJson(...), "stats": {...}}]}
-std::string formatSweepJson(const SweepResults& results);
-
 }  // namespace shadowlab

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/sweep.h"
+#include "app/sweep_json.h"
 #include "app/sweep_plot.h"
 #include "scenes/scene_file.h"
 
