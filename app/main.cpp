@@ -160,7 +160,7 @@ void writeReport(const std::filesystem::path& stem, const std::string& csv, cons
 struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
-    std::string simd = "auto", outDir = "out", plotY = "misclassified";
+    std::string simd = "auto", outDir = "out", plotY = "misclassified", shard;
     bool progress = false;
 };
 
@@ -170,6 +170,7 @@ void runSweepCommand(SweepArgs a) {
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
     a.options.simd = raster::parseSimdLevel(a.simd);
+    if (!a.shard.empty()) a.options.shard = parseSweepShard(a.shard);
     const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
     std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
     const SweepResults results = runSweep(a.options);
@@ -300,6 +301,10 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("--plot-y", a.plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
     addLightOptions(s, a.options.overrides);
     s->add_option("--reference", a.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
+    s->add_option("--shard", a.shard,
+                  "run only part I of N: the settings whose index k (from 0, in the sweep's order) has k mod N = I - 1, "
+                  "at every thread count; I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N. "
+                  "Writes SCENE-TECHNIQUES-shard-I-of-N.*")->type_name("I/N");
     addProgressFlag(s, a.progress);
     s->callback([&a] { runSweepCommand(a); });
 }

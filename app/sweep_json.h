@@ -7,8 +7,13 @@
 
 namespace shadowlab {
 
-// {"scene", "rows": [{"technique", "reference", "settings": {...}, "threads", "median_ms",
-//  "min_ms", "errors": formatJson(...), "stats": {...}}]}
+// {"scene", "grid": {"techniques", "axes": [{"name", "values"}], "overrides": {the given
+//  ones of "width", "height", "eye", "target", "fovy", "light_position", "light_radius"},
+//  "reference" ("": each technique against its own), "reference_fingerprints": {name:
+//  hex}, "threads", "warmup", "runs", "settings"}, "shard": {"index", "count"},
+//  "rows": [{"setting", "technique", "reference", "settings": {...}, "threads",
+//  "median_ms", "min_ms", "errors": formatJson(...), "stats": {...}}]}
+// A NaN (an error figure of a NaN image) is written as null.
 std::string formatSweepJson(const SweepResults& results);
 
 }  // namespace shadowlab

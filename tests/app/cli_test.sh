@@ -142,6 +142,31 @@ expect_no_file "$scratch/h.png"
 leftovers=$(find "$scratch" -maxdepth 1 -name '.*.tmp.*' | wc -l)
 if [ "$leftovers" -eq 0 ]; then pass; else fail "$leftovers temporary file(s) left in $scratch"; fi
 
+# ---- Sharded sweeps -------------------------------------------------------------------------
+# A sweep of 7 settings at 2 thread counts on a 96 x 60 view of the sun case, run as 3
+# shards into one directory: each writes its own files.
+tools=$(dirname "${BASH_SOURCE[0]}")
+sed 's/"width": 640, "height": 400/"width": 96, "height": 60/' "$tools/../../scenes/hard/sun.json" >"$scratch/tiny-sun.json"
+if grep -q '"width": 96, "height": 60' "$scratch/tiny-sun.json"; then pass; else fail "could not shrink sun.json's camera"; fi
+grid=(sweep "$scratch/tiny-sun.json" --technique none,shadow-map --param resolution=64,256,1024
+      --param slope-factor=0.5,1.5 --threads 1,2 --runs 1 --warmup 0)
+stem=tiny-sun-none+shadow-map  # a scene without a name is named after its file
+for i in 1 2 3; do
+    run "${grid[@]}" --shard "$i/3" --out "$scratch/shards"
+    if [ "$rc" -eq 0 ] && grep -q "^tiny-sun, shard $i/3$" "$out"; then pass; else fail "shard $i/3 exited $rc: $(cat "$err")"; fi
+done
+for i in 1 2 3; do
+    for ext in csv json svg; do
+        if [ -s "$scratch/shards/$stem-shard-$i-of-3.$ext" ]; then pass; else fail "shard $i/3 wrote no $stem-shard-$i-of-3.$ext"; fi
+    done
+done
+for bad in 0/3 4/3 1/0 garbage; do
+    expect_error "--shard $bad" "${grid[@]}" --shard "$bad" --out "$scratch/bad-shard"
+    if grep -qF "expected I/N with 1 <= I <= N" "$err"; then pass; else fail "--shard $bad: $(cat "$err")"; fi
+done
+expect_error "more shards than settings" "${grid[@]}" --shard 8/8 --out "$scratch/bad-shard"
+if grep -qF "the sweep has only 7 settings" "$err"; then pass; else fail "--shard 8/8: $(cat "$err")"; fi
+
 # ---- Progress ------------------------------------------------------------------------------
 # The soft reference at this size takes about 3 s on one thread, past the 2 s after which
 # the progress line is drawn: on stderr, only if it is a terminal (not here) or --progress
