@@ -11,7 +11,8 @@
 //
 // A sweep may run as shards on many machines (--shard i/n, README "Commands"): shard i
 // runs the settings whose index k in the sweep's fixed order has k mod n == i - 1, each at
-// every thread count, and renders the references itself.
+// every thread count, and renders the references itself; app/sweep_merge.h joins the
+// shards' JSON into the results of the unsharded run.
 #pragma once
 
 #include <cstdint>
