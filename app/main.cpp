@@ -21,11 +21,14 @@
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
 #include "app/sweep.h"
+#include "app/sweep_json.h"
+#include "app/sweep_merge.h"
 #include "app/sweep_plot.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"
 #include "scenes/obj_writer.h"
+#include "scenes/read_file.h"
 #include "scenes/scene_file.h"
 #include "shading/compare.h"
 #include "shading/image_io.h"
@@ -159,9 +162,16 @@ void writeReport(const std::filesystem::path& stem, const std::string& csv, cons
 struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
-    std::string simd = "auto", outDir = "out", plotY = "misclassified";
+    std::string simd = "auto", outDir = "out", plotY = "misclassified", shard;
     bool progress = false;
 };
+
+// The sweep's report: the table on stdout and STEM.csv, .json and .svg in the directory.
+void writeSweepReport(const SweepResults& results, const std::string& outDir, PlotErrorAxis plotY) {
+    std::cout << formatSweepText(results);
+    writeReport(std::filesystem::path(outDir) / sweepFileStem(results), formatSweepCsv(results), formatSweepJson(results),
+                formatSweepSvg(results, plotY));
+}
 
 void runSweepCommand(SweepArgs a) {
     Progress progress(std::cerr);
@@ -169,12 +179,24 @@ void runSweepCommand(SweepArgs a) {
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
     a.options.simd = raster::parseSimdLevel(a.simd);
+    if (!a.shard.empty()) a.options.shard = parseSweepShard(a.shard);
     const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
     std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
-    const SweepResults results = runSweep(a.options);
-    std::cout << formatSweepText(results);
-    writeReport(std::filesystem::path(a.outDir) / sweepFileStem(results), formatSweepCsv(results), formatSweepJson(results),
-                formatSweepSvg(results, plotY));
+    writeSweepReport(runSweep(a.options), a.outDir, plotY);
+}
+
+struct MergeSweepArgs {
+    std::vector<std::string> shards;
+    std::string outDir = "out", plotY = "misclassified";
+};
+
+void runMergeSweepCommand(const MergeSweepArgs& a) {
+    const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
+    std::vector<SweepShardFile> files;
+    for (const std::string& path : a.shards) files.push_back({path, parseSweepJson(readWholeFile(path), path)});
+    const SweepResults merged = mergeSweepShards(files);
+    std::filesystem::create_directories(a.outDir);
+    writeSweepReport(merged, a.outDir, plotY);
 }
 
 struct ScalingArgs {
@@ -288,6 +310,12 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     r->callback([&a] { withThreads(a.threads, [&a] { runRender(a); }); });
 }
 
+// --out and --plot-y, shared by sweep and merge-sweep, which write the same files.
+void addSweepReportOptions(CLI::App* cmd, std::string& outDir, std::string& plotY) {
+    cmd->add_option("--out", outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
+    cmd->add_option("--plot-y", plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
+}
+
 void addSweepCommand(CLI::App& app, SweepArgs& a) {
     CLI::App* s = app.add_subcommand("sweep", "speed against error over a grid of technique settings (CSV, JSON, SVG plot)");
     s->add_option("scene", a.options.scene, "built-in scene name or scene file (.json)")->required();
@@ -295,12 +323,22 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("--param", a.params, "one axis: name=v1,v2,... (repeatable; the cross product is run)");
     s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(s, "frames per row", a.options.runs, a.options.warmupRuns, a.simd);
-    s->add_option("--out", a.outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
-    s->add_option("--plot-y", a.plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
+    addSweepReportOptions(s, a.outDir, a.plotY);
     addLightOptions(s, a.options.overrides);
     s->add_option("--reference", a.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
+    s->add_option("--shard", a.shard,
+                  "run only part I of N: the settings whose index k (from 0, in the sweep's order) has k mod N = I - 1, "
+                  "at every thread count; I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N. "
+                  "Writes SCENE-TECHNIQUES-shard-I-of-N.*; merge-sweep joins the shards")->type_name("I/N");
     addProgressFlag(s, a.progress);
     s->callback([&a] { runSweepCommand(a); });
+}
+
+void addMergeSweepCommand(CLI::App& app, MergeSweepArgs& a) {
+    CLI::App* m = app.add_subcommand("merge-sweep", "join the JSON files of a sweep's shards (sweep --shard) into the sweep's CSV, JSON and SVG plot");
+    m->add_option("shards", a.shards, "the JSON file of every shard, SCENE-TECHNIQUES-shard-I-of-N.json")->required();
+    addSweepReportOptions(m, a.outDir, a.plotY);
+    m->callback([&a] { runMergeSweepCommand(a); });
 }
 
 void addScalingCommand(CLI::App& app, ScalingArgs& a) {
@@ -383,6 +421,7 @@ int main(int argc, char** argv) {
     // Each command's callback runs its work during parse(), reading these.
     RenderArgs render;
     SweepArgs sweep;
+    MergeSweepArgs mergeSweep;
     ScalingArgs scaling;
     CompareArgs compare;
     BenchArgs bench;
@@ -390,6 +429,7 @@ int main(int argc, char** argv) {
     EnvironmentArgs environment;
     addRenderCommand(app, render);
     addSweepCommand(app, sweep);
+    addMergeSweepCommand(app, mergeSweep);
     addScalingCommand(app, scaling);
     addCompareCommand(app, compare);
     addBenchCommand(app, bench);

@@ -1,13 +1,13 @@
 #include "app/sweep.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <iterator>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
 #include <tbb/info.h>
 
 #include "frame/render.h"
@@ -20,10 +20,17 @@ namespace {
 
 using Settings = std::map<std::string, std::string>;
 
+// One setting of a technique, numbered in the sweep's fixed order: technique by technique,
+// then the cross product of its axes. A shard selects settings by this number.
+struct PlannedSetting {
+    uint64_t index;
+    Settings params;
+};
+
 // One technique with the settings it is swept over.
 struct SweepPlan {
     const Technique* technique;
-    std::vector<Settings> settings;
+    std::vector<PlannedSetting> settings;
 };
 
 bool hasParam(const Technique& technique, const std::string& name) {
@@ -51,17 +58,38 @@ std::vector<Settings> crossProduct(const std::vector<SweepAxis>& axes) {
 // or it was a typo.
 std::vector<SweepPlan> planSweep(const SweepOptions& options) {
     std::vector<SweepPlan> plans;
+    uint64_t index = 0;
     for (const Technique* technique : options.techniques) {
         if (std::ranges::any_of(plans, [&](const SweepPlan& p) { return p.technique->name == technique->name; }))
             throw std::invalid_argument("technique '" + technique->name + "' is listed twice");
         std::vector<SweepAxis> axes;
         std::ranges::copy_if(options.axes, std::back_inserter(axes), [&](const SweepAxis& a) { return hasParam(*technique, a.name); });
-        plans.push_back({technique, crossProduct(axes)});
+        SweepPlan& plan = plans.emplace_back(SweepPlan{technique, {}});
+        for (Settings& params : crossProduct(axes)) plan.settings.push_back({index++, std::move(params)});
     }
     for (const SweepAxis& axis : options.axes) {
         if (std::ranges::none_of(plans, [&](const SweepPlan& p) { return hasParam(*p.technique, axis.name); }))
             throw std::invalid_argument("--param " + axis.name + ": none of the techniques has this parameter (see `shadowlab techniques`)");
     }
+    return plans;
+}
+
+const char* const kShardRule = "expected I/N with 1 <= I <= N (I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N)";
+
+uint64_t settingCount(const std::vector<SweepPlan>& plans) {
+    uint64_t count = 0;
+    for (const SweepPlan& plan : plans) count += plan.settings.size();
+    return count;
+}
+
+// The plans with only the shard's settings; a shard without any is a mistake in N.
+std::vector<SweepPlan> shardOf(std::vector<SweepPlan> plans, const SweepShard& shard) {
+    if (!shard.valid()) throw std::invalid_argument("shard " + shard.name() + ": " + kShardRule);
+    const uint64_t all = settingCount(plans);
+    for (SweepPlan& plan : plans) std::erase_if(plan.settings, [&](const PlannedSetting& s) { return !shard.holds(s.index); });
+    if (settingCount(plans) == 0)
+        throw std::invalid_argument("--shard " + shard.name() + ": the sweep has only " + std::to_string(all) +
+                                    " settings, so this shard has none (use at most " + std::to_string(all) + " shards)");
     return plans;
 }
 
@@ -114,18 +142,12 @@ std::string statValue(const SweepRow& row, const std::string& name) {
     return stat == row.stats.end() ? "" : csvNumber(stat->value);
 }
 
-uint64_t settingCount(const std::vector<SweepPlan>& plans) {
-    uint64_t count = 0;
-    for (const SweepPlan& plan : plans) count += plan.settings.size();
-    return count;
-}
-
 // One frame per setting first: a value the technique rejects fails before the long part.
 void checkSettings(const PreparedScene& prepared, const std::vector<SweepPlan>& plans, const SweepOptions& options) {
     const ProgressStage checked(options.progress, "sweep: checking setting", settingCount(plans));
     for (const SweepPlan& plan : plans) {
-        for (const Settings& settings : plan.settings) {
-            renderFrame(prepared, *plan.technique, {options.simd, settings, {}});
+        for (const PlannedSetting& setting : plan.settings) {
+            renderFrame(prepared, *plan.technique, {options.simd, setting.params, {}});
             checked.advance();
         }
     }
@@ -139,6 +161,15 @@ std::map<std::string, ImageChannels> renderReferences(const PreparedScene& prepa
         if (!references.contains(name)) references.emplace(name, renderReferenceImage(prepared, options.simd, name, options.progress));
     }
     return references;
+}
+
+// The grid the whole sweep covers, as every shard of it describes it.
+SweepGrid describeGrid(const std::vector<SweepPlan>& plans, const std::vector<int>& threads,
+                       const std::map<std::string, ImageChannels>& references, const SweepOptions& options) {
+    SweepGrid grid{options.axes, options.overrides, options.reference, {}, threads, options.warmupRuns, options.runs,
+                   settingCount(plans)};
+    for (const auto& [name, image] : references) grid.referenceFingerprints[name] = referenceFingerprint(image);
+    return grid;
 }
 
 }  // namespace
@@ -193,28 +224,47 @@ std::string SweepRow::settingsLabel() const {
     return label.empty() ? "defaults" : label;
 }
 
+SweepShard parseSweepShard(const std::string& text) {
+    // Digits only: from_chars alone would take "1/3x" or a sign.
+    const size_t slash = text.find('/');
+    const auto number = [&](size_t from, size_t to, int& value) {
+        const char* first = text.data() + from;
+        const char* last = text.data() + to;
+        return first != last && std::all_of(first, last, [](char c) { return c >= '0' && c <= '9'; }) &&
+               std::from_chars(first, last, value).ec == std::errc{};
+    };
+    SweepShard shard{0, 0};
+    if (slash == std::string::npos || !number(0, slash, shard.index) || !number(slash + 1, text.size(), shard.count) ||
+        !shard.valid())
+        throw std::invalid_argument("--shard " + text + ": " + kShardRule);
+    return shard;
+}
+
 SweepResults runSweep(const SweepOptions& options) {
     if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
     if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
     if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
-    const std::vector<SweepPlan> plans = planSweep(options);
+    const std::vector<SweepPlan> grid = planSweep(options);
+    const std::vector<SweepPlan> plans = shardOf(grid, options.shard);
     const std::vector<int> threads = threadCounts(options);
     Scene scene = loadScene(options.scene);
     applyOverrides(scene, options.overrides);
     const PreparedScene prepared(std::move(scene));
     checkSettings(prepared, plans, options);
-    const std::map<std::string, ImageChannels> references = renderReferences(prepared, plans, options);
-    SweepResults results{prepared.scene().name, {}, {}};
-    for (const SweepPlan& plan : plans) results.techniques.push_back(plan.technique->name);
+    // Every reference of the grid, not only the shard's: the shards' fingerprints must agree.
+    const std::map<std::string, ImageChannels> references = renderReferences(prepared, grid, options);
+    SweepResults results{prepared.scene().name, {}, describeGrid(grid, threads, references, options), options.shard, {}};
+    for (const SweepPlan& plan : grid) results.techniques.push_back(plan.technique->name);
     const ProgressStage frames(options.progress, "sweep: frame",
                                settingCount(plans) * threads.size() * uint64_t(options.warmupRuns + options.runs));
     for (const SweepPlan& plan : plans) {
-        for (const Settings& settings : plan.settings) {
+        for (const PlannedSetting& setting : plan.settings) {
             for (int n : threads) {
                 SweepRow row = withThreads(n, [&] {
                     return measure(prepared, references.at(referenceFor(*plan.technique, options)), *plan.technique,
-                                   {options.simd, settings, {}}, options, frames);
+                                   {options.simd, setting.params, {}}, options, frames);
                 });
+                row.setting = setting.index;
                 row.threads = n;
                 results.rows.push_back(std::move(row));
             }
@@ -223,14 +273,32 @@ SweepResults runSweep(const SweepOptions& options) {
     return results;
 }
 
+std::string referenceFingerprint(const ImageChannels& reference) {
+    uint64_t hash = 0xcbf29ce484222325ull;
+    const auto mix = [&hash](const void* data, size_t bytes) {
+        for (size_t k = 0; k < bytes; ++k) hash = (hash ^ static_cast<const uint8_t*>(data)[k]) * 0x100000001b3ull;
+    };
+    const int size[2] = {reference.width, reference.height};
+    mix(size, sizeof size);
+    for (size_t c = 0; c < reference.names.size(); ++c) {
+        mix(reference.names[c].c_str(), reference.names[c].size() + 1);   // with its NUL: a name ends before the data
+        mix(reference.data[c].data(), reference.data[c].size() * sizeof(float));
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
+}
+
 std::string sweepFileStem(const SweepResults& results) {
     std::string techniques;
     for (const std::string& technique : results.techniques) techniques += (techniques.empty() ? "" : "+") + technique;
-    return results.scene + "-" + techniques;
+    const SweepShard& shard = results.shard;
+    return results.scene + "-" + techniques +
+           (shard.count > 1 ? "-shard-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) : "");
 }
 
 std::string formatSweepText(const SweepResults& results) {
-    std::string text = results.scene + "\n";
+    std::string text = results.scene + (results.shard.count > 1 ? ", shard " + results.shard.name() : "") + "\n";
     char line[512];
     std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s %14s %10s %10s %11s %12s %13s\n", "technique", "settings",
                   "threads", "median ms", "min ms", "misclassified%", "RMS", "max", "umbra lit%", "umbra over%",
@@ -267,26 +335,6 @@ std::string formatSweepCsv(const SweepResults& results) {
         csv += csvLine(fields);
     }
     return csv;
-}
-
-std::string formatSweepJson(const SweepResults& results) {
-    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-    for (const SweepRow& r : results.rows) {
-        nlohmann::ordered_json stats = nlohmann::ordered_json::object();
-        for (const TechniqueStat& s : r.stats) stats[s.name] = s.value;
-        rows.push_back({{"technique", r.technique},
-                        {"reference", r.reference},
-                        {"settings", r.settings},
-                        {"threads", r.threads},
-                        {"median_ms", r.medianMs},
-                        {"min_ms", r.minMs},
-                        {"errors", nlohmann::ordered_json::parse(formatJson(r.errors))},
-                        {"stats", stats}});
-    }
-    nlohmann::ordered_json j;
-    j["scene"] = results.scene;
-    j["rows"] = rows;
-    return j.dump(2) + "\n";
 }
 
 }  // namespace shadowlab

@@ -8,8 +8,14 @@
 // referenceName: `reference` or `reference-soft`) is rendered once per sweep; every
 // setting's visibility is scored against its technique's (conventions.md, "Figures and
 // errors").
+//
+// A sweep may run as shards on many machines (--shard i/n, README "Commands"): shard i
+// runs the settings whose index k in the sweep's fixed order has k mod n == i - 1, each at
+// every thread count, and renders the references itself; app/sweep_merge.h joins the
+// shards' JSON into the results of the unsharded run.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +24,7 @@
 #include "frame/render.h"
 #include "raster/rasterizer.h"
 #include "shading/compare.h"
+#include "shading/image_io.h"
 #include "shadows/progress.h"
 #include "shadows/technique.h"
 
@@ -31,6 +38,18 @@ struct SweepAxis {
 // "name=v1,v2,v3" -> axis; throws std::invalid_argument without a name or with an empty value.
 SweepAxis parseSweepAxis(const std::string& text);
 
+// One of `count` parts of a sweep. index counts from 1, as SLURM_ARRAY_TASK_ID does for
+// a job array submitted with --array=1-count; 1 of 1 is the whole sweep.
+struct SweepShard {
+    int index = 1, count = 1;
+    bool valid() const { return count >= 1 && index >= 1 && index <= count; }
+    std::string name() const { return std::to_string(index) + "/" + std::to_string(count); }
+    bool holds(uint64_t setting) const { return setting % uint64_t(count) == uint64_t(index - 1); }
+};
+
+// "i/n" with 1 <= i <= n -> shard; throws std::invalid_argument for anything else.
+SweepShard parseSweepShard(const std::string& text);
+
 struct SweepOptions {
     std::string scene;                      // built-in name or .json path
     SceneOverrides overrides;               // e.g. the light's position and radius
@@ -41,10 +60,24 @@ struct SweepOptions {
     int warmupRuns = 1;
     int runs = 5;
     raster::SimdLevel simd = raster::bestSimdLevel();
+    SweepShard shard;                       // the settings to run: all, by default
     Progress* progress = nullptr;           // reports the frames done (and the references' rows)
 };
 
+// What a sweep was asked for, besides its scene, techniques and shard: the shards of one
+// sweep agree on all of it, which their merge checks.
+struct SweepGrid {
+    std::vector<SweepAxis> axes;
+    SceneOverrides overrides;
+    std::string reference;                  // SweepOptions::reference
+    std::map<std::string, std::string> referenceFingerprints;   // each reference rendered: referenceFingerprint()
+    std::vector<int> threads;               // as run: the default resolved to the machine's cores
+    int warmupRuns = 0, runs = 0;
+    uint64_t settings = 0;                  // of the whole sweep, all techniques
+};
+
 struct SweepRow {
+    uint64_t setting = 0;                          // index in the sweep's fixed order (SweepResults::rows)
     std::string technique;
     std::string reference;                         // the technique it was scored against
     std::map<std::string, std::string> settings;   // this row's axis values (not defaults)
@@ -58,6 +91,8 @@ struct SweepRow {
 struct SweepResults {
     std::string scene;
     std::vector<std::string> techniques;   // in the order given
+    SweepGrid grid;
+    SweepShard shard;             // the settings the rows cover
     std::vector<SweepRow> rows;   // per technique, settings in axis order (last axis fastest), threads
 };
 
@@ -71,12 +106,19 @@ struct TimedFrames {
 TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
                        int warmupRuns, int runs, const ProgressStage& frames);
 
-// Checks the technique names and that every axis belongs to one of them, then renders one
-// frame per setting (a value a technique rejects fails there, before any measurement);
-// throws std::invalid_argument (or SceneError for the scene).
+// Checks the technique names, that every axis belongs to one of them and that the shard
+// holds a setting, then renders one frame per setting of the shard (a value a technique
+// rejects fails there, before any measurement); throws std::invalid_argument (or
+// SceneError for the scene).
 SweepResults runSweep(const SweepOptions& options);
 
-// The output file stem: "<scene>-<technique>[+<technique>...]".
+// FNV-1a (64 bit) of a reference's scored channels, names and float bytes, as 16 hex
+// digits: shards whose references differ (another scene file, light or build) are not
+// parts of one sweep.
+std::string referenceFingerprint(const ImageChannels& reference);
+
+// The output file stem: "<scene>-<technique>[+<technique>...]", and "-shard-<i>-of-<n>"
+// after it for a shard, so that shards writing to one directory keep their files apart.
 std::string sweepFileStem(const SweepResults& results);
 
 // A table for the terminal: one line per row.
@@ -90,9 +132,5 @@ std::string formatSweepCsv(const SweepResults& results);
 // quote or line break quoted), and a number with 9 significant digits.
 std::string csvLine(const std::vector<std::string>& fields);
 std::string csvNumber(double value);
-
-// {"scene", "rows": [{"technique", "reference", "settings": {...}, "threads", "median_ms",
-//  "min_ms", "errors": formatJson(...), "stats": {...}}]}
-std::string formatSweepJson(const SweepResults& results);
 
 }  // namespace shadowlab

@@ -80,7 +80,7 @@ expect_png() {
 
 # ---- Help ---------------------------------------------------------------------------------
 expect_usage --help
-for command in render sweep compare bench scaling export-obj techniques environment; do
+for command in render sweep merge-sweep compare bench scaling export-obj techniques environment; do
     expect_usage "$command" --help
 done
 run techniques
@@ -141,6 +141,81 @@ expect_error "compare --json into a missing directory" compare "$scratch/ok.exr"
 expect_no_file "$scratch/h.png"
 leftovers=$(find "$scratch" -maxdepth 1 -name '.*.tmp.*' | wc -l)
 if [ "$leftovers" -eq 0 ]; then pass; else fail "$leftovers temporary file(s) left in $scratch"; fi
+
+# ---- Sharded sweeps -------------------------------------------------------------------------
+# A sweep of 7 settings at 2 thread counts on a 96 x 60 view of the sun case, run whole and
+# as 3 shards into one directory, then merged: the same CSV, JSON and SVG but for the times.
+tools=$(dirname "${BASH_SOURCE[0]}")
+sed 's/"width": 640, "height": 400/"width": 96, "height": 60/' "$tools/../../scenes/hard/sun.json" >"$scratch/tiny-sun.json"
+if grep -q '"width": 96, "height": 60' "$scratch/tiny-sun.json"; then pass; else fail "could not shrink sun.json's camera"; fi
+grid=(sweep "$scratch/tiny-sun.json" --technique none,shadow-map --param resolution=64,256,1024
+      --param slope-factor=0.5,1.5 --threads 1,2 --runs 1 --warmup 0)
+stem=tiny-sun-none+shadow-map  # a scene without a name is named after its file
+run "${grid[@]}" --out "$scratch/whole"
+if [ "$rc" -eq 0 ]; then pass; else fail "the whole sweep exited $rc: $(cat "$err")"; fi
+for i in 1 2 3; do
+    run "${grid[@]}" --shard "$i/3" --out "$scratch/shards"
+    if [ "$rc" -eq 0 ] && grep -q "^tiny-sun, shard $i/3$" "$out"; then pass; else fail "shard $i/3 exited $rc: $(cat "$err")"; fi
+done
+for i in 1 2 3; do
+    for ext in csv json svg; do
+        if [ -s "$scratch/shards/$stem-shard-$i-of-3.$ext" ]; then pass; else fail "shard $i/3 wrote no $stem-shard-$i-of-3.$ext"; fi
+    done
+done
+run merge-sweep "$scratch/shards/$stem-shard-"{3,1,2}"-of-3.json" --out "$scratch/merged"
+if [ "$rc" -eq 0 ] && grep -q "wrote $scratch/merged/$stem.svg" "$out"; then pass; else fail "merge-sweep exited $rc: $(cat "$err")"; fi
+# The CSV and JSON with every measured time (median_ms, min_ms, stats *_ms) blanked, and the
+# JSON with the times set alike (blank_times.py), merged again: its SVG is then laid out
+# from the same numbers as the whole run's.
+same_when_blanked() {   # same_when_blanked WHAT A B
+    if cmp -s <(python3 "$tools/blank_times.py" "$2") <(python3 "$tools/blank_times.py" "$3"); then
+        pass
+    else
+        fail "$1 differs from the whole run's with the times blanked: $(diff <(python3 "$tools/blank_times.py" "$2") \
+            <(python3 "$tools/blank_times.py" "$3") | head -5)"
+    fi
+}
+same_when_blanked "the merged CSV" "$scratch/whole/$stem.csv" "$scratch/merged/$stem.csv"
+same_when_blanked "the merged JSON" "$scratch/whole/$stem.json" "$scratch/merged/$stem.json"
+mkdir -p "$scratch/blanked"
+python3 "$tools/blank_times.py" "$scratch/whole/$stem.json" >"$scratch/blanked/whole.json"
+for i in 1 2 3; do python3 "$tools/blank_times.py" "$scratch/shards/$stem-shard-$i-of-3.json" >"$scratch/blanked/$i.json"; done
+run merge-sweep "$scratch/blanked/whole.json" --out "$scratch/blanked/from-whole"
+run merge-sweep "$scratch/blanked/"{1,2,3}.json --out "$scratch/blanked/from-shards"
+for ext in csv json svg; do
+    if cmp -s "$scratch/blanked/from-whole/$stem.$ext" "$scratch/blanked/from-shards/$stem.$ext"; then
+        pass
+    else
+        fail "with the times set alike, the merged $ext differs from the whole run's"
+    fi
+done
+# Shards that do not make up the sweep: each a one-line error, and nothing written. The
+# other sweep's grid has 2048 for 1024.
+run "${grid[@]/1024/2048}" --shard 2/3 --out "$scratch/other"
+if [ "$rc" -eq 0 ]; then pass; else fail "the other sweep's shard exited $rc: $(cat "$err")"; fi
+merge_error() {   # merge_error WHAT EXPECTED FILES...
+    local what=$1 expected=$2
+    shift 2
+    expect_error "$what" merge-sweep "$@" --out "$scratch/refused"
+    if grep -qF -- "$expected" "$err"; then pass; else fail "$what: the error lacks \"$expected\": $(cat "$err")"; fi
+}
+shard() { echo "$scratch/shards/$stem-shard-$1-of-3.json"; }
+merge_error "a missing shard" "missing shard(s) 2/3 of the sweep of $(shard 1)" "$(shard 1)" "$(shard 3)"
+merge_error "a duplicate shard" "shard 2/3 is given twice" "$(shard 1)" "$(shard 2)" "$(shard 2)" "$(shard 3)"
+merge_error "a shard of another sweep" "not a shard of the same sweep as $(shard 1) (axes: " \
+    "$(shard 1)" "$scratch/other/$stem-shard-2-of-3.json" "$(shard 3)"
+merge_error "a missing file" "$scratch/none.json: cannot open" "$(shard 1)" "$scratch/none.json"
+merge_error "a directory" "$scratch/shards: is a directory, not a file" "$scratch/shards"
+head -c 200 "$(shard 2)" >"$scratch/cut.json"
+merge_error "a file cut short" "$scratch/cut.json: invalid JSON: " "$scratch/cut.json"
+merge_error "a scene file" "sun.json: not the JSON of a sweep: " "$scratch/tiny-sun.json"
+if [ ! -e "$scratch/refused" ]; then pass; else fail "a refused merge-sweep created $scratch/refused"; fi
+for bad in 0/3 4/3 1/0 garbage; do
+    expect_error "--shard $bad" "${grid[@]}" --shard "$bad" --out "$scratch/bad-shard"
+    if grep -qF "expected I/N with 1 <= I <= N" "$err"; then pass; else fail "--shard $bad: $(cat "$err")"; fi
+done
+expect_error "more shards than settings" "${grid[@]}" --shard 8/8 --out "$scratch/bad-shard"
+if grep -qF "the sweep has only 7 settings" "$err"; then pass; else fail "--shard 8/8: $(cat "$err")"; fi
 
 # ---- Progress ------------------------------------------------------------------------------
 # The soft reference at this size takes about 3 s on one thread, past the 2 s after which

@@ -175,6 +175,9 @@ expect "sweep --runs 0" "--runs: Value 0 not in range 1 to 10000" sweep sphere-b
 expect "scaling with one scene" "scaling: give at least two scenes" scaling sphere-box --technique shadow-map --out "$dir/scaling"
 expect "bench --threads 100000" "--threads: Value 100000 not in range 1 to 1024" bench --scenes sphere-box --threads 100000
 expect "bench --json into a missing directory" "cannot write '$dir/missing/b.json': no directory '$dir/missing'" bench --scenes throughput --runs 1000 --json "$dir/missing/b.json"
+expect "binary garbage as a sweep's shard" "garbage.json: invalid JSON: [json.exception.parse_error.101]" merge-sweep "$dir/garbage.json" --out "$dir/merged"
+expect "a shard nested 100000 deep" "deep.json: nested deeper than 64 levels" merge-sweep "$dir/deep.json" --out "$dir/merged"
+expect "a scene file as a shard" "valid.json: not the JSON of a sweep: " merge-sweep "$dir/valid.json" --out "$dir/merged"
 expect "export-obj into a missing directory" "$dir/missing/x.obj: cannot open for writing: No such file or directory" export-obj sphere-box "$dir/missing/x.obj"
 
 echo "$cases cases, $failed failed"

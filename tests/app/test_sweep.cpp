@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/sweep.h"
+#include "app/sweep_json.h"
 #include "app/sweep_plot.h"
 #include "scenes/scene_file.h"
 
@@ -121,6 +122,11 @@ TEST_CASE("sweep: one row per technique, setting of its own axes and thread coun
     CHECK(results.rows[2].threads == 1);
     CHECK(results.rows[3].threads == 2);
     CHECK(results.rows[4].settings.at("bias") == "0.5");
+    // Settings are numbered in this order, none's defaults first; each at both thread counts.
+    CHECK(results.rows[1].setting == 0);
+    CHECK(results.rows[3].setting == 1);
+    CHECK(results.rows[13].setting == 6);
+    CHECK(results.grid.settings == 7);
 }
 
 TEST_CASE("sweep: the reference scores 0 against itself, none misses the shadows") {
@@ -189,9 +195,16 @@ TEST_CASE("sweep JSON: rows with settings, times and error figures") {
     const SweepResults& results = sharedSweep();
     const nlohmann::json j = nlohmann::json::parse(formatSweepJson(results));
     CHECK(j["scene"] == "sun");
+    CHECK(j["grid"]["techniques"] == nlohmann::json{"none", "reference-with-params"});
+    CHECK(j["grid"]["axes"][1]["values"] == nlohmann::json{"0", "0.5", "1"});
+    CHECK(j["grid"]["threads"] == nlohmann::json{1, 2});
+    CHECK(j["grid"]["settings"] == 7);
+    CHECK(j["grid"]["reference_fingerprints"]["reference"] == results.grid.referenceFingerprints.at("reference"));
+    CHECK(j["shard"] == nlohmann::json{{"index", 1}, {"count", 1}});
     REQUIRE(j["rows"].size() == results.rows.size());
     for (size_t k = 0; k < results.rows.size(); ++k) {
         const nlohmann::json& row = j["rows"][k];
+        CHECK(row["setting"] == results.rows[k].setting);
         CHECK(row["technique"] == results.rows[k].technique);
         CHECK(row["threads"] == results.rows[k].threads);
         CHECK(row["settings"].size() == results.rows[k].settings.size());

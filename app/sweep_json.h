@@ -1,0 +1,31 @@
+// A sweep's results as JSON: the file `shadowlab sweep` writes beside its CSV and plot,
+// and its reader, with which `shadowlab merge-sweep` joins the files of a sweep's shards.
+#pragma once
+
+#include <string>
+
+#include "app/sweep.h"
+
+namespace shadowlab {
+
+// {"scene", "grid": {"techniques", "axes": [{"name", "values"}], "overrides": {the given
+//  ones of "width", "height", "eye", "target", "fovy", "light_position", "light_radius"},
+//  "reference" ("": each technique against its own), "reference_fingerprints": {name:
+//  hex}, "threads", "warmup", "runs", "settings"}, "shard": {"index", "count"},
+//  "rows": [{"setting", "technique", "reference", "settings": {...}, "threads",
+//  "median_ms", "min_ms", "errors": formatJson(...), "stats": {...}}]}
+// A NaN (an error figure of a NaN image) is written as null.
+std::string formatSweepJson(const SweepResults& results);
+
+// formatSweepJson's text back into the results it was written from, so that writing them
+// again gives the same bytes (stats in their order, doubles exact, null read as NaN).
+// Throws std::runtime_error naming `file` and the problem: text that is not JSON, nested
+// deeper than a sweep's, or lacking or mistyping a field.
+SweepResults parseSweepJson(const std::string& text, const std::string& file);
+
+// "" if a and b are parts of one sweep: the same scene and SweepResults::techniques and
+// the same SweepGrid. Otherwise the first field that differs and both values, a's first:
+// "runs: 5 against 3".
+std::string sweepDifference(const SweepResults& a, const SweepResults& b);
+
+}  // namespace shadowlab
