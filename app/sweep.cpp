@@ -317,7 +317,7 @@ std::string formatSweepText(const SweepResults& results) {
 
 std::string formatSweepCsv(const SweepResults& results) {
     const std::vector<std::string> stats = statNames(results);
-    std::vector<std::string> header = {"technique", "settings", "threads", "median_ms", "min_ms", "rms", "mean_abs",
+    std::vector<std::string> header = {"technique", "settings", "threads", "median_ms", "min_ms", "rms", "rms_display", "mean_abs",
                                        "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
                                        "umbra_lit_percent", "umbra_over_percent", "lit_shadowed_percent", "reference"};
     header.insert(header.end(), stats.begin(), stats.end());
@@ -325,7 +325,8 @@ std::string formatSweepCsv(const SweepResults& results) {
     for (const SweepRow& r : results.rows) {
         const ErrorFigures& e = r.errors;
         std::vector<std::string> fields = {r.technique, r.settingsLabel(), std::to_string(r.threads),
-                                           csvNumber(r.medianMs), csvNumber(r.minMs), csvNumber(e.rms), csvNumber(e.meanAbs),
+                                           csvNumber(r.medianMs), csvNumber(r.minMs), csvNumber(e.rms),
+                                           e.rmsDisplay ? csvNumber(*e.rmsDisplay) : "", csvNumber(e.meanAbs),
                                            csvNumber(e.maxAbs), csvNumber(e.percentOfPixels(e.misclassified())),
                                            csvNumber(e.percentOfPixels(e.falseShadow)), csvNumber(e.percentOfPixels(e.falseLight)),
                                            csvNumber(e.percentOfPixels(e.umbraLit)), csvNumber(e.percentOfPixels(e.umbraOver)),

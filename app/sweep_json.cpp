@@ -116,6 +116,7 @@ ErrorFigures readErrors(const Json& j) {
     e.channel = j.at("channel").get<std::string>();
     e.pixels = j.at("pixels").get<uint64_t>();
     e.rms = number(j.at("rms"));
+    if (j.contains("rms_display")) e.rmsDisplay = number(j.at("rms_display"));
     e.meanAbs = number(j.at("mean_abs"));
     e.maxAbs = number(j.at("max_abs"));
     e.binary = j.at("binary").get<bool>();

@@ -31,9 +31,13 @@ ImageChannels scoredImage(const Frame& frame) {
     if (frame.output == TechniqueOutput::Visibility) {
         image.set(channel::V, frame.shadow.visibility);
     } else {
-        std::vector<float> Y(frame.radiance.size());
-        for (size_t k = 0; k < Y.size(); ++k) Y[k] = luminance(frame.radiance[k]);
+        std::vector<float> Y(frame.radiance.size()), display(frame.radiance.size());
+        for (size_t k = 0; k < Y.size(); ++k) {
+            Y[k] = luminance(frame.radiance[k]);
+            display[k] = luminance(toneMap(frame.radiance[k], {}));
+        }
         image.set(channel::Y, std::move(Y));
+        image.set(kDisplayLuminance, std::move(display));
     }
     return image;
 }
@@ -55,7 +59,14 @@ ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {
         why.append(options.channel).append(" channel: a technique is scored against a reference of the same output");
         throw std::invalid_argument(why);
     }
-    return compareImages(reference, scoredImage(frame), options);
+    const ImageChannels test = scoredImage(frame);
+    ErrorFigures figures = compareImages(reference, test, options);
+    if (frame.output == TechniqueOutput::Radiance && reference.find(kDisplayLuminance)) {
+        CompareOptions display;
+        display.channel = kDisplayLuminance;
+        figures.rmsDisplay = compareImages(reference, test, display).rms;
+    }
+    return figures;
 }
 
 std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,

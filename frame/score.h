@@ -21,7 +21,9 @@ namespace shadowlab {
 const char* scoredChannel(TechniqueOutput output);
 
 // The channels a frame is scored on: hit (from its G-buffer) and scoredChannel(): V, or Y,
-// the Rec. 709 luminance of the frame's radiance.
+// the Rec. 709 luminance of the frame's radiance, with kDisplayLuminance beside it, Y of the
+// radiance tone mapped for display (shading/tonemap.h, Reinhard at exposure 0).
+inline constexpr const char* kDisplayLuminance = "Y.display";
 ImageChannels scoredImage(const Frame& frame);
 
 // Renders the scene with the technique named referenceName (at its default settings) and
@@ -30,7 +32,8 @@ ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLe
                                    const std::string& referenceName = "reference", Progress* progress = nullptr);
 
 // The frame's scored channel against the reference's (compareImages with the default
-// options otherwise). Throws std::invalid_argument if the reference lacks that channel
+// options otherwise); for a radiance frame, also the RMS of the display luminance
+// (ErrorFigures::rmsDisplay). Throws std::invalid_argument if the reference lacks that channel
 // (a radiance technique scored against a visibility reference, or the other way round).
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame);
 

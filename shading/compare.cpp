@@ -108,6 +108,7 @@ std::string formatText(const ErrorFigures& f) {
     std::string text = "channel " + f.channel + ": " + std::to_string(f.pixels) +
                        " pixels with hit = 1 in the reference" + (f.binary ? " (binary values)" : "") + "\n";
     text += formatLine("RMS error", f.rms);
+    if (f.rmsDisplay) text += formatLine("RMS, display", *f.rmsDisplay);
     text += formatLine("mean |error|", f.meanAbs);
     text += formatLine("max |error|", f.maxAbs);
     text += formatCount("misclassified", f.misclassified(), f.percentOfPixels(f.misclassified()), "");
@@ -129,6 +130,7 @@ std::string formatJson(const ErrorFigures& f) {
     j["channel"] = f.channel;
     j["pixels"] = f.pixels;
     j["rms"] = f.rms;
+    if (f.rmsDisplay) j["rms_display"] = *f.rmsDisplay;
     j["mean_abs"] = f.meanAbs;
     j["max_abs"] = f.maxAbs;
     j["binary"] = f.binary;

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,10 @@ struct ErrorFigures {
     double rms = 0.0;
     double meanAbs = 0.0;
     double maxAbs = 0.0;
+    // Radiance images only (frame/score.h): the RMS of the display luminance, Y of the image
+    // tone mapped for display (shading/tonemap.h, Reinhard at exposure 0), as an image's
+    // error is seen (the RMS DeCoro and Rusinkiewicz report); empty for V.
+    std::optional<double> rmsDisplay;
     // True if every compared value of both images is exactly 0 or 1 (hard shadows), where
     // the classification below is the natural figure; it is computed in any case.
     bool binary = true;

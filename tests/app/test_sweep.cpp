@@ -167,14 +167,15 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
     std::string line;
     std::getline(csv, line);
     const std::vector<std::string> header = splitCsvLine(line);
-    REQUIRE(header.size() == 17);   // 15 columns, then the reference's stage times
+    REQUIRE(header.size() == 18);   // 16 columns, then the reference's stage times
     CHECK(header[0] == "technique");
-    CHECK(header[8] == "misclassified_percent");
-    CHECK(header[11] == "umbra_lit_percent");
-    CHECK(header[12] == "umbra_over_percent");
-    CHECK(header[14] == "reference");
-    CHECK(header[15] == "bvh_ms");
-    CHECK(header[16] == "rays_ms");
+    CHECK(header[6] == "rms_display");
+    CHECK(header[9] == "misclassified_percent");
+    CHECK(header[12] == "umbra_lit_percent");
+    CHECK(header[13] == "umbra_over_percent");
+    CHECK(header[15] == "reference");
+    CHECK(header[16] == "bvh_ms");
+    CHECK(header[17] == "rays_ms");
     for (const SweepRow& row : results.rows) {
         REQUIRE(std::getline(csv, line));
         const std::vector<std::string> fields = splitCsvLine(line);
@@ -184,9 +185,10 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
         CHECK(std::stoi(fields[2]) == row.threads);
         CHECK(std::stod(fields[3]) == doctest::Approx(row.medianMs).epsilon(1e-8));
         CHECK(std::stod(fields[5]) == doctest::Approx(row.errors.rms).epsilon(1e-8));
-        CHECK(std::stod(fields[8]) == doctest::Approx(row.errors.percentOfPixels(row.errors.misclassified())).epsilon(1e-8));
-        CHECK(std::stod(fields[11]) == doctest::Approx(row.errors.percentOfPixels(row.errors.umbraLit)).epsilon(1e-8));
-        CHECK(fields[14] == "reference");
+        CHECK(fields[6].empty());   // V is not tone mapped
+        CHECK(std::stod(fields[9]) == doctest::Approx(row.errors.percentOfPixels(row.errors.misclassified())).epsilon(1e-8));
+        CHECK(std::stod(fields[12]) == doctest::Approx(row.errors.percentOfPixels(row.errors.umbraLit)).epsilon(1e-8));
+        CHECK(fields[15] == "reference");
     }
     CHECK_FALSE(std::getline(csv, line));
 }
