@@ -18,9 +18,12 @@ namespace {
 constexpr int kTaps = 4;   // per side
 
 // The first of the kTaps sampled columns (or rows) whose centres are nearest the output
-// pixel's centre: output pixel x has its centre at (x + 0.5) * scale in sampled pixels.
-int firstTap(int x, double scale, int sampledSize) {
-    const int nearestBelow = int(std::floor((x + 0.5) * scale - 0.5));
+// pixel's centre. Both cameras share the vertical field of view, so the views are centred
+// on each other and a pixel spans H_s / H sampled pixels on both axes: output pixel x of
+// `size` has its centre at sampledSize / 2 + (x + 0.5 - size / 2) * scale in sampled pixels.
+int firstTap(int x, int size, double scale, int sampledSize) {
+    const double centre = 0.5 * sampledSize + (x + 0.5 - 0.5 * size) * scale;
+    const int nearestBelow = int(std::floor(centre - 0.5));
     return std::clamp(nearestBelow - (kTaps / 2 - 1), 0, std::max(0, sampledSize - kTaps));
 }
 
@@ -59,7 +62,7 @@ std::vector<glm::vec3> upsampleShadowBuffer(const GBuffer& full, const Camera& c
                                             const std::vector<glm::vec3>& S, UpsampleCounts* counts) {
     if (S.size() != sampled.pixelCount()) throw std::invalid_argument("upsampleShadowBuffer: S is not the sampled size");
     if (sampled.width == full.width && sampled.height == full.height) return S;
-    const double scaleX = double(sampled.width) / full.width, scaleY = double(sampled.height) / full.height;
+    const double scale = double(sampled.height) / full.height;
     // One full-size pixel's footprint per metre of distance, times the pixels one sample spans.
     const double footprint = 2.0 * portable::tan(double(camera.fovyDeg) * std::numbers::pi / 360.0) / full.height;
     const double span = double(full.height) / sampled.height;
@@ -69,12 +72,12 @@ std::vector<glm::vec3> upsampleShadowBuffer(const GBuffer& full, const Camera& c
     tbb::parallel_for(tbb::blocked_range<int>(0, full.height), [&](const tbb::blocked_range<int>& rows) {
         uint64_t rowsNearest = 0, rowsEmpty = 0;
         for (int j = rows.begin(); j != rows.end(); ++j) {
-            const int j0 = firstTap(j, scaleY, sampled.height);
+            const int j0 = firstTap(j, full.height, scale, sampled.height);
             for (int i = 0; i < full.width; ++i) {
                 const size_t p = full.index(i, j);
                 if (!full.hit[p]) continue;
                 const double sigma = span * footprint * glm::length(glm::dvec3(full.position[p]) - eye);
-                const Filtered f = filterPixel(full, p, sampled, S, firstTap(i, scaleX, sampled.width), j0, sigma);
+                const Filtered f = filterPixel(full, p, sampled, S, firstTap(i, full.width, scale, sampled.width), j0, sigma);
                 out[p] = f.value;
                 rowsNearest += f.how == Filtered::Nearest;
                 rowsEmpty += f.how == Filtered::Empty;

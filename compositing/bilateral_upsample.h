@@ -9,7 +9,11 @@
 // k times the footprint of one full-size pixel at p (2 |P_p - eye| tan(fovy / 2) / H: the
 // width of one sampled pixel there, so the filter reaches as far as the samples are apart,
 // at any depth), times the agreement of their shading normals, clamped at 0 so that a
-// surface facing away never lends its shadow. S'_p = sum w S_q / sum w.
+// surface facing away never lends its shadow. S'_p = sum w S_q / sum w. The block is
+// found in the sampled image's pixels: both cameras share the vertical field of view, so
+// the views are centred on each other at H_s / H sampled pixels per pixel on both axes
+// (sampling_detail.h rounds the sizes, so the sampled view may be up to about one sampled
+// pixel wider or narrower; taps are clamped to it).
 //
 // At sampling detail 1 there is nothing to resample: S' = S exactly. Where every weight is 0
 // (a thin feature whose samples all lie on other surfaces) S'_p takes the hit sample nearest

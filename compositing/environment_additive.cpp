@@ -55,13 +55,13 @@ Technique additive(std::string name, std::string description, int lights, const 
 
 Technique environmentAdditiveTechnique() {
     return additive("env-additive",
-                    "environment light, additive: N median-cut lights, each shaded where it is visible", 40,
+                    "environment light, additive: N lights sampled from the map, each shaded where it is visible", 40,
                     "shadow-map");
 }
 
 Technique environmentLightsReferenceTechnique() {
     return additive("reference-env-lights",
-                    "environment light by 1000 median-cut lights with exact visibility (the paper's reference)", 1000,
+                    "environment light by 1000 lights sampled from the map, with exact visibility (the paper's reference)", 1000,
                     "exact");
 }
 

@@ -45,26 +45,33 @@ bool tablesServe(const Material& m, const EnvironmentMap& map) {
     return true;
 }
 
-const LocalIllumination& sceneLocalIllumination(const PreparedScene& prepared, std::optional<double>* builtMs) {
-    const EnvironmentMap& map = sceneEnvironment(prepared);
-    return prepared.derived<LocalIllumination>(
-        [&] {
-            std::vector<Material> served;
-            for (const Material& m : prepared.scene().materials) {
-                if (tablesServe(m, map)) served.push_back(m);
-            }
-            return buildLocalIllumination(map, served);
-        },
-        builtMs);
-}
-
 namespace {
 
+// Types of their own, so that PreparedScene::derived keeps them apart from any other
+// family's tables or pyramid.
+struct SceneLocalIllumination {
+    LocalIllumination tables;
+};
 struct ScenePyramid {
     EnvironmentPyramid pyramid;
 };
 
 }  // namespace
+
+const LocalIllumination& sceneLocalIllumination(const PreparedScene& prepared, std::optional<double>* builtMs) {
+    const EnvironmentMap& map = sceneEnvironment(prepared);
+    return prepared
+        .derived<SceneLocalIllumination>(
+            [&] {
+                std::vector<Material> served;
+                for (const Material& m : prepared.scene().materials) {
+                    if (tablesServe(m, map)) served.push_back(m);
+                }
+                return SceneLocalIllumination{buildLocalIllumination(map, served)};
+            },
+            builtMs)
+        .tables;
+}
 
 const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared) {
     const EnvironmentMap& map = sceneEnvironment(prepared);

@@ -42,6 +42,7 @@ uint64_t subtract(const std::vector<glm::vec3>& C, const std::vector<glm::vec3>&
 }
 
 ShadowOutputs run(const ShadowInputs& in) {
+    refuseUnservedMaterials(in);
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     std::vector<uint32_t> regions;

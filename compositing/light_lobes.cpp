@@ -25,7 +25,7 @@ std::vector<Material> widenedForRegion(std::vector<Material> materials, double s
             case MaterialModel::Phong: m.shininess = float(1.0 / (1.0 / m.shininess + rho2 / 4.0)); break;
             case MaterialModel::BlinnPhong: m.shininess = float(1.0 / (1.0 / m.shininess + rho2 / 16.0)); break;
             case MaterialModel::Ggx:
-                m.roughness = float(std::min(1.0, std::sqrt(double(m.roughness) * m.roughness + rho2 / 8.0)));
+                m.roughness = float(std::min(1.0, std::sqrt(double(m.roughness) * m.roughness + rho2 / 4.0)));
                 break;
         }
     }

@@ -10,10 +10,12 @@
 // cap of equal solid angle Omega (angular radius rho, Omega = 2 pi (1 - cos rho)), and the
 // lobe and the cap as Gaussians about their axes whose variances add: a cap's is rho^2 / 4
 // per axis, a normalised lobe's 1 / n (Phong, about the mirror direction), 4 / s in the
-// light's direction (Blinn-Phong, about the half vector) and 2 alpha^2 (GGX), so
+// light's direction (Blinn-Phong, about the half vector) and alpha^2 (GGX: D ~ (1 +
+// theta_h^2 / alpha^2)^-2 ~ exp(-2 theta_h^2 / alpha^2) at its peak, variance alpha^2 / 4 in
+// the half vector, four times that in the light's direction), so
 //
 //     Phong  n' = 1 / (1/n + rho^2 / 4),  Blinn-Phong  s' = 1 / (1/s + rho^2 / 16),
-//     GGX    alpha' = min(1, sqrt(alpha^2 + rho^2 / 8)).
+//     GGX    alpha' = min(1, sqrt(alpha^2 + rho^2 / 4)).
 //
 // Normalised lobes keep their integral as they widen, so a light's reflected energy is
 // kept; the diffuse term does not change.

@@ -13,9 +13,9 @@ namespace shadowlab {
 ParamSpec samplingDetailParam();
 
 // The camera of the same view with max(1, round(W / k)) x max(1, round(H / k)) pixels: the
-// same eye, target, up and vertical field of view (so, when k does not divide the size, a
-// frustum a fraction of a pixel wider or narrower; resampling weighs samples by their
-// world positions, not by their pixel coordinates).
+// same eye, target, up and vertical field of view, so where k does not divide the size the
+// sampled view is up to about one sampled pixel wider or narrower than the full one
+// (bilateral_upsample.h maps between them and clamps its taps to the sampled image).
 Camera sampledCamera(const Camera& camera, int k);
 
 }  // namespace shadowlab

@@ -48,22 +48,30 @@ std::vector<glm::vec3> perPixel(const ShadowInputs& in, const Lookup& at) {
 
 }  // namespace
 
-std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats) {
+void refuseUnservedMaterials(const ShadowInputs& in) {
+    if (in.params.choice<UnshadowedMethod>("unshadowed") != UnshadowedMethod::Tables) return;
     const std::vector<Material>& materials = in.scene().materials;
     const std::vector<bool> visible = visibleMaterials(in.gbuffer, materials.size());
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
+    for (size_t m = 0; m < materials.size(); ++m) {
+        if (visible[m] && !tablesServe(materials[m], map))
+            throw std::invalid_argument("material \"" + materials[m].name +
+                                        "\": prefiltered tables cannot light it (Blinn-Phong, or a lobe too sharp "
+                                        "for the map); use --param unshadowed=radiance-cache");
+    }
+}
+
+std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats) {
+    refuseUnservedMaterials(in);
+    const std::vector<Material>& materials = in.scene().materials;
     if (in.params.choice<UnshadowedMethod>("unshadowed") == UnshadowedMethod::Tables) {
-        for (size_t m = 0; m < materials.size(); ++m) {
-            if (visible[m] && !tablesServe(materials[m], map))
-                throw std::invalid_argument("material \"" + materials[m].name +
-                                            "\": prefiltered tables cannot light it (Blinn-Phong, or a lobe too sharp "
-                                            "for the map); use --param unshadowed=radiance-cache");
-        }
         const LocalIllumination& local = sceneLocalIllumination(in.prepared);
         return perPixel(in, [&](uint32_t m, const glm::dvec3& N, const glm::dvec3& wo) {
             return unshadowedRadiance(local, materials[m], N, wo);
         });
     }
+    const EnvironmentMap& map = sceneEnvironment(in.prepared);
+    const std::vector<bool> visible = visibleMaterials(in.gbuffer, materials.size());
     const Camera& camera = in.camera();
     const glm::dvec3 toViewer = glm::normalize(glm::dvec3(camera.eye) - glm::dvec3(camera.target));
     std::vector<RadianceCache> caches(materials.size());

@@ -21,10 +21,13 @@ enum class UnshadowedMethod { Tables, RadianceCache };
 // The `unshadowed` and `cache-size` parameters.
 std::vector<ParamSpec> unshadowedParams();
 
-// C at every hit pixel of in.gbuffer, about its shading normal. Throws std::invalid_argument,
-// before any work, naming a visible material the tables cannot serve (Blinn-Phong, a lobe
-// too sharp for the map) when `unshadowed` is `tables`. Adds `radiance_caches_count` with
-// the radiance cache.
+// Throws std::invalid_argument naming a visible material the tables cannot serve
+// (Blinn-Phong, a lobe too sharp for the map) when `unshadowed` is `tables`: a technique
+// calls it before any other work.
+void refuseUnservedMaterials(const ShadowInputs& in);
+
+// C at every hit pixel of in.gbuffer, about its shading normal (refuseUnservedMaterials
+// first). Adds `radiance_caches_count` with the radiance cache.
 std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats);
 
 }  // namespace shadowlab

@@ -30,13 +30,19 @@ std::optional<double> PreparedScene::buildEdgeAdjacency() const {
 
 const void* PreparedScene::derivedData(std::type_index type, const std::function<std::shared_ptr<const void>()>& build,
                                        std::optional<double>& builtMs) const {
-    const std::lock_guard lock(derivedMutex_);
-    std::shared_ptr<const void>& slot = derived_[type];
-    if (!slot) {
-        // Isolated for the reason buildEdgeAdjacency() gives: a build may run in parallel.
-        builtMs = millisecondsOf([&] { tbb::this_task_arena::isolate([&] { slot = build(); }); });
+    std::shared_ptr<Derived> entry;
+    {
+        const std::lock_guard lock(derivedMutex_);
+        std::shared_ptr<Derived>& slot = derived_[type];
+        if (!slot) slot = std::make_shared<Derived>();
+        entry = slot;
     }
-    return slot.get();
+    const std::lock_guard building(entry->building);
+    if (!entry->data) {
+        // Isolated for the reason buildEdgeAdjacency() gives: a build may run in parallel.
+        builtMs = millisecondsOf([&] { tbb::this_task_arena::isolate([&] { entry->data = build(); }); });
+    }
+    return entry->data.get();
 }
 
 const std::vector<EdgeAdjacency>& PreparedScene::edgeAdjacency() const {

@@ -44,7 +44,8 @@ public:
     // first call for the type T and kept for every later frame, as the edge adjacency is;
     // so no family keeps a cache of its own. `builtMs`, if given, gets the wall time of the
     // build to the one call that made it, and nothing otherwise. A build that throws keeps
-    // nothing, and the next call tries again. Thread-safe; one build runs at a time.
+    // nothing, and the next call tries again. Thread-safe: callers of one type wait for its
+    // one build; a build may derive other types (a table from the map), never its own.
     template <class T, class Build>
     const T& derived(Build&& build, std::optional<double>* builtMs = nullptr) const {
         std::optional<double> ms;
@@ -62,8 +63,12 @@ private:
     WorldGeometry world_;
     mutable std::once_flag adjacencyBuilt_;
     mutable std::vector<EdgeAdjacency> adjacency_;
-    mutable std::mutex derivedMutex_;
-    mutable std::map<std::type_index, std::shared_ptr<const void>> derived_;
+    struct Derived {
+        std::mutex building;   // held while this type's data is built
+        std::shared_ptr<const void> data;
+    };
+    mutable std::mutex derivedMutex_;   // guards the map, never held during a build
+    mutable std::map<std::type_index, std::shared_ptr<Derived>> derived_;
 };
 
 }  // namespace shadowlab

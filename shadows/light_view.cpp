@@ -193,7 +193,18 @@ glm::dvec3 anyPerpendicular(const glm::dvec3& axis) {
     return std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
 }
 
+// The margin of o.marginTexels around the receivers; a side of no width (one receiver, or
+// receivers along a line the light looks across) first gets a width of 1e-6 of its
+// coordinates' size, so the view's projection stays finite.
 void widen(Bounds& b, const LightFitOptions& o) {
+    const auto atLeastMinimum = [](double& low, double& high) {
+        const double minimum = 1e-6 * std::max({1.0, std::abs(low), std::abs(high)});
+        if (!(high - low >= minimum)) {
+            const double middle = 0.5 * (low + high);
+            low = middle - 0.5 * minimum, high = middle + 0.5 * minimum;
+        }
+    };
+    atLeastMinimum(b.x0, b.x1), atLeastMinimum(b.y0, b.y1);
     const double mx = (b.x1 - b.x0) * o.marginTexels / o.resolution, my = (b.y1 - b.y0) * o.marginTexels / o.resolution;
     b.x0 -= mx, b.x1 += mx, b.y0 -= my, b.y1 += my;
 }

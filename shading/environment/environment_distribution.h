@@ -27,6 +27,7 @@ struct EnvironmentSample {
 
 class EnvironmentDistribution {
 public:
+    // Keeps a reference to the map, which must outlive the distribution.
     explicit EnvironmentDistribution(const EnvironmentMap& map);
 
     bool empty() const { return total_ <= 0.0; }

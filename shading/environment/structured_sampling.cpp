@@ -59,7 +59,7 @@ std::vector<int> samplesPerStratum(const Cells& cells, const std::vector<int>& s
     }
     std::vector<int> cellsIn(kMaxStrata, 0);
     for (int s : stratum) ++cellsIn[s];
-    for (int j = 0; j < kMaxStrata; ++j) importance[j] = area[j] > 0.0 ? energy[j] / area[j] * std::pow(area[j], 0.25) : 0.0;
+    for (int j = 0; j < kMaxStrata; ++j) importance[j] = area[j] > 0.0 ? energy[j] / area[j] * std::sqrt(std::sqrt(area[j])) : 0.0;
     // A black map has no importance anywhere: spread the samples by area instead.
     const double total = std::accumulate(importance.begin(), importance.end(), 0.0);
     if (!(total > 0.0)) importance = area;
@@ -85,9 +85,11 @@ std::vector<int> samplesPerStratum(const Cells& cells, const std::vector<int>& s
 // Farthest-point placement (Hochbaum and Shmoys 1985), brightest stratum first.
 std::vector<size_t> placeSamples(const Cells& cells, const std::vector<int>& stratum, const std::vector<int>& samples) {
     std::vector<double> nearestCos(cells.size(), -2.0);   // cosine to the nearest placed sample
+    std::vector<bool> taken(cells.size(), false);
     std::vector<size_t> placed;
     const auto place = [&](size_t c) {
         placed.push_back(c);
+        taken[c] = true;
         const glm::dvec3 d = cells.direction(c);
         for (size_t k = 0; k < cells.size(); ++k) nearestCos[k] = std::max(nearestCos[k], glm::dot(d, cells.direction(k)));
     };
@@ -98,10 +100,11 @@ std::vector<size_t> placeSamples(const Cells& cells, const std::vector<int>& str
             size_t best = cells.size();
             double bestKey = std::numeric_limits<double>::infinity();
             for (size_t c = 0; c < cells.size(); ++c) {
-                if (stratum[c] != j || nearestCos[c] >= 1.0) continue;
+                if (stratum[c] != j || taken[c]) continue;
                 const double key = placed.empty() ? -cells.luminance[c] : nearestCos[c];
                 if (key < bestKey) bestKey = key, best = c;
             }
+            if (best == cells.size()) throw std::logic_error("structured sampling: a stratum ran out of cells");
             place(best);
         }
     }
@@ -138,7 +141,6 @@ std::vector<EnvironmentLight> structuredLights(const EnvironmentMap& map, int co
     }
     for (size_t s = 0; s < samples.size(); ++s) {
         lights[s].direction = glm::normalize(cells.direction(samples[s]));
-        lights[s].first = lights[s].last = map.texelToward(lights[s].direction);   // no rectangle: see regionOfTexel
     }
     if (regionOfTexel) {
         // Each level halves the indices (a lone last texel where a count is odd), so map

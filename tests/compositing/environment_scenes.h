@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <doctest/doctest.h>
+
 #include <glm/glm.hpp>
 
 #include "frame/render.h"
@@ -62,6 +64,15 @@ inline Frame render(const PreparedScene& prepared, const std::string& technique,
     FrameSettings settings;
     settings.params = params;
     return renderFrame(prepared, findTechnique(technique), settings);
+}
+
+// A stat of the frame's technique; fails the test if it has none of that name.
+inline double stat(const Frame& f, const std::string& name) {
+    for (const TechniqueStat& s : f.shadow.stats) {
+        if (s.name == name) return s.value;
+    }
+    FAIL("no stat " << name);
+    return 0.0;
 }
 
 }  // namespace shadowlab::test

@@ -35,8 +35,6 @@ double worstRelativeLight(const Frame& f) {
 
 size_t hits(const Frame& f) { return size_t(std::count(f.gbuffer.hit.begin(), f.gbuffer.hit.end(), uint8_t(1))); }
 
-}  // namespace
-
 // The mean over hit pixels of the luminance's error relative to a L's.
 double meanRelativeError(const Frame& f) {
     const glm::vec3 e = kFloorAlbedo * kFurnaceRadiance;
@@ -49,13 +47,7 @@ double meanRelativeError(const Frame& f) {
     return sum / double(hits(f));
 }
 
-double stat(const Frame& f, const std::string& name) {
-    for (const TechniqueStat& s : f.shadow.stats) {
-        if (s.name == name) return s.value;
-    }
-    FAIL("no stat " << name);
-    return 0.0;
-}
+}  // namespace
 
 TEST_CASE("furnace: an open floor under a constant sky reflects albedo times L") {
     const ScratchDirectory dir("furnace-open");
@@ -106,6 +98,7 @@ TEST_CASE("furnace: a floor under a ceiling that hides the whole sky reflects no
     for (const char* lights : {"16", "256"}) {
         const Frame f = render(closed, "env-subtractive", {{"lights", lights}, {"visibility", "exact"}});
         CHECK(worstRelativeLight(f) < 0.05);
-        CHECK(stat(f, "clamped_pixels") <= double(hits(f)));
+        // The lights' quadrature overshoots C in some channel at every pixel here: all clamped.
+        CHECK(stat(f, "clamped_pixels") == double(hits(f)));
     }
 }

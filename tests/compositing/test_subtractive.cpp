@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include <tbb/global_control.h>
@@ -19,14 +20,6 @@ using namespace shadowlab;
 using namespace shadowlab::test;
 
 namespace {
-
-double stat(const Frame& f, const std::string& name) {
-    for (const TechniqueStat& s : f.shadow.stats) {
-        if (s.name == name) return s.value;
-    }
-    FAIL("no stat " << name);
-    return 0.0;
-}
 
 bool sameBytes(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
@@ -113,6 +106,29 @@ TEST_CASE("subtractive shadows: S' = S at sampling detail 1, and a constant S re
         CHECK(glm::all(glm::lessThan(glm::abs(resampled[k] - constant[0]), glm::vec3(1e-6f))));
     }
     CHECK(counts.emptyPixels < f.gbuffer.pixelCount() / 50);
+
+    // S = the sampled points' world x: S' should be p's own x, to within the kernel's reach.
+    // Measured in units of one sampled pixel's footprint at p: a window off by one sampled
+    // pixel biases the mean by about one.
+    std::vector<glm::vec3> ramp(sampled.pixelCount(), glm::vec3(0.0f));
+    for (size_t q = 0; q < ramp.size(); ++q) ramp[q] = glm::vec3(sampled.position[q].x);
+    const std::vector<glm::vec3> rampResampled = upsampleShadowBuffer(f.gbuffer, sky.scene().camera, sampled, ramp);
+    const Camera& c = sky.scene().camera;
+    double signedSum = 0.0, absSum = 0.0;
+    size_t n = 0;
+    for (int j = 0; j < c.height; ++j) {
+        for (int i = 0; i < c.width; ++i) {
+            const size_t k = f.gbuffer.index(i, j);
+            if (!f.gbuffer.hit[k] || i < 8 || j < 8 || i >= c.width - 8 || j >= c.height - 8) continue;   // borders clamp
+            const double footprint = 4.0 * 2.0 * std::tan(c.fovyDeg * 3.141592653589793 / 360.0) / c.height *
+                                     glm::length(f.gbuffer.position[k] - c.eye);
+            const double error = (rampResampled[k].x - f.gbuffer.position[k].x) / footprint;
+            signedSum += error, absSum += std::abs(error), ++n;
+        }
+    }
+    MESSAGE("ramp: mean error " << signedSum / n << ", mean |error| " << absSum / n << " sampled-pixel footprints");
+    CHECK(std::abs(signedSum / n) < 0.25);
+    CHECK(absSum / n < 0.5);
 }
 
 TEST_CASE("subtractive shadows: each lower sampling detail shades fewer shadow fragments") {
@@ -202,4 +218,16 @@ TEST_CASE("subtractive shadows: the radiance cache's C agrees with the tables' w
     }
     MESSAGE("mean |C_tables - C_cache| / mean |C_tables| = " << difference / total);
     CHECK(difference / total < 0.06);   // measured 2.9%: each is an approximation of the same integral
+}
+
+TEST_CASE("subtractive shadows: a sampled image of one pixel (1/1024 of a small view) gives a finite image") {
+    // One receiver: the lights' views fit a point, which light-view fitting widens to a
+    // finite size rather than an infinite projection.
+    const PreparedScene sky(skyScene(32, 20));
+    for (const char* visibility : {"shadow-map", "shadow-volume", "exact"}) {
+        INFO(visibility);
+        const Frame f = render(sky, "env-subtractive", {{"lights", "8"}, {"sampling-detail", "1/1024"}, {"visibility", visibility}});
+        CHECK(stat(f, "sampled_pixels") <= 1.0);
+        for (const glm::vec3& c : f.radiance) CHECK((std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b)));
+    }
 }

@@ -2,6 +2,8 @@
 // (scenes/prepared_scene.h): welding, open and non-manifold edges, and the build reported once.
 #include <doctest/doctest.h>
 
+#include <stdexcept>
+
 #include "scenes/edge_adjacency.h"
 #include "scenes/prepared_scene.h"
 #include "scenes/procedural.h"
@@ -54,4 +56,25 @@ TEST_CASE("prepared scene: the edge adjacency is built once, on first use, and r
     CHECK(edited.edgeAdjacency()[0].edges.size() ==
           buildEdgeAdjacency(scene.meshes[0].positions, scene.meshes[0].triangles).edges.size());
     CHECK(prepared.edgeAdjacency()[0].closed);
+}
+
+TEST_CASE("prepared scene: derived data is built once per type, reported once, rebuilt after a throw, and may derive another type") {
+    Scene scene;
+    scene.meshes = {makeBox(glm::vec3(0.0f), glm::vec3(1.0f))};
+    scene.instances = {{"box", 0, 0, glm::mat4(1.0f)}};
+    const PreparedScene prepared(scene);
+    struct Count { int value; };
+    struct Doubled { int value; };
+    int builds = 0;
+    std::optional<double> ms;
+    CHECK(prepared.derived<Count>([&] { return Count{++builds}; }, &ms).value == 1);
+    CHECK(ms.has_value());
+    CHECK(prepared.derived<Count>([&] { return Count{++builds}; }, &ms).value == 1);   // kept
+    CHECK_FALSE(ms.has_value());
+    CHECK(builds == 1);
+    // A build that derives another type (as the environment's tables derive its map).
+    CHECK(prepared.derived<Doubled>([&] { return Doubled{2 * prepared.derived<Count>([] { return Count{-1}; }).value}; }).value == 2);
+    struct Failing { int value; };
+    CHECK_THROWS_AS(prepared.derived<Failing>([]() -> Failing { throw std::runtime_error("no"); }), std::runtime_error);
+    CHECK(prepared.derived<Failing>([] { return Failing{7}; }).value == 7);
 }

@@ -55,5 +55,6 @@ TEST_CASE("environment distribution: samples carry their direction's density and
 }
 
 TEST_CASE("environment distribution: a black map has none") {
-    CHECK(EnvironmentDistribution(constantEnvironment(8, 4, glm::vec3(0.0f))).empty());
+    const EnvironmentMap black = constantEnvironment(8, 4, glm::vec3(0.0f));
+    CHECK(EnvironmentDistribution(black).empty());
 }

@@ -70,5 +70,19 @@ TEST_CASE("radiance cache: lookups between texels interpolate, and the size is c
     const RadianceCache cache = buildRadianceCache(map, pyramid, lambert, {0.0, 0.0, 1.0}, 32);
     // A constant sky over a Lambert surface: albedo L for every normal, to the midpoint rule's error.
     for (const glm::dvec3& N : sphereDirections(200)) CHECK(lookupRadianceCache(cache, N).r == doctest::Approx(1.0).epsilon(5e-3));
+    // Lookups read the texel at its centre and the mean of two neighbours halfway between
+    // them (a half-texel shift or swapped weights fail both), on a map where C varies.
+    EnvironmentMap halves = constantEnvironment(64, 32, glm::vec3(0.1f));
+    for (size_t k = 0; k < halves.radiance.size() / 2; ++k) halves.radiance[k] = glm::vec3(1.0f);
+    const RadianceCache varied = buildRadianceCache(halves, buildPyramid(halves), lambert, {0.0, 0.0, 1.0}, 16);
+    const auto texel = [&](int i, int j) { return double(varied.radiance[size_t(j) * 16 + size_t(i)].r); };
+    for (int j = 1; j < 15; j += 3) {
+        for (int i = 1; i < 14; i += 3) {
+            const double centre = lookupRadianceCache(varied, octahedralDecode({(i + 0.5) / 16, (j + 0.5) / 16})).r;
+            const double between = lookupRadianceCache(varied, octahedralDecode({(i + 1.0) / 16, (j + 0.5) / 16})).r;
+            CHECK(centre == doctest::Approx(texel(i, j)).epsilon(1e-6));
+            CHECK(between == doctest::Approx(0.5 * (texel(i, j) + texel(i + 1, j))).epsilon(1e-6));
+        }
+    }
     CHECK_THROWS_AS(buildRadianceCache(map, pyramid, lambert, {0.0, 0.0, 1.0}, 1), std::invalid_argument);
 }
