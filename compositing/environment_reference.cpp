@@ -80,8 +80,6 @@ glm::dvec3 estimate(const Integrand& integrand, int rounds, Pcg32 rng) {
     return sum / double(rounds);
 }
 
-double luminanceOf(const glm::dvec3& c) { return luminance(c); }
-
 ShadowOutputs run(const ShadowInputs& in) {
     const int samples = in.params.integer("samples");
     if (samples % 2 != 0) throw std::invalid_argument("reference-env: samples must be even (two halves)");
@@ -107,7 +105,7 @@ ShadowOutputs run(const ShadowInputs& in) {
                 const glm::dvec3 a = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[0], k));
                 const glm::dvec3 b = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[1], k));
                 out.radiance[k] = glm::vec3(0.5 * (a + b));
-                halvesDifference[k] = luminanceOf(a) - luminanceOf(b);
+                halvesDifference[k] = luminance(a) - luminance(b);
             }
             progress.advance();
         }
@@ -122,7 +120,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     uint64_t hits = 0;
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         squares += halvesDifference[k] * halvesDifference[k], hits += g.hit[k];
-        meanY += luminanceOf(glm::dvec3(out.radiance[k]));
+        meanY += luminance(glm::dvec3(out.radiance[k]));
     }
     const double halvesRms = hits ? 0.5 * std::sqrt(squares / double(hits)) : 0.0;
     meanY = hits ? meanY / double(hits) : 0.0;

@@ -4,13 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "shading/luminance.h"
 #include "shading/tonemap.h"
 
 namespace shadowlab {
 namespace {
-
-// Rec. 709 luminance of a display-referred linear colour.
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 // Half of the sRGB code: marks in full colour stand out over any grey.
 uint8_t dimmedGrey(const glm::vec3& radiance) {

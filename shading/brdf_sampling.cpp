@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "raster/portable_math.h"
+#include "shading/luminance.h"
 #include "shading/microfacet_ggx.h"
 
 namespace shadowlab {
@@ -12,11 +13,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double luminanceOf(const glm::vec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-
 double diffuseShare(const Material& m) {
     if (m.model == MaterialModel::Lambert) return 1.0;
-    const double d = luminanceOf(m.albedo), s = luminanceOf(m.specular);
+    const double d = luminance(glm::dvec3(m.albedo)), s = luminance(glm::dvec3(m.specular));
     return d + s > 0.0 ? d / (d + s) : 1.0;
 }
 

@@ -11,13 +11,10 @@
 #include <cmath>
 
 #include "raster/portable_math.h"
+#include "shading/luminance.h"
 
 namespace shadowlab {
 namespace {
-
-float luminance(const glm::vec3& c) {
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
 
 glm::vec3 reinhard(const glm::vec3& c) {
     const float Y = luminance(c);

@@ -24,6 +24,8 @@
 
 #include <glm/glm.hpp>
 
+#include "shading/luminance.h"   // what the samplers and integrators weigh texels by
+
 namespace shadowlab {
 
 struct EnvironmentMap {
@@ -51,8 +53,6 @@ struct EnvironmentMap {
     glm::ivec2 texelToward(const glm::dvec3& direction) const;
 };
 
-// Rec. 709 luminance of linear RGB, what the samplers and integrators weigh texels by.
-inline double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
 
 // The integral of the map's radiance over the sphere, sum of L dOmega over every texel.
 glm::dvec3 environmentPower(const EnvironmentMap& map);

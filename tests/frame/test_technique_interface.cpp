@@ -138,7 +138,7 @@ TEST_CASE("a radiance technique's image is the frame's, scored on its luminance 
     REQUIRE(scored.find(channel::Y) != nullptr);
     CHECK(scoreFrame(scored, reference).rms == 0.0);
     CHECK(scoreFrame(scored, brighter).rms == doctest::Approx(0.25).epsilon(1e-6));   // luminance of (0.25, 0.25, 0.25)
-    // After Reinhard's x / (1 + x): 0.75 / 1.75 - 0.5 / 1.5 = 2 / 21.
+    // After Reinhard's c / (1 + Y), for greys Y / (1 + Y): 0.75 / 1.75 - 0.5 / 1.5 = 2 / 21.
     REQUIRE(scoreFrame(scored, brighter).rmsDisplay.has_value());
     CHECK(*scoreFrame(scored, brighter).rmsDisplay == doctest::Approx(2.0 / 21.0).epsilon(1e-5));
     CHECK_FALSE(scoreFrame(scoredImage(renderFrame(prepared, findTechnique("none"))), renderFrame(prepared, findTechnique("none")))
