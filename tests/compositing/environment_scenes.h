@@ -13,6 +13,7 @@
 #include "scenes/procedural.h"
 #include "scenes/scene_file.h"
 #include "shading/image_io.h"
+#include "shading/luminance.h"
 #include "tests/scratch_directory.h"
 
 namespace shadowlab::test {
@@ -64,6 +65,16 @@ inline Frame render(const PreparedScene& prepared, const std::string& technique,
     FrameSettings settings;
     settings.params = params;
     return renderFrame(prepared, findTechnique(technique), settings);
+}
+
+// The mean luminance of the frame's image over its hit pixels.
+inline double meanLuminance(const Frame& f) {
+    double sum = 0.0;
+    size_t hits = 0;
+    for (size_t k = 0; k < f.radiance.size(); ++k) {
+        if (f.gbuffer.hit[k]) sum += luminance(glm::dvec3(f.radiance[k])), ++hits;
+    }
+    return hits ? sum / double(hits) : 0.0;
 }
 
 // A stat of the frame's technique; fails the test if it has none of that name.
