@@ -48,7 +48,7 @@ Technique additive(std::string name, std::string description, int lights, const 
             .run = run,
             .referenceName = "reference-env",
             .output = TechniqueOutput::Radiance,
-            .prepare = prepareEnvironmentAndSilhouettes};
+            .prepare = prepareSampledLights};
 }
 
 }  // namespace

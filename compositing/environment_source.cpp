@@ -3,6 +3,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "compositing/light_visibility.h"
+#include "compositing/unshadowed_light.h"
 #include "shading/environment/environment_file.h"
 #include "shading/environment/prefiltered_lobe.h"
 
@@ -78,7 +80,7 @@ const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared) {
     return prepared.derived<ScenePyramid>([&] { return ScenePyramid{buildPyramid(map)}; }).pyramid;
 }
 
-std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared) {
+std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const TechniqueParams&) {
     std::optional<double> ms;
     sceneEnvironment(prepared, &ms);
     std::vector<TechniqueStat> stats;
@@ -86,17 +88,21 @@ std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared) {
     return stats;
 }
 
-std::vector<TechniqueStat> prepareEnvironmentAndSilhouettes(const PreparedScene& prepared) {
-    std::vector<TechniqueStat> stats = prepareEnvironment(prepared);
-    for (TechniqueStat& s : prepareEdgeAdjacency(prepared)) stats.push_back(std::move(s));
+std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const TechniqueParams& params) {
+    std::vector<TechniqueStat> stats = prepareEnvironment(prepared, params);
+    if (params.choice<VisibilityMethod>("visibility") == VisibilityMethod::ShadowVolume) {
+        for (TechniqueStat& s : prepareEdgeAdjacency(prepared, params)) stats.push_back(std::move(s));
+    }
     return stats;
 }
 
-std::vector<TechniqueStat> prepareLocalIllumination(const PreparedScene& prepared) {
-    std::vector<TechniqueStat> stats = prepareEnvironmentAndSilhouettes(prepared);
-    std::optional<double> ms;
-    sceneLocalIllumination(prepared, &ms);
-    appendBuilt(stats, "local_illumination_ms", ms);
+std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const TechniqueParams& params) {
+    std::vector<TechniqueStat> stats = prepareSampledLights(prepared, params);
+    if (params.choice<UnshadowedMethod>("unshadowed") == UnshadowedMethod::Tables) {
+        std::optional<double> ms;
+        sceneLocalIllumination(prepared, &ms);
+        appendBuilt(stats, "local_illumination_ms", ms);
+    }
     return stats;
 }
 

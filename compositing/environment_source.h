@@ -29,10 +29,10 @@ bool tablesServe(const Material& material, const EnvironmentMap& map);
 const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared);
 
 // Technique::prepare of the techniques that read the map (`environment_ms`); of those that
-// may also run shadow volumes per light (and `edge_adjacency_ms`); and of those that also
-// read the local-illumination tables (and `local_illumination_ms`).
-std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared);
-std::vector<TechniqueStat> prepareEnvironmentAndSilhouettes(const PreparedScene& prepared);
-std::vector<TechniqueStat> prepareLocalIllumination(const PreparedScene& prepared);
+// light it by sampled lights (and `edge_adjacency_ms` with visibility=shadow-volume); and of
+// subtractive shadows (and `local_illumination_ms` with unshadowed=tables).
+std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const TechniqueParams& params);
+std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const TechniqueParams& params);
+std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const TechniqueParams& params);
 
 }  // namespace shadowlab

@@ -106,7 +106,7 @@ Technique environmentSubtractiveTechnique() {
             .run = run,
             .referenceName = "reference-env",
             .output = TechniqueOutput::Radiance,
-            .prepare = prepareLocalIllumination};
+            .prepare = prepareSubtractive};
 }
 
 }  // namespace shadowlab

@@ -69,7 +69,7 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     Frame frame;
     frame.output = technique.output;
     frame.gbuffer = renderGBuffer(prepared.world(), scene.camera, settings.simd);
-    if (technique.prepare) frame.preparation = technique.prepare(prepared);
+    if (technique.prepare) frame.preparation = technique.prepare(prepared, params);
 
     const auto start = std::chrono::steady_clock::now();
     frame.shadow = technique.run({prepared, frame.gbuffer, light, settings.simd, params, settings.debugDir,

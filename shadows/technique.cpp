@@ -13,7 +13,7 @@ ShadowOutputs unlitOutputs(const GBuffer& g) {
     return out;
 }
 
-std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared) {
+std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared, const TechniqueParams&) {
     if (const std::optional<double> ms = prepared.buildEdgeAdjacency()) return {{"edge_adjacency_ms", *ms}};
     return {};
 }

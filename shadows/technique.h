@@ -68,16 +68,16 @@ struct Technique {
     // techniques; `reference-soft`, the visible fraction of an area light, for soft ones.
     std::string referenceName = "reference";
     TechniqueOutput output = TechniqueOutput::Visibility;
-    // Scene preparation the technique reads (the edge adjacency, an environment's tables):
-    // the frame calls it before the technique's time starts (frame/render.h), so that what
-    // an engine builds at load time is not counted in a frame. It builds what is missing,
-    // once per prepared scene, and returns the wall time of what it built (`<what>_ms`),
-    // nothing when all was built already. Null: the technique needs none.
-    std::function<std::vector<TechniqueStat>(const PreparedScene&)> prepare = nullptr;
+    // Scene preparation the technique reads with these settings (the edge adjacency, an
+    // environment's tables): the frame calls it before the technique's time starts
+    // (frame/render.h), so that what an engine builds at load time is not counted in a
+    // frame. It builds what is missing, once per prepared scene, and returns the wall time
+    // of what it built (`<what>_ms`), nothing when all was built already. Null: none.
+    std::function<std::vector<TechniqueStat>(const PreparedScene&, const TechniqueParams&)> prepare = nullptr;
 };
 
 // Technique::prepare of the techniques that read the edge adjacency (silhouettes).
-std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared);
+std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared, const TechniqueParams& params);
 
 // A view that sees no surface has one answer, V = 0 everywhere. A technique that fits a
 // light's view to its receivers (an error with none, light_view.h) checks its settings and

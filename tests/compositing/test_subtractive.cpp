@@ -222,3 +222,17 @@ TEST_CASE("subtractive shadows: a sampled image of one pixel (1/1024 of a small 
         for (const glm::vec3& c : f.radiance) CHECK((std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b)));
     }
 }
+
+TEST_CASE("environment techniques: the scene preparation builds what the settings read, once") {
+    const auto names = [](const Frame& f) {
+        std::vector<std::string> built;
+        for (const TechniqueStat& s : f.preparation) built.push_back(s.name);
+        return built;
+    };
+    const PreparedScene cached(skyScene(32, 20));
+    CHECK(names(render(cached, "env-subtractive", {{"lights", "4"}, {"unshadowed", "radiance-cache"}})) ==
+          std::vector<std::string>{"environment_ms"});
+    CHECK(names(render(cached, "env-subtractive", {{"lights", "4"}, {"visibility", "shadow-volume"}})) ==
+          std::vector<std::string>{"edge_adjacency_ms", "local_illumination_ms"});
+    CHECK(names(render(cached, "env-subtractive", {{"lights", "4"}})).empty());   // all built already
+}
