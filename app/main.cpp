@@ -168,6 +168,7 @@ struct SweepArgs {
 
 // The sweep's report: the table on stdout and STEM.csv, .json and .svg in the directory.
 void writeSweepReport(const SweepResults& results, const std::string& outDir, PlotErrorAxis plotY) {
+    requirePlottable(results.rows, plotY);
     std::cout << formatSweepText(results);
     writeReport(std::filesystem::path(outDir) / sweepFileStem(results), formatSweepCsv(results), formatSweepJson(results),
                 formatSweepSvg(results, plotY));
@@ -181,6 +182,10 @@ void runSweepCommand(SweepArgs a) {
     a.options.simd = raster::parseSimdLevel(a.simd);
     if (!a.shard.empty()) a.options.shard = parseSweepShard(a.shard);
     const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
+    for (const Technique* t : a.options.techniques) {   // before the long part, as below
+        if (plotY == PlotErrorAxis::RmsDisplay && t->output != TechniqueOutput::Radiance)
+            throw std::invalid_argument("--plot-y rms-display: " + t->name + " is scored on V, which has no displayed luminance");
+    }
     std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
     writeSweepReport(runSweep(a.options), a.outDir, plotY);
 }
@@ -313,7 +318,9 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
 // --out and --plot-y, shared by sweep and merge-sweep, which write the same files.
 void addSweepReportOptions(CLI::App* cmd, std::string& outDir, std::string& plotY) {
     cmd->add_option("--out", outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
-    cmd->add_option("--plot-y", plotY, "plot's error axis: misclassified (%), rms or umbra (umbra errors, %)")->capture_default_str();
+    cmd->add_option("--plot-y", plotY,
+                    "plot's error axis: misclassified (%), rms, umbra (umbra errors, %) or rms-display (shaded images "
+                    "as displayed)")->capture_default_str();
 }
 
 void addSweepCommand(CLI::App& app, SweepArgs& a) {

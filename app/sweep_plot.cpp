@@ -68,7 +68,8 @@ std::vector<double> timeTicks(const Range& decades) {
 
 const char* axisTitle(PlotErrorAxis axis) {
     switch (axis) {
-        case PlotErrorAxis::Rms: return "RMS error of V";
+        case PlotErrorAxis::Rms: return "RMS error (V, or Y of a shaded image)";
+        case PlotErrorAxis::RmsDisplay: return "RMS error of the displayed luminance";
         case PlotErrorAxis::Umbra: return "umbra errors, both ways (% of pixels)";
         case PlotErrorAxis::Misclassified: break;
     }
@@ -169,13 +170,23 @@ PlotErrorAxis parsePlotErrorAxis(const std::string& name) {
     if (name == "misclassified") return PlotErrorAxis::Misclassified;
     if (name == "rms") return PlotErrorAxis::Rms;
     if (name == "umbra") return PlotErrorAxis::Umbra;
-    throw std::invalid_argument("plot axis must be misclassified, rms or umbra, got '" + name + "'");
+    if (name == "rms-display") return PlotErrorAxis::RmsDisplay;
+    throw std::invalid_argument("plot axis must be misclassified, rms, umbra or rms-display, got '" + name + "'");
+}
+
+void requirePlottable(const std::vector<SweepRow>& rows, PlotErrorAxis axis) {
+    for (const SweepRow& row : rows) {
+        if (axis == PlotErrorAxis::RmsDisplay && !row.errors.rmsDisplay)
+            throw std::invalid_argument("--plot-y rms-display: " + row.technique +
+                                        " is scored on V, which has no displayed luminance");
+    }
 }
 
 double plottedError(const SweepRow& row, PlotErrorAxis axis) {
     const ErrorFigures& e = row.errors;
     switch (axis) {
         case PlotErrorAxis::Rms: return e.rms;
+        case PlotErrorAxis::RmsDisplay: return e.rmsDisplay.value();   // requirePlottable first
         case PlotErrorAxis::Umbra: return e.percentOfPixels(e.umbraErrors());
         case PlotErrorAxis::Misclassified: break;
     }

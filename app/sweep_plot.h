@@ -14,12 +14,18 @@ namespace shadowlab {
 
 enum class PlotErrorAxis {
     Misclassified,   // misclassified pixels, % of the reference's hit pixels
-    Rms,             // RMS error of V
+    Rms,             // RMS error of V, or of the luminance Y of a shaded image
     Umbra,           // umbra errors both ways (soft shadows), % of the hit pixels
+    RmsDisplay,      // RMS error of a shaded image's displayed luminance (ErrorFigures::rmsDisplay)
 };
 
-// Throws std::invalid_argument for a name other than "misclassified", "rms" or "umbra".
+// Throws std::invalid_argument for a name other than "misclassified", "rms", "umbra" or
+// "rms-display".
 PlotErrorAxis parsePlotErrorAxis(const std::string& name);
+
+// Throws std::invalid_argument naming a row the axis has no figure for (rms-display of a
+// technique scored on V), before anything is drawn.
+void requirePlottable(const std::vector<SweepRow>& rows, PlotErrorAxis axis);
 
 double plottedError(const SweepRow& row, PlotErrorAxis axis);
 

@@ -210,6 +210,8 @@ head -c 200 "$(shard 2)" >"$scratch/cut.json"
 merge_error "a file cut short" "$scratch/cut.json: invalid JSON: " "$scratch/cut.json"
 merge_error "a scene file" "sun.json: not the JSON of a sweep: " "$scratch/tiny-sun.json"
 if [ ! -e "$scratch/refused" ]; then pass; else fail "a refused merge-sweep created $scratch/refused"; fi
+expect_error "--plot-y rms-display of techniques scored on V" "${grid[@]}" --plot-y rms-display --out "$scratch/bad-axis"
+if grep -qF "rms-display: none is scored on V" "$err" && [ ! -e "$scratch/bad-axis" ]; then pass; else fail "rms-display: $(cat "$err")"; fi
 for bad in 0/3 4/3 1/0 garbage; do
     expect_error "--shard $bad" "${grid[@]}" --shard "$bad" --out "$scratch/bad-shard"
     if grep -qF "expected I/N with 1 <= I <= N" "$err"; then pass; else fail "--shard $bad: $(cat "$err")"; fi

@@ -228,6 +228,16 @@ TEST_CASE("sweep SVG: well-formed, one point per row, the Pareto front ringed") 
     }
     CHECK(parsePlotErrorAxis("rms") == PlotErrorAxis::Rms);
     CHECK(parsePlotErrorAxis("umbra") == PlotErrorAxis::Umbra);
+    CHECK(parsePlotErrorAxis("rms-display") == PlotErrorAxis::RmsDisplay);
+    SweepRow shaded, visibility;
+    shaded.technique = "env-additive", visibility.technique = "shadow-map";
+    shaded.errors.rms = 0.5, shaded.errors.rmsDisplay = 0.25;
+    CHECK(plottedError(shaded, PlotErrorAxis::RmsDisplay) == 0.25);
+    CHECK_NOTHROW(requirePlottable({shaded}, PlotErrorAxis::RmsDisplay));
+    CHECK_THROWS_WITH_AS(requirePlottable({shaded, visibility}, PlotErrorAxis::RmsDisplay),
+                         "--plot-y rms-display: shadow-map is scored on V, which has no displayed luminance",
+                         std::invalid_argument);
+    CHECK_NOTHROW(requirePlottable({visibility}, PlotErrorAxis::Rms));
     CHECK_THROWS_AS(parsePlotErrorAxis("RMS"), std::invalid_argument);
 }
 
