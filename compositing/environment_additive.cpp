@@ -3,10 +3,7 @@
 #include "compositing/environment_lights.h"
 #include "compositing/environment_source.h"
 #include "compositing/environment_techniques.h"
-#include "compositing/light_contribution.h"
-#include "compositing/light_lobes.h"
-#include "compositing/light_visibility.h"
-#include "compositing/scene_lights.h"
+#include "compositing/light_passes.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
@@ -22,15 +19,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     const GBuffer& g = in.gbuffer;
     ShadowOutputs out;
     out.radiance.assign(g.pixelCount(), glm::vec3(0.0f));
-    uint64_t fragments = 0;
-    for (const EnvironmentLight& environmentLight : lights) {
-        const Light light = directionalLight(environmentLight);
-        const std::vector<float> V = visibility.of(light, g, in.camera());
-        timer.lap("visibility");
-        fragments += addDistantLight(g, lightMaterials(in.scene(), environmentLight, lobes), in.camera().eye, light.direction, light.intensity, V, LightPart::Lit,
-                                     out.radiance);
-        timer.lap("shading");
-    }
+    uint64_t fragments = addSampledLights(in, visibility, lights, lobes, g, in.camera(), LightPart::Lit, out.radiance, timer);
     fragments += addSceneLights(in, visibility, out.radiance);
     timer.lap("scene_lights");
     out.stats = {{"lights_count", double(lights.size())}, {"shaded_fragments", double(fragments)}};

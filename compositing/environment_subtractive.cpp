@@ -2,9 +2,9 @@
 // steps, in the paper's order:
 //   1. sample the environment into N shadow-casting lights (environment_lights.h: median
 //      cut, or the paper's structured importance sampling);
-//   2. for each light, find where it is occluded (light_visibility.h) and accumulate its
-//      contribution there into the shadow buffer S, at the sampling detail's resolution
-//      (light_contribution.h, LightPart::Occluded; sampling_detail.h);
+//   2. for each light, find where it is occluded and accumulate its contribution there
+//      into the shadow buffer S, at the sampling detail's resolution (light_passes.h,
+//      LightPart::Occluded; sampling_detail.h);
 //   3. the unshadowed direct light C by fast local illumination (unshadowed_light.h: SH
 //      irradiance and prefiltered lobes, or the radiance cache of section 3.1);
 //   4. S resampled to full size, S' (bilateral_upsample.h);
@@ -17,11 +17,8 @@
 #include "compositing/environment_lights.h"
 #include "compositing/environment_source.h"
 #include "compositing/environment_techniques.h"
-#include "compositing/light_contribution.h"
-#include "compositing/light_lobes.h"
-#include "compositing/light_visibility.h"
+#include "compositing/light_passes.h"
 #include "compositing/sampling_detail.h"
-#include "compositing/scene_lights.h"
 #include "compositing/subtractive_debug.h"
 #include "compositing/unshadowed_light.h"
 #include "shadows/camera_pass.h"
@@ -57,15 +54,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     timer.lap("sampled_gbuffer");
     LightVisibility visibility(in);
     std::vector<glm::vec3> S(sampled.pixelCount(), glm::vec3(0.0f));
-    uint64_t fragments = 0;
-    for (const EnvironmentLight& environmentLight : lights) {
-        const Light light = directionalLight(environmentLight);
-        const std::vector<float> V = visibility.of(light, sampled, camera);
-        timer.lap("visibility");
-        fragments += addDistantLight(sampled, lightMaterials(in.scene(), environmentLight, lobes), camera.eye, light.direction, light.intensity, V,
-                                     LightPart::Occluded, S);
-        timer.lap("shadow_buffer");
-    }
+    const uint64_t fragments = addSampledLights(in, visibility, lights, lobes, sampled, camera, LightPart::Occluded, S, timer);
 
     std::vector<TechniqueStat> cStats;
     const std::vector<glm::vec3> C = unshadowedLight(in, cStats);

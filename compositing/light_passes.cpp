@@ -1,0 +1,31 @@
+#include "compositing/light_passes.h"
+
+#include "compositing/environment_lights.h"
+
+namespace shadowlab {
+
+uint64_t addSampledLights(const ShadowInputs& in, LightVisibility& visibility, const std::vector<EnvironmentLight>& lights,
+                          LightLobes lobes, const GBuffer& g, const Camera& camera, LightPart part,
+                          std::vector<glm::vec3>& sum, StageTimer& timer) {
+    uint64_t shaded = 0;
+    for (const EnvironmentLight& environmentLight : lights) {
+        const Light light = directionalLight(environmentLight);
+        const std::vector<float> V = visibility.of(light, g, camera);
+        timer.lap("visibility");
+        shaded += addDistantLight(g, lightMaterials(in.scene(), environmentLight, lobes), camera.eye, light.direction,
+                                  light.intensity, V, part, sum);
+        timer.lap(part == LightPart::Lit ? "shading" : "shadow_buffer");
+    }
+    return shaded;
+}
+
+uint64_t addSceneLights(const ShadowInputs& in, LightVisibility& visibility, std::vector<glm::vec3>& radiance) {
+    uint64_t shaded = 0;
+    for (const Light& light : in.scene().lights) {
+        const std::vector<float> V = visibility.of(light, in.gbuffer, in.camera());
+        shaded += addSceneLight(in.gbuffer, in.scene().materials, in.camera().eye, light, V, LightPart::Lit, radiance);
+    }
+    return shaded;
+}
+
+}  // namespace shadowlab
