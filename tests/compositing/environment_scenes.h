@@ -15,6 +15,7 @@
 #include "shading/image_io.h"
 #include "shading/luminance.h"
 #include "tests/scratch_directory.h"
+#include "tests/shadows/maps/shadow_map_test_util.h"   // frameOf
 
 namespace shadowlab::test {
 
@@ -58,13 +59,6 @@ inline Scene skyScene(int width, int height) {
     Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/environment/sphere-sky.json");
     scene.camera.width = width, scene.camera.height = height;
     return scene;
-}
-
-inline Frame render(const PreparedScene& prepared, const std::string& technique,
-                    const std::map<std::string, std::string>& params = {}) {
-    FrameSettings settings;
-    settings.params = params;
-    return renderFrame(prepared, findTechnique(technique), settings);
 }
 
 // The mean luminance of the frame's image over its hit pixels.

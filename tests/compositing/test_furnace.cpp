@@ -1,4 +1,4 @@
-// Furnace tests (issue 11): a constant environment of radiance L over a Lambert floor of
+// Furnace tests: a constant environment of radiance L over a Lambert floor of
 // albedo a with nothing above it reflects exactly a L; under a ceiling that hides the whole
 // sky it reflects nothing. Each technique is held to that with the bound its method allows.
 #include <doctest/doctest.h>
@@ -55,22 +55,22 @@ TEST_CASE("furnace: an open floor under a constant sky reflects albedo times L")
     // Subtractive: C is SH irradiance, exact for a constant map (E = pi L), and no light is
     // occluded, so S = 0 at every sampling detail: float rounding only.
     for (const char* detail : {"1", "1/16"}) {
-        const Frame f = render(open, "env-subtractive", {{"lights", "16"}, {"sampling-detail", detail}});
+        const Frame f = frameOf(open, "env-subtractive", {{"lights", "16"}, {"sampling-detail", detail}});
         REQUIRE(hits(f) > 100);
         CHECK(worstRelativeError(f) < 1e-5);
     }
     // Additive: the lights' powers integrate the map, but a floor sees sum Phi_l max(0, n . d_l),
     // a quadrature of the cosine that converges as N grows (measured 100%, 2.5%, 0.18%).
-    const Frame n4 = render(open, "env-additive", {{"lights", "4"}, {"visibility", "exact"}});
-    const Frame n64 = render(open, "env-additive", {{"lights", "64"}, {"visibility", "exact"}});
-    const Frame n1024 = render(open, "env-additive", {{"lights", "1024"}, {"visibility", "exact"}});
+    const Frame n4 = frameOf(open, "env-additive", {{"lights", "4"}, {"visibility", "exact"}});
+    const Frame n64 = frameOf(open, "env-additive", {{"lights", "64"}, {"visibility", "exact"}});
+    const Frame n1024 = frameOf(open, "env-additive", {{"lights", "1024"}, {"visibility", "exact"}});
     CHECK(worstRelativeError(n64) < worstRelativeError(n4));
     CHECK(worstRelativeError(n1024) < worstRelativeError(n64));
     CHECK(worstRelativeError(n64) < 0.04);
     CHECK(worstRelativeError(n1024) < 0.004);
     // The exact reference: unbiased, so its image mean is a L within its noise, and its
     // stated convergence (halves_rms_percent, the RMS error it estimates) is of the size it has.
-    const Frame reference = render(open, "reference-env", {{"samples", "64"}});
+    const Frame reference = frameOf(open, "reference-env", {{"samples", "64"}});
     const double noise = stat(reference, "halves_rms_percent") / 100.0;
     MESSAGE("reference: noise " << noise << ", mean error " << meanRelativeError(reference));
     CHECK(noise > 0.0);
@@ -84,19 +84,19 @@ TEST_CASE("furnace: a floor under a ceiling that hides the whole sky reflects no
     // Every light is occluded or below the floor: 0 exactly, with every visibility method.
     for (const char* visibility : {"exact", "shadow-map", "shadow-volume"}) {
         INFO(visibility);
-        const Frame f = render(closed, "env-additive", {{"lights", "64"}, {"visibility", visibility}});
+        const Frame f = frameOf(closed, "env-additive", {{"lights", "64"}, {"visibility", visibility}});
         REQUIRE(hits(f) > 100);
         CHECK(worstRelativeLight(f) == 0.0);
     }
     // The planes are 1000 m wide: rays within atan(1 / 500) of the horizon pass their edge
     // and see the sky, a share of the cosine-weighted hemisphere under 1e-5; the
     // reference's rare hits there stay under 1e-3 of a L at any pixel.
-    const Frame reference = render(closed, "reference-env", {{"samples", "16"}});
+    const Frame reference = frameOf(closed, "reference-env", {{"samples", "16"}});
     CHECK(worstRelativeLight(reference) < 1e-3);
     // Subtractive: S, the sum of the occluded lights, is C up to the lights' quadrature
     // error; where it exceeds C the difference is clamped to 0 (and counted).
     for (const char* lights : {"16", "256"}) {
-        const Frame f = render(closed, "env-subtractive", {{"lights", lights}, {"visibility", "exact"}});
+        const Frame f = frameOf(closed, "env-subtractive", {{"lights", lights}, {"visibility", "exact"}});
         CHECK(worstRelativeLight(f) < 0.05);
         // The lights' quadrature overshoots C in some channel at every pixel here: all clamped.
         CHECK(stat(f, "clamped_pixels") == double(hits(f)));

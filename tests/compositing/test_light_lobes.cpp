@@ -40,7 +40,7 @@ TEST_CASE("region lobes: subtractive shadows clamp fewer pixels on the glossy bu
     const PreparedScene prepared(bunny);
     double clamped[2] = {0.0, 0.0};
     for (int lobes = 0; lobes < 2; ++lobes) {
-        clamped[lobes] = stat(render(prepared, "env-subtractive", {{"lights", "40"}, {"light-lobes", lobes ? "region" : "point"}}),
+        clamped[lobes] = stat(frameOf(prepared, "env-subtractive", {{"lights", "40"}, {"light-lobes", lobes ? "region" : "point"}}),
                               "clamped_pixels");
     }
     MESSAGE("clamped pixels: point " << clamped[0] << ", region " << clamped[1]);
@@ -48,7 +48,7 @@ TEST_CASE("region lobes: subtractive shadows clamp fewer pixels on the glossy bu
 
     const ScratchDirectory dir("lobes-furnace");
     const PreparedScene open(furnaceScene(writeConstantMap(dir, kFurnaceRadiance), false));
-    const Frame point = render(open, "env-additive", {{"lights", "64"}, {"visibility", "exact"}});
-    const Frame region = render(open, "env-additive", {{"lights", "64"}, {"visibility", "exact"}, {"light-lobes", "region"}});
+    const Frame point = frameOf(open, "env-additive", {{"lights", "64"}, {"visibility", "exact"}});
+    const Frame region = frameOf(open, "env-additive", {{"lights", "64"}, {"visibility", "exact"}, {"light-lobes", "region"}});
     CHECK(point.radiance == region.radiance);   // Lambert: no lobe to widen
 }
