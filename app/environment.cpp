@@ -73,8 +73,9 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
     const ShCoefficients radiance = projectRadiance(map);
     const ShCoefficients irradiance = irradianceOf(radiance, a.shWindow);
     const std::vector<EnvironmentLight> lights = medianCutLights(map, a.lights);
+    const EnvironmentPyramid pyramid = buildPyramid(map);
     std::vector<uint32_t> structuredRegions;
-    const std::vector<EnvironmentLight> structured = structuredLights(map, a.lights, &structuredRegions);
+    const std::vector<EnvironmentLight> structured = structuredLights(map, pyramid, a.lights, &structuredRegions);
     for (double n : a.phongShininess) checkLobe(GlossyLobe::NormalisedPhong, n, map);   // before any output
     for (double alpha : a.ggxRoughness) checkLobe(GlossyLobe::Ggx, alpha, map);
     const std::filesystem::path dir(a.outDir);
@@ -85,11 +86,8 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
     writeImage(dir, "sh-irradiance", map, shImage(map, irradiance, 1.0 / kPi), tone);
     writePng(dir / "lights.png", map.width, map.height, lightsImage(map, lights, medianCutRegions(map, lights), tone));
     writePng(dir / "structured-lights.png", map.width, map.height, lightsImage(map, structured, structuredRegions, tone));
-    if (!a.phongShininess.empty() || !a.ggxRoughness.empty()) {
-        const EnvironmentPyramid pyramid = buildPyramid(map);
-        writePrefiltered(dir, map, pyramid, GlossyLobe::NormalisedPhong, a.phongShininess, tone);
-        writePrefiltered(dir, map, pyramid, GlossyLobe::Ggx, a.ggxRoughness, tone);
-    }
+    writePrefiltered(dir, map, pyramid, GlossyLobe::NormalisedPhong, a.phongShininess, tone);
+    writePrefiltered(dir, map, pyramid, GlossyLobe::Ggx, a.ggxRoughness, tone);
     if (!a.ggxRoughness.empty()) writeSplitSum(dir);
     const glm::dvec3 power = environmentPower(map);
     nlohmann::ordered_json json = {{"map", map.source},

@@ -11,8 +11,7 @@ namespace {
 
 ShadowOutputs run(const ShadowInputs& in) {
     StageTimer timer;
-    const EnvironmentMap& map = sceneEnvironment(in.prepared);
-    const std::vector<EnvironmentLight> lights = sampleLights(map, in.params);
+    const std::vector<EnvironmentLight> lights = sampleLights(in.prepared, in.params);
     const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
     timer.lap("sampling");
     LightVisibility visibility(in);

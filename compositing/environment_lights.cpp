@@ -1,5 +1,6 @@
 #include "compositing/environment_lights.h"
 
+#include "compositing/environment_source.h"
 #include "shading/environment/structured_sampling.h"
 
 namespace shadowlab {
@@ -16,10 +17,12 @@ ParamSpec lightSamplerParam() {
         "how the environment is sampled into lights");
 }
 
-std::vector<EnvironmentLight> sampleLights(const EnvironmentMap& map, const TechniqueParams& params,
+std::vector<EnvironmentLight> sampleLights(const PreparedScene& prepared, const TechniqueParams& params,
                                            std::vector<uint32_t>* regionOfTexel) {
+    const EnvironmentMap& map = sceneEnvironment(prepared);
     const int count = params.integer("lights");
-    if (params.choice<LightSampler>("sampler") == LightSampler::Structured) return structuredLights(map, count, regionOfTexel);
+    if (params.choice<LightSampler>("sampler") == LightSampler::Structured)
+        return structuredLights(map, scenePyramid(prepared), count, regionOfTexel);
     std::vector<EnvironmentLight> lights = medianCutLights(map, count);
     if (regionOfTexel) *regionOfTexel = medianCutRegions(map, lights);
     return lights;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
 #include "shading/environment/median_cut.h"
 #include "shadows/technique_params.h"
@@ -21,9 +22,10 @@ enum class LightSampler { MedianCut, Structured };
 ParamSpec environmentLightsParam(int defaultCount);
 ParamSpec lightSamplerParam();
 
-// The N lights of the `lights` and `sampler` parameters. `regionOfTexel`, if given,
+// The N lights of the `lights` and `sampler` parameters from the scene's map (structured
+// sampling works on its pyramid, built once per scene). `regionOfTexel`, if given,
 // receives each map texel's light (drawing the regions, environment_debug.h).
-std::vector<EnvironmentLight> sampleLights(const EnvironmentMap& map, const TechniqueParams& params,
+std::vector<EnvironmentLight> sampleLights(const PreparedScene& prepared, const TechniqueParams& params,
                                            std::vector<uint32_t>* regionOfTexel = nullptr);
 
 // The light as the shadow techniques see it: directional, towards the region's centroid,

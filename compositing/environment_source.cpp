@@ -3,6 +3,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "compositing/environment_lights.h"
 #include "compositing/light_visibility.h"
 #include "compositing/unshadowed_light.h"
 #include "shading/environment/environment_file.h"
@@ -75,9 +76,9 @@ const LocalIllumination& sceneLocalIllumination(const PreparedScene& prepared, s
         .tables;
 }
 
-const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared) {
+const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared, std::optional<double>* builtMs) {
     const EnvironmentMap& map = sceneEnvironment(prepared);
-    return prepared.derived<ScenePyramid>([&] { return ScenePyramid{buildPyramid(map)}; }).pyramid;
+    return prepared.derived<ScenePyramid>([&] { return ScenePyramid{buildPyramid(map)}; }, builtMs).pyramid;
 }
 
 std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const TechniqueParams&) {
@@ -90,6 +91,11 @@ std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, con
 
 std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const TechniqueParams& params) {
     std::vector<TechniqueStat> stats = prepareEnvironment(prepared, params);
+    if (params.choice<LightSampler>("sampler") == LightSampler::Structured) {
+        std::optional<double> ms;
+        scenePyramid(prepared, &ms);
+        appendBuilt(stats, "environment_pyramid_ms", ms);
+    }
     if (params.choice<VisibilityMethod>("visibility") == VisibilityMethod::ShadowVolume) {
         for (TechniqueStat& s : prepareEdgeAdjacency(prepared, params)) stats.push_back(std::move(s));
     }

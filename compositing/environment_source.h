@@ -25,12 +25,14 @@ const EnvironmentMap& sceneEnvironment(const PreparedScene& prepared, std::optio
 const LocalIllumination& sceneLocalIllumination(const PreparedScene& prepared, std::optional<double>* builtMs = nullptr);
 bool tablesServe(const Material& material, const EnvironmentMap& map);
 
-// The scene map's pyramid (the radiance cache integrates over it), built once.
-const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared);
+// The scene map's pyramid (the radiance cache integrates over it, structured sampling
+// stratifies its cells), built once.
+const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared, std::optional<double>* builtMs = nullptr);
 
 // Technique::prepare of the techniques that read the map (`environment_ms`); of those that
-// light it by sampled lights (and `edge_adjacency_ms` with visibility=shadow-volume); and of
-// subtractive shadows (and `local_illumination_ms` with unshadowed=tables).
+// light it by sampled lights (and `environment_pyramid_ms` with sampler=structured,
+// `edge_adjacency_ms` with visibility=shadow-volume); and of subtractive shadows (and
+// `local_illumination_ms` with unshadowed=tables).
 std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const TechniqueParams& params);
 std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const TechniqueParams& params);
 std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const TechniqueParams& params);

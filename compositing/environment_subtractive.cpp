@@ -43,7 +43,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     std::vector<uint32_t> regions;
-    const std::vector<EnvironmentLight> lights = sampleLights(map, in.params, in.debugDir.empty() ? nullptr : &regions);
+    const std::vector<EnvironmentLight> lights = sampleLights(in.prepared, in.params, in.debugDir.empty() ? nullptr : &regions);
     const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
     timer.lap("sampling");
 

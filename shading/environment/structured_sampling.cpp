@@ -113,13 +113,13 @@ std::vector<size_t> placeSamples(const Cells& cells, const std::vector<int>& str
 
 }  // namespace
 
-std::vector<EnvironmentLight> structuredLights(const EnvironmentMap& map, int count, std::vector<uint32_t>* regionOfTexel) {
+std::vector<EnvironmentLight> structuredLights(const EnvironmentMap& map, const EnvironmentPyramid& pyramid, int count,
+                                               std::vector<uint32_t>* regionOfTexel) {
     const size_t texels = map.radiance.size();
     if (count < 1 || size_t(count) > texels) {
         throw std::invalid_argument("structured importance sampling: " + std::to_string(count) + " lights from a map of " +
                                     std::to_string(texels) + " texels; 1 to the texel count are possible");
     }
-    const EnvironmentPyramid pyramid = buildPyramid(map);
     const int level = cellLevel(pyramid, count);
     Cells cells{pyramid.levels[size_t(level)], {}};
     for (const glm::dvec3& L : cells.level.radiance) cells.luminance.push_back(luminance(L));

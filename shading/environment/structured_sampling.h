@@ -31,13 +31,15 @@
 #include <vector>
 
 #include "shading/environment/environment_map.h"
+#include "shading/environment/environment_pyramid.h"
 #include "shading/environment/median_cut.h"
 
 namespace shadowlab {
 
-// Throws std::invalid_argument unless 1 <= count <= the map's texel count. `regionOfTexel`,
-// if given, receives each map texel's light (row-major), for drawing the regions.
-std::vector<EnvironmentLight> structuredLights(const EnvironmentMap& map, int count,
+// `pyramid` is buildPyramid(map), which callers build once per map. Throws
+// std::invalid_argument unless 1 <= count <= the map's texel count. `regionOfTexel`, if
+// given, receives each map texel's light (row-major), for drawing the regions.
+std::vector<EnvironmentLight> structuredLights(const EnvironmentMap& map, const EnvironmentPyramid& pyramid, int count,
                                                std::vector<uint32_t>* regionOfTexel = nullptr);
 
 }  // namespace shadowlab

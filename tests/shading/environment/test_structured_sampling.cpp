@@ -19,7 +19,7 @@ TEST_CASE("structured sampling: N lights, regions that tile the sphere, powers t
     for (int n : {1, 2, 15, 40, 100, 1000, 4000}) {
         INFO(n);
         std::vector<uint32_t> regions;
-        const std::vector<EnvironmentLight> lights = structuredLights(map, n, &regions);
+        const std::vector<EnvironmentLight> lights = structuredLights(map, buildPyramid(map), n, &regions);
         REQUIRE(int(lights.size()) == n);
         glm::dvec3 sum(0.0);
         double solidAngle = 0.0;
@@ -40,7 +40,7 @@ TEST_CASE("structured sampling: N lights, regions that tile the sphere, powers t
 
 TEST_CASE("structured sampling: the sun is sampled first, and a bright stratum densely") {
     const EnvironmentMap sunny = sunnyMap(256, 128);
-    const glm::ivec2 sun = sunny.texelToward(structuredLights(sunny, 40)[0].direction);
+    const glm::ivec2 sun = sunny.texelToward(structuredLights(sunny, buildPyramid(sunny), 40)[0].direction);
     CHECK(sunny.at(sun.x, sun.y).r > 1000.0f);
     // A sky of 1 over a ground of 0.1: sigma = 0.45, so the sky is stratum 2 and the ground
     // stratum 0, of equal solid angle; importance Y dOmega^(1/4) gives the sky 10 parts in
@@ -49,7 +49,7 @@ TEST_CASE("structured sampling: the sun is sampled first, and a bright stratum d
     EnvironmentMap halves = constantEnvironment(128, 64, glm::vec3(0.1f));
     for (size_t k = 0; k < halves.radiance.size() / 2; ++k) halves.radiance[k] = glm::vec3(1.0f);
     int sky = 0;
-    for (const EnvironmentLight& l : structuredLights(halves, 44)) sky += l.direction.y > 0.0;
+    for (const EnvironmentLight& l : structuredLights(halves, buildPyramid(halves), 44)) sky += l.direction.y > 0.0;
     CHECK(sky == 40);
 }
 
@@ -58,18 +58,18 @@ TEST_CASE("structured sampling: the same lights for 1 and 2 threads, and counts 
     std::vector<EnvironmentLight> one, two;
     {
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        one = structuredLights(map, 100);
+        one = structuredLights(map, buildPyramid(map), 100);
     }
     {
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        two = structuredLights(map, 100);
+        two = structuredLights(map, buildPyramid(map), 100);
     }
     REQUIRE(one.size() == two.size());
     for (size_t l = 0; l < one.size(); ++l) {
         CHECK(one[l].direction == two[l].direction);
         CHECK(one[l].power == two[l].power);
     }
-    CHECK_THROWS_AS(structuredLights(map, 0), std::invalid_argument);
-    CHECK_THROWS_AS(structuredLights(map, 128 * 64 + 1), std::invalid_argument);
-    CHECK(structuredLights(map, 128 * 64).size() == size_t(128 * 64));
+    CHECK_THROWS_AS(structuredLights(map, buildPyramid(map), 0), std::invalid_argument);
+    CHECK_THROWS_AS(structuredLights(map, buildPyramid(map), 128 * 64 + 1), std::invalid_argument);
+    CHECK(structuredLights(map, buildPyramid(map), 128 * 64).size() == size_t(128 * 64));
 }
