@@ -62,7 +62,6 @@ void refuseUnservedMaterials(const ShadowInputs& in) {
 }
 
 std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats) {
-    refuseUnservedMaterials(in);
     const std::vector<Material>& materials = in.scene().materials;
     if (in.params.choice<UnshadowedMethod>("unshadowed") == UnshadowedMethod::Tables) {
         const LocalIllumination& local = sceneLocalIllumination(in.prepared);

@@ -26,8 +26,9 @@ std::vector<ParamSpec> unshadowedParams();
 // calls it before any other work.
 void refuseUnservedMaterials(const ShadowInputs& in);
 
-// C at every hit pixel of in.gbuffer, about its shading normal (refuseUnservedMaterials
-// first). Adds `radiance_caches_count` with the radiance cache.
+// C at every hit pixel of in.gbuffer, about its shading normal. Call refuseUnservedMaterials
+// first: a material the tables do not serve otherwise throws here, mid-frame
+// (unshadowedRadiance). Adds `radiance_caches_count` with the radiance cache.
 std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats);
 
 }  // namespace shadowlab
