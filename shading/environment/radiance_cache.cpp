@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
 
-#include "raster/portable_math.h"
 #include "shading/shade.h"
 
 namespace shadowlab {
@@ -21,11 +21,6 @@ struct Extent {
 
 Extent extentOf(const EnvironmentMap& map, size_t level, int i, int j) {
     return {{i << level, j << level}, {std::min((i + 1) << level, map.width), std::min((j + 1) << level, map.height)}};
-}
-
-glm::dvec3 edgeDirection(const EnvironmentMap& map, int column, int row) {
-    const double theta = map.rowEdgeTheta(row), phi = map.columnEdgePhi(column), s = portable::sin(theta);
-    return {s * portable::sin(phi), portable::cos(theta), -s * portable::cos(phi)};
 }
 
 struct Reflection {
@@ -45,7 +40,9 @@ struct Reflection {
         const Extent e = extentOf(map, level, i, j);
         double spread = 0.0;
         for (const glm::ivec2 corner : {e.first, glm::ivec2(e.last.x, e.first.y), glm::ivec2(e.first.x, e.last.y), e.last})
-            spread = std::max(spread, std::abs(luminance(weight(edgeDirection(map, corner.x, corner.y))) - wCentre));
+            spread = std::max(spread, std::abs(luminance(weight(map.direction(double(corner.x) / map.width,
+                                                                                    double(corner.y) / map.height))) -
+                                                wCentre));
         return spread * solidAngle * std::max(brightest, meanLuminance) > threshold;
     }
 
@@ -104,7 +101,7 @@ RadianceCache buildRadianceCache(const EnvironmentMap& map, const EnvironmentPyr
     RadianceCache cache;
     cache.size = size;
     cache.radiance.assign(size_t(size) * size_t(size), glm::vec3(0.0f));
-    const double meanLuminance = luminance(environmentPower(map)) / (4.0 * 3.141592653589793);
+    const double meanLuminance = luminance(environmentPower(map)) / (4.0 * std::numbers::pi);
     if (meanLuminance == 0.0) return cache;   // a black map reflects nothing
     tbb::parallel_for(0, size, [&](int j) {
         for (int i = 0; i < size; ++i) {
