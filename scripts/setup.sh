@@ -7,6 +7,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 packages=(g++ cmake make pkg-config python3
           libglm-dev libstb-dev libopenexr-dev libimath-dev libtbb-dev doctest-dev
           libbenchmark-dev libembree-dev nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
+          libmeshoptimizer-dev
           libegl-dev libgl-dev libgl1-mesa-dri
           clang-14 libclang-rt-14-dev)   # the sanitizer build (scripts/sanitize.sh)
 missing=()
