@@ -22,8 +22,12 @@ struct SimplifiedMesh {
 };
 
 SimplifiedMesh simplifyMesh(const Mesh& mesh, double ratio) {
+    // Never fewer than a tetrahedron's 4 triangles: below that a closed mesh would flatten
+    // into a two-sided triangle and then vanish, and its shadow with it.
+    const size_t targetTriangles = std::max(size_t(std::llround(ratio * double(mesh.triangles.size()))),
+                                            std::min<size_t>(mesh.triangles.size(), 4));
+    if (targetTriangles >= mesh.triangles.size()) return {mesh, 0.0};
     const size_t indexCount = 3 * mesh.triangles.size();
-    if (indexCount == 0) return {mesh, 0.0};
     const unsigned* indices = &mesh.triangles[0].x;
     const float* positions = &mesh.positions[0].x;
     const size_t vertexCount = mesh.positions.size();
@@ -32,7 +36,6 @@ SimplifiedMesh simplifyMesh(const Mesh& mesh, double ratio) {
     std::vector<unsigned> welded(indexCount);
     meshopt_generateShadowIndexBuffer(welded.data(), indices, indexCount, positions, vertexCount, sizeof(glm::vec3),
                                       sizeof(glm::vec3));
-    const size_t targetTriangles = std::max<size_t>(1, size_t(std::llround(ratio * double(mesh.triangles.size()))));
     std::vector<unsigned> kept(indexCount);   // the simplifier may write up to the input's size
     float relativeError = 0.0f;
     // No error bound: the ratio alone says where to stop.

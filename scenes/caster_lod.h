@@ -30,9 +30,11 @@ struct SimplifiedScene {
     double errorM = 0.0;
 };
 
-// The scene with every mesh simplified towards `ratio` of its triangles (at least one),
-// in (0, 1]; a mesh may keep more where locked borders or its topology stop the
-// simplifier. Its shading normals are dropped (casters are not shaded). Throws
+// The scene with every mesh simplified towards `ratio` of its triangles, in (0, 1], but
+// never below 4 (a closed mesh stays a solid, a tetrahedron at the least, and no mesh
+// vanishes); a mesh may keep more where locked borders or its topology stop the
+// simplifier, and one already at its target is kept as it is. A simplified mesh's shading
+// normals are dropped (casters are not shaded). Throws
 // std::invalid_argument for a ratio outside (0, 1].
 SimplifiedScene simplifyMeshes(const Scene& scene, double ratio);
 

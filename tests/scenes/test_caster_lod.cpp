@@ -133,6 +133,18 @@ TEST_CASE("caster LOD: a closed sphere (split at its seam) stays closed, its ver
     CHECK(std::ranges::all_of(simple.positions, [](const glm::vec3& p) { return std::abs(glm::length(p) - 1.0f) < 1e-5f; }));
 }
 
+TEST_CASE("caster LOD: no mesh falls below a tetrahedron, so no caster vanishes") {
+    for (const Mesh& mesh : {makeBox(glm::vec3(0.0f), glm::vec3(1.0f)), makeUvSphere(1.0f, 64, 32)}) {
+        INFO(mesh.source);
+        const Mesh simple = simplifyMeshes(oneMeshScene(mesh), 0.001).scene.meshes[0];
+        CHECK(simple.triangles.size() == 4);
+        CHECK(simple.positions.size() == 4);
+        CHECK(buildEdgeAdjacency(simple.positions, simple.triangles).closed);
+    }
+    const Mesh two = makeGrid({1.0f, 1.0f}, {1, 1});   // fewer than 4: kept whole
+    CHECK(simplifyMeshes(oneMeshScene(two), 0.001).scene.meshes[0].triangles == two.triangles);
+}
+
 TEST_CASE("caster LOD: the error is in world metres, scaled with the instance, and the same every run") {
     const Mesh sphere = makeUvSphere(1.0f, 32, 16);
     const SimplifiedScene unit = simplifyMeshes(oneMeshScene(sphere), 0.1);
