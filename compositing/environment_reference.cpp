@@ -86,7 +86,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     const EnvironmentDistribution environment(map);
-    const ReferenceVisibility rays(in.world());
+    const ReferenceVisibility rays(in.casterWorld());
     timer.lap("bvh");
     const GBuffer& g = in.gbuffer;
     const glm::vec3 eye = in.camera().eye;

@@ -81,7 +81,7 @@ const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared, std::optio
     return prepared.derived<ScenePyramid>([&] { return ScenePyramid{buildPyramid(map)}; }, builtMs).pyramid;
 }
 
-std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const TechniqueParams&) {
+std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const PreparedScene&, const TechniqueParams&) {
     std::optional<double> ms;
     sceneEnvironment(prepared, &ms);
     std::vector<TechniqueStat> stats;
@@ -89,21 +89,23 @@ std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, con
     return stats;
 }
 
-std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const TechniqueParams& params) {
-    std::vector<TechniqueStat> stats = prepareEnvironment(prepared, params);
+std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const PreparedScene& casters,
+                                               const TechniqueParams& params) {
+    std::vector<TechniqueStat> stats = prepareEnvironment(prepared, casters, params);
     if (params.choice<LightSampler>("sampler") == LightSampler::Structured) {
         std::optional<double> ms;
         scenePyramid(prepared, &ms);
         appendBuilt(stats, "environment_pyramid_ms", ms);
     }
     if (params.choice<VisibilityMethod>("visibility") == VisibilityMethod::ShadowVolume) {
-        for (TechniqueStat& s : prepareEdgeAdjacency(prepared, params)) stats.push_back(std::move(s));
+        for (TechniqueStat& s : prepareEdgeAdjacency(prepared, casters, params)) stats.push_back(std::move(s));
     }
     return stats;
 }
 
-std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const TechniqueParams& params) {
-    std::vector<TechniqueStat> stats = prepareSampledLights(prepared, params);
+std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const PreparedScene& casters,
+                                             const TechniqueParams& params) {
+    std::vector<TechniqueStat> stats = prepareSampledLights(prepared, casters, params);
     if (params.choice<UnshadowedMethod>("unshadowed") == UnshadowedMethod::Tables) {
         std::optional<double> ms;
         sceneLocalIllumination(prepared, &ms);

@@ -33,8 +33,11 @@ const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared, std::optio
 // light it by sampled lights (and `environment_pyramid_ms` with sampler=structured,
 // `edge_adjacency_ms` with visibility=shadow-volume); and of subtractive shadows (and
 // `local_illumination_ms` with unshadowed=tables).
-std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const TechniqueParams& params);
-std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const TechniqueParams& params);
-std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const TechniqueParams& params);
+std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const PreparedScene& casters,
+                                              const TechniqueParams& params);
+std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const PreparedScene& casters,
+                                                const TechniqueParams& params);
+std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const PreparedScene& casters,
+                                              const TechniqueParams& params);
 
 }  // namespace shadowlab

@@ -49,7 +49,7 @@ ShadowOutputs run(const ShadowInputs& in) {
 
     const int k = in.params.choice<int>("sampling-detail");
     const Camera camera = sampledCamera(in.camera(), k);
-    const GBuffer sampledGBuffer = k == 1 ? GBuffer{} : renderGBuffer(in.world(), camera, in.simd);
+    const GBuffer sampledGBuffer = k == 1 ? GBuffer{} : renderGBuffer(in.receiverWorld(), camera, in.simd);
     const GBuffer& sampled = k == 1 ? in.gbuffer : sampledGBuffer;
     timer.lap("sampled_gbuffer");
     LightVisibility visibility(in);

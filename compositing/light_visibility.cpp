@@ -47,7 +47,7 @@ LightVisibility::LightVisibility(const ShadowInputs& in)
         case VisibilityMethod::ShadowVolume: technique_ = &findTechnique("shadow-volume"); break;
         case VisibilityMethod::Exact: {
             const auto start = std::chrono::steady_clock::now();
-            exact_ = std::make_unique<Exact>(in.world());
+            exact_ = std::make_unique<Exact>(in.casterWorld());
             addStat(stats_, "visibility_bvh_ms",
                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
             break;
@@ -66,7 +66,7 @@ std::vector<float> LightVisibility::of(const Light& light, const GBuffer& g, con
         return V;
     }
     const TechniqueParams params(technique_->name, technique_->params, settings_);
-    ShadowOutputs out = technique_->run({in_.prepared, g, light, in_.simd, params, {}, nullptr, &camera});
+    ShadowOutputs out = technique_->run({in_.prepared, g, light, in_.simd, params, {}, nullptr, &camera, &in_.casters()});
     // Times and fill add up over the lights; a per-light figure (a light's near plane) does not.
     for (const TechniqueStat& s : out.stats) {
         if (endsWith(s.name, "_ms") || endsWith(s.name, "_fragments")) addStat(stats_, "visibility_" + s.name, s.value);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "scenes/camera.h"
+#include "scenes/caster_lod.h"
 #include "shading/shade.h"
 
 namespace shadowlab {
@@ -26,6 +27,16 @@ void applyLightRadius(Scene& scene, float radius) {
     if (scene.lights[0].type != LightType::Disk)
         throw std::invalid_argument("--light-radius: the scene's first light is not a disk light");
     scene.lights[0].radius = radius;
+}
+
+// The casters at the settings' level of detail; their simplification, the first time a
+// ratio is asked for, is scene preparation (caster_lod_ms), outside the technique's time.
+CasterLevel prepareCasters(const PreparedScene& prepared, const TechniqueParams& params,
+                           std::vector<TechniqueStat>& preparation) {
+    std::optional<double> ms;
+    const CasterLevel level = casterLevel(prepared, casterLodRatio(params), &ms);
+    if (ms) preparation.push_back({"caster_lod_ms", *ms});
+    return level;
 }
 
 }  // namespace
@@ -69,12 +80,19 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     Frame frame;
     frame.output = technique.output;
     frame.gbuffer = renderGBuffer(prepared.world(), scene.camera, settings.simd);
-    if (technique.prepare) frame.preparation = technique.prepare(prepared, params);
+    const CasterLevel casters = prepareCasters(prepared, params, frame.preparation);
+    if (technique.prepare) {
+        for (TechniqueStat& s : technique.prepare(prepared, casters.casters, params)) frame.preparation.push_back(std::move(s));
+    }
 
     const auto start = std::chrono::steady_clock::now();
     frame.shadow = technique.run({prepared, frame.gbuffer, light, settings.simd, params, settings.debugDir,
-                                  settings.progress});
+                                  settings.progress, nullptr, &casters.casters});
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (hasCasterLod(technique)) {
+        frame.shadow.stats.push_back({"caster_lod_triangles", double(casters.casters.world().triangles.size())});
+        frame.shadow.stats.push_back({"caster_lod_error_m", casters.errorM});
+    }
     if (technique.output == TechniqueOutput::Visibility) {
         frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
     } else {

@@ -13,9 +13,27 @@ ShadowOutputs unlitOutputs(const GBuffer& g) {
     return out;
 }
 
-std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared, const TechniqueParams&) {
-    if (const std::optional<double> ms = prepared.buildEdgeAdjacency()) return {{"edge_adjacency_ms", *ms}};
+std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene&, const PreparedScene& casters, const TechniqueParams&) {
+    if (const std::optional<double> ms = casters.buildEdgeAdjacency()) return {{"edge_adjacency_ms", *ms}};
     return {};
+}
+
+namespace {
+const char* const kCasterLod = "caster-lod";
+}
+
+Technique withCasterLod(Technique technique) {
+    technique.params.push_back(realParam(kCasterLod, 1.0, 0.001, 1.0,
+                                         "share of the casters' triangles kept (meshoptimizer; receivers stay whole)"));
+    return technique;
+}
+
+bool hasCasterLod(const Technique& technique) {
+    return std::ranges::any_of(technique.params, [](const ParamSpec& p) { return p.name == kCasterLod; });
+}
+
+double casterLodRatio(const TechniqueParams& params) {
+    return params.values().contains(kCasterLod) ? params.real(kCasterLod) : 1.0;
 }
 
 Light pointLightFor(const Light& light) {

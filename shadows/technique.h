@@ -22,7 +22,7 @@
 namespace shadowlab {
 
 struct ShadowInputs {
-    const PreparedScene& prepared;         // the scene, its world geometry and mesh data
+    const PreparedScene& prepared;         // the scene the camera sees: receivers, materials, lights
     const GBuffer& gbuffer;
     const Light& light;                    // the selected light
     raster::SimdLevel simd;
@@ -33,9 +33,17 @@ struct ShadowInputs {
     // the scene from many lights may run another technique on a smaller G-buffer of the same
     // view (subtractive shadows at a lower sampling detail), whose camera it names here.
     const Camera* gbufferCamera = nullptr;
+    // What casts the shadows; null: `prepared` itself. At a caster level of detail below 1
+    // (the frame's `caster-lod`, scenes/caster_lod.h) its simplified copy, of which only
+    // the geometry is read: what a technique draws into a light's view, extrudes or traces
+    // comes from casters(), what it shades or compares against (the G-buffer's surfaces)
+    // from receiverWorld().
+    const PreparedScene* casterScene = nullptr;
 
     const Scene& scene() const { return prepared.scene(); }
-    const WorldGeometry& world() const { return prepared.world(); }
+    const WorldGeometry& receiverWorld() const { return prepared.world(); }
+    const PreparedScene& casters() const { return casterScene ? *casterScene : prepared; }
+    const WorldGeometry& casterWorld() const { return casters().world(); }
     const Camera& camera() const { return gbufferCamera ? *gbufferCamera : prepared.scene().camera; }
 };
 
@@ -68,16 +76,29 @@ struct Technique {
     // techniques; `reference-soft`, the visible fraction of an area light, for soft ones.
     std::string referenceName = "reference";
     TechniqueOutput output = TechniqueOutput::Visibility;
-    // Scene preparation the technique reads with these settings (the edge adjacency, an
-    // environment's tables): the frame calls it before the technique's time starts
-    // (frame/render.h), so that what an engine builds at load time is not counted in a
-    // frame. It builds what is missing, once per prepared scene, and returns the wall time
-    // of what it built (`<what>_ms`), nothing when all was built already. Null: none.
-    std::function<std::vector<TechniqueStat>(const PreparedScene&, const TechniqueParams&)> prepare = nullptr;
+    // Scene preparation the technique reads with these settings (the casters' edge
+    // adjacency, an environment's tables): the frame calls it with the scene and its casters
+    // (ShadowInputs::casters) before the technique's time starts (frame/render.h), so that
+    // what an engine builds at load time is not counted in a frame. It builds what is
+    // missing, once per prepared scene, and returns the wall time of what it built
+    // (`<what>_ms`), nothing when all was built already. Null: none.
+    std::function<std::vector<TechniqueStat>(const PreparedScene& prepared, const PreparedScene& casters,
+                                             const TechniqueParams&)>
+        prepare = nullptr;
 };
 
+// Shadow level of detail by geometry (scenes/caster_lod.h): `caster-lod`, the share of
+// the casters' triangles kept, a parameter the registry gives every technique that draws
+// casters (not the references, not `unshadowed`). The frame reads it, not the technique:
+// it simplifies the casters (once per ratio) and passes them as ShadowInputs::casters.
+Technique withCasterLod(Technique technique);
+bool hasCasterLod(const Technique& technique);
+// The ratio the settings ask for; 1 for a technique without the parameter.
+double casterLodRatio(const TechniqueParams& params);
+
 // Technique::prepare of the techniques that read the edge adjacency (silhouettes).
-std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared, const TechniqueParams& params);
+std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared, const PreparedScene& casters,
+                                                const TechniqueParams& params);
 
 // A view that sees no surface has one answer, V = 0 everywhere. A technique that fits a
 // light's view to its receivers (an error with none, light_view.h) checks its settings and

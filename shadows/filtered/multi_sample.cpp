@@ -82,9 +82,9 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
             const glm::dvec2 u = jitteredSample(a, b, perAxis, rng);
             Light point = pointLightFor(in.light);
             point.position = glm::vec3(areaLightPoint(frame, u));
-            const LightView view = fitLightView(point, in.gbuffer, in.world(), fit);
+            const LightView view = fitLightView(point, in.gbuffer, in.casterWorld(), fit);
             timer.lap("light_view");
-            const DepthMap map = renderDepthMap(in.world(), view, depth, in.simd);
+            const DepthMap map = renderDepthMap(in.casterWorld(), view, depth, in.simd);
             timer.lap("depth_map");
             accumulateHardShadow(in.gbuffer, map, point, in.simd, v, lit);
             timer.lap("lookup");

@@ -68,14 +68,14 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
     fit.resolution = resolution;
     fit.simd = in.simd;
     fit.marginTexels = marginTexels;
-    LightView view = fitLightView(centre, in.gbuffer, in.world(), fit);
+    LightView view = fitLightView(centre, in.gbuffer, in.casterWorld(), fit);
     if (coverBlockerSearch) {
         // The search region (eq. 7.6 at d_o = near) is widest for the farthest receiver and
         // never wider than 0.5 w_light / near texels from it: refit with that margin, so no
         // tap of a receiver at the border falls off the map (a widened map only shrinks it).
         const glm::dvec2 reach = 0.5 * lightTexelsOf(frame, view, resolution) / view.zNear;
         fit.marginTexels += std::ceil(std::max(reach.x, reach.y));
-        view = fitLightView(centre, in.gbuffer, in.world(), fit);
+        view = fitLightView(centre, in.gbuffer, in.casterWorld(), fit);
     }
     // The fit puts the far plane just behind the farthest receiver, so the surface beyond
     // it would be clipped to "nothing" (z = 1) within a filter's reach, and the filtered
@@ -84,7 +84,7 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
     // grazing light) for a quarter of the depth resolution.
     view = withFarPlane(view, view.zFar * kFarPlaneHeadroom);
     SoftShadowMap soft;
-    soft.map = renderDepthMap(in.world(), view, {resolution, DepthLayer::First, offset}, in.simd);
+    soft.map = renderDepthMap(in.casterWorld(), view, {resolution, DepthLayer::First, offset}, in.simd);
     soft.linear = soft.map.image();
     tbb::parallel_for(size_t(0), soft.linear.size(), [&](size_t k) {
         float& z = soft.linear[k];

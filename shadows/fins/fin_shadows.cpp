@@ -56,22 +56,22 @@ LightView fitFinView(const ShadowInputs& in, const FinSettings& s) {
     fit.resolution = s.resolution;
     fit.axis = s.light.normal;
     fit.simd = in.simd;
-    return fitLightView(pointLightFor(in.light), in.gbuffer, in.world(), fit);
+    return fitLightView(pointLightFor(in.light), in.gbuffer, in.casterWorld(), fit);
 }
 
 // Step 3: each instance, with its fins, into the layer of its edges' median midpoint.
 Layering layerScene(const ShadowInputs& in, const Fins& fins, const LightPlane& light, const LightView& view,
                     int layerCount) {
-    const std::vector<InstanceRange> ranges = instanceRanges(in.scene());
+    const std::vector<InstanceRange> ranges = instanceRanges(in.casters().scene());
     std::vector<uint32_t> edgeInstance;
     for (const SilhouetteEdge& e : fins.edges) edgeInstance.push_back(instanceOfVertex(ranges, e.from));
     std::vector<double> fallback;   // instances without silhouette edges: their first vertex
-    for (const InstanceRange& r : ranges) fallback.push_back(light.distance(glm::dvec3(in.world().positions[r.firstVertex])));
+    for (const InstanceRange& r : ranges) fallback.push_back(light.distance(glm::dvec3(in.casterWorld().positions[r.firstVertex])));
     Layering l{LightLayers(fins.midpointDistance, view.zNear, view.zFar, layerCount), {}, {}};
     l.instanceLayer = instanceLayers(l.layers, fins.midpointDistance, edgeInstance, fallback);
     l.contents.resize(l.layers.count());
     for (size_t i = 0; i < ranges.size(); ++i) {
-        const auto first = in.world().triangles.begin() + ranges[i].firstTriangle;
+        const auto first = in.casterWorld().triangles.begin() + ranges[i].firstTriangle;
         std::vector<glm::uvec3>& geometry = l.contents[l.instanceLayer[i]].geometry;
         geometry.insert(geometry.end(), first, first + ranges[i].triangleCount);
     }
@@ -90,8 +90,8 @@ FinScene buildFinScene(const ShadowInputs& in, const FinSettings& s) {
     const LightView view = fitFinView(in, s);
     const double L0 = view.zFar;
     const std::vector<SilhouetteEdge> silhouette =
-        sceneSilhouette(in.scene(), in.world(), in.prepared.edgeAdjacency(), glm::dvec4(s.light.centre, 1.0));
-    Fins fins = buildFins(in.world().positions, silhouette, s.light, L0, s.style);
+        sceneSilhouette(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), glm::dvec4(s.light.centre, 1.0));
+    Fins fins = buildFins(in.casterWorld().positions, silhouette, s.light, L0, s.style);
     Layering layering = layerScene(in, fins, s.light, view, s.layers);
     return {view, L0, std::move(fins), std::move(layering)};
 }
@@ -117,7 +117,7 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
         const LayerContents& c = scene.layering.contents[layer];
         if (c.empty()) continue;
         ++drawn;
-        const DepthMap hard = renderDepthMap(in.world().positions, c.geometry, scene.view, hardSettings, in.simd);
+        const DepthMap hard = renderDepthMap(in.casterWorld().positions, c.geometry, scene.view, hardSettings, in.simd);
         timer.lap("hard_maps");
         PenumbraMap inner;
         if (s.style.innerFins) {
@@ -178,7 +178,7 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
     const FinDebug debug(in.debugDir, s.technique, scene.view);
     const int layersDrawn = drawLayers(in, scene, s, debug, buffer, timer);
     debug.writeFinCoverage(scene.fins, s.resolution, in.simd);
-    debug.writePixelLayers(in.gbuffer, in.world(), scene.layering.instanceLayer, scene.layering.layers.count());
+    debug.writePixelLayers(in.gbuffer, in.receiverWorld(), scene.layering.instanceLayer, scene.layering.layers.count());
 
     ShadowOutputs out;
     out.visibility = buffer.values();

@@ -73,7 +73,7 @@ void writeDebugBuffers(const ShadowInputs& in, const izb::LightGrid& grid, const
 ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     const std::optional<int> requested = in.params.integerOrAuto("resolution");
     const Light light = pointLightFor(in.light);
-    const double diagonal = sceneDiagonal(in.world());
+    const double diagonal = sceneDiagonal(in.receiverWorld());
     ShadowOutputs out;
     StageTimer timer;
     const izb::Receivers receivers = izb::gatherReceivers(in.gbuffer, light, diagonal, out.visibility, in.simd);
@@ -84,7 +84,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
         return out;
     }
 
-    std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.world(), in.simd);
+    std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.casterWorld(), in.simd);
     const izb::ReceiverPlaces places = izb::placeReceivers(views, receivers);
     const int resolution = requested ? *requested : izb::chooseResolution(views.size(), places, kTargetListLength);
     const izb::LightGrid grid = izb::makeLightGrid(std::move(views), resolution, diagonal);
@@ -97,7 +97,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     addListStats(grid, lists, out.stats);
     timer.lap("lists");
 
-    const izb::ProjectedOccluders occluders = izb::projectOccluders(grid, in.world());
+    const izb::ProjectedOccluders occluders = izb::projectOccluders(grid, in.casterWorld());
     const izb::TileBins bins = izb::binOccluders(grid, lists, occluders);
     out.stats.push_back({"tile_triangle_pairs_count", double(bins.triangles.entry.size())});
     timer.lap("binning");

@@ -52,7 +52,7 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     StageTimer timer;
-    const CascadedMaps cm = renderCascades(in.light, in.camera(), in.gbuffer, in.world(), cs, depthMapSettings(s), in.simd);
+    const CascadedMaps cm = renderCascades(in.light, in.camera(), in.gbuffer, in.casterWorld(), cs, depthMapSettings(s), in.simd);
     timer.lap("cascades");
     ShadowLookup lookup = lookUpShadows(in.gbuffer, in.camera(), in.light, cm.maps,
                                         CascadeSelector{cm, in.camera()}, s.bias, makePcfKernel(s.filter), in.simd,

@@ -47,9 +47,9 @@ LightMaps cubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSe
     out.maps.resize(6);
     for (int face = 0; face < 6; ++face) {
         LightView view;
-        const bool used = fitCubeFace(light, face, in.gbuffer, in.world(), o, view);
+        const bool used = fitCubeFace(light, face, in.gbuffer, in.casterWorld(), o, view);
         timer.lap("light_view");
-        if (used) out.maps[face] = renderDepthMap(in.world(), view, depthMapSettings(s), in.simd);
+        if (used) out.maps[face] = renderDepthMap(in.casterWorld(), view, depthMapSettings(s), in.simd);
         timer.lap("depth_map");
     }
     return out;
@@ -65,7 +65,7 @@ LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapS
     if (forceCube) return cubeMaps(in, light, s, options, timer);
     LightView view;
     try {
-        view = fitLightView(light, in.gbuffer, in.world(), options);
+        view = fitLightView(light, in.gbuffer, in.casterWorld(), options);
     } catch (const std::invalid_argument&) {
         if (light.type != LightType::Point) throw;
         return cubeMaps(in, light, s, options, timer);   // receivers all around the light
@@ -76,7 +76,7 @@ LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapS
         view = warped.view, out.nOpt = warped.nOpt;
     }
     timer.lap("light_view");
-    out.maps.push_back(renderDepthMap(in.world(), view, depthMapSettings(s), in.simd));
+    out.maps.push_back(renderDepthMap(in.casterWorld(), view, depthMapSettings(s), in.simd));
     timer.lap("depth_map");
     return out;
 }
@@ -129,7 +129,7 @@ void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSett
                 DepthMapSettings one = depthMapSettings(s);
                 one.layer = layer;
                 writeDepthMap(debug, (layer == DepthLayer::First ? "depth-first" : "depth-second") + suffix,
-                              renderDepthMap(in.world(), lm.maps[k].view, one, in.simd));
+                              renderDepthMap(in.casterWorld(), lm.maps[k].view, one, in.simd));
             }
         }
     }

@@ -58,29 +58,28 @@ bool onPlane(const glm::dvec4& plane, const glm::vec3& p) {
     return std::abs(distance) <= kOnPlaneTolerance * std::max(1.0, double(glm::length(p)));
 }
 
-struct PlanarSplit {
-    std::vector<glm::uvec3> receivers, casters;
-};
+enum class PlanarRole { Receiver, Caster };
 
 // Instances entirely in the plane receive; the others cast, less their triangles that
-// reach the light's distance from the plane.
-PlanarSplit splitScene(const Scene& scene, const WorldGeometry& world, const glm::dvec4& plane,
-                       const glm::dvec4& light) {
+// reach the light's distance from the plane. The receivers come from the scene the camera
+// sees and the casters from the casters' (ShadowInputs::casters), so each is split alone.
+std::vector<glm::uvec3> trianglesOf(PlanarRole role, const Scene& scene, const WorldGeometry& world,
+                                    const glm::dvec4& plane, const glm::dvec4& light) {
     const double lightHeight = glm::dot(plane, light);   // for w = 0: > 0 means above, never reached
-    PlanarSplit split;
+    auto belowLight = [&](uint32_t v) {
+        return light.w == 0.0 || glm::dot(plane, glm::dvec4(glm::dvec3(world.positions[v]), 1.0)) < lightHeight;
+    };
+    std::vector<glm::uvec3> out;
     for (const InstanceRange& r : instanceRanges(scene)) {
         const auto triangles = std::span(world.triangles).subspan(r.firstTriangle, r.triangleCount);
         const auto vertices = std::span(world.positions).subspan(r.firstVertex, scene.meshes[r.mesh].positions.size());
         const bool receiver = std::all_of(vertices.begin(), vertices.end(), [&](const glm::vec3& p) { return onPlane(plane, p); });
+        if (receiver != (role == PlanarRole::Receiver)) continue;
         for (const glm::uvec3& t : triangles) {
-            auto belowLight = [&](uint32_t v) {
-                return light.w == 0.0 || glm::dot(plane, glm::dvec4(glm::dvec3(world.positions[v]), 1.0)) < lightHeight;
-            };
-            if (receiver) split.receivers.push_back(t);
-            else if (belowLight(t.x) && belowLight(t.y) && belowLight(t.z)) split.casters.push_back(t);
+            if (receiver || (belowLight(t.x) && belowLight(t.y) && belowLight(t.z))) out.push_back(t);
         }
     }
-    return split;
+    return out;
 }
 
 void draw(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::PipelineState& state,
@@ -124,7 +123,9 @@ ShadowOutputs run(const ShadowInputs& in) {
     const float opacity = float(in.params.real("opacity"));
     const glm::dvec4 light = homogeneousLight(pointLightFor(in.light));
     StageTimer timer;
-    const PlanarSplit split = splitScene(in.scene(), in.world(), plane, light);
+    const std::vector<glm::uvec3> receivers = trianglesOf(PlanarRole::Receiver, in.scene(), in.receiverWorld(), plane, light);
+    const std::vector<glm::uvec3> casters =
+        trianglesOf(PlanarRole::Caster, in.casters().scene(), in.casterWorld(), plane, light);
     timer.lap("split");
 
     const glm::dmat4 cameraFromWorld = clipFromWorldD(camera);
@@ -133,9 +134,9 @@ ShadowOutputs run(const ShadowInputs& in) {
     raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = true});
     fb.clearDepth(1.0f), fb.clearStencil(kNoReceiver), fb.clearColor(glm::vec4(1.0f));
     raster::Rasterizer rasterizer(in.simd);
-    draw(rasterizer, fb, prepassState(), in.world(), in.world().triangles, clipFromWorld);
-    draw(rasterizer, fb, receiverState(), in.world(), split.receivers, clipFromWorld);
-    draw(rasterizer, fb, shadowState(), in.world(), split.casters, clipFromShadow, glm::vec4(0.0f, 0.0f, 0.0f, opacity));
+    draw(rasterizer, fb, prepassState(), in.receiverWorld(), in.receiverWorld().triangles, clipFromWorld);
+    draw(rasterizer, fb, receiverState(), in.receiverWorld(), receivers, clipFromWorld);
+    draw(rasterizer, fb, shadowState(), in.casterWorld(), casters, clipFromShadow, glm::vec4(0.0f, 0.0f, 0.0f, opacity));
     timer.lap("stencil");
 
     const std::vector<uint8_t> stencil = fb.stencilImage();
@@ -161,8 +162,8 @@ ShadowOutputs run(const ShadowInputs& in) {
         [](Counts a, Counts b) { return Counts{a.first + b.first, a.second + b.second}; });
     const double receiverPixels = double(counts.first), shadowed = double(counts.second);
     out.stats = {
-        {"receiver_triangles", double(split.receivers.size())},
-        {"caster_triangles", double(split.casters.size())},
+        {"receiver_triangles", double(receivers.size())},
+        {"caster_triangles", double(casters.size())},
         {"receiver_pixels", receiverPixels},
         {"shadowed_receiver_pixels", shadowed},
     };

@@ -16,7 +16,7 @@ ShadowOutputs unshadowed(const ShadowInputs& in) {
 // V of `light` by Embree rays, the scene's BVH built in this frame: both stages timed.
 ShadowOutputs referenceVisibility(const ShadowInputs& in, const Light& light, ReferenceOptions options) {
     StageTimer timer;
-    const ReferenceVisibility reference(in.world());
+    const ReferenceVisibility reference(in.casterWorld());
     timer.lap("bvh");
     options.progress = in.progress;
     ShadowOutputs out;

@@ -80,7 +80,7 @@ struct CountingChoice {
 
 // Step 2, taken first: step 1 builds the caps for z-fail only.
 CountingChoice chooseCounting(const ShadowInputs& in, const glm::dvec4& light) {
-    const bool nearPlaneShadowed = nearPlaneMayBeShadowed(in.camera(), light, instanceBounds(in.scene(), in.world()));
+    const bool nearPlaneShadowed = nearPlaneMayBeShadowed(in.camera(), light, instanceBounds(in.casters().scene(), in.casterWorld()));
     switch (in.params.choice<Mode>("mode")) {
         case Mode::ZPass: return {Counting::ZPass, nearPlaneShadowed};
         case Mode::ZFail: return {Counting::ZFail, nearPlaneShadowed};
@@ -143,7 +143,7 @@ raster::DrawCall volumeDraw(const ShadowVolume& volume, Counting counting, const
 raster::RasterStats countCrossings(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
                                    const glm::mat4& clipFromWorld, const raster::DrawCall& volume, Counting counting) {
     fb.clearDepth(1.0f), fb.clearStencil(0);
-    depthPrepass(rasterizer, fb, in.world(), clipFromWorld);
+    depthPrepass(rasterizer, fb, in.receiverWorld(), clipFromWorld);
     rasterizer.resetStats();
     rasterizer.draw(fb, stencilPassState(counting, float(in.params.real("offset"))), volume);
     return rasterizer.stats();
@@ -182,8 +182,8 @@ ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light,
 void addVolumeStats(const ShadowInputs& in, const CountingChoice& choice, const ShadowVolume& volume,
                     const raster::RasterStats& fill, ShadowOutputs& out) {
     uint32_t openMeshes = 0, openEdges = 0, nonManifoldEdges = 0;
-    for (const MeshInstance& instance : in.scene().instances) {
-        const EdgeAdjacency& a = in.prepared.edgeAdjacency()[instance.mesh];
+    for (const MeshInstance& instance : in.casters().scene().instances) {
+        const EdgeAdjacency& a = in.casters().edgeAdjacency()[instance.mesh];
         openMeshes += !a.closed, openEdges += a.openEdges, nonManifoldEdges += a.nonManifoldEdges;
     }
     const double fragments = double(fill.fragments);
@@ -207,7 +207,7 @@ void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowO
                 const std::vector<float>& fill) {
     const Camera& camera = in.camera();
     debug.write("stencil", camera.width, camera.height, out.stencil, -4.0f, 4.0f);
-    debug.write("silhouette", camera.width, camera.height, silhouetteImage(camera, in.world().positions, volume.silhouette),
+    debug.write("silhouette", camera.width, camera.height, silhouetteImage(camera, in.casterWorld().positions, volume.silhouette),
                 0.0f, 1.0f);
     debug.write("fill", camera.width, camera.height, fill, 0.0f, 8.0f);
 }
@@ -218,7 +218,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     const glm::dvec4 lightH = homogeneousLight(light);
     StageTimer timer;
     const CountingChoice choice = chooseCounting(in, lightH);
-    const ShadowVolume volume = extrudeShadowVolume(in.scene(), in.world(), in.prepared.edgeAdjacency(), lightH,
+    const ShadowVolume volume = extrudeShadowVolume(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), lightH,
                                                     choice.counting == Counting::ZFail);
     timer.lap("extrusion");
 

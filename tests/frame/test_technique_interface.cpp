@@ -12,48 +12,25 @@
 #include "frame/render.h"
 #include "frame/score.h"
 #include "scenes/scene_file.h"
+#include "tests/frame/technique_scenes.h"
 
 using namespace shadowlab;
 
-namespace {
-
-Scene smallScene(const std::string& nameOrPath) {
-    Scene scene = loadScene(nameOrPath);
-    scene.camera.width = 96, scene.camera.height = 60;
-    return scene;
-}
-
-std::string sunScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/hard/sun.json"; }
-
-// The techniques that need a directional light run on the sun case, the environment
-// techniques on a sphere under a sky map, the others on sphere-box (a disk light, which the
-// soft techniques need).
-bool needsDirectionalLight(const Technique& t) { return t.name == "csm"; }
-std::string skyScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/environment/sphere-sky.json"; }
-
-// Settings that keep each technique's frame small: few samples and lights.
-std::map<std::string, std::string> quickSettings(const Technique& t) {
-    if (t.name == "reference-soft") return {{"samples-per-axis", "2"}};
-    if (t.name == "shadow-map") return {{"warp", "lispsm"}};
-    if (t.name == "reference-env") return {{"samples", "2"}};
-    if (t.output == TechniqueOutput::Radiance) return {{"lights", "4"}};
-    return {};
-}
-
-}  // namespace
+using test::needsDirectionalLight;
+using test::quickSettings;
+using test::smallScene;
+using test::skyScene;
+using test::sunScene;
 
 TEST_CASE("every technique's stat names are snake_case and end in a unit (docs/architecture.md)") {
     const std::regex rule("[a-z][a-z0-9]*(_[a-z0-9]+)*_(ms|m|texels|pixels|triangles|edges|fragments|fragments_per_pixel|"
                           "texels_per_pixel|receivers|percent|count|flag|ratio|radiance)");
-    const PreparedScene disk(smallScene("sphere-box")), sun(smallScene(sunScene())), sky(smallScene(skyScene()));
+    const test::TechniqueScenes scenes;
     std::set<std::string> seen;
     for (const Technique& t : techniques()) {
         FrameSettings settings;
         settings.params = quickSettings(t);
-        const PreparedScene& scene = t.output == TechniqueOutput::Radiance                       ? sky
-                                     : needsDirectionalLight(t) || t.name == "shadow-map" ? sun
-                                                                                          : disk;
-        const Frame frame = renderFrame(scene, t, settings);
+        const Frame frame = renderFrame(scenes.sceneFor(t), t, settings);
         int stageLaps = 0;
         for (const TechniqueStat& s : frame.shadow.stats) {
             INFO(t.name << ": " << s.name);
