@@ -95,7 +95,7 @@ void requireKnownCommand(const CLI::App& app, int argc, char** argv) {
 }
 
 struct RenderArgs {
-    std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json, reference;
+    std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json, reference, casterLod;
     std::vector<std::string> params;
     int threads = 0;
     float exposure = 0.0f;
@@ -132,6 +132,7 @@ void runRender(const RenderArgs& a) {
     Progress progress(std::cerr);
     FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir, progressIfWanted(progress, a.progress)};
     for (const std::string& p : a.params) parseParamAssignment(p, settings.params);
+    if (!a.casterLod.empty()) settings.params["caster-lod"] = a.casterLod;
     const Frame frame = renderFrame(prepared, technique, settings);
     const Scene& scene = prepared.scene();
     std::printf("%s: %s in %.2f ms\n", scene.name.c_str(), technique.name.c_str(), frame.techniqueMs);
@@ -162,7 +163,7 @@ void writeReport(const std::filesystem::path& stem, const std::string& csv, cons
 struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
-    std::string simd = "auto", outDir = "out", plotY = "misclassified", shard;
+    std::string simd = "auto", outDir = "out", plotY = "misclassified", shard, casterLod;
     bool progress = false;
 };
 
@@ -179,6 +180,7 @@ void runSweepCommand(SweepArgs a) {
     a.options.progress = progressIfWanted(progress, a.progress);
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
+    if (!a.casterLod.empty()) a.options.axes.push_back(parseSweepAxis("caster-lod=" + a.casterLod));
     a.options.simd = raster::parseSimdLevel(a.simd);
     if (!a.shard.empty()) a.options.shard = parseSweepShard(a.shard);
     const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
@@ -305,6 +307,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     r->add_option("--fovy", a.overrides.fovyDeg, "vertical field of view in degrees");
     addLightOptions(r, a.overrides);
     r->add_option("--param", a.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
+    r->add_option("--caster-lod", a.casterLod, "share of the casters' triangles kept, in (0, 1]: --param caster-lod=R");
     r->add_option("--debug-buffers", a.debugDir, "directory for the technique's intermediate buffers");
     r->add_option("--exposure", a.exposure, "exposure in stops for the PNG")->capture_default_str();
     CLI::Option* errorMap = r->add_option("--error-map", a.errorMap,
@@ -328,6 +331,7 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("scene", a.options.scene, "built-in scene name or scene file (.json)")->required();
     s->add_option("--technique", a.techniques, "techniques to compare, comma-separated")->delimiter(',')->required();
     s->add_option("--param", a.params, "one axis: name=v1,v2,... (repeatable; the cross product is run)");
+    s->add_option("--caster-lod", a.casterLod, "caster levels of detail, comma-separated: the axis --param caster-lod=R1,R2,...");
     s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(s, "frames per row", a.options.runs, a.options.warmupRuns, a.simd);
     addSweepReportOptions(s, a.outDir, a.plotY);

@@ -67,7 +67,10 @@ std::vector<SweepPlan> planSweep(const SweepOptions& options) {
         SweepPlan& plan = plans.emplace_back(SweepPlan{technique, {}});
         for (Settings& params : crossProduct(axes)) plan.settings.push_back({index++, std::move(params)});
     }
-    for (const SweepAxis& axis : options.axes) {
+    for (size_t i = 0; i < options.axes.size(); ++i) {
+        const SweepAxis& axis = options.axes[i];
+        if (std::ranges::any_of(options.axes.begin(), options.axes.begin() + i, [&](const SweepAxis& a) { return a.name == axis.name; }))
+            throw std::invalid_argument("--param " + axis.name + ": given twice; list every value in one axis");
         if (std::ranges::none_of(plans, [&](const SweepPlan& p) { return hasParam(*p.technique, axis.name); }))
             throw std::invalid_argument("--param " + axis.name + ": none of the techniques has this parameter (see `shadowlab techniques`)");
     }
