@@ -100,6 +100,11 @@ expect_error "unknown scene" render no-such-scene "${tiny[@]}" -o "$scratch/x.pn
 expect_error "unknown technique" render sphere-box --technique no-such-technique "${tiny[@]}" -o "$scratch/x.png"
 expect_error "bad --param value" render sphere-box --technique shadow-map --param resolution=abc "${tiny[@]}" -o "$scratch/x.png"
 expect_error "unknown --param name" render sphere-box --technique shadow-map --param no-such=1 "${tiny[@]}" -o "$scratch/x.png"
+expect_error "--caster-lod out of range" render sphere-box --technique shadow-map --caster-lod 0 "${tiny[@]}" -o "$scratch/x.png"
+if grep -q "caster-lod" "$err"; then pass; else fail "the caster LOD's error does not name it: $(cat "$err")"; fi
+expect_error "--caster-lod of a reference" render sphere-box --technique reference --caster-lod 0.5 "${tiny[@]}" -o "$scratch/x.png"
+expect_error "--caster-lod given twice in a sweep" sweep sphere-box --technique shadow-map --caster-lod 1,0.5 \
+    --param caster-lod=0.25 --out "$scratch/sw"
 expect_error "malformed scene JSON" render "$scratch/broken.json" "${tiny[@]}" -o "$scratch/x.png"
 expect_error "bad --simd" render sphere-box --simd bogus "${tiny[@]}" -o "$scratch/x.png"
 expect_error "render without output" render sphere-box "${tiny[@]}"
