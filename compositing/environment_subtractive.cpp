@@ -27,6 +27,13 @@
 namespace shadowlab {
 namespace {
 
+// The receivers at a lower sampling detail, lifted as the frame lifted the whole G-buffer
+// against simplified casters (ShadowInputs::receiverLiftM).
+GBuffer sampledReceivers(const ShadowInputs& in, const Camera& camera) {
+    GBuffer g = renderGBuffer(in.receiverWorld(), camera, in.simd);
+    return in.receiverLiftM.empty() ? g : liftedReceivers(std::move(g), in.receiverWorld(), in.receiverLiftM);
+}
+
 // Step 5: max(0, C - S'); returns the pixels where a channel was clamped.
 uint64_t subtract(const std::vector<glm::vec3>& C, const std::vector<glm::vec3>& shadow, std::vector<glm::vec3>& out) {
     uint64_t clamped = 0;
@@ -49,7 +56,7 @@ ShadowOutputs run(const ShadowInputs& in) {
 
     const int k = in.params.choice<int>("sampling-detail");
     const Camera camera = sampledCamera(in.camera(), k);
-    const GBuffer sampledGBuffer = k == 1 ? GBuffer{} : renderGBuffer(in.receiverWorld(), camera, in.simd);
+    const GBuffer sampledGBuffer = k == 1 ? GBuffer{} : sampledReceivers(in, camera);
     const GBuffer& sampled = k == 1 ? in.gbuffer : sampledGBuffer;
     timer.lap("sampled_gbuffer");
     LightVisibility visibility(in);

@@ -85,9 +85,13 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
         for (TechniqueStat& s : technique.prepare(prepared, casters.casters, params)) frame.preparation.push_back(std::move(s));
     }
 
+    // Against simplified casters the technique sees each receiver lifted by its instance's
+    // simplification error (liftedReceivers); the frame keeps and shades the G-buffer.
+    const bool lift = !casters.instanceErrorM.empty();
+    const GBuffer liftedGBuffer = lift ? liftedReceivers(frame.gbuffer, prepared.world(), casters.instanceErrorM) : GBuffer{};
     const auto start = std::chrono::steady_clock::now();
-    frame.shadow = technique.run({prepared, frame.gbuffer, light, settings.simd, params, settings.debugDir,
-                                  settings.progress, nullptr, &casters.casters});
+    frame.shadow = technique.run({prepared, lift ? liftedGBuffer : frame.gbuffer, light, settings.simd, params,
+                                  settings.debugDir, settings.progress, nullptr, &casters.casters, casters.instanceErrorM});
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (hasCasterLod(technique)) {
         frame.shadow.stats.push_back({"caster_lod_triangles", double(casters.casters.world().triangles.size())});

@@ -64,8 +64,10 @@ double largestScale(const MeshInstance& instance) {
 
 struct CasterLevels {
     struct Level {
-        explicit Level(SimplifiedScene s) : casters(std::move(s.scene)), errorM(s.errorM) {}
+        explicit Level(SimplifiedScene s)
+            : casters(std::move(s.scene)), instanceErrorM(std::move(s.instanceErrorM)), errorM(s.errorM) {}
         PreparedScene casters;
+        std::vector<float> instanceErrorM;
         double errorM;
     };
     struct Levels {
@@ -85,22 +87,25 @@ void requireRatio(double ratio) {
 
 SimplifiedScene simplifyMeshes(const Scene& scene, double ratio) {
     requireRatio(ratio);
-    SimplifiedScene out{scene, 0.0};
+    SimplifiedScene out{scene, {}, 0.0};
     std::vector<double> meshError(scene.meshes.size(), 0.0);
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         SimplifiedMesh s = simplifyMesh(scene.meshes[m], ratio);
         out.scene.meshes[m] = std::move(s.mesh);
         meshError[m] = s.errorObjectUnits;
     }
-    for (const MeshInstance& instance : scene.instances)
-        out.errorM = std::max(out.errorM, meshError[instance.mesh] * largestScale(instance));
+    for (const MeshInstance& instance : scene.instances) {
+        const double error = meshError[instance.mesh] * largestScale(instance);
+        out.instanceErrorM.push_back(float(error));
+        out.errorM = std::max(out.errorM, error);
+    }
     return out;
 }
 
 CasterLevel casterLevel(const PreparedScene& prepared, double ratio, std::optional<double>* builtMs) {
     requireRatio(ratio);
     if (builtMs) builtMs->reset();
-    if (ratio == 1.0) return {prepared, 0.0};
+    if (ratio == 1.0) return {prepared, {}, 0.0};
     CasterLevels::Levels& levels = *prepared.derived<CasterLevels>([] { return CasterLevels{}; }).levels;
     const std::lock_guard lock(levels.building);
     std::unique_ptr<const CasterLevels::Level>& level = levels.byRatio[ratio];
@@ -109,7 +114,7 @@ CasterLevel casterLevel(const PreparedScene& prepared, double ratio, std::option
         level = std::make_unique<const CasterLevels::Level>(simplifyMeshes(prepared.scene(), ratio));
         if (builtMs) *builtMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
-    return {level->casters, level->errorM};
+    return {level->casters, level->instanceErrorM, level->errorM};
 }
 
 }  // namespace shadowlab

@@ -15,6 +15,8 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
@@ -24,10 +26,11 @@ namespace shadowlab {
 // The simplified copy of a scene, and what the simplification did.
 struct SimplifiedScene {
     Scene scene;
-    // The simplifier's own estimate of its largest deviation, over the instances, in world
-    // metres: meshoptimizer's relative error times the mesh's extent times the instance's
-    // largest scale. 0 when nothing was simplified.
-    double errorM = 0.0;
+    // The simplifier's own estimate of each instance's largest deviation, in world metres:
+    // meshoptimizer's relative error times the mesh's extent times the instance's largest
+    // scale; 0 for an instance whose mesh was not simplified (or lost no shape, a flat grid).
+    std::vector<float> instanceErrorM;
+    double errorM = 0.0;   // the largest of them
 };
 
 // The scene with every mesh simplified towards `ratio` of its triangles, in (0, 1], but
@@ -46,7 +49,8 @@ SimplifiedScene simplifyMeshes(const Scene& scene, double ratio);
 // the one call that made it, nothing otherwise. Thread-safe.
 struct CasterLevel {
     const PreparedScene& casters;
-    double errorM;                 // SimplifiedScene::errorM
+    std::span<const float> instanceErrorM;   // SimplifiedScene::instanceErrorM; empty at ratio 1
+    double errorM;                           // SimplifiedScene::errorM
 };
 CasterLevel casterLevel(const PreparedScene& prepared, double ratio, std::optional<double>* builtMs = nullptr);
 

@@ -17,4 +17,11 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
     return buildGBuffer(world, camera, fb.primitiveIdImage(), fb.depthImage());
 }
 
+GBuffer liftedReceivers(GBuffer g, const WorldGeometry& world, std::span<const float> liftM) {
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (g.hit[k]) g.position[k] += g.normal[k] * liftM[world.triangleInstance[g.triangle[k]]];
+    }
+    return g;
+}
+
 }  // namespace shadowlab

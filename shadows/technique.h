@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,11 @@ struct ShadowInputs {
     // comes from casters(), what it shades or compares against (the G-buffer's surfaces)
     // from receiverWorld().
     const PreparedScene* casterScene = nullptr;
+    // How far each instance's surfaces in the G-buffer were lifted along their normals
+    // against the casters' simplification (camera_pass.h, liftedReceivers()), m, indexed
+    // like Scene::instances; empty with whole casters. A technique that renders a G-buffer
+    // of its own lifts it alike.
+    std::span<const float> receiverLiftM = {};
 
     const Scene& scene() const { return prepared.scene(); }
     const WorldGeometry& receiverWorld() const { return prepared.world(); }

@@ -82,6 +82,8 @@ TEST_CASE("caster LOD: the simplification is scene preparation, once per ratio a
 // inside the whole one: its depth from the light is never nearer than the surface's, and
 // its volume starts behind it. A technique that compared receivers against the coarse
 // caster's own depth (the receivers simplified too) would shadow the lit side in patches.
+// The terminator's band, where the receivers' lift (liftedReceivers) may turn a point away
+// from the light, is left out: cos < 0.1 there.
 TEST_CASE("caster LOD: a convex caster simplified inside itself leaves its own lit side lit") {
     const PreparedScene prepared(test::smallScene("sphere-box", 320, 200));
     const uint32_t sphere = 1;   // sphere-box's instances: ground, sphere, box
@@ -94,6 +96,7 @@ TEST_CASE("caster LOD: a convex caster simplified inside itself leaves its own l
         size_t litOnSphere = 0, stillLit = 0;
         for (size_t k = 0; k < g.pixelCount(); ++k) {
             if (!g.hit[k] || prepared.world().triangleInstance[g.triangle[k]] != sphere || scored(whole)[k] != 1.0f) continue;
+            if (glm::dot(g.normal[k], glm::normalize(prepared.scene().lights[0].position - g.position[k])) < 0.1f) continue;
             ++litOnSphere;
             stillLit += scored(coarse)[k] == 1.0f;
         }
@@ -102,20 +105,58 @@ TEST_CASE("caster LOD: a convex caster simplified inside itself leaves its own l
     }
 }
 
-TEST_CASE("caster LOD: the bunny's shadow error grows as its triangles drop, and stays within bounds") {
-    Scene scene = test::smallScene("bunny", 320, 200);
-    const PreparedScene prepared(std::move(scene));
-    const ImageChannels reference = renderReferenceImage(prepared, raster::bestSimdLevel(), "reference");
-    const Technique& t = findTechnique("shadow-volume");
-    double previous = -1.0;
-    for (const char* lod : {"1", "0.1", "0.01"}) {
-        INFO(lod);
-        const Frame frame = frameAt(prepared, t, lod, false);
-        const ErrorFigures e = scoreFrame(reference, frame);
-        const double misclassified = 100.0 * double(e.misclassified()) / double(e.pixels);
-        CHECK(misclassified >= previous);
-        CHECK(misclassified < 0.5);   // % of hit pixels: the outline moves, the shadow stays
-        previous = misclassified;
+TEST_CASE("caster LOD: a technique sees each receiver lifted by its own instance's simplification error") {
+    const PreparedScene prepared(test::smallScene("sphere-box", 160, 100));
+    std::vector<glm::vec3> seen;
+    std::vector<float> lift;
+    Technique probe{"probe", "records the G-buffer it is given", {},
+                    [&](const ShadowInputs& in) {
+                        seen = in.gbuffer.position;
+                        lift.assign(in.receiverLiftM.begin(), in.receiverLiftM.end());
+                        return unlitOutputs(in.gbuffer);
+                    }};
+    probe = withCasterLod(probe);
+    FrameSettings settings;
+    const Frame whole = renderFrame(prepared, probe, settings);
+    CHECK(seen == whole.gbuffer.position);
+    CHECK(lift.empty());
+    settings.params["caster-lod"] = "0.05";
+    const Frame coarse = renderFrame(prepared, probe, settings);
+    CHECK(coarse.gbuffer.position == whole.gbuffer.position);   // the frame keeps the G-buffer
+    REQUIRE(lift.size() == 3);   // ground, sphere, box
+    CHECK(lift[0] == 0.0f);      // a flat grid loses no shape
+    CHECK(lift[1] > 0.0f);
+    CHECK(lift[1] < 0.05f);      // a few centimetres at most on a 1 m sphere
+    CHECK(*std::ranges::max_element(lift) == float(stat(coarse.shadow.stats, "caster_lod_error_m")));
+    const GBuffer& g = whole.gbuffer;
+    size_t sphere = 0;
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (!g.hit[k]) continue;
+        const uint32_t instance = prepared.world().triangleInstance[g.triangle[k]];
+        CHECK(seen[k] == g.position[k] + g.normal[k] * lift[instance]);
+        sphere += instance == 1;
     }
-    CHECK(previous > 0.02);   // at 1% of the triangles the outline has moved visibly
+    CHECK(sphere > 500);
+}
+
+TEST_CASE("caster LOD: the bunny's shadow error grows as its triangles drop, with no acne from its own coarse copy") {
+    const PreparedScene prepared(test::smallScene("bunny", 320, 200));
+    const ImageChannels reference = renderReferenceImage(prepared, raster::bestSimdLevel(), "reference");
+    for (const char* name : {"shadow-volume", "izb"}) {
+        const Technique& t = findTechnique(name);
+        double previous = -1.0;
+        for (const char* lod : {"1", "0.25", "0.05", "0.01"}) {
+            INFO(name << " at " << lod);
+            const ErrorFigures e = scoreFrame(reference, frameAt(prepared, t, lod, false));
+            const double misclassified = 100.0 * double(e.misclassified()) / double(e.pixels);
+            CHECK(misclassified >= previous);
+            CHECK(misclassified < 0.5);   // % of hit pixels: the outline moves, the shadow stays
+            // The whole bunny lies up to about the simplifier's error beneath its coarse
+            // copy; unlifted, the exact irregular z-buffer shadowed 0.66% of the pixels there
+            // at 0.25 (640 x 400).
+            CHECK(100.0 * double(e.falseShadow) / double(e.pixels) < 0.05);
+            previous = misclassified;
+        }
+        CHECK(previous > 0.02);   // at 1% of the triangles the outline has moved visibly
+    }
 }

@@ -151,6 +151,19 @@ TEST_CASE("caster LOD: the error is in world metres, scaled with the instance, a
     const SimplifiedScene doubled = simplifyMeshes(oneMeshScene(sphere, glm::scale(glm::mat4(1.0f), glm::vec3(2.0f))), 0.1);
     CHECK(unit.errorM > 0.0);
     CHECK(doubled.errorM == doctest::Approx(2.0 * unit.errorM));
+    REQUIRE(unit.instanceErrorM.size() == 1);
+    CHECK(double(unit.instanceErrorM[0]) == doctest::Approx(unit.errorM));
+    // Per instance: the same sphere whole beside a simplified one shares the mesh, so both
+    // get its error, each at its own scale; a flat grid loses no shape and gets 0.
+    Scene two = oneMeshScene(sphere);
+    two.meshes.push_back(makeGrid({4.0f, 4.0f}, {16, 16}));
+    two.instances.push_back({"scaled", 0, 0, glm::scale(glm::mat4(1.0f), glm::vec3(3.0f))});
+    two.instances.push_back({"ground", 1, 0, glm::mat4(1.0f)});
+    const SimplifiedScene both = simplifyMeshes(two, 0.1);
+    REQUIRE(both.instanceErrorM.size() == 3);
+    CHECK(double(both.instanceErrorM[1]) == doctest::Approx(3.0 * both.instanceErrorM[0]));
+    CHECK(both.instanceErrorM[2] == 0.0f);
+    CHECK(both.errorM == doctest::Approx(both.instanceErrorM[1]));
     const SimplifiedScene again = simplifyMeshes(oneMeshScene(sphere), 0.1);
     CHECK(again.scene.meshes[0].positions == unit.scene.meshes[0].positions);
     CHECK(again.scene.meshes[0].triangles == unit.scene.meshes[0].triangles);
