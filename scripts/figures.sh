@@ -1,18 +1,19 @@
 #!/bin/sh
 # Reproduces every speed and error figure in the README: the hard- and soft-shadow sweeps,
 # every hard case, the shadow map's bias-by-resolution grid, Figure 7's torus and the eq. 8
-# scaling fit, and the environment techniques' images and buffers (the Figure 3 table is
+# scaling fit, the environment techniques' images and buffers, and speed against error by
+# caster level of detail (the Figure 3 table is
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment ...]   (default: all ten)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod ...]   (default: all eleven)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod}
 
 for part in $parts; do
   case $part in
@@ -123,6 +124,27 @@ for part in $parts; do
       cp $out/env/env-subtractive-$buffer.png docs/images/env-buffer-$buffer.png
     done
     ;;
-  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench, environment)" >&2; exit 2 ;;
+  lod)
+    # Caster level of detail (README, "Caster level of detail"): the casters simplified to
+    # a share of their triangles, the receivers whole; speed against error per ratio, for
+    # hard, soft and environment shadows, and the bunny's shadow at three ratios.
+    ratios=1,0.5,0.25,0.1,0.05,0.02,0.01
+    $app sweep bunny --technique shadow-map,izb,shadow-volume --caster-lod $ratios --threads 2 --runs 11 --out $out/lod
+    python3 $table $out/lod/bunny-shadow-map+izb+shadow-volume.csv hard
+    cp $out/lod/bunny-shadow-map+izb+shadow-volume.svg docs/images/lod-bunny-hard.svg
+    $app sweep bunny --technique pcss,fins --caster-lod $ratios --threads 2 --runs 11 --out $out/lod
+    python3 $table $out/lod/bunny-pcss+fins.csv soft
+    cp $out/lod/bunny-pcss+fins.svg docs/images/lod-bunny-soft.svg
+    $app sweep scenes/environment/bunny-interior.json --technique env-additive,env-subtractive --param lights=20,40 \
+      --caster-lod 1,0.25,0.05,0.01 --reference reference-env-lights --threads 2 --runs 3 --plot-y rms-display \
+      --out $out/lod
+    python3 $table $out/lod/bunny-interior-env-additive+env-subtractive.csv radiance
+    cp $out/lod/bunny-interior-env-additive+env-subtractive.svg docs/images/lod-bunny-interior.svg
+    for ratio in 1 0.05 0.01; do
+      $app render bunny --technique shadow-volume --caster-lod $ratio --width 640 --height 400 \
+        --error-map docs/images/lod-shadow-volume-$ratio.png > /dev/null
+    done
+    ;;
+  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench, environment, lod)" >&2; exit 2 ;;
   esac
 done

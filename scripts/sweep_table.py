@@ -3,7 +3,7 @@
 technique and settings, the median ms at each thread count side by side, and the error
 figures (the same at every thread count; the first row's are shown).
 
-usage: scripts/sweep_table.py SWEEP.csv [hard|soft]
+usage: scripts/sweep_table.py SWEEP.csv [hard|soft|radiance]
        scripts/sweep_table.py --matrix SWEEP.csv ...   (one row per scene: misclassified %
                                                        of each technique)
        scripts/sweep_table.py --grid ROW COLUMN SWEEP.csv  (false shadow / false light % of
@@ -15,6 +15,10 @@ HARD = [("misclassified %", "misclassified_percent", 3), ("false shadow %", "fal
         ("false light %", "false_light_percent", 3), ("RMS", "rms", 4)]
 SOFT = [("RMS", "rms", 4), ("max", "max_abs", 2), ("umbra lit %", "umbra_lit_percent", 3),
         ("umbra over %", "umbra_over_percent", 3), ("lit shadowed %", "lit_shadowed_percent", 3)]
+RADIANCE = [("RMS", "rms", 4), ("RMS displayed", "rms_display", 4)]
+KINDS = {"hard": HARD, "soft": SOFT, "radiance": RADIANCE}
+# A caster level of detail's triangles, where the sweep varied it.
+CASTERS = ("caster triangles", "caster_lod_triangles", 0)
 
 
 def main(path, kind):
@@ -23,7 +27,9 @@ def main(path, kind):
     keyed = {}
     for r in rows:
         keyed.setdefault((r["technique"], r["settings"]), {})[int(r["threads"])] = r
-    columns = HARD if kind == "hard" else SOFT
+    columns = list(KINDS[kind])
+    if any("caster-lod=" in r["settings"] for r in rows):
+        columns.insert(0, CASTERS)
     show_settings = any(s != "defaults" for _, s in keyed)
     head = ["technique"] + (["settings"] if show_settings else []) + [f"ms, {t} thr." for t in threads]
     head += [c[0] for c in columns]
