@@ -4,7 +4,10 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
+
+#include <tbb/global_control.h>
 
 #include "frame/render.h"
 #include "frame/score.h"
@@ -158,5 +161,30 @@ TEST_CASE("caster LOD: the bunny's shadow error grows as its triangles drop, wit
             previous = misclassified;
         }
         CHECK(previous > 0.02);   // at 1% of the triangles the outline has moved visibly
+    }
+}
+
+TEST_CASE("caster LOD: the same bytes for 1 and 2 threads and every SIMD level, simplification included") {
+    const test::TechniqueScenes scenes(160, 100);
+    for (const char* name : {"shadow-map", "shadow-volume", "izb", "fins", "env-subtractive"}) {
+        const Technique& t = findTechnique(name);
+        std::optional<Frame> first;
+        for (int threads : {1, 2}) {
+            const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+            // A prepared scene of its own, so that the simplification runs under this count too.
+            const PreparedScene prepared(scenes.sceneFor(t).scene());
+            for (raster::SimdLevel level : {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
+                if (!raster::simdLevelSupported(level)) continue;
+                INFO(name << " with " << threads << " threads at SIMD level " << int(level));
+                FrameSettings settings;
+                settings.params = test::quickSettings(t);
+                settings.params["caster-lod"] = "0.1";
+                settings.simd = level;
+                const Frame f = renderFrame(prepared, t, settings);
+                if (!first) first = f;
+                CHECK(f.shadow.visibility == first->shadow.visibility);
+                CHECK(f.radiance == first->radiance);
+            }
+        }
     }
 }
