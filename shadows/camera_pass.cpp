@@ -1,5 +1,8 @@
 #include "shadows/camera_pass.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "raster/rasterizer.h"
 #include "scenes/camera.h"
 #include "shading/gbuffer_build.h"
@@ -18,9 +21,11 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
 }
 
 GBuffer liftedReceivers(GBuffer g, const WorldGeometry& world, std::span<const float> liftM) {
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        if (g.hit[k]) g.position[k] += g.normal[k] * liftM[world.triangleInstance[g.triangle[k]]];
-    }
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) {
+            if (g.hit[k]) g.position[k] += g.normal[k] * liftM[world.triangleInstance[g.triangle[k]]];
+        }
+    });
     return g;
 }
 

@@ -20,7 +20,7 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
 // surface: where a coarse caster's face cuts outside its own surface (a concave region),
 // that surface lies up to about the simplification error beneath it and would shadow
 // itself. Lifting each receiver by its own instance's error before the shadow test is a
-// normal offset (Holbert 2011) sized by the geometry instead of a texel; a receiver whose
+// normal offset (Holbert; RTR 7.4) sized by the geometry instead of a texel; a receiver whose
 // mesh kept its shape (a ground) stays put, so contact shadows on it do not move. The price:
 // shadows cast onto a lifted receiver by other casters move by its lift, and a point whose
 // light lies within lift / distance of its tangent plane (the terminator's band) may be
