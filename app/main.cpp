@@ -307,7 +307,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     r->add_option("--fovy", a.overrides.fovyDeg, "vertical field of view in degrees");
     addLightOptions(r, a.overrides);
     r->add_option("--param", a.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
-    r->add_option("--caster-lod", a.casterLod, "share of the casters' triangles kept, in (0, 1]: --param caster-lod=R");
+    r->add_option("--caster-lod", a.casterLod, "share of the casters' triangles kept, 0.001..1: --param caster-lod=R");
     r->add_option("--debug-buffers", a.debugDir, "directory for the technique's intermediate buffers");
     r->add_option("--exposure", a.exposure, "exposure in stops for the PNG")->capture_default_str();
     CLI::Option* errorMap = r->add_option("--error-map", a.errorMap,
