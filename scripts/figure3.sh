@@ -11,8 +11,8 @@
 # machine and thread count (README, "Determinism"); only the timed pass needs a quiet
 # machine. Prints the markdown table of docs/subtractive-shadows.md.
 # Usage: scripts/figure3.sh [OUT_DIR] [SCENE ...]   (all four scenes: about two hours on 2
-# cores, most of it the exact references; PASSES=times to redo the timed pass alone;
-# THREADS=2 RUNS=1 for a quicker one)
+# cores, most of it the exact references; PASSES=errors or PASSES=times for one pass
+# alone; THREADS=2 RUNS=1 for a quicker timed pass)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out=${1:-out/figure3}
@@ -21,13 +21,16 @@ grid=(--technique env-additive,env-subtractive --param lights=15,20,30,40,100 --
       --param sampling-detail=1,1/4,1/16,1/1024)
 scenes=("${@:2}")
 [ ${#scenes[@]} -gt 0 ] || scenes=(bunny-interior bunny-forest triceratops-interior triceratops-forest)
+passes=" ${PASSES:-errors times} "
 for scene in "${scenes[@]}"; do
-    if [ "${PASSES:-errors times}" != times ]; then
+    if [[ $passes == *" errors "* ]]; then
         $app sweep scenes/environment/$scene.json "${grid[@]}" --threads 2 --runs 1 --warmup 0 --plot-y rms \
             --out "$out/exact" > /dev/null
     fi
-    $app sweep scenes/environment/$scene.json "${grid[@]}" --threads "${THREADS:-1,2}" --runs "${RUNS:-3}" --warmup 1 \
-        --plot-y rms --reference reference-env-lights --out "$out/lights" > /dev/null
+    if [[ $passes == *" times "* ]]; then
+        $app sweep scenes/environment/$scene.json "${grid[@]}" --threads "${THREADS:-1,2}" --runs "${RUNS:-3}" \
+            --warmup 1 --plot-y rms --reference reference-env-lights --out "$out/lights" > /dev/null
+    fi
 done
 plot=triceratops-forest-env-additive+env-subtractive.svg   # docs' speed-against-error plot (one frame, 2 threads)
 if [ -f "$out/exact/$plot" ]; then cp "$out/exact/$plot" docs/images/figure3-triceratops-forest.svg; fi
