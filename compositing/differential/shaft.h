@@ -15,11 +15,9 @@
 
 #include <glm/glm.hpp>
 
-namespace shadowlab {
+#include "scenes/bounds.h"
 
-struct Box3 {
-    glm::dvec3 lo{0.0}, hi{0.0};   // lo <= hi on every axis
-};
+namespace shadowlab {
 
 // A plane n . p + d <= 0 inside.
 struct ShaftPlane {
@@ -28,14 +26,14 @@ struct ShaftPlane {
 };
 
 struct Shaft {
-    Box3 bounds;                      // the box bounding both ends
+    Aabb bounds;                      // the box bounding both ends
     std::vector<ShaftPlane> planes;   // at most 12 (two per pair of axes and side), outward normals
 };
 
-Shaft makeShaft(const Box3& a, const Box3& b);
+Shaft makeShaft(const Aabb& a, const Aabb& b);
 
 // True if the box may hold a point of a segment from one end to the other: it overlaps the
 // bounds and no plane has it wholly outside. Never false for a box a segment passes through.
-bool shaftMayTouch(const Shaft& shaft, const Box3& box);
+bool shaftMayTouch(const Shaft& shaft, const Aabb& box);
 
 }  // namespace shadowlab

@@ -20,16 +20,10 @@
 
 #include <glm/glm.hpp>
 
+#include "scenes/bounds.h"
 #include "scenes/scene.h"
 
 namespace shadowlab {
-
-struct Aabb {
-    glm::dvec3 min, max;
-};
-
-// Bounding box of every instance of the scene (WorldGeometry from flatten()).
-std::vector<Aabb> instanceBounds(const Scene& scene, const WorldGeometry& world);
 
 // The four corners of the camera's near-plane rectangle, counter-clockwise, world space.
 std::vector<glm::dvec3> nearPlaneCorners(const Camera& camera);

@@ -11,27 +11,27 @@ using namespace shadowlab;
 
 namespace {
 
-Box3 randomBox(std::mt19937_64& rng, double extent, double size) {
+Aabb randomBox(std::mt19937_64& rng, double extent, double size) {
     std::uniform_real_distribution<double> centre(-extent, extent), half(0.0, size);
     const glm::dvec3 c(centre(rng), centre(rng), centre(rng)), h(half(rng), half(rng), half(rng));
     return {c - h, c + h};
 }
 
-glm::dvec3 pointIn(std::mt19937_64& rng, const Box3& box) {
+glm::dvec3 pointIn(std::mt19937_64& rng, const Aabb& box) {
     std::uniform_real_distribution<double> t(0.0, 1.0);
-    return box.lo + (box.hi - box.lo) * glm::dvec3(t(rng), t(rng), t(rng));
+    return box.min + (box.max - box.min) * glm::dvec3(t(rng), t(rng), t(rng));
 }
 
 // The slab test: does the segment p -> q pass through the box?
-bool segmentHitsBox(const glm::dvec3& p, const glm::dvec3& q, const Box3& box) {
+bool segmentHitsBox(const glm::dvec3& p, const glm::dvec3& q, const Aabb& box) {
     double t0 = 0.0, t1 = 1.0;
     for (int axis = 0; axis < 3; ++axis) {
         const double d = q[axis] - p[axis];
         if (d == 0.0) {
-            if (p[axis] < box.lo[axis] || p[axis] > box.hi[axis]) return false;
+            if (p[axis] < box.min[axis] || p[axis] > box.max[axis]) return false;
             continue;
         }
-        double a = (box.lo[axis] - p[axis]) / d, b = (box.hi[axis] - p[axis]) / d;
+        double a = (box.min[axis] - p[axis]) / d, b = (box.max[axis] - p[axis]) / d;
         if (a > b) std::swap(a, b);
         t0 = std::max(t0, a), t1 = std::min(t1, b);
         if (t0 > t1) return false;
@@ -48,12 +48,12 @@ bool inside(const Shaft& s, const glm::dvec3& p) {
 TEST_CASE("shaft: both end boxes lie inside every plane") {
     std::mt19937_64 rng(7);
     for (int trial = 0; trial < 2000; ++trial) {
-        const Box3 a = randomBox(rng, 10.0, 3.0), b = randomBox(rng, 10.0, 3.0);
+        const Aabb a = randomBox(rng, 10.0, 3.0), b = randomBox(rng, 10.0, 3.0);
         const Shaft s = makeShaft(a, b);
         CHECK(s.planes.size() <= 12);
-        for (const Box3& box : {a, b}) {
+        for (const Aabb& box : {a, b}) {
             for (int corner = 0; corner < 8; ++corner) {
-                const glm::dvec3 c(corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y, corner & 4 ? box.hi.z : box.lo.z);
+                const glm::dvec3 c(corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y, corner & 4 ? box.max.z : box.min.z);
                 REQUIRE(inside(s, c));
             }
         }
@@ -64,7 +64,7 @@ TEST_CASE("shaft: a box that a segment between the ends passes through is never 
     std::mt19937_64 rng(11);
     int hits = 0, culled = 0;
     for (int trial = 0; trial < 20000; ++trial) {
-        const Box3 a = randomBox(rng, 10.0, 2.0), b = randomBox(rng, 10.0, 2.0), object = randomBox(rng, 6.0, 1.5);
+        const Aabb a = randomBox(rng, 10.0, 2.0), b = randomBox(rng, 10.0, 2.0), object = randomBox(rng, 6.0, 1.5);
         const Shaft s = makeShaft(a, b);
         bool anySegment = false;
         for (int k = 0; k < 64 && !anySegment; ++k) anySegment = segmentHitsBox(pointIn(rng, a), pointIn(rng, b), object);
@@ -77,12 +77,12 @@ TEST_CASE("shaft: a box that a segment between the ends passes through is never 
 }
 
 TEST_CASE("shaft: a diagonal shaft culls a box inside its bounds but off the diagonal") {
-    const Box3 a{{0, 0, 0}, {1, 1, 1}}, b{{9, 9, 0}, {10, 10, 1}};
+    const Aabb a{{0, 0, 0}, {1, 1, 1}}, b{{9, 9, 0}, {10, 10, 1}};
     const Shaft s = makeShaft(a, b);
     CHECK(s.planes.size() == 2);   // the two sides of the diagonal in x and y
-    CHECK_FALSE(shaftMayTouch(s, Box3{{8, 1, 0}, {9, 2, 1}}));   // in the bounds, far off the diagonal
-    CHECK(shaftMayTouch(s, Box3{{4.5, 4.5, 0.2}, {5.5, 5.5, 0.4}}));   // on it
-    CHECK_FALSE(shaftMayTouch(s, Box3{{4.5, 4.5, 2.0}, {5.5, 5.5, 3.0}}));   // above both ends
+    CHECK_FALSE(shaftMayTouch(s, Aabb{{8, 1, 0}, {9, 2, 1}}));   // in the bounds, far off the diagonal
+    CHECK(shaftMayTouch(s, Aabb{{4.5, 4.5, 0.2}, {5.5, 5.5, 0.4}}));   // on it
+    CHECK_FALSE(shaftMayTouch(s, Aabb{{4.5, 4.5, 2.0}, {5.5, 5.5, 3.0}}));   // above both ends
     // Two boxes, one inside the other's reach on every axis: the shaft is their bounds.
-    CHECK(makeShaft(Box3{{0, 0, 0}, {4, 4, 4}}, Box3{{1, 1, 1}, {2, 2, 2}}).planes.empty());
+    CHECK(makeShaft(Aabb{{0, 0, 0}, {4, 4, 4}}, Aabb{{1, 1, 1}, {2, 2, 2}}).planes.empty());
 }

@@ -1,0 +1,21 @@
+// Axis-aligned bounding boxes in world space, in double: what a light's or a shaft's
+// conservative tests compare (a volume's reach of the near plane, an object's box against
+// a shaft of line space).
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scenes/scene.h"
+
+namespace shadowlab {
+
+struct Aabb {
+    glm::dvec3 min, max;   // min <= max on every axis
+};
+
+// Bounding box of every instance of the scene (WorldGeometry from flatten()), in instance order.
+std::vector<Aabb> instanceBounds(const Scene& scene, const WorldGeometry& world);
+
+}  // namespace shadowlab
