@@ -76,6 +76,31 @@ TEST_CASE("shaft: a box that a segment between the ends passes through is never 
     CHECK(culled > 15000);   // and the test culls most boxes away from the shaft (93%)
 }
 
+// A shaft hierarchy tests a parent shaft before its children: the shaft of boxes inside
+// the ends must lie inside the ends' shaft (true of convex hulls, which these shafts are:
+// a hull facet of two boxes holds parallel edges of both, or is a face of their bounds).
+TEST_CASE("shaft: the shaft of boxes inside the ends lies inside the ends' shaft") {
+    std::mt19937_64 rng(13);
+    const auto inner = [&](const Aabb& box) {
+        const glm::dvec3 p = pointIn(rng, box), q = pointIn(rng, box);
+        return Aabb{glm::min(p, q), glm::max(p, q)};
+    };
+    int tested = 0;
+    for (int trial = 0; trial < 500; ++trial) {
+        const Aabb a = randomBox(rng, 10.0, 3.0), b = randomBox(rng, 10.0, 3.0);
+        const Shaft outer = makeShaft(a, b), child = makeShaft(inner(a), inner(b));
+        for (int k = 0; k < 200; ++k) {
+            const glm::dvec3 p = pointIn(rng, child.bounds);
+            if (!inside(child, p)) continue;
+            ++tested;
+            REQUIRE(inside(outer, p));
+            REQUIRE(glm::all(glm::lessThanEqual(outer.bounds.min, p)));
+            REQUIRE(glm::all(glm::lessThanEqual(p, outer.bounds.max)));
+        }
+    }
+    CHECK(tested > 5000);   // 8925 points inside a child shaft
+}
+
 TEST_CASE("shaft: a diagonal shaft culls a box inside its bounds but off the diagonal") {
     const Aabb a{{0, 0, 0}, {1, 1, 1}}, b{{9, 9, 0}, {10, 10, 1}};
     const Shaft s = makeShaft(a, b);
