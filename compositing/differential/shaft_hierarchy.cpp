@@ -1,0 +1,85 @@
+#include "compositing/differential/shaft_hierarchy.h"
+
+#include <algorithm>
+
+namespace shadowlab {
+namespace {
+
+double diagonal(const Aabb& b) { return glm::length(b.max - b.min); }
+
+struct Builder {
+    const SourceTree& sources;
+    const ReceiverOctree& receivers;
+    const ShaftSignificance& significant;
+    ShaftHierarchy& out;
+
+    void addChild(int32_t source, int32_t receiver) {
+        if (!significant(source, receiver)) return;
+        out.nodes.push_back({makeShaft(sources.nodes[source].bounds, receivers.nodes[receiver].bounds), source, receiver, -1, 0,
+                             sources.nodes[source].leaf() && receivers.nodes[receiver].leaf()});
+    }
+
+    // The children of shaft `index`: its larger non-leaf end split, the other end kept.
+    void split(int32_t index) {
+        const int32_t source = out.nodes[index].source, receiver = out.nodes[index].receiver;
+        const SourceNode& s = sources.nodes[source];
+        const ReceiverNode& r = receivers.nodes[receiver];
+        if (s.leaf() && r.leaf()) return;
+        const bool splitSource = r.leaf() || (!s.leaf() && diagonal(s.bounds) >= diagonal(r.bounds));
+        const int32_t first = int32_t(out.nodes.size());
+        if (splitSource) {
+            for (int32_t child : s.children) addChild(child, receiver);
+        } else {
+            for (uint32_t c = 0; c < r.childCount; ++c) addChild(source, r.firstChild + int32_t(c));
+        }
+        const uint32_t count = uint32_t(out.nodes.size()) - uint32_t(first);
+        if (count == 0) return;   // nothing below is significant: it stays, leading nowhere
+        out.nodes[index].firstChild = first, out.nodes[index].childCount = count;
+        for (uint32_t c = 0; c < count; ++c) split(first + int32_t(c));
+    }
+};
+
+}  // namespace
+
+size_t ShaftHierarchy::leafCount() const {
+    return size_t(std::count_if(nodes.begin(), nodes.end(), [](const ShaftNode& n) { return n.pair; }));
+}
+
+ShaftHierarchy buildShaftHierarchy(const SourceTree& sources, const ReceiverOctree& receivers,
+                                   const ShaftSignificance& significant) {
+    ShaftHierarchy out;
+    if (sources.nodes.empty() || receivers.nodes.empty()) return out;
+    Builder builder{sources, receivers, significant, out};
+    builder.addChild(0, 0);
+    if (!out.nodes.empty()) builder.split(0);
+    return out;
+}
+
+ShaftHits traverseShafts(const ShaftHierarchy& shafts, const SourceTree& sources, const ReceiverOctree& receivers,
+                         const Aabb& object) {
+    ShaftHits hits;
+    if (shafts.nodes.empty()) return hits;
+    // The paper's frame tags: a patch found through another shaft is not listed again.
+    std::vector<uint8_t> sourceFound(sources.leafOfPatch.size(), 0), receiverFound(receivers.patches.size(), 0);
+    std::vector<int32_t> stack{0};
+    while (!stack.empty()) {
+        const ShaftNode& n = shafts.nodes[stack.back()];
+        stack.pop_back();
+        if (!shaftMayTouch(n.shaft, object)) continue;
+        if (n.firstChild >= 0) {
+            for (uint32_t c = n.childCount; c-- > 0;) stack.push_back(n.firstChild + int32_t(c));
+            continue;
+        }
+        if (!n.pair) continue;   // a shaft whose every pair below was insignificant
+        const uint32_t patch = sources.nodes[n.source].patch;
+        if (!sourceFound[patch]) sourceFound[patch] = 1, hits.sourcePatches.push_back(patch);
+        const ReceiverNode& r = receivers.nodes[n.receiver];
+        for (uint32_t k = r.firstPatch; k < r.firstPatch + r.patchCount; ++k) {
+            const uint32_t p = receivers.patches[k];
+            if (!receiverFound[p]) receiverFound[p] = 1, hits.receiverPatches.push_back(p);
+        }
+    }
+    return hits;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,50 @@
+// The shaft hierarchy of Gibson et al. 2003 (section 6) and its traversal (section 6.1):
+// shafts between nodes of the source tree and the receiver octree, from the roots down,
+// each split on the side whose box is larger (a leaf is never split) until both ends are
+// leaves; a shaft whose transfer the caller deems insignificant (the paper's 2% rule) is
+// not kept, nor anything below it. Per frame, the shafts a synthetic object's box may touch
+// give the sources it may occlude and the receivers that may see it happen. A parent's
+// shaft holds its children's (compositing/differential/shaft.h), so the traversal stops
+// at the first shaft the box misses.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "compositing/differential/receiver_octree.h"
+#include "compositing/differential/shaft.h"
+#include "compositing/differential/source_tree.h"
+
+namespace shadowlab {
+
+struct ShaftNode {
+    Shaft shaft;
+    int32_t source = 0, receiver = 0;   // nodes of the two hierarchies
+    int32_t firstChild = -1;            // -1 at a leaf; else childCount shafts from here
+    uint32_t childCount = 0;
+    bool pair = false;                  // both ends leaves: one source patch, one receiver leaf
+};
+
+struct ShaftHierarchy {
+    std::vector<ShaftNode> nodes;   // the root first; empty if no transfer is significant
+    size_t leafCount() const;       // shafts between a source patch and a receiver leaf
+};
+
+// Whether the transfer from a source node's patches to a receiver node's vertices matters
+// (Gibson et al.: some vertex gets 2% of its light or more). Called once per shaft built.
+using ShaftSignificance = std::function<bool(int32_t sourceNode, int32_t receiverNode)>;
+
+ShaftHierarchy buildShaftHierarchy(const SourceTree& sources, const ReceiverOctree& receivers,
+                                   const ShaftSignificance& significant);
+
+// The sources (patch indices, each once, in the order found) and the receiver patches of
+// the leaf shafts the box may touch.
+struct ShaftHits {
+    std::vector<uint32_t> sourcePatches;
+    std::vector<uint32_t> receiverPatches;
+};
+ShaftHits traverseShafts(const ShaftHierarchy& shafts, const SourceTree& sources, const ReceiverOctree& receivers,
+                         const Aabb& object);
+
+}  // namespace shadowlab

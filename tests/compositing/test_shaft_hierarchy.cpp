@@ -1,0 +1,116 @@
+// The receiver octree and the shaft hierarchy (compositing/differential/receiver_octree.h,
+// shaft_hierarchy.h; Gibson et al. 2003 section 6): the octree's ranges partition the
+// patches; every source-receiver pair's shaft appears once as a leaf; the traversal finds
+// every source and receiver whose pair shaft an object's box touches (brute force over all
+// pairs); insignificant shafts are not kept.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <stdexcept>
+
+#include "compositing/differential/shaft_hierarchy.h"
+
+using namespace shadowlab;
+
+namespace {
+
+std::vector<Aabb> randomBoxes(std::mt19937_64& rng, int count, glm::dvec3 lo, glm::dvec3 hi, double size) {
+    std::uniform_real_distribution<double> t(0.0, 1.0), half(0.0, size);
+    std::vector<Aabb> boxes;
+    for (int k = 0; k < count; ++k) {
+        const glm::dvec3 c = lo + (hi - lo) * glm::dvec3(t(rng), t(rng), t(rng)), h(half(rng), half(rng), half(rng));
+        boxes.push_back({c - h, c + h});
+    }
+    return boxes;
+}
+
+bool contains(const Aabb& outer, const Aabb& inner) {
+    return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max));
+}
+
+}  // namespace
+
+TEST_CASE("receiver octree: the children's ranges partition their parent's, leaves hold at most 8 patches") {
+    std::mt19937_64 rng(4);
+    for (int count : {1, 8, 9, 100, 2000}) {
+        const std::vector<Aabb> patches = randomBoxes(rng, count, glm::dvec3(-10.0, 0.0, -10.0), glm::dvec3(10.0, 0.0, 10.0), 0.4);
+        const ReceiverOctree tree = buildReceiverOctree(patches);
+        CHECK(std::set<uint32_t>(tree.patches.begin(), tree.patches.end()).size() == size_t(count));
+        for (const ReceiverNode& n : tree.nodes) {
+            for (uint32_t k = n.firstPatch; k < n.firstPatch + n.patchCount; ++k) REQUIRE(contains(n.bounds, patches[tree.patches[k]]));
+            if (n.leaf()) {
+                REQUIRE(n.patchCount <= 8);
+                continue;
+            }
+            REQUIRE(n.childCount >= 2);
+            REQUIRE(n.childCount <= 8);
+            uint32_t next = n.firstPatch;
+            for (uint32_t c = 0; c < n.childCount; ++c) {
+                const ReceiverNode& child = tree.nodes[n.firstChild + c];
+                REQUIRE(child.firstPatch == next);
+                next += child.patchCount;
+            }
+            REQUIRE(next == n.firstPatch + n.patchCount);
+        }
+    }
+    // Patches that share one centre cannot be split: one leaf, whatever its size.
+    const std::vector<Aabb> stacked(20, Aabb{{0, 0, 0}, {1, 1, 1}});
+    CHECK(buildReceiverOctree(stacked).nodes.size() == 1);
+    CHECK_THROWS_AS(buildReceiverOctree(stacked, 0), std::invalid_argument);
+}
+
+TEST_CASE("shaft hierarchy: one leaf per source patch and receiver leaf, and the traversal misses no pair's shaft") {
+    std::mt19937_64 rng(6);
+    // Sources on a ceiling and a wall, receivers on the floor, as in the paper's room.
+    std::vector<Aabb> sourceBoxes = randomBoxes(rng, 30, glm::dvec3(-5, 4, -5), glm::dvec3(5, 4, 5), 0.5);
+    for (const Aabb& b : randomBoxes(rng, 10, glm::dvec3(-5, 1, -5), glm::dvec3(-5, 3, 5), 0.5)) sourceBoxes.push_back(b);
+    const std::vector<Aabb> receiverBoxes = randomBoxes(rng, 200, glm::dvec3(-5, 0, -5), glm::dvec3(5, 0, 5), 0.3);
+    const SourceTree sources = buildSourceTree(sourceBoxes, std::vector<double>(sourceBoxes.size(), 1.0));
+    const ReceiverOctree receivers = buildReceiverOctree(receiverBoxes);
+    const ShaftHierarchy shafts = buildShaftHierarchy(sources, receivers, [](int32_t, int32_t) { return true; });
+    const size_t receiverLeaves = size_t(std::count_if(receivers.nodes.begin(), receivers.nodes.end(),
+                                                       [](const ReceiverNode& n) { return n.leaf(); }));
+    CHECK(shafts.leafCount() == sourceBoxes.size() * receiverLeaves);
+
+    int found = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        const Aabb object = randomBoxes(rng, 1, glm::dvec3(-5, 0, -5), glm::dvec3(5, 3, 5), 0.8)[0];
+        const ShaftHits hits = traverseShafts(shafts, sources, receivers, object);
+        const std::set<uint32_t> foundSources(hits.sourcePatches.begin(), hits.sourcePatches.end());
+        const std::set<uint32_t> foundReceivers(hits.receiverPatches.begin(), hits.receiverPatches.end());
+        REQUIRE(foundSources.size() == hits.sourcePatches.size());   // each once
+        for (uint32_t j = 0; j < sourceBoxes.size(); ++j) {
+            for (uint32_t r = 0; r < receiverBoxes.size(); ++r) {
+                if (!shaftMayTouch(makeShaft(sourceBoxes[j], receiverBoxes[r]), object)) continue;
+                ++found;
+                REQUIRE(foundSources.contains(j));
+                REQUIRE(foundReceivers.contains(r));
+            }
+        }
+    }
+    CHECK(found > 1000);   // the objects did stand in the way
+}
+
+TEST_CASE("shaft hierarchy: insignificant shafts are not kept, and their sources are not found") {
+    std::mt19937_64 rng(8);
+    const std::vector<Aabb> sourceBoxes = randomBoxes(rng, 8, glm::dvec3(-2, 4, -2), glm::dvec3(2, 4, 2), 0.3);
+    const std::vector<Aabb> receiverBoxes = randomBoxes(rng, 50, glm::dvec3(-3, 0, -3), glm::dvec3(3, 0, 3), 0.3);
+    const SourceTree sources = buildSourceTree(sourceBoxes, std::vector<double>(sourceBoxes.size(), 1.0));
+    const ReceiverOctree receivers = buildReceiverOctree(receiverBoxes);
+    const int32_t dark = sources.leafOfPatch[3];   // a source whose transfers are all below 2%
+    const ShaftHierarchy shafts = buildShaftHierarchy(sources, receivers, [&](int32_t s, int32_t) { return s != dark; });
+    const ShaftHierarchy all = buildShaftHierarchy(sources, receivers, [](int32_t, int32_t) { return true; });
+    CHECK(shafts.nodes.size() < all.nodes.size());
+    CHECK(std::none_of(shafts.nodes.begin(), shafts.nodes.end(), [&](const ShaftNode& n) { return n.source == dark; }));
+    const Aabb everywhere{{-10, -1, -10}, {10, 10, 10}};
+    const ShaftHits hits = traverseShafts(shafts, sources, receivers, everywhere);
+    CHECK(hits.sourcePatches.size() == 7);
+    CHECK(std::find(hits.sourcePatches.begin(), hits.sourcePatches.end(), 3u) == hits.sourcePatches.end());
+    CHECK(hits.receiverPatches.size() == receiverBoxes.size());
+    // Nothing significant at all: no shaft, nothing found.
+    const ShaftHierarchy none = buildShaftHierarchy(sources, receivers, [](int32_t, int32_t) { return false; });
+    CHECK(none.nodes.empty());
+    CHECK(traverseShafts(none, sources, receivers, everywhere).sourcePatches.empty());
+}
