@@ -11,26 +11,12 @@
 #include <stdexcept>
 
 #include "compositing/differential/shaft_hierarchy.h"
+#include "tests/compositing/random_boxes.h"
 
 using namespace shadowlab;
 
-namespace {
-
-std::vector<Aabb> randomBoxes(std::mt19937_64& rng, int count, glm::dvec3 lo, glm::dvec3 hi, double size) {
-    std::uniform_real_distribution<double> t(0.0, 1.0), half(0.0, size);
-    std::vector<Aabb> boxes;
-    for (int k = 0; k < count; ++k) {
-        const glm::dvec3 c = lo + (hi - lo) * glm::dvec3(t(rng), t(rng), t(rng)), h(half(rng), half(rng), half(rng));
-        boxes.push_back({c - h, c + h});
-    }
-    return boxes;
-}
-
-bool contains(const Aabb& outer, const Aabb& inner) {
-    return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max));
-}
-
-}  // namespace
+using test::contains;
+using test::randomBoxes;
 
 TEST_CASE("receiver octree: the children's ranges partition their parent's, leaves hold at most 8 patches") {
     std::mt19937_64 rng(4);

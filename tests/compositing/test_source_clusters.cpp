@@ -10,8 +10,10 @@
 #include <stdexcept>
 
 #include "compositing/differential/source_clusters.h"
+#include "tests/compositing/random_boxes.h"
 
 using namespace shadowlab;
+using test::contains;
 
 namespace {
 
@@ -21,18 +23,10 @@ struct Sources {
 };
 
 Sources randomSources(std::mt19937_64& rng, int count) {
-    std::uniform_real_distribution<double> at(-5.0, 5.0), size(0.0, 0.3), power(0.0, 1.0);
-    Sources s;
-    for (int p = 0; p < count; ++p) {
-        const glm::dvec3 c(at(rng), at(rng), at(rng)), h(size(rng), size(rng), size(rng));
-        s.bounds.push_back({c - h, c + h});
-        s.transfer.push_back(power(rng) * power(rng));
-    }
+    Sources s{test::randomBoxes(rng, count, glm::dvec3(-5.0), glm::dvec3(5.0), 0.3), {}};
+    std::uniform_real_distribution<double> power(0.0, 1.0);
+    for (int p = 0; p < count; ++p) s.transfer.push_back(power(rng) * power(rng));
     return s;
-}
-
-bool contains(const Aabb& outer, const Aabb& inner) {
-    return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max));
 }
 
 }  // namespace
