@@ -11,6 +11,7 @@
 
 #include "compositing/differential/intensity_transfer.h"
 #include "shading/tonemap.h"
+#include "tests/compositing/random_boxes.h"
 
 using namespace shadowlab;
 
@@ -33,7 +34,7 @@ Vertex randomVertex(std::mt19937_64& rng, int sources) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     Vertex v{glm::dvec3(0.1), {}, {}};
     for (int j = 0; j < sources; ++j) {
-        const glm::dvec3 L = glm::dvec3(u(rng), u(rng), u(rng)) * (0.05 / (1.0 + j));
+        const glm::dvec3 L = test::randomVector(u, rng) * (0.05 / (1.0 + j));
         v.transfer.push_back(L);
         v.total += L;
         v.set.push_back(uint8_t(j % 2));

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "compositing/differential/shaft.h"
+#include "tests/compositing/random_boxes.h"
 
 using namespace shadowlab;
 
@@ -13,13 +14,14 @@ namespace {
 
 Aabb randomBox(std::mt19937_64& rng, double extent, double size) {
     std::uniform_real_distribution<double> centre(-extent, extent), half(0.0, size);
-    const glm::dvec3 c(centre(rng), centre(rng), centre(rng)), h(half(rng), half(rng), half(rng));
+    const glm::dvec3 c = test::randomVector(centre, rng);
+    const glm::dvec3 h = test::randomVector(half, rng);
     return {c - h, c + h};
 }
 
 glm::dvec3 pointIn(std::mt19937_64& rng, const Aabb& box) {
     std::uniform_real_distribution<double> t(0.0, 1.0);
-    return box.min + (box.max - box.min) * glm::dvec3(t(rng), t(rng), t(rng));
+    return box.min + (box.max - box.min) * test::randomVector(t, rng);
 }
 
 // The slab test: does the segment p -> q pass through the box?
