@@ -1,0 +1,61 @@
+// The source set (compositing/differential/source_set.h, Gibson et al. 2003 section 4): the
+// shortest run of the brightest patches whose power reaches the share, nothing that emits
+// nothing, bad input refused.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+#include "compositing/differential/source_set.h"
+
+using namespace shadowlab;
+
+TEST_CASE("source set: the brightest patches, just enough of them to reach the share of the power") {
+    // By radiance 10, 5, 1, 0 (patches 1, 3, 0, 2): powers (less pi) 10, 20, 10, 0 of 40.
+    const std::vector<EmittingPatch> room{{1.0, 10.0}, {10.0, 1.0}, {0.0, 50.0}, {5.0, 4.0}};
+    CHECK(selectSources(room, 0.2) == std::vector<uint32_t>{1});         // 10 of 40 reaches 8
+    CHECK(selectSources(room, 0.25) == std::vector<uint32_t>{1});        // exactly reached
+    CHECK(selectSources(room, 0.7) == std::vector<uint32_t>{1, 3});      // 30 reaches 28
+    CHECK(selectSources(room, 0.75) == std::vector<uint32_t>{1, 3});     // 30 reaches 30
+    CHECK(selectSources(room, 0.8) == std::vector<uint32_t>{1, 3, 0});   // 30 < 32: the dim one too
+    CHECK(selectSources(room, 1.0) == std::vector<uint32_t>{1, 3, 0});   // never the dark floor
+    CHECK(selectSources(std::vector<EmittingPatch>{{0.0, 1.0}}, 1.0).empty());
+    CHECK(selectSources({}, 0.7).empty());
+}
+
+TEST_CASE("source set: a random room's set is the shortest reaching prefix of the sorted patches") {
+    std::mt19937_64 rng(12);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<EmittingPatch> patches;
+    for (int p = 0; p < 2000; ++p) {
+        const double r = u(rng);
+        const double radiance = r < 0.01 ? 100.0 * u(rng) : r < 0.3 ? u(rng) : 0.0;   // lamps, walls, dark
+        patches.push_back({radiance, 0.01 + u(rng)});
+    }
+    double total = 0.0;
+    for (const EmittingPatch& e : patches) total += e.radiance * e.area;
+    const std::vector<uint32_t> set = selectSources(patches);
+    double power = 0.0, last = std::numeric_limits<double>::infinity();
+    for (uint32_t p : set) {
+        REQUIRE(patches[p].radiance <= last);
+        last = patches[p].radiance;
+        power += patches[p].radiance * patches[p].area;
+    }
+    CHECK(power >= 0.7 * total);
+    CHECK(power - patches[set.back()].radiance * patches[set.back()].area < 0.7 * total);   // one fewer would not do
+    for (size_t p = 0; p < patches.size(); ++p) {   // nothing brighter than the last was left out
+        if (patches[p].radiance > last) REQUIRE(std::find(set.begin(), set.end(), uint32_t(p)) != set.end());
+    }
+}
+
+TEST_CASE("source set: a share outside (0, 1] and bad patches are refused") {
+    const std::vector<EmittingPatch> one{{1.0, 1.0}};
+    for (double share : {0.0, -0.1, 1.5, std::nan("")}) CHECK_THROWS_AS(selectSources(one, share), std::invalid_argument);
+    CHECK_THROWS_AS(selectSources(std::vector<EmittingPatch>{{-1.0, 1.0}}, 0.7), std::invalid_argument);
+    CHECK_THROWS_AS(selectSources(std::vector<EmittingPatch>{{1.0, std::nan("")}}, 0.7), std::invalid_argument);
+    CHECK_THROWS_AS(selectSources(std::vector<EmittingPatch>{{std::numeric_limits<double>::infinity(), 1.0}}, 0.7),
+                    std::invalid_argument);
+}
