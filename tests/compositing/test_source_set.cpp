@@ -51,7 +51,7 @@ TEST_CASE("source set: a random room's set is the shortest reaching prefix of th
     }
 }
 
-TEST_CASE("source set: a share outside (0, 1] and bad patches are refused") {
+TEST_CASE("source set: a share of the power that is not above 0 and at most 1, and bad patches, are refused") {
     const std::vector<EmittingPatch> one{{1.0, 1.0}};
     for (double share : {0.0, -0.1, 1.5, std::nan("")}) CHECK_THROWS_AS(selectSources(one, share), std::invalid_argument);
     CHECK_THROWS_AS(selectSources(std::vector<EmittingPatch>{{-1.0, 1.0}}, 0.7), std::invalid_argument);
