@@ -95,7 +95,7 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (hasCasterLod(technique)) {
         frame.shadow.stats.push_back({"caster_lod_triangles", double(casters.casters.world().triangles.size())});
-        frame.shadow.stats.push_back({"caster_lod_error_m", casters.errorM});
+        frame.shadow.stats.push_back({"caster_lod_error_m", casters.errorM()});
     }
     if (technique.output == TechniqueOutput::Visibility) {
         frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);

@@ -64,11 +64,9 @@ double largestScale(const MeshInstance& instance) {
 
 struct CasterLevels {
     struct Level {
-        explicit Level(SimplifiedScene s)
-            : casters(std::move(s.scene)), instanceErrorM(std::move(s.instanceErrorM)), errorM(s.errorM) {}
+        explicit Level(SimplifiedScene s) : casters(std::move(s.scene)), instanceErrorM(std::move(s.instanceErrorM)) {}
         PreparedScene casters;
         std::vector<float> instanceErrorM;
-        double errorM;
     };
     struct Levels {
         std::mutex building;   // held while a level is looked up or built
@@ -83,29 +81,33 @@ void requireRatio(double ratio) {
                                      << ratio).str());
 }
 
+double largest(std::span<const float> errors) {
+    return errors.empty() ? 0.0 : double(*std::max_element(errors.begin(), errors.end()));
+}
+
 }  // namespace
+
+double SimplifiedScene::errorM() const { return largest(instanceErrorM); }
+double CasterLevel::errorM() const { return largest(instanceErrorM); }
 
 SimplifiedScene simplifyMeshes(const Scene& scene, double ratio) {
     requireRatio(ratio);
-    SimplifiedScene out{scene, {}, 0.0};
+    SimplifiedScene out{scene, {}};
     std::vector<double> meshError(scene.meshes.size(), 0.0);
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         SimplifiedMesh s = simplifyMesh(scene.meshes[m], ratio);
         out.scene.meshes[m] = std::move(s.mesh);
         meshError[m] = s.errorObjectUnits;
     }
-    for (const MeshInstance& instance : scene.instances) {
-        const double error = meshError[instance.mesh] * largestScale(instance);
-        out.instanceErrorM.push_back(float(error));
-        out.errorM = std::max(out.errorM, error);
-    }
+    for (const MeshInstance& instance : scene.instances)
+        out.instanceErrorM.push_back(float(meshError[instance.mesh] * largestScale(instance)));
     return out;
 }
 
 CasterLevel casterLevel(const PreparedScene& prepared, double ratio, std::optional<double>* builtMs) {
     requireRatio(ratio);
     if (builtMs) builtMs->reset();
-    if (ratio == 1.0) return {prepared, {}, 0.0};
+    if (ratio == 1.0) return {prepared, {}};
     CasterLevels::Levels& levels = *prepared.derived<CasterLevels>([] { return CasterLevels{}; }).levels;
     const std::lock_guard lock(levels.building);
     std::unique_ptr<const CasterLevels::Level>& level = levels.byRatio[ratio];
@@ -114,7 +116,7 @@ CasterLevel casterLevel(const PreparedScene& prepared, double ratio, std::option
         level = std::make_unique<const CasterLevels::Level>(simplifyMeshes(prepared.scene(), ratio));
         if (builtMs) *builtMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
-    return {level->casters, level->instanceErrorM, level->errorM};
+    return {level->casters, level->instanceErrorM};
 }
 
 }  // namespace shadowlab

@@ -30,7 +30,7 @@ struct SimplifiedScene {
     // meshoptimizer's relative error times the mesh's extent times the instance's largest
     // scale; 0 for an instance whose mesh was not simplified (or lost no shape, a flat grid).
     std::vector<float> instanceErrorM;
-    double errorM = 0.0;   // the largest of them
+    double errorM() const;   // the largest of them; 0 with no instance
 };
 
 // The scene with every mesh simplified towards `ratio` of its triangles, in (0, 1], but
@@ -50,7 +50,7 @@ SimplifiedScene simplifyMeshes(const Scene& scene, double ratio);
 struct CasterLevel {
     const PreparedScene& casters;
     std::span<const float> instanceErrorM;   // SimplifiedScene::instanceErrorM; empty at ratio 1
-    double errorM;                           // SimplifiedScene::errorM
+    double errorM() const;                   // the largest of them; 0 at ratio 1
 };
 CasterLevel casterLevel(const PreparedScene& prepared, double ratio, std::optional<double>* builtMs = nullptr);
 

@@ -99,8 +99,8 @@ TEST_CASE("caster LOD: the bunny keeps a quarter of its triangles, only vertices
     double farthest = 0.0;
     for (size_t v = 0; v < full.positions.size(); v += 97) farthest = std::max(farthest, distanceToMesh(full.positions[v], simple));
     CHECK(farthest < 0.002 * size);
-    CHECK(s.errorM < 0.002 * size);
-    CHECK(farthest < 2.0 * s.errorM);
+    CHECK(s.errorM() < 0.002 * size);
+    CHECK(farthest < 2.0 * s.errorM());
     // The rest of a scene is as it was: instances, materials, lights.
     const SimplifiedScene scene = simplifyMeshes(bunny, 0.25);
     CHECK(scene.scene.meshes[m].triangles == simple.triangles);
@@ -149,10 +149,10 @@ TEST_CASE("caster LOD: the error is in world metres, scaled with the instance, a
     const Mesh sphere = makeUvSphere(1.0f, 32, 16);
     const SimplifiedScene unit = simplifyMeshes(oneMeshScene(sphere), 0.1);
     const SimplifiedScene doubled = simplifyMeshes(oneMeshScene(sphere, glm::scale(glm::mat4(1.0f), glm::vec3(2.0f))), 0.1);
-    CHECK(unit.errorM > 0.0);
-    CHECK(doubled.errorM == doctest::Approx(2.0 * unit.errorM));
+    CHECK(unit.errorM() > 0.0);
+    CHECK(doubled.errorM() == doctest::Approx(2.0 * unit.errorM()));
     REQUIRE(unit.instanceErrorM.size() == 1);
-    CHECK(double(unit.instanceErrorM[0]) == doctest::Approx(unit.errorM));
+    CHECK(double(unit.instanceErrorM[0]) == doctest::Approx(unit.errorM()));
     // Per instance: the same sphere whole beside a simplified one shares the mesh, so both
     // get its error, each at its own scale; a flat grid loses no shape and gets 0.
     Scene two = oneMeshScene(sphere);
@@ -163,7 +163,7 @@ TEST_CASE("caster LOD: the error is in world metres, scaled with the instance, a
     REQUIRE(both.instanceErrorM.size() == 3);
     CHECK(double(both.instanceErrorM[1]) == doctest::Approx(3.0 * both.instanceErrorM[0]));
     CHECK(both.instanceErrorM[2] == 0.0f);
-    CHECK(both.errorM == doctest::Approx(both.instanceErrorM[1]));
+    CHECK(both.errorM() == doctest::Approx(both.instanceErrorM[1]));
     const SimplifiedScene again = simplifyMeshes(oneMeshScene(sphere), 0.1);
     CHECK(again.scene.meshes[0].positions == unit.scene.meshes[0].positions);
     CHECK(again.scene.meshes[0].triangles == unit.scene.meshes[0].triangles);
