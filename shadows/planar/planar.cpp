@@ -27,6 +27,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <utility>
 
 #include <tbb/blocked_range.h>
@@ -58,25 +60,33 @@ bool onPlane(const glm::dvec4& plane, const glm::vec3& p) {
     return std::abs(distance) <= kOnPlaneTolerance * std::max(1.0, double(glm::length(p)));
 }
 
+// Instances entirely in the plane receive, the others cast: decided once, on the scene the
+// camera sees (the casters' copy, ShadowInputs::casters, has the same instances).
+std::vector<uint8_t> receivingInstances(const Scene& scene, const WorldGeometry& world, const glm::dvec4& plane) {
+    std::vector<uint8_t> receiving;
+    for (const InstanceRange& r : instanceRanges(scene)) {
+        const auto vertices = std::span(world.positions).subspan(r.firstVertex, scene.meshes[r.mesh].positions.size());
+        receiving.push_back(std::all_of(vertices.begin(), vertices.end(), [&](const glm::vec3& p) { return onPlane(plane, p); }));
+    }
+    return receiving;
+}
+
 enum class PlanarRole { Receiver, Caster };
 
-// Instances entirely in the plane receive; the others cast, less their triangles that
-// reach the light's distance from the plane. The receivers come from the scene the camera
-// sees and the casters from the casters' (ShadowInputs::casters), so each is split alone.
+// The triangles of the instances in that role, from that role's scene and world; a caster
+// less its triangles that reach the light's distance from the plane.
 std::vector<glm::uvec3> trianglesOf(PlanarRole role, const Scene& scene, const WorldGeometry& world,
-                                    const glm::dvec4& plane, const glm::dvec4& light) {
+                                    std::span<const uint8_t> receiving, const glm::dvec4& plane, const glm::dvec4& light) {
     const double lightHeight = glm::dot(plane, light);   // for w = 0: > 0 means above, never reached
     auto belowLight = [&](uint32_t v) {
         return light.w == 0.0 || glm::dot(plane, glm::dvec4(glm::dvec3(world.positions[v]), 1.0)) < lightHeight;
     };
+    const std::vector<InstanceRange> ranges = instanceRanges(scene);
     std::vector<glm::uvec3> out;
-    for (const InstanceRange& r : instanceRanges(scene)) {
-        const auto triangles = std::span(world.triangles).subspan(r.firstTriangle, r.triangleCount);
-        const auto vertices = std::span(world.positions).subspan(r.firstVertex, scene.meshes[r.mesh].positions.size());
-        const bool receiver = std::all_of(vertices.begin(), vertices.end(), [&](const glm::vec3& p) { return onPlane(plane, p); });
-        if (receiver != (role == PlanarRole::Receiver)) continue;
-        for (const glm::uvec3& t : triangles) {
-            if (receiver || (belowLight(t.x) && belowLight(t.y) && belowLight(t.z))) out.push_back(t);
+    for (size_t i = 0; i < ranges.size(); ++i) {
+        if (bool(receiving[i]) != (role == PlanarRole::Receiver)) continue;
+        for (const glm::uvec3& t : std::span(world.triangles).subspan(ranges[i].firstTriangle, ranges[i].triangleCount)) {
+            if (receiving[i] || (belowLight(t.x) && belowLight(t.y) && belowLight(t.z))) out.push_back(t);
         }
     }
     return out;
@@ -123,9 +133,11 @@ ShadowOutputs run(const ShadowInputs& in) {
     const float opacity = float(in.params.real("opacity"));
     const glm::dvec4 light = homogeneousLight(pointLightFor(in.light));
     StageTimer timer;
-    const std::vector<glm::uvec3> receivers = trianglesOf(PlanarRole::Receiver, in.scene(), in.receiverWorld(), plane, light);
+    const std::vector<uint8_t> receiving = receivingInstances(in.scene(), in.receiverWorld(), plane);
+    const std::vector<glm::uvec3> receivers =
+        trianglesOf(PlanarRole::Receiver, in.scene(), in.receiverWorld(), receiving, plane, light);
     const std::vector<glm::uvec3> casters =
-        trianglesOf(PlanarRole::Caster, in.casters().scene(), in.casterWorld(), plane, light);
+        trianglesOf(PlanarRole::Caster, in.casters().scene(), in.casterWorld(), receiving, plane, light);
     timer.lap("split");
 
     const glm::dmat4 cameraFromWorld = clipFromWorldD(camera);
