@@ -18,16 +18,18 @@ glm::dvec3 polygonNormal(std::span<const glm::dvec3> polygon) {
 }
 
 // The corners relative to x, clipped to the half-space n . r >= 0 (Sutherland-Hodgman
-// against one plane): what lies below the receiver's horizon sends it nothing.
-std::vector<glm::dvec3> aboveHorizon(const glm::dvec3& x, const glm::dvec3& n, std::span<const glm::dvec3> polygon) {
-    std::vector<glm::dvec3> clipped;
+// against one plane), into `out` (room for 2 polygon.size() corners: each edge adds
+// at most its first corner and a crossing); returns how many.
+// What lies below the receiver's horizon sends it nothing.
+size_t aboveHorizon(const glm::dvec3& x, const glm::dvec3& n, std::span<const glm::dvec3> polygon, glm::dvec3* out) {
+    size_t count = 0;
     for (size_t k = 0; k < polygon.size(); ++k) {
         const glm::dvec3 a = polygon[k] - x, b = polygon[(k + 1) % polygon.size()] - x;
         const double ha = glm::dot(n, a), hb = glm::dot(n, b);
-        if (ha >= 0.0) clipped.push_back(a);
-        if ((ha >= 0.0) != (hb >= 0.0)) clipped.push_back(a + (b - a) * (ha / (ha - hb)));
+        if (ha >= 0.0) out[count++] = a;
+        if ((ha >= 0.0) != (hb >= 0.0)) out[count++] = a + (b - a) * (ha / (ha - hb));
     }
-    return clipped;
+    return count;
 }
 
 }  // namespace
@@ -36,11 +38,16 @@ double pointToPolygonFormFactor(const glm::dvec3& x, const glm::dvec3& n, std::s
     if (polygon.size() < 3) return 0.0;
     // A one-sided emitter: x must be in front of the polygon's plane.
     if (glm::dot(polygonNormal(polygon), x - polygon[0]) <= 0.0) return 0.0;
-    const std::vector<glm::dvec3> r = aboveHorizon(x, n, polygon);
+    // Small polygons (the patches of compositing/differential) clip on the stack.
+    constexpr size_t kStackCorners = 8;
+    glm::dvec3 stack[2 * kStackCorners];
+    std::vector<glm::dvec3> heap(polygon.size() > kStackCorners ? 2 * polygon.size() : 0);
+    glm::dvec3* r = heap.empty() ? stack : heap.data();
+    const size_t count = aboveHorizon(x, n, polygon, r);
     double sum = 0.0;
-    for (size_t k = 0; k < r.size(); ++k) {
+    for (size_t k = 0; k < count; ++k) {
         const glm::dvec3& a = r[k];
-        const glm::dvec3& b = r[(k + 1) % r.size()];
+        const glm::dvec3& b = r[(k + 1) % count];
         const glm::dvec3 c = glm::cross(a, b);
         const double sine = glm::length(c);
         if (sine == 0.0) continue;   // an edge through x or of no length subtends nothing
