@@ -196,6 +196,11 @@ bool ReferenceVisibility::directionVisible(const glm::vec3& P, const glm::vec3& 
     return shadowlab::directionVisible(rays, receiverAt(P, N, sceneDiagonal_), direction);
 }
 
+bool ReferenceVisibility::pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const {
+    ShadowRays rays(embree_->scene);
+    return shadowlab::pointVisible(rays, receiverAt(P, N, sceneDiagonal_), target);
+}
+
 std::vector<float> ReferenceVisibility::visibility(const GBuffer& gbuffer, const Light& light,
                                                    const ReferenceOptions& options) const {
     requireConsistent(gbuffer, "ReferenceVisibility::visibility");

@@ -58,6 +58,9 @@ public:
     // origin visibility() uses. For integrators that choose their own directions (the
     // environment reference); not counted in raysCast().
     bool directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const;
+    // The same for a point `target` (a sample on an area source): in front of N's plane and
+    // nothing in the way of the segment, which stops the ray offset short of the target.
+    bool pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const;
 
     // Shadow rays cast by all visibility() calls so far (for Mrays/s in benchmarks).
     uint64_t raysCast() const { return raysCast_.load(); }
