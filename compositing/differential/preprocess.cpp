@@ -1,0 +1,141 @@
+#include "compositing/differential/preprocess.h"
+
+#include <stdexcept>
+
+#include "compositing/differential/intensity_transfer.h"
+#include "compositing/differential/patch_radiance.h"
+#include "shading/luminance.h"
+#include "shadows/stage_timer.h"
+
+namespace shadowlab {
+namespace {
+
+void requireValid(const CompositingScene& scene, const PreprocessSettings& settings) {
+    if (!(settings.sourceShare > 0.0 && settings.sourceShare <= 1.0)) {
+        throw std::invalid_argument("differential preprocessing: the source share must be in (0, 1]");
+    }
+    if (!(settings.significance > 0.0 && settings.significance <= 1.0)) {
+        throw std::invalid_argument("differential preprocessing: the significance must be in (0, 1]");
+    }
+    const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
+    if (!scene.background.empty() && scene.background.size() != pixels) {
+        throw std::invalid_argument("differential preprocessing: the background needs one value per pixel");
+    }
+}
+
+// Per source-tree node and receiver row, the luminance of the node's summed transfers:
+// the leaves' from the table, each inner node the sum of its children (children come
+// after their parent in the tree, so a backward sweep meets them first).
+std::vector<float> nodeTransfers(const SourceTree& tree, const TransferTable& table) {
+    const size_t rows = table.vertices.size(), S = table.sources.size();
+    std::vector<float> sums(tree.nodes.size() * rows, 0.0f);
+    for (size_t n = tree.nodes.size(); n-- > 0;) {
+        const SourceNode& node = tree.nodes[n];
+        float* out = sums.data() + n * rows;
+        if (node.leaf()) {
+            for (size_t r = 0; r < rows; ++r) out[r] = luminance(table.L[r * S + node.patch]);
+            continue;
+        }
+        const float* a = sums.data() + size_t(node.children[0]) * rows;
+        const float* b = sums.data() + size_t(node.children[1]) * rows;
+        for (size_t r = 0; r < rows; ++r) out[r] = a[r] + b[r];
+    }
+    return sums;
+}
+
+ShaftHierarchy prunedShafts(const DifferentialModel& m) {
+    const size_t rows = m.transfers.vertices.size();
+    // Section 6: a shaft matters if some vertex of its receivers gets at least
+    // `significance` of its light through it.
+    const auto significant = [&](int32_t sourceNode, int32_t receiverNode) {
+        const ReceiverNode& r = m.receiverOctree.nodes[receiverNode];
+        const float* through = m.nodeTransfer.data() + size_t(sourceNode) * rows;
+        for (uint32_t k = r.firstPatch; k < r.firstPatch + r.patchCount; ++k) {
+            const Patch& patch = m.model.patches[m.transfers.receiverPatches[m.receiverOctree.patches[k]]];
+            for (const uint32_t v : patch.vertex) {
+                const int32_t row = m.transfers.rowOfVertex[v];
+                const double total = luminance(m.transfers.total[size_t(row)]);
+                if (total > 0.0 && through[row] >= m.settings.significance * total) return true;
+            }
+        }
+        return false;
+    };
+    return buildShaftHierarchy(m.sourceTree, m.receiverOctree, significant);
+}
+
+std::vector<glm::vec3> intensityTransferTable(const TransferTable& t, const CameraResponse& T) {
+    const size_t S = t.sources.size();
+    std::vector<uint8_t> set(S);
+    for (size_t s = 0; s < S; ++s) set[s] = uint8_t(s % 2);
+    std::vector<glm::vec3> table(t.L.size());
+    std::vector<glm::dvec3> L(S), out(S);
+    for (size_t r = 0; r < t.vertices.size(); ++r) {
+        for (size_t s = 0; s < S; ++s) L[s] = glm::dvec3(t.L[r * S + s]);
+        intensityTransfers(t.total[r], std::span<const glm::dvec3>(L), std::span<const uint8_t>(set), T, std::span(out));
+        for (size_t s = 0; s < S; ++s) table[r * S + s] = glm::vec3(out[s]);
+    }
+    return table;
+}
+
+size_t shaftBytes(const ShaftHierarchy& shafts) {
+    size_t bytes = shafts.nodes.size() * sizeof(ShaftNode);
+    for (const ShaftNode& n : shafts.nodes) bytes += n.shaft.planes.size() * sizeof(ShaftPlane);
+    return bytes;
+}
+
+}  // namespace
+
+Aabb patchBounds(const PatchModel& model, uint32_t p) {
+    const std::array<glm::dvec3, 4> c = model.corners(p);
+    Aabb box{c[0], c[0]};
+    for (const glm::dvec3& q : c) box.min = glm::min(box.min, q), box.max = glm::max(box.max, q);
+    return box;
+}
+
+DifferentialModel preprocess(const CompositingScene& scene, const PreprocessSettings& settings) {
+    requireValid(scene, settings);
+    DifferentialModel m;
+    m.camera = scene.camera;
+    m.response = scene.response;
+    m.settings = settings;
+    StageTimer timer;
+    m.model = flattenPatches(scene.surfaces);
+    m.geometry = patchGeometry(m.model);
+    m.modelRays = std::make_unique<ReferenceVisibility>(m.geometry);
+    m.radiance = patchRadiance(m.model, *m.modelRays, settings.sampling);
+    timer.lap("radiance");
+    m.pixels = pixelPatches(m.model, m.geometry, m.camera, settings.simd);
+    m.background = scene.background.empty()
+                       ? renderBackground(m.model, m.radiance, m.pixels, *m.modelRays, settings.sampling)
+                       : scene.background;
+    timer.lap("background");
+    m.transfers = computeTransfers(m.model, m.radiance, sourceSet(m.model, m.radiance, settings.sourceShare),
+                                   receiverPatches(m.model, m.pixels), *m.modelRays, settings.sampling);
+    m.intensityTransfers = intensityTransferTable(m.transfers, m.response);
+    timer.lap("transfers");
+    const TransferTable& t = m.transfers;
+    std::vector<Aabb> sourceBounds;
+    std::vector<double> meanTransfer(t.sources.size(), 0.0);
+    for (size_t s = 0; s < t.sources.size(); ++s) {
+        sourceBounds.push_back(patchBounds(m.model, t.sources[s]));
+        for (size_t r = 0; r < t.vertices.size(); ++r) meanTransfer[s] += luminance(t.L[r * t.sources.size() + s]);
+        if (!t.vertices.empty()) meanTransfer[s] /= double(t.vertices.size());
+    }
+    m.sourceTree = buildSourceTree(sourceBounds, meanTransfer);
+    std::vector<Aabb> receiverBounds;
+    for (const uint32_t p : t.receiverPatches) receiverBounds.push_back(patchBounds(m.model, p));
+    m.receiverOctree = buildReceiverOctree(receiverBounds, settings.receiverLeafSize);
+    m.nodeTransfer = nodeTransfers(m.sourceTree, t);
+    m.shafts = prunedShafts(m);
+    timer.lap("hierarchy");
+    timer.appendTo(m.stats);
+    m.stats.push_back({"source_patches_count", double(t.sources.size())});
+    m.stats.push_back({"receiver_patches_count", double(t.receiverPatches.size())});
+    m.stats.push_back({"shaft_nodes_count", double(m.shafts.nodes.size())});
+    m.stats.push_back({"shaft_leaves_count", double(m.shafts.leafCount())});
+    m.stats.push_back({"transfers_bytes", double(t.bytes())});
+    m.stats.push_back({"shafts_bytes", double(shaftBytes(m.shafts) + m.nodeTransfer.size() * sizeof(float))});
+    return m;
+}
+
+}  // namespace shadowlab

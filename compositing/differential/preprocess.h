@@ -1,0 +1,67 @@
+// Everything Gibson et al. 2003 compute once per photograph (sections 4 to 6 and 9's
+// preprocessing): the model's patches and their radiance, which patch each pixel sees, the
+// photograph (rendered for the built-in cases), the source set and the receivers, the
+// transfers, the two hierarchies with the source tree's summed transfers, and the shaft
+// hierarchy between them pruned by the 2% rule. Each frame then only traverses, clusters,
+// renders shadow maps and subtracts (composite.h).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "compositing/differential/background.h"
+#include "compositing/differential/patch_light.h"
+#include "compositing/differential/receiver_octree.h"
+#include "compositing/differential/shaft_hierarchy.h"
+#include "compositing/differential/source_tree.h"
+#include "compositing/differential/transfers.h"
+#include "raster/tile_kernels.h"
+#include "scenes/compositing_scene.h"
+#include "shadows/reference/reference.h"
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+struct PreprocessSettings {
+    double sourceShare = 0.7;       // of all radiant power (section 4)
+    double significance = 0.02;     // a shaft is kept if some vertex gets this share of its light
+    uint32_t receiverLeafSize = 8;  // patches per receiver octree leaf (section 6)
+    PatchSampling sampling;
+    raster::SimdLevel simd = raster::bestSimdLevel();
+};
+
+struct DifferentialModel {
+    Camera camera;
+    CameraResponse response;
+    PatchModel model;
+    WorldGeometry geometry;                  // patchGeometry(model)
+    std::unique_ptr<ReferenceVisibility> modelRays;
+    std::vector<glm::dvec3> radiance;        // per patch
+    PixelPatches pixels;
+    std::vector<glm::vec3> background;       // the photograph, linear radiance
+    TransferTable transfers;
+    // The LDR path's intensity transfers S_ij (section 7.1, Figure 4), laid out like
+    // transfers.L: the sources in their order (brightest first), even and odd columns the
+    // two sets, under the scene's camera response.
+    std::vector<glm::vec3> intensityTransfers;
+    SourceTree sourceTree;                   // over source slots (columns of the transfers)
+    ReceiverOctree receiverOctree;           // over receiver slots (TransferTable::receiverPatches)
+    // Per source-tree node and receiver row, the luminance of the node's summed transfers.
+    std::vector<float> nodeTransfer;
+    ShaftHierarchy shafts;
+    PreprocessSettings settings;
+    // Each stage's wall time (radiance_ms, background_ms, transfers_ms, hierarchy_ms), the
+    // sizes (source_patches_count, receiver_patches_count, shaft_nodes_count,
+    // shaft_leaves_count) and the memory (transfers_bytes, shafts_bytes): section 9's figures.
+    std::vector<TechniqueStat> stats;
+};
+
+// Throws std::invalid_argument for a scene whose model is invalid (flattenPatches), whose
+// background is neither empty nor one value per pixel, or a share or significance outside
+// (0, 1].
+DifferentialModel preprocess(const CompositingScene& scene, const PreprocessSettings& settings = {});
+
+// The box of patch p's corners.
+Aabb patchBounds(const PatchModel& model, uint32_t p);
+
+}  // namespace shadowlab
