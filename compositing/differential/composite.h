@@ -1,0 +1,83 @@
+// A frame of differential rendering (Gibson et al. 2003, sections 6.1, 7 and 8): the
+// synthetic object's box traversed through the shaft hierarchy gives the sources it may
+// occlude and the receivers that may see it; the sources become n clusters (Figure 6), each
+// with a shadow map of the simplified object from the centre of its most energetic patch;
+// every receiver pixel a map shadows loses that cluster's transfers, interpolated from the
+// patch's vertices (the occlusion mask M_ij and equations 1 and 2). The object itself is
+// drawn from the whole mesh, shaded from the irradiance volume less the clusters its own
+// maps hide from it (self-shadowing).
+//
+// Two paths: HDR, on the photograph's linear radiance, and LDR, on its 8-bit intensities
+// with the intensity transfers of section 7.1 (intensity_transfer.h), so that a photograph
+// whose radiance is unknown can still receive shadows.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "compositing/differential/cluster_shadow_maps.h"
+#include "compositing/differential/irradiance_volume.h"
+#include "compositing/differential/object_levels.h"
+#include "compositing/differential/preprocess.h"
+#include "compositing/differential/source_clusters.h"
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+// The object with what every frame of its path shares: its two levels and its light.
+struct PreparedObject {
+    ObjectLevels levels;
+    IrradianceVolume light;   // over the box of its whole path
+    std::vector<glm::mat4> path;
+};
+
+struct ObjectSettings {
+    int shadowTriangles = 300;   // of the level the shadow maps draw
+    double probeSpacingM = 0.15;
+};
+
+// Throws std::invalid_argument for an object with no triangle or no frame in its path.
+PreparedObject prepareObject(const DifferentialModel& model, const SyntheticObject& object,
+                             const ObjectSettings& settings = {});
+
+struct CompositeSettings {
+    int passes = 20;        // n, the shadow maps per frame; 0: one per occluded source ("all")
+    int mapSize = 512;      // texels per side of each map
+    bool ldr = false;       // composite 8-bit intensities (section 7.1) instead of radiance
+    bool keepMasks = false; // keep each cluster's mask for the debug views
+    raster::SimdLevel simd = raster::bestSimdLevel();
+};
+
+struct CompositeFrame {
+    // HDR: linear radiance. LDR: 8-bit intensities (0 to 255, rounded) in every channel.
+    std::vector<glm::vec3> image;
+    std::vector<TechniqueStat> stats;
+    // The intermediate buffers (docs/differential-rendering.md): per pixel, the object's
+    // coverage, whether the traversal listed its receiver patch, and how many clusters' maps
+    // shadow it; the traversal's sources and receivers, the clusters with their lights, and,
+    // on request, each cluster's mask.
+    std::vector<uint8_t> objectPixels, listedReceiverPixels;
+    std::vector<uint8_t> shadowingClusters;
+    ShaftHits hits;
+    std::vector<SourceCluster> clusters;
+    std::vector<glm::dvec3> lights;
+    std::vector<std::vector<uint8_t>> clusterMasks;
+};
+
+// Throws std::invalid_argument for passes < 0 or a map size outside the depth map's range.
+CompositeFrame compositeFrame(const DifferentialModel& model, const PreparedObject& object, const glm::mat4& placement,
+                              const CompositeSettings& settings = {});
+
+// The photograph as the LDR path starts from it: T(background) rounded to 8 bits.
+std::vector<glm::vec3> photographIntensities(const DifferentialModel& model);
+
+// The model's triangles then the placed object's, as the camera draws them: a pixel on a
+// triangle past the model's is the object's. A patch's corner normals are its normal.
+WorldGeometry withObject(const DifferentialModel& model, const WorldGeometry& object);
+
+// The box of a placed level's vertices.
+Aabb boundsOf(const WorldGeometry& world);
+
+}  // namespace shadowlab
