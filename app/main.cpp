@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_passes.h"
+#include "app/composite.h"
 #include "app/environment.h"
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
@@ -24,6 +25,7 @@
 #include "app/sweep_json.h"
 #include "app/sweep_merge.h"
 #include "app/sweep_plot.h"
+#include "shadows/depth_map.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"
@@ -397,6 +399,26 @@ void addEnvironmentCommand(CLI::App& app, EnvironmentArgs& a) {
     e->callback([&a] { runEnvironmentCommand(a); });
 }
 
+void addCompositeCommand(CLI::App& app, CompositeArgs& a) {
+    CLI::App* c = app.add_subcommand("composite", "a synthetic object's shadows composited into a photograph (Gibson et al. 2003) and the exact differential reference");
+    c->add_option("case", a.scene, "room (slid under the desk) or room-lift (raised off the floor)")->capture_default_str();
+    c->add_option("--passes", a.passes, "shadow passes n per frame; 0: one per occluded source")->delimiter(',')->capture_default_str()->check(CLI::Range(0, 100000));
+    c->add_option("--frames", a.frames, "frames of the path (default: all)")->delimiter(',');
+    c->add_option("--width", a.width, "image width")->capture_default_str()->check(CLI::Range(16, 4096));
+    c->add_option("--height", a.height, "image height")->capture_default_str()->check(CLI::Range(16, 4096));
+    c->add_option("--map-size", a.mapSize, "texels per side of each cluster's shadow map")->capture_default_str()->check(CLI::Range(kMinMapResolution, kMaxMapResolution));
+    c->add_option("--shadow-triangles", a.shadowTriangles, "triangles of the object the maps draw")->capture_default_str()->check(CLI::Range(4, 1 << 24));
+    c->add_option("--source-share", a.sourceShare, "share of the radiant power the source set holds")->capture_default_str()->check(CLI::Range(1e-6, 1.0));
+    c->add_flag("--ldr", a.ldr, "composite the 8-bit photograph with intensity transfers");
+    c->add_flag("!--no-reference", a.reference, "skip the exact reference");
+    c->add_flag("--masks", a.masks, "write each cluster's mask");
+    c->add_option("--runs", a.runs, "timed runs per frame (median)")->capture_default_str()->check(CLI::Range(1, 1000));
+    c->add_option("--warmup", a.warmupRuns, "untimed runs first")->capture_default_str()->check(CLI::Range(0, 1000));
+    c->add_option("--threads", a.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, kMaxThreads));
+    c->add_option("--out", a.outDir, "directory for the images and composite.json")->capture_default_str();
+    c->callback([&a] { runCompositeCommand(a); });
+}
+
 void addTechniquesCommand(CLI::App& app) {
     app.add_subcommand("techniques", "list the shadow techniques and their parameters")->callback(printTechniques);
 }
@@ -438,6 +460,7 @@ int main(int argc, char** argv) {
     BenchArgs bench;
     ExportArgs exportObj;
     EnvironmentArgs environment;
+    CompositeArgs composite;
     addRenderCommand(app, render);
     addSweepCommand(app, sweep);
     addMergeSweepCommand(app, mergeSweep);
@@ -447,6 +470,7 @@ int main(int argc, char** argv) {
     addTechniquesCommand(app);
     addExportObjCommand(app, exportObj);
     addEnvironmentCommand(app, environment);
+    addCompositeCommand(app, composite);
     try {
         requireKnownCommand(app, argc, argv);
         app.parse(argc, argv);

@@ -1,0 +1,217 @@
+#include "app/composite.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "compositing/differential/composite.h"
+#include "compositing/differential/differential_reference.h"
+#include "raster/thread_count.h"
+#include "scenes/compositing_cases.h"
+#include "scenes/obj_reader.h"
+#include "scenes/scene_file.h"
+#include "shading/image_io.h"
+#include "shading/luminance.h"
+
+namespace shadowlab {
+namespace {
+
+CompositingScene compositingCase(const CompositeArgs& a) {
+    const Mesh bunny = readObj(builtinSceneDir() + "/meshes/bunny_low.obj");
+    if (a.scene == "room") return compositingRoom(bunny, RoomPath::UnderDesk, a.width, a.height);
+    if (a.scene == "room-lift") return compositingRoom(bunny, RoomPath::Lift, a.width, a.height);
+    throw std::invalid_argument("composite: unknown case '" + a.scene + "' (room, room-lift)");
+}
+
+// What a PNG shows: the camera's 8-bit response to radiance (the LDR path's images are
+// already intensities).
+std::vector<uint8_t> responsePng(const DifferentialModel& m, const std::vector<glm::vec3>& image, bool intensities) {
+    std::vector<uint8_t> rgb;
+    rgb.reserve(image.size() * 3);
+    for (const glm::vec3& c : image) {
+        const glm::dvec3 v = intensities ? glm::dvec3(c) : glm::round(m.response(glm::dvec3(c)));
+        for (int k = 0; k < 3; ++k) rgb.push_back(uint8_t(std::clamp(v[k], 0.0, 255.0)));
+    }
+    return rgb;
+}
+
+void writeImage(const std::filesystem::path& dir, const std::string& name, const DifferentialModel& m,
+                const std::vector<glm::vec3>& image, bool intensities) {
+    if (!intensities) {
+        ImageChannels exr;
+        exr.width = m.camera.width, exr.height = m.camera.height;
+        setRadiance(exr, image);
+        writeExr(dir / (name + ".exr"), exr);
+    }
+    writePng(dir / (name + ".png"), m.camera.width, m.camera.height, responsePng(m, image, intensities));
+}
+
+// The photograph, darkened, with a buffer's pixels painted over it in a colour whose
+// strength grows with the value (0 leaves the pixel as it is).
+void writeOverlay(const std::filesystem::path& path, const DifferentialModel& m, const std::vector<uint8_t>& values,
+                  int fullScale, const glm::vec3& colour) {
+    std::vector<uint8_t> rgb = responsePng(m, m.background, false);
+    for (size_t k = 0; k < values.size(); ++k) {
+        const float t = std::min(1.0f, float(values[k]) / float(fullScale));
+        for (int c = 0; c < 3; ++c) {
+            const float base = 0.5f * float(rgb[3 * k + c]);
+            rgb[3 * k + c] = uint8_t(values[k] ? base + t * (255.0f * colour[c] - base) : base);
+        }
+    }
+    writePng(path, m.camera.width, m.camera.height, rgb);
+}
+
+// RMS and largest difference of the luminance over every pixel, and the RMS over the
+// object's pixels and over the rest (the shadows) apart.
+struct Difference {
+    double rms = 0.0, max = 0.0, rmsObject = 0.0, rmsReceivers = 0.0;
+};
+Difference difference(const std::vector<glm::vec3>& reference, const CompositeFrame& frame) {
+    Difference d;
+    size_t objectPixels = 0;
+    for (size_t k = 0; k < reference.size(); ++k) {
+        const double e = double(luminance(reference[k])) - double(luminance(frame.image[k]));
+        d.rms += e * e, d.max = std::max(d.max, std::abs(e));
+        (frame.objectPixels[k] ? d.rmsObject : d.rmsReceivers) += e * e;
+        objectPixels += frame.objectPixels[k];
+    }
+    const size_t others = reference.size() - objectPixels;
+    d.rms = std::sqrt(d.rms / double(reference.size()));
+    d.rmsObject = objectPixels ? std::sqrt(d.rmsObject / double(objectPixels)) : 0.0;
+    d.rmsReceivers = others ? std::sqrt(d.rmsReceivers / double(others)) : 0.0;
+    return d;
+}
+
+// |reference - test| of the luminance, white at `fullScale`.
+void writeErrorMap(const std::filesystem::path& path, const DifferentialModel& m, const std::vector<glm::vec3>& reference,
+                   const std::vector<glm::vec3>& test, double fullScale) {
+    std::vector<uint8_t> rgb;
+    for (size_t k = 0; k < reference.size(); ++k) {
+        const double e = (double(luminance(reference[k])) - double(luminance(test[k]))) / fullScale;
+        // Red where the composite is too dark, blue where too bright.
+        const uint8_t v = uint8_t(std::clamp(std::abs(e), 0.0, 1.0) * 255.0);
+        rgb.insert(rgb.end(), {e > 0 ? v : uint8_t(0), uint8_t(0), e < 0 ? v : uint8_t(0)});
+    }
+    writePng(path, m.camera.width, m.camera.height, rgb);
+}
+
+nlohmann::ordered_json statsJson(const std::vector<TechniqueStat>& stats) {
+    nlohmann::ordered_json json;
+    for (const TechniqueStat& s : stats) json[s.name] = s.value;
+    return json;
+}
+
+// "f<frame>-n<passes>", n "all" for 0 (built by appends: GCC 12 warns wrongly of an
+// overlapping copy in a chain of string +).
+std::string frameName(int frame, int passes) {
+    std::string name = "f";
+    name += std::to_string(frame);
+    name += "-n";
+    name += passes > 0 ? std::to_string(passes) : "all";
+    return name;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The frame, and the median wall time of `runs` of it after the warm-up.
+CompositeFrame timedFrame(const DifferentialModel& m, const PreparedObject& object, const glm::mat4& placement,
+                          const CompositeSettings& settings, const CompositeArgs& a, double& medianMs) {
+    for (int w = 0; w < a.warmupRuns; ++w) compositeFrame(m, object, placement, settings);
+    std::vector<double> times;
+    CompositeFrame frame;
+    for (int r = 0; r < std::max(1, a.runs); ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        frame = compositeFrame(m, object, placement, settings);
+        times.push_back(millisecondsSince(start));
+    }
+    std::sort(times.begin(), times.end());
+    medianMs = times[times.size() / 2];
+    return frame;
+}
+
+void run(const CompositeArgs& a) {
+    const CompositingScene scene = compositingCase(a);
+    std::vector<int> frames = a.frames;
+    if (frames.empty()) {
+        for (int k = 0; k < int(scene.object.path.size()); ++k) frames.push_back(k);
+    }
+    for (int k : frames) {
+        if (k < 0 || k >= int(scene.object.path.size())) throw std::invalid_argument("composite: no such frame in the path");
+    }
+    const std::filesystem::path dir(a.outDir);
+    std::filesystem::create_directories(dir);
+    PreprocessSettings preprocessSettings;
+    preprocessSettings.sourceShare = a.sourceShare;
+    const auto start = std::chrono::steady_clock::now();
+    const DifferentialModel m = preprocess(scene, preprocessSettings);
+    const PreparedObject object = prepareObject(m, scene.object, {a.shadowTriangles, 0.15});
+    const double preprocessMs = millisecondsSince(start);
+    writeImage(dir, "background", m, m.background, false);
+    nlohmann::ordered_json json = {{"case", scene.name}, {"width", a.width}, {"height", a.height},
+                                   {"threads", a.threads}, {"preprocess_ms", preprocessMs},
+                                   {"preprocess", statsJson(m.stats)}, {"frames", nlohmann::ordered_json::array()}};
+    std::printf("%s: preprocessed in %.0f ms (%zu sources, %zu receiver patches, %zu shaft leaves)\n", scene.name.c_str(),
+                preprocessMs, m.transfers.sources.size(), m.transfers.receiverPatches.size(), m.shafts.leafCount());
+    for (const int k : frames) {
+        const glm::mat4& placement = scene.object.path[size_t(k)];
+        nlohmann::ordered_json frameJson = {{"frame", k}, {"passes", nlohmann::ordered_json::array()}};
+        std::vector<glm::vec3> reference;
+        if (a.reference) {
+            const auto referenceStart = std::chrono::steady_clock::now();
+            reference = differentialReference(m, object, placement);
+            frameJson["reference_ms"] = millisecondsSince(referenceStart);
+            writeImage(dir, "reference-f" + std::to_string(k), m, reference, false);
+            // The shadow's own size: the error of leaving the photograph as it is.
+            double sum = 0.0;
+            for (size_t p = 0; p < reference.size(); ++p) {
+                const double e = double(luminance(reference[p])) - double(luminance(m.background[p]));
+                sum += e * e;
+            }
+            frameJson["rms_background_radiance"] = std::sqrt(sum / double(reference.size()));
+        }
+        for (const int n : a.passes) {
+            CompositeSettings settings;
+            settings.passes = n, settings.mapSize = a.mapSize, settings.ldr = a.ldr, settings.keepMasks = a.masks;
+            double ms = 0.0;
+            const CompositeFrame frame = timedFrame(m, object, placement, settings, a, ms);
+            const std::string name = frameName(k, n);
+            writeImage(dir, (a.ldr ? "composite-ldr-" : "composite-") + name, m, frame.image, a.ldr);
+            writeOverlay(dir / ("listed-" + name + ".png"), m, frame.listedReceiverPixels, 1, {0.2f, 0.6f, 1.0f});
+            writeOverlay(dir / ("shadowing-" + name + ".png"), m, frame.shadowingClusters, std::max<int>(1, int(frame.clusters.size())),
+                         {1.0f, 0.3f, 0.1f});
+            for (size_t c = 0; c < frame.clusterMasks.size(); ++c) {
+                writeOverlay(dir / ("mask-" + name + "-c" + std::to_string(c) + ".png"), m, frame.clusterMasks[c], 1, {1.0f, 0.9f, 0.2f});
+            }
+            nlohmann::ordered_json row = {{"passes", n}, {"median_ms", ms}, {"stats", statsJson(frame.stats)}};
+            if (a.reference && !a.ldr) {
+                const Difference d = difference(reference, frame);
+                row["rms_radiance"] = d.rms, row["max_radiance"] = d.max;
+                row["rms_object_radiance"] = d.rmsObject, row["rms_receivers_radiance"] = d.rmsReceivers;
+                writeErrorMap(dir / ("error-" + name + ".png"), m, reference, frame.image, 0.05);
+                std::printf("frame %d, n = %s: %.2f ms, %zu clusters, RMS %.5f against the reference (object %.5f, the rest %.5f)\n", k,
+                            n > 0 ? std::to_string(n).c_str() : "all", ms, frame.clusters.size(), d.rms, d.rmsObject, d.rmsReceivers);
+            } else {
+                std::printf("frame %d, n = %s: %.2f ms, %zu clusters\n", k, n > 0 ? std::to_string(n).c_str() : "all", ms,
+                            frame.clusters.size());
+            }
+            frameJson["passes"].push_back(row);
+        }
+        json["frames"].push_back(frameJson);
+    }
+    writeTextFile(dir / "composite.json", json.dump(2) + "\n");
+}
+
+}  // namespace
+
+void runCompositeCommand(const CompositeArgs& args) {
+    withThreads(args.threads, [&args] { run(args); });
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,26 @@
+// `shadowlab composite CASE`: differential rendering of a synthetic object's shadows into a
+// photograph (Gibson et al. 2003; docs/differential-rendering.md). Preprocesses the case
+// once, then for each frame of the object's path and each number of passes composites the
+// frame (timed: the median of the runs after a warm-up), renders the exact differential
+// reference, and writes the images, the intermediate buffers and the figures (JSON).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+struct CompositeArgs {
+    std::string scene = "room";                 // room, room-lift
+    std::vector<int> passes{10, 20, 50, 0};      // 0: one per occluded source ("all")
+    std::vector<int> frames;                     // of the path; empty: every frame
+    int width = 640, height = 400, mapSize = 512, shadowTriangles = 300;
+    int runs = 1, warmupRuns = 0, threads = 0;
+    double sourceShare = 0.7;
+    bool ldr = false, reference = true, masks = false;
+    std::string outDir = "out/composite";
+};
+
+void runCompositeCommand(const CompositeArgs& args);
+
+}  // namespace shadowlab
