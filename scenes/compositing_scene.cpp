@@ -53,10 +53,13 @@ PatchModel flattenPatches(const std::vector<PatchSurface>& surfaces) {
         requireValid(surface);
         const glm::dvec3 normal = glm::normalize(glm::cross(surface.edgeU, surface.edgeV));
         const uint32_t first = uint32_t(model.vertices.size());
+        const glm::dvec3 centre = surface.origin + 0.5 * (surface.edgeU + surface.edgeV);
         const int nu = surface.cellsU, nv = surface.cellsV;
         for (int b = 0; b <= nv; ++b) {
             for (int a = 0; a <= nu; ++a) {
-                model.vertices.push_back(surface.origin + surface.edgeU * (double(a) / nu) + surface.edgeV * (double(b) / nv));
+                const glm::dvec3 vertex = surface.origin + surface.edgeU * (double(a) / nu) + surface.edgeV * (double(b) / nv);
+                model.vertices.push_back(vertex);
+                model.vertexInside.push_back(vertex + 1e-4 * (centre - vertex));
                 model.vertexNormal.push_back(normal);
                 model.vertexSurface.push_back(s);
                 model.vertexReflectance.push_back(surface.reflectance);

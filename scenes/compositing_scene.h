@@ -47,6 +47,10 @@ struct PatchModel {
     std::vector<glm::dvec3> vertexNormal;     // its surface's front
     std::vector<uint32_t> vertexSurface;
     std::vector<glm::dvec3> vertexReflectance;   // its surface's
+    // Where a vertex's light is evaluated: 1e-4 of the way towards its surface's centre, so
+    // that a ray from a vertex on an edge its surface shares with another (the floor's
+    // along a wall) does not start on the other surface and find it in the way.
+    std::vector<glm::dvec3> vertexInside;
     std::vector<Patch> patches;
     // The corners of patch p, counter-clockwise from the front.
     std::array<glm::dvec3, 4> corners(uint32_t p) const;

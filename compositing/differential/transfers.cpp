@@ -57,7 +57,7 @@ TransferTable computeTransfers(const PatchModel& model, const std::vector<glm::d
     for (size_t s = 0; s < S; ++s) slotOf[table.sources[s]] = int32_t(s);
     tbb::parallel_for(size_t(0), table.vertices.size(), [&](size_t r) {
         const uint32_t v = table.vertices[r];
-        const glm::dvec3 x = model.vertices[v], n = model.vertexNormal[v];
+        const glm::dvec3 x = model.vertexInside[v], n = model.vertexNormal[v];
         const glm::dvec3 rho = model.vertexReflectance[v];
         const auto seen = [&](const glm::dvec3& q) { return modelRays.pointVisible(glm::vec3(x), glm::vec3(n), q); };
         // The source set is a subset of the radiant patches: its transfers are computed once,
