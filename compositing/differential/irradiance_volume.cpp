@@ -27,7 +27,13 @@ ShCoefficients incidentRadiance(const PatchModel& model, const std::vector<glm::
     ShCoefficients L;
     for (const uint32_t j : radiant) {
         const Patch& patch = model.patches[j];
-        const int n = sampling.samplesPerAxis(patch);
+        // A point sample stands for its stratum's solid angle only if the stratum is small
+        // against its distance: a patch near the probe (the floor under it) is cut finer,
+        // into strata at most half as wide as the patch's centre is far, up to 16 per side.
+        const std::array<glm::dvec3, 4> c = model.corners(j);
+        const double width = std::max(glm::length(c[2] - c[0]), glm::length(c[3] - c[1]));
+        const double distance = std::max(glm::length(model.centre(j) - x), 1e-9);
+        const int n = std::max(sampling.samplesPerAxis(patch), int(std::min(std::ceil(2.0 * width / distance), 16.0)));
         const double stratumArea = patch.area / double(n * n);
         Pcg32 rng = strataRandom(sampling, probe, j, model.patches.size());
         for (int b = 0; b < n; ++b) {
@@ -85,12 +91,17 @@ IrradianceVolume buildIrradianceVolume(const PatchModel& model, const std::vecto
                                        const PatchSampling& sampling) {
     if (!(spacing > 0.0)) throw std::invalid_argument("irradiance volume: the spacing must be positive");
     IrradianceVolume v;
-    v.bounds = bounds;
+    // Probes at the centres of the cells of a grid over the box, none on its faces: the
+    // floor under an object is on its box's face, and a probe there would lose every ray
+    // that grazes it. Points beyond the centres take the outer probes' light.
     double total = 1.0;
+    v.bounds = bounds;
     for (int a = 0; a < 3; ++a) {
         const double extent = bounds.max[a] - bounds.min[a];
-        v.probes[a] = extent > 0.0 ? int(std::min(std::ceil(extent / spacing), 1e6)) + 1 : 1;
-        total *= v.probes[a];
+        const double cells = extent > 0.0 ? std::min(std::ceil(extent / spacing), 1e6) : 1.0;
+        v.probes[a] = int(cells);
+        v.bounds.min[a] += 0.5 * extent / cells, v.bounds.max[a] -= 0.5 * extent / cells;
+        total *= cells;
     }
     if (total > 1e6) throw std::invalid_argument("irradiance volume: over 10^6 probes; use a larger spacing");
     v.irradiance.resize(size_t(total));

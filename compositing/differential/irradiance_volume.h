@@ -19,8 +19,8 @@
 namespace shadowlab {
 
 struct IrradianceVolume {
-    Aabb bounds;
-    glm::ivec3 probes{1};                             // per axis, at least 2 on an axis with extent
+    Aabb bounds;                                     // the probes' lattice (their outer centres)
+    glm::ivec3 probes{1};                            // per axis
     std::vector<ShCoefficients> irradiance;          // per probe, x fastest
     // The light gathered at x for normal n, over pi (what patch_light.h's gatheredRadiance
     // sums), x clamped into the box; never negative.
