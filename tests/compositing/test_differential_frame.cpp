@@ -1,0 +1,168 @@
+// A frame of differential rendering (compositing/differential/composite.h; Gibson et al.
+// 2003 sections 6.1 to 8) on the built-in room: with the object out of the way the
+// photograph comes back bit for bit; the composite approaches the exact differential
+// reference as the passes grow and takes most of the shadow; the object lifted off the
+// floor casts a fainter shadow (Figure 7); the LDR path stays within a few levels of the
+// HDR path's image; the same bytes for any thread count and SIMD level; bad settings refused.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "compositing/differential/differential_reference.h"
+#include "raster/thread_count.h"
+#include "shading/luminance.h"
+#include "tests/compositing/room_case.h"
+
+using namespace shadowlab;
+using namespace shadowlab::test;
+
+namespace {
+
+bool sameBytes(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
+}
+
+// RMS of the luminance difference over the pixels that are not the object's.
+double receiverRms(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b, const std::vector<uint8_t>& object) {
+    double sum = 0.0;
+    size_t count = 0;
+    for (size_t k = 0; k < a.size(); ++k) {
+        if (object[k]) continue;
+        const double e = double(luminance(a[k])) - double(luminance(b[k]));
+        sum += e * e, ++count;
+    }
+    return std::sqrt(sum / double(count));
+}
+
+CompositeSettings passes(int n, bool ldr = false) {
+    CompositeSettings settings;
+    settings.passes = n;
+    settings.ldr = ldr;
+    return settings;
+}
+
+}  // namespace
+
+TEST_CASE("differential frame: with the object out of every shaft the photograph comes back bit for bit") {
+    const RoomCase& room = smallRoom();
+    // Below the floor, outside the room: no shaft reaches it and the floor hides it.
+    const glm::mat4 away = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -50.0f, 0.0f)) * room.scene.object.path[0];
+    const CompositeFrame hdr = compositeFrame(room.model, room.object, away, passes(20));
+    CHECK(hdr.hits.sourcePatches.empty());
+    CHECK(hdr.clusters.empty());
+    CHECK(sameBytes(hdr.image, room.model.background));
+    const CompositeFrame ldr = compositeFrame(room.model, room.object, away, passes(20, true));
+    CHECK(sameBytes(ldr.image, photographIntensities(room.model)));
+    // In the room the object darkens the floor.
+    const CompositeFrame in = compositeFrame(room.model, room.object, room.scene.object.path[0], passes(20));
+    CHECK(!in.clusters.empty());
+    CHECK(!sameBytes(in.image, room.model.background));
+}
+
+TEST_CASE("differential frame: the composite approaches the exact reference as the passes grow") {
+    const RoomCase& room = smallRoom();
+    for (const int frame : {0, 5}) {
+        const glm::mat4& placement = room.scene.object.path[size_t(frame)];
+        const std::vector<glm::vec3> reference = differentialReference(room.model, room.object, placement);
+        const CompositeFrame one = compositeFrame(room.model, room.object, placement, passes(1));
+        const CompositeFrame ten = compositeFrame(room.model, room.object, placement, passes(10));
+        const CompositeFrame all = compositeFrame(room.model, room.object, placement, passes(0));
+        const double untouched = receiverRms(reference, room.model.background, all.objectPixels);
+        const double rmsOne = receiverRms(reference, one.image, one.objectPixels);
+        const double rmsTen = receiverRms(reference, ten.image, ten.objectPixels);
+        const double rmsAll = receiverRms(reference, all.image, all.objectPixels);
+        INFO("frame " << frame << ": photograph " << untouched << ", n = 1 " << rmsOne << ", n = 10 " << rmsTen << ", all " << rmsAll);
+        CHECK(rmsTen < 0.7 * rmsOne);
+        CHECK(rmsAll < 0.35 * untouched);
+        CHECK(int(all.clusters.size()) == int(all.hits.sourcePatches.size()));
+    }
+}
+
+// The darkest a shadow makes the floor: the largest share of a pixel's light taken off.
+double deepestShadow(const std::vector<glm::vec3>& background, const std::vector<glm::vec3>& image,
+                     const std::vector<uint8_t>& object) {
+    double deepest = 0.0;
+    for (size_t p = 0; p < image.size(); ++p) {
+        const double b = luminance(background[p]);
+        if (!object[p] && b > 0.0) deepest = std::max(deepest, 1.0 - luminance(image[p]) / b);
+    }
+    return deepest;
+}
+
+TEST_CASE("differential frame: the shadow fades as the object is lifted off the floor, as in the reference (Figure 7, left)") {
+    const CompositingScene scene = smallRoomScene(RoomPath::Lift);
+    const DifferentialModel model = preprocess(scene);
+    const PreparedObject object = prepareObject(model, scene.object);
+    double previous = 2.0, previousReference = 2.0;
+    for (size_t k = 0; k < scene.object.path.size(); k += 2) {
+        const CompositeFrame frame = compositeFrame(model, object, scene.object.path[k], passes(0));
+        const double deepest = deepestShadow(model.background, frame.image, frame.objectPixels);
+        const double reference =
+            deepestShadow(model.background, differentialReference(model, object, scene.object.path[k]), frame.objectPixels);
+        INFO("lift step " << k << ": deepest shadow " << deepest << ", the reference's " << reference);
+        CHECK(deepest > 0.0);
+        CHECK(deepest < previous);
+        CHECK(reference < previousReference);
+        // The source set and the 2% rule leave the dim sources' light (30% of the power) in
+        // the photograph: the composite's shadow is never deeper, and not much shallower.
+        CHECK(deepest <= reference + 0.02);
+        CHECK(deepest >= 0.5 * reference);
+        previous = deepest, previousReference = reference;
+    }
+}
+
+// The two-set estimate (Figure 4) is exact when the occluded sources are one of the two
+// sets and close when few are occluded, and drifts as more are (Figure 3): at contact, where
+// every source is hidden, both sets' transfers are taken from the top of the response curve.
+TEST_CASE("differential frame: the 8-bit path within 3 levels of the radiance path where a shadow takes under 20% of the light") {
+    const RoomCase& room = smallRoom();
+    const glm::mat4& placement = room.scene.object.path[5];
+    const CompositeFrame hdr = compositeFrame(room.model, room.object, placement, passes(20));
+    const CompositeFrame ldr = compositeFrame(room.model, room.object, placement, passes(20, true));
+    size_t light = 0, shadowed = 0;
+    double worstLight = 0.0, sum = 0.0;
+    for (size_t k = 0; k < hdr.image.size(); ++k) {
+        if (hdr.objectPixels[k] || !hdr.shadowingClusters[k]) continue;
+        const glm::dvec3 expected = glm::round(room.model.response(glm::dvec3(hdr.image[k])));
+        const glm::dvec3 d = glm::abs(expected - glm::dvec3(ldr.image[k]));
+        const double e = std::max({d.x, d.y, d.z});
+        ++shadowed, sum += e;
+        if (luminance(hdr.image[k]) > 0.8f * luminance(room.model.background[k])) ++light, worstLight = std::max(worstLight, e);
+    }
+    INFO(shadowed << " shadowed pixels, mean error " << sum / double(shadowed) << " levels; " << light
+                  << " with under 20% taken, worst " << worstLight);
+    CHECK(light > 20);
+    CHECK(worstLight <= 3.0);   // both images are rounded to whole levels
+    CHECK(sum / double(shadowed) < 2.0);
+}
+
+TEST_CASE("differential frame: the same bytes on 1 and 2 threads and at every SIMD level") {
+    const RoomCase& room = smallRoom();
+    const glm::mat4& placement = room.scene.object.path[3];
+    CompositeSettings settings = passes(20);
+    settings.simd = raster::SimdLevel::Scalar;
+    const CompositeFrame scalarOne = withThreads(1, [&] { return compositeFrame(room.model, room.object, placement, settings); });
+    settings.simd = raster::bestSimdLevel();
+    const CompositeFrame bestTwo = withThreads(2, [&] { return compositeFrame(room.model, room.object, placement, settings); });
+    CHECK(sameBytes(scalarOne.image, bestTwo.image));
+    CHECK(scalarOne.shadowingClusters == bestTwo.shadowingClusters);
+    const std::vector<glm::vec3> referenceOne = withThreads(1, [&] { return differentialReference(room.model, room.object, placement); });
+    const std::vector<glm::vec3> referenceTwo = withThreads(2, [&] { return differentialReference(room.model, room.object, placement); });
+    CHECK(sameBytes(referenceOne, referenceTwo));
+}
+
+TEST_CASE("differential frame: bad settings are refused") {
+    const RoomCase& room = smallRoom();
+    const glm::mat4& placement = room.scene.object.path[0];
+    CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, passes(-1)), std::invalid_argument);
+    CompositeSettings settings;
+    settings.mapSize = 8;
+    CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, settings), std::invalid_argument);
+    settings.mapSize = 1 << 20;
+    CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, settings), std::invalid_argument);
+}
