@@ -7,11 +7,15 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
+#include "compositing/differential/intensity_error.h"
 #include "compositing/differential/intensity_transfer.h"
+#include "raster/thread_count.h"
 #include "shading/tonemap.h"
 #include "tests/compositing/random_boxes.h"
+#include "tests/compositing/room_case.h"
 
 using namespace shadowlab;
 
@@ -113,4 +117,26 @@ TEST_CASE("intensity transfers: random occlusions of few of 50 sources err by a 
     CHECK(steps[15] < steps[30]);
     CHECK(steps[30] < steps[50]);
     CHECK(steps[50] > 2.0);   // all occluded, while the estimate assumed half: visibly off
+}
+
+using test::RoomCase;
+using test::smallRoom;
+
+TEST_CASE("intensity transfer error (Figure 3): none with nothing occluded, small for few, growing past the even split") {
+    const RoomCase& room = smallRoom();
+    const std::vector<IntensityErrorPoint> even = intensityTransferError(room.model.transfers, room.model.response, 0.5, 10);
+    const size_t S = room.model.transfers.sources.size();
+    REQUIRE(even.size() == S + 1);
+    CHECK(even[0].rmsLevels == 0.0);
+    CHECK(even[0].largestLevels == 0.0);
+    CHECK(even[1].rmsLevels < 0.5);
+    // Past half the sources both sets' transfers are taken from the top of the curve.
+    CHECK(even[S].rmsLevels > 5.0 * even[S / 4].rmsLevels);
+    // The same figures on any thread count; bad arguments refused.
+    const std::vector<IntensityErrorPoint> again =
+        withThreads(1, [&] { return intensityTransferError(room.model.transfers, room.model.response, 0.5, 10); });
+    for (size_t P = 0; P <= S; ++P) REQUIRE(again[P].rmsLevels == even[P].rmsLevels);
+    CHECK_THROWS_AS(intensityTransferError(room.model.transfers, room.model.response, 0.0, 10), std::invalid_argument);
+    CHECK_THROWS_AS(intensityTransferError(room.model.transfers, room.model.response, 1.0, 10), std::invalid_argument);
+    CHECK_THROWS_AS(intensityTransferError(room.model.transfers, room.model.response, 0.5, 0), std::invalid_argument);
 }
