@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "compositing/differential/composite.h"
+#include "app/line_plot.h"
 #include "compositing/differential/differential_reference.h"
+#include "compositing/differential/intensity_error.h"
 #include "raster/thread_count.h"
 #include "scenes/compositing_cases.h"
 #include "scenes/obj_reader.h"
@@ -120,6 +122,39 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The darkest a shadow makes a pixel off the object: the largest share of its light taken.
+double deepestShadow(const DifferentialModel& m, const std::vector<glm::vec3>& image, const std::vector<uint8_t>& object) {
+    double deepest = 0.0;
+    for (size_t k = 0; k < image.size(); ++k) {
+        const double b = luminance(m.background[k]);
+        if (!object[k] && b > 0.0) deepest = std::max(deepest, 1.0 - double(luminance(image[k])) / b);
+    }
+    return deepest;
+}
+
+std::string passesLabel(int n) { return n > 0 ? "n = " + std::to_string(n) : std::string("n = all"); }
+
+// Figure 3: the 8-bit path's RMS error against the share of sources occluded, for the
+// paper's even split and two uneven ones.
+void writeIntensityError(const std::filesystem::path& dir, const DifferentialModel& m) {
+    LinePlot plot{"8-bit path: error of the two-set estimate (Gibson et al. 2003, Figure 3)",
+                  "sources occluded, % of the source set", "RMS error, 8-bit levels", {}};
+    std::string csv = "first_set_percent,occluded,occluded_percent,rms_levels,largest_levels\n";
+    const double sources = double(m.transfers.sources.size());
+    for (const double share : {0.5, 0.25, 0.1}) {
+        PlotSeries series{"sets " + std::to_string(int(100 * share)) + "/" + std::to_string(int(100 - 100 * share)), {}, {}, {}};
+        for (const IntensityErrorPoint& p : intensityTransferError(m.transfers, m.response, share, 20)) {
+            const double percent = 100.0 * p.occluded / sources;
+            series.x.push_back(percent), series.y.push_back(p.rmsLevels);
+            csv += std::to_string(int(100 * share)) + "," + std::to_string(p.occluded) + "," + std::to_string(percent) + "," +
+                   std::to_string(p.rmsLevels) + "," + std::to_string(p.largestLevels) + "\n";
+        }
+        plot.series.push_back(std::move(series));
+    }
+    writeTextFile(dir / "ldr-error.csv", csv);
+    writeTextFile(dir / "ldr-error.svg", formatLinePlotSvg(plot));
+}
+
 // The frame, and the median wall time of `runs` of it after the warm-up.
 CompositeFrame timedFrame(const DifferentialModel& m, const PreparedObject& object, const glm::mat4& placement,
                           const CompositeSettings& settings, const CompositeArgs& a, double& medianMs) {
@@ -159,8 +194,14 @@ void run(const CompositeArgs& a) {
                                    {"preprocess", statsJson(m.stats)}, {"frames", nlohmann::ordered_json::array()}};
     std::printf("%s: preprocessed in %.0f ms (%zu sources, %zu receiver patches, %zu shaft leaves)\n", scene.name.c_str(),
                 preprocessMs, m.transfers.sources.size(), m.transfers.receiverPatches.size(), m.shafts.leafCount());
+    if (a.ldrError) writeIntensityError(dir, m);
+    LinePlot timeRms{scene.name + ": time against RMS (labels: passes n)", "median ms per frame", "RMS against the reference (luminance)", {}};
+    LinePlot depth{scene.name + ": the deepest shadow along the path", "frame of the path", "largest share of a pixel's light taken", {}};
+    for (const int n : a.passes) depth.series.push_back({passesLabel(n), {}, {}, {}});
+    depth.series.push_back({"reference", {}, {}, {}});
     for (const int k : frames) {
         const glm::mat4& placement = scene.object.path[size_t(k)];
+        PlotSeries frameSeries{"frame " + std::to_string(k), {}, {}, {}};
         nlohmann::ordered_json frameJson = {{"frame", k}, {"passes", nlohmann::ordered_json::array()}};
         std::vector<glm::vec3> reference;
         if (a.reference) {
@@ -176,7 +217,9 @@ void run(const CompositeArgs& a) {
             }
             frameJson["rms_background_radiance"] = std::sqrt(sum / double(reference.size()));
         }
-        for (const int n : a.passes) {
+        std::vector<uint8_t> objectPixels;
+        for (size_t i = 0; i < a.passes.size(); ++i) {
+            const int n = a.passes[i];
             CompositeSettings settings;
             settings.passes = n, settings.mapSize = a.mapSize, settings.ldr = a.ldr, settings.keepMasks = a.masks;
             double ms = 0.0;
@@ -190,11 +233,23 @@ void run(const CompositeArgs& a) {
                 writeOverlay(dir / ("mask-" + name + "-c" + std::to_string(c) + ".png"), m, frame.clusterMasks[c], 1, {1.0f, 0.9f, 0.2f});
             }
             nlohmann::ordered_json row = {{"passes", n}, {"median_ms", ms}, {"stats", statsJson(frame.stats)}};
+            row["clusters"] = nlohmann::ordered_json::array();
+            for (size_t c = 0; c < frame.clusters.size(); ++c) {
+                const glm::dvec3& l = frame.lights[c];
+                row["clusters"].push_back({{"sources", frame.clusters[c].patches.size()},
+                                           {"transfer_radiance", frame.clusters[c].transfer},
+                                           {"light", {l.x, l.y, l.z}}});
+            }
+            const double deepest = deepestShadow(m, frame.image, frame.objectPixels);
+            row["deepest_shadow_ratio"] = deepest;
+            objectPixels = frame.objectPixels;
+            if (!a.ldr) depth.series[i].x.push_back(k), depth.series[i].y.push_back(deepest);
             if (a.reference && !a.ldr) {
                 const Difference d = difference(reference, frame);
                 row["rms_radiance"] = d.rms, row["max_radiance"] = d.max;
                 row["rms_object_radiance"] = d.rmsObject, row["rms_receivers_radiance"] = d.rmsReceivers;
                 writeErrorMap(dir / ("error-" + name + ".png"), m, reference, frame.image, 0.05);
+                frameSeries.x.push_back(ms), frameSeries.y.push_back(d.rms), frameSeries.labels.push_back(passesLabel(n));
                 std::printf("frame %d, n = %s: %.2f ms, %zu clusters, RMS %.5f against the reference (object %.5f, the rest %.5f)\n", k,
                             n > 0 ? std::to_string(n).c_str() : "all", ms, frame.clusters.size(), d.rms, d.rmsObject, d.rmsReceivers);
             } else {
@@ -203,8 +258,17 @@ void run(const CompositeArgs& a) {
             }
             frameJson["passes"].push_back(row);
         }
+        if (a.reference && !objectPixels.empty()) {
+            const double deepest = deepestShadow(m, reference, objectPixels);
+            frameJson["reference_deepest_shadow_ratio"] = deepest;
+            depth.series.back().x.push_back(k), depth.series.back().y.push_back(deepest);
+        }
+        if (!frameSeries.x.empty()) timeRms.series.push_back(std::move(frameSeries));
         json["frames"].push_back(frameJson);
     }
+    if (!timeRms.series.empty()) writeTextFile(dir / "time-rms.svg", formatLinePlotSvg(timeRms));
+    std::erase_if(depth.series, [](const PlotSeries& series) { return series.x.empty(); });
+    if (!depth.series.empty()) writeTextFile(dir / "shadow-depth.svg", formatLinePlotSvg(depth));
     writeTextFile(dir / "composite.json", json.dump(2) + "\n");
 }
 

@@ -2,7 +2,9 @@
 // photograph (Gibson et al. 2003; docs/differential-rendering.md). Preprocesses the case
 // once, then for each frame of the object's path and each number of passes composites the
 // frame (timed: the median of the runs after a warm-up), renders the exact differential
-// reference, and writes the images, the intermediate buffers and the figures (JSON).
+// reference, and writes the images, the intermediate buffers, the figures (JSON) and their
+// plots: time against RMS per frame (time-rms.svg) and the deepest shadow along the path,
+// ours at each n and the reference's (shadow-depth.svg).
 #pragma once
 
 #include <string>
@@ -18,6 +20,7 @@ struct CompositeArgs {
     int runs = 1, warmupRuns = 0, threads = 0;
     double sourceShare = 0.7;
     bool ldr = false, reference = true, masks = false;
+    bool ldrError = false;   // Figure 3's experiment on the case's transfers (ldr-error.csv, .svg)
     std::string outDir = "out/composite";
 };
 

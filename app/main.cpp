@@ -412,6 +412,7 @@ void addCompositeCommand(CLI::App& app, CompositeArgs& a) {
     c->add_flag("--ldr", a.ldr, "composite the 8-bit photograph with intensity transfers");
     c->add_flag("!--no-reference", a.reference, "skip the exact reference");
     c->add_flag("--masks", a.masks, "write each cluster's mask");
+    c->add_flag("--ldr-error", a.ldrError, "also run Figure 3's experiment: the 8-bit path's error against the sources occluded");
     c->add_option("--runs", a.runs, "timed runs per frame (median)")->capture_default_str()->check(CLI::Range(1, 1000));
     c->add_option("--warmup", a.warmupRuns, "untimed runs first")->capture_default_str()->check(CLI::Range(0, 1000));
     c->add_option("--threads", a.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, kMaxThreads));

@@ -80,7 +80,7 @@ expect_png() {
 
 # ---- Help ---------------------------------------------------------------------------------
 expect_usage --help
-for command in render sweep merge-sweep compare bench scaling export-obj techniques environment; do
+for command in render sweep merge-sweep compare bench scaling export-obj techniques environment composite; do
     expect_usage "$command" --help
 done
 run techniques
@@ -123,6 +123,19 @@ if grep -q "neither OpenEXR nor Radiance HDR" "$err"; then pass; else fail "the 
 run environment "$maps/pmndrs_sky.hdr" --lights 8 --rotation 30 --phong 8 --ggx 0.5 --out "$scratch/env"
 if [ "$rc" -eq 0 ] && grep -q "8 median-cut and structured lights" "$out"; then pass; else fail "environment exited $rc: $(cat "$err")"; fi
 for image in environment sh-radiance sh-irradiance lights structured-lights prefiltered-phong-8 prefiltered-ggx-0.5 split-sum; do expect_png "$scratch/env/$image.png"; done
+expect_error "composite of an unknown case" composite no-such-room --width 32 --height 20 --out "$scratch/comp"
+expect_error "composite of a frame past the path" composite room --frames 99 --width 32 --height 20 --out "$scratch/comp"
+expect_error "composite with negative passes" composite room --passes -1 --width 32 --height 20 --out "$scratch/comp"
+run composite room-lift --width 48 --height 30 --frames 0,3 --passes 2,0 --ldr-error --out "$scratch/comp"
+if [ "$rc" -eq 0 ] && grep -q '"rms_radiance"' "$scratch/comp/composite.json" && grep -q "frame 3, n = all" "$out"; then
+    pass
+else
+    fail "composite exited $rc or wrote no figures: $(cat "$err")"
+fi
+for image in background reference-f3 composite-f3-n2 composite-f3-nall listed-f3-n2 shadowing-f3-nall error-f0-n2; do expect_png "$scratch/comp/$image.png"; done
+for plot in time-rms shadow-depth ldr-error; do
+    if grep -q "<polyline" "$scratch/comp/$plot.svg"; then pass; else fail "$plot.svg has no series"; fi
+done
 
 # ---- Whole or nothing -------------------------------------------------------------------
 # Every failure above named -o x.png: none may have left it, or a temporary of it.
