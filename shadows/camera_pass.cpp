@@ -10,6 +10,10 @@
 namespace shadowlab {
 
 GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd) {
+    return renderGBuffer(world, camera, simd, 0);
+}
+
+GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd, uint32_t firstKept) {
     raster::Framebuffer fb(camera.width, camera.height, {.primitiveId = true});
     fb.clearPrimitiveId(kNoTriangle);
     raster::PipelineState state;
@@ -17,7 +21,11 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
     state.output = raster::FragmentOutput::PrimitiveId;
     raster::Rasterizer rasterizer(simd);
     rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld(camera)));
-    return buildGBuffer(world, camera, fb.primitiveIdImage(), fb.depthImage());
+    std::vector<uint32_t> triangles = fb.primitiveIdImage();
+    if (firstKept > 0) {
+        for (uint32_t& t : triangles) t = t != kNoTriangle && t < firstKept ? kNoTriangle : t;
+    }
+    return buildGBuffer(world, camera, triangles, fb.depthImage());
 }
 
 GBuffer liftedReceivers(GBuffer g, const WorldGeometry& world, std::span<const float> liftM) {
