@@ -186,7 +186,9 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     std::vector<uint8_t> listedPatch(m.model.patches.size(), 0);
     for (const uint32_t slot : out.hits.receiverPatches) listedPatch[m.transfers.receiverPatches[slot]] = 1;
     timer.lap("transfer_sums");
-    const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, settings.simd);
+    const uint32_t modelTriangles = uint32_t(m.geometry.triangles.size());
+    // The model's pixels are the photograph's (m.pixels): only the object's are built.
+    const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, settings.simd, modelTriangles);
     timer.lap("camera");
     const size_t pixels = g.pixelCount();
     out.image = settings.ldr ? photographIntensities(m) : m.background;
@@ -196,12 +198,10 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     if (settings.keepMasks) out.clusterMasks.assign(maps.size(), std::vector<uint8_t>(pixels, 0));
     const double lift = object.levels.simplified.errorM() * largestScale(placement) + 0.005;
     const FrameContext f{m, object, maps, out.clusters, sums, listedPatch, lift, settings.ldr};
-    const uint32_t modelTriangles = uint32_t(m.geometry.triangles.size());
     tbb::parallel_for(0, g.height, [&](int j) {
         for (int i = 0; i < g.width; ++i) {
             const size_t k = g.index(i, j);
-            if (!g.hit[k]) continue;
-            out.image[k] = g.triangle[k] >= modelTriangles ? objectPixel(f, g, k, out) : receiverPixel(f, k, out.image[k], out);
+            out.image[k] = g.hit[k] ? objectPixel(f, g, k, out) : receiverPixel(f, k, out.image[k], out);
         }
     });
     timer.lap("composite");
