@@ -21,6 +21,7 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
+#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include "raster/fixed_point.h"
@@ -363,6 +364,22 @@ void writePng(const fs::path& path, int width, int height, const std::vector<uin
             throw std::runtime_error("stbi_write_png failed");
         }
     });
+}
+
+Image8 readImage8(const fs::path& path) {
+    int width = 0, height = 0, channels = 0;
+    if (stbi_info(path.c_str(), &width, &height, &channels) == 0) {
+        throw std::runtime_error("cannot read image " + quoted(path) + ": " + stbi_failure_reason());
+    }
+    if (width > 8192 || height > 8192) {
+        throw std::runtime_error("cannot read image " + quoted(path) + ": larger than 8192 pixels on a side");
+    }
+    const std::unique_ptr<unsigned char, decltype(&stbi_image_free)> pixels(
+        stbi_load(path.c_str(), &width, &height, &channels, 3), stbi_image_free);
+    if (!pixels) throw std::runtime_error("cannot read image " + quoted(path) + ": " + stbi_failure_reason());
+    Image8 image{width, height, {}};
+    image.rgb.assign(pixels.get(), pixels.get() + size_t(width) * size_t(height) * 3);
+    return image;
 }
 
 void writeFileAtomically(const fs::path& path, const std::function<void(const fs::path&)>& write) {

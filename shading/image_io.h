@@ -80,6 +80,15 @@ ImageChannels parseExr(const std::string& bytes, const std::filesystem::path& pa
 void writePng(const std::filesystem::path& path, int width, int height,
               const std::vector<uint8_t>& rgb);
 
+// An 8-bit image read by stb_image (PNG, JPEG and the other formats it knows), converted
+// to RGB, row 0 at the top. Throws std::runtime_error naming the file for one it cannot
+// read, or one over 8192 pixels on a side (checked before the pixels are decoded).
+struct Image8 {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgb;   // 3 bytes per pixel
+};
+Image8 readImage8(const std::filesystem::path& path);
+
 // Runs write(temporaryPath), then renames the temporary file to `path`. If write throws or
 // the rename fails, the temporary file is removed and std::runtime_error is thrown.
 void writeFileAtomically(const std::filesystem::path& path,
