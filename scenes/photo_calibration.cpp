@@ -1,0 +1,114 @@
+#include "scenes/photo_calibration.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "raster/portable_math.h"
+
+namespace shadowlab {
+namespace {
+
+// Every "key numbers..." line of the file, '#' lines and blank ones skipped.
+std::map<std::string, std::vector<double>> readKeyedNumbers(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot read calibration '" + path + "'");
+    std::map<std::string, std::vector<double>> lines;
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string key;
+        if (!(words >> key) || key[0] == '#') continue;
+        std::vector<double>& values = lines[key];
+        values.clear();
+        std::string word;
+        while (words >> word) {
+            try {
+                size_t used = 0;
+                values.push_back(std::stod(word, &used));
+                if (used != word.size()) throw std::invalid_argument(word);
+            } catch (const std::exception&) {
+                values.clear();
+                break;   // a line of text, not numbers: it cannot be a required key
+            }
+        }
+    }
+    return lines;
+}
+
+const std::vector<double>& numbers(const std::map<std::string, std::vector<double>>& lines, const std::string& key,
+                                   size_t count, const std::string& path) {
+    const auto it = lines.find(key);
+    if (it == lines.end() || it->second.size() != count) {
+        throw std::runtime_error("calibration '" + path + "': needs a line '" + key + "' of " + std::to_string(count) + " numbers");
+    }
+    for (double v : it->second) {
+        if (!std::isfinite(v)) throw std::runtime_error("calibration '" + path + "': '" + key + "' has a non-finite number");
+    }
+    return it->second;
+}
+
+}  // namespace
+
+PhotoCalibration readPhotoCalibration(const std::string& path) {
+    const auto lines = readKeyedNumbers(path);
+    PhotoCalibration c;
+    const std::vector<double>& size = numbers(lines, "image_size", 2, path);
+    const std::vector<double>& K = numbers(lines, "K", 9, path);
+    const std::vector<double>& R = numbers(lines, "R", 9, path);
+    const std::vector<double>& t = numbers(lines, "tvec", 3, path);
+    c.width = int(size[0]), c.height = int(size[1]);
+    if (c.width < 16 || c.height < 16 || c.width > 8192 || c.height > 8192 || double(c.width) != size[0] || double(c.height) != size[1]) {
+        throw std::runtime_error("calibration '" + path + "': the image size must be whole, 16 to 8192 pixels");
+    }
+    if (K[1] != 0.0 || K[3] != 0.0 || K[6] != 0.0 || K[7] != 0.0 || K[8] != 1.0 || !(K[0] > 0.0) || !(K[4] > 0.0)) {
+        throw std::runtime_error("calibration '" + path + "': K must be [fx 0 cx; 0 fy cy; 0 0 1] with positive focal lengths");
+    }
+    c.fx = K[0], c.cx = K[2], c.fy = K[4], c.cy = K[5];
+    for (int row = 0; row < 3; ++row) {
+        for (int col = 0; col < 3; ++col) c.R[col][row] = R[size_t(3 * row + col)];
+    }
+    const glm::dmat3 identity = glm::transpose(c.R) * c.R;
+    for (int a = 0; a < 3; ++a) {
+        for (int b = 0; b < 3; ++b) {
+            if (std::abs(identity[a][b] - (a == b ? 1.0 : 0.0)) > 1e-4) {
+                throw std::runtime_error("calibration '" + path + "': R is not a rotation");
+            }
+        }
+    }
+    if (glm::determinant(c.R) < 0.0) throw std::runtime_error("calibration '" + path + "': R is a reflection");
+    c.t = {t[0], t[1], t[2]};
+    return c;
+}
+
+Camera cameraOf(const PhotoCalibration& c, const glm::dmat4& worldFromTarget, glm::ivec2& crop, double& offAxisPixels) {
+    if (std::abs(c.fx - c.fy) > 0.01 * c.fx) throw std::invalid_argument("photo camera: fx and fy differ (square pixels only)");
+    // The principal point in our pixel coordinates (centres at whole + 0.5).
+    const double px = c.cx + 0.5, py = c.cy + 0.5;
+    const int halfWidth = int(std::floor(std::min(px, double(c.width) - px))) - 1;
+    const int halfHeight = int(std::floor(std::min(py, double(c.height) - py))) - 1;
+    if (halfWidth < 8 || halfHeight < 8) throw std::invalid_argument("photo camera: the principal point is too near the edge");
+    crop = {int(std::lround(px - halfWidth)), int(std::lround(py - halfHeight))};
+    offAxisPixels = std::hypot(px - (crop.x + halfWidth), py - (crop.y + halfHeight));
+    const glm::dmat3 targetFromCamera = glm::transpose(c.R);
+    const glm::dvec3 centre = -(targetFromCamera * c.t);
+    const glm::dmat3 rotation(worldFromTarget);
+    const glm::dvec3 eye = glm::dvec3(worldFromTarget * glm::dvec4(centre, 1.0));
+    // OpenCV looks down +z with +y down the image.
+    const glm::dvec3 forward = rotation * (targetFromCamera * glm::dvec3(0, 0, 1));
+    const glm::dvec3 up = rotation * (targetFromCamera * glm::dvec3(0, -1, 0));
+    Camera camera;
+    camera.eye = glm::vec3(eye);
+    camera.target = glm::vec3(eye + forward);
+    camera.up = glm::vec3(up);
+    camera.width = 2 * halfWidth, camera.height = 2 * halfHeight;
+    camera.fovyDeg = float(2.0 * portable::atan(double(halfHeight) / c.fy) * 180.0 / portable::detail::kPi);
+    camera.zNear = 0.01f, camera.zFar = 100.0f;
+    return camera;
+}
+
+}  // namespace shadowlab
