@@ -1,0 +1,20 @@
+// A distant environment as patches of a compositing model (issue 12's outdoor and photograph
+// cases): the map's upper half cut into columns x rows blocks of texels, each a rectangle
+// tangent to a dome of the given radius at the block's centre direction, facing in, with the
+// block's mean radiance (weighted by the texels' solid angles) and exactly its solid angle.
+// Gibson et al. 2003 map a light probe's radiance onto the scene's distant patches the same
+// way (section 3).
+#pragma once
+
+#include <vector>
+
+#include "scenes/compositing_scene.h"
+#include "shading/environment/environment_map.h"
+
+namespace shadowlab {
+
+// Throws std::invalid_argument for fewer than 4 columns or 1 row, or a radius that is not
+// positive.
+std::vector<PatchSurface> environmentDome(const EnvironmentMap& map, int columns, int rows, double radiusM);
+
+}  // namespace shadowlab
