@@ -13,10 +13,13 @@
 #include "app/line_plot.h"
 #include "compositing/differential/differential_reference.h"
 #include "compositing/differential/intensity_error.h"
+#include "compositing/differential/outdoor_case.h"
+#include "compositing/differential/photo_case.h"
 #include "raster/thread_count.h"
 #include "scenes/compositing_cases.h"
 #include "scenes/obj_reader.h"
 #include "scenes/scene_file.h"
+#include "shading/environment/environment_file.h"
 #include "shading/image_io.h"
 #include "shading/luminance.h"
 
@@ -27,7 +30,21 @@ CompositingScene compositingCase(const CompositeArgs& a) {
     const Mesh bunny = readObj(builtinSceneDir() + "/meshes/bunny_low.obj");
     if (a.scene == "room") return compositingRoom(bunny, RoomPath::UnderDesk, a.width, a.height);
     if (a.scene == "room-lift") return compositingRoom(bunny, RoomPath::Lift, a.width, a.height);
-    throw std::invalid_argument("composite: unknown case '" + a.scene + "' (room, room-lift)");
+    if (a.scene == "outdoor") {
+        OutdoorSettings settings;
+        settings.width = a.width, settings.height = a.height;
+        return compositingOutdoor(readEnvironmentMap(builtinSceneDir() + "/environments/blender_forest.exr"), bunny, settings);
+    }
+    if (a.scene == "chessboard") {
+        const std::string dir = builtinSceneDir() + "/photos/";
+        const PhotoCase c = compositingChessboard(readImage8(dir + "chessboard_left05_undistorted.png"),
+                                                  readPhotoCalibration(dir + "chessboard_left05_camera.txt"),
+                                                  readEnvironmentMap(builtinSceneDir() + "/environments/blender_interior.exr"), bunny);
+        std::printf("chessboard: the photograph's window %d x %d from (%d, %d), principal point %.2f px off its centre\n",
+                    c.scene.camera.width, c.scene.camera.height, c.crop.x, c.crop.y, c.offAxisPixels);
+        return c.scene;
+    }
+    throw std::invalid_argument("composite: unknown case '" + a.scene + "' (room, room-lift, outdoor, chessboard)");
 }
 
 // What a PNG shows: the camera's 8-bit response to radiance (the LDR path's images are
