@@ -90,18 +90,19 @@ void writeOverlay(const std::filesystem::path& path, const DifferentialModel& m,
 struct Difference {
     double rms = 0.0, max = 0.0, rmsObject = 0.0, rmsReceivers = 0.0;
 };
-Difference difference(const std::vector<glm::vec3>& reference, const CompositeFrame& frame) {
+Difference difference(const std::vector<glm::vec3>& reference, const std::vector<glm::vec3>& image,
+                      const std::vector<uint8_t>& objectPixels) {
     Difference d;
-    size_t objectPixels = 0;
+    size_t objectCount = 0;
     for (size_t k = 0; k < reference.size(); ++k) {
-        const double e = double(luminance(reference[k])) - double(luminance(frame.image[k]));
+        const double e = double(luminance(reference[k])) - double(luminance(image[k]));
         d.rms += e * e, d.max = std::max(d.max, std::abs(e));
-        (frame.objectPixels[k] ? d.rmsObject : d.rmsReceivers) += e * e;
-        objectPixels += frame.objectPixels[k];
+        (objectPixels[k] ? d.rmsObject : d.rmsReceivers) += e * e;
+        objectCount += objectPixels[k];
     }
-    const size_t others = reference.size() - objectPixels;
+    const size_t others = reference.size() - objectCount;
     d.rms = std::sqrt(d.rms / double(reference.size()));
-    d.rmsObject = objectPixels ? std::sqrt(d.rmsObject / double(objectPixels)) : 0.0;
+    d.rmsObject = objectCount ? std::sqrt(d.rmsObject / double(objectCount)) : 0.0;
     d.rmsReceivers = others ? std::sqrt(d.rmsReceivers / double(others)) : 0.0;
     return d;
 }
@@ -201,12 +202,16 @@ void run(const CompositeArgs& a) {
     std::filesystem::create_directories(dir);
     PreprocessSettings preprocessSettings;
     preprocessSettings.sourceShare = a.sourceShare;
+    preprocessSettings.significance = a.significance;
     const auto start = std::chrono::steady_clock::now();
     const DifferentialModel m = preprocess(scene, preprocessSettings);
     const PreparedObject object = prepareObject(m, scene.object, {a.shadowTriangles, 0.15});
     const double preprocessMs = millisecondsSince(start);
     writeImage(dir, "background", m, m.background, false);
-    nlohmann::ordered_json json = {{"case", scene.name}, {"width", a.width}, {"height", a.height},
+    nlohmann::ordered_json json = {{"case", scene.name}, {"width", m.camera.width}, {"height", m.camera.height},
+                                   {"source_share", a.sourceShare}, {"significance", a.significance},
+                                   {"reference_strata", a.referenceStrata}, {"map_texels", a.mapSize},
+                                   {"runs", a.runs}, {"warmup_runs", a.warmupRuns},
                                    {"threads", a.threads}, {"preprocess_ms", preprocessMs},
                                    {"preprocess", statsJson(m.stats)}, {"frames", nlohmann::ordered_json::array()}};
     std::printf("%s: preprocessed in %.0f ms (%zu sources, %zu receiver patches, %zu shaft leaves)\n", scene.name.c_str(),
@@ -223,8 +228,18 @@ void run(const CompositeArgs& a) {
         std::vector<glm::vec3> reference;
         if (a.reference) {
             const auto referenceStart = std::chrono::steady_clock::now();
-            reference = differentialReference(m, object, placement);
+            PatchSampling strata = referenceSampling();
+            strata.emitterSamplesPerAxis = a.referenceStrata.at(0), strata.reflectorSamplesPerAxis = a.referenceStrata.at(1);
+            reference = differentialReference(m, object, placement, strata);
             frameJson["reference_ms"] = millisecondsSince(referenceStart);
+            if (a.referenceConvergence) {
+                PatchSampling denser = strata;
+                denser.emitterSamplesPerAxis *= 2, denser.reflectorSamplesPerAxis *= 2, denser.seed += 1;
+                const std::vector<glm::vec3> dense = differentialReference(m, object, placement, denser);
+                const double change = difference(reference, dense, std::vector<uint8_t>(dense.size(), 0)).rms;
+                frameJson["reference_convergence_rms_radiance"] = change;
+                std::printf("frame %d: the reference at twice the strata per side differs by RMS %.6f\n", k, change);
+            }
             writeImage(dir, "reference-f" + std::to_string(k), m, reference, false);
             // The shadow's own size: the error of leaving the photograph as it is.
             double sum = 0.0;
@@ -262,7 +277,7 @@ void run(const CompositeArgs& a) {
             objectPixels = frame.objectPixels;
             if (!a.ldr) depth.series[i].x.push_back(k), depth.series[i].y.push_back(deepest);
             if (a.reference && !a.ldr) {
-                const Difference d = difference(reference, frame);
+                const Difference d = difference(reference, frame.image, frame.objectPixels);
                 row["rms_radiance"] = d.rms, row["max_radiance"] = d.max;
                 row["rms_object_radiance"] = d.rmsObject, row["rms_receivers_radiance"] = d.rmsReceivers;
                 writeErrorMap(dir / ("error-" + name + ".png"), m, reference, frame.image, 0.05);

@@ -18,9 +18,11 @@ struct CompositeArgs {
     std::vector<int> frames;                     // of the path; empty: every frame
     int width = 640, height = 400, mapSize = 256, shadowTriangles = 300;
     int runs = 1, warmupRuns = 0, threads = 0;
-    double sourceShare = 0.7;
+    double sourceShare = 0.7, significance = 0.02;
+    std::vector<int> referenceStrata{8, 2};   // per side of an emitting and of a reflecting patch
     bool ldr = false, reference = true, masks = false;
-    bool ldrError = false;   // Figure 3's experiment on the case's transfers (ldr-error.csv, .svg)
+    bool ldrError = false;
+    bool referenceConvergence = false;   // also the reference at twice the strata per side, and their RMS difference   // Figure 3's experiment on the case's transfers (ldr-error.csv, .svg)
     std::string outDir = "out/composite";
 };
 
