@@ -7,6 +7,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "compositing/differential/frame_transfers.h"
+#include "scenes/float_range.h"
 #include "shadows/camera_pass.h"
 #include "shadows/stage_timer.h"
 
@@ -15,34 +17,15 @@ namespace {
 
 Aabb pathBounds(const ObjectLevels& levels, const std::vector<glm::mat4>& path) {
     Aabb box = boundsOf(placed(levels.whole, path.front()));
-    for (const glm::mat4& placement : path) {
-        const Aabb b = boundsOf(placed(levels.whole, placement));
+    for (size_t k = 1; k < path.size(); ++k) {
+        const Aabb b = boundsOf(placed(levels.whole, path[k]));
         box.min = glm::min(box.min, b.min), box.max = glm::max(box.max, b.max);
     }
     return box;
 }
 
-// Per cluster and receiver row, the sum of the cluster's transfers (radiance or intensity)
-// at the rows of the listed receivers; other rows stay 0.
-std::vector<glm::vec3> clusterSums(const DifferentialModel& m, const std::vector<SourceCluster>& clusters,
-                                   const std::vector<uint32_t>& listedReceivers, const std::vector<glm::vec3>& table) {
-    const size_t rows = m.transfers.vertices.size(), S = m.transfers.sources.size();
-    std::vector<glm::vec3> sums(clusters.size() * rows, glm::vec3(0.0f));
-    std::vector<uint8_t> listedRow(rows, 0);
-    for (const uint32_t slot : listedReceivers) {
-        for (const uint32_t v : m.model.patches[m.transfers.receiverPatches[slot]].vertex) {
-            listedRow[size_t(m.transfers.rowOfVertex[v])] = 1;
-        }
-    }
-    tbb::parallel_for(size_t(0), clusters.size(), [&](size_t c) {
-        for (size_t r = 0; r < rows; ++r) {
-            if (!listedRow[r]) continue;
-            glm::vec3 sum(0.0f);
-            for (const uint32_t s : clusters[c].patches) sum += table[r * S + s];
-            sums[c * rows + r] = sum;
-        }
-    });
-    return sums;
+void requireFinite(const glm::mat4& placement, const char* who) {
+    if (!allFinite(placement)) throw std::invalid_argument(std::string(who) + ": a placement is not finite");
 }
 
 // The cluster's light: the centre of its patch with the largest transfer (section 8).
@@ -55,7 +38,8 @@ glm::dvec3 clusterLight(const DifferentialModel& m, const SourceCluster& cluster
 }
 
 // What patch j sends a point of the object, B_j A_j cos cos / (pi r^2) (the form factor of a
-// small patch seen from afar): the light a self-shadowed point loses to a cluster.
+// small patch seen from afar; section 7.2 approximates the object's transfers so): the light
+// a self-shadowed point loses to a cluster, if the model lets it through (`open`).
 glm::dvec3 pointTransfer(const DifferentialModel& m, uint32_t patch, const glm::dvec3& x, const glm::dvec3& n) {
     const Patch& p = m.model.patches[patch];
     const glm::dvec3 d = m.model.centre(patch) - x;
@@ -70,8 +54,12 @@ struct FrameContext {
     const PreparedObject& object;
     const std::vector<ClusterMap>& maps;
     const std::vector<SourceCluster>& clusters;
-    const std::vector<glm::vec3>& sums;
+    const std::vector<glm::vec3>& sums;       // clusterTransfers
     const std::vector<uint8_t>& listedPatch;
+    // Per source slot, whether the model lets its light reach the object's centre: the
+    // irradiance volume already left out what the model hides (the desk over the object),
+    // so a self-shadow must not take it off again.
+    const std::vector<uint8_t>& openToObject;
     double lift;   // m, object points move out along their normal before their own maps
     bool ldr;
 };
@@ -84,20 +72,20 @@ glm::vec3 receiverPixel(const FrameContext& f, size_t k, const glm::vec3& photo,
     const glm::vec2 uv = f.m.pixels.uv[k];
     const float w[4] = {(1 - uv.x) * (1 - uv.y), uv.x * (1 - uv.y), uv.x * uv.y, (1 - uv.x) * uv.y};
     const size_t rows = f.m.transfers.vertices.size();
+    size_t row[4];
+    for (int corner = 0; corner < 4; ++corner) row[corner] = size_t(f.m.transfers.rowOfVertex[f.m.model.patches[p].vertex[corner]]);
     glm::vec3 taken(0.0f);
     uint8_t shadowing = 0;
     for (size_t c = 0; c < f.maps.size(); ++c) {
         if (!occluded(f.maps[c], P)) continue;
         ++shadowing;
         if (!out.clusterMasks.empty()) out.clusterMasks[c][k] = 1;
-        for (int corner = 0; corner < 4; ++corner) {
-            const size_t row = size_t(f.m.transfers.rowOfVertex[f.m.model.patches[p].vertex[corner]]);
-            taken += w[corner] * f.sums[c * rows + row];
-        }
+        for (int corner = 0; corner < 4; ++corner) taken += w[corner] * f.sums[c * rows + row[corner]];
     }
     out.listedReceiverPixels[k] = 1;
     out.shadowingClusters[k] = shadowing;
-    return glm::max(photo - taken, glm::vec3(0.0f));
+    const glm::vec3 result = glm::max(photo - taken, glm::vec3(0.0f));
+    return f.ldr ? glm::round(result) : result;   // an 8-bit frame buffer keeps whole levels
 }
 
 // An object pixel: its albedo times the irradiance volume's light, less what its own maps
@@ -109,12 +97,55 @@ glm::vec3 objectPixel(const FrameContext& f, const GBuffer& g, size_t k, Composi
     for (size_t c = 0; c < f.maps.size(); ++c) {
         if (!occluded(f.maps[c], x + f.lift * glm::dvec3(g.normal[k]))) continue;
         ++shadowing;
-        for (const uint32_t s : f.clusters[c].patches) light -= pointTransfer(f.m, f.m.transfers.sources[s], x, n);
+        for (const uint32_t s : f.clusters[c].patches) {
+            if (f.openToObject[s]) light -= pointTransfer(f.m, f.m.transfers.sources[s], x, n);
+        }
     }
     out.objectPixels[k] = 1;
     out.shadowingClusters[k] = shadowing;
     const glm::dvec3 radiance = glm::dvec3(f.object.levels.whole.materials[0].albedo) * glm::max(light, glm::dvec3(0.0));
     return f.ldr ? glm::vec3(glm::round(f.m.response(radiance))) : glm::vec3(radiance);
+}
+
+// One shadow map per cluster, from its light, of the simplified object (section 7.2); the
+// lights go to `out`.
+std::vector<ClusterMap> clusterMaps(const DifferentialModel& m, const PreparedObject& object, const glm::mat4& placement,
+                                    const Aabb& box, const CompositeSettings& settings, CompositeFrame& out) {
+    const WorldGeometry casters = placed(object.levels.simplified.scene, placement);
+    const glm::dvec3 centre = 0.5 * (box.min + box.max);
+    const double radius = 0.5 * glm::length(box.max - box.min);
+    std::vector<ClusterMap> maps;
+    for (const SourceCluster& cluster : out.clusters) {
+        out.lights.push_back(clusterLight(m, cluster));
+        maps.push_back(clusterShadowMap(out.lights.back(), centre, radius, casters, settings.mapSize, settings.simd));
+    }
+    return maps;
+}
+
+// Per source slot: 1 if it is in a cluster and the model lets its patch's centre be seen
+// from the object's centre (one ray per clustered source and frame).
+std::vector<uint8_t> openToObject(const DifferentialModel& m, const std::vector<SourceCluster>& clusters, const glm::dvec3& centre) {
+    std::vector<uint8_t> open(m.transfers.sources.size(), 0);
+    for (const SourceCluster& cluster : clusters) {
+        for (const uint32_t s : cluster.patches) {
+            const glm::dvec3 target = m.model.centre(m.transfers.sources[s]);
+            const glm::dvec3 d = target - centre;
+            open[s] = glm::dot(d, d) > 0.0 && m.modelRays->pointVisible(glm::vec3(centre), glm::vec3(glm::normalize(d)), target);
+        }
+    }
+    return open;
+}
+
+void appendFrameStats(CompositeFrame& out, size_t objectTriangles, const Scene& shadowLevel) {
+    size_t shadowed = 0, shadowTriangles = 0;
+    for (size_t k = 0; k < out.shadowingClusters.size(); ++k) shadowed += out.shadowingClusters[k] > 0 && !out.objectPixels[k];
+    for (const Mesh& mesh : shadowLevel.meshes) shadowTriangles += mesh.triangles.size();
+    out.stats.push_back({"object_triangles", double(objectTriangles)});
+    out.stats.push_back({"shadow_map_triangles", double(shadowTriangles)});
+    out.stats.push_back({"listed_sources_count", double(out.hits.sourcePatches.size())});
+    out.stats.push_back({"listed_receivers_count", double(out.hits.receiverPatches.size())});
+    out.stats.push_back({"clusters_count", double(out.clusters.size())});
+    out.stats.push_back({"shadowed_pixels", double(shadowed)});
 }
 
 }  // namespace
@@ -142,18 +173,11 @@ Aabb boundsOf(const WorldGeometry& world) {
 
 PreparedObject prepareObject(const DifferentialModel& model, const SyntheticObject& object, const ObjectSettings& settings) {
     if (object.path.empty()) throw std::invalid_argument("synthetic object: its path has no frame");
+    for (const glm::mat4& placement : object.path) requireFinite(placement, "synthetic object");
     PreparedObject prepared{objectLevels(object, settings.shadowTriangles), {}, object.path};
     prepared.light = buildIrradianceVolume(model.model, model.radiance, *model.modelRays, pathBounds(prepared.levels, object.path),
                                            settings.probeSpacingM, model.settings.sampling);
     return prepared;
-}
-
-std::vector<glm::vec3> photographIntensities(const DifferentialModel& model) {
-    std::vector<glm::vec3> intensities(model.background.size());
-    for (size_t k = 0; k < intensities.size(); ++k) {
-        intensities[k] = glm::vec3(glm::round(model.response(glm::dvec3(model.background[k]))));
-    }
-    return intensities;
 }
 
 CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& object, const glm::mat4& placement,
@@ -162,10 +186,10 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     if (settings.mapSize < kMinMapResolution || settings.mapSize > kMaxMapResolution) {
         throw std::invalid_argument("differential composite: the map size is out of range");
     }
+    requireFinite(placement, "differential composite");
     StageTimer timer;
     CompositeFrame out;
     const WorldGeometry whole = placed(object.levels.whole, placement);
-    const WorldGeometry casters = placed(object.levels.simplified.scene, placement);
     const Aabb box = boundsOf(whole);
     timer.lap("object");
     out.hits = traverseShafts(m.shafts, m.sourceTree, m.receiverOctree, box);
@@ -173,31 +197,26 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     const int n = settings.passes > 0 ? settings.passes : std::max<int>(1, int(out.hits.sourcePatches.size()));
     if (!out.hits.sourcePatches.empty()) out.clusters = representativeSources(m.sourceTree, out.hits.sourcePatches, n);
     timer.lap("clusters");
-    const glm::dvec3 centre = 0.5 * (box.min + box.max);
-    const double radius = 0.5 * glm::length(box.max - box.min);
-    std::vector<ClusterMap> maps;
-    for (const SourceCluster& cluster : out.clusters) {
-        out.lights.push_back(clusterLight(m, cluster));
-        maps.push_back(clusterShadowMap(out.lights.back(), centre, radius, casters, settings.mapSize, settings.simd));
-    }
+    const std::vector<ClusterMap> maps = clusterMaps(m, object, placement, box, settings, out);
     timer.lap("shadow_maps");
-    const std::vector<glm::vec3> sums =
-        clusterSums(m, out.clusters, out.hits.receiverPatches, settings.ldr ? m.intensityTransfers : m.transfers.L);
+    const std::vector<uint8_t> rows = listedRows(m, out.hits.receiverPatches);
+    const std::vector<glm::vec3> sums = clusterTransfers(
+        m, out.clusters, rows, settings.ldr ? frameIntensityTransfers(m, out.hits.sourcePatches, rows) : m.transfers.L);
     std::vector<uint8_t> listedPatch(m.model.patches.size(), 0);
     for (const uint32_t slot : out.hits.receiverPatches) listedPatch[m.transfers.receiverPatches[slot]] = 1;
+    const std::vector<uint8_t> open = openToObject(m, out.clusters, 0.5 * (box.min + box.max));
     timer.lap("transfer_sums");
-    const uint32_t modelTriangles = uint32_t(m.geometry.triangles.size());
     // The model's pixels are the photograph's (m.pixels): only the object's are built.
-    const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, settings.simd, modelTriangles);
+    const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, settings.simd, uint32_t(m.geometry.triangles.size()));
     timer.lap("camera");
-    const size_t pixels = g.pixelCount();
-    out.image = settings.ldr ? photographIntensities(m) : m.background;
-    out.objectPixels.assign(pixels, 0);
-    out.listedReceiverPixels.assign(pixels, 0);
-    out.shadowingClusters.assign(pixels, 0);
-    if (settings.keepMasks) out.clusterMasks.assign(maps.size(), std::vector<uint8_t>(pixels, 0));
-    const double lift = object.levels.simplified.errorM() * largestScale(placement) + 0.005;
-    const FrameContext f{m, object, maps, out.clusters, sums, listedPatch, lift, settings.ldr};
+    out.image = settings.ldr ? m.photographIntensities : m.background;
+    out.objectPixels.assign(g.pixelCount(), 0);
+    out.listedReceiverPixels.assign(g.pixelCount(), 0);
+    out.shadowingClusters.assign(g.pixelCount(), 0);
+    if (settings.keepMasks) out.clusterMasks.assign(maps.size(), std::vector<uint8_t>(g.pixelCount(), 0));
+    // Object points are lifted past the simplified level's error and 1% of the object's size.
+    const double lift = object.levels.simplified.errorM() * largestScale(placement) + 0.005 * glm::length(box.max - box.min);
+    const FrameContext f{m, object, maps, out.clusters, sums, listedPatch, open, lift, settings.ldr};
     tbb::parallel_for(0, g.height, [&](int j) {
         for (int i = 0; i < g.width; ++i) {
             const size_t k = g.index(i, j);
@@ -206,14 +225,7 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     });
     timer.lap("composite");
     timer.appendTo(out.stats);
-    size_t shadowed = 0;
-    for (size_t k = 0; k < pixels; ++k) shadowed += out.shadowingClusters[k] > 0 && !out.objectPixels[k];
-    out.stats.push_back({"object_triangles", double(whole.triangles.size())});
-    out.stats.push_back({"shadow_map_triangles", double(casters.triangles.size())});
-    out.stats.push_back({"listed_sources_count", double(out.hits.sourcePatches.size())});
-    out.stats.push_back({"listed_receivers_count", double(out.hits.receiverPatches.size())});
-    out.stats.push_back({"clusters_count", double(out.clusters.size())});
-    out.stats.push_back({"shadowed_pixels", double(shadowed)});
+    appendFrameStats(out, whole.triangles.size(), object.levels.simplified.scene);
     return out;
 }
 

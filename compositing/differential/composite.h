@@ -38,7 +38,8 @@ struct ObjectSettings {
     double probeSpacingM = 0.15;
 };
 
-// Throws std::invalid_argument for an object with no triangle or no frame in its path.
+// Throws std::invalid_argument for an object with no triangle, no frame in its path or a
+// placement that is not finite.
 PreparedObject prepareObject(const DifferentialModel& model, const SyntheticObject& object,
                              const ObjectSettings& settings = {});
 
@@ -66,12 +67,10 @@ struct CompositeFrame {
     std::vector<std::vector<uint8_t>> clusterMasks;
 };
 
-// Throws std::invalid_argument for passes < 0 or a map size outside the depth map's range.
+// Throws std::invalid_argument for passes < 0, a map size outside the depth map's range or
+// a placement that is not finite.
 CompositeFrame compositeFrame(const DifferentialModel& model, const PreparedObject& object, const glm::mat4& placement,
                               const CompositeSettings& settings = {});
-
-// The photograph as the LDR path starts from it: T(background) rounded to 8 bits.
-std::vector<glm::vec3> photographIntensities(const DifferentialModel& model);
 
 // The model's triangles then the placed object's, as the camera draws them: a pixel on a
 // triangle past the model's is the object's. A patch's corner normals are its normal.

@@ -1,9 +1,10 @@
 #include "compositing/differential/preprocess.h"
 
+#include <cmath>
 #include <stdexcept>
 
-#include "compositing/differential/intensity_transfer.h"
 #include "compositing/differential/patch_radiance.h"
+#include "scenes/float_range.h"
 #include "shading/luminance.h"
 #include "shadows/stage_timer.h"
 
@@ -20,6 +21,13 @@ void requireValid(const CompositingScene& scene, const PreprocessSettings& setti
     const size_t pixels = size_t(scene.camera.width) * size_t(scene.camera.height);
     if (!scene.background.empty() && scene.background.size() != pixels) {
         throw std::invalid_argument("differential preprocessing: the background needs one value per pixel");
+    }
+    for (const glm::vec3& L : scene.background) {
+        if (!allFinite(L)) throw std::invalid_argument("differential preprocessing: the background has a non-finite value");
+    }
+    const CameraResponse& T = scene.response;
+    if (!(T.exposure > 0.0 && T.gamma > 0.0) || !std::isfinite(T.exposure) || !std::isfinite(T.gamma)) {
+        throw std::invalid_argument("differential preprocessing: the camera response needs a positive, finite exposure and gamma");
     }
 }
 
@@ -63,20 +71,6 @@ ShaftHierarchy prunedShafts(const DifferentialModel& m) {
     return buildShaftHierarchy(m.sourceTree, m.receiverOctree, significant);
 }
 
-std::vector<glm::vec3> intensityTransferTable(const TransferTable& t, const CameraResponse& T) {
-    const size_t S = t.sources.size();
-    std::vector<uint8_t> set(S);
-    for (size_t s = 0; s < S; ++s) set[s] = uint8_t(s % 2);
-    std::vector<glm::vec3> table(t.L.size());
-    std::vector<glm::dvec3> L(S), out(S);
-    for (size_t r = 0; r < t.vertices.size(); ++r) {
-        for (size_t s = 0; s < S; ++s) L[s] = glm::dvec3(t.L[r * S + s]);
-        intensityTransfers(t.total[r], std::span<const glm::dvec3>(L), std::span<const uint8_t>(set), T, std::span(out));
-        for (size_t s = 0; s < S; ++s) table[r * S + s] = glm::vec3(out[s]);
-    }
-    return table;
-}
-
 size_t shaftBytes(const ShaftHierarchy& shafts) {
     size_t bytes = shafts.nodes.size() * sizeof(ShaftNode);
     for (const ShaftNode& n : shafts.nodes) bytes += n.shaft.planes.size() * sizeof(ShaftPlane);
@@ -108,10 +102,13 @@ DifferentialModel preprocess(const CompositingScene& scene, const PreprocessSett
     m.background = scene.background.empty()
                        ? renderBackground(m.model, m.radiance, m.pixels, *m.modelRays, settings.sampling)
                        : scene.background;
+    m.photographIntensities.resize(m.background.size());
+    for (size_t k = 0; k < m.background.size(); ++k) {
+        m.photographIntensities[k] = glm::vec3(glm::round(m.response(glm::dvec3(m.background[k]))));
+    }
     timer.lap("background");
     m.transfers = computeTransfers(m.model, m.radiance, sourceSet(m.model, m.radiance, settings.sourceShare),
                                    receiverPatches(m.model, m.pixels), *m.modelRays, settings.sampling);
-    m.intensityTransfers = intensityTransferTable(m.transfers, m.response);
     timer.lap("transfers");
     const TransferTable& t = m.transfers;
     std::vector<Aabb> sourceBounds;

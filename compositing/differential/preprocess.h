@@ -40,10 +40,8 @@ struct DifferentialModel {
     PixelPatches pixels;
     std::vector<glm::vec3> background;       // the photograph, linear radiance
     TransferTable transfers;
-    // The LDR path's intensity transfers S_ij (section 7.1, Figure 4), laid out like
-    // transfers.L: the sources in their order (brightest first), even and odd columns the
-    // two sets, under the scene's camera response.
-    std::vector<glm::vec3> intensityTransfers;
+    // The photograph as the 8-bit path starts from it: round(T(background)) per channel.
+    std::vector<glm::vec3> photographIntensities;
     SourceTree sourceTree;                   // over source slots (columns of the transfers)
     ReceiverOctree receiverOctree;           // over receiver slots (TransferTable::receiverPatches)
     // Per source-tree node and receiver row, the luminance of the node's summed transfers.
@@ -57,7 +55,8 @@ struct DifferentialModel {
 };
 
 // Throws std::invalid_argument for a scene whose model is invalid (flattenPatches), whose
-// background is neither empty nor one value per pixel, or a share or significance outside
+// background is neither empty nor one finite value per pixel, whose camera response has an
+// exposure or gamma that is not positive and finite, or a share or significance outside
 // (0, 1].
 DifferentialModel preprocess(const CompositingScene& scene, const PreprocessSettings& settings = {});
 

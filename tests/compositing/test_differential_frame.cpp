@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -57,7 +58,7 @@ TEST_CASE("differential frame: with the object out of every shaft the photograph
     CHECK(hdr.clusters.empty());
     CHECK(sameBytes(hdr.image, room.model.background));
     const CompositeFrame ldr = compositeFrame(room.model, room.object, away, passes(20, true));
-    CHECK(sameBytes(ldr.image, photographIntensities(room.model)));
+    CHECK(sameBytes(ldr.image, room.model.photographIntensities));
     // In the room the object darkens the floor.
     const CompositeFrame in = compositeFrame(room.model, room.object, room.scene.object.path[0], passes(20));
     CHECK(!in.clusters.empty());
@@ -119,7 +120,7 @@ TEST_CASE("differential frame: the shadow fades as the object is lifted off the 
 // The two-set estimate (Figure 4) is exact when the occluded sources are one of the two
 // sets and close when few are occluded, and drifts as more are (Figure 3): at contact, where
 // every source is hidden, both sets' transfers are taken from the top of the response curve.
-TEST_CASE("differential frame: the 8-bit path within 3 levels of the radiance path where a shadow takes under 20% of the light") {
+TEST_CASE("differential frame: the 8-bit path within 2 levels of the radiance path where a shadow takes under 20% of the light") {
     const RoomCase& room = smallRoom();
     const glm::mat4& placement = room.scene.object.path[5];
     const CompositeFrame hdr = compositeFrame(room.model, room.object, placement, passes(20));
@@ -137,8 +138,8 @@ TEST_CASE("differential frame: the 8-bit path within 3 levels of the radiance pa
     INFO(shadowed << " shadowed pixels, mean error " << sum / double(shadowed) << " levels; " << light
                   << " with under 20% taken, worst " << worstLight);
     CHECK(light > 20);
-    CHECK(worstLight <= 3.0);   // both images are rounded to whole levels
-    CHECK(sum / double(shadowed) < 2.0);
+    CHECK(worstLight <= 2.0);   // one level of rounding (both are whole levels), one of the estimate
+    CHECK(sum / double(shadowed) < 1.5);
 }
 
 TEST_CASE("differential frame: the same bytes on 1 and 2 threads and at every SIMD level") {
@@ -156,7 +157,7 @@ TEST_CASE("differential frame: the same bytes on 1 and 2 threads and at every SI
     CHECK(sameBytes(referenceOne, referenceTwo));
 }
 
-TEST_CASE("differential frame: bad settings are refused") {
+TEST_CASE("differential frame: bad settings and placements are refused") {
     const RoomCase& room = smallRoom();
     const glm::mat4& placement = room.scene.object.path[0];
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, passes(-1)), std::invalid_argument);
@@ -165,4 +166,8 @@ TEST_CASE("differential frame: bad settings are refused") {
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, settings), std::invalid_argument);
     settings.mapSize = 1 << 20;
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, settings), std::invalid_argument);
+    glm::mat4 notFinite = placement;
+    notFinite[3].y = std::numeric_limits<float>::infinity();
+    CHECK_THROWS_AS(compositeFrame(room.model, room.object, notFinite, passes(10)), std::invalid_argument);
+    CHECK_THROWS_AS(differentialReference(room.model, room.object, notFinite), std::invalid_argument);
 }
