@@ -6,12 +6,14 @@
 #include <string>
 
 #include "raster/portable_math.h"
+#include "scenes/float_range.h"
 
 namespace shadowlab {
 namespace {
 
 void requireValid(const PatchSurface& s) {
     const std::string who = "compositing scene: surface '" + s.name + "' ";
+    if (!allFinite(s.origin)) throw std::invalid_argument(who + "has a non-finite origin");
     const double area = glm::length(glm::cross(s.edgeU, s.edgeV));
     if (!(area > 0.0) || !std::isfinite(area)) throw std::invalid_argument(who + "has no area");
     if (s.cellsU < 1 || s.cellsV < 1 || s.cellsU > 4096 || s.cellsV > 4096) {

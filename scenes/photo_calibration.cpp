@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -61,10 +62,12 @@ PhotoCalibration readPhotoCalibration(const std::string& path) {
     const std::vector<double>& K = numbers(lines, "K", 9, path);
     const std::vector<double>& R = numbers(lines, "R", 9, path);
     const std::vector<double>& t = numbers(lines, "tvec", 3, path);
-    c.width = int(size[0]), c.height = int(size[1]);
-    if (c.width < 16 || c.height < 16 || c.width > 8192 || c.height > 8192 || double(c.width) != size[0] || double(c.height) != size[1]) {
-        throw std::runtime_error("calibration '" + path + "': the image size must be whole, 16 to 8192 pixels");
+    for (const double side : size) {
+        if (!(side >= 16.0 && side <= 8192.0) || side != std::floor(side)) {
+            throw std::runtime_error("calibration '" + path + "': the image size must be whole, 16 to 8192 pixels");
+        }
     }
+    c.width = int(size[0]), c.height = int(size[1]);
     if (K[1] != 0.0 || K[3] != 0.0 || K[6] != 0.0 || K[7] != 0.0 || K[8] != 1.0 || !(K[0] > 0.0) || !(K[4] > 0.0)) {
         throw std::runtime_error("calibration '" + path + "': K must be [fx 0 cx; 0 fy cy; 0 0 1] with positive focal lengths");
     }
@@ -93,7 +96,8 @@ Camera cameraOf(const PhotoCalibration& c, const glm::dmat4& worldFromTarget, gl
     const int halfHeight = int(std::floor(std::min(py, double(c.height) - py))) - 1;
     if (halfWidth < 8 || halfHeight < 8) throw std::invalid_argument("photo camera: the principal point is too near the edge");
     crop = {int(std::lround(px - halfWidth)), int(std::lround(py - halfHeight))};
-    offAxisPixels = std::hypot(px - (crop.x + halfWidth), py - (crop.y + halfHeight));
+    const glm::dvec2 off(px - (crop.x + halfWidth), py - (crop.y + halfHeight));
+    offAxisPixels = std::sqrt(glm::dot(off, off));
     const glm::dmat3 targetFromCamera = glm::transpose(c.R);
     const glm::dvec3 centre = -(targetFromCamera * c.t);
     const glm::dmat3 rotation(worldFromTarget);
@@ -106,7 +110,7 @@ Camera cameraOf(const PhotoCalibration& c, const glm::dmat4& worldFromTarget, gl
     camera.target = glm::vec3(eye + forward);
     camera.up = glm::vec3(up);
     camera.width = 2 * halfWidth, camera.height = 2 * halfHeight;
-    camera.fovyDeg = float(2.0 * portable::atan(double(halfHeight) / c.fy) * 180.0 / portable::detail::kPi);
+    camera.fovyDeg = float(2.0 * portable::atan(double(halfHeight) / c.fy) * 180.0 / std::numbers::pi);
     camera.zNear = 0.01f, camera.zFar = 100.0f;
     return camera;
 }

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include "compositing/differential/patch_radiance.h"
+#include "scenes/float_range.h"
 #include "shadows/camera_pass.h"
 
 namespace shadowlab {
@@ -28,6 +29,7 @@ bool mayBlock(const Sphere& object, const Sphere& patch, const glm::dvec3& x) {
 
 std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const PreparedObject& object,
                                              const glm::mat4& placement, const PatchSampling& sampling) {
+    if (!allFinite(placement)) throw std::invalid_argument("differential reference: the placement is not finite");
     const WorldGeometry whole = placed(object.levels.whole, placement);
     const ReferenceVisibility objectRays(whole);
     const Aabb box = boundsOf(whole);
@@ -58,7 +60,7 @@ std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const P
                 image[k] = glm::vec3(albedo * gatheredRadiance(m.model, m.radiance, radiant, x, glm::dvec3(g.shadingNormal[k]), sampling, k, seen));
                 continue;
             }
-            const Patch& patch = m.model.patches[m.pixels.patch[k]];
+            const Patch& patch = m.model.patches[g.triangle[k] / 2];
             if (patch.reflectance == glm::dvec3(0.0)) continue;
             const glm::vec3 N(patch.normal);
             // Samples the model lets through and the object blocks: I_noobj - I_obj.

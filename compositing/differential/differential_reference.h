@@ -21,7 +21,7 @@ namespace shadowlab {
 // Denser than the photograph's by default.
 inline PatchSampling referenceSampling() { return PatchSampling{8, 2, 0x7e1e5c0bea7ull}; }
 
-// Linear radiance per pixel.
+// Linear radiance per pixel. Throws std::invalid_argument for a placement that is not finite.
 std::vector<glm::vec3> differentialReference(const DifferentialModel& model, const PreparedObject& object,
                                              const glm::mat4& placement, const PatchSampling& sampling = referenceSampling());
 

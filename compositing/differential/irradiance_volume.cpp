@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "compositing/differential/patch_radiance.h"
+#include "scenes/float_range.h"
 
 namespace shadowlab {
 namespace {
@@ -89,7 +90,10 @@ glm::dvec3 IrradianceVolume::at(const glm::dvec3& x, const glm::dvec3& n) const 
 IrradianceVolume buildIrradianceVolume(const PatchModel& model, const std::vector<glm::dvec3>& radiance,
                                        const ReferenceVisibility& modelRays, const Aabb& bounds, double spacing,
                                        const PatchSampling& sampling) {
-    if (!(spacing > 0.0)) throw std::invalid_argument("irradiance volume: the spacing must be positive");
+    if (!(spacing > 0.0) || !std::isfinite(spacing)) throw std::invalid_argument("irradiance volume: the spacing must be positive and finite");
+    if (!allFinite(bounds.min) || !allFinite(bounds.max)) {
+        throw std::invalid_argument("irradiance volume: the box is not finite");
+    }
     IrradianceVolume v;
     // Probes at the centres of the cells of a grid over the box, none on its faces: the
     // floor under an object is on its box's face, and a probe there would lose every ray
@@ -98,7 +102,7 @@ IrradianceVolume buildIrradianceVolume(const PatchModel& model, const std::vecto
     v.bounds = bounds;
     for (int a = 0; a < 3; ++a) {
         const double extent = bounds.max[a] - bounds.min[a];
-        const double cells = extent > 0.0 ? std::min(std::ceil(extent / spacing), 1e6) : 1.0;
+        const double cells = extent > 0.0 ? std::clamp(std::ceil(extent / spacing), 1.0, 1e6) : 1.0;
         v.probes[a] = int(cells);
         v.bounds.min[a] += 0.5 * extent / cells, v.bounds.max[a] -= 0.5 * extent / cells;
         total *= cells;

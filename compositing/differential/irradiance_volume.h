@@ -27,7 +27,8 @@ struct IrradianceVolume {
     glm::dvec3 at(const glm::dvec3& x, const glm::dvec3& n) const;
 };
 
-// Throws std::invalid_argument for a spacing that is not positive or gives over 10^6 probes.
+// Throws std::invalid_argument for a spacing that is not positive and finite or gives over
+// 10^6 probes, or a box that is not finite.
 IrradianceVolume buildIrradianceVolume(const PatchModel& model, const std::vector<glm::dvec3>& radiance,
                                        const ReferenceVisibility& modelRays, const Aabb& bounds, double spacing,
                                        const PatchSampling& sampling);

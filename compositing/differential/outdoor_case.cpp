@@ -32,6 +32,7 @@ glm::dvec3 groundReflectance(const EnvironmentMap& map) {
         }
     }
     if (luminance(sky) <= 0.0) throw std::invalid_argument("outdoor case: the map has no light above the horizon");
+    if (!(groundWeight > 0.0)) throw std::invalid_argument("outdoor case: the map has no texel within 60 degrees of the nadir");
     const glm::dvec3 rho = kPi * (ground / groundWeight) / glm::max(sky, glm::dvec3(1e-12));
     return glm::clamp(rho, glm::dvec3(0.02), glm::dvec3(0.9));
 }

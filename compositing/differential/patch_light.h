@@ -52,6 +52,8 @@ double seenShare(const PatchModel& model, uint32_t p, int samplesPerAxis, Pcg32&
 
 // The jitter of patch j's strata seen from point `pointId` (a pixel, a vertex, a probe):
 // a stream of its own, so the points depend on neither the other patches nor the order.
+// Each use numbers its points from 0, so pixel 7 and vertex 7 share their jitter; no two
+// estimates that are compared with each other come from different uses.
 inline Pcg32 strataRandom(const PatchSampling& sampling, uint64_t pointId, uint32_t j, size_t patchCount) {
     return Pcg32(sampling.seed, pointId * uint64_t(patchCount) + j);
 }

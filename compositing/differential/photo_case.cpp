@@ -94,6 +94,7 @@ PhotoCase compositingChessboard(const Image8& photo, const PhotoCalibration& cal
     const glm::dvec3 centre(0.1, 0.0, 0.06), up(0, 1, 0);
     const auto open = [](const glm::dvec3&) { return true; };
     const double gathered = gatheredRadiance(model, radiance, sky, centre, up, PatchSampling{}, 0, open).y;
+    if (!(whiteGrey > 0.0)) throw std::invalid_argument("chessboard case: the photograph's white squares are black");
     const double whiteRadiance = CameraResponse{1.0, 2.2}.inverse(whiteGrey);   // exposure times L
     scene.response = {whiteRadiance / std::max(0.8 * gathered, 1e-12), 2.2};
     // The photograph's window as radiance under that response.

@@ -24,7 +24,8 @@ struct PhotoCase {
 // The board's 10 x 7 printed squares of 25 mm (the calibration's target frame: squares from
 // -25 mm, the front facing -z) become the model's floor (the front facing +y). The object
 // (a 10-unit mesh, scaled by 0.005) crosses the board in 5 frames. Throws
-// std::invalid_argument when the photograph's size is not the calibration's.
+// std::invalid_argument when the photograph's size is not the calibration's or its white
+// squares are black.
 PhotoCase compositingChessboard(const Image8& photo, const PhotoCalibration& calibration, const EnvironmentMap& light,
                                 const Mesh& object);
 

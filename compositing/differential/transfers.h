@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -26,7 +25,6 @@ struct TransferTable {
     // what the photograph holds there (the LDR path's starting point, section 7.1).
     std::vector<glm::dvec3> total;
 
-    std::span<const glm::vec3> row(size_t r) const { return {L.data() + r * sources.size(), sources.size()}; }
     size_t bytes() const;
 };
 

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <set>
@@ -255,6 +256,7 @@ TEST_CASE("differential inputs: bad surfaces, settings, objects and backgrounds 
     CHECK_THROWS_AS(flattenPatches(surfaceWith([](PatchSurface& s) { s.emitted = {glm::dvec3(1), glm::dvec3(1)}; })), std::invalid_argument);
     CHECK_THROWS_AS(flattenPatches(surfaceWith([](PatchSurface& s) { s.emitted = {glm::dvec3(std::nan(""))}; })), std::invalid_argument);
     CHECK_THROWS_AS(flattenPatches(surfaceWith([](PatchSurface& s) { s.emitted = {glm::dvec3(-1.0)}; })), std::invalid_argument);
+    CHECK_THROWS_AS(flattenPatches(surfaceWith([](PatchSurface& s) { s.origin.x = std::nan(""); })), std::invalid_argument);
     CHECK_NOTHROW(flattenPatches(surfaceWith([](PatchSurface& s) { s.emitted.assign(4, glm::dvec3(1.0)); })));
 
     CompositingScene scene = smallRoomScene(RoomPath::UnderDesk, 16, 16);
@@ -266,6 +268,14 @@ TEST_CASE("differential inputs: bad surfaces, settings, objects and backgrounds 
     PreprocessSettings significance;
     significance.significance = 0.0;
     CHECK_THROWS_AS(preprocess(scene, significance), std::invalid_argument);
+    for (const CameraResponse bad : {CameraResponse{0.0, 2.2}, CameraResponse{1.0, -1.0}, CameraResponse{std::nan(""), 2.2}}) {
+        CompositingScene badResponse = scene;
+        badResponse.response = bad;
+        CHECK_THROWS_AS(preprocess(badResponse, {}), std::invalid_argument);
+    }
+    scene.background.assign(16 * 16, glm::vec3(1.0f));
+    scene.background[3].y = std::numeric_limits<float>::infinity();
+    CHECK_THROWS_AS(preprocess(scene, {}), std::invalid_argument);
     scene.background.assign(10, glm::vec3(1.0f));
     CHECK_THROWS_AS(preprocess(scene, {}), std::invalid_argument);
     CHECK_THROWS_AS(compositingRoom(Mesh{}, RoomPath::Lift, 8, 100), std::invalid_argument);
@@ -280,4 +290,8 @@ TEST_CASE("differential inputs: bad surfaces, settings, objects and backgrounds 
     CHECK_THROWS_AS(prepareObject(room.model, room.scene.object, {3, 0.15}), std::invalid_argument);
     CHECK_THROWS_AS(prepareObject(room.model, room.scene.object, {300, 0.0}), std::invalid_argument);
     CHECK_THROWS_AS(prepareObject(room.model, room.scene.object, {300, 1e-5}), std::invalid_argument);
+    CHECK_THROWS_AS(prepareObject(room.model, room.scene.object, {300, std::numeric_limits<double>::infinity()}), std::invalid_argument);
+    object = room.scene.object;
+    object.path[1][3].x = std::nan("");
+    CHECK_THROWS_AS(prepareObject(room.model, object), std::invalid_argument);
 }
