@@ -140,11 +140,13 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The darkest a shadow makes a pixel off the object: the largest share of its light taken.
-double deepestShadow(const DifferentialModel& m, const std::vector<glm::vec3>& image, const std::vector<uint8_t>& object) {
+// The darkest a shadow makes a pixel off the object: the largest share of its light taken
+// (of its intensity, on the 8-bit path).
+double deepestShadow(const std::vector<glm::vec3>& photograph, const std::vector<glm::vec3>& image,
+                     const std::vector<uint8_t>& object) {
     double deepest = 0.0;
     for (size_t k = 0; k < image.size(); ++k) {
-        const double b = luminance(m.background[k]);
+        const double b = luminance(photograph[k]);
         if (!object[k] && b > 0.0) deepest = std::max(deepest, 1.0 - double(luminance(image[k])) / b);
     }
     return deepest;
@@ -272,7 +274,7 @@ void run(const CompositeArgs& a) {
                                            {"transfer_radiance", frame.clusters[c].transfer},
                                            {"light", {l.x, l.y, l.z}}});
             }
-            const double deepest = deepestShadow(m, frame.image, frame.objectPixels);
+            const double deepest = deepestShadow(a.ldr ? m.photographIntensities : m.background, frame.image, frame.objectPixels);
             row["deepest_shadow_ratio"] = deepest;
             objectPixels = frame.objectPixels;
             if (!a.ldr) depth.series[i].x.push_back(k), depth.series[i].y.push_back(deepest);
@@ -291,7 +293,7 @@ void run(const CompositeArgs& a) {
             frameJson["passes"].push_back(row);
         }
         if (a.reference && !objectPixels.empty()) {
-            const double deepest = deepestShadow(m, reference, objectPixels);
+            const double deepest = deepestShadow(m.background, reference, objectPixels);
             frameJson["reference_deepest_shadow_ratio"] = deepest;
             depth.series.back().x.push_back(k), depth.series.back().y.push_back(deepest);
         }

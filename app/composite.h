@@ -13,7 +13,7 @@
 namespace shadowlab {
 
 struct CompositeArgs {
-    std::string scene = "room";                 // room, room-lift
+    std::string scene = "room";                 // room, room-lift, outdoor, chessboard
     std::vector<int> passes{10, 20, 50, 0};      // 0: one per occluded source ("all")
     std::vector<int> frames;                     // of the path; empty: every frame
     int width = 640, height = 400, mapSize = 256, shadowTriangles = 300;
@@ -21,8 +21,8 @@ struct CompositeArgs {
     double sourceShare = 0.7, significance = 0.02;
     std::vector<int> referenceStrata{8, 2};   // per side of an emitting and of a reflecting patch
     bool ldr = false, reference = true, masks = false;
-    bool ldrError = false;
-    bool referenceConvergence = false;   // also the reference at twice the strata per side, and their RMS difference   // Figure 3's experiment on the case's transfers (ldr-error.csv, .svg)
+    bool ldrError = false;               // Figure 3's experiment on the case's transfers (ldr-error.csv, .svg)
+    bool referenceConvergence = false;   // also the reference at twice the strata per side, and the RMS between
     std::string outDir = "out/composite";
 };
 
