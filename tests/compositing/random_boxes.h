@@ -1,7 +1,10 @@
-// Random vectors and axis-aligned boxes for the tests of differential rendering.
+// Random vectors and axis-aligned boxes for the tests of differential rendering, and the
+// slab test of a segment against a box.
 #pragma once
 
+#include <algorithm>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "scenes/bounds.h"
@@ -29,6 +32,23 @@ inline std::vector<Aabb> randomBoxes(std::mt19937_64& rng, int count, glm::dvec3
         boxes.push_back({c - h, c + h});
     }
     return boxes;
+}
+
+// The slab test: does the segment p -> q pass through the box?
+inline bool segmentHitsBox(const glm::dvec3& p, const glm::dvec3& q, const Aabb& box) {
+    double t0 = 0.0, t1 = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double d = q[axis] - p[axis];
+        if (d == 0.0) {
+            if (p[axis] < box.min[axis] || p[axis] > box.max[axis]) return false;
+            continue;
+        }
+        double a = (box.min[axis] - p[axis]) / d, b = (box.max[axis] - p[axis]) / d;
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a), t1 = std::min(t1, b);
+        if (t0 > t1) return false;
+    }
+    return true;
 }
 
 inline bool contains(const Aabb& outer, const Aabb& inner) {

@@ -60,22 +60,6 @@ int32_t sourceSlotOf(const DifferentialModel& m, uint32_t patch) {
     return it == m.transfers.sources.end() ? -1 : int32_t(it - m.transfers.sources.begin());
 }
 
-bool segmentHitsBox(const glm::dvec3& a, const glm::dvec3& b, const Aabb& box) {
-    double t0 = 0.0, t1 = 1.0;
-    for (int k = 0; k < 3; ++k) {
-        const double d = b[k] - a[k];
-        if (d == 0.0) {
-            if (a[k] < box.min[k] || a[k] > box.max[k]) return false;
-            continue;
-        }
-        double lo = (box.min[k] - a[k]) / d, hi = (box.max[k] - a[k]) / d;
-        if (lo > hi) std::swap(lo, hi);
-        t0 = std::max(t0, lo), t1 = std::min(t1, hi);
-        if (t0 > t1) return false;
-    }
-    return true;
-}
-
 }  // namespace
 
 TEST_CASE("differential model: surfaces become grids of patches, two triangles each, facing their surface's front") {

@@ -9,6 +9,7 @@
 #include "tests/compositing/random_boxes.h"
 
 using namespace shadowlab;
+using test::segmentHitsBox;
 
 namespace {
 
@@ -22,23 +23,6 @@ Aabb randomBox(std::mt19937_64& rng, double extent, double size) {
 glm::dvec3 pointIn(std::mt19937_64& rng, const Aabb& box) {
     std::uniform_real_distribution<double> t(0.0, 1.0);
     return box.min + (box.max - box.min) * test::randomVector(t, rng);
-}
-
-// The slab test: does the segment p -> q pass through the box?
-bool segmentHitsBox(const glm::dvec3& p, const glm::dvec3& q, const Aabb& box) {
-    double t0 = 0.0, t1 = 1.0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double d = q[axis] - p[axis];
-        if (d == 0.0) {
-            if (p[axis] < box.min[axis] || p[axis] > box.max[axis]) return false;
-            continue;
-        }
-        double a = (box.min[axis] - p[axis]) / d, b = (box.max[axis] - p[axis]) / d;
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a), t1 = std::min(t1, b);
-        if (t0 > t1) return false;
-    }
-    return true;
 }
 
 bool inside(const Shaft& s, const glm::dvec3& p) {
