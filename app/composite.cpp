@@ -243,13 +243,6 @@ void run(const CompositeArgs& a) {
                 std::printf("frame %d: the reference at twice the strata per side differs by RMS %.6f\n", k, change);
             }
             writeImage(dir, "reference-f" + std::to_string(k), m, reference, false);
-            // The shadow's own size: the error of leaving the photograph as it is.
-            double sum = 0.0;
-            for (size_t p = 0; p < reference.size(); ++p) {
-                const double e = double(luminance(reference[p])) - double(luminance(m.background[p]));
-                sum += e * e;
-            }
-            frameJson["rms_background_radiance"] = std::sqrt(sum / double(reference.size()));
         }
         std::vector<uint8_t> objectPixels;
         for (size_t i = 0; i < a.passes.size(); ++i) {
@@ -293,6 +286,8 @@ void run(const CompositeArgs& a) {
             frameJson["passes"].push_back(row);
         }
         if (a.reference && !objectPixels.empty()) {
+            // The shadow's own size: the error, off the object, of leaving the photograph as it is.
+            frameJson["rms_background_radiance"] = difference(reference, m.background, objectPixels).rmsReceivers;
             const double deepest = deepestShadow(m.background, reference, objectPixels);
             frameJson["reference_deepest_shadow_ratio"] = deepest;
             depth.series.back().x.push_back(k), depth.series.back().y.push_back(deepest);
