@@ -77,7 +77,7 @@ def main():
         path = os.path.join(d, name, "composite.json")
         if os.path.exists(path):
             runs[name] = load(path)
-    for case in ["room", "room-share1", "outdoor"]:
+    for case in ["room", "room-share1", "outdoor", "outdoor-sig0.005"]:
         if case + "-t2" in runs:
             passes_table(case, runs[case + "-t2"], runs.get(case + "-t1"))
     preprocess_table([(n, r) for n, r in runs.items() if n.endswith("-t2")])

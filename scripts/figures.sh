@@ -2,18 +2,18 @@
 # Reproduces every speed and error figure in the README: the hard- and soft-shadow sweeps,
 # every hard case, the shadow map's bias-by-resolution grid, Figure 7's torus and the eq. 8
 # scaling fit, the environment techniques' images and buffers, and speed against error by
-# caster level of detail (the Figure 3 table is
+# caster level of detail, and differential rendering into photographs (the Figure 3 table is
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod ...]   (default: all eleven)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential ...]   (default: all twelve)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential}
 
 for part in $parts; do
   case $part in
@@ -145,6 +145,41 @@ for part in $parts; do
         --error-map docs/images/lod-shadow-volume-$ratio.png > /dev/null
     done
     ;;
-  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench, environment, lod)" >&2; exit 2 ;;
+  differential)
+    # Differential rendering into photographs (docs/differential-rendering.md; Gibson et al.
+    # 2003): each case's frames at n = 10, 20, 50 and all, timed at 2 and 1 threads (median
+    # of 5 after a warm-up), scored against the exact reference; the room with every
+    # radiant patch a source; the preprocessing figures; Figure 7 (lift); Figure 3 (8-bit
+    # error); the reference's convergence; the intermediate buffers and the images.
+    d=$out/differential
+    $app composite room --threads 2 --runs 5 --warmup 1 --out $d/room-t2 > /dev/null
+    $app composite room --threads 1 --runs 5 --warmup 1 --no-reference --out $d/room-t1 > /dev/null
+    $app composite room --source-share 1 --threads 2 --runs 5 --warmup 1 --out $d/room-share1-t2 > /dev/null
+    $app composite room-lift --threads 2 --runs 3 --warmup 1 --out $d/room-lift > /dev/null
+    $app composite outdoor --frames 0,5,10 --threads 2 --runs 5 --warmup 1 --out $d/outdoor-t2 > /dev/null
+    $app composite outdoor --frames 0,5,10 --threads 1 --runs 5 --warmup 1 --no-reference --out $d/outdoor-t1 > /dev/null
+    # Under a sky of many dim sources the 2% rule keeps few: the same at 0.5%.
+    $app composite outdoor --frames 0,5,10 --significance 0.005 --threads 2 --runs 5 --warmup 1 --out $d/outdoor-sig0.005-t2 > /dev/null
+    $app composite outdoor --frames 0,5,10 --significance 0.005 --threads 1 --runs 5 --warmup 1 --no-reference \
+      --out $d/outdoor-sig0.005-t1 > /dev/null
+    $app composite room --frames 5 --passes 10 --masks --ldr-error --reference-convergence --out $d/room-buffers > /dev/null
+    $app composite room --frames 5 --passes 20 --ldr --no-reference --out $d/room-ldr > /dev/null
+    $app composite chessboard --frames 0,2,4 --passes 20 --ldr --no-reference --out $d/chessboard > /dev/null
+    python3 scripts/composite_table.py $d
+    mkdir -p docs/images/differential
+    for f in background reference-f5 composite-f5-n10 composite-f5-n20 composite-f5-nall error-f5-n10 error-f5-nall \
+             listed-f5-n10 shadowing-f5-n10 shadowing-f5-nall; do cp $d/room-t2/$f.png docs/images/differential/room-$f.png; done
+    cp $d/room-t2/time-rms.svg docs/images/differential/room-time-rms.svg
+    cp $d/room-t2/shadow-depth.svg docs/images/differential/room-shadow-depth.svg
+    cp $d/room-lift/shadow-depth.svg docs/images/differential/room-lift-shadow-depth.svg
+    for f in composite-f0-nall reference-f0 composite-f6-nall reference-f6; do cp $d/room-lift/$f.png docs/images/differential/room-lift-$f.png; done
+    cp $d/room-buffers/ldr-error.svg docs/images/differential/ldr-error.svg
+    for c in 0 1 2 3; do cp $d/room-buffers/mask-f5-n10-c$c.png docs/images/differential/room-mask-c$c.png; done
+    cp $d/room-ldr/composite-ldr-f5-n20.png docs/images/differential/room-composite-ldr-f5-n20.png
+    for f in background reference-f5 composite-f5-nall error-f5-nall; do cp $d/outdoor-t2/$f.png docs/images/differential/outdoor-$f.png; done
+    cp $d/chessboard/background.png docs/images/differential/chessboard-background.png
+    cp $d/chessboard/composite-ldr-f2-n20.png docs/images/differential/chessboard-f2.png
+    ;;
+  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench, environment, lod, differential)" >&2; exit 2 ;;
   esac
 done
