@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compositing/differential/composite.h"
+#include "app/composite_plan.h"
 #include "app/line_plot.h"
 #include "compositing/differential/differential_reference.h"
 #include "compositing/differential/intensity_error.h"
@@ -256,6 +257,7 @@ void run(const CompositeArgs& a) {
             writeOverlay(dir / ("listed-" + name + ".png"), m, frame.listedReceiverPixels, 1, {0.2f, 0.6f, 1.0f});
             writeOverlay(dir / ("shadowing-" + name + ".png"), m, frame.shadowingClusters, std::max<int>(1, int(frame.clusters.size())),
                          {1.0f, 0.3f, 0.1f});
+            writeTextFile(dir / ("plan-" + name + ".svg"), formatPlanSvg(m, frame, boundsOf(placed(object.levels.whole, placement))));
             for (size_t c = 0; c < frame.clusterMasks.size(); ++c) {
                 writeOverlay(dir / ("mask-" + name + "-c" + std::to_string(c) + ".png"), m, frame.clusterMasks[c], 1, {1.0f, 0.9f, 0.2f});
             }

@@ -3,8 +3,9 @@
 // once, then for each frame of the object's path and each number of passes composites the
 // frame (timed: the median of the runs after a warm-up), renders the exact differential
 // reference, and writes the images, the intermediate buffers, the figures (JSON) and their
-// plots: time against RMS per frame (time-rms.svg) and the deepest shadow along the path,
-// ours at each n and the reference's (shadow-depth.svg).
+// plots: time against RMS per frame (time-rms.svg), the deepest shadow along the path,
+// ours at each n and the reference's (shadow-depth.svg), and each frame from above with the
+// shafts it touched and its clusters (plan-*.svg).
 #pragma once
 
 #include <string>

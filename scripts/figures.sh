@@ -175,6 +175,7 @@ for part in $parts; do
     for f in composite-f0-nall reference-f0 composite-f6-nall reference-f6; do cp $d/room-lift/$f.png docs/images/differential/room-lift-$f.png; done
     cp $d/room-buffers/ldr-error.svg docs/images/differential/ldr-error.svg
     for c in 0 1 2 3; do cp $d/room-buffers/mask-f5-n10-c$c.png docs/images/differential/room-mask-c$c.png; done
+    cp $d/room-buffers/plan-f5-n10.svg docs/images/differential/room-plan-f5-n10.svg
     cp $d/room-ldr/composite-ldr-f5-n20.png docs/images/differential/room-composite-ldr-f5-n20.png
     for f in background reference-f5 composite-f5-nall error-f5-nall; do cp $d/outdoor-t2/$f.png docs/images/differential/outdoor-$f.png; done
     cp $d/chessboard/background.png docs/images/differential/chessboard-background.png

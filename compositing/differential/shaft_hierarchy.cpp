@@ -63,7 +63,8 @@ ShaftHits traverseShafts(const ShaftHierarchy& shafts, const SourceTree& sources
     std::vector<uint8_t> sourceFound(sources.leafOfPatch.size(), 0), receiverFound(receivers.patches.size(), 0);
     std::vector<int32_t> stack{0};
     while (!stack.empty()) {
-        const ShaftNode& n = shafts.nodes[stack.back()];
+        const int32_t index = stack.back();
+        const ShaftNode& n = shafts.nodes[size_t(index)];
         stack.pop_back();
         if (!shaftMayTouch(n.shaft, object)) continue;
         if (n.firstChild >= 0) {
@@ -71,6 +72,7 @@ ShaftHits traverseShafts(const ShaftHierarchy& shafts, const SourceTree& sources
             continue;
         }
         if (!n.pair) continue;   // a shaft whose every pair below was insignificant
+        hits.leafShafts.push_back(index);
         const uint32_t patch = sources.nodes[n.source].patch;
         if (!sourceFound[patch]) sourceFound[patch] = 1, hits.sourcePatches.push_back(patch);
         const ReceiverNode& r = receivers.nodes[n.receiver];

@@ -39,10 +39,12 @@ ShaftHierarchy buildShaftHierarchy(const SourceTree& sources, const ReceiverOctr
                                    const ShaftSignificance& significant);
 
 // The sources (patch indices, each once, in the order found) and the receiver patches of
-// the leaf shafts the box may touch.
+// the leaf shafts the box may touch, and those shafts (indices into ShaftHierarchy::nodes,
+// for the debug views).
 struct ShaftHits {
     std::vector<uint32_t> sourcePatches;
     std::vector<uint32_t> receiverPatches;
+    std::vector<int32_t> leafShafts;
 };
 ShaftHits traverseShafts(const ShaftHierarchy& shafts, const SourceTree& sources, const ReceiverOctree& receivers,
                          const Aabb& object);

@@ -133,7 +133,7 @@ else
     fail "composite exited $rc or wrote no figures: $(cat "$err")"
 fi
 for image in background reference-f3 composite-f3-n2 composite-f3-nall listed-f3-n2 shadowing-f3-nall error-f0-n2; do expect_png "$scratch/comp/$image.png"; done
-for plot in time-rms shadow-depth ldr-error; do
+for plot in time-rms shadow-depth ldr-error plan-f3-n2; do
     if grep -q "<polyline" "$scratch/comp/$plot.svg"; then pass; else fail "$plot.svg has no series"; fi
 done
 
