@@ -133,9 +133,14 @@ else
     fail "composite exited $rc or wrote no figures: $(cat "$err")"
 fi
 for image in background reference-f3 composite-f3-n2 composite-f3-nall listed-f3-n2 shadowing-f3-nall error-f0-n2; do expect_png "$scratch/comp/$image.png"; done
-for plot in time-rms shadow-depth ldr-error plan-f3-n2; do
+for plot in time-rms shadow-depth ldr-error; do
     if grep -q "<polyline" "$scratch/comp/$plot.svg"; then pass; else fail "$plot.svg has no series"; fi
 done
+if grep -q "leaf shafts touched" "$scratch/comp/plan-f3-n2.svg" && grep -q "<line" "$scratch/comp/plan-f3-n2.svg"; then
+    pass
+else
+    fail "plan-f3-n2.svg shows no shaft"
+fi
 
 # ---- Whole or nothing -------------------------------------------------------------------
 # Every failure above named -o x.png: none may have left it, or a temporary of it.
