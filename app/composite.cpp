@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compositing/differential/composite.h"
+#include "compositing/differential/compositing_inputs.h"
 #include "app/composite_plan.h"
 #include "app/line_plot.h"
 #include "compositing/differential/differential_reference.h"
@@ -18,6 +19,7 @@
 #include "compositing/differential/photo_case.h"
 #include "raster/thread_count.h"
 #include "scenes/compositing_cases.h"
+#include "scenes/compositing_file.h"
 #include "scenes/obj_reader.h"
 #include "scenes/scene_file.h"
 #include "shading/environment/environment_file.h"
@@ -28,6 +30,7 @@ namespace shadowlab {
 namespace {
 
 CompositingScene compositingCase(const CompositeArgs& a) {
+    if (a.scene.ends_with(".json")) return readCompositingInputs(loadCompositingFile(a.scene));
     const Mesh bunny = readObj(builtinSceneDir() + "/meshes/bunny_low.obj");
     if (a.scene == "room") return compositingRoom(bunny, RoomPath::UnderDesk, a.width, a.height);
     if (a.scene == "room-lift") return compositingRoom(bunny, RoomPath::Lift, a.width, a.height);
@@ -41,11 +44,12 @@ CompositingScene compositingCase(const CompositeArgs& a) {
         const PhotoCase c = compositingChessboard(readImage8(dir + "chessboard_left05_undistorted.png"),
                                                   readPhotoCalibration(dir + "chessboard_left05_camera.txt"),
                                                   readEnvironmentMap(builtinSceneDir() + "/environments/blender_interior.exr"), bunny);
-        std::printf("chessboard: the photograph's window %d x %d from (%d, %d), principal point %.2f px off its centre\n",
-                    c.scene.camera.width, c.scene.camera.height, c.crop.x, c.crop.y, c.offAxisPixels);
+        std::printf("chessboard: the photograph's window %d x %d from (%d, %d), principal point %.2f px off its centre; "
+                    "the response's exposure fitted to the white squares: %.6g\n",
+                    c.scene.camera.width, c.scene.camera.height, c.crop.x, c.crop.y, c.offAxisPixels, c.scene.response.exposure);
         return c.scene;
     }
-    throw std::invalid_argument("composite: unknown case '" + a.scene + "' (room, room-lift, outdoor, chessboard)");
+    throw std::invalid_argument("composite: unknown case '" + a.scene + "' (room, room-lift, outdoor, chessboard, or a .json file)");
 }
 
 // What a PNG shows: the camera's 8-bit response to radiance (the LDR path's images are

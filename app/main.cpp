@@ -401,7 +401,7 @@ void addEnvironmentCommand(CLI::App& app, EnvironmentArgs& a) {
 
 void addCompositeCommand(CLI::App& app, CompositeArgs& a) {
     CLI::App* c = app.add_subcommand("composite", "a synthetic object's shadows composited into a photograph (Gibson et al. 2003) and the exact differential reference");
-    c->add_option("case", a.scene, "room (slid under the desk), room-lift (raised off the floor), outdoor (the forest panorama) or chessboard (a real photograph; --width and --height do not apply)")->capture_default_str();
+    c->add_option("case", a.scene, "room (slid under the desk), room-lift (raised off the floor), outdoor (the forest panorama) chessboard (a real photograph), or a compositing scene file (.json, docs/scene-format.md); --width and --height apply to the room and outdoor cases")->capture_default_str();
     c->add_option("--passes", a.passes, "shadow passes n per frame; 0: one per occluded source")->delimiter(',')->capture_default_str()->check(CLI::Range(0, 100000));
     c->add_option("--frames", a.frames, "frames of the path (default: all)")->delimiter(',');
     c->add_option("--width", a.width, "image width")->capture_default_str()->check(CLI::Range(16, 4096));

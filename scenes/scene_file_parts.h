@@ -17,6 +17,9 @@ struct SceneNames {
     std::vector<std::string> meshes, materials;
 };
 
+// One mesh entry: {"file": ...} (OBJ or PLY, relative to directory) or {"procedural": ...}.
+Mesh readMesh(const JsonObject& object, const std::string& directory);
+
 // Appends every mesh of the "meshes" array; file paths are relative to directory.
 void readMeshes(const JsonField& field, const std::string& directory, Scene& scene, SceneNames& names);
 

@@ -88,13 +88,13 @@ Mesh readMeshFile(const JsonObject& object, const std::string& directory) {
     }
 }
 
+}  // namespace
+
 Mesh readMesh(const JsonObject& object, const std::string& directory) {
     if (object.has("file") == object.has("procedural"))
         object.field().fail("needs exactly one of \"file\" and \"procedural\"");
     return object.has("file") ? readMeshFile(object, directory) : readProcedural(object);
 }
-
-}  // namespace
 
 void readMeshes(const JsonField& field, const std::string& directory, Scene& scene, SceneNames& names) {
     for (const JsonField& entry : field.elements()) {

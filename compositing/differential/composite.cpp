@@ -174,7 +174,7 @@ Aabb boundsOf(const WorldGeometry& world) {
 PreparedObject prepareObject(const DifferentialModel& model, const SyntheticObject& object, const ObjectSettings& settings) {
     if (object.path.empty()) throw std::invalid_argument("synthetic object: its path has no frame");
     for (const glm::mat4& placement : object.path) requireFinite(placement, "synthetic object");
-    PreparedObject prepared{objectLevels(object, settings.shadowTriangles), {}, object.path};
+    PreparedObject prepared{objectLevels(object, settings.shadowTriangles), {}};
     prepared.light = buildIrradianceVolume(model.model, model.radiance, *model.modelRays, pathBounds(prepared.levels, object.path),
                                            settings.probeSpacingM, model.settings.sampling);
     return prepared;

@@ -30,7 +30,6 @@ namespace shadowlab {
 struct PreparedObject {
     ObjectLevels levels;
     IrradianceVolume light;   // over the box of its whole path
-    std::vector<glm::mat4> path;
 };
 
 struct ObjectSettings {
