@@ -181,7 +181,7 @@ void writeIntensityError(const std::filesystem::path& dir, const DifferentialMod
 }
 
 // The frame, and the median wall time of `runs` of it after the warm-up.
-CompositeFrame timedFrame(const DifferentialModel& m, const PreparedObject& object, const glm::mat4& placement,
+CompositeFrame timedFrame(const DifferentialModel& m, const PreparedObject& object, std::span<const glm::mat4> placement,
                           const CompositeSettings& settings, const CompositeArgs& a, double& medianMs) {
     for (int w = 0; w < a.warmupRuns; ++w) compositeFrame(m, object, placement, settings);
     std::vector<double> times;
@@ -200,10 +200,10 @@ void run(const CompositeArgs& a) {
     const CompositingScene scene = compositingCase(a);
     std::vector<int> frames = a.frames;
     if (frames.empty()) {
-        for (int k = 0; k < int(scene.object.path.size()); ++k) frames.push_back(k);
+        for (int k = 0; k < int(scene.objects.front().path.size()); ++k) frames.push_back(k);
     }
     for (int k : frames) {
-        if (k < 0 || k >= int(scene.object.path.size())) throw std::invalid_argument("composite: no such frame in the path");
+        if (k < 0 || k >= int(scene.objects.front().path.size())) throw std::invalid_argument("composite: no such frame in the path");
     }
     const std::filesystem::path dir(a.outDir);
     std::filesystem::create_directories(dir);
@@ -212,7 +212,7 @@ void run(const CompositeArgs& a) {
     preprocessSettings.significance = a.significance;
     const auto start = std::chrono::steady_clock::now();
     const DifferentialModel m = preprocess(scene, preprocessSettings);
-    const PreparedObject object = prepareObject(m, scene.object, {a.shadowTriangles, 0.15});
+    const PreparedObject object = prepareObject(m, scene.objects, {a.shadowTriangles, 0.15});
     const double preprocessMs = millisecondsSince(start);
     writeImage(dir, "background", m, m.background, false);
     nlohmann::ordered_json json = {{"case", scene.name}, {"width", m.camera.width}, {"height", m.camera.height},
@@ -229,7 +229,7 @@ void run(const CompositeArgs& a) {
     for (const int n : a.passes) depth.series.push_back({passesLabel(n), {}, {}, {}});
     depth.series.push_back({"reference", {}, {}, {}});
     for (const int k : frames) {
-        const glm::mat4& placement = scene.object.path[size_t(k)];
+        const std::vector<glm::mat4> placement = placementsAt(scene.objects, size_t(k));   // one per object
         PlotSeries frameSeries{"frame " + std::to_string(k), {}, {}, {}};
         nlohmann::ordered_json frameJson = {{"frame", k}, {"passes", nlohmann::ordered_json::array()}};
         std::vector<glm::vec3> reference;
@@ -261,7 +261,7 @@ void run(const CompositeArgs& a) {
             writeOverlay(dir / ("listed-" + name + ".png"), m, frame.listedReceiverPixels, 1, {0.2f, 0.6f, 1.0f});
             writeOverlay(dir / ("shadowing-" + name + ".png"), m, frame.shadowingClusters, std::max<int>(1, int(frame.clusters.size())),
                          {1.0f, 0.3f, 0.1f});
-            writeTextFile(dir / ("plan-" + name + ".svg"), formatPlanSvg(m, frame, boundsOf(placed(object.levels.whole, placement))));
+            writeTextFile(dir / ("plan-" + name + ".svg"), formatPlanSvg(m, frame, objectBounds(placed(object.levels.whole, placement), placement.size())));
             for (size_t c = 0; c < frame.clusterMasks.size(); ++c) {
                 writeOverlay(dir / ("mask-" + name + "-c" + std::to_string(c) + ".png"), m, frame.clusterMasks[c], 1, {1.0f, 0.9f, 0.2f});
             }

@@ -20,8 +20,9 @@ struct PlanView {
     double y(const glm::dvec3& p) const { return kMargin + (p.z - box.min.z) * scale; }
 };
 
-PlanView fitView(const DifferentialModel& m, const Aabb& objectBox) {
-    Aabb box = objectBox;
+PlanView fitView(const DifferentialModel& m, const std::vector<Aabb>& objectBoxes) {
+    Aabb box = objectBoxes.front();
+    for (const Aabb& b : objectBoxes) box.min = glm::min(box.min, b.min), box.max = glm::max(box.max, b.max);
     for (const uint32_t p : m.transfers.receiverPatches) {
         for (const glm::dvec3& c : m.model.corners(p)) box.min = glm::min(box.min, c), box.max = glm::max(box.max, c);
     }
@@ -48,8 +49,8 @@ const char* colourOf(int cluster) { return cluster < 0 ? "#999" : svg::kPalette[
 
 }  // namespace
 
-std::string formatPlanSvg(const DifferentialModel& m, const CompositeFrame& frame, const Aabb& objectBox) {
-    const PlanView v = fitView(m, objectBox);
+std::string formatPlanSvg(const DifferentialModel& m, const CompositeFrame& frame, const std::vector<Aabb>& objectBoxes) {
+    const PlanView v = fitView(m, objectBoxes);
     std::string text = format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%.0f" height="%.0f" viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="10">)" "\n",
                               kSize, kSize, kSize, kSize);
     text += format(R"(<defs><clipPath id="frame"><rect x="0" y="0" width="%.0f" height="%.0f"/></clipPath></defs>)" "\n", kSize, kSize);
@@ -76,9 +77,9 @@ std::string formatPlanSvg(const DifferentialModel& m, const CompositeFrame& fram
         text += format(R"(<circle cx="%.1f" cy="%.1f" r="5" fill="none" stroke="%s" stroke-width="2"/><text x="%.1f" y="%.1f">%zu</text>)" "\n",
                        v.x(l), v.y(l), colourOf(int(c)), v.x(l) + 6, v.y(l) - 6, c);
     }
-    const std::array<glm::dvec3, 4> box = {objectBox.min, glm::dvec3(objectBox.max.x, 0, objectBox.min.z), objectBox.max,
-                                           glm::dvec3(objectBox.min.x, 0, objectBox.max.z)};
-    text += polygon(v, box, "none", "#d00");
+    for (const Aabb& b : objectBoxes) {
+        text += polygon(v, {b.min, glm::dvec3(b.max.x, 0, b.min.z), b.max, glm::dvec3(b.min.x, 0, b.max.z)}, "none", "#d00");
+    }
     text += format(R"(</g><text x="%.0f" y="14">plan (x right, z down): %zu leaf shafts touched, %zu sources listed, %zu clusters</text>)" "\n",
                    kMargin, frame.hits.leafShafts.size(), frame.hits.sourcePatches.size(), frame.clusters.size());
     return text + "</svg>\n";

@@ -69,7 +69,7 @@ CompositingScene compositingRoom(const Mesh& object, RoomPath path, int width, i
     scene.camera.zNear = 0.05f;
     scene.camera.zFar = 20.0f;
     scene.surfaces = roomSurfaces();
-    scene.object = {object, {0.72, 0.7, 0.66}, roomPath(path)};
+    scene.objects = {{object, {0.72, 0.7, 0.66}, roomPath(path)}};
     // A gamma-2.2 camera whose white is a radiance of 1.2 (the panel and window saturate).
     scene.response = {1.0 / 1.2, 2.2};
     return scene;

@@ -104,7 +104,7 @@ CompositingFile loadCompositingFile(const std::string& path) {
     const std::string directory = std::filesystem::path(path).parent_path().string();
     const nlohmann::json document = parseJson(readWholeFile(path), path);
     const JsonObject o = JsonField(document, path, "").object(
-        {"name", "photograph", "response", "camera", "calibration", "surfaces", "object", "dome"});
+        {"name", "photograph", "response", "camera", "calibration", "surfaces", "objects", "dome"});
     CompositingFile file;
     CompositingScene& scene = file.scene;
     scene.name = o.has("name") ? o["name"].string() : std::filesystem::path(path).stem().string();
@@ -121,7 +121,13 @@ CompositingFile loadCompositingFile(const std::string& path) {
     } catch (const std::invalid_argument& error) {
         o["surfaces"].fail(error.what());
     }
-    scene.object = readObject(o["object"].object(), directory);
+    for (const JsonField& object : o["objects"].elements()) {
+        scene.objects.push_back(readObject(object.object(), directory));
+        if (scene.objects.back().path.size() != scene.objects.front().path.size()) {
+            object.fail("needs as many frames in its path as the first object");
+        }
+    }
+    if (scene.objects.empty()) o["objects"].fail("needs at least one object");
     if (auto dome = o.optional("dome")) file.dome = readDome(dome->object(), directory);
     return file;
 }

@@ -69,7 +69,8 @@ PatchModel flattenPatches(const std::vector<PatchSurface>& surfaces);
 WorldGeometry patchGeometry(const PatchModel& model);
 
 // A synthetic object: a mesh with a diffuse albedo, placed by one transform per frame of its
-// path (at least one).
+// path (at least one). A scene's objects move together frame by frame, so their paths have
+// the same length.
 struct SyntheticObject {
     Mesh mesh;
     glm::dvec3 albedo{0.7};
@@ -90,7 +91,7 @@ struct CompositingScene {
     std::string name;
     Camera camera;
     std::vector<PatchSurface> surfaces;
-    SyntheticObject object;
+    std::vector<SyntheticObject> objects;   // one or more
     CameraResponse response;
     // The photograph as linear radiance, camera.width * camera.height, row 0 at the top; empty
     // when it is to be rendered from the model (compositing/differential/background.h).

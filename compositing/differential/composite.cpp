@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -15,17 +16,32 @@
 namespace shadowlab {
 namespace {
 
-Aabb pathBounds(const ObjectLevels& levels, const std::vector<glm::mat4>& path) {
-    Aabb box = boundsOf(placed(levels.whole, path.front()));
-    for (size_t k = 1; k < path.size(); ++k) {
-        const Aabb b = boundsOf(placed(levels.whole, path[k]));
-        box.min = glm::min(box.min, b.min), box.max = glm::max(box.max, b.max);
-    }
+Aabb merged(const Aabb& a, const Aabb& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
+
+Aabb pathBounds(const ObjectLevels& levels, std::span<const SyntheticObject> objects) {
+    Aabb box = boundsOf(placed(levels.whole, placementsAt(objects, 0)));
+    for (size_t k = 1; k < objects[0].path.size(); ++k) box = merged(box, boundsOf(placed(levels.whole, placementsAt(objects, k))));
     return box;
 }
 
-void requireFinite(const glm::mat4& placement, const char* who) {
-    if (!allFinite(placement)) throw std::invalid_argument(std::string(who) + ": a placement is not finite");
+void requireFinite(std::span<const glm::mat4> placements, const char* who) {
+    for (const glm::mat4& placement : placements) {
+        if (!allFinite(placement)) throw std::invalid_argument(std::string(who) + ": a placement is not finite");
+    }
+}
+
+// The traversal of each object's box, their lists merged (each source and receiver once).
+ShaftHits traverseObjects(const DifferentialModel& m, const std::vector<Aabb>& boxes) {
+    ShaftHits all;
+    std::vector<uint8_t> source(m.transfers.sources.size(), 0), receiver(m.transfers.receiverPatches.size(), 0);
+    std::vector<uint8_t> shaft(m.shafts.nodes.size(), 0);
+    for (const Aabb& box : boxes) {
+        const ShaftHits hits = traverseShafts(m.shafts, m.sourceTree, m.receiverOctree, box);
+        for (const uint32_t s : hits.sourcePatches) if (!source[s]) source[s] = 1, all.sourcePatches.push_back(s);
+        for (const uint32_t r : hits.receiverPatches) if (!receiver[r]) receiver[r] = 1, all.receiverPatches.push_back(r);
+        for (const int32_t l : hits.leafShafts) if (!shaft[size_t(l)]) shaft[size_t(l)] = 1, all.leafShafts.push_back(l);
+    }
+    return all;
 }
 
 // The cluster's light: the centre of its patch with the largest transfer (section 8).
@@ -103,15 +119,15 @@ glm::vec3 objectPixel(const FrameContext& f, const GBuffer& g, size_t k, Composi
     }
     out.objectPixels[k] = 1;
     out.shadowingClusters[k] = shadowing;
-    const glm::dvec3 radiance = glm::dvec3(f.object.levels.whole.materials[0].albedo) * glm::max(light, glm::dvec3(0.0));
+    const glm::dvec3 radiance = glm::dvec3(f.object.levels.whole.materials[g.material[k]].albedo) * glm::max(light, glm::dvec3(0.0));
     return f.ldr ? glm::vec3(glm::round(f.m.response(radiance))) : glm::vec3(radiance);
 }
 
 // One shadow map per cluster, from its light, of the simplified object (section 7.2); the
 // lights go to `out`.
-std::vector<ClusterMap> clusterMaps(const DifferentialModel& m, const PreparedObject& object, const glm::mat4& placement,
+std::vector<ClusterMap> clusterMaps(const DifferentialModel& m, const PreparedObject& object, std::span<const glm::mat4> placements,
                                     const Aabb& box, const CompositeSettings& settings, CompositeFrame& out) {
-    const WorldGeometry casters = placed(object.levels.simplified.scene, placement);
+    const WorldGeometry casters = placed(object.levels.simplified.scene, placements);
     const glm::dvec3 centre = 0.5 * (box.min + box.max);
     const double radius = 0.5 * glm::length(box.max - box.min);
     std::vector<ClusterMap> maps;
@@ -157,10 +173,22 @@ WorldGeometry withObject(const DifferentialModel& m, const WorldGeometry& object
     const uint32_t base = uint32_t(world.positions.size());
     world.positions.insert(world.positions.end(), object.positions.begin(), object.positions.end());
     for (const glm::uvec3& t : object.triangles) world.triangles.push_back(t + base);
-    world.triangleMaterial.insert(world.triangleMaterial.end(), object.triangles.size(), 0u);
-    world.triangleInstance.insert(world.triangleInstance.end(), object.triangles.size(), 0u);
+    world.triangleMaterial.insert(world.triangleMaterial.end(), object.triangleMaterial.begin(), object.triangleMaterial.end());
+    world.triangleInstance.insert(world.triangleInstance.end(), object.triangleInstance.begin(), object.triangleInstance.end());
     world.cornerNormals.insert(world.cornerNormals.end(), object.cornerNormals.begin(), object.cornerNormals.end());
     return world;
+}
+
+std::vector<Aabb> objectBounds(const WorldGeometry& world, size_t objects) {
+    std::vector<Aabb> boxes(objects, Aabb{glm::dvec3(std::numeric_limits<double>::infinity()), glm::dvec3(-std::numeric_limits<double>::infinity())});
+    for (size_t t = 0; t < world.triangles.size(); ++t) {
+        Aabb& box = boxes.at(world.triangleInstance[t]);
+        for (int c = 0; c < 3; ++c) {
+            const glm::dvec3 p(world.positions[world.triangles[t][c]]);
+            box.min = glm::min(box.min, p), box.max = glm::max(box.max, p);
+        }
+    }
+    return boxes;
 }
 
 Aabb boundsOf(const WorldGeometry& world) {
@@ -171,33 +199,32 @@ Aabb boundsOf(const WorldGeometry& world) {
     return box;
 }
 
-PreparedObject prepareObject(const DifferentialModel& model, const SyntheticObject& object, const ObjectSettings& settings) {
-    if (object.path.empty()) throw std::invalid_argument("synthetic object: its path has no frame");
-    for (const glm::mat4& placement : object.path) requireFinite(placement, "synthetic object");
-    PreparedObject prepared{objectLevels(object, settings.shadowTriangles), {}};
-    prepared.light = buildIrradianceVolume(model.model, model.radiance, *model.modelRays, pathBounds(prepared.levels, object.path),
+PreparedObject prepareObject(const DifferentialModel& model, std::span<const SyntheticObject> objects, const ObjectSettings& settings) {
+    PreparedObject prepared{objectLevels(objects, settings.shadowTriangles), {}};
+    prepared.light = buildIrradianceVolume(model.model, model.radiance, *model.modelRays, pathBounds(prepared.levels, objects),
                                            settings.probeSpacingM, model.settings.sampling);
     return prepared;
 }
 
-CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& object, const glm::mat4& placement,
+CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& object, std::span<const glm::mat4> placements,
                               const CompositeSettings& settings) {
     if (settings.passes < 0) throw std::invalid_argument("differential composite: passes must be 0 (all) or more");
     if (settings.mapSize < kMinMapResolution || settings.mapSize > kMaxMapResolution) {
         throw std::invalid_argument("differential composite: the map size is out of range");
     }
-    requireFinite(placement, "differential composite");
+    requireFinite(placements, "differential composite");
     StageTimer timer;
     CompositeFrame out;
-    const WorldGeometry whole = placed(object.levels.whole, placement);
+    const WorldGeometry whole = placed(object.levels.whole, placements);
     const Aabb box = boundsOf(whole);
     timer.lap("object");
-    out.hits = traverseShafts(m.shafts, m.sourceTree, m.receiverOctree, box);
+    const std::vector<Aabb> boxes = objectBounds(whole, placements.size());
+    out.hits = traverseObjects(m, boxes);
     timer.lap("traversal");
     const int n = settings.passes > 0 ? settings.passes : std::max<int>(1, int(out.hits.sourcePatches.size()));
     if (!out.hits.sourcePatches.empty()) out.clusters = representativeSources(m.sourceTree, out.hits.sourcePatches, n);
     timer.lap("clusters");
-    const std::vector<ClusterMap> maps = clusterMaps(m, object, placement, box, settings, out);
+    const std::vector<ClusterMap> maps = clusterMaps(m, object, placements, box, settings, out);
     timer.lap("shadow_maps");
     const std::vector<uint8_t> rows = listedRows(m, out.hits.receiverPatches);
     const std::vector<glm::vec3> sums = clusterTransfers(
@@ -214,8 +241,10 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     out.listedReceiverPixels.assign(g.pixelCount(), 0);
     out.shadowingClusters.assign(g.pixelCount(), 0);
     if (settings.keepMasks) out.clusterMasks.assign(maps.size(), std::vector<uint8_t>(g.pixelCount(), 0));
-    // Object points are lifted past the simplified level's error and 1% of the object's size.
-    const double lift = object.levels.simplified.errorM() * largestScale(placement) + 0.005 * glm::length(box.max - box.min);
+    // Object points are lifted past the simplified level's error and 1% of the largest object's size.
+    double size = 0.0;
+    for (const Aabb& b : boxes) size = std::max(size, glm::length(b.max - b.min));
+    const double lift = object.levels.simplified.errorM() * largestScale(placements) + 0.005 * size;
     const FrameContext f{m, object, maps, out.clusters, sums, listedPatch, open, lift, settings.ldr};
     tbb::parallel_for(0, g.height, [&](int j) {
         for (int i = 0; i < g.width; ++i) {

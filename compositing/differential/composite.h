@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -26,10 +27,10 @@
 
 namespace shadowlab {
 
-// The object with what every frame of its path shares: its two levels and its light.
+// The objects with what every frame of their paths shares: their two levels and their light.
 struct PreparedObject {
     ObjectLevels levels;
-    IrradianceVolume light;   // over the box of its whole path
+    IrradianceVolume light;   // over the box of their whole paths
 };
 
 struct ObjectSettings {
@@ -37,9 +38,9 @@ struct ObjectSettings {
     double probeSpacingM = 0.15;
 };
 
-// Throws std::invalid_argument for an object with no triangle, no frame in its path or a
-// placement that is not finite.
-PreparedObject prepareObject(const DifferentialModel& model, const SyntheticObject& object,
+// Throws std::invalid_argument as objectLevels does, or for a spacing the irradiance volume
+// refuses.
+PreparedObject prepareObject(const DifferentialModel& model, std::span<const SyntheticObject> objects,
                              const ObjectSettings& settings = {});
 
 struct CompositeSettings {
@@ -66,16 +67,20 @@ struct CompositeFrame {
     std::vector<std::vector<uint8_t>> clusterMasks;
 };
 
-// Throws std::invalid_argument for passes < 0, a map size outside the depth map's range or
-// a placement that is not finite.
-CompositeFrame compositeFrame(const DifferentialModel& model, const PreparedObject& object, const glm::mat4& placement,
-                              const CompositeSettings& settings = {});
+// `placements` places object i (placementsAt gives a frame of their paths). The traversal
+// runs once per object's box, so objects apart do not list the sources between them.
+// Throws std::invalid_argument for passes < 0, a map size outside the depth map's range, a
+// placement that is not finite, or a count of placements that is not the objects'.
+CompositeFrame compositeFrame(const DifferentialModel& model, const PreparedObject& object,
+                              std::span<const glm::mat4> placements, const CompositeSettings& settings = {});
 
-// The model's triangles then the placed object's, as the camera draws them: a pixel on a
-// triangle past the model's is the object's. A patch's corner normals are its normal.
+// The model's triangles then the placed objects', as the camera draws them: a pixel on a
+// triangle past the model's is an object's, whose material (its index) keeps its albedo. A
+// patch's corner normals are its normal.
 WorldGeometry withObject(const DifferentialModel& model, const WorldGeometry& object);
 
-// The box of a placed level's vertices.
+// The box of a placed level's vertices, and of each object's (instance's) apart.
 Aabb boundsOf(const WorldGeometry& world);
+std::vector<Aabb> objectBounds(const WorldGeometry& world, size_t objects);
 
 }  // namespace shadowlab

@@ -28,9 +28,11 @@ bool mayBlock(const Sphere& object, const Sphere& patch, const glm::dvec3& x) {
 }  // namespace
 
 std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const PreparedObject& object,
-                                             const glm::mat4& placement, const PatchSampling& sampling) {
-    if (!allFinite(placement)) throw std::invalid_argument("differential reference: the placement is not finite");
-    const WorldGeometry whole = placed(object.levels.whole, placement);
+                                             std::span<const glm::mat4> placements, const PatchSampling& sampling) {
+    for (const glm::mat4& placement : placements) {
+        if (!allFinite(placement)) throw std::invalid_argument("differential reference: a placement is not finite");
+    }
+    const WorldGeometry whole = placed(object.levels.whole, placements);
     const ReferenceVisibility objectRays(whole);
     const Aabb box = boundsOf(whole);
     const Sphere objectSphere{0.5 * (box.min + box.max), 0.5 * glm::length(box.max - box.min)};
@@ -43,7 +45,6 @@ std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const P
     // The camera's view with the object: its pixels, and which are the model's.
     const uint32_t modelTriangles = uint32_t(m.geometry.triangles.size());
     const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, raster::SimdLevel::Scalar);
-    const glm::dvec3 albedo(object.levels.whole.materials[0].albedo);
     std::vector<glm::vec3> image = m.background;
     tbb::parallel_for(0, g.height, [&](int j) {
         for (int i = 0; i < g.width; ++i) {
@@ -57,6 +58,7 @@ std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const P
                 const auto seen = [&](const glm::dvec3& q) {
                     return objectRays.pointVisible(g.position[k], N, q) && m.modelRays->pointVisible(g.position[k], N, q);
                 };
+                const glm::dvec3 albedo(object.levels.whole.materials[g.material[k]].albedo);
                 image[k] = glm::vec3(albedo * gatheredRadiance(m.model, m.radiance, radiant, x, glm::dvec3(g.shadingNormal[k]), sampling, k, seen));
                 continue;
             }

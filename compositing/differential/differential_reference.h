@@ -9,6 +9,7 @@
 // sphere is skipped, which changes nothing.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -21,8 +22,10 @@ namespace shadowlab {
 // Denser than the photograph's by default.
 inline PatchSampling referenceSampling() { return PatchSampling{8, 2, 0x7e1e5c0bea7ull}; }
 
-// Linear radiance per pixel. Throws std::invalid_argument for a placement that is not finite.
+// Linear radiance per pixel, object i placed by placements[i]. Throws std::invalid_argument
+// for a placement that is not finite or a count that is not the objects'.
 std::vector<glm::vec3> differentialReference(const DifferentialModel& model, const PreparedObject& object,
-                                             const glm::mat4& placement, const PatchSampling& sampling = referenceSampling());
+                                             std::span<const glm::mat4> placements,
+                                             const PatchSampling& sampling = referenceSampling());
 
 }  // namespace shadowlab

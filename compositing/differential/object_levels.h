@@ -1,8 +1,12 @@
-// The synthetic object as a frame uses it: the whole mesh for the camera (and the
-// reference), and a copy simplified by meshoptimizer to a few hundred triangles for the
-// shadow maps, which Gibson et al. 2003 render from "a simplified version of the object"
-// (section 8, 100 to 500 triangles) since a frame draws one map per cluster.
+// The synthetic objects as a frame uses them: the whole meshes for the camera (and the
+// reference), and copies simplified by meshoptimizer to a few hundred triangles each for
+// the shadow maps, which Gibson et al. 2003 render from "a simplified version of the
+// object" (section 7.2, 100 to 500 triangles) since a frame draws one map per cluster.
+// Object i is instance, mesh and material i of both levels.
 #pragma once
+
+#include <span>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -12,17 +16,22 @@
 namespace shadowlab {
 
 struct ObjectLevels {
-    Scene whole;                  // one instance of the object's mesh, at the identity
-    SimplifiedScene simplified;   // the same, simplified; its error in the mesh's units
+    Scene whole;                  // one instance per object, its albedo its material
+    SimplifiedScene simplified;   // the same, simplified; its errors in the meshes' units
 };
 
-// Throws std::invalid_argument for an object with no triangle or shadowTriangles < 4.
-ObjectLevels objectLevels(const SyntheticObject& object, int shadowTriangles = 300);
+// Throws std::invalid_argument for no object, an object with no triangle or no frame, paths
+// of different lengths, a placement that is not finite, or shadowTriangles < 4.
+ObjectLevels objectLevels(std::span<const SyntheticObject> objects, int shadowTriangles = 300);
 
-// The level's triangles in world space at a placement (one frame of the object's path).
-WorldGeometry placed(const Scene& level, const glm::mat4& placement);
+// Each object's placement at frame k of the paths.
+std::vector<glm::mat4> placementsAt(std::span<const SyntheticObject> objects, size_t frame);
+
+// The level's triangles in world space, object i placed by placements[i]. Throws
+// std::invalid_argument for a count that is not the level's.
+WorldGeometry placed(const Scene& level, std::span<const glm::mat4> placements);
 
 // The largest factor by which a placement stretches a length.
-double largestScale(const glm::mat4& placement);
+double largestScale(std::span<const glm::mat4> placements);
 
 }  // namespace shadowlab

@@ -70,12 +70,12 @@ CompositingScene compositingOutdoor(const EnvironmentMap& map, const Mesh& objec
     }
     for (PatchSurface& sky : environmentDome(map, s.domeColumns, s.domeRows, s.domeRadiusM)) scene.surfaces.push_back(std::move(sky));
     // The object walks across the path 3 m ahead.
+    SyntheticObject walker{object, glm::dvec3(0.72, 0.7, 0.66), {}};
     for (int k = 0; k <= 10; ++k) {
         const glm::dvec3 at = 3.0 * ahead + (-1.0 + 0.2 * k) * side;
-        scene.object.path.push_back(glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(at)), glm::vec3(0.06f)));
+        walker.path.push_back(glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(at)), glm::vec3(0.06f)));
     }
-    scene.object.mesh = object;
-    scene.object.albedo = glm::dvec3(0.72, 0.7, 0.66);
+    scene.objects = {std::move(walker)};
     // White at the photograph's 98th percentile of luminance (the brightest sky clips).
     std::vector<float> luminances;
     for (const glm::vec3& L : scene.background) luminances.push_back(luminance(L));

@@ -105,12 +105,12 @@ PhotoCase compositingChessboard(const Image8& photo, const PhotoCalibration& cal
                                                  float(scene.response.inverse(photo.rgb[k + 2]))));
         }
     }
+    SyntheticObject bunny{object, greyPhoto ? glm::dvec3(0.72) : glm::dvec3(0.75, 0.72, 0.68), {}};
     for (int k = 0; k < 5; ++k) {
         const glm::vec3 at(0.04f + 0.03f * float(k), 0.0f, 0.06f);
-        scene.object.path.push_back(glm::scale(glm::translate(glm::mat4(1.0f), at), glm::vec3(0.005f)));
+        bunny.path.push_back(glm::scale(glm::translate(glm::mat4(1.0f), at), glm::vec3(0.005f)));
     }
-    scene.object.mesh = object;
-    scene.object.albedo = greyPhoto ? glm::dvec3(0.72) : glm::dvec3(0.75, 0.72, 0.68);
+    scene.objects = {std::move(bunny)};
     return c;
 }
 

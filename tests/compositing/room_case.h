@@ -18,7 +18,7 @@ inline CompositingScene smallRoomScene(RoomPath path = RoomPath::UnderDesk, int 
 struct RoomCase {
     CompositingScene scene = smallRoomScene();
     DifferentialModel model = preprocess(scene);
-    PreparedObject object = prepareObject(model, scene.object);
+    PreparedObject object = prepareObject(model, scene.objects);
 };
 
 inline const RoomCase& smallRoom() {

@@ -63,9 +63,11 @@ TEST_CASE("compositing file: the shipped chessboard reads as it says and composi
     CHECK(file.crop == glm::ivec2(47, 1));
     REQUIRE(file.scene.surfaces.size() == 1);
     CHECK(file.scene.surfaces[0].cellsU == 10);
-    CHECK(file.scene.object.path.size() == 3);
+    REQUIRE(file.scene.objects.size() == 2);
+    CHECK(file.scene.objects[0].path.size() == 3);
+    CHECK(file.scene.objects[1].path.size() == 3);
     // Frame 1: scaled by 0.005, turned 45 degrees about +Y, then moved.
-    const glm::vec4 tip = file.scene.object.path[1] * glm::vec4(1, 0, 0, 1);
+    const glm::vec4 tip = file.scene.objects[0].path[1] * glm::vec4(1, 0, 0, 1);
     CHECK(tip.x == doctest::Approx(0.10 + 0.005 * 0.70710678).epsilon(1e-5));
     CHECK(tip.z == doctest::Approx(0.06 - 0.005 * 0.70710678).epsilon(1e-5));
     REQUIRE(file.dome.has_value());
@@ -73,10 +75,10 @@ TEST_CASE("compositing file: the shipped chessboard reads as it says and composi
     CHECK(scene.background.size() == size_t(592 * 470));
     CHECK(scene.surfaces.size() == 1 + 32 * 8);
     const DifferentialModel model = preprocess(scene);
-    const PreparedObject object = prepareObject(model, scene.object);
+    const PreparedObject object = prepareObject(model, scene.objects);
     CompositeSettings settings;
     settings.ldr = true;
-    const CompositeFrame frame = compositeFrame(model, object, scene.object.path[1], settings);
+    const CompositeFrame frame = compositeFrame(model, object, placementsAt(scene.objects, 1), settings);
     size_t objectPixels = 0;
     for (uint8_t p : frame.objectPixels) objectPixels += p;
     CHECK(objectPixels > 500);
@@ -94,6 +96,8 @@ TEST_CASE("compositing file: malformed files are refused, naming the file and th
     CHECK(errorOf(variant("rho", "[0.43, 0.43, 0.43]", "[1.5, 0.43, 0.43]")).find("reflectance") != std::string::npos);
     CHECK(errorOf(variant("flat", "\"edge_v\": [0, 0, -0.175]", "\"edge_v\": [0.5, 0, 0]")).find("no area") != std::string::npos);
     CHECK(errorOf(variant("path", "\"path\": [", "\"path\": [], \"unused\": [")).find("unused") != std::string::npos);
+    CHECK(errorOf(variant("frames", "{\"translate\": [0.18, 0.012, 0.11]},\n        {\"translate\": [0.18, 0.012, 0.11]},", ""))
+              .find("as many frames") != std::string::npos);
     CHECK(errorOf(variant("scale", "\"scale\": 0.005}", "\"scale\": -1}")).find("scale") != std::string::npos);
     CHECK(errorOf(variant("calibration", "chessboard_left05_camera.txt", "missing_camera.txt")).find("missing_camera.txt") !=
           std::string::npos);

@@ -75,7 +75,7 @@ TEST_CASE("outdoor case: the photograph is the panorama through the pinhole, ove
     CHECK(glm::cross(ground.edgeU, ground.edgeV).y > 0.0);
     CHECK(ground.origin.y == 0.0);
     for (int c = 0; c < 3; ++c) CHECK((ground.reflectance[c] >= 0.02 && ground.reflectance[c] <= 0.9));
-    CHECK(scene.object.path.size() == 11);
+    CHECK(scene.objects[0].path.size() == 11);
     settings.width = 8;
     CHECK_THROWS_AS(compositingOutdoor(map, bunny(), settings), std::invalid_argument);
     CHECK_THROWS_AS(compositingOutdoor(constantEnvironment(16, 8, glm::vec3(0.0f)), bunny(), {}), std::invalid_argument);

@@ -3,13 +3,16 @@
 // photograph comes back bit for bit; the composite approaches the exact differential
 // reference as the passes grow and takes most of the shadow; the object lifted off the
 // floor casts a fainter shadow (Figure 7); the LDR path stays within a few levels of the
-// HDR path's image; the same bytes for any thread count and SIMD level; bad settings refused.
+// HDR path's image; the same bytes for any thread count and SIMD level; two objects at once;
+// bad settings refused.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <set>
+#include <span>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -52,7 +55,7 @@ CompositeSettings passes(int n, bool ldr = false) {
 TEST_CASE("differential frame: with the object out of every shaft the photograph comes back bit for bit") {
     const RoomCase& room = smallRoom();
     // Below the floor, outside the room: no shaft reaches it and the floor hides it.
-    const glm::mat4 away = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -50.0f, 0.0f)) * room.scene.object.path[0];
+    const std::vector<glm::mat4> away = {glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -50.0f, 0.0f)) * room.scene.objects[0].path[0]};
     const CompositeFrame hdr = compositeFrame(room.model, room.object, away, passes(20));
     CHECK(hdr.hits.sourcePatches.empty());
     CHECK(hdr.clusters.empty());
@@ -60,7 +63,7 @@ TEST_CASE("differential frame: with the object out of every shaft the photograph
     const CompositeFrame ldr = compositeFrame(room.model, room.object, away, passes(20, true));
     CHECK(sameBytes(ldr.image, room.model.photographIntensities));
     // In the room the object darkens the floor.
-    const CompositeFrame in = compositeFrame(room.model, room.object, room.scene.object.path[0], passes(20));
+    const CompositeFrame in = compositeFrame(room.model, room.object, placementsAt(room.scene.objects, 0), passes(20));
     CHECK(!in.clusters.empty());
     CHECK(!sameBytes(in.image, room.model.background));
 }
@@ -68,7 +71,7 @@ TEST_CASE("differential frame: with the object out of every shaft the photograph
 TEST_CASE("differential frame: the composite approaches the exact reference as the passes grow") {
     const RoomCase& room = smallRoom();
     for (const int frame : {0, 5}) {
-        const glm::mat4& placement = room.scene.object.path[size_t(frame)];
+        const std::vector<glm::mat4> placement = placementsAt(room.scene.objects, size_t(frame));
         const std::vector<glm::vec3> reference = differentialReference(room.model, room.object, placement);
         const CompositeFrame one = compositeFrame(room.model, room.object, placement, passes(1));
         const CompositeFrame ten = compositeFrame(room.model, room.object, placement, passes(10));
@@ -98,13 +101,13 @@ double deepestShadow(const std::vector<glm::vec3>& background, const std::vector
 TEST_CASE("differential frame: the shadow fades as the object is lifted off the floor, as in the reference (Figure 7, left)") {
     const CompositingScene scene = smallRoomScene(RoomPath::Lift);
     const DifferentialModel model = preprocess(scene);
-    const PreparedObject object = prepareObject(model, scene.object);
+    const PreparedObject object = prepareObject(model, scene.objects);
     double previous = 2.0, previousReference = 2.0;
-    for (size_t k = 0; k < scene.object.path.size(); k += 2) {
-        const CompositeFrame frame = compositeFrame(model, object, scene.object.path[k], passes(0));
+    for (size_t k = 0; k < scene.objects[0].path.size(); k += 2) {
+        const CompositeFrame frame = compositeFrame(model, object, placementsAt(scene.objects, k), passes(0));
         const double deepest = deepestShadow(model.background, frame.image, frame.objectPixels);
         const double reference =
-            deepestShadow(model.background, differentialReference(model, object, scene.object.path[k]), frame.objectPixels);
+            deepestShadow(model.background, differentialReference(model, object, placementsAt(scene.objects, k)), frame.objectPixels);
         INFO("lift step " << k << ": deepest shadow " << deepest << ", the reference's " << reference);
         CHECK(deepest > 0.0);
         CHECK(deepest < previous);
@@ -122,7 +125,7 @@ TEST_CASE("differential frame: the shadow fades as the object is lifted off the 
 // every source is hidden, both sets' transfers are taken from the top of the response curve.
 TEST_CASE("differential frame: the 8-bit path within 2 levels of the radiance path where a shadow takes under 20% of the light") {
     const RoomCase& room = smallRoom();
-    const glm::mat4& placement = room.scene.object.path[5];
+    const std::vector<glm::mat4> placement = placementsAt(room.scene.objects, 5);
     const CompositeFrame hdr = compositeFrame(room.model, room.object, placement, passes(20));
     const CompositeFrame ldr = compositeFrame(room.model, room.object, placement, passes(20, true));
     size_t light = 0, shadowed = 0;
@@ -144,7 +147,7 @@ TEST_CASE("differential frame: the 8-bit path within 2 levels of the radiance pa
 
 TEST_CASE("differential frame: the same bytes on 1 and 2 threads and at every SIMD level") {
     const RoomCase& room = smallRoom();
-    const glm::mat4& placement = room.scene.object.path[3];
+    const std::vector<glm::mat4> placement = placementsAt(room.scene.objects, 3);
     CompositeSettings settings = passes(20);
     settings.simd = raster::SimdLevel::Scalar;
     const CompositeFrame scalarOne = withThreads(1, [&] { return compositeFrame(room.model, room.object, placement, settings); });
@@ -159,15 +162,44 @@ TEST_CASE("differential frame: the same bytes on 1 and 2 threads and at every SI
 
 TEST_CASE("differential frame: bad settings and placements are refused") {
     const RoomCase& room = smallRoom();
-    const glm::mat4& placement = room.scene.object.path[0];
+    const std::vector<glm::mat4> placement = placementsAt(room.scene.objects, 0);
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, passes(-1)), std::invalid_argument);
     CompositeSettings settings;
     settings.mapSize = 8;
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, settings), std::invalid_argument);
     settings.mapSize = 1 << 20;
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, settings), std::invalid_argument);
-    glm::mat4 notFinite = placement;
-    notFinite[3].y = std::numeric_limits<float>::infinity();
+    std::vector<glm::mat4> notFinite = placement;
+    notFinite[0][3].y = std::numeric_limits<float>::infinity();
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, notFinite, passes(10)), std::invalid_argument);
     CHECK_THROWS_AS(differentialReference(room.model, room.object, notFinite), std::invalid_argument);
+}
+
+TEST_CASE("differential frame: two objects list the union of their sources and shadow at least as much as either") {
+    const RoomCase& room = smallRoom();
+    std::vector<SyntheticObject> two = {room.scene.objects[0], room.scene.objects[0]};
+    for (glm::mat4& placement : two[1].path) placement = glm::translate(glm::mat4(1.0f), glm::vec3(0.8f, 0.0f, 0.3f)) * placement;
+    const PreparedObject both = prepareObject(room.model, two);
+    const PreparedObject first = prepareObject(room.model, std::span(two).first(1));
+    const PreparedObject second = prepareObject(room.model, std::span(two).last(1));
+    const std::vector<glm::mat4> at = placementsAt(two, 2);
+    const CompositeFrame a = compositeFrame(room.model, first, std::span(at).first(1), passes(0));
+    const CompositeFrame b = compositeFrame(room.model, second, std::span(at).last(1), passes(0));
+    const CompositeFrame ab = compositeFrame(room.model, both, at, passes(0));
+    std::set<uint32_t> expected(a.hits.sourcePatches.begin(), a.hits.sourcePatches.end());
+    expected.insert(b.hits.sourcePatches.begin(), b.hits.sourcePatches.end());
+    CHECK(std::set<uint32_t>(ab.hits.sourcePatches.begin(), ab.hits.sourcePatches.end()) == expected);
+    const auto taken = [&](const CompositeFrame& f) {
+        double sum = 0.0;
+        for (size_t p = 0; p < f.image.size(); ++p) {
+            if (!f.objectPixels[p]) sum += luminance(room.model.background[p]) - luminance(f.image[p]);
+        }
+        return sum;
+    };
+    CHECK(taken(ab) > taken(a));
+    CHECK(taken(ab) > taken(b));
+    // Both objects are drawn, each with its own pixels.
+    size_t pixels[3] = {0, 0, 0};
+    for (size_t p = 0; p < ab.image.size(); ++p) pixels[0] += a.objectPixels[p], pixels[1] += b.objectPixels[p], pixels[2] += ab.objectPixels[p];
+    CHECK(pixels[2] > std::max(pixels[0], pixels[1]));
 }

@@ -265,17 +265,21 @@ TEST_CASE("differential inputs: bad surfaces, settings, objects and backgrounds 
     CHECK_THROWS_AS(compositingRoom(Mesh{}, RoomPath::Lift, 8, 100), std::invalid_argument);
 
     const RoomCase& room = smallRoom();
-    SyntheticObject object = room.scene.object;
-    object.path.clear();
-    CHECK_THROWS_AS(prepareObject(room.model, object), std::invalid_argument);
-    object = room.scene.object;
-    object.mesh.triangles.clear();
-    CHECK_THROWS_AS(prepareObject(room.model, object), std::invalid_argument);
-    CHECK_THROWS_AS(prepareObject(room.model, room.scene.object, {3, 0.15}), std::invalid_argument);
-    CHECK_THROWS_AS(prepareObject(room.model, room.scene.object, {300, 0.0}), std::invalid_argument);
-    CHECK_THROWS_AS(prepareObject(room.model, room.scene.object, {300, 1e-5}), std::invalid_argument);
-    CHECK_THROWS_AS(prepareObject(room.model, room.scene.object, {300, std::numeric_limits<double>::infinity()}), std::invalid_argument);
-    object = room.scene.object;
-    object.path[1][3].x = std::nan("");
-    CHECK_THROWS_AS(prepareObject(room.model, object), std::invalid_argument);
+    std::vector<SyntheticObject> objects = room.scene.objects;
+    objects[0].path.clear();
+    CHECK_THROWS_AS(prepareObject(room.model, objects), std::invalid_argument);
+    objects = room.scene.objects;
+    objects[0].mesh.triangles.clear();
+    CHECK_THROWS_AS(prepareObject(room.model, objects), std::invalid_argument);
+    CHECK_THROWS_AS(prepareObject(room.model, std::vector<SyntheticObject>{}), std::invalid_argument);
+    CHECK_THROWS_AS(prepareObject(room.model, room.scene.objects, {3, 0.15}), std::invalid_argument);
+    CHECK_THROWS_AS(prepareObject(room.model, room.scene.objects, {300, 0.0}), std::invalid_argument);
+    CHECK_THROWS_AS(prepareObject(room.model, room.scene.objects, {300, 1e-5}), std::invalid_argument);
+    CHECK_THROWS_AS(prepareObject(room.model, room.scene.objects, {300, std::numeric_limits<double>::infinity()}), std::invalid_argument);
+    objects = {room.scene.objects[0], room.scene.objects[0]};
+    objects[1].path.pop_back();   // paths of different lengths
+    CHECK_THROWS_AS(prepareObject(room.model, objects), std::invalid_argument);
+    objects = room.scene.objects;
+    objects[0].path[1][3].x = std::nan("");
+    CHECK_THROWS_AS(prepareObject(room.model, objects), std::invalid_argument);
 }
