@@ -100,9 +100,11 @@ DomeRequest readDome(const JsonObject& o, const std::string& directory) {
 
 }  // namespace
 
-CompositingFile loadCompositingFile(const std::string& path) {
+CompositingFile loadCompositingFile(const std::string& path) { return parseCompositingFile(readWholeFile(path), path); }
+
+CompositingFile parseCompositingFile(const std::string& text, const std::string& path) {
     const std::string directory = std::filesystem::path(path).parent_path().string();
-    const nlohmann::json document = parseJson(readWholeFile(path), path);
+    const nlohmann::json document = parseJson(text, path);
     const JsonObject o = JsonField(document, path, "").object(
         {"name", "photograph", "response", "camera", "calibration", "surfaces", "objects", "dome"});
     CompositingFile file;

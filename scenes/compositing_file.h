@@ -32,5 +32,7 @@ struct CompositingFile {
 // Paths are relative to the file's folder. Throws SceneError naming the file and the field
 // for anything malformed or out of range (compositing_scene.h's checks, and unknown keys).
 CompositingFile loadCompositingFile(const std::string& path);
+// The same for the file's text, read as if from `path` (the fuzz target's way in).
+CompositingFile parseCompositingFile(const std::string& text, const std::string& path);
 
 }  // namespace shadowlab

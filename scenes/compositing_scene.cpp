@@ -49,10 +49,18 @@ glm::dvec3 PatchModel::pointAt(uint32_t p, double u, double v) const {
 }
 
 PatchModel flattenPatches(const std::vector<PatchSurface>& surfaces) {
+    size_t patches = 0;
+    for (const PatchSurface& surface : surfaces) {
+        requireValid(surface);
+        patches += size_t(surface.cellsU) * size_t(surface.cellsV);
+    }
+    if (patches > kMaxCompositingPatches) {
+        throw std::invalid_argument("compositing scene: " + std::to_string(patches) + " patches, more than " +
+                                    std::to_string(kMaxCompositingPatches));
+    }
     PatchModel model;
     for (uint32_t s = 0; s < surfaces.size(); ++s) {
         const PatchSurface& surface = surfaces[s];
-        requireValid(surface);
         const glm::dvec3 normal = glm::normalize(glm::cross(surface.edgeU, surface.edgeV));
         const uint32_t first = uint32_t(model.vertices.size());
         const glm::dvec3 centre = surface.origin + 0.5 * (surface.edgeU + surface.edgeV);

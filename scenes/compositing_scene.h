@@ -59,7 +59,13 @@ struct PatchModel {
     glm::dvec3 centre(uint32_t p) const { return pointAt(p, 0.5, 0.5); }
 };
 
-// Throws std::invalid_argument for a surface with a non-finite origin, no area, fewer than one cell per side,
+// The most patches a model may have: differential rendering's preprocessing grows with
+// their square (every receiver vertex gathers from every radiant patch), and a model of
+// this many already takes minutes.
+inline constexpr size_t kMaxCompositingPatches = size_t(1) << 16;
+
+// Throws std::invalid_argument for more than kMaxCompositingPatches patches in all (before
+// anything is allocated), a surface with a non-finite origin, no area, fewer than one cell per side,
 // more than 4096 cells per side, a reflectance outside [0, 1), a negative or non-finite
 // emitted radiance, or an emitted list of neither 1 nor cellsU * cellsV values.
 PatchModel flattenPatches(const std::vector<PatchSurface>& surfaces);

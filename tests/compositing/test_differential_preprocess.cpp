@@ -242,6 +242,7 @@ TEST_CASE("differential inputs: bad surfaces, settings, objects and backgrounds 
     CHECK_THROWS_AS(flattenPatches(surfaceWith([](PatchSurface& s) { s.emitted = {glm::dvec3(-1.0)}; })), std::invalid_argument);
     CHECK_THROWS_AS(flattenPatches(surfaceWith([](PatchSurface& s) { s.origin.x = std::nan(""); })), std::invalid_argument);
     CHECK_NOTHROW(flattenPatches(surfaceWith([](PatchSurface& s) { s.emitted.assign(4, glm::dvec3(1.0)); })));
+    CHECK_THROWS_AS(flattenPatches(surfaceWith([](PatchSurface& s) { s.cellsU = s.cellsV = 4096; })), std::invalid_argument);
 
     CompositingScene scene = smallRoomScene(RoomPath::UnderDesk, 16, 16);
     for (const double share : {0.0, -0.5, 1.5, std::nan("")}) {
