@@ -37,19 +37,24 @@ CompositingScene compositingCase(const CompositeArgs& a) {
     if (a.scene == "outdoor") {
         OutdoorSettings settings;
         settings.width = a.width, settings.height = a.height;
-        return compositingOutdoor(readEnvironmentMap(builtinSceneDir() + "/environments/blender_forest.exr"), bunny, settings);
+        return compositingOutdoor(readEnvironmentMap(builtinSceneDir() + "/environments/blender_forest.exr"), bunny,
+                                  settings);
     }
     if (a.scene == "chessboard") {
         const std::string dir = builtinSceneDir() + "/photos/";
-        const PhotoCase c = compositingChessboard(readImage8(dir + "chessboard_left05_undistorted.png"),
-                                                  readPhotoCalibration(dir + "chessboard_left05_camera.txt"),
-                                                  readEnvironmentMap(builtinSceneDir() + "/environments/blender_interior.exr"), bunny);
-        std::printf("chessboard: the photograph's window %d x %d from (%d, %d), principal point %.2f px off its centre; "
-                    "the response's exposure fitted to the white squares: %.6g\n",
-                    c.scene.camera.width, c.scene.camera.height, c.crop.x, c.crop.y, c.offAxisPixels, c.scene.response.exposure);
+        const PhotoCase c = compositingChessboard(
+            readImage8(dir + "chessboard_left05_undistorted.png"),
+            readPhotoCalibration(dir + "chessboard_left05_camera.txt"),
+            readEnvironmentMap(builtinSceneDir() + "/environments/blender_interior.exr"), bunny);
+        std::printf(
+            "chessboard: the photograph's window %d x %d from (%d, %d), principal point %.2f px off its centre; "
+            "the response's exposure fitted to the white squares: %.6g\n",
+            c.scene.camera.width, c.scene.camera.height, c.crop.x, c.crop.y, c.offAxisPixels,
+            c.scene.response.exposure);
         return c.scene;
     }
-    throw std::invalid_argument("composite: unknown case '" + a.scene + "' (room, room-lift, outdoor, chessboard, or a .json file)");
+    throw std::invalid_argument(
+        "composite: unknown case '" + a.scene + "' (room, room-lift, outdoor, chessboard, or a .json file)");
 }
 
 // What a PNG shows: the camera's 8-bit response to radiance (the LDR path's images are
@@ -113,8 +118,8 @@ Difference difference(const std::vector<glm::vec3>& reference, const std::vector
 }
 
 // |reference - test| of the luminance, white at `fullScale`.
-void writeErrorMap(const std::filesystem::path& path, const DifferentialModel& m, const std::vector<glm::vec3>& reference,
-                   const std::vector<glm::vec3>& test, double fullScale) {
+void writeErrorMap(const std::filesystem::path& path, const DifferentialModel& m,
+                   const std::vector<glm::vec3>& reference, const std::vector<glm::vec3>& test, double fullScale) {
     std::vector<uint8_t> rgb;
     for (size_t k = 0; k < reference.size(); ++k) {
         const double e = (double(luminance(reference[k])) - double(luminance(test[k]))) / fullScale;
@@ -167,12 +172,13 @@ void writeIntensityError(const std::filesystem::path& dir, const DifferentialMod
     std::string csv = "first_set_percent,occluded,occluded_percent,rms_levels,largest_levels\n";
     const double sources = double(m.transfers.sources.size());
     for (const double share : {0.5, 0.25, 0.1}) {
-        PlotSeries series{"sets " + std::to_string(int(100 * share)) + "/" + std::to_string(int(100 - 100 * share)), {}, {}, {}};
+        PlotSeries series{"sets " + std::to_string(int(100 * share)) + "/" + std::to_string(int(100 - 100 * share)),
+                          {}, {}, {}};
         for (const IntensityErrorPoint& p : intensityTransferError(m.transfers, m.response, share, 20)) {
             const double percent = 100.0 * p.occluded / sources;
             series.x.push_back(percent), series.y.push_back(p.rmsLevels);
-            csv += std::to_string(int(100 * share)) + "," + std::to_string(p.occluded) + "," + std::to_string(percent) + "," +
-                   std::to_string(p.rmsLevels) + "," + std::to_string(p.largestLevels) + "\n";
+            csv += std::to_string(int(100 * share)) + "," + std::to_string(p.occluded) + "," + std::to_string(percent) +
+                   "," + std::to_string(p.rmsLevels) + "," + std::to_string(p.largestLevels) + "\n";
         }
         plot.series.push_back(std::move(series));
     }
@@ -181,8 +187,9 @@ void writeIntensityError(const std::filesystem::path& dir, const DifferentialMod
 }
 
 // The frame, and the median wall time of `runs` of it after the warm-up.
-CompositeFrame timedFrame(const DifferentialModel& m, const PreparedObject& object, std::span<const glm::mat4> placement,
-                          const CompositeSettings& settings, const CompositeArgs& a, double& medianMs) {
+CompositeFrame timedFrame(const DifferentialModel& m, const PreparedObject& object,
+                          std::span<const glm::mat4> placement, const CompositeSettings& settings,
+                          const CompositeArgs& a, double& medianMs) {
     for (int w = 0; w < a.warmupRuns; ++w) compositeFrame(m, object, placement, settings);
     std::vector<double> times;
     CompositeFrame frame;
@@ -203,7 +210,8 @@ void run(const CompositeArgs& a) {
         for (int k = 0; k < int(scene.objects.front().path.size()); ++k) frames.push_back(k);
     }
     for (int k : frames) {
-        if (k < 0 || k >= int(scene.objects.front().path.size())) throw std::invalid_argument("composite: no such frame in the path");
+        if (k < 0 || k >= int(scene.objects.front().path.size()))
+            throw std::invalid_argument("composite: no such frame in the path");
     }
     const std::filesystem::path dir(a.outDir);
     std::filesystem::create_directories(dir);
@@ -221,11 +229,14 @@ void run(const CompositeArgs& a) {
                                    {"runs", a.runs}, {"warmup_runs", a.warmupRuns},
                                    {"threads", a.threads}, {"preprocess_ms", preprocessMs},
                                    {"preprocess", statsJson(m.stats)}, {"frames", nlohmann::ordered_json::array()}};
-    std::printf("%s: preprocessed in %.0f ms (%zu sources, %zu receiver patches, %zu shaft leaves)\n", scene.name.c_str(),
-                preprocessMs, m.transfers.sources.size(), m.transfers.receiverPatches.size(), m.shafts.leafCount());
+    std::printf("%s: preprocessed in %.0f ms (%zu sources, %zu receiver patches, %zu shaft leaves)\n",
+                scene.name.c_str(), preprocessMs, m.transfers.sources.size(), m.transfers.receiverPatches.size(),
+                m.shafts.leafCount());
     if (a.ldrError) writeIntensityError(dir, m);
-    LinePlot timeRms{scene.name + ": time against RMS (labels: passes n)", "median ms per frame", "RMS against the reference (luminance)", {}};
-    LinePlot depth{scene.name + ": the deepest shadow along the path", "frame of the path", "largest share of a pixel's light taken", {}};
+    LinePlot timeRms{scene.name + ": time against RMS (labels: passes n)", "median ms per frame",
+                     "RMS against the reference (luminance)", {}};
+    LinePlot depth{scene.name + ": the deepest shadow along the path", "frame of the path",
+                   "largest share of a pixel's light taken", {}};
     for (const int n : a.passes) depth.series.push_back({passesLabel(n), {}, {}, {}});
     depth.series.push_back({"reference", {}, {}, {}});
     for (const int k : frames) {
@@ -236,7 +247,8 @@ void run(const CompositeArgs& a) {
         if (a.reference) {
             const auto referenceStart = std::chrono::steady_clock::now();
             PatchSampling strata = referenceSampling();
-            strata.emitterSamplesPerAxis = a.referenceStrata.at(0), strata.reflectorSamplesPerAxis = a.referenceStrata.at(1);
+            strata.emitterSamplesPerAxis = a.referenceStrata.at(0),
+                strata.reflectorSamplesPerAxis = a.referenceStrata.at(1);
             reference = differentialReference(m, object, placement, strata);
             frameJson["reference_ms"] = millisecondsSince(referenceStart);
             if (a.referenceConvergence) {
@@ -259,11 +271,14 @@ void run(const CompositeArgs& a) {
             const std::string name = frameName(k, n);
             writeImage(dir, (a.ldr ? "composite-ldr-" : "composite-") + name, m, frame.image, a.ldr);
             writeOverlay(dir / ("listed-" + name + ".png"), m, frame.listedReceiverPixels, 1, {0.2f, 0.6f, 1.0f});
-            writeOverlay(dir / ("shadowing-" + name + ".png"), m, frame.shadowingClusters, std::max<int>(1, int(frame.clusters.size())),
-                         {1.0f, 0.3f, 0.1f});
-            writeTextFile(dir / ("plan-" + name + ".svg"), formatPlanSvg(m, frame, objectBounds(placed(object.levels.whole, placement), placement.size())));
+            writeOverlay(dir / ("shadowing-" + name + ".png"), m, frame.shadowingClusters,
+                         std::max<int>(1, int(frame.clusters.size())), {1.0f, 0.3f, 0.1f});
+            writeTextFile(dir / ("plan-" + name + ".svg"),
+                          formatPlanSvg(m, frame,
+                                        objectBounds(placed(object.levels.whole, placement), placement.size())));
             for (size_t c = 0; c < frame.clusterMasks.size(); ++c) {
-                writeOverlay(dir / ("mask-" + name + "-c" + std::to_string(c) + ".png"), m, frame.clusterMasks[c], 1, {1.0f, 0.9f, 0.2f});
+                writeOverlay(dir / ("mask-" + name + "-c" + std::to_string(c) + ".png"), m, frame.clusterMasks[c], 1,
+                             {1.0f, 0.9f, 0.2f});
             }
             nlohmann::ordered_json row = {{"passes", n}, {"median_ms", ms}, {"stats", statsJson(frame.stats)}};
             row["clusters"] = nlohmann::ordered_json::array();
@@ -273,7 +288,8 @@ void run(const CompositeArgs& a) {
                                            {"transfer_radiance", frame.clusters[c].transfer},
                                            {"light", {l.x, l.y, l.z}}});
             }
-            const double deepest = deepestShadow(a.ldr ? m.photographIntensities : m.background, frame.image, frame.objectPixels);
+            const double deepest = deepestShadow(a.ldr ? m.photographIntensities : m.background, frame.image,
+                                                 frame.objectPixels);
             row["deepest_shadow_ratio"] = deepest;
             objectPixels = frame.objectPixels;
             if (!a.ldr) depth.series[i].x.push_back(k), depth.series[i].y.push_back(deepest);
@@ -282,12 +298,15 @@ void run(const CompositeArgs& a) {
                 row["rms_radiance"] = d.rms, row["max_radiance"] = d.max;
                 row["rms_object_radiance"] = d.rmsObject, row["rms_receivers_radiance"] = d.rmsReceivers;
                 writeErrorMap(dir / ("error-" + name + ".png"), m, reference, frame.image, 0.05);
-                frameSeries.x.push_back(ms), frameSeries.y.push_back(d.rms), frameSeries.labels.push_back(passesLabel(n));
-                std::printf("frame %d, n = %s: %.2f ms, %zu clusters, RMS %.5f against the reference (object %.5f, the rest %.5f)\n", k,
-                            n > 0 ? std::to_string(n).c_str() : "all", ms, frame.clusters.size(), d.rms, d.rmsObject, d.rmsReceivers);
+                frameSeries.x.push_back(ms), frameSeries.y.push_back(d.rms),
+                    frameSeries.labels.push_back(passesLabel(n));
+                std::printf("frame %d, n = %s: %.2f ms, %zu clusters, RMS %.5f against the reference "
+                            "(object %.5f, the rest %.5f)\n",
+                            k, n > 0 ? std::to_string(n).c_str() : "all", ms, frame.clusters.size(), d.rms, d.rmsObject,
+                            d.rmsReceivers);
             } else {
-                std::printf("frame %d, n = %s: %.2f ms, %zu clusters\n", k, n > 0 ? std::to_string(n).c_str() : "all", ms,
-                            frame.clusters.size());
+                std::printf("frame %d, n = %s: %.2f ms, %zu clusters\n", k, n > 0 ? std::to_string(n).c_str() : "all",
+                            ms, frame.clusters.size());
             }
             frameJson["passes"].push_back(row);
         }

@@ -13,6 +13,7 @@ namespace shadowlab {
 
 // x to the right and z downwards, fitted to the receivers and the object's box (sources
 // farther out, such as a sky dome, are cut off at the frame).
-std::string formatPlanSvg(const DifferentialModel& model, const CompositeFrame& frame, const std::vector<Aabb>& objectBoxes);
+std::string formatPlanSvg(const DifferentialModel& model, const CompositeFrame& frame,
+                          const std::vector<Aabb>& objectBoxes);
 
 }  // namespace shadowlab

@@ -16,7 +16,8 @@ constexpr double kLeft = 70, kRight = 620, kTop = 40, kBottom = 440;   // the le
 
 struct Axis {
     double step, top;
-    explicit Axis(double largest) : step(svg::niceTickStep(largest)), top(std::max(step, std::ceil(largest / step) * step)) {}
+    explicit Axis(double largest)
+        : step(svg::niceTickStep(largest)), top(std::max(step, std::ceil(largest / step) * step)) {}
 };
 
 void requireValid(const LinePlot& plot) {
@@ -47,18 +48,21 @@ std::string formatLinePlotSvg(const LinePlot& plot) {
     const Axis ax(largestX), ay(1.05 * largestY);
     const auto X = [&](double x) { return kLeft + x / ax.top * (kRight - kLeft); };
     const auto Y = [&](double y) { return kBottom - y / ay.top * (kBottom - kTop); };
-    std::string text = format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%.0f" height="%.0f" viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="12">)" "\n",
+    std::string text = format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%.0f" height="%.0f" )"
+                              R"(viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="12">)" "\n",
                               kWidth, kHeight, kWidth, kHeight);
     text += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", kWidth, kHeight);
     text += format(R"(<text x="%.1f" y="24" font-size="14">%s</text>)" "\n", kLeft, svg::escape(plot.title).c_str());
-    text += format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n", kLeft, kTop,
-                   kRight - kLeft, kBottom - kTop);
+    text += format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n", kLeft,
+                   kTop, kRight - kLeft, kBottom - kTop);
     for (double x = 0.0; x <= ax.top * (1 + 1e-9); x += ax.step) {
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", X(x), kTop, X(x), kBottom);
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", X(x), kTop, X(x),
+                       kBottom);
         text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", X(x), kBottom + 16, x);
     }
     for (double y = 0.0; y <= ay.top * (1 + 1e-9); y += ay.step) {
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kLeft, Y(y), kRight, Y(y));
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kLeft, Y(y), kRight,
+                       Y(y));
         text += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kLeft - 6, Y(y) + 4, y);
     }
     text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%s</text>)" "\n", (kLeft + kRight) / 2, kBottom + 40,
@@ -71,16 +75,17 @@ std::string formatLinePlotSvg(const LinePlot& plot) {
         const char* colour = svg::kPalette[i % std::size(svg::kPalette)];
         std::string points;
         for (size_t k = 0; k < s.x.size(); ++k) points += format("%.1f,%.1f ", X(s.x[k]), Y(s.y[k]));
-        text += format(R"(<polyline class="series" fill="none" stroke="%s" stroke-width="1.5" points="%s"/>)" "\n", colour,
-                       points.c_str());
+        text += format(R"(<polyline class="series" fill="none" stroke="%s" stroke-width="1.5" points="%s"/>)" "\n",
+                       colour, points.c_str());
         for (size_t k = 0; k < s.x.size(); ++k) {
-            text += format(R"(<circle class="point" cx="%.1f" cy="%.1f" r="3.5" fill="%s"><title>%s: %g, %g</title></circle>)" "\n",
-                           X(s.x[k]), Y(s.y[k]), colour, svg::escape(s.name).c_str(), s.x[k], s.y[k]);
+            text += format(
+                R"(<circle class="point" cx="%.1f" cy="%.1f" r="3.5" fill="%s"><title>%s: %g, %g</title></circle>)"
+                "\n", X(s.x[k]), Y(s.y[k]), colour, svg::escape(s.name).c_str(), s.x[k], s.y[k]);
             if (!s.labels.empty()) text += svg::label(X(s.x[k]), Y(s.y[k]), s.labels[k], placed, kTop, kBottom);
         }
         const double legendY = kTop + 10 + 18 * double(i);
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-width="2"/>)" "\n", kRight + 20,
-                       legendY - 4, kRight + 40, legendY - 4, colour);
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-width="2"/>)" "\n",
+                       kRight + 20, legendY - 4, kRight + 40, legendY - 4, colour);
         text += format(R"(<text x="%.1f" y="%.1f">%s</text>)" "\n", kRight + 46, legendY, svg::escape(s.name).c_str());
     }
     return text + "</svg>\n";

@@ -41,7 +41,8 @@ Camera readCalibratedCamera(const JsonObject& o, const std::string& directory, g
         }
     }
     try {
-        const PhotoCalibration calibration = readPhotoCalibration((std::filesystem::path(directory) / o["file"].string()).string());
+        const PhotoCalibration calibration =
+            readPhotoCalibration((std::filesystem::path(directory) / o["file"].string()).string());
         double off = 0.0;
         return cameraOf(calibration, worldFromTarget, crop, off);
     } catch (const std::exception& error) {
@@ -53,7 +54,8 @@ PatchSurface readSurface(const JsonField& field) {
     const JsonObject o = field.object({"name", "origin", "edge_u", "edge_v", "cells", "reflectance", "emitted"});
     PatchSurface s;
     if (auto name = o.optional("name")) s.name = name->string();
-    s.origin = glm::dvec3(o["origin"].vec3()), s.edgeU = glm::dvec3(o["edge_u"].vec3()), s.edgeV = glm::dvec3(o["edge_v"].vec3());
+    s.origin = glm::dvec3(o["origin"].vec3()), s.edgeU = glm::dvec3(o["edge_u"].vec3()),
+        s.edgeV = glm::dvec3(o["edge_v"].vec3());
     const std::vector<JsonField> cells = o["cells"].elements(2);
     s.cellsU = cells[0].integer({1.0, 4096.0, false, false}), s.cellsV = cells[1].integer({1.0, 4096.0, false, false});
     if (auto rho = o.optional("reflectance")) s.reflectance = glm::dvec3(rho->vec3(kReflectance));
@@ -116,7 +118,8 @@ CompositingFile parseCompositingFile(const std::string& text, const std::string&
         scene.response = {r["exposure"].number(kPositive), r["gamma"].number(kPositive)};
     }
     if (o.has("camera") == o.has("calibration")) o.field().fail("needs exactly one of \"camera\" and \"calibration\"");
-    scene.camera = o.has("camera") ? readCamera(o["camera"].object()) : readCalibratedCamera(o["calibration"].object(), directory, file.crop);
+    scene.camera = o.has("camera") ? readCamera(o["camera"].object())
+                                   : readCalibratedCamera(o["calibration"].object(), directory, file.crop);
     for (const JsonField& surface : o["surfaces"].elements()) scene.surfaces.push_back(readSurface(surface));
     try {
         flattenPatches(scene.surfaces);   // its checks, reported against the file

@@ -67,7 +67,8 @@ PatchModel flattenPatches(const std::vector<PatchSurface>& surfaces) {
         const int nu = surface.cellsU, nv = surface.cellsV;
         for (int b = 0; b <= nv; ++b) {
             for (int a = 0; a <= nu; ++a) {
-                const glm::dvec3 vertex = surface.origin + surface.edgeU * (double(a) / nu) + surface.edgeV * (double(b) / nv);
+                const glm::dvec3 vertex =
+                    surface.origin + surface.edgeU * (double(a) / nu) + surface.edgeV * (double(b) / nv);
                 model.vertices.push_back(vertex);
                 model.vertexInside.push_back(vertex + 1e-4 * (centre - vertex));
                 model.vertexNormal.push_back(normal);

@@ -45,10 +45,12 @@ const std::vector<double>& numbers(const std::map<std::string, std::vector<doubl
                                    size_t count, const std::string& path) {
     const auto it = lines.find(key);
     if (it == lines.end() || it->second.size() != count) {
-        throw std::runtime_error("calibration '" + path + "': needs a line '" + key + "' of " + std::to_string(count) + " numbers");
+        throw std::runtime_error(
+            "calibration '" + path + "': needs a line '" + key + "' of " + std::to_string(count) + " numbers");
     }
     for (double v : it->second) {
-        if (!std::isfinite(v)) throw std::runtime_error("calibration '" + path + "': '" + key + "' has a non-finite number");
+        if (!std::isfinite(v))
+            throw std::runtime_error("calibration '" + path + "': '" + key + "' has a non-finite number");
     }
     return it->second;
 }
@@ -69,7 +71,8 @@ PhotoCalibration readPhotoCalibration(const std::string& path) {
     }
     c.width = int(size[0]), c.height = int(size[1]);
     if (K[1] != 0.0 || K[3] != 0.0 || K[6] != 0.0 || K[7] != 0.0 || K[8] != 1.0 || !(K[0] > 0.0) || !(K[4] > 0.0)) {
-        throw std::runtime_error("calibration '" + path + "': K must be [fx 0 cx; 0 fy cy; 0 0 1] with positive focal lengths");
+        throw std::runtime_error(
+            "calibration '" + path + "': K must be [fx 0 cx; 0 fy cy; 0 0 1] with positive focal lengths");
     }
     c.fx = K[0], c.cx = K[2], c.fy = K[4], c.cy = K[5];
     for (int row = 0; row < 3; ++row) {
@@ -89,12 +92,14 @@ PhotoCalibration readPhotoCalibration(const std::string& path) {
 }
 
 Camera cameraOf(const PhotoCalibration& c, const glm::dmat4& worldFromTarget, glm::ivec2& crop, double& offAxisPixels) {
-    if (std::abs(c.fx - c.fy) > 0.01 * c.fx) throw std::invalid_argument("photo camera: fx and fy differ (square pixels only)");
+    if (std::abs(c.fx - c.fy) > 0.01 * c.fx)
+        throw std::invalid_argument("photo camera: fx and fy differ (square pixels only)");
     // The principal point in our pixel coordinates (centres at whole + 0.5).
     const double px = c.cx + 0.5, py = c.cy + 0.5;
     const int halfWidth = int(std::floor(std::min(px, double(c.width) - px))) - 1;
     const int halfHeight = int(std::floor(std::min(py, double(c.height) - py))) - 1;
-    if (halfWidth < 8 || halfHeight < 8) throw std::invalid_argument("photo camera: the principal point is too near the edge");
+    if (halfWidth < 8 || halfHeight < 8)
+        throw std::invalid_argument("photo camera: the principal point is too near the edge");
     crop = {int(std::lround(px - halfWidth)), int(std::lround(py - halfHeight))};
     const glm::dvec2 off(px - (crop.x + halfWidth), py - (crop.y + halfHeight));
     offAxisPixels = std::sqrt(glm::dot(off, off));

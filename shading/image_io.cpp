@@ -89,12 +89,12 @@ std::vector<std::string> channelNamesOf(const Imf::Header& header) {
 void checkExrSize(const fs::path& path, int64_t width, int64_t height, size_t channels) {
     if (width < 1 || height < 1 || width > raster::kMaxViewport || height > raster::kMaxViewport) {
         throw std::runtime_error("EXR file " + quoted(path) + ": its data window is " + std::to_string(width) + " x " +
-                                 std::to_string(height) + " pixels; images must be 1.." + std::to_string(raster::kMaxViewport) +
-                                 " on a side");
+                                 std::to_string(height) + " pixels; images must be 1.." +
+                                 std::to_string(raster::kMaxViewport) + " on a side");
     }
     if (channels > kMaxImageChannels) {
-        throw std::runtime_error("EXR file " + quoted(path) + ": " + std::to_string(channels) + " channels, more than " +
-                                 std::to_string(kMaxImageChannels));
+        throw std::runtime_error("EXR file " + quoted(path) + ": " + std::to_string(channels) +
+                                 " channels, more than " + std::to_string(kMaxImageChannels));
     }
 }
 
@@ -144,7 +144,8 @@ int64_t fixedExrValueBytes(std::string_view type) {
         {"box2i", 16}, {"box2f", 16},   {"chromaticities", 32}, {"compression", 1}, {"double", 8}, {"envmap", 1},
         {"float", 4},  {"int", 4},      {"keycode", 28},        {"lineOrder", 1},   {"m33f", 36},  {"m33d", 72},
         {"m44f", 64},  {"m44d", 128},   {"rational", 8},        {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
-        {"v2f", 8},    {"v2d", 16},     {"v3i", 12},            {"v3f", 12},        {"v3d", 24},   {"deepImageState", 1}};
+        {"v2f", 8},    {"v2d", 16},     {"v3i", 12},            {"v3f", 12},        {"v3d", 24},
+        {"deepImageState", 1}};
     for (const auto& [name, bytes] : kFixed)
         if (name == type) return bytes;
     return -1;
@@ -152,12 +153,12 @@ int64_t fixedExrValueBytes(std::string_view type) {
 
 // Reads one attribute's value of `size` bytes (already known to lie within the file) as
 // OpenEXR will, and leaves the stream after it.
-void checkExrValue(Imf::IStream& stream, const std::string& name, const std::string& type, int64_t size, size_t maxNameLength,
-                   const fs::path& path) {
+void checkExrValue(Imf::IStream& stream, const std::string& name, const std::string& type, int64_t size,
+                   size_t maxNameLength, const fs::path& path) {
     const uint64_t start = stream.tellg();
     const auto mismatch = [&](const std::string& holds) {
-        refuseExrHeader(path, "header attribute '" + name + "' of type '" + type + "' declares " + std::to_string(size) +
-                                  " bytes but holds " + holds);
+        refuseExrHeader(path, "header attribute '" + name + "' of type '" + type + "' declares " +
+                                  std::to_string(size) + " bytes but holds " + holds);
     };
     const auto consumed = [&] { return int64_t(stream.tellg() - start); };
     if (const int64_t fixed = fixedExrValueBytes(type); fixed >= 0) {
@@ -169,12 +170,15 @@ void checkExrValue(Imf::IStream& stream, const std::string& name, const std::str
         } else if (type == "tiledesc") {   // the library allocates a tile's pixels per thread
             const int64_t tileWidth = uint32_t(readExrInt32(stream)), tileHeight = uint32_t(readExrInt32(stream));
             if (tileWidth < 1 || tileHeight < 1 || tileWidth > kMaxExrTileSide || tileHeight > kMaxExrTileSide) {
-                refuseExrHeader(path, "tiles of " + std::to_string(tileWidth) + " x " + std::to_string(tileHeight) +
-                                          " pixels; tiles must be 1.." + std::to_string(kMaxExrTileSide) + " on a side");
+                refuseExrHeader(path, "tiles of " + std::to_string(tileWidth) + " x " +
+                                          std::to_string(tileHeight) + " pixels; tiles must be 1.." +
+                                          std::to_string(kMaxExrTileSide) + " on a side");
             }
         }
     } else if (type == "chlist") {   // channels until an empty name, 16 bytes after each name
-        while (consumed() <= size && !readExrName(stream, maxNameLength, path).empty()) stream.seekg(stream.tellg() + 16);
+        while (consumed() <= size && !readExrName(stream, maxNameLength, path).empty()) {
+            stream.seekg(stream.tellg() + 16);
+        }
         if (consumed() != size) mismatch(std::to_string(consumed()) + (consumed() > size ? " or more" : ""));
     } else if (type == "stringvector") {   // int32 length + bytes, until the size is used up
         while (consumed() < size) {
@@ -212,8 +216,8 @@ void checkExrHeaders(Imf::IStream& stream, uint64_t fileBytes, const fs::path& p
             const int64_t size = readExrInt32(stream);
             const uint64_t left = fileBytes - std::min<uint64_t>(stream.tellg(), fileBytes);
             if (size < 0 || uint64_t(size) > left) {
-                refuseExrHeader(path, "header attribute '" + name + "' declares " + std::to_string(size) + " bytes, more than the " +
-                                          std::to_string(left) + " left in the file");
+                refuseExrHeader(path, "header attribute '" + name + "' declares " + std::to_string(size) +
+                                          " bytes, more than the " + std::to_string(left) + " left in the file");
             }
             checkExrValue(stream, name, type, size, maxNameLength, path);
         }
@@ -222,14 +226,16 @@ void checkExrHeaders(Imf::IStream& stream, uint64_t fileBytes, const fs::path& p
     stream.seekg(0);
 }
 
-ImageChannels readExrStream(Imf::IStream& stream, uint64_t fileBytes, const fs::path& path, const std::vector<std::string>* wanted) {
+ImageChannels readExrStream(Imf::IStream& stream, uint64_t fileBytes, const fs::path& path,
+                            const std::vector<std::string>* wanted) {
     checkExrHeaders(stream, fileBytes, path);
     Imf::InputFile input(stream);
     const Imath::Box2i window = input.header().dataWindow();
     ImageChannels image;
     image.source = path.string();
     image.names = wanted ? *wanted : channelNamesOf(input.header());
-    checkExrSize(path, int64_t(window.max.x) - window.min.x + 1, int64_t(window.max.y) - window.min.y + 1, image.names.size());
+    checkExrSize(path, int64_t(window.max.x) - window.min.x + 1, int64_t(window.max.y) - window.min.y + 1,
+                 image.names.size());
     image.width = window.max.x - window.min.x + 1;
     image.height = window.max.y - window.min.y + 1;
     image.data.resize(image.names.size());

@@ -48,9 +48,12 @@ std::vector<glm::vec3> renderBackground(const PatchModel& model, const std::vect
             const Patch& patch = model.patches[pixels.patch[k]];
             const glm::dvec3 x(g.position[k]);
             if (glm::dot(glm::dvec3(g.normal[k]), patch.normal) <= 0.0) continue;   // its back
-            const auto seen = [&](const glm::dvec3& q) { return modelRays.pointVisible(g.position[k], glm::vec3(patch.normal), q); };
+            const auto seen = [&](const glm::dvec3& q) {
+                return modelRays.pointVisible(g.position[k], glm::vec3(patch.normal), q);
+            };
             image[k] = glm::vec3(patch.emitted +
-                                 patch.reflectance * gatheredRadiance(model, radiance, sources, x, patch.normal, sampling, k, seen));
+                                 patch.reflectance * gatheredRadiance(model, radiance, sources, x, patch.normal,
+                                                                      sampling, k, seen));
         }
     });
     return image;

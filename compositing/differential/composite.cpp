@@ -20,7 +20,9 @@ Aabb merged(const Aabb& a, const Aabb& b) { return {glm::min(a.min, b.min), glm:
 
 Aabb pathBounds(const ObjectLevels& levels, std::span<const SyntheticObject> objects) {
     Aabb box = boundsOf(placed(levels.whole, placementsAt(objects, 0)));
-    for (size_t k = 1; k < objects[0].path.size(); ++k) box = merged(box, boundsOf(placed(levels.whole, placementsAt(objects, k))));
+    for (size_t k = 1; k < objects[0].path.size(); ++k) {
+        box = merged(box, boundsOf(placed(levels.whole, placementsAt(objects, k))));
+    }
     return box;
 }
 
@@ -38,8 +40,12 @@ ShaftHits traverseObjects(const DifferentialModel& m, const std::vector<Aabb>& b
     for (const Aabb& box : boxes) {
         const ShaftHits hits = traverseShafts(m.shafts, m.sourceTree, m.receiverOctree, box);
         for (const uint32_t s : hits.sourcePatches) if (!source[s]) source[s] = 1, all.sourcePatches.push_back(s);
-        for (const uint32_t r : hits.receiverPatches) if (!receiver[r]) receiver[r] = 1, all.receiverPatches.push_back(r);
-        for (const int32_t l : hits.leafShafts) if (!shaft[size_t(l)]) shaft[size_t(l)] = 1, all.leafShafts.push_back(l);
+        for (const uint32_t r : hits.receiverPatches) {
+            if (!receiver[r]) receiver[r] = 1, all.receiverPatches.push_back(r);
+        }
+        for (const int32_t l : hits.leafShafts) {
+            if (!shaft[size_t(l)]) shaft[size_t(l)] = 1, all.leafShafts.push_back(l);
+        }
     }
     return all;
 }
@@ -48,7 +54,9 @@ ShaftHits traverseObjects(const DifferentialModel& m, const std::vector<Aabb>& b
 glm::dvec3 clusterLight(const DifferentialModel& m, const SourceCluster& cluster) {
     uint32_t best = cluster.patches.front();
     for (const uint32_t s : cluster.patches) {
-        if (m.sourceTree.nodes[m.sourceTree.leafOfPatch[s]].transfer > m.sourceTree.nodes[m.sourceTree.leafOfPatch[best]].transfer) best = s;
+        if (m.sourceTree.nodes[m.sourceTree.leafOfPatch[s]].transfer >
+            m.sourceTree.nodes[m.sourceTree.leafOfPatch[best]].transfer)
+            best = s;
     }
     return m.model.centre(m.transfers.sources[best]);
 }
@@ -89,7 +97,9 @@ glm::vec3 receiverPixel(const FrameContext& f, size_t k, const glm::vec3& photo,
     const float w[4] = {(1 - uv.x) * (1 - uv.y), uv.x * (1 - uv.y), uv.x * uv.y, (1 - uv.x) * uv.y};
     const size_t rows = f.m.transfers.vertices.size();
     size_t row[4];
-    for (int corner = 0; corner < 4; ++corner) row[corner] = size_t(f.m.transfers.rowOfVertex[f.m.model.patches[p].vertex[corner]]);
+    for (int corner = 0; corner < 4; ++corner) {
+        row[corner] = size_t(f.m.transfers.rowOfVertex[f.m.model.patches[p].vertex[corner]]);
+    }
     glm::vec3 taken(0.0f);
     uint8_t shadowing = 0;
     for (size_t c = 0; c < f.maps.size(); ++c) {
@@ -119,14 +129,16 @@ glm::vec3 objectPixel(const FrameContext& f, const GBuffer& g, size_t k, Composi
     }
     out.objectPixels[k] = 1;
     out.shadowingClusters[k] = shadowing;
-    const glm::dvec3 radiance = glm::dvec3(f.object.levels.whole.materials[g.material[k]].albedo) * glm::max(light, glm::dvec3(0.0));
+    const glm::dvec3 radiance =
+        glm::dvec3(f.object.levels.whole.materials[g.material[k]].albedo) * glm::max(light, glm::dvec3(0.0));
     return f.ldr ? glm::vec3(glm::round(f.m.response(radiance))) : glm::vec3(radiance);
 }
 
 // One shadow map per cluster, from its light, of the simplified object (section 7.2); the
 // lights go to `out`.
-std::vector<ClusterMap> clusterMaps(const DifferentialModel& m, const PreparedObject& object, std::span<const glm::mat4> placements,
-                                    const Aabb& box, const CompositeSettings& settings, CompositeFrame& out) {
+std::vector<ClusterMap> clusterMaps(const DifferentialModel& m, const PreparedObject& object,
+                                    std::span<const glm::mat4> placements, const Aabb& box,
+                                    const CompositeSettings& settings, CompositeFrame& out) {
     const WorldGeometry casters = placed(object.levels.simplified.scene, placements);
     const glm::dvec3 centre = 0.5 * (box.min + box.max);
     const double radius = 0.5 * glm::length(box.max - box.min);
@@ -140,13 +152,15 @@ std::vector<ClusterMap> clusterMaps(const DifferentialModel& m, const PreparedOb
 
 // Per source slot: 1 if it is in a cluster and the model lets its patch's centre be seen
 // from the object's centre (one ray per clustered source and frame).
-std::vector<uint8_t> openToObject(const DifferentialModel& m, const std::vector<SourceCluster>& clusters, const glm::dvec3& centre) {
+std::vector<uint8_t> openToObject(const DifferentialModel& m, const std::vector<SourceCluster>& clusters,
+                                  const glm::dvec3& centre) {
     std::vector<uint8_t> open(m.transfers.sources.size(), 0);
     for (const SourceCluster& cluster : clusters) {
         for (const uint32_t s : cluster.patches) {
             const glm::dvec3 target = m.model.centre(m.transfers.sources[s]);
             const glm::dvec3 d = target - centre;
-            open[s] = glm::dot(d, d) > 0.0 && m.modelRays->pointVisible(glm::vec3(centre), glm::vec3(glm::normalize(d)), target);
+            open[s] = glm::dot(d, d) > 0.0 && m.modelRays->pointVisible(glm::vec3(centre),
+                                                                        glm::vec3(glm::normalize(d)), target);
         }
     }
     return open;
@@ -154,7 +168,9 @@ std::vector<uint8_t> openToObject(const DifferentialModel& m, const std::vector<
 
 void appendFrameStats(CompositeFrame& out, size_t objectTriangles, const Scene& shadowLevel) {
     size_t shadowed = 0, shadowTriangles = 0;
-    for (size_t k = 0; k < out.shadowingClusters.size(); ++k) shadowed += out.shadowingClusters[k] > 0 && !out.objectPixels[k];
+    for (size_t k = 0; k < out.shadowingClusters.size(); ++k) {
+        shadowed += out.shadowingClusters[k] > 0 && !out.objectPixels[k];
+    }
     for (const Mesh& mesh : shadowLevel.meshes) shadowTriangles += mesh.triangles.size();
     out.stats.push_back({"object_triangles", double(objectTriangles)});
     out.stats.push_back({"shadow_map_triangles", double(shadowTriangles)});
@@ -169,18 +185,23 @@ void appendFrameStats(CompositeFrame& out, size_t objectTriangles, const Scene& 
 WorldGeometry withObject(const DifferentialModel& m, const WorldGeometry& object) {
     WorldGeometry world = m.geometry;
     world.cornerNormals.clear();
-    for (const Patch& p : m.model.patches) world.cornerNormals.insert(world.cornerNormals.end(), 6, glm::vec3(p.normal));
+    for (const Patch& p : m.model.patches) {
+        world.cornerNormals.insert(world.cornerNormals.end(), 6, glm::vec3(p.normal));
+    }
     const uint32_t base = uint32_t(world.positions.size());
     world.positions.insert(world.positions.end(), object.positions.begin(), object.positions.end());
     for (const glm::uvec3& t : object.triangles) world.triangles.push_back(t + base);
-    world.triangleMaterial.insert(world.triangleMaterial.end(), object.triangleMaterial.begin(), object.triangleMaterial.end());
-    world.triangleInstance.insert(world.triangleInstance.end(), object.triangleInstance.begin(), object.triangleInstance.end());
+    world.triangleMaterial.insert(world.triangleMaterial.end(), object.triangleMaterial.begin(),
+                                  object.triangleMaterial.end());
+    world.triangleInstance.insert(world.triangleInstance.end(), object.triangleInstance.begin(),
+                                  object.triangleInstance.end());
     world.cornerNormals.insert(world.cornerNormals.end(), object.cornerNormals.begin(), object.cornerNormals.end());
     return world;
 }
 
 std::vector<Aabb> objectBounds(const WorldGeometry& world, size_t objects) {
-    std::vector<Aabb> boxes(objects, Aabb{glm::dvec3(std::numeric_limits<double>::infinity()), glm::dvec3(-std::numeric_limits<double>::infinity())});
+    std::vector<Aabb> boxes(objects, Aabb{glm::dvec3(std::numeric_limits<double>::infinity()),
+                                          glm::dvec3(-std::numeric_limits<double>::infinity())});
     for (size_t t = 0; t < world.triangles.size(); ++t) {
         Aabb& box = boxes.at(world.triangleInstance[t]);
         for (int c = 0; c < 3; ++c) {
@@ -195,19 +216,23 @@ Aabb boundsOf(const WorldGeometry& world) {
     Aabb box{glm::dvec3(0.0), glm::dvec3(0.0)};
     if (world.positions.empty()) return box;
     box.min = box.max = glm::dvec3(world.positions.front());
-    for (const glm::vec3& p : world.positions) box.min = glm::min(box.min, glm::dvec3(p)), box.max = glm::max(box.max, glm::dvec3(p));
+    for (const glm::vec3& p : world.positions) {
+        box.min = glm::min(box.min, glm::dvec3(p)), box.max = glm::max(box.max, glm::dvec3(p));
+    }
     return box;
 }
 
-PreparedObject prepareObject(const DifferentialModel& model, std::span<const SyntheticObject> objects, const ObjectSettings& settings) {
+PreparedObject prepareObject(const DifferentialModel& model, std::span<const SyntheticObject> objects,
+                             const ObjectSettings& settings) {
     PreparedObject prepared{objectLevels(objects, settings.shadowTriangles), {}};
-    prepared.light = buildIrradianceVolume(model.model, model.radiance, *model.modelRays, pathBounds(prepared.levels, objects),
-                                           settings.probeSpacingM, model.settings.sampling);
+    prepared.light = buildIrradianceVolume(model.model, model.radiance, *model.modelRays,
+                                           pathBounds(prepared.levels, objects), settings.probeSpacingM,
+                                           model.settings.sampling);
     return prepared;
 }
 
-CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& object, std::span<const glm::mat4> placements,
-                              const CompositeSettings& settings) {
+CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& object,
+                              std::span<const glm::mat4> placements, const CompositeSettings& settings) {
     if (settings.passes < 0) throw std::invalid_argument("differential composite: passes must be 0 (all) or more");
     if (settings.mapSize < kMinMapResolution || settings.mapSize > kMaxMapResolution) {
         throw std::invalid_argument("differential composite: the map size is out of range");
@@ -234,7 +259,8 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     const std::vector<uint8_t> open = openToObject(m, out.clusters, 0.5 * (box.min + box.max));
     timer.lap("transfer_sums");
     // The model's pixels are the photograph's (m.pixels): only the object's are built.
-    const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, settings.simd, uint32_t(m.geometry.triangles.size()));
+    const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, settings.simd,
+                                    uint32_t(m.geometry.triangles.size()));
     timer.lap("camera");
     out.image = settings.ldr ? m.photographIntensities : m.background;
     out.objectPixels.assign(g.pixelCount(), 0);

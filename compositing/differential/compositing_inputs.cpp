@@ -31,7 +31,8 @@ std::vector<glm::vec3> readPhotograph(const std::string& path, const CameraRespo
     const Image8 image = readImage8(path);
     width = image.width, height = image.height;
     for (size_t k = 0; k < image.rgb.size(); k += 3) {
-        radiance.push_back(glm::vec3(float(T.inverse(image.rgb[k])), float(T.inverse(image.rgb[k + 1])), float(T.inverse(image.rgb[k + 2]))));
+        radiance.push_back(glm::vec3(float(T.inverse(image.rgb[k])), float(T.inverse(image.rgb[k + 1])),
+                                     float(T.inverse(image.rgb[k + 2]))));
     }
     return radiance;
 }
@@ -43,12 +44,16 @@ CompositingScene readCompositingInputs(const CompositingFile& file) {
     int width = 0, height = 0;
     const std::vector<glm::vec3> photograph = readPhotograph(file.photograph, scene.response, width, height);
     const Camera& camera = scene.camera;
-    if (file.crop.x < 0 || file.crop.y < 0 || file.crop.x + camera.width > width || file.crop.y + camera.height > height) {
-        throw std::invalid_argument("compositing inputs: the photograph '" + file.photograph + "' (" + std::to_string(width) + " x " +
-                                    std::to_string(height) + ") does not hold the camera's window");
+    if (file.crop.x < 0 || file.crop.y < 0 || file.crop.x + camera.width > width ||
+        file.crop.y + camera.height > height) {
+        throw std::invalid_argument("compositing inputs: the photograph '" + file.photograph + "' (" +
+                                    std::to_string(width) + " x " + std::to_string(height) +
+                                    ") does not hold the camera's window");
     }
     for (int j = 0; j < camera.height; ++j) {
-        for (int i = 0; i < camera.width; ++i) scene.background.push_back(photograph[size_t(j + file.crop.y) * size_t(width) + size_t(i + file.crop.x)]);
+        for (int i = 0; i < camera.width; ++i) {
+            scene.background.push_back(photograph[size_t(j + file.crop.y) * size_t(width) + size_t(i + file.crop.x)]);
+        }
     }
     if (file.dome) {
         const DomeRequest& d = *file.dome;

@@ -56,10 +56,12 @@ std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const P
                 // the cosine at the smooth shading normal, the rays off the triangle's plane.
                 const glm::vec3 N = g.normal[k];
                 const auto seen = [&](const glm::dvec3& q) {
-                    return objectRays.pointVisible(g.position[k], N, q) && m.modelRays->pointVisible(g.position[k], N, q);
+                    return objectRays.pointVisible(g.position[k], N, q) &&
+                           m.modelRays->pointVisible(g.position[k], N, q);
                 };
                 const glm::dvec3 albedo(object.levels.whole.materials[g.material[k]].albedo);
-                image[k] = glm::vec3(albedo * gatheredRadiance(m.model, m.radiance, radiant, x, glm::dvec3(g.shadingNormal[k]), sampling, k, seen));
+                image[k] = glm::vec3(albedo * gatheredRadiance(m.model, m.radiance, radiant, x,
+                                                               glm::dvec3(g.shadingNormal[k]), sampling, k, seen));
                 continue;
             }
             const Patch& patch = m.model.patches[g.triangle[k] / 2];
@@ -72,7 +74,8 @@ std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const P
             glm::dvec3 lost(0.0);
             for (size_t r = 0; r < radiant.size(); ++r) {
                 if (!mayBlock(objectSphere, patchSpheres[r], x)) continue;
-                lost += patchTransfer(m.model, m.radiance[radiant[r]], radiant[r], x, patch.normal, sampling, k, blockedByObject);
+                lost += patchTransfer(m.model, m.radiance[radiant[r]], radiant[r], x, patch.normal, sampling, k,
+                                      blockedByObject);
             }
             image[k] = glm::max(image[k] - glm::vec3(patch.reflectance * lost), glm::vec3(0.0f));
         }

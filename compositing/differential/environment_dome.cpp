@@ -31,7 +31,8 @@ std::vector<glm::dvec3> domeRadiance(const EnvironmentMap& map, int columns, int
 
 // Block (a, b) as a rectangle tangent to the dome at its centre direction, facing in, of
 // exactly the block's solid angle at the dome's radius.
-PatchSurface domeCell(const EnvironmentMap& map, int a, int b, int columns, int rows, double R, const glm::dvec3& radiance) {
+PatchSurface domeCell(const EnvironmentMap& map, int a, int b, int columns, int rows, double R,
+                      const glm::dvec3& radiance) {
     const double u0 = double(a) / columns, u1 = double(a + 1) / columns;
     const double v0 = 0.5 * double(b) / rows, v1 = 0.5 * double(b + 1) / rows;
     const double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
@@ -54,7 +55,9 @@ std::vector<PatchSurface> environmentDome(const EnvironmentMap& map, int columns
     const std::vector<glm::dvec3> radiance = domeRadiance(map, columns, rows);
     std::vector<PatchSurface> dome;
     for (int b = 0; b < rows; ++b) {
-        for (int a = 0; a < columns; ++a) dome.push_back(domeCell(map, a, b, columns, rows, radiusM, radiance[size_t(b * columns + a)]));
+        for (int a = 0; a < columns; ++a) {
+            dome.push_back(domeCell(map, a, b, columns, rows, radiusM, radiance[size_t(b * columns + a)]));
+        }
     }
     return dome;
 }

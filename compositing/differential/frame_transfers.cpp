@@ -12,7 +12,9 @@ namespace shadowlab {
 std::vector<uint8_t> listedRows(const DifferentialModel& m, const std::vector<uint32_t>& listedReceivers) {
     std::vector<uint8_t> rows(m.transfers.vertices.size(), 0);
     for (const uint32_t slot : listedReceivers) {
-        for (const uint32_t v : m.model.patches[m.transfers.receiverPatches[slot]].vertex) rows[size_t(m.transfers.rowOfVertex[v])] = 1;
+        for (const uint32_t v : m.model.patches[m.transfers.receiverPatches[slot]].vertex) {
+            rows[size_t(m.transfers.rowOfVertex[v])] = 1;
+        }
     }
     return rows;
 }
@@ -20,7 +22,9 @@ std::vector<uint8_t> listedRows(const DifferentialModel& m, const std::vector<ui
 std::vector<glm::vec3> frameIntensityTransfers(const DifferentialModel& m, const std::vector<uint32_t>& listedSources,
                                                const std::vector<uint8_t>& rows) {
     const size_t S = m.transfers.sources.size();
-    const auto meanTransfer = [&](uint32_t s) { return m.sourceTree.nodes[size_t(m.sourceTree.leafOfPatch[s])].transfer; };
+    const auto meanTransfer = [&](uint32_t s) {
+        return m.sourceTree.nodes[size_t(m.sourceTree.leafOfPatch[s])].transfer;
+    };
     std::vector<uint32_t> order = listedSources;
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
         return meanTransfer(a) > meanTransfer(b) || (meanTransfer(a) == meanTransfer(b) && a < b);
@@ -32,8 +36,8 @@ std::vector<glm::vec3> frameIntensityTransfers(const DifferentialModel& m, const
         if (!rows[r]) return;
         std::vector<glm::dvec3> L(order.size()), out(order.size());
         for (size_t k = 0; k < order.size(); ++k) L[k] = glm::dvec3(m.transfers.L[r * S + order[k]]);
-        intensityTransfers(m.transfers.total[r], std::span<const glm::dvec3>(L), std::span<const uint8_t>(set), m.response,
-                           std::span(out));
+        intensityTransfers(m.transfers.total[r], std::span<const glm::dvec3>(L), std::span<const uint8_t>(set),
+                           m.response, std::span(out));
         for (size_t k = 0; k < order.size(); ++k) table[r * S + order[k]] = glm::vec3(out[k]);
     });
     return table;

@@ -22,7 +22,8 @@ std::vector<uint8_t> listedRows(const DifferentialModel& model, const std::vecto
 
 // S_ij laid out like TransferTable::L, filled at the listed rows and sources (source slots),
 // 0 elsewhere.
-std::vector<glm::vec3> frameIntensityTransfers(const DifferentialModel& model, const std::vector<uint32_t>& listedSources,
+std::vector<glm::vec3> frameIntensityTransfers(const DifferentialModel& model,
+                                               const std::vector<uint32_t>& listedSources,
                                                const std::vector<uint8_t>& rows);
 
 // Per cluster c and row r at c * rows + r: the sum over the cluster's sources of `table`

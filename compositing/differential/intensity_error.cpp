@@ -33,7 +33,8 @@ struct ErrorSums {
 
 std::vector<IntensityErrorPoint> intensityTransferError(const TransferTable& table, const CameraResponse& T,
                                                         double firstSetShare, int trials, uint64_t seed) {
-    if (!(firstSetShare > 0.0 && firstSetShare < 1.0)) throw std::invalid_argument("intensity error: the first set's share must be in (0, 1)");
+    if (!(firstSetShare > 0.0 && firstSetShare < 1.0))
+        throw std::invalid_argument("intensity error: the first set's share must be in (0, 1)");
     if (trials < 1) throw std::invalid_argument("intensity error: trials must be 1 or more");
     const size_t S = table.sources.size(), rows = table.vertices.size();
     const std::vector<uint8_t> set = twoSets(S, firstSetShare);
@@ -43,7 +44,8 @@ std::vector<IntensityErrorPoint> intensityTransferError(const TransferTable& tab
         if (table.total[r] == glm::dvec3(0.0)) return;
         std::vector<glm::dvec3> L(S), intensity(S);
         for (size_t s = 0; s < S; ++s) L[s] = glm::dvec3(table.L[r * S + s]);
-        intensityTransfers(table.total[r], std::span<const glm::dvec3>(L), std::span<const uint8_t>(set), T, std::span(intensity));
+        intensityTransfers(table.total[r], std::span<const glm::dvec3>(L), std::span<const uint8_t>(set), T,
+                           std::span(intensity));
         Pcg32 rng(seed, r);
         std::vector<uint32_t> order(S);
         for (size_t P = 0; P <= S; ++P) {

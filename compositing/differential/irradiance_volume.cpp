@@ -90,7 +90,8 @@ glm::dvec3 IrradianceVolume::at(const glm::dvec3& x, const glm::dvec3& n) const 
 IrradianceVolume buildIrradianceVolume(const PatchModel& model, const std::vector<glm::dvec3>& radiance,
                                        const ReferenceVisibility& modelRays, const Aabb& bounds, double spacing,
                                        const PatchSampling& sampling) {
-    if (!(spacing > 0.0) || !std::isfinite(spacing)) throw std::invalid_argument("irradiance volume: the spacing must be positive and finite");
+    if (!(spacing > 0.0) || !std::isfinite(spacing))
+        throw std::invalid_argument("irradiance volume: the spacing must be positive and finite");
     if (!allFinite(bounds.min) || !allFinite(bounds.max)) {
         throw std::invalid_argument("irradiance volume: the box is not finite");
     }

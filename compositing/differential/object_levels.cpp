@@ -16,7 +16,8 @@ void requireValid(std::span<const SyntheticObject> objects, int shadowTriangles)
         const std::string who = "synthetic object " + std::to_string(i) + ": ";
         if (objects[i].mesh.triangles.empty()) throw std::invalid_argument(who + "its mesh has no triangle");
         if (objects[i].path.empty()) throw std::invalid_argument(who + "its path has no frame");
-        if (objects[i].path.size() != objects[0].path.size()) throw std::invalid_argument(who + "its path is not as long as the first's");
+        if (objects[i].path.size() != objects[0].path.size())
+            throw std::invalid_argument(who + "its path is not as long as the first's");
         for (const glm::mat4& placement : objects[i].path) {
             if (!allFinite(placement)) throw std::invalid_argument(who + "a placement is not finite");
         }

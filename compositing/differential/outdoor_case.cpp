@@ -32,7 +32,8 @@ glm::dvec3 groundReflectance(const EnvironmentMap& map) {
         }
     }
     if (luminance(sky) <= 0.0) throw std::invalid_argument("outdoor case: the map has no light above the horizon");
-    if (!(groundWeight > 0.0)) throw std::invalid_argument("outdoor case: the map has no texel within 60 degrees of the nadir");
+    if (!(groundWeight > 0.0))
+        throw std::invalid_argument("outdoor case: the map has no texel within 60 degrees of the nadir");
     const glm::dvec3 rho = kPi * (ground / groundWeight) / glm::max(sky, glm::dvec3(1e-12));
     return glm::clamp(rho, glm::dvec3(0.02), glm::dvec3(0.9));
 }
@@ -68,7 +69,9 @@ CompositingScene compositingOutdoor(const EnvironmentMap& map, const Mesh& objec
     if (glm::cross(scene.surfaces[0].edgeU, scene.surfaces[0].edgeV).y < 0.0) {
         std::swap(scene.surfaces[0].edgeU, scene.surfaces[0].edgeV);
     }
-    for (PatchSurface& sky : environmentDome(map, s.domeColumns, s.domeRows, s.domeRadiusM)) scene.surfaces.push_back(std::move(sky));
+    for (PatchSurface& sky : environmentDome(map, s.domeColumns, s.domeRows, s.domeRadiusM)) {
+        scene.surfaces.push_back(std::move(sky));
+    }
     // The object walks across the path 3 m ahead.
     SyntheticObject walker{object, glm::dvec3(0.72, 0.7, 0.66), {}};
     for (int k = 0; k <= 10; ++k) {

@@ -22,6 +22,7 @@ struct OutdoorSettings {
 // mesh such as the bunny, scaled by 0.06). Throws std::invalid_argument for a size outside
 // 16..4096 pixels per side, a dome environmentDome refuses, or a map with no light above
 // the horizon.
-CompositingScene compositingOutdoor(const EnvironmentMap& map, const Mesh& object, const OutdoorSettings& settings = {});
+CompositingScene compositingOutdoor(const EnvironmentMap& map, const Mesh& object,
+                                    const OutdoorSettings& settings = {});
 
 }  // namespace shadowlab

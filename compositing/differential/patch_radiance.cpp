@@ -22,8 +22,11 @@ std::vector<glm::dvec3> patchRadiance(const PatchModel& model, const ReferenceVi
         const Patch& patch = model.patches[p];
         if (patch.reflectance == glm::dvec3(0.0)) return;
         const glm::dvec3 x = model.centre(uint32_t(p));
-        const auto seen = [&](const glm::dvec3& q) { return modelRays.pointVisible(glm::vec3(x), glm::vec3(patch.normal), q); };
-        radiance[p] += patch.reflectance * gatheredRadiance(model, emitted, emitters, x, patch.normal, sampling, p, seen);
+        const auto seen = [&](const glm::dvec3& q) {
+            return modelRays.pointVisible(glm::vec3(x), glm::vec3(patch.normal), q);
+        };
+        radiance[p] += patch.reflectance * gatheredRadiance(model, emitted, emitters, x, patch.normal,
+                                                            sampling, p, seen);
     });
     return radiance;
 }

@@ -62,7 +62,8 @@ PhotoCase compositingChessboard(const Image8& photo, const PhotoCalibration& cal
     double parityGrey[2] = {0.0, 0.0};
     for (int b = 0; b < kSquaresY; ++b) {
         for (int a = 0; a < kSquaresX; ++a) {
-            parityGrey[(a + b) % 2] += greyAt(photo, scene.camera, c.crop, glm::dvec3(kSquare * (a - 0.5), 0.0, kSquare * (b - 0.5)));
+            parityGrey[(a + b) % 2] += greyAt(photo, scene.camera, c.crop,
+                                              glm::dvec3(kSquare * (a - 0.5), 0.0, kSquare * (b - 0.5)));
         }
     }
     const int whiteParity = parityGrey[1] > parityGrey[0] ? 1 : 0;
@@ -101,7 +102,8 @@ PhotoCase compositingChessboard(const Image8& photo, const PhotoCalibration& cal
     for (int j = 0; j < scene.camera.height; ++j) {
         for (int i = 0; i < scene.camera.width; ++i) {
             const size_t k = 3 * (size_t(j + c.crop.y) * size_t(photo.width) + size_t(i + c.crop.x));
-            scene.background.push_back(glm::vec3(float(scene.response.inverse(photo.rgb[k])), float(scene.response.inverse(photo.rgb[k + 1])),
+            scene.background.push_back(glm::vec3(float(scene.response.inverse(photo.rgb[k])),
+                                                 float(scene.response.inverse(photo.rgb[k + 1])),
                                                  float(scene.response.inverse(photo.rgb[k + 2]))));
         }
     }

@@ -1,11 +1,12 @@
 // The demonstration on a real photograph (issue 12): OpenCV's sample photograph of a printed
 // checkerboard (scenes/photos/), its calibration, and the board's plane as the local model,
 // one patch per printed square with the square's reflectance (white or black: the parity
-// of squares the photograph shows brighter is white). The office's real light is unknown (no light probe was taken), so the
-// light is an environment map we choose and state, as distant patches on a dome
-// (environment_dome.h); the camera response's exposure is fitted so the model's white
-// squares have the photograph's intensity, which makes the 8-bit path (section 7.1) the
-// natural one here: the shadow is taken off the photograph's own values. Shown, not scored.
+// of squares the photograph shows brighter is white). The office's real light is unknown
+// (no light probe was taken), so the light is an environment map we choose and state, as
+// distant patches on a dome (environment_dome.h); the camera response's exposure is
+// fitted so the model's white squares have the photograph's intensity, which makes the
+// 8-bit path (section 7.1) the natural one here: the shadow is taken off the photograph's
+// own values. Shown, not scored.
 #pragma once
 
 #include "scenes/compositing_scene.h"

@@ -23,11 +23,13 @@ void requireValid(const CompositingScene& scene, const PreprocessSettings& setti
         throw std::invalid_argument("differential preprocessing: the background needs one value per pixel");
     }
     for (const glm::vec3& L : scene.background) {
-        if (!allFinite(L)) throw std::invalid_argument("differential preprocessing: the background has a non-finite value");
+        if (!allFinite(L))
+            throw std::invalid_argument("differential preprocessing: the background has a non-finite value");
     }
     const CameraResponse& T = scene.response;
     if (!(T.exposure > 0.0 && T.gamma > 0.0) || !std::isfinite(T.exposure) || !std::isfinite(T.gamma)) {
-        throw std::invalid_argument("differential preprocessing: the camera response needs a positive, finite exposure and gamma");
+        throw std::invalid_argument(
+            "differential preprocessing: the camera response needs a positive, finite exposure and gamma");
     }
 }
 

@@ -15,8 +15,8 @@ struct Builder {
 
     void addChild(int32_t source, int32_t receiver) {
         if (!significant(source, receiver)) return;
-        out.nodes.push_back({makeShaft(sources.nodes[source].bounds, receivers.nodes[receiver].bounds), source, receiver, -1, 0,
-                             sources.nodes[source].leaf() && receivers.nodes[receiver].leaf()});
+        out.nodes.push_back({makeShaft(sources.nodes[source].bounds, receivers.nodes[receiver].bounds), source,
+                             receiver, -1, 0, sources.nodes[source].leaf() && receivers.nodes[receiver].leaf()});
     }
 
     // The children of shaft `index`: its larger non-leaf end split, the other end kept.

@@ -219,7 +219,8 @@ std::vector<float> ReferenceVisibility::visibility(const GBuffer& gbuffer, const
                 if (!gbuffer.hit[k]) {
                     continue;
                 }
-                V[k] = pixelVisibility(rays, query, receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
+                V[k] = pixelVisibility(rays, query,
+                                       receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
             }
             progress.advance();
         }
