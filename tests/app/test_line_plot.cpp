@@ -9,27 +9,19 @@
 #include <string>
 
 #include "app/line_plot.h"
+#include "tests/app/text_count.h"
 
 using namespace shadowlab;
-
-namespace {
-
-size_t count(const std::string& text, const std::string& what) {
-    size_t n = 0;
-    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
-
-}  // namespace
+using test::countOf;
 
 TEST_CASE("line plot: a polyline per series, a circle per point, all inside the plot area") {
     LinePlot plot{"title & more", "x", "y", {{"a", {0, 1, 2}, {3, 1, 0.5}, {"n = 1", "n = 2", "n = 3"}}, {"b", {4}, {2}, {}}}};
     const std::string svg = formatLinePlotSvg(plot);
     CHECK(svg.starts_with("<svg"));
     CHECK(svg.ends_with("</svg>\n"));
-    CHECK(count(svg, "<polyline") == 2);
-    CHECK(count(svg, "class=\"point\"") == 4);
-    CHECK(count(svg, "class=\"label\"") == 3);
+    CHECK(countOf(svg, "<polyline") == 2);
+    CHECK(countOf(svg, "class=\"point\"") == 4);
+    CHECK(countOf(svg, "class=\"label\"") == 3);
     CHECK(svg.find("title &amp; more") != std::string::npos);
     const std::regex circle(R"re(cx="([0-9.]+)" cy="([0-9.]+)")re");
     for (auto it = std::sregex_iterator(svg.begin(), svg.end(), circle); it != std::sregex_iterator(); ++it) {

@@ -11,16 +11,12 @@
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
 #include "scenes/scene_file.h"
+#include "tests/app/text_count.h"
 
 using namespace shadowlab;
+using test::countOf;
 
 namespace {
-
-size_t countOf(const std::string& text, const std::string& pattern) {
-    size_t n = 0;
-    for (size_t at = text.find(pattern); at != std::string::npos; at = text.find(pattern, at + 1)) ++n;
-    return n;
-}
 
 ScalingOptions quickOptions(std::vector<std::string> scenes) {
     ScalingOptions options;
