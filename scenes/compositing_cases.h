@@ -1,4 +1,4 @@
-// The built-in compositing cases (issue 12; Gibson et al. 2003, Figure 7 and section 9).
+// The built-in compositing cases (Gibson et al. 2003, Figure 7 and section 9).
 //
 // The room: a 4 x 2.5 x 4 m room with a desk, an emitting ceiling panel and a window on the
 // right wall seen as a bright source. Its "photograph" is rendered from the model itself

@@ -1,4 +1,4 @@
-// A distant environment as patches of a compositing model (issue 12's outdoor and photograph
+// A distant environment as patches of a compositing model (the outdoor and photograph
 // cases): the map's upper half cut into columns x rows blocks of texels, each a rectangle
 // tangent to a dome of the given radius at the block's centre direction, facing in, with the
 // block's mean radiance (weighted by the texels' solid angles) and exactly its solid angle.

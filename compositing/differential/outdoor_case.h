@@ -1,4 +1,4 @@
-// The outdoor compositing case (issue 12): a panorama stands for the real world. The
+// The outdoor compositing case: a panorama stands for the real world. The
 // photograph is the panorama seen through a pinhole camera at its centre; the local model
 // is a ground plane under the camera, whose reflectance is estimated from the panorama (the
 // mean radiance of the ground below, times pi, over the irradiance of the sky above, as

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The catalogue of malformed inputs (issue 10): scene JSON, OBJ, PLY (ASCII and binary), EXR
+# The catalogue of malformed inputs: scene JSON, OBJ, PLY (ASCII and binary), EXR
 # given to `compare`, and bad values of every command's options. Each case must exit
 # non-zero within 10 s under a 4 GiB address-space limit, print exactly one stderr line
 # "shadowlab: error: ..." holding the expected text, and leave no output file.
