@@ -203,16 +203,130 @@ CompositeFrame timedFrame(const DifferentialModel& m, const PreparedObject& obje
     return frame;
 }
 
+// The frames asked for, each checked against the path.
+std::vector<int> chosenFrames(const CompositeArgs& a, const CompositingScene& scene) {
+    const int count = int(scene.objects.front().path.size());
+    std::vector<int> frames = a.frames;
+    for (int k = 0; frames.empty() && k < count; ++k) frames.push_back(k);
+    if (a.frames.empty()) return frames;
+    for (const int k : frames) {
+        if (k < 0 || k >= count) throw std::invalid_argument("composite: no such frame in the path");
+    }
+    return frames;
+}
+
+// What every frame of a run shares, and the plots it fills.
+struct Run {
+    const CompositeArgs& a;
+    const DifferentialModel& m;
+    const PreparedObject& object;
+    std::filesystem::path dir;
+    LinePlot timeRms, depth;   // depth: a series per n, then the reference's
+};
+
+// The reference of a frame (and, on request, its convergence), written beside the composites.
+std::vector<glm::vec3> frameReference(const Run& run, int k, std::span<const glm::mat4> placement,
+                                      nlohmann::ordered_json& frameJson) {
+    const CompositeArgs& a = run.a;
+    const auto start = std::chrono::steady_clock::now();
+    PatchSampling strata = referenceSampling();
+    strata.emitterSamplesPerAxis = a.referenceStrata.at(0), strata.reflectorSamplesPerAxis = a.referenceStrata.at(1);
+    const std::vector<glm::vec3> reference = differentialReference(run.m, run.object, placement, strata);
+    frameJson["reference_ms"] = millisecondsSince(start);
+    if (a.referenceConvergence) {
+        PatchSampling denser = strata;
+        denser.emitterSamplesPerAxis *= 2, denser.reflectorSamplesPerAxis *= 2, denser.seed += 1;
+        const std::vector<glm::vec3> dense = differentialReference(run.m, run.object, placement, denser);
+        const double change = difference(reference, dense, std::vector<uint8_t>(dense.size(), 0)).rms;
+        frameJson["reference_convergence_rms_radiance"] = change;
+        std::printf("frame %d: the reference at twice the strata per side differs by RMS %.6f\n", k, change);
+    }
+    writeImage(run.dir, "reference-f" + std::to_string(k), run.m, reference, false);
+    return reference;
+}
+
+// A composite's image and intermediate buffers.
+void writeFrameBuffers(const Run& run, const std::string& name, const CompositeFrame& frame,
+                       std::span<const glm::mat4> placement) {
+    const DifferentialModel& m = run.m;
+    const Scene& whole = run.object.levels.whole;
+    writeImage(run.dir, (run.a.ldr ? "composite-ldr-" : "composite-") + name, m, frame.image, run.a.ldr);
+    writeOverlay(run.dir / ("listed-" + name + ".png"), m, frame.listedReceiverPixels, 1, {0.2f, 0.6f, 1.0f});
+    writeOverlay(run.dir / ("shadowing-" + name + ".png"), m, frame.shadowingClusters,
+                 std::max<int>(1, int(frame.clusters.size())), {1.0f, 0.3f, 0.1f});
+    writeTextFile(run.dir / ("plan-" + name + ".svg"),
+                  formatPlanSvg(m, frame, instanceBounds(whole, placed(whole, placement))));
+    for (size_t c = 0; c < frame.clusterMasks.size(); ++c) {
+        writeOverlay(run.dir / ("mask-" + name + "-c" + std::to_string(c) + ".png"), m, frame.clusterMasks[c], 1,
+                     {1.0f, 0.9f, 0.2f});
+    }
+}
+
+// The JSON row of one frame at one n: time, stats, clusters, the deepest shadow.
+nlohmann::ordered_json passRow(int n, double ms, const CompositeFrame& frame, double deepest) {
+    nlohmann::ordered_json row = {{"passes", n}, {"median_ms", ms}, {"stats", statsJson(frame.stats)}};
+    row["clusters"] = nlohmann::ordered_json::array();
+    for (size_t c = 0; c < frame.clusters.size(); ++c) {
+        const glm::dvec3& l = frame.lights[c];
+        row["clusters"].push_back({{"sources", frame.clusters[c].patches.size()},
+                                   {"transfer_radiance", frame.clusters[c].transfer},
+                                   {"light", {l.x, l.y, l.z}}});
+    }
+    row["deepest_shadow_ratio"] = deepest;
+    return row;
+}
+
+// Frame k at every n: composited, timed, scored against the reference, written; the plots
+// get its points.
+nlohmann::ordered_json runFrame(Run& run, int k, std::span<const glm::mat4> placement) {
+    const CompositeArgs& a = run.a;
+    const DifferentialModel& m = run.m;
+    nlohmann::ordered_json frameJson = {{"frame", k}, {"passes", nlohmann::ordered_json::array()}};
+    const std::vector<glm::vec3> reference =
+        a.reference ? frameReference(run, k, placement, frameJson) : std::vector<glm::vec3>();
+    PlotSeries frameSeries{"frame " + std::to_string(k), {}, {}, {}};
+    std::vector<uint8_t> objectPixels;
+    for (size_t i = 0; i < a.passes.size(); ++i) {
+        const int n = a.passes[i];
+        CompositeSettings settings;
+        settings.passes = n, settings.mapSize = a.mapSize, settings.ldr = a.ldr, settings.keepMasks = a.masks;
+        double ms = 0.0;
+        const CompositeFrame frame = timedFrame(m, run.object, placement, settings, a, ms);
+        const std::string name = frameName(k, n);
+        writeFrameBuffers(run, name, frame, placement);
+        const double deepest = deepestShadow(a.ldr ? m.photographIntensities : m.background, frame.image,
+                                             frame.objectPixels);
+        nlohmann::ordered_json row = passRow(n, ms, frame, deepest);
+        objectPixels = frame.objectPixels;
+        if (!a.ldr) run.depth.series[i].x.push_back(k), run.depth.series[i].y.push_back(deepest);
+        if (a.reference && !a.ldr) {
+            const Difference d = difference(reference, frame.image, frame.objectPixels);
+            row["rms_radiance"] = d.rms, row["max_radiance"] = d.max;
+            row["rms_object_radiance"] = d.rmsObject, row["rms_receivers_radiance"] = d.rmsReceivers;
+            writeErrorMap(run.dir / ("error-" + name + ".png"), m, reference, frame.image, 0.05);
+            frameSeries.x.push_back(ms), frameSeries.y.push_back(d.rms), frameSeries.labels.push_back(passesLabel(n));
+            std::printf("frame %d, %s: %.2f ms, %zu clusters, RMS %.5f against the reference "
+                        "(object %.5f, the rest %.5f)\n",
+                        k, passesLabel(n).c_str(), ms, frame.clusters.size(), d.rms, d.rmsObject, d.rmsReceivers);
+        } else {
+            std::printf("frame %d, %s: %.2f ms, %zu clusters\n", k, passesLabel(n).c_str(), ms, frame.clusters.size());
+        }
+        frameJson["passes"].push_back(row);
+    }
+    if (a.reference && !objectPixels.empty()) {
+        // The shadow's own size: the error, off the object, of leaving the photograph as it is.
+        frameJson["rms_background_radiance"] = difference(reference, m.background, objectPixels).rmsReceivers;
+        const double deepest = deepestShadow(m.background, reference, objectPixels);
+        frameJson["reference_deepest_shadow_ratio"] = deepest;
+        run.depth.series.back().x.push_back(k), run.depth.series.back().y.push_back(deepest);
+    }
+    if (!frameSeries.x.empty()) run.timeRms.series.push_back(std::move(frameSeries));
+    return frameJson;
+}
+
 void run(const CompositeArgs& a) {
     const CompositingScene scene = compositingCase(a);
-    std::vector<int> frames = a.frames;
-    if (frames.empty()) {
-        for (int k = 0; k < int(scene.objects.front().path.size()); ++k) frames.push_back(k);
-    }
-    for (int k : frames) {
-        if (k < 0 || k >= int(scene.objects.front().path.size()))
-            throw std::invalid_argument("composite: no such frame in the path");
-    }
+    const std::vector<int> frames = chosenFrames(a, scene);
     const std::filesystem::path dir(a.outDir);
     std::filesystem::create_directories(dir);
     PreprocessSettings preprocessSettings;
@@ -233,96 +347,17 @@ void run(const CompositeArgs& a) {
                 scene.name.c_str(), preprocessMs, m.transfers.sources.size(), m.transfers.receiverPatches.size(),
                 m.shafts.leafCount());
     if (a.ldrError) writeIntensityError(dir, m);
-    LinePlot timeRms{scene.name + ": time against RMS (labels: passes n)", "median ms per frame",
-                     "RMS against the reference (luminance)", {}};
-    LinePlot depth{scene.name + ": the deepest shadow along the path", "frame of the path",
-                   "largest share of a pixel's light taken", {}};
-    for (const int n : a.passes) depth.series.push_back({passesLabel(n), {}, {}, {}});
-    depth.series.push_back({"reference", {}, {}, {}});
-    for (const int k : frames) {
-        const std::vector<glm::mat4> placement = placementsAt(scene.objects, size_t(k));   // one per object
-        PlotSeries frameSeries{"frame " + std::to_string(k), {}, {}, {}};
-        nlohmann::ordered_json frameJson = {{"frame", k}, {"passes", nlohmann::ordered_json::array()}};
-        std::vector<glm::vec3> reference;
-        if (a.reference) {
-            const auto referenceStart = std::chrono::steady_clock::now();
-            PatchSampling strata = referenceSampling();
-            strata.emitterSamplesPerAxis = a.referenceStrata.at(0),
-                strata.reflectorSamplesPerAxis = a.referenceStrata.at(1);
-            reference = differentialReference(m, object, placement, strata);
-            frameJson["reference_ms"] = millisecondsSince(referenceStart);
-            if (a.referenceConvergence) {
-                PatchSampling denser = strata;
-                denser.emitterSamplesPerAxis *= 2, denser.reflectorSamplesPerAxis *= 2, denser.seed += 1;
-                const std::vector<glm::vec3> dense = differentialReference(m, object, placement, denser);
-                const double change = difference(reference, dense, std::vector<uint8_t>(dense.size(), 0)).rms;
-                frameJson["reference_convergence_rms_radiance"] = change;
-                std::printf("frame %d: the reference at twice the strata per side differs by RMS %.6f\n", k, change);
-            }
-            writeImage(dir, "reference-f" + std::to_string(k), m, reference, false);
-        }
-        std::vector<uint8_t> objectPixels;
-        for (size_t i = 0; i < a.passes.size(); ++i) {
-            const int n = a.passes[i];
-            CompositeSettings settings;
-            settings.passes = n, settings.mapSize = a.mapSize, settings.ldr = a.ldr, settings.keepMasks = a.masks;
-            double ms = 0.0;
-            const CompositeFrame frame = timedFrame(m, object, placement, settings, a, ms);
-            const std::string name = frameName(k, n);
-            writeImage(dir, (a.ldr ? "composite-ldr-" : "composite-") + name, m, frame.image, a.ldr);
-            writeOverlay(dir / ("listed-" + name + ".png"), m, frame.listedReceiverPixels, 1, {0.2f, 0.6f, 1.0f});
-            writeOverlay(dir / ("shadowing-" + name + ".png"), m, frame.shadowingClusters,
-                         std::max<int>(1, int(frame.clusters.size())), {1.0f, 0.3f, 0.1f});
-            writeTextFile(dir / ("plan-" + name + ".svg"),
-                          formatPlanSvg(m, frame,
-                                        objectBounds(placed(object.levels.whole, placement), placement.size())));
-            for (size_t c = 0; c < frame.clusterMasks.size(); ++c) {
-                writeOverlay(dir / ("mask-" + name + "-c" + std::to_string(c) + ".png"), m, frame.clusterMasks[c], 1,
-                             {1.0f, 0.9f, 0.2f});
-            }
-            nlohmann::ordered_json row = {{"passes", n}, {"median_ms", ms}, {"stats", statsJson(frame.stats)}};
-            row["clusters"] = nlohmann::ordered_json::array();
-            for (size_t c = 0; c < frame.clusters.size(); ++c) {
-                const glm::dvec3& l = frame.lights[c];
-                row["clusters"].push_back({{"sources", frame.clusters[c].patches.size()},
-                                           {"transfer_radiance", frame.clusters[c].transfer},
-                                           {"light", {l.x, l.y, l.z}}});
-            }
-            const double deepest = deepestShadow(a.ldr ? m.photographIntensities : m.background, frame.image,
-                                                 frame.objectPixels);
-            row["deepest_shadow_ratio"] = deepest;
-            objectPixels = frame.objectPixels;
-            if (!a.ldr) depth.series[i].x.push_back(k), depth.series[i].y.push_back(deepest);
-            if (a.reference && !a.ldr) {
-                const Difference d = difference(reference, frame.image, frame.objectPixels);
-                row["rms_radiance"] = d.rms, row["max_radiance"] = d.max;
-                row["rms_object_radiance"] = d.rmsObject, row["rms_receivers_radiance"] = d.rmsReceivers;
-                writeErrorMap(dir / ("error-" + name + ".png"), m, reference, frame.image, 0.05);
-                frameSeries.x.push_back(ms), frameSeries.y.push_back(d.rms),
-                    frameSeries.labels.push_back(passesLabel(n));
-                std::printf("frame %d, n = %s: %.2f ms, %zu clusters, RMS %.5f against the reference "
-                            "(object %.5f, the rest %.5f)\n",
-                            k, n > 0 ? std::to_string(n).c_str() : "all", ms, frame.clusters.size(), d.rms, d.rmsObject,
-                            d.rmsReceivers);
-            } else {
-                std::printf("frame %d, n = %s: %.2f ms, %zu clusters\n", k, n > 0 ? std::to_string(n).c_str() : "all",
-                            ms, frame.clusters.size());
-            }
-            frameJson["passes"].push_back(row);
-        }
-        if (a.reference && !objectPixels.empty()) {
-            // The shadow's own size: the error, off the object, of leaving the photograph as it is.
-            frameJson["rms_background_radiance"] = difference(reference, m.background, objectPixels).rmsReceivers;
-            const double deepest = deepestShadow(m.background, reference, objectPixels);
-            frameJson["reference_deepest_shadow_ratio"] = deepest;
-            depth.series.back().x.push_back(k), depth.series.back().y.push_back(deepest);
-        }
-        if (!frameSeries.x.empty()) timeRms.series.push_back(std::move(frameSeries));
-        json["frames"].push_back(frameJson);
-    }
-    if (!timeRms.series.empty()) writeTextFile(dir / "time-rms.svg", formatLinePlotSvg(timeRms));
-    std::erase_if(depth.series, [](const PlotSeries& series) { return series.x.empty(); });
-    if (!depth.series.empty()) writeTextFile(dir / "shadow-depth.svg", formatLinePlotSvg(depth));
+    Run run{a, m, object, dir,
+            {scene.name + ": time against RMS (labels: passes n)", "median ms per frame",
+             "RMS against the reference (luminance)", {}},
+            {scene.name + ": the deepest shadow along the path", "frame of the path",
+             "largest share of a pixel's light taken", {}}};
+    for (const int n : a.passes) run.depth.series.push_back({passesLabel(n), {}, {}, {}});
+    run.depth.series.push_back({"reference", {}, {}, {}});
+    for (const int k : frames) json["frames"].push_back(runFrame(run, k, placementsAt(scene.objects, size_t(k))));
+    if (!run.timeRms.series.empty()) writeTextFile(dir / "time-rms.svg", formatLinePlotSvg(run.timeRms));
+    std::erase_if(run.depth.series, [](const PlotSeries& series) { return series.x.empty(); });
+    if (!run.depth.series.empty()) writeTextFile(dir / "shadow-depth.svg", formatLinePlotSvg(run.depth));
     writeTextFile(dir / "composite.json", json.dump(2) + "\n");
 }
 
