@@ -22,7 +22,7 @@ struct PlanView {
 
 PlanView fitView(const DifferentialModel& m, const std::vector<Aabb>& objectBoxes) {
     Aabb box = objectBoxes.front();
-    for (const Aabb& b : objectBoxes) box.min = glm::min(box.min, b.min), box.max = glm::max(box.max, b.max);
+    for (const Aabb& b : objectBoxes) box = merged(box, b);
     for (const uint32_t p : m.transfers.receiverPatches) {
         for (const glm::dvec3& c : m.model.corners(p)) box.min = glm::min(box.min, c), box.max = glm::max(box.max, c);
     }

@@ -15,6 +15,9 @@ struct Aabb {
     glm::dvec3 min, max;   // min <= max on every axis
 };
 
+// The box holding both.
+inline Aabb merged(const Aabb& a, const Aabb& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
+
 // Bounding box of every instance of the scene (WorldGeometry from flatten()), in instance order.
 std::vector<Aabb> instanceBounds(const Scene& scene, const WorldGeometry& world);
 

@@ -103,6 +103,7 @@ WorldGeometry patchGeometry(const PatchModel& model) {
             world.triangleMaterial.push_back(p.surface);
             world.triangleInstance.push_back(p.surface);
         }
+        world.cornerNormals.insert(world.cornerNormals.end(), 6, glm::vec3(p.normal));
     }
     return world;
 }

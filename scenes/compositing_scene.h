@@ -71,7 +71,8 @@ inline constexpr size_t kMaxCompositingPatches = size_t(1) << 16;
 PatchModel flattenPatches(const std::vector<PatchSurface>& surfaces);
 
 // The model as triangles for the rasterizer and Embree: patch p is triangles 2p and 2p + 1,
-// (v0, v1, v2) and (v0, v2, v3), one instance and material per surface.
+// (v0, v1, v2) and (v0, v2, v3), one instance and material per surface, every corner
+// normal the patch's.
 WorldGeometry patchGeometry(const PatchModel& model);
 
 // A synthetic object: a mesh with a diffuse albedo, placed by one transform per frame of its

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
@@ -16,20 +16,12 @@
 namespace shadowlab {
 namespace {
 
-Aabb merged(const Aabb& a, const Aabb& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
-
 Aabb pathBounds(const ObjectLevels& levels, std::span<const SyntheticObject> objects) {
     Aabb box = boundsOf(placed(levels.whole, placementsAt(objects, 0)));
     for (size_t k = 1; k < objects[0].path.size(); ++k) {
         box = merged(box, boundsOf(placed(levels.whole, placementsAt(objects, k))));
     }
     return box;
-}
-
-void requireFinite(std::span<const glm::mat4> placements, const char* who) {
-    for (const glm::mat4& placement : placements) {
-        if (!allFinite(placement)) throw std::invalid_argument(std::string(who) + ": a placement is not finite");
-    }
 }
 
 // The traversal of each object's box, their lists merged (each source and receiver once).
@@ -184,10 +176,6 @@ void appendFrameStats(CompositeFrame& out, size_t objectTriangles, const Scene& 
 
 WorldGeometry withObject(const DifferentialModel& m, const WorldGeometry& object) {
     WorldGeometry world = m.geometry;
-    world.cornerNormals.clear();
-    for (const Patch& p : m.model.patches) {
-        world.cornerNormals.insert(world.cornerNormals.end(), 6, glm::vec3(p.normal));
-    }
     const uint32_t base = uint32_t(world.positions.size());
     world.positions.insert(world.positions.end(), object.positions.begin(), object.positions.end());
     for (const glm::uvec3& t : object.triangles) world.triangles.push_back(t + base);
@@ -197,19 +185,6 @@ WorldGeometry withObject(const DifferentialModel& m, const WorldGeometry& object
                                   object.triangleInstance.end());
     world.cornerNormals.insert(world.cornerNormals.end(), object.cornerNormals.begin(), object.cornerNormals.end());
     return world;
-}
-
-std::vector<Aabb> objectBounds(const WorldGeometry& world, size_t objects) {
-    std::vector<Aabb> boxes(objects, Aabb{glm::dvec3(std::numeric_limits<double>::infinity()),
-                                          glm::dvec3(-std::numeric_limits<double>::infinity())});
-    for (size_t t = 0; t < world.triangles.size(); ++t) {
-        Aabb& box = boxes.at(world.triangleInstance[t]);
-        for (int c = 0; c < 3; ++c) {
-            const glm::dvec3 p(world.positions[world.triangles[t][c]]);
-            box.min = glm::min(box.min, p), box.max = glm::max(box.max, p);
-        }
-    }
-    return boxes;
 }
 
 Aabb boundsOf(const WorldGeometry& world) {
@@ -237,13 +212,13 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     if (settings.mapSize < kMinMapResolution || settings.mapSize > kMaxMapResolution) {
         throw std::invalid_argument("differential composite: the map size is out of range");
     }
-    requireFinite(placements, "differential composite");
+    requireFinitePlacements(placements, "differential composite");
     StageTimer timer;
     CompositeFrame out;
     const WorldGeometry whole = placed(object.levels.whole, placements);
-    const Aabb box = boundsOf(whole);
+    const std::vector<Aabb> boxes = instanceBounds(object.levels.whole, whole);   // one per object
+    const Aabb box = std::accumulate(boxes.begin() + 1, boxes.end(), boxes.front(), merged);
     timer.lap("object");
-    const std::vector<Aabb> boxes = objectBounds(whole, placements.size());
     out.hits = traverseObjects(m, boxes);
     timer.lap("traversal");
     const int n = settings.passes > 0 ? settings.passes : std::max<int>(1, int(out.hits.sourcePatches.size()));

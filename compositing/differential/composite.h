@@ -75,12 +75,10 @@ CompositeFrame compositeFrame(const DifferentialModel& model, const PreparedObje
                               std::span<const glm::mat4> placements, const CompositeSettings& settings = {});
 
 // The model's triangles then the placed objects', as the camera draws them: a pixel on a
-// triangle past the model's is an object's, whose material (its index) keeps its albedo. A
-// patch's corner normals are its normal.
+// triangle past the model's is an object's, whose material (its index) keeps its albedo.
 WorldGeometry withObject(const DifferentialModel& model, const WorldGeometry& object);
 
-// The box of a placed level's vertices, and of each object's (instance's) apart.
+// The box of a placed level's vertices (scenes/bounds.h's instanceBounds gives each object's).
 Aabb boundsOf(const WorldGeometry& world);
-std::vector<Aabb> objectBounds(const WorldGeometry& world, size_t objects);
 
 }  // namespace shadowlab

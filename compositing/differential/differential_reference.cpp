@@ -29,9 +29,7 @@ bool mayBlock(const Sphere& object, const Sphere& patch, const glm::dvec3& x) {
 
 std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const PreparedObject& object,
                                              std::span<const glm::mat4> placements, const PatchSampling& sampling) {
-    for (const glm::mat4& placement : placements) {
-        if (!allFinite(placement)) throw std::invalid_argument("differential reference: a placement is not finite");
-    }
+    requireFinitePlacements(placements, "differential reference");
     const WorldGeometry whole = placed(object.levels.whole, placements);
     const ReferenceVisibility objectRays(whole);
     const Aabb box = boundsOf(whole);

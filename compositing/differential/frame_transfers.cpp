@@ -22,12 +22,10 @@ std::vector<uint8_t> listedRows(const DifferentialModel& m, const std::vector<ui
 std::vector<glm::vec3> frameIntensityTransfers(const DifferentialModel& m, const std::vector<uint32_t>& listedSources,
                                                const std::vector<uint8_t>& rows) {
     const size_t S = m.transfers.sources.size();
-    const auto meanTransfer = [&](uint32_t s) {
-        return m.sourceTree.nodes[size_t(m.sourceTree.leafOfPatch[s])].transfer;
-    };
+    const SourceTree& tree = m.sourceTree;
     std::vector<uint32_t> order = listedSources;
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        return meanTransfer(a) > meanTransfer(b) || (meanTransfer(a) == meanTransfer(b) && a < b);
+        return tree.patchTransfer(a) > tree.patchTransfer(b) || (tree.patchTransfer(a) == tree.patchTransfer(b) && a < b);
     });
     std::vector<uint8_t> set(order.size());
     for (size_t k = 0; k < set.size(); ++k) set[k] = uint8_t(k % 2);

@@ -18,9 +18,7 @@ void requireValid(std::span<const SyntheticObject> objects, int shadowTriangles)
         if (objects[i].path.empty()) throw std::invalid_argument(who + "its path has no frame");
         if (objects[i].path.size() != objects[0].path.size())
             throw std::invalid_argument(who + "its path is not as long as the first's");
-        for (const glm::mat4& placement : objects[i].path) {
-            if (!allFinite(placement)) throw std::invalid_argument(who + "a placement is not finite");
-        }
+        requireFinitePlacements(objects[i].path, "synthetic object " + std::to_string(i));
     }
 }
 
@@ -42,6 +40,12 @@ ObjectLevels objectLevels(std::span<const SyntheticObject> objects, int shadowTr
     const double ratio = std::min(1.0, double(shadowTriangles) / double(triangles));
     SimplifiedScene simplified = simplifyMeshes(whole, ratio);
     return {std::move(whole), std::move(simplified)};
+}
+
+void requireFinitePlacements(std::span<const glm::mat4> placements, const std::string& who) {
+    for (const glm::mat4& placement : placements) {
+        if (!allFinite(placement)) throw std::invalid_argument(who + ": a placement is not finite");
+    }
 }
 
 std::vector<glm::mat4> placementsAt(std::span<const SyntheticObject> objects, size_t frame) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -23,6 +24,9 @@ struct ObjectLevels {
 // Throws std::invalid_argument for no object, an object with no triangle or no frame, paths
 // of different lengths, a placement that is not finite, or shadowTriangles < 4.
 ObjectLevels objectLevels(std::span<const SyntheticObject> objects, int shadowTriangles = 300);
+
+// Throws std::invalid_argument, naming `who`, unless every placement is finite.
+void requireFinitePlacements(std::span<const glm::mat4> placements, const std::string& who);
 
 // Each object's placement at frame k of the paths.
 std::vector<glm::mat4> placementsAt(std::span<const SyntheticObject> objects, size_t frame);

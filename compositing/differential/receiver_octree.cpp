@@ -11,7 +11,7 @@ glm::dvec3 centre(const Aabb& b) { return 0.5 * (b.min + b.max); }
 
 Aabb boundsOf(std::span<const uint32_t> patches, std::span<const Aabb> bounds) {
     Aabb box = bounds[patches[0]];
-    for (uint32_t p : patches) box = {glm::min(box.min, bounds[p].min), glm::max(box.max, bounds[p].max)};
+    for (uint32_t p : patches) box = merged(box, bounds[p]);
     return box;
 }
 

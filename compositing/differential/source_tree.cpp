@@ -8,8 +8,6 @@ namespace {
 
 glm::dvec3 centre(const Aabb& b) { return 0.5 * (b.min + b.max); }
 
-Aabb merged(const Aabb& a, const Aabb& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
-
 int widestAxis(std::span<const uint32_t> patches, std::span<const Aabb> bounds) {
     glm::dvec3 lo(centre(bounds[patches[0]])), hi = lo;
     for (uint32_t p : patches) lo = glm::min(lo, centre(bounds[p])), hi = glm::max(hi, centre(bounds[p]));

@@ -25,6 +25,7 @@ struct SourceNode {
 struct SourceTree {
     std::vector<SourceNode> nodes;    // the root first; 2 P - 1 nodes for P patches
     std::vector<int32_t> leafOfPatch; // patch -> its leaf
+    double patchTransfer(uint32_t patch) const { return nodes[size_t(leafOfPatch[patch])].transfer; }
 };
 
 // One entry per source patch: its box (its centre is the split key) and its average transfer
