@@ -98,7 +98,7 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
         frame.shadow.stats.push_back({"caster_lod_error_m", casters.errorM()});
     }
     if (technique.output == TechniqueOutput::Visibility) {
-        frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility);
+        frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility, frame.shadow.colouredVisibility);
     } else {
         if (frame.shadow.radiance.size() != frame.gbuffer.pixelCount())
             throw std::logic_error(technique.name + ": a radiance technique returned no radiance image");

@@ -21,13 +21,38 @@ void reserveFor(const Scene& scene, WorldGeometry& world) {
     world.cornerNormals.reserve(3 * triangles);
 }
 
+// The instance's material, or null where a scene made in code has none for it (only
+// shading reads materials otherwise).
+const Material* materialOf(const Scene& scene, const MeshInstance& instance) {
+    return instance.material < scene.materials.size() ? &scene.materials[instance.material] : nullptr;
+}
+
+// Texture coordinates are kept only for what reads them, the alpha of cut-outs.
+bool anyCutOut(const Scene& scene) {
+    for (const MeshInstance& instance : scene.instances) {
+        const Material* material = materialOf(scene, instance);
+        if (material && material->cutOut()) return true;
+    }
+    return false;
+}
+
 }  // namespace
+
+bool hasNonOpaqueCasters(const Scene& scene) {
+    if (!scene.volumes.empty()) return true;
+    for (const MeshInstance& instance : scene.instances) {
+        const Material* material = materialOf(scene, instance);
+        if (material && (material->translucent() || material->cutOut())) return true;
+    }
+    return false;
+}
 
 WorldGeometry flatten(const Scene& scene) {
     WorldGeometry world;
     reserveFor(scene, world);
     // Each mesh's corner normals once, however many instances use it.
     std::vector<std::optional<std::vector<glm::vec3>>> meshNormals(scene.meshes.size());
+    const bool uvs = anyCutOut(scene);
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[instance.mesh];
@@ -41,6 +66,9 @@ WorldGeometry flatten(const Scene& scene) {
         if (!meshNormals[instance.mesh]) meshNormals[instance.mesh] = cornerShadingNormals(mesh);
         const glm::dmat3 toWorld = normalMatrix(instance);
         for (const glm::vec3& n : *meshNormals[instance.mesh]) world.cornerNormals.push_back(worldNormal(toWorld, n));
+        if (!uvs) continue;
+        if (mesh.cornerUvs.empty()) world.cornerUvs.resize(world.cornerUvs.size() + 3 * mesh.triangles.size());
+        world.cornerUvs.insert(world.cornerUvs.end(), mesh.cornerUvs.begin(), mesh.cornerUvs.end());
     }
     return world;
 }

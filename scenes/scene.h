@@ -21,6 +21,18 @@ struct Mesh {
     // A zero vector marks a corner the file left without one. scenes/shading_normals.h
     // fills the gaps with angle-weighted vertex normals.
     std::vector<glm::vec3> cornerNormals;
+    // Texture coordinates, three per triangle in corner order (OBJ's "vt"), for the alpha
+    // texture of a cut-out material; empty when the mesh has none. (0, 0) is the texture's
+    // bottom-left corner, as in OBJ files.
+    std::vector<glm::vec2> cornerUvs;
+};
+
+// An alpha texture (foliage cards): opacity per texel in [0, 1], row-major, row 0 at the
+// top of the image, read from a PNG's alpha channel (scenes/alpha_texture.h).
+struct AlphaTexture {
+    std::string source;
+    int width = 0, height = 0;
+    std::vector<float> alpha;
 };
 
 // Every model is a Lambert diffuse term plus, except for Lambert, a specular lobe
@@ -35,6 +47,33 @@ struct Material {
     glm::vec3 specular{0.0f};  // specular reflectance in [0,1]; GGX: Schlick's F0
     float shininess = 32.0f;   // Blinn-Phong and Phong exponent, > 0
     float roughness = 0.5f;    // GGX alpha, in (0, 1]
+    // What passes through the surface (conventions.md, "Casters that are not opaque"): a
+    // share `opacity` of the light is stopped and what is left is tinted by
+    // `transmittance`, so the surface passes T = (1 - opacity) transmittance per channel.
+    float opacity = 1.0f;
+    glm::vec3 transmittance{1.0f};
+    // A cut-out: the surface is a hole wherever the alpha texture at the mesh's UVs is
+    // below alphaCutoff. Index into Scene::alphaTextures, -1 for none.
+    int alphaTexture = -1;
+    float alphaCutoff = 0.5f;
+
+    bool translucent() const { return opacity < 1.0f; }
+    bool cutOut() const { return alphaTexture >= 0; }
+    glm::vec3 passed() const { return (1.0f - opacity) * transmittance; }
+};
+
+// A participating medium that only absorbs (a smoke puff): the extinction coefficient
+// sigma (1/m) is constant inside each voxel of a grid over an axis-aligned box, so the
+// optical depth along a ray is an exact sum over the voxels it crosses
+// (shadows/volume_march.h), and the light passing through is exp(-optical depth).
+struct DensityVolume {
+    std::string name;
+    glm::vec3 min{0.0f}, max{1.0f};     // world space, min < max
+    glm::ivec3 resolution{1};           // voxels per axis
+    std::vector<float> sigma;           // x fastest, then y, then z; >= 0
+    float at(int x, int y, int z) const {
+        return sigma[(size_t(z) * size_t(resolution.y) + size_t(y)) * size_t(resolution.x) + size_t(x)];
+    }
 };
 
 struct MeshInstance {
@@ -83,6 +122,8 @@ struct Scene {
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<MeshInstance> instances;
+    std::vector<AlphaTexture> alphaTextures;
+    std::vector<DensityVolume> volumes;
     std::vector<Light> lights;
     Camera camera;
     Environment environment;
@@ -99,7 +140,15 @@ struct WorldGeometry {
     // neighbour (scenes/shading_normals.h). Only shading reads them: shadow bias and the
     // references use the geometric normal of the triangle's plane.
     std::vector<glm::vec3> cornerNormals;
+    // Texture coordinates, three per triangle like cornerNormals; empty when no mesh has any,
+    // (0, 0) at the corners of a mesh without them.
+    std::vector<glm::vec2> cornerUvs;
 };
+
+// Whether anything in the scene lets light through: a translucent or cut-out material, or a
+// density volume. Every technique but the references treats the scene's surfaces as opaque
+// unless it says otherwise.
+bool hasNonOpaqueCasters(const Scene& scene);
 
 WorldGeometry flatten(const Scene& scene);
 

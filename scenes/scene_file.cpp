@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "raster/fixed_point.h"
+#include "scenes/alpha_texture.h"
 #include "scenes/camera.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file_parts.h"
@@ -29,9 +30,39 @@ constexpr Interval kFovyDeg{0.0, 180.0, true, true};
 // The rasterizer's viewport limit: a scene that loads can be rendered.
 constexpr Interval kImageSize{1.0, double(raster::kMaxViewport), false, false};
 
+constexpr Interval kCutoff{0.0, 1.0, true, false};
+
+// The index of the texture at `path` in scene.alphaTextures, read on first use.
+int alphaTextureIndex(const JsonField& field, const std::string& directory, Scene& scene) {
+    const std::string path = (fs::path(directory) / field.string()).string();
+    for (size_t k = 0; k < scene.alphaTextures.size(); ++k) {
+        if (scene.alphaTextures[k].source == path) return int(k);
+    }
+    try {
+        scene.alphaTextures.push_back(readAlphaTexture(path));
+    } catch (const SceneError& error) {
+        field.fail(error.what());
+    }
+    return int(scene.alphaTextures.size()) - 1;
+}
+
+// What passes through a material (scene.h, Material): opacity, its tint and a cut-out.
+void readTransmission(const JsonObject& object, const std::string& directory, Scene& scene, Material& material) {
+    if (const auto opacity = object.optional("opacity")) material.opacity = opacity->number(kUnitInterval);
+    if (const auto tint = object.optional("transmittance")) {
+        if (!object.has("opacity")) tint->fail("tints the light a translucent surface passes, so needs \"opacity\" < 1");
+        material.transmittance = tint->vec3(kUnitInterval);
+    }
+    if (const auto texture = object.optional("alpha-texture")) material.alphaTexture = alphaTextureIndex(*texture, directory, scene);
+    if (const auto cutoff = object.optional("alpha-cutoff")) {
+        if (!material.cutOut()) cutoff->fail("is the cut-out's threshold, so needs \"alpha-texture\"");
+        material.alphaCutoff = cutoff->number(kCutoff);
+    }
+}
+
 // Each model accepts only its own terms (specular and shininess for Blinn-Phong and Phong,
 // specular and roughness for GGX): another model's would be silently ignored.
-void readMaterial(const JsonField& field, Scene& scene, SceneNames& names) {
+void readMaterial(const JsonField& field, const std::string& directory, Scene& scene, SceneNames& names) {
     const JsonObject object = field.object();
     Material material;
     const JsonField nameField = object["name"];
@@ -39,16 +70,20 @@ void readMaterial(const JsonField& field, Scene& scene, SceneNames& names) {
     if (std::ranges::find(names.materials, material.name) != names.materials.end())
         nameField.fail("another material is already named \"" + material.name + "\"");
     if (const auto model = object.optional("model")) material.model = model->choice(kMaterialModels);
+    std::vector<std::string_view> allowed = {"name", "model", "albedo", "opacity", "transmittance", "alpha-texture",
+                                             "alpha-cutoff"};
     switch (material.model) {
-        case MaterialModel::Lambert: object.allowOnly({"name", "model", "albedo"}); break;
+        case MaterialModel::Lambert: break;
         case MaterialModel::BlinnPhong:
-        case MaterialModel::Phong: object.allowOnly({"name", "model", "albedo", "specular", "shininess"}); break;
-        case MaterialModel::Ggx: object.allowOnly({"name", "model", "albedo", "specular", "roughness"}); break;
+        case MaterialModel::Phong: allowed.insert(allowed.end(), {"specular", "shininess"}); break;
+        case MaterialModel::Ggx: allowed.insert(allowed.end(), {"specular", "roughness"}); break;
     }
+    object.allowOnly(allowed);
     if (const auto albedo = object.optional("albedo")) material.albedo = albedo->vec3(kUnitInterval);
     if (const auto specular = object.optional("specular")) material.specular = specular->vec3(kUnitInterval);
     if (const auto shininess = object.optional("shininess")) material.shininess = shininess->number(kPositive);
     if (const auto roughness = object.optional("roughness")) material.roughness = roughness->number(kRoughness);
+    readTransmission(object, directory, scene, material);
     scene.materials.push_back(material);
     names.materials.push_back(material.name);
 }
@@ -100,6 +135,16 @@ Environment readEnvironment(const JsonField& field, const std::string& directory
     return environment;
 }
 
+// A cut-out needs texture coordinates to find its alpha.
+void checkCutOutUvs(const JsonField& instances, const Scene& scene) {
+    for (size_t k = 0; k < scene.instances.size(); ++k) {
+        const MeshInstance& instance = scene.instances[k];
+        if (scene.materials[instance.material].cutOut() && scene.meshes[instance.mesh].cornerUvs.empty())
+            instances.fail("instance \"" + instance.name + "\" has a cut-out material (alpha-texture) on a mesh without "
+                           "texture coordinates");
+    }
+}
+
 // Nothing to render is a mistake, and a scene beyond the limits (scene_limits.h) would not
 // fit the machine; both are found from the meshes and instances, before flattening.
 void checkSize(const JsonField& root, const Scene& scene) {
@@ -119,14 +164,18 @@ void checkSize(const JsonField& root, const Scene& scene) {
 
 Scene readScene(const JsonField& root, const std::string& directory, const std::string& name) {
     const JsonObject object =
-        root.object({"description", "meshes", "materials", "instances", "lights", "camera", "environment"});
+        root.object({"description", "meshes", "materials", "instances", "volumes", "lights", "camera", "environment"});
     if (const auto description = object.optional("description")) description->string();   // for readers only
     Scene scene;
     scene.name = name;
     SceneNames names;
     readMeshes(object["meshes"], directory, scene, names);
-    for (const JsonField& material : object["materials"].elements()) readMaterial(material, scene, names);
+    for (const JsonField& material : object["materials"].elements()) readMaterial(material, directory, scene, names);
     for (const JsonField& instance : object["instances"].elements()) readInstance(instance, names, scene);
+    checkCutOutUvs(object["instances"], scene);
+    if (const auto volumes = object.optional("volumes")) {
+        for (const JsonField& volume : volumes->elements()) scene.volumes.push_back(readVolume(volume));
+    }
     for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light));
     scene.camera = readCamera(object["camera"]);
     if (const auto environment = object.optional("environment")) scene.environment = readEnvironment(*environment, directory);

@@ -28,4 +28,7 @@ void readInstance(const JsonField& field, const SceneNames& names, Scene& scene)
 
 Light readLight(const JsonField& field);
 
+// One entry of "volumes": a procedural density volume (scene_volumes.cpp).
+DensityVolume readVolume(const JsonField& field);
+
 }  // namespace shadowlab

@@ -7,6 +7,7 @@
 #include "scenes/obj_reader.h"
 #include "scenes/ply_reader.h"
 #include "scenes/procedural.h"
+#include "scenes/procedural_casters.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
@@ -20,9 +21,12 @@ constexpr Interval kDivisions{1.0, 16384.0, false, false};
 constexpr Interval kSlices{3.0, 16384.0, false, false};
 constexpr Interval kStacks{2.0, 16384.0, false, false};
 
-enum class Procedural { Grid, UvSphere, Box };
-constexpr std::array<std::pair<std::string_view, Procedural>, 3> kProcedurals{{
-    {"grid", Procedural::Grid}, {"uv-sphere", Procedural::UvSphere}, {"box", Procedural::Box}}};
+enum class Procedural { Grid, UvSphere, Box, Hair };
+constexpr std::array<std::pair<std::string_view, Procedural>, 4> kProcedurals{{
+    {"grid", Procedural::Grid}, {"uv-sphere", Procedural::UvSphere}, {"box", Procedural::Box}, {"hair", Procedural::Hair}}};
+constexpr Interval kStrands{1.0, 1048576.0, false, false};
+constexpr Interval kSegments{1.0, 1024.0, false, false};
+constexpr Interval kSeed{0.0, 2147483647.0, false, false};
 
 // A procedural mesh's triangles are counted before it is made: 16384 x 16384 divisions
 // would be half a billion triangles from a line of JSON.
@@ -56,11 +60,24 @@ Mesh readBox(const JsonObject& object) {
     return makeBox(min, max);
 }
 
+Mesh readHair(const JsonObject& object) {
+    object.allowOnly({"name", "procedural", "size", "strands", "width", "segments", "seed"});
+    HairPatchSettings settings;
+    settings.size = object["size"].vec3(kPositive);
+    settings.strands = object["strands"].integer(kStrands);
+    settings.width = object["width"].number(kPositive);
+    if (const auto segments = object.optional("segments")) settings.segments = segments->integer(kSegments);
+    if (const auto seed = object.optional("seed")) settings.seed = uint64_t(seed->integer(kSeed));
+    checkProceduralSize(object["strands"], hairPatchTriangleCount(settings.strands, settings.segments));
+    return makeHairPatch(settings);
+}
+
 Mesh readProcedural(const JsonObject& object) {
     switch (object["procedural"].choice(kProcedurals)) {
         case Procedural::Grid: return readGrid(object);
         case Procedural::UvSphere: return readUvSphere(object);
         case Procedural::Box: return readBox(object);
+        case Procedural::Hair: return readHair(object);
     }
     return {};   // unreachable: every enumerator is handled above
 }

@@ -63,7 +63,7 @@ glm::vec3 brdf(const Material& material, const glm::vec3& N, const glm::vec3& wi
 namespace {
 
 glm::vec3 shadePixel(const Scene& scene, const Light& light, const GBuffer& g, size_t index,
-                     float visibility) {
+                     const glm::vec3& visibility) {
     if (!g.hit[index]) {
         return glm::vec3(0.0f);
     }
@@ -89,7 +89,7 @@ glm::vec3 shadePixel(const Scene& scene, const Light& light, const GBuffer& g, s
 }  // namespace
 
 std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, size_t lightIndex,
-                             const std::vector<float>& V) {
+                             const std::vector<float>& V, std::span<const glm::vec3> colouredV) {
     requireConsistent(gbuffer, "shade");
     if (lightIndex >= scene.lights.size()) {
         throw std::out_of_range("shade: light index " + std::to_string(lightIndex) + " but the scene has " +
@@ -99,13 +99,18 @@ std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, size_t 
         throw std::invalid_argument("shade: visibility buffer has " + std::to_string(V.size()) +
                                     " entries, G-buffer has " + std::to_string(gbuffer.pixelCount()));
     }
+    if (!colouredV.empty() && colouredV.size() != V.size()) {
+        throw std::invalid_argument("shade: the coloured visibility has " + std::to_string(colouredV.size()) +
+                                    " entries, V has " + std::to_string(V.size()));
+    }
     const Light& light = scene.lights[lightIndex];
     std::vector<glm::vec3> radiance(gbuffer.pixelCount());
     tbb::parallel_for(tbb::blocked_range<int>(0, gbuffer.height), [&](const tbb::blocked_range<int>& rows) {
         for (int j = rows.begin(); j != rows.end(); ++j) {
             for (int i = 0; i < gbuffer.width; ++i) {
                 const size_t index = gbuffer.index(i, j);
-                radiance[index] = shadePixel(scene, light, gbuffer, index, V[index]);
+                const glm::vec3 visibility = colouredV.empty() ? glm::vec3(V[index]) : colouredV[index];
+                radiance[index] = shadePixel(scene, light, gbuffer, index, visibility);
             }
         }
     });

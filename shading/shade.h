@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -15,13 +16,14 @@ namespace shadowlab {
 //   L = ambient * albedo + V * f(wi, wo) * E * max(0, N.wi)
 // with E and wi from lightArrival() for scene.lights[lightIndex] (shading/lights.h), f the
 // material's BRDF (Lambert, or normalised Blinn-Phong) and V[pixel] the visibility of that
-// light; the viewer (for wo) is scene.camera.eye, the camera the G-buffer was built with.
+// light (per channel where the coloured visibility colouredV is given: the light a tinted
+// caster lets through, conventions.md); the viewer (for wo) is scene.camera.eye, the camera the G-buffer was built with.
 // Only the selected light is shaded: the other lights of the scene are ignored, so
 // the image shows exactly the shadow being studied. Background pixels (hit = 0) get 0.
 // Throws std::out_of_range for a bad lightIndex or material index and
 // std::invalid_argument if V or a G-buffer array does not have one entry per pixel.
 std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, size_t lightIndex,
-                             const std::vector<float>& V);
+                             const std::vector<float>& V, std::span<const glm::vec3> colouredV = {});
 
 // BRDF of a material, f(wi, wo) in 1/sr, for unit vectors N (normal), wi (to the light)
 // and wo (to the viewer): albedo / pi plus the model's specular lobe.

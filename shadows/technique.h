@@ -63,6 +63,10 @@ struct TechniqueStat {
 
 struct ShadowOutputs {
     std::vector<float> visibility;         // V per pixel, row-major, 0 where hit = 0
+    // The light passed per channel where casters are tinted (conventions.md, "Casters that
+    // are not opaque"), shaded in place of V; empty for a technique that sees no colour.
+    // V is then its luminance.
+    std::vector<glm::vec3> colouredVisibility;
     std::vector<glm::vec3> radiance;       // TechniqueOutput::Radiance only: linear, row-major
     std::vector<float> stencil;            // per pixel, empty if the technique uses no stencil
     std::vector<TechniqueStat> stats;

@@ -13,6 +13,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <embree3/rtcore.h>
 #include <tbb/blocked_range.h>
@@ -21,6 +23,8 @@
 #include "shading/gbuffer_build.h"
 #include "shading/light_sampling.h"
 #include "shading/lights.h"
+#include "shading/luminance.h"
+#include "shadows/volume_march.h"
 
 namespace shadowlab {
 
@@ -40,6 +44,8 @@ struct ReferenceVisibility::Embree {
 
 namespace {
 
+void transmissionFilter(const RTCFilterFunctionNArguments* args);
+
 void throwIfEmbreeError(RTCDevice device, const char* what) {
     const RTCError error = rtcGetDeviceError(device);
     if (error != RTC_ERROR_NONE) {
@@ -48,7 +54,7 @@ void throwIfEmbreeError(RTCDevice device, const char* what) {
     }
 }
 
-void attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& world) {
+void attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& world, bool filtered) {
     static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::uvec3) == 3 * sizeof(unsigned));
     // Released on every path, including the throw below.
     const std::unique_ptr<RTCGeometryTy, decltype(&rtcReleaseGeometry)> geometry(
@@ -61,21 +67,105 @@ void attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& worl
     throwIfEmbreeError(device, "allocating the triangle buffers");
     std::memcpy(vertices, world.positions.data(), world.positions.size() * sizeof(glm::vec3));
     std::memcpy(indices, world.triangles.data(), world.triangles.size() * sizeof(glm::uvec3));
+    if (filtered) rtcSetGeometryOccludedFilterFunction(geometry.get(), transmissionFilter);
     rtcCommitGeometry(geometry.get());
     rtcAttachGeometry(scene, geometry.get());
 }
 
 
 // ---- Shadow rays -----------------------------------------------------------------------
+// What an occlusion query through casters that are not opaque carries: Embree hands the
+// context to the filter, which lets the ray pass every surface that is not solid and notes
+// what each translucent one passes.
+struct Crossing {
+    uint32_t instance;
+    float t;            // along the ray
+    glm::vec3 passed;
+};
+
+struct TransmissionContext {
+    RTCIntersectContext base;   // first: Embree's pointer to it is a pointer to this
+    const CasterTransmission* transmission;
+    std::vector<Crossing>* crossed;
+};
+
+// The occlusion filter (rtcSetGeometryOccludedFilterFunction): a hit on a solid point
+// stays valid and ends the query; any other is rejected, and a translucent one noted.
+void transmissionFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* context = reinterpret_cast<const TransmissionContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const uint32_t triangle = RTCHitN_primID(args->hit, args->N, i);
+        const glm::vec3 passed =
+            context->transmission->passedAt(triangle, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+        if (passed == glm::vec3(0.0f)) continue;
+        args->valid[i] = 0;
+        if (passed != glm::vec3(1.0f))
+            context->crossed->push_back({context->transmission->instanceOf(triangle), RTCRayN_tfar(args->ray, args->N, i), passed});
+    }
+}
+
+// The largest t at which origin + t direction can still be inside a volume's box.
+double beyondVolumes(std::span<const DensityVolume> volumes, const glm::dvec3& origin, const glm::dvec3& direction) {
+    double reach = 0.0;
+    for (const DensityVolume& v : volumes) {
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 p(corner & 1 ? v.max.x : v.min.x, corner & 2 ? v.max.y : v.min.y, corner & 4 ? v.max.z : v.min.z);
+            reach = std::max(reach, glm::length(p - origin));
+        }
+    }
+    return 2.0 * reach / glm::length(direction);
+}
+
+// Crossings of one surface closer than this, relative to t, are one (a shared edge).
+constexpr float kSameCrossing = 1e-5f;
+
 // Casts occlusion rays for one task and counts them.
 class ShadowRays {
 public:
-    explicit ShadowRays(RTCScene scene) : scene_(scene) {}
+    ShadowRays(RTCScene scene, const CasterTransmission* transmission) : scene_(scene), transmission_(transmission) {}
 
     // True if nothing blocks origin + t * direction for t in [0, tFar].
     bool unblocked(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
+        return reachesEnd(context, origin, direction, tFar);
+    }
+
+    // The light that passes along origin + t * direction, t in [0, tFar], per channel: 0 or
+    // 1 for opaque casters; through others the product of what each translucent surface
+    // passes, and exp(-optical depth) of the volumes. Each surface counts once: a ray
+    // through an edge that two triangles of a mesh share hits both at the same t, and Embree
+    // may report one hit twice, so crossings of one instance closer than kSameCrossing (of
+    // t) are one. The product is taken in (instance, t) order, so the bits do not depend on
+    // the order the BVH found them in.
+    glm::vec3 passed(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
+        if (!transmission_) return glm::vec3(unblocked(origin, direction, tFar) ? 1.0f : 0.0f);
+        TransmissionContext context{{}, transmission_, &crossed_};
+        rtcInitIntersectContext(&context.base);
+        crossed_.clear();
+        if (!reachesEnd(context.base, origin, direction, tFar)) return glm::vec3(0.0f);
+        std::ranges::sort(crossed_, [](const Crossing& a, const Crossing& b) {
+            return a.instance != b.instance ? a.instance < b.instance : a.t < b.t;
+        });
+        glm::vec3 product(1.0f);
+        for (size_t k = 0; k < crossed_.size(); ++k) {
+            const bool same = k > 0 && crossed_[k].instance == crossed_[k - 1].instance &&
+                              crossed_[k].t - crossed_[k - 1].t <= kSameCrossing * crossed_[k].t;
+            if (!same) product *= crossed_[k].passed;
+        }
+        const std::span<const DensityVolume> volumes = transmission_->volumes();
+        if (volumes.empty()) return product;
+        const glm::dvec3 a(origin), d(direction);
+        const double t = std::isfinite(tFar) ? double(tFar) : beyondVolumes(volumes, a, d);
+        return product * float(portable::exp(-opticalDepth(volumes, a, a + t * d)));
+    }
+    uint64_t count() const { return count_; }
+
+private:
+    // Whether the ray reaches tFar: rtcOccluded1 sets tfar to -inf when it finds an occluder
+    // (a hit the filter, if any, kept) and leaves it otherwise.
+    bool reachesEnd(RTCIntersectContext& context, const glm::vec3& origin, const glm::vec3& direction, float tFar) {
         RTCRay ray{};
         ray.org_x = origin.x, ray.org_y = origin.y, ray.org_z = origin.z;
         ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
@@ -84,13 +174,12 @@ public:
         ray.mask = ~0u;
         rtcOccluded1(scene_, &context, &ray);
         ++count_;
-        // rtcOccluded1 sets tfar to -inf when it finds an occluder and leaves it otherwise.
         return ray.tfar != -std::numeric_limits<float>::infinity();
     }
-    uint64_t count() const { return count_; }
 
-private:
     RTCScene scene_;
+    const CasterTransmission* transmission_;
+    std::vector<Crossing> crossed_;
     uint64_t count_ = 0;
 };
 
@@ -109,35 +198,36 @@ Receiver receiverAt(const glm::vec3& P, const glm::vec3& N, double sceneDiagonal
 
 bool faces(const Receiver& r, const glm::dvec3& direction) { return glm::dot(r.N, direction) > 0.0; }
 
-// Visibility of one point of a light: in front of the surface and nothing in between.
-bool pointVisible(ShadowRays& rays, const Receiver& r, const glm::dvec3& target) {
+// The light passed from one point of a light: 0 behind the surface, else what the casters
+// in between let through.
+glm::vec3 pointPassed(ShadowRays& rays, const Receiver& r, const glm::dvec3& target) {
     if (!faces(r, target - r.P)) {
-        return false;
+        return glm::vec3(0.0f);
     }
     const glm::dvec3 toTarget = target - glm::dvec3(r.origin);
     // Stop `offset` short of the target (see the offset derivation). A target closer than
     // that leaves no segment for an occluder to sit on.
     const double tFar = 1.0 - r.offset / glm::length(toTarget);
-    return tFar <= 0.0 || rays.unblocked(r.origin, glm::vec3(toTarget), float(tFar));
+    return tFar <= 0.0 ? glm::vec3(1.0f) : rays.passed(r.origin, glm::vec3(toTarget), float(tFar));
 }
 
-bool directionVisible(ShadowRays& rays, const Receiver& r, const glm::dvec3& towardsLight) {
-    return faces(r, towardsLight) &&
-           rays.unblocked(r.origin, glm::vec3(towardsLight), std::numeric_limits<float>::infinity());
+glm::vec3 directionPassed(ShadowRays& rays, const Receiver& r, const glm::dvec3& towardsLight) {
+    if (!faces(r, towardsLight)) return glm::vec3(0.0f);
+    return rays.passed(r.origin, glm::vec3(towardsLight), std::numeric_limits<float>::infinity());
 }
 
-// Fraction of n x n stratified samples of the light that are visible.
-float areaVisibility(ShadowRays& rays, const Receiver& r, const AreaLightFrame& frame, int n,
-                     Pcg32 rng) {
-    int visible = 0;
+// The mean passed over n x n stratified samples of the light: with opaque casters the
+// visible fraction, count / n^2, exact in float.
+glm::vec3 areaPassed(ShadowRays& rays, const Receiver& r, const AreaLightFrame& frame, int n, Pcg32 rng) {
+    glm::vec3 sum(0.0f);
     for (int b = 0; b < n; ++b) {
         for (int a = 0; a < n; ++a) {
             // Draw the jitter for every stratum, so sample positions never depend on geometry.
             const glm::dvec3 target = areaLightPoint(frame, jitteredSample(a, b, n, rng));
-            visible += pointVisible(rays, r, target);
+            sum += pointPassed(rays, r, target);
         }
     }
-    return float(visible) / float(n * n);
+    return sum / float(n * n);
 }
 
 // Everything about the light that is the same for every pixel.
@@ -147,29 +237,27 @@ struct LightQuery {
     ReferenceOptions options;
 };
 
-float pixelVisibility(ShadowRays& rays, const LightQuery& q, const Receiver& r, uint64_t pixel) {
+glm::vec3 pixelPassed(ShadowRays& rays, const LightQuery& q, const Receiver& r, uint64_t pixel) {
     switch (q.light.type) {
         case LightType::Point:
-            return pointVisible(rays, r, glm::dvec3(q.light.position)) ? 1.0f : 0.0f;
+            return pointPassed(rays, r, glm::dvec3(q.light.position));
         case LightType::Spot:
-            return insideSpotCone(q.light, glm::vec3(r.P)) &&
-                           pointVisible(rays, r, glm::dvec3(q.light.position))
-                       ? 1.0f
-                       : 0.0f;
+            return insideSpotCone(q.light, glm::vec3(r.P)) ? pointPassed(rays, r, glm::dvec3(q.light.position))
+                                                           : glm::vec3(0.0f);
         case LightType::Directional:
-            return directionVisible(rays, r, glm::dvec3(q.light.direction)) ? 1.0f : 0.0f;
+            return directionPassed(rays, r, glm::dvec3(q.light.direction));
         case LightType::Disk:
         case LightType::Rectangle:
-            return areaVisibility(rays, r, q.frame, q.options.areaSamplesPerAxis,
-                                  Pcg32(q.options.seed, pixel));
+            return areaPassed(rays, r, q.frame, q.options.areaSamplesPerAxis, Pcg32(q.options.seed, pixel));
     }
-    return 0.0f;
+    return glm::vec3(0.0f);
 }
 
 }  // namespace
 
-ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world)
-    : embree_(std::make_unique<Embree>()), sceneDiagonal_(sceneDiagonal(world)) {
+ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world, const CasterTransmission* transmission)
+    : embree_(std::make_unique<Embree>()), sceneDiagonal_(sceneDiagonal(world)),
+      transmission_(transmission && transmission->anyNonOpaque() ? transmission : nullptr) {
     for (const glm::uvec3& t : world.triangles) {
         if (std::max({t.x, t.y, t.z}) >= world.positions.size()) {
             throw std::invalid_argument("ReferenceVisibility: vertex index out of range");
@@ -183,7 +271,7 @@ ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world)
     rtcSetSceneFlags(embree_->scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(embree_->scene, RTC_BUILD_QUALITY_HIGH);
     if (!world.triangles.empty()) {
-        attachTriangles(embree_->device, embree_->scene, world);
+        attachTriangles(embree_->device, embree_->scene, world, transmission_ != nullptr);
     }
     rtcCommitScene(embree_->scene);
     throwIfEmbreeError(embree_->device, "building the scene");
@@ -192,41 +280,51 @@ ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world)
 ReferenceVisibility::~ReferenceVisibility() = default;
 
 bool ReferenceVisibility::directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const {
-    ShadowRays rays(embree_->scene);
-    return shadowlab::directionVisible(rays, receiverAt(P, N, sceneDiagonal_), direction);
+    ShadowRays rays(embree_->scene, transmission_);
+    return directionPassed(rays, receiverAt(P, N, sceneDiagonal_), direction).x > 0.0f;
 }
 
 bool ReferenceVisibility::pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const {
-    ShadowRays rays(embree_->scene);
-    return shadowlab::pointVisible(rays, receiverAt(P, N, sceneDiagonal_), target);
+    ShadowRays rays(embree_->scene, transmission_);
+    return pointPassed(rays, receiverAt(P, N, sceneDiagonal_), target).x > 0.0f;
 }
 
-std::vector<float> ReferenceVisibility::visibility(const GBuffer& gbuffer, const Light& light,
-                                                   const ReferenceOptions& options) const {
+ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, const Light& light,
+                                                        const ReferenceOptions& options) const {
     requireConsistent(gbuffer, "ReferenceVisibility::visibility");
     const bool area = light.type == LightType::Disk || light.type == LightType::Rectangle;
     if (area && options.areaSamplesPerAxis < 1) {
         throw std::invalid_argument("ReferenceVisibility: areaSamplesPerAxis must be >= 1");
     }
     const LightQuery query{light, area ? areaLightFrame(light) : AreaLightFrame{}, options};
-    std::vector<float> V(gbuffer.pixelCount(), 0.0f);
+    Passed out;
+    out.visibility.assign(gbuffer.pixelCount(), 0.0f);
+    if (transmission_) out.coloured.assign(gbuffer.pixelCount(), glm::vec3(0.0f));
     const ProgressStage progress(options.progress, "reference rays: row", uint64_t(gbuffer.height));
     tbb::parallel_for(tbb::blocked_range<int>(0, gbuffer.height), [&](const tbb::blocked_range<int>& rows) {
-        ShadowRays rays(embree_->scene);
+        ShadowRays rays(embree_->scene, transmission_);
         for (int j = rows.begin(); j != rows.end(); ++j) {
             for (int i = 0; i < gbuffer.width; ++i) {
                 const size_t k = gbuffer.index(i, j);
                 if (!gbuffer.hit[k]) {
                     continue;
                 }
-                V[k] = pixelVisibility(rays, query,
-                                       receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
+                const glm::vec3 passed =
+                    pixelPassed(rays, query, receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
+                // Opaque casters pass the same value in every channel: V is that value.
+                out.visibility[k] = transmission_ ? luminance(passed) : passed.x;
+                if (transmission_) out.coloured[k] = passed;
             }
             progress.advance();
         }
         raysCast_ += rays.count();  // integer sum: the total is the same in any order
     });
-    return V;
+    return out;
+}
+
+std::vector<float> ReferenceVisibility::visibility(const GBuffer& gbuffer, const Light& light,
+                                                   const ReferenceOptions& options) const {
+    return passed(gbuffer, light, options).visibility;
 }
 
 }  // namespace shadowlab

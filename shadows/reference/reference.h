@@ -11,6 +11,10 @@
 // A light (or light sample) on or behind the plane of the surface, dot(N, L - P) <= 0,
 // is invisible, as is a point outside a spot light's cone (the same hard cone as
 // shading/lights.h): no ray is cast for them. Pixels with hit = 0 get V = 0.
+// Through casters that are not opaque, a ray's 0 or 1 becomes the light it passes: the
+// product of what each translucent surface it crosses lets through, times exp(-optical
+// depth) of the density volumes (caster_transmission.h, volume_march.h); V is the
+// luminance of that product.
 //
 // Each pixel depends only on its own G-buffer entry and, for area lights, on a random
 // stream seeded by (options.seed, pixel index), so V is the same bytes for any number of
@@ -26,6 +30,7 @@
 
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shadows/caster_transmission.h"
 #include "shadows/progress.h"
 #include "shadows/ray_offset.h"
 
@@ -39,10 +44,13 @@ struct ReferenceOptions {
 
 class ReferenceVisibility {
 public:
-    // Builds the Embree scene (robust mode, one triangle geometry). Throws
-    // std::invalid_argument for a vertex index out of range, std::runtime_error if Embree
-    // reports an error.
-    explicit ReferenceVisibility(const WorldGeometry& world);
+    // Builds the Embree scene (robust mode, one triangle geometry). With a transmission
+    // whose casters are not all opaque (read in place: it must outlive this), shadow rays
+    // pass through translucent surfaces, the holes of cut-outs and the density volumes,
+    // taking what each lets through (caster_transmission.h); otherwise every triangle is
+    // opaque. Throws std::invalid_argument for a vertex index out of range,
+    // std::runtime_error if Embree reports an error.
+    explicit ReferenceVisibility(const WorldGeometry& world, const CasterTransmission* transmission = nullptr);
     ~ReferenceVisibility();
     ReferenceVisibility(const ReferenceVisibility&) = delete;
     ReferenceVisibility& operator=(const ReferenceVisibility&) = delete;
@@ -52,10 +60,17 @@ public:
     // area light.
     std::vector<float> visibility(const GBuffer& gbuffer, const Light& light,
                                   const ReferenceOptions& options = {}) const;
+    // V and, through casters that are not opaque, the light passed per channel (the mean
+    // over an area light's samples), V its luminance; `coloured` is empty with opaque ones.
+    struct Passed {
+        std::vector<float> visibility;
+        std::vector<glm::vec3> coloured;
+    };
+    Passed passed(const GBuffer& gbuffer, const Light& light, const ReferenceOptions& options = {}) const;
 
     // Whether a distant light in `direction` (unit) reaches the surface point P of geometric
     // normal N: in front of N's plane and nothing in the way of a ray to infinity from the
-    // origin visibility() uses. For integrators that choose their own directions (the
+    // origin visibility() uses (through casters that are not opaque: any light passes). For integrators that choose their own directions (the
     // environment reference); not counted in raysCast().
     bool directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const;
     // The same for a point `target` (a sample on an area source): in front of N's plane and
@@ -72,6 +87,7 @@ private:
     struct Embree;
     std::unique_ptr<Embree> embree_;
     double sceneDiagonal_ = 0.0;  // of the bounding box of all vertices, m
+    const CasterTransmission* transmission_;   // null: every caster opaque
     mutable std::atomic<uint64_t> raysCast_{0};
 };
 

@@ -1,5 +1,7 @@
 #include "shadows/reference/reference_techniques.h"
 
+#include <utility>
+
 #include "shadows/reference/reference.h"
 #include "shadows/stage_timer.h"
 
@@ -16,11 +18,14 @@ ShadowOutputs unshadowed(const ShadowInputs& in) {
 // V of `light` by Embree rays, the scene's BVH built in this frame: both stages timed.
 ShadowOutputs referenceVisibility(const ShadowInputs& in, const Light& light, ReferenceOptions options) {
     StageTimer timer;
-    const ReferenceVisibility reference(in.casterWorld());
+    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
+    const ReferenceVisibility reference(in.casterWorld(), &transmission);
     timer.lap("bvh");
     options.progress = in.progress;
     ShadowOutputs out;
-    out.visibility = reference.visibility(in.gbuffer, light, options);
+    ReferenceVisibility::Passed passed = reference.passed(in.gbuffer, light, options);
+    out.visibility = std::move(passed.visibility);
+    out.colouredVisibility = std::move(passed.coloured);
     timer.lap("rays");
     timer.appendTo(out.stats);
     return out;

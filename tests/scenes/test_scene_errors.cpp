@@ -6,6 +6,7 @@
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
+#include <stb_image_write.h>
 
 #include "scenes/scene_file.h"
 #include "tests/scenes/scene_test_files.h"
@@ -61,6 +62,15 @@ void writeMeshFiles(const test::TempDir& dir) {
                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                                "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
     std::filesystem::create_directory(dir.path("folder.obj"));
+}
+
+// leaf.png: 4 x 2 texels with alpha, the left half 0 and the right half 255; grey.png: no alpha.
+void writeAlphaTextures(const test::TempDir& dir) {
+    std::vector<unsigned char> rgba(4 * 2 * 4, 200);
+    for (int k = 0; k < 8; ++k) rgba[4 * size_t(k) + 3] = (k % 4) < 2 ? 0 : 255;
+    REQUIRE(stbi_write_png(dir.path("leaf.png").c_str(), 4, 2, 4, rgba.data(), 4 * 4) != 0);
+    const std::vector<unsigned char> grey(8, 128);
+    REQUIRE(stbi_write_png(dir.path("grey.png").c_str(), 4, 2, 1, grey.data(), 4) != 0);
 }
 
 struct Case {
@@ -347,4 +357,78 @@ TEST_CASE("JSON nested past the limit is refused while parsing (200000 levels cr
     const std::string atLimit = dir.write("limit.json", "{\"meshes\": " + std::string(63, '[') + std::string(63, ']') + "}");
     const std::string message = test::sceneErrorOf([&] { loadScene(atLimit); });
     CHECK(message.find("nested deeper") == std::string::npos);
+}
+
+TEST_CASE("casters that are not opaque load: translucent and cut-out materials, hair, volumes") {
+    const test::TempDir dir;
+    writeMeshFiles(dir);
+    writeAlphaTextures(dir);
+    json s = validScene();
+    s["meshes"].push_back({{"name", "hair"}, {"procedural", "hair"}, {"size", {1, 0.2, 0.5}}, {"strands", 50},
+                           {"width", 0.004}, {"segments", 4}, {"seed", 3}});
+    s["materials"].push_back({{"name", "glass"}, {"opacity", 0.25}, {"transmittance", {0.2, 0.8, 0.3}}});
+    s["materials"].push_back({{"name", "leaf"}, {"alpha-texture", "leaf.png"}, {"alpha-cutoff", 0.4}});
+    s["instances"].push_back({{"mesh", "hair"}, {"material", "glass"}});
+    s["instances"].push_back({{"mesh", "ground"}, {"material", "leaf"}, {"translate", {0, 2, 0}}});
+    s["volumes"] = {{{"name", "puff"}, {"procedural", "smoke-puff"}, {"min", {-1, 0, -1}}, {"max", {1, 2, 1}},
+                     {"resolution", 8}, {"density", 2}},
+                    {{"name", "slab"}, {"procedural", "constant"}, {"min", {-1, 0, -1}}, {"max", {1, 2, 1}}, {"density", 0.5}}};
+    const Scene scene = loadScene(dir.write("scene.json", render(s)));
+    REQUIRE(scene.materials.size() == 4);
+    CHECK(scene.materials[2].passed() == glm::vec3(0.75f) * glm::vec3(0.2f, 0.8f, 0.3f));
+    REQUIRE(scene.alphaTextures.size() == 1);
+    CHECK(scene.materials[3].alphaTexture == 0);
+    CHECK(scene.alphaTextures[0].alpha == std::vector<float>{0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 1.0f, 1.0f});
+    CHECK(scene.meshes[4].triangles.size() == 2 * 50 * 4);
+    REQUIRE(scene.volumes.size() == 2);
+    CHECK(scene.volumes[0].sigma.size() == 8 * 8 * 8);
+    CHECK(scene.volumes[1].sigma == std::vector<float>{0.5f});
+    CHECK(hasNonOpaqueCasters(scene));
+    CHECK(!hasNonOpaqueCasters(loadScene(dir.write("plain.json", render(validScene())))));
+}
+
+TEST_CASE("mistakes in casters that are not opaque") {
+    const test::TempDir dir;
+    writeMeshFiles(dir);
+    writeAlphaTextures(dir);
+    const auto withMaterial = [](json material) {
+        return [material](json& s) { s["materials"][0].update(material); };
+    };
+    const json puff = {{"name", "puff"}, {"procedural", "smoke-puff"}, {"min", {-1, 0, -1}}, {"max", {1, 2, 1}},
+                       {"resolution", 8}, {"density", 2}};
+    const auto withVolume = [puff](json change) {
+        return [puff, change](json& s) {
+            json volume = puff;
+            volume.update(change);
+            s["volumes"] = {volume};
+        };
+    };
+    for (const Case& c : std::vector<Case>{
+             {"opacity above 1", withMaterial({{"opacity", 1.5}}), {"materials[0].opacity: must be in [0, 1]"}},
+             {"tint without opacity", withMaterial({{"transmittance", {1, 0, 0}}}),
+              {"materials[0].transmittance: tints the light a translucent surface passes, so needs \"opacity\" < 1"}},
+             {"cutoff without texture", withMaterial({{"alpha-cutoff", 0.5}}),
+              {"materials[0].alpha-cutoff: is the cut-out's threshold, so needs \"alpha-texture\""}},
+             {"texture without alpha", withMaterial({{"alpha-texture", "grey.png"}}),
+              {"materials[0].alpha-texture: ", "grey.png: has no alpha channel"}},
+             {"missing texture", withMaterial({{"alpha-texture", "none.png"}}), {"materials[0].alpha-texture: ", "none.png: cannot read"}},
+             {"cut-out mesh without uvs",
+              [](json& s) { s["materials"][1]["alpha-texture"] = "leaf.png"; },
+              {"instances: instance", "has a cut-out material (alpha-texture) on a mesh without texture coordinates"}},
+             {"flat volume", withVolume({{"max", {1, 0, 1}}}), {"volumes[0].max: must be greater than min in x, y and z"}},
+             {"huge volume", withVolume({{"resolution", 1000}}), {"volumes[0].resolution: must be in [1, 256]"}},
+             {"negative density", withVolume({{"density", -1}}), {"volumes[0].density: must be >= 0"}},
+             {"unknown volume kind", withVolume({{"procedural", "cloud"}}), {"volumes[0].procedural: ", "cloud"}},
+             {"hair without strands", [](json& s) {
+                  s["meshes"].push_back({{"name", "hair"}, {"procedural", "hair"}, {"size", {1, 1, 1}}, {"width", 0.01}});
+              }, {"meshes[4]: missing required field \"strands\""}},
+         }) {
+        CAPTURE(c.what);
+        json scene = validScene();
+        c.change(scene);
+        const std::string path = dir.write("scene.json", render(scene));
+        std::vector<std::string> pieces = c.pieces;
+        pieces.push_back(path + ": ");
+        test::checkMessage(test::sceneErrorOf([&] { loadScene(path); }), pieces);
+    }
 }
