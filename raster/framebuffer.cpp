@@ -1,12 +1,27 @@
 #include "raster/framebuffer.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <new>
 #include <stdexcept>
 #include <string>
 
 #include <tbb/parallel_for.h>
 
 namespace shadowlab::raster {
+namespace {
+
+// Doubles a tile's fragment array (FragmentSink::grow), in baseline code: the per-ISA
+// kernels call it through the pointer rather than instantiating an allocator of their own.
+void growSink(FragmentSink& sink) {
+    const uint32_t capacity = sink.capacity == 0 ? 1024 : 2 * sink.capacity;
+    if (capacity < sink.capacity) throw std::length_error("a tile holds more than 2^32 fragments");
+    auto* grown = static_cast<Fragment*>(std::realloc(sink.data, size_t(capacity) * sizeof(Fragment)));
+    if (!grown) throw std::bad_alloc();
+    sink.data = grown, sink.capacity = capacity;
+}
+
+}  // namespace
 
 template <class T>
 void LazyClearedBuffer<T>::allocate(size_t tiles, T value) {
@@ -62,6 +77,23 @@ Framebuffer::Framebuffer(int width, int height, Attachments attachments)
         for (auto& plane : color_) plane.allocate(tiles, 0.0f);
     }
     if (attachments.primitiveId) primitiveId_.allocate(tiles, 0);
+    if (attachments.fragments) fragments_.reset(new std::vector<FragmentSink>(tiles, FragmentSink{nullptr, 0, 0, growSink}));
+}
+
+void Framebuffer::FreeSinks::operator()(std::vector<FragmentSink>* sinks) const {
+    for (FragmentSink& sink : *sinks) std::free(sink.data);
+    delete sinks;
+}
+
+std::span<const Fragment> Framebuffer::tileFragments(int tile) const {
+    if (!fragments_) throw std::logic_error("framebuffer has no fragment lists");
+    const FragmentSink& sink = (*fragments_)[size_t(tile)];
+    return {sink.data, sink.size};
+}
+
+void Framebuffer::clearFragments() {
+    if (!fragments_) return;
+    for (FragmentSink& sink : *fragments_) sink.size = 0;
 }
 
 void Framebuffer::clearDepth(float value) { depth_.clear(value); }
@@ -80,7 +112,7 @@ FramebufferView Framebuffer::view() {
 FramebufferView Framebuffer::unresolvedView() {
     return {width_, height_, tilesX_, depth_.unresolvedData(), stencil_.unresolvedData(),
             {color_[0].unresolvedData(), color_[1].unresolvedData(), color_[2].unresolvedData(), color_[3].unresolvedData()},
-            primitiveId_.unresolvedData()};
+            primitiveId_.unresolvedData(), fragments_ ? fragments_->data() : nullptr};
 }
 
 void Framebuffer::fillPendingTile(int tile) {

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -81,6 +82,7 @@ struct Attachments {
     bool stencil = false;
     bool color = false;         // four float planes R, G, B, A
     bool primitiveId = false;
+    bool fragments = false;     // a list of fragments per tile (FragmentOutput::FragmentList)
 };
 
 class Framebuffer {
@@ -114,6 +116,10 @@ public:
     std::vector<uint8_t> stencilImage() const;
     std::vector<float> colorImage(int channel) const;
     std::vector<uint32_t> primitiveIdImage() const;
+    // The fragments drawn into tile t (row-major over tiles) since the last clear, in the
+    // order they were drawn; each fragment's pixel is a storage index (index()).
+    std::span<const Fragment> tileFragments(int tile) const;
+    void clearFragments();
 
 private:
     // The rasterizer writes tiles through the unresolved storage, filling each pending
@@ -130,6 +136,11 @@ private:
     LazyClearedBuffer<uint8_t> stencil_;
     LazyClearedBuffer<float> color_[4];
     LazyClearedBuffer<uint32_t> primitiveId_;
+    // The tiles' fragment lists: each sink's array is malloc'ed and grown by growSink.
+    struct FreeSinks {
+        void operator()(std::vector<FragmentSink>* sinks) const;
+    };
+    std::unique_ptr<std::vector<FragmentSink>, FreeSinks> fragments_;
 };
 
 }  // namespace shadowlab::raster

@@ -22,7 +22,7 @@ inline Tile tileAt(int index, int tilesX) {
 using TileKernel = void (*)(const TriangleSetup&, const Tile& tile, const DrawConstants&, const FramebufferView&,
                             uint64_t& fragments);
 
-inline constexpr int kFragmentOutputCount = 4;
+inline constexpr int kFragmentOutputCount = 5;
 
 // Compiled for one instruction set: setup, and one tile kernel per fragment output and
 // stencil use.

@@ -64,6 +64,10 @@ enum class FragmentOutput : uint8_t {
     PrimitiveId,    // visibility buffer: the triangle's id, for a G-buffer built afterwards
     ConstantColor,  // the draw's colour (planar shadows, penumbra weights, debug views)
     VaryingColor,   // varyings 0..3 interpolated perspective-correctly as RGBA
+    // Every fragment that passes the tests is appended to its tile's list (pixel, depth,
+    // primitive id), in the order of the tile's triangles, which is submission order: the
+    // light's view of translucent casters for volumetric shadow maps, all layers at once.
+    FragmentList,
 };
 
 struct PipelineState {

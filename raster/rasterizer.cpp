@@ -109,6 +109,9 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
     if (state.output == FragmentOutput::PrimitiveId && !has.primitiveId) {
         throw std::invalid_argument("draw: primitive-id output on a framebuffer without a primitive-id buffer");
     }
+    if (state.output == FragmentOutput::FragmentList && !has.fragments) {
+        throw std::invalid_argument("draw: fragment-list output on a framebuffer without fragment lists");
+    }
     const bool writesColor = state.output == FragmentOutput::ConstantColor || state.output == FragmentOutput::VaryingColor;
     if (writesColor && !has.color) throw std::invalid_argument("draw: colour output on a framebuffer without colour");
 }

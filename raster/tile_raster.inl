@@ -151,6 +151,20 @@ inline void writeColor(const TriangleSetup& tri, const DrawConstants& draw, cons
     }
 }
 
+// The passing lanes, in lane order, onto the list of the tile they lie in.
+inline void appendFragments(const TriangleSetup& tri, const FramebufferView& fb, const FragmentVector& f, Mask pass, F32 z) {
+    uint32_t passes[simd::kWidth];
+    float depths[simd::kWidth];
+    simd::store(passes, simd::select(pass, simd::splat(int32_t(1)), simd::splat(int32_t(0))));
+    simd::store(depths, z);
+    FragmentSink& sink = fb.fragments[f.offset / kPixelsPerTile];
+    for (int k = 0; k < simd::kWidth; ++k) {
+        if (!passes[k]) continue;
+        if (sink.size == sink.capacity) sink.grow(sink);
+        sink.data[sink.size++] = {uint32_t(f.offset) + uint32_t(k), depths[k], tri.primitiveId};
+    }
+}
+
 template <FragmentOutput kOutput, bool kStencil>
 inline void shadeFragments(const TriangleSetup& tri, const DrawConstants& draw, const FramebufferView& fb,
                            const FragmentVector& f) {
@@ -170,6 +184,8 @@ inline void shadeFragments(const TriangleSetup& tri, const DrawConstants& draw, 
     if constexpr (kOutput == FragmentOutput::PrimitiveId) {
         uint32_t* at = fb.primitiveId + f.offset;
         simd::store(at, simd::select(pass, simd::splat(int32_t(tri.primitiveId)), simd::load(at)));
+    } else if constexpr (kOutput == FragmentOutput::FragmentList) {
+        appendFragments(tri, fb, f, pass, z);
     } else if constexpr (kOutput != FragmentOutput::DepthOnly) {
         writeColor<kOutput>(tri, draw, fb, f, pass, dx, dy);
     }
@@ -302,6 +318,7 @@ inline const RasterKernels& kernels() {
         {&rasterizeTriangleInTile<O::PrimitiveId, false>, &rasterizeTriangleInTile<O::PrimitiveId, true>},
         {&rasterizeTriangleInTile<O::ConstantColor, false>, &rasterizeTriangleInTile<O::ConstantColor, true>},
         {&rasterizeTriangleInTile<O::VaryingColor, false>, &rasterizeTriangleInTile<O::VaryingColor, true>},
+        {&rasterizeTriangleInTile<O::FragmentList, false>, &rasterizeTriangleInTile<O::FragmentList, true>},
     }};
     return table;
 }

@@ -34,6 +34,23 @@ struct TriangleSetup {
     bool frontFacing;
 };
 
+// A fragment of FragmentOutput::FragmentList: where it is (the pixel's storage index,
+// FramebufferView), its window depth and its triangle.
+struct Fragment {
+    uint32_t pixel;
+    float depth;
+    uint32_t primitiveId;
+};
+
+// One tile's list of fragments: a plain array the tile's one task appends to, which calls
+// `grow` (defined with the framebuffer, in baseline code) when it is full. No member
+// functions: the per-ISA kernels must not share inline code compiled for another ISA.
+struct FragmentSink {
+    Fragment* data;
+    uint32_t size, capacity;
+    void (*grow)(FragmentSink& sink);
+};
+
 // The buffers of a framebuffer as the kernels see them. Every buffer is stored
 // block-linear: 64x64 tiles in row-major order, inside a tile 8x8 blocks in row-major
 // order, inside a block pixels in row-major order. One 8x8 block is then 64 consecutive
@@ -44,6 +61,7 @@ struct FramebufferView {
     uint8_t* stencil;         // null when the framebuffer has none
     float* color[4];          // R, G, B, A planes; null when absent
     uint32_t* primitiveId;    // null when absent
+    FragmentSink* fragments;  // one per tile; null when absent
 };
 
 struct DrawConstants {
