@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "compositing/environment_techniques.h"
+#include "shadows/deep/deep_techniques.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/fins/fins.h"
 #include "shadows/izb/izb.h"
@@ -34,6 +35,10 @@ const std::vector<Technique>& techniques() {
         withCasterLod(finsTechnique()),
         withCasterLod(smoothiesTechnique()),
         withCasterLod(penumbraMapsTechnique()),
+        withCasterLod(colouredShadowMapTechnique()),
+        withCasterLod(opacityShadowMapsTechnique()),
+        withCasterLod(deepShadowMapsTechnique()),
+        withCasterLod(adaptiveVolumetricShadowMapsTechnique()),
         withCasterLod(environmentAdditiveTechnique()),
         withCasterLod(environmentSubtractiveTechnique()),
         environmentLightsReferenceTechnique(),

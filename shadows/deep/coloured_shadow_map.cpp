@@ -1,0 +1,69 @@
+// `coloured-shadow-map` (Real-Time Rendering, 4th ed., section 7.8, first paragraph): over
+// the opaque map, a second map of the translucent casters holding the depth of the nearest
+// one and, as multiplicative blending would leave it, the product of the light every one of
+// them passes, per channel. A receiver the opaque map leaves lit and that lies behind the
+// nearest translucent surface gets that colour. Its known failures: a receiver between two
+// translucent layers gets all of them (so a translucent caster cannot shadow itself
+// correctly, as RTR says), and volumes are not seen.
+#include <utility>
+
+#include "shading/luminance.h"
+#include "shadows/deep/deep_techniques.h"
+#include "shadows/deep/volumetric_settings.h"
+
+namespace shadowlab {
+namespace {
+
+struct ColouredMap {
+    std::vector<float> nearest;       // per texel, 1 where nothing translucent
+    std::vector<glm::vec3> passed;    // per texel, the product of the translucent surfaces' passed light
+};
+
+ColouredMap buildColouredMap(const LightLayers& layers) {
+    const size_t texels = layers.start.size() - 1;
+    ColouredMap map{std::vector<float>(texels, 1.0f), std::vector<glm::vec3>(texels, glm::vec3(1.0f))};
+    for (size_t t = 0; t < texels; ++t) {
+        for (uint32_t e = layers.start[t]; e < layers.start[t + 1]; ++e) {
+            if (layers.triangle[e] == LightLayers::kVolumePiece) continue;
+            map.nearest[t] = std::min(map.nearest[t], layers.depthNear[e]);
+            map.passed[t] *= layers.passed[e];
+        }
+    }
+    return map;
+}
+
+ShadowOutputs runColouredShadowMap(const ShadowInputs& in) {
+    const VolumetricSettings settings = readVolumetricSettings(in.params);
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);
+    StageTimer timer;
+    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
+    const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
+    const ColouredMap map = buildColouredMap(frame.layers);
+    timer.lap("colour_map");
+    ShadowOutputs out;
+    out.colouredVisibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup,
+                                                 [&](size_t texel, float z) {
+                                                     return z > map.nearest[texel] ? map.passed[texel] : glm::vec3(1.0f);
+                                                 });
+    out.visibility.resize(out.colouredVisibility.size());
+    for (size_t k = 0; k < out.visibility.size(); ++k) out.visibility[k] = luminance(out.colouredVisibility[k]);
+    timer.lap("lookup");
+    addVolumetricStats(frame, sizeof(float) + sizeof(glm::vec3), out.stats);
+    timer.appendTo(out.stats);
+    writeVolumetricDebug(in, "coloured-shadow-map", frame);
+    return out;
+}
+
+}  // namespace
+
+Technique colouredShadowMapTechnique() {
+    return {.name = "coloured-shadow-map",
+            .description = "coloured shadow map (RTR 7.8): the nearest translucent depth and the product of the "
+                           "translucent casters' colours over the opaque map",
+            .params = volumetricParamSpecs(),
+            .run = runColouredShadowMap,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
+}
+
+}  // namespace shadowlab

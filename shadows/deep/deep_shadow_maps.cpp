@@ -1,0 +1,120 @@
+// `deep-shadow-maps` (Lokovic and Veach 2000, "Deep shadow maps", SIGGRAPH): per texel the
+// transmittance curve itself (section 3), built from every fragment and volume piece the
+// texel sees (transmittance_curve.h) and compressed to few vertices within an error
+// tolerance (section 4.2, curve_compression.h); a texel keeping more than `max-vertices`
+// is compressed again at twice the tolerance until it fits. Lookups are filtered: the four
+// nearest texels' curves, evaluated at the receiver's depth, blended bilinearly (section 4.1).
+#include <algorithm>
+
+#include "shadows/debug_buffers.h"
+#include "shadows/deep/curve_compression.h"
+#include "shadows/deep/deep_techniques.h"
+#include "shadows/deep/volumetric_settings.h"
+
+namespace shadowlab {
+namespace {
+
+struct DeepMap {
+    std::vector<uint32_t> start;          // per texel, into vertices
+    std::vector<CurveVertex> vertices;
+    uint32_t mostVertices = 0;
+    float largestTolerance = 0.0f;        // after any doubling
+};
+
+struct CompressedTexel {
+    uint32_t vertices;
+    float tolerance;
+};
+
+// Texel t's curve, compressed until it has at most maxVertices.
+CompressedTexel compressTexel(const LightLayers& layers, size_t t, float tolerance, int maxVertices, ExactCurves& curves,
+                              std::vector<CurveVertex>& exact, std::vector<CurveVertex>& out) {
+    curves.build(layers, t, exact);
+    compressCurve(exact, tolerance, out);
+    while (out.size() > size_t(maxVertices)) {
+        tolerance = tolerance > 0.0f ? 2.0f * tolerance : 1.0f / 1024.0f;   // a tolerance of 1 keeps 2
+        compressCurve(exact, tolerance, out);
+    }
+    return {uint32_t(out.size()), tolerance};
+}
+
+DeepMap buildDeepMap(const LightLayers& layers, float tolerance, int maxVertices) {
+    const int size = layers.size();
+    std::vector<std::vector<CurveVertex>> rows(static_cast<size_t>(size));
+    std::vector<CompressedTexel> texels(size_t(size) * size_t(size));
+    tbb::parallel_for(0, size, [&](int y) {
+        ExactCurves curves;
+        std::vector<CurveVertex> exact, compressed;
+        for (int x = 0; x < size; ++x) {
+            const size_t t = size_t(y) * size_t(size) + size_t(x);
+            texels[t] = compressTexel(layers, t, tolerance, maxVertices, curves, exact, compressed);
+            rows[size_t(y)].insert(rows[size_t(y)].end(), compressed.begin(), compressed.end());
+        }
+    });
+    DeepMap map;
+    map.start.assign(texels.size() + 1, 0);
+    for (size_t t = 0; t < texels.size(); ++t) {
+        map.start[t + 1] = map.start[t] + texels[t].vertices;
+        map.mostVertices = std::max(map.mostVertices, texels[t].vertices);
+        map.largestTolerance = std::max(map.largestTolerance, texels[t].vertices ? texels[t].tolerance : 0.0f);
+    }
+    map.vertices.reserve(map.start.back());
+    for (const std::vector<CurveVertex>& row : rows) map.vertices.insert(map.vertices.end(), row.begin(), row.end());
+    return map;
+}
+
+std::span<const CurveVertex> curveOf(const DeepMap& map, size_t texel) {
+    return {map.vertices.data() + map.start[texel], map.start[texel + 1] - map.start[texel]};
+}
+
+void writeDeepDebug(const ShadowInputs& in, const LightLayers& layers, const DeepMap& map) {
+    const DebugBuffers debug(in.debugDir, "deep-shadow-maps");
+    if (!debug.enabled()) return;
+    const int size = layers.size();
+    std::vector<float> counts(size_t(size) * size_t(size));
+    for (size_t t = 0; t < counts.size(); ++t) counts[t] = float(map.start[t + 1] - map.start[t]);
+    debug.write("vertices-per-texel", size, size, counts, 0.0f, float(std::max<uint32_t>(map.mostVertices, 1)));
+}
+
+ShadowOutputs runDeepShadowMaps(const ShadowInputs& in) {
+    const VolumetricSettings settings = readVolumetricSettings(in.params);
+    const float tolerance = float(in.params.real("tolerance"));
+    const int maxVertices = in.params.integer("max-vertices");
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);
+    StageTimer timer;
+    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
+    const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
+    const DeepMap map = buildDeepMap(frame.layers, tolerance, maxVertices);
+    timer.lap("curves");
+    ShadowOutputs out;
+    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup,
+                                         [&](size_t texel, float z) { return transmittanceAt(curveOf(map, texel), z); });
+    timer.lap("lookup");
+    const double texels = double(map.start.size() - 1);
+    addVolumetricStats(frame, (double(map.vertices.size()) * sizeof(CurveVertex) + texels * sizeof(uint32_t)) / texels,
+                       out.stats);
+    out.stats.push_back({"vertices_per_texel_mean_count", double(map.vertices.size()) / texels});
+    out.stats.push_back({"vertices_per_texel_max_count", double(map.mostVertices)});
+    out.stats.push_back({"largest_tolerance_ratio", double(map.largestTolerance)});
+    timer.appendTo(out.stats);
+    writeVolumetricDebug(in, "deep-shadow-maps", frame);
+    writeDeepDebug(in, frame.layers, map);
+    return out;
+}
+
+}  // namespace
+
+Technique deepShadowMapsTechnique() {
+    std::vector<ParamSpec> params = volumetricParamSpecs();
+    params.push_back(realParam("tolerance", 0.02, 0.0, 1.0, "largest change of transmittance compression may make"));
+    params.push_back(integerParam("max-vertices", 16, 2, 1024, "vertices a texel's curve may keep"));
+    return {.name = "deep-shadow-maps",
+            .description = "deep shadow maps (Lokovic and Veach 2000): each texel's transmittance curve from all "
+                           "fragments, compressed within a tolerance, filtered lookups",
+            .params = params,
+            .run = runDeepShadowMaps,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,99 @@
+// `opacity-shadow-maps` (Kim and Neumann 2001, "Opacity shadow maps", EGWR; Real-Time
+// Rendering, 4th ed., section 7.8): the optical depth in front of a fixed set of parallel
+// slices, uniformly spaced in depth between the nearest and the farthest translucent event,
+// stored per texel (the paper's opacity maps, one per slice); a receiver between two slices
+// gets the optical depth interpolated linearly between them and T = exp(-tau) (their
+// section 3.2). Its known artefact: a layer between two slices is smeared over the gap, so
+// a receiver in front of it is partly shadowed by it and one just behind too little; the
+// error falls as the slices grow.
+#include <cmath>
+
+#include "raster/portable_math.h"
+#include "shadows/debug_buffers.h"
+#include "shadows/deep/deep_techniques.h"
+#include "shadows/deep/transmittance_curve.h"
+#include "shadows/deep/volumetric_settings.h"
+
+namespace shadowlab {
+namespace {
+
+struct OpacitySlices {
+    int count = 0;
+    float first = 0.0f, spacing = 1.0f;   // slice k at depth first + (k + 1) spacing
+    std::vector<float> opticalDepth;      // count per texel, slice by slice
+};
+
+OpacitySlices buildSlices(const LightLayers& layers, int count) {
+    OpacitySlices slices;
+    slices.count = count;
+    slices.first = layers.nearestDepth;
+    slices.spacing = std::max(layers.farthestDepth - layers.nearestDepth, 1e-7f) / float(count);
+    const size_t texels = layers.start.size() - 1;
+    slices.opticalDepth.assign(texels * size_t(count), 0.0f);
+    tbb::parallel_for(size_t(0), texels, [&](size_t t) {
+        if (layers.eventCount(t) == 0) return;
+        for (int k = 0; k < count; ++k) {
+            const double z = double(slices.first) + double(k + 1) * double(slices.spacing);
+            slices.opticalDepth[t * size_t(count) + size_t(k)] = float(opticalDepthBefore(layers, t, z));
+        }
+    });
+    return slices;
+}
+
+float sliceTransmittance(const OpacitySlices& s, size_t texel, float z) {
+    const float u = (z - s.first) / s.spacing;   // slice k sits at u = k + 1
+    if (!(u > 0.0f)) return 1.0f;
+    const float* tau = &s.opticalDepth[texel * size_t(s.count)];
+    const int below = int(u);   // slice below - 1 (or the start, optical depth 0) to slice below
+    if (below >= s.count) return float(portable::exp(-double(tau[s.count - 1])));
+    const float from = below == 0 ? 0.0f : tau[below - 1], f = u - float(below);
+    return float(portable::exp(-double(from + f * (tau[below] - from))));
+}
+
+void writeSlices(const ShadowInputs& in, const LightLayers& layers, const OpacitySlices& s) {
+    const DebugBuffers debug(in.debugDir, "opacity-shadow-maps");
+    if (!debug.enabled()) return;
+    const int size = layers.size();
+    for (int k = 0; k < s.count; k += std::max(1, s.count / 4)) {
+        std::vector<float> image(size_t(size) * size_t(size));
+        for (size_t t = 0; t < image.size(); ++t) image[t] = float(portable::exp(-double(s.opticalDepth[t * size_t(s.count) + size_t(k)])));
+        debug.write("slice-" + std::to_string(k), size, size, image, 0.0f, 1.0f);
+    }
+}
+
+ShadowOutputs runOpacityShadowMaps(const ShadowInputs& in) {
+    const VolumetricSettings settings = readVolumetricSettings(in.params);
+    const int count = in.params.integer("slices");
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);
+    StageTimer timer;
+    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
+    const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
+    const OpacitySlices slices = buildSlices(frame.layers, count);
+    timer.lap("slices");
+    ShadowOutputs out;
+    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup,
+                                         [&](size_t texel, float z) { return sliceTransmittance(slices, texel, z); });
+    timer.lap("lookup");
+    addVolumetricStats(frame, double(count) * sizeof(float), out.stats);
+    out.stats.push_back({"slices_count", double(count)});
+    timer.appendTo(out.stats);
+    writeVolumetricDebug(in, "opacity-shadow-maps", frame);
+    writeSlices(in, frame.layers, slices);
+    return out;
+}
+
+}  // namespace
+
+Technique opacityShadowMapsTechnique() {
+    std::vector<ParamSpec> params = volumetricParamSpecs();
+    params.push_back(integerParam("slices", 16, 1, 256, "opacity maps, uniformly spaced in depth"));
+    return {.name = "opacity-shadow-maps",
+            .description = "opacity shadow maps (Kim and Neumann 2001): optical depth at uniform depth slices, "
+                           "interpolated between them",
+            .params = params,
+            .run = runOpacityShadowMaps,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
+}
+
+}  // namespace shadowlab
