@@ -119,7 +119,7 @@ void BM_RasterTiles(benchmark::State& state) {
     fillBins(chunks, 0, 1, tiles, tiles, bins);
     Framebuffer fb(kMapSize, kMapSize);
     const DrawConstants constants = {p.state, {1, 1, 1, 1}, 0};
-    const TileKernel kernel = rasterKernels(level).kernel[int(FragmentOutput::DepthOnly)][0];
+    const TileKernel kernel = rasterKernels(level).kernel[int(FragmentOutput::DepthOnly)][0][0];
     uint64_t fragments = 0;
     for (auto _ : state) {
         fb.clearDepth(1.0f);

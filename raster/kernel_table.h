@@ -24,11 +24,11 @@ using TileKernel = void (*)(const TriangleSetup&, const Tile& tile, const DrawCo
 
 inline constexpr int kFragmentOutputCount = 5;
 
-// Compiled for one instruction set: setup, and one tile kernel per fragment output and
-// stencil use.
+// Compiled for one instruction set: setup, and one tile kernel per fragment output, stencil
+// use and alpha test.
 struct RasterKernels {
     SetupKernel setup;
-    TileKernel kernel[kFragmentOutputCount][2];
+    TileKernel kernel[kFragmentOutputCount][2][2];
 };
 
 const RasterKernels& rasterKernelsScalar();

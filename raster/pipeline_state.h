@@ -70,6 +70,17 @@ enum class FragmentOutput : uint8_t {
     FragmentList,
 };
 
+// The alpha test of a cut-out (foliage cards), before the depth and stencil tests: a
+// fragment whose alpha is below the cutoff is discarded. Alpha is read from a texture at the
+// draw's varyings 0 and 1, interpolated perspective-correctly as (u, v): the nearest texel,
+// the coordinates clamped to [0, 1], u to the right and v up (row 0 of `alpha` is the
+// texture's top, at v = 1). Off while `alpha` is null.
+struct AlphaTest {
+    const float* alpha = nullptr;   // width * height values, row-major
+    int width = 0, height = 0;
+    float cutoff = 0.5f;
+};
+
 struct PipelineState {
     CullMode cull = CullMode::Back;
     bool clipFar = true;            // false for an infinite far projection (shadow volumes)
@@ -80,6 +91,7 @@ struct PipelineState {
     FragmentOutput output = FragmentOutput::DepthOnly;
     uint8_t colorWriteMask = 0xf;   // bit k enables channel k (R, G, B, A)
     BlendState blend;
+    AlphaTest alphaTest;
 };
 
 }  // namespace shadowlab::raster

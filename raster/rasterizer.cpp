@@ -96,6 +96,13 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
     if (vs.varyings.size() != vertexCount * size_t(vs.varyingCount)) {
         throw std::invalid_argument("draw: varyings must hold varyingCount values per vertex");
     }
+    if (!call.primitiveIds.empty() && call.primitiveIds.size() != call.triangles.size()) {
+        throw std::invalid_argument("draw: primitiveIds must hold one id per triangle");
+    }
+    const AlphaTest& alpha = state.alphaTest;
+    if (alpha.alpha && (alpha.width < 1 || alpha.height < 1 || vs.varyingCount < 2)) {
+        throw std::invalid_argument("draw: the alpha test needs a texture of at least 1 x 1 texels and varyings u, v");
+    }
     if (uint64_t(call.firstPrimitiveId) + call.triangles.size() > uint64_t(UINT32_MAX) + 1) {
         throw std::invalid_argument("draw: primitive ids would pass 2^32 - 1");
     }
@@ -130,7 +137,7 @@ void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& vie
         const TransformedVertices& v = vertices_;
         for (size_t i = begin; i < end; ++i) {
             const glm::uvec3& t = call.triangles[i];
-            const uint32_t id = call.firstPrimitiveId + uint32_t(i);
+            const uint32_t id = call.primitiveIds.empty() ? call.firstPrimitiveId + uint32_t(i) : call.primitiveIds[i];
             if (v.viewportCode[t.x] & v.viewportCode[t.y] & v.viewportCode[t.z]) {
                 ++stats.trianglesTriviallyRejected;   // wholly outside one side of the view volume
             } else if ((v.clipCode[t.x] | v.clipCode[t.y] | v.clipCode[t.z]) == 0) {
@@ -177,7 +184,7 @@ void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, cons
     }
     DrawConstants constants = {state, {call.constantColor.r, call.constantColor.g, call.constantColor.b, call.constantColor.a},
                                call.vertices.varyingCount};
-    const TileKernel kernel = kernels_->kernel[int(state.output)][state.stencil.enabled ? 1 : 0];
+    const TileKernel kernel = kernels_->kernel[int(state.output)][state.stencil.enabled ? 1 : 0][state.alphaTest.alpha ? 1 : 0];
 
     const size_t batchTriangles = kChunkTriangles * kChunksPerBatch;
     chunks_.resize(kChunksPerBatch);

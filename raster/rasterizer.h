@@ -33,6 +33,7 @@ struct DrawCall {
     glm::mat4 clipFromObject{1.0f};
     std::span<const glm::uvec3> triangles;
     uint32_t firstPrimitiveId = 0;       // triangle k writes firstPrimitiveId + k
+    std::span<const uint32_t> primitiveIds;   // or, when given, primitiveIds[k]
     glm::vec4 constantColor{1.0f};       // FragmentOutput::ConstantColor
 };
 

@@ -3,7 +3,8 @@
 namespace shadowlab::raster {
 
 SetupConstants setupConstants(int width, int height, const PipelineState& state, int varyingCount) {
-    const int planeCount = state.output == FragmentOutput::VaryingColor ? 1 + varyingCount : 0;
+    const bool interpolates = state.output == FragmentOutput::VaryingColor || state.alphaTest.alpha;
+    const int planeCount = interpolates ? 1 + varyingCount : 0;
     return {width, height, state.cull, state.conservative, state.offset, planeCount};
 }
 

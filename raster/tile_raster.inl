@@ -165,12 +165,30 @@ inline void appendFragments(const TriangleSetup& tri, const FramebufferView& fb,
     }
 }
 
-template <FragmentOutput kOutput, bool kStencil>
+// The lanes whose alpha reaches the cutoff (pipeline_state.h, AlphaTest): u and v
+// perspective-correct from varyings 0 and 1, clamped, to the nearest texel.
+inline Mask alphaTestPasses(const TriangleSetup& tri, const AlphaTest& test, F32 dx, F32 dy) {
+    const F32 inverseW = evaluatePlane(tri.varyings[0], dx, dy);
+    const F32 zero = simd::splat(0.0f), one = simd::splat(1.0f);
+    const F32 u = simd::min(simd::max(evaluatePlane(tri.varyings[1], dx, dy) / inverseW, zero), one);
+    const F32 v = simd::min(simd::max(evaluatePlane(tri.varyings[2], dx, dy) / inverseW, zero), one);
+    const I32 column = simd::min(simd::truncateToInt(u * simd::splat(float(test.width))), simd::splat(int32_t(test.width - 1)));
+    const I32 row = simd::min(simd::truncateToInt((one - v) * simd::splat(float(test.height))),
+                              simd::splat(int32_t(test.height - 1)));
+    const F32 alpha = simd::gather(test.alpha, row * simd::splat(int32_t(test.width)) + column);
+    return !simd::cmpLt(alpha, simd::splat(test.cutoff));
+}
+
+template <FragmentOutput kOutput, bool kStencil, bool kAlphaTest>
 inline void shadeFragments(const TriangleSetup& tri, const DrawConstants& draw, const FramebufferView& fb,
-                           const FragmentVector& f) {
+                           FragmentVector f) {
     // Offsets from the setup's reference pixel are small integers, exact in float.
     const F32 dx = simd::toFloat(f.x - simd::splat(tri.minX));
     const F32 dy = simd::toFloat(f.y - simd::splat(tri.minY));
+    if constexpr (kAlphaTest) {
+        f.covered = f.covered & alphaTestPasses(tri, draw.state.alphaTest, dx, dy);
+        if (!simd::any(f.covered)) return;
+    }
     // Window depth is clamped to [0, 1] after the polygon offset, as OpenGL does.
     const F32 z = simd::min(simd::max(evaluatePlane(tri.depth, dx, dy), simd::splat(0.0f)), simd::splat(1.0f));
     const DepthState& ds = draw.state.depth;
@@ -234,7 +252,7 @@ struct TileTriangle {
 
 // Rasterizes the block at (blockX, blockY), whose pixels start at blockOffset in the
 // block-linear buffers, and returns the number of fragments it covered.
-template <FragmentOutput kOutput, bool kStencil>
+template <FragmentOutput kOutput, bool kStencil, bool kAlphaTest>
 uint64_t rasterizeBlock(const TileTriangle& t, int blockX, int blockY, size_t blockOffset) {
     // Coarse test: the extreme corners of the 8x8 block decide reject, accept or test.
     const CrossingEdge* edges[3];
@@ -264,12 +282,12 @@ uint64_t rasterizeBlock(const TileTriangle& t, int blockX, int blockY, size_t bl
         if (!blockInsideRegion) covered = covered & insideRect(x, y, region);
         if (!simd::any(covered)) continue;
         fragments += uint64_t(simd::countLanes(covered));
-        shadeFragments<kOutput, kStencil>(t.tri, t.draw, t.fb, {covered, x, y, blockOffset + size_t(v * simd::kWidth)});
+        shadeFragments<kOutput, kStencil, kAlphaTest>(t.tri, t.draw, t.fb, {covered, x, y, blockOffset + size_t(v * simd::kWidth)});
     }
     return fragments;
 }
 
-template <FragmentOutput kOutput, bool kStencil>
+template <FragmentOutput kOutput, bool kStencil, bool kAlphaTest>
 void rasterizeTriangleInTile(const TriangleSetup& tri, const Tile& tile, const DrawConstants& draw,
                              const FramebufferView& fb, uint64_t& fragments) {
     const int tileX = tile.x, tileY = tile.y;
@@ -304,21 +322,31 @@ void rasterizeTriangleInTile(const TriangleSetup& tri, const Tile& tile, const D
         for (int blockX = region.x0 & ~(kBlockSize - 1); blockX < region.x1; blockX += kBlockSize) {
             const size_t blockIndex = size_t(((blockY - tileY) >> kBlockShift) * kBlocksPerTileSide +
                                              ((blockX - tileX) >> kBlockShift));
-            fragments += rasterizeBlock<kOutput, kStencil>(triangle, blockX, blockY,
+            fragments += rasterizeBlock<kOutput, kStencil, kAlphaTest>(triangle, blockX, blockY,
                                                            tileOffset + blockIndex * kPixelsPerBlock);
         }
     }
 }
 
-// The level's table: setup (setup_triangles.inl, included before this file) and the tiles.
+// The level's table: setup (setup_triangles.inl, included before this file) and the tiles,
+// by fragment output, then stencil use, then alpha test. Plain arrays: a library type's
+// inline functions instantiated here would be compiled for this ISA and could be shared.
+template <FragmentOutput kOutput, bool kStencil, bool kAlphaTest>
+constexpr TileKernel tiles = &rasterizeTriangleInTile<kOutput, kStencil, kAlphaTest>;
+
 inline const RasterKernels& kernels() {
     using O = FragmentOutput;
     static const RasterKernels table = {&setupTriangles, {
-        {&rasterizeTriangleInTile<O::DepthOnly, false>, &rasterizeTriangleInTile<O::DepthOnly, true>},
-        {&rasterizeTriangleInTile<O::PrimitiveId, false>, &rasterizeTriangleInTile<O::PrimitiveId, true>},
-        {&rasterizeTriangleInTile<O::ConstantColor, false>, &rasterizeTriangleInTile<O::ConstantColor, true>},
-        {&rasterizeTriangleInTile<O::VaryingColor, false>, &rasterizeTriangleInTile<O::VaryingColor, true>},
-        {&rasterizeTriangleInTile<O::FragmentList, false>, &rasterizeTriangleInTile<O::FragmentList, true>},
+        {{tiles<O::DepthOnly, false, false>, tiles<O::DepthOnly, false, true>},
+         {tiles<O::DepthOnly, true, false>, tiles<O::DepthOnly, true, true>}},
+        {{tiles<O::PrimitiveId, false, false>, tiles<O::PrimitiveId, false, true>},
+         {tiles<O::PrimitiveId, true, false>, tiles<O::PrimitiveId, true, true>}},
+        {{tiles<O::ConstantColor, false, false>, tiles<O::ConstantColor, false, true>},
+         {tiles<O::ConstantColor, true, false>, tiles<O::ConstantColor, true, true>}},
+        {{tiles<O::VaryingColor, false, false>, tiles<O::VaryingColor, false, true>},
+         {tiles<O::VaryingColor, true, false>, tiles<O::VaryingColor, true, true>}},
+        {{tiles<O::FragmentList, false, false>, tiles<O::FragmentList, false, true>},
+         {tiles<O::FragmentList, true, false>, tiles<O::FragmentList, true, true>}},
     }};
     return table;
 }

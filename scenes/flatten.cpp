@@ -36,6 +36,19 @@ bool anyCutOut(const Scene& scene) {
     return false;
 }
 
+// The index in world.cutOuts of a material's alpha test, added on first use; -1 for a
+// material that is no cut-out.
+int32_t cutOutOf(const Scene& scene, uint32_t material, std::vector<int32_t>& materialCutOut, WorldGeometry& world) {
+    const Material& m = scene.materials[material];
+    if (!m.cutOut()) return -1;
+    if (materialCutOut[material] < 0) {
+        const AlphaTexture& texture = scene.alphaTextures[size_t(m.alphaTexture)];
+        materialCutOut[material] = int32_t(world.cutOuts.size());
+        world.cutOuts.push_back({texture.alpha, texture.width, texture.height, m.alphaCutoff});
+    }
+    return materialCutOut[material];
+}
+
 }  // namespace
 
 bool hasNonOpaqueCasters(const Scene& scene) {
@@ -53,12 +66,15 @@ WorldGeometry flatten(const Scene& scene) {
     // Each mesh's corner normals once, however many instances use it.
     std::vector<std::optional<std::vector<glm::vec3>>> meshNormals(scene.meshes.size());
     const bool uvs = anyCutOut(scene);
+    std::vector<int32_t> materialCutOut(scene.materials.size(), -1);
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[instance.mesh];
         const uint32_t base = uint32_t(world.positions.size());
         for (const glm::vec3& p : mesh.positions) world.positions.push_back(worldPosition(instance, p));
+        const int32_t cutOut = uvs ? cutOutOf(scene, instance.material, materialCutOut, world) : -1;
         for (const glm::uvec3& t : mesh.triangles) {
+            if (uvs) world.triangleCutOut.push_back(cutOut);
             world.triangles.push_back(t + base);
             world.triangleMaterial.push_back(instance.material);
             world.triangleInstance.push_back(i);

@@ -143,6 +143,16 @@ struct WorldGeometry {
     // Texture coordinates, three per triangle like cornerNormals; empty when no mesh has any,
     // (0, 0) at the corners of a mesh without them.
     std::vector<glm::vec2> cornerUvs;
+    // Cut-outs: per triangle the index into cutOuts of its material's alpha test, or -1;
+    // empty when the scene has none. Each keeps a copy of its texture, so that whatever draws
+    // the geometry (the camera pass, every depth map) tests alpha without the scene.
+    struct CutOut {
+        std::vector<float> alpha;   // row-major, row 0 at the top
+        int width = 0, height = 0;
+        float cutoff = 0.5f;
+    };
+    std::vector<int32_t> triangleCutOut;
+    std::vector<CutOut> cutOuts;
 };
 
 // Whether anything in the scene lets light through: a translucent or cut-out material, or a

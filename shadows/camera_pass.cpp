@@ -6,6 +6,7 @@
 #include "raster/rasterizer.h"
 #include "scenes/camera.h"
 #include "shading/gbuffer_build.h"
+#include "shadows/world_draw.h"
 
 namespace shadowlab {
 
@@ -20,7 +21,7 @@ GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::
     state.cull = raster::CullMode::None;
     state.output = raster::FragmentOutput::PrimitiveId;
     raster::Rasterizer rasterizer(simd);
-    rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld(camera)));
+    drawWorld(rasterizer, fb, state, world, clipFromWorld(camera));
     std::vector<uint32_t> triangles = fb.primitiveIdImage();
     if (firstKept > 0) {
         for (uint32_t& t : triangles) t = t != kNoTriangle && t < firstKept ? kNoTriangle : t;

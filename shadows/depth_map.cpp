@@ -3,24 +3,54 @@
 #include <tbb/parallel_for.h>
 
 #include "raster/rasterizer.h"
+#include "shadows/world_draw.h"
 
 namespace shadowlab {
 namespace {
 
-// One depth-only pass. Without culling it keeps the nearest surface of any facing (the
-// first depth: a one-sided or open occluder casts whichever side the light sees); culling
-// front faces keeps the back faces (the second depth, RTR 7.4).
-raster::BufferStorage<float> depthLayer(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
-                              const glm::mat4& clipFromWorld,
-                              const DepthMapSettings& settings, raster::CullMode cull, raster::SimdLevel simd) {
+// One depth-only pass, `draw(rasterizer, framebuffer, state)` drawing the casters. Without
+// culling it keeps the nearest surface of any facing (the first depth: a one-sided or open
+// occluder casts whichever side the light sees); culling front faces keeps the back faces
+// (the second depth, RTR 7.4).
+template <class Draw>
+raster::BufferStorage<float> depthLayer(const DepthMapSettings& settings, raster::CullMode cull, raster::SimdLevel simd,
+                                        const Draw& draw) {
     raster::Framebuffer framebuffer(settings.size, settings.size);   // depth cleared to 1
     raster::PipelineState state;
     state.cull = cull;
     state.offset = settings.offset;
     state.output = raster::FragmentOutput::DepthOnly;
     raster::Rasterizer rasterizer(simd);
-    rasterizer.draw(framebuffer, state, raster::positionsDraw(positions, triangles, clipFromWorld));
+    draw(rasterizer, framebuffer, state);
     return framebuffer.takeDepth();
+}
+
+template <class Draw>
+DepthMap depthMapOf(const LightView& view, const DepthMapSettings& settings, raster::SimdLevel simd, const Draw& draw) {
+    DepthMap map;
+    map.size = settings.size;
+    map.tilesX = (settings.size + raster::kTileSize - 1) / raster::kTileSize;
+    map.view = view;
+    map.texelFromWorld = texelFromWorldOf(glm::mat4(view.clipFromWorld()), settings.size);
+    map.worldFromTexel = glm::inverse(map.texelFromWorld);
+    switch (settings.layer) {
+        case DepthLayer::First:
+            map.depth = depthLayer(settings, raster::CullMode::None, simd, draw);
+            break;
+        case DepthLayer::Second:
+            map.depth = depthLayer(settings, raster::CullMode::Front, simd, draw);
+            break;
+        case DepthLayer::Midpoint: {
+            // Woo's midpoint: halfway (in window depth) between the first and second surface.
+            // Where there is no back face the second depth is the cleared 1, so a single-sided
+            // receiver such as a ground plane stays in front of its own entry.
+            map.depth = depthLayer(settings, raster::CullMode::None, simd, draw);
+            const raster::BufferStorage<float> second = depthLayer(settings, raster::CullMode::Front, simd, draw);
+            for (size_t k = 0; k < map.depth.size(); ++k) map.depth[k] = 0.5f * (map.depth[k] + second[k]);
+            break;
+        }
+    }
+    return map;
 }
 
 }  // namespace
@@ -45,36 +75,18 @@ glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size) {
 
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
                         raster::SimdLevel simd) {
-    return renderDepthMap(world.positions, world.triangles, view, settings, simd);
+    const glm::mat4 clipFromWorld(view.clipFromWorld());
+    return depthMapOf(view, settings, simd, [&](raster::Rasterizer& r, raster::Framebuffer& fb, const raster::PipelineState& state) {
+        drawWorld(r, fb, state, world, clipFromWorld);
+    });
 }
 
 DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
                         const LightView& view, const DepthMapSettings& settings, raster::SimdLevel simd) {
     const glm::mat4 clipFromWorld(view.clipFromWorld());
-    DepthMap map;
-    map.size = settings.size;
-    map.tilesX = (settings.size + raster::kTileSize - 1) / raster::kTileSize;
-    map.view = view;
-    map.texelFromWorld = texelFromWorldOf(clipFromWorld, settings.size);
-    map.worldFromTexel = glm::inverse(map.texelFromWorld);
-    switch (settings.layer) {
-        case DepthLayer::First:
-            map.depth = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::None, simd);
-            break;
-        case DepthLayer::Second:
-            map.depth = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::Front, simd);
-            break;
-        case DepthLayer::Midpoint: {
-            // Woo's midpoint: halfway (in window depth) between the first and second surface.
-            // Where there is no back face the second depth is the cleared 1, so a single-sided
-            // receiver such as a ground plane stays in front of its own entry.
-            map.depth = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::None, simd);
-            const raster::BufferStorage<float> second = depthLayer(positions, triangles, clipFromWorld, settings, raster::CullMode::Front, simd);
-            for (size_t k = 0; k < map.depth.size(); ++k) map.depth[k] = 0.5f * (map.depth[k] + second[k]);
-            break;
-        }
-    }
-    return map;
+    return depthMapOf(view, settings, simd, [&](raster::Rasterizer& r, raster::Framebuffer& fb, const raster::PipelineState& state) {
+        r.draw(fb, state, raster::positionsDraw(positions, triangles, clipFromWorld));
+    });
 }
 
 }  // namespace shadowlab

@@ -71,9 +71,10 @@ struct DepthMapSettings {
     raster::PolygonOffset offset;           // slope-scaled bias, applied while drawing
 };
 
+// The world's triangles, cut-outs with their holes (world_draw.h).
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
                         raster::SimdLevel simd);
-// The same for some of the world's triangles (indices into positions).
+// The same for some of the world's triangles (indices into positions), all drawn solid.
 DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
                         const LightView& view, const DepthMapSettings& settings, raster::SimdLevel simd);
 

@@ -9,26 +9,21 @@
 #include "shading/luminance.h"
 #include "shadows/light_view.h"
 #include "shadows/volume_march.h"
+#include "shadows/world_draw.h"
 
 namespace shadowlab {
 namespace {
 
-// The casters' triangles as the two passes draw them; cut-outs are drawn opaque (their
-// holes need the alpha test, which these passes do not run).
+// The casters' triangles as the two passes draw them (world triangle indices); a cut-out
+// is drawn with its holes in either (world_draw.h).
 struct CasterSplit {
-    std::vector<glm::uvec3> opaque, translucent;
-    std::vector<uint32_t> translucentTriangle;   // the world triangle of translucent[k]
+    std::vector<uint32_t> opaque, translucent;
 };
 
 CasterSplit splitCasters(const WorldGeometry& world, const CasterTransmission& transmission) {
     CasterSplit split;
     for (uint32_t t = 0; t < world.triangles.size(); ++t) {
-        if (transmission.materialOf(t).translucent()) {
-            split.translucent.push_back(world.triangles[t]);
-            split.translucentTriangle.push_back(t);
-        } else {
-            split.opaque.push_back(world.triangles[t]);
-        }
+        (transmission.materialOf(t).translucent() ? split.translucent : split.opaque).push_back(t);
     }
     return split;
 }
@@ -61,7 +56,7 @@ struct TexelSurfaces {
     std::vector<Event> events;
 };
 
-TexelSurfaces gatherSurfaces(const raster::Framebuffer& fb, const CasterSplit& split, const CasterTransmission& transmission) {
+TexelSurfaces gatherSurfaces(const raster::Framebuffer& fb, const CasterTransmission& transmission) {
     const int size = fb.width(), tiles = fb.tilesX() * fb.tilesY();
     TexelSurfaces out;
     out.start.assign(size_t(size) * size_t(size) + 1, 0);
@@ -77,7 +72,7 @@ TexelSurfaces gatherSurfaces(const raster::Framebuffer& fb, const CasterSplit& s
     std::vector<uint32_t> next(out.start.begin(), out.start.end() - 1);
     for (int tile = 0; tile < tiles; ++tile) {
         for (const raster::Fragment& f : fb.tileFragments(tile)) {
-            const uint32_t triangle = split.translucentTriangle[f.primitiveId];
+            const uint32_t triangle = f.primitiveId;
             const glm::vec3 passed = transmission.materialOf(triangle).passed();
             const double y = std::max(double(luminance(passed)), 1e-12);
             out.events[next[texelIndex(f)]++] = {f.depth, f.depth, float(-portable::log(y)), passed, triangle};
@@ -171,12 +166,12 @@ LightLayers renderLightLayers(const ShadowInputs& in, const Light& light, const 
     raster::PipelineState opaque;
     opaque.cull = raster::CullMode::None;
     opaque.offset = settings.opaqueOffset;
-    rasterizer.draw(fb, opaque, raster::positionsDraw(world.positions, split.opaque, clipFromWorld));
+    if (!split.opaque.empty()) drawWorld(rasterizer, fb, opaque, world, clipFromWorld, split.opaque);
     raster::PipelineState translucent;
     translucent.cull = raster::CullMode::None;
     translucent.depth.write = false;
     translucent.output = raster::FragmentOutput::FragmentList;
-    rasterizer.draw(fb, translucent, raster::positionsDraw(world.positions, split.translucent, clipFromWorld));
+    if (!split.translucent.empty()) drawWorld(rasterizer, fb, translucent, world, clipFromWorld, split.translucent);
 
     LightLayers layers;
     DepthMap& map = layers.opaque;
@@ -186,7 +181,7 @@ LightLayers renderLightLayers(const ShadowInputs& in, const Light& light, const 
     map.texelFromWorld = texelFromWorldOf(clipFromWorld, map.size);
     map.worldFromTexel = glm::inverse(map.texelFromWorld);
     map.depth = fb.takeDepth();
-    const TexelSurfaces surfaces = gatherSurfaces(fb, split, transmission);
+    const TexelSurfaces surfaces = gatherSurfaces(fb, transmission);
     layers.translucentFragments = surfaces.events.size();
     mergeEvents(surfaces, transmission.volumes(), layers);
     return layers;
