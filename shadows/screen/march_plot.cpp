@@ -25,7 +25,7 @@ void writeCsv(const std::filesystem::path& path, const std::vector<MarchSample>&
 // the samples joined by a line, the buffer's surface under each sample as a tick, and the
 // band of the depth thickness behind it, where a sample counts as inside.
 void writeSvg(const std::filesystem::path& path, const std::vector<MarchSample>& samples, float thicknessM) {
-    constexpr double kWidth = 480, kHeight = 300, kMargin = 40;
+    constexpr double kWidth = 560, kHeight = 300, kMargin = 40;
     double lo = samples.front().sampleDepth, hi = lo;
     for (const MarchSample& s : samples) {
         lo = std::min(lo, double(s.sampleDepth)), hi = std::max(hi, double(s.sampleDepth));
@@ -37,8 +37,9 @@ void writeSvg(const std::filesystem::path& path, const std::vector<MarchSample>&
     std::ofstream out(path);
     out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
         << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    out << "<text x=\"" << kMargin << "\" y=\"20\">view depth (down, " << lo << " to " << hi
-        << " m) against distance along the ray to the light (0 to " << reach << " m)</text>\n";
+    out << "<text x=\"" << kMargin << "\" y=\"16\">view depth, m (down): " << lo << " to " << hi << "</text>\n";
+    out << "<text x=\"" << kMargin << "\" y=\"" << kHeight - 12 << "\">distance along the ray to the light, m: 0 to "
+        << reach << "; green: in front, red: inside (bars: thickness)</text>\n";
     for (const MarchSample& s : samples) {
         if (!std::isfinite(s.bufferDepth)) continue;
         out << "<rect x=\"" << x(s.distanceM) - 3 << "\" y=\"" << y(s.bufferDepth) << "\" width=\"6\" height=\""
