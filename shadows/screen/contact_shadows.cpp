@@ -12,6 +12,7 @@
 #include "shadows/screen/contact_shadows.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 
 #include "shading/lights.h"
@@ -26,6 +27,7 @@ namespace shadowlab {
 namespace {
 
 const char* const kName = "contact-shadows";
+const char* const kMapDebugFolder = "contact-shadows-shadow-map";
 
 MarchSettings readMarchSettings(const TechniqueParams& p) {
     return {float(p.real("march-length")), p.integer("march-steps"), float(p.real("depth-thickness"))};
@@ -76,10 +78,12 @@ ShadowOutputs runContactShadows(const ShadowInputs& in) {
     const MarchSettings settings = readMarchSettings(in.params);
     plottedPixel(in);   // settings checked before any work
     const Light light = pointLightFor(in.light);
-    // 1. The shadow map: the shadow-map technique's own checks, V, figures, stage times and buffers.
+    // 1. The shadow map: the shadow-map technique's own checks, V, figures and stage times,
+    // and its buffers in a folder of their own.
     const Technique map = shadowMapTechnique();
+    const std::filesystem::path mapDebugDir = in.debugDir.empty() ? in.debugDir : in.debugDir / kMapDebugFolder;
     ShadowOutputs out = in.params.flag("shadow-map")
-                            ? runTechniqueStage(map, in, sharedParamValues(map, in.params), in.debugDir)
+                            ? runTechniqueStage(map, in, sharedParamValues(map, in.params), mapDebugDir)
                             : reachedOutputs(in.gbuffer, light);
     if (!anySurface(in.gbuffer)) return out;   // V = 0 already
     StageTimer timer;

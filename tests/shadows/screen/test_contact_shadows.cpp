@@ -149,7 +149,7 @@ TEST_CASE("contact-shadows: the debug buffers hold the mask and the chosen pixel
     t.run({s.prepared, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), params, dir.path});
     for (const char* file : {"contact-shadows-march-mask.exr", "contact-shadows-march-mask.png",
                              "contact-shadows-march-path.png", "contact-shadows-march.csv",
-                             "contact-shadows-march.svg", "shadow-map-depth.png"}) {
+                             "contact-shadows-march.svg", "contact-shadows-shadow-map/shadow-map-depth.png"}) {
         INFO(file);
         CHECK(std::filesystem::exists(dir.path / file));
     }
