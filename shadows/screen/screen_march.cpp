@@ -10,7 +10,8 @@ namespace shadowlab {
 
 ScreenMarch::ScreenMarch(const GBuffer& g, const Camera& camera, const Light& pointLight, const MarchSettings& settings)
     : g_(g), clipFromWorld_(clipFromWorld(camera)), eye_(camera.eye),
-      forward_(glm::normalize(camera.target - camera.eye)), zNear_(camera.zNear), light_(pointLight),
+      forward_(glm::normalize(camera.target - camera.eye)), zNear_(camera.zNear),
+      pixelFootprint_(2.0f / (clipFromView(camera)[1][1] * float(camera.height))), light_(pointLight),
       settings_(settings) {}
 
 bool ScreenMarch::project(const glm::vec3& S, glm::vec2& pixel, float& depth) const {

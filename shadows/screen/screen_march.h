@@ -79,15 +79,10 @@ private:
     glm::mat4 clipFromWorld_;
     glm::vec3 eye_, forward_;
     float zNear_;
+    float pixelFootprint_;   // a pixel's height at unit view depth, m per m
     Light light_;
     MarchSettings settings_;
 };
-
-// A sample is inside the buffer's surface when it lies behind that surface's plane by
-// more than float rounding: kPlaneTolerance of its view depth, about a hundred roundings
-// of a coordinate at that distance, so a plane seen through its own pixels never shadows
-// itself at a grazing light.
-inline constexpr float kPlaneTolerance = 1e-5f;
 
 template <class Visit>
 MarchEnd ScreenMarch::march(size_t k, Visit visit) const {
@@ -112,8 +107,12 @@ MarchEnd ScreenMarch::march(size_t k, Visit visit) const {
         if (g_.hit[q] && a < 0.0f) {
             const float behind = s.sampleDepth * (h / a);
             s.bufferDepth = s.sampleDepth - behind;
-            // A pixel's own plane never shadows it.
-            s.occluded = q != k && h < -kPlaneTolerance * s.sampleDepth && behind <= settings_.thicknessM;
+            // A pixel's own plane never shadows it. Elsewhere a sample must lie behind the
+            // plane by more than a pixel's footprint at its depth: a pixel on a silhouette
+            // holds a plane that ends inside it, and extended past that edge it would
+            // shadow the samples just above it; the margin also covers float rounding, so
+            // a plane seen through its own pixels never shadows itself.
+            s.occluded = q != k && behind > pixelFootprint_ * s.sampleDepth && behind <= settings_.thicknessM;
         }
         occluded = occluded || s.occluded;
         if (visit(s)) break;
