@@ -59,9 +59,12 @@ void writeSvg(const std::filesystem::path& path, const std::vector<MarchSample>&
 
 void writePath(const std::filesystem::path& directory, const GBuffer& g, const std::vector<float>& mask, int i, int j,
                const std::vector<MarchSample>& samples) {
+    // Surfaces grey by their normal, so that faces stand apart; darker where the march shadows.
+    const glm::vec3 key = glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f));
     std::vector<uint8_t> rgb(g.pixelCount() * 3);
     for (size_t k = 0; k < g.pixelCount(); ++k) {
-        const uint8_t grey = uint8_t(g.hit[k] ? 64 + 128 * mask[k] : 0);
+        const float facing = std::abs(glm::dot(g.normal[k], key));
+        const uint8_t grey = uint8_t(g.hit[k] ? (mask[k] > 0.0f ? 130.0f : 40.0f) + 60.0f * facing : 0.0f);
         rgb[3 * k] = rgb[3 * k + 1] = rgb[3 * k + 2] = grey;
     }
     const auto paint = [&](int x, int y, uint8_t r, uint8_t gr, uint8_t b) {
@@ -70,7 +73,9 @@ void writePath(const std::filesystem::path& directory, const GBuffer& g, const s
         rgb[3 * k] = r, rgb[3 * k + 1] = gr, rgb[3 * k + 2] = b;
     };
     for (const MarchSample& s : samples) {
-        paint(int(s.pixel.x), int(s.pixel.y), s.occluded ? 255 : 0, s.occluded ? 0 : 200, 0);
+        for (int d = 0; d < 9; ++d) {
+            paint(int(s.pixel.x) + d % 3 - 1, int(s.pixel.y) + d / 3 - 1, s.occluded ? 255 : 0, s.occluded ? 0 : 200, 0);
+        }
     }
     for (int d = -2; d <= 2; ++d) paint(i + d, j, 40, 90, 255), paint(i, j + d, 40, 90, 255);
     DebugBuffers(directory, "contact-shadows").writePicture("march-path", g.width, g.height, rgb);
