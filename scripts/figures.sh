@@ -196,8 +196,8 @@ for part in $parts; do
     branch=scenes/soft/branch-over-crate.json
     $app render $box --technique reference -o docs/images/screen-box-contact-reference.png > /dev/null
     for technique in shadow-map contact-shadows; do
-      $app render $box --technique $technique -o $s/render.png --error-map docs/images/screen-box-contact-$technique-error.png \
-        > /dev/null
+      $app render $box --technique $technique -o $s/render.png \
+        --error-map docs/images/screen-box-contact-$technique-error.png > /dev/null
     done
     # The march of a ground pixel at the box's foot, in the map's strip of light.
     $app render $box --technique contact-shadows -o $s/render.png --param plot-x=330 --param plot-y=290 \
@@ -206,11 +206,13 @@ for part in $parts; do
     cp $s/box/contact-shadows-march-path.png docs/images/screen-march-path.png
     cp $s/box/contact-shadows-march.svg docs/images/screen-march-plot.svg
     $app render $branch --technique reference-soft -o docs/images/hybrid-branch-reference-soft.png > /dev/null
-    $app render $branch --technique izb-pcss -o docs/images/hybrid-branch-izb-pcss.png --debug-buffers $s/branch > /dev/null
+    $app render $branch --technique izb-pcss -o docs/images/hybrid-branch-izb-pcss.png --debug-buffers $s/branch \
+      > /dev/null
     for buffer in blend-weight izb pcss blocker-distance; do
       cp $s/branch/izb-pcss-$buffer.png docs/images/hybrid-branch-$buffer.png
     done
     ;;
-  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench, environment, lod, differential, screen)" >&2; exit 2 ;;
+  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
+       "environment, lod, differential, screen)" >&2; exit 2 ;;
   esac
 done

@@ -73,9 +73,8 @@ void writePath(const std::filesystem::path& directory, const GBuffer& g, const s
         rgb[3 * k] = r, rgb[3 * k + 1] = gr, rgb[3 * k + 2] = b;
     };
     for (const MarchSample& s : samples) {
-        for (int d = 0; d < 9; ++d) {
-            paint(int(s.pixel.x) + d % 3 - 1, int(s.pixel.y) + d / 3 - 1, s.occluded ? 255 : 0, s.occluded ? 0 : 200, 0);
-        }
+        const int x = int(s.pixel.x), y = int(s.pixel.y);
+        for (int d = 0; d < 9; ++d) paint(x + d % 3 - 1, y + d / 3 - 1, s.occluded ? 255 : 0, s.occluded ? 0 : 200, 0);
     }
     for (int d = -2; d <= 2; ++d) paint(i + d, j, 40, 90, 255), paint(i, j + d, 40, 90, 255);
     DebugBuffers(directory, "contact-shadows").writePicture("march-path", g.width, g.height, rgb);
