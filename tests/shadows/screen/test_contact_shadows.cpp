@@ -1,7 +1,8 @@
 // contact-shadows (RTR 7.10) against the exact hard reference: on box-contact it restores
-// the contact shadow that the shadow map's bias loses, a plane never shadows itself, its
-// known failure (a caster off screen casts no march shadow) is asserted, and its bytes are
-// the same for every thread count and SIMD level.
+// the contact shadow that the shadow map's bias loses; the buffer's depth under a sample is
+// the ground plane's, analytically; a plane never shadows itself; its known failure (a
+// caster off screen casts no march shadow) is asserted; and its bytes are the same for
+// every thread count and SIMD level.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "raster/thread_count.h"
+#include "shadows/screen/march_plot.h"
 #include "shadows/screen/screen_march.h"
 #include "tests/scratch_directory.h"
 #include "tests/shadows/shadow_test_support.h"
@@ -117,6 +119,31 @@ TEST_CASE("contact-shadows: the march mask alone, and a plane never shadows itse
         const ScreenMarch::Mask mask = march.mask();
         CHECK(std::count(mask.visibility.begin(), mask.visibility.end(), 0.0f) == 0);
     }
+}
+
+TEST_CASE("contact-shadows: the buffer's depth under each sample is the ground's, met by the camera's ray") {
+    // Only the ground y = 0 in view: the camera's ray from the eye E through a sample S meets
+    // it at the fraction E.y / (E.y - S.y) of the way to S, so the buffer's depth under S is
+    // that fraction of S's view depth, whatever pixel S falls in.
+    const HardScene s(groundOnlyView(160, 100));
+    const ScreenMarch march(s.gbuffer, s.scene.camera, s.light(), {0.5f, 12, 0.05f});
+    const glm::dvec3 eye(s.scene.camera.eye);
+    int checked = 0;
+    for (int j = 5; j < 100; j += 15) {
+        for (int i = 7; i < 160; i += 20) {
+            for (const MarchSample& sample : marchSamples(march, s.gbuffer, i, j)) {
+                if (!std::isfinite(sample.bufferDepth)) continue;   // its own pixel
+                const glm::dvec3 S = glm::dvec3(s.gbuffer.position[s.gbuffer.index(i, j)]) +
+                                     double(sample.distanceM) * glm::normalize(glm::dvec3(s.light().direction));
+                const double expected = double(sample.sampleDepth) * eye.y / (eye.y - S.y);
+                INFO("pixel " << i << ", " << j << " at " << sample.distanceM << " m");
+                CHECK(sample.bufferDepth == doctest::Approx(expected).epsilon(1e-5));
+                CHECK(sample.bufferDepth > sample.sampleDepth);   // the ground lies behind every sample
+                ++checked;
+            }
+        }
+    }
+    CHECK(checked > 100);
 }
 
 TEST_CASE("contact-shadows: the same bytes for 1 and 2 threads and every SIMD level") {
