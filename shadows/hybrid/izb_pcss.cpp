@@ -60,12 +60,15 @@ ShadowOutputs runIzbPcss(const ShadowInputs& in) {
     requireAreaLight(in.light, kName);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
+    // 1. PCSS: the soft V and the blocker distances.
     const SoftShadowMap soft = renderPcssMap(in, pcss.resolution);
     timer.lap("pcss_map");
     const PcssBuffers softPart = pcssPerPixel(in, soft, pcss);
     timer.lap("pcss");
+    // 2. The irregular z-buffer: the exact hard V.
     const ShadowOutputs hardPart = hardShadows(in);
     timer.lap("izb");
+    // 3 and 4. The weight from the occluder distance, and the blend (exactly one part at w = 0 or 1).
     const std::vector<float> weight = blendWeights(in.gbuffer, soft, softPart.blockerDistance, distances);
     ShadowOutputs out;
     out.visibility.resize(weight.size());
