@@ -14,11 +14,8 @@ ScreenMarch::ScreenMarch(const GBuffer& g, const Camera& camera, const Light& po
       pixelFootprint_(2.0f / (clipFromView(camera)[1][1] * float(camera.height))), light_(pointLight),
       settings_(settings) {}
 
-bool ScreenMarch::project(const glm::vec3& S, glm::vec2& pixel, float& depth) const {
-    const glm::vec4 clip = clipFromWorld_ * glm::vec4(S, 1.0f);
-    depth = glm::dot(S - eye_, forward_);
+bool ScreenMarch::toPixel(const glm::vec4& clip, float depth, glm::vec2& pixel) const {
     if (!(depth >= zNear_)) return false;
-    // OpenGL's window transform, row 0 at the top (conventions.md).
     pixel = glm::vec2((clip.x / clip.w * 0.5f + 0.5f) * float(g_.width),
                       (0.5f - clip.y / clip.w * 0.5f) * float(g_.height));
     return pixel.x >= 0.0f && pixel.y >= 0.0f && pixel.x < float(g_.width) && pixel.y < float(g_.height);

@@ -71,9 +71,9 @@ public:
     Mask mask() const;
 
 private:
-    // Where a world-space point falls on the screen, and its view depth; false when it is
-    // not in front of the near plane or not on the screen.
-    bool project(const glm::vec3& S, glm::vec2& pixel, float& depth) const;
+    // The pixel coordinates of a clip-space position (OpenGL's window transform, row 0 at
+    // the top); false unless its view depth is beyond the near plane and it is on the screen.
+    bool toPixel(const glm::vec4& clip, float depth, glm::vec2& pixel) const;
 
     const GBuffer& g_;
     glm::mat4 clipFromWorld_;
@@ -91,12 +91,20 @@ MarchEnd ScreenMarch::march(size_t k, Visit visit) const {
     const glm::vec3 towards = directional ? light_.direction : light_.position - P;
     const float reach = directional ? settings_.lengthM : glm::min(settings_.lengthM, glm::length(towards));
     const glm::vec3 dir = glm::normalize(towards);
+    // The projection is linear in homogeneous coordinates, so along the ray the clip
+    // position and the view depth are the start's plus t times the direction's (McGuire and
+    // Mara 2014 march in homogeneous clip space the same way): no matrix per sample.
+    const glm::vec4 clipP = clipFromWorld_ * glm::vec4(P, 1.0f), clipDir = clipFromWorld_ * glm::vec4(dir, 0.0f);
+    const float depthP = glm::dot(P - eye_, forward_), depthDir = glm::dot(dir, forward_);
     bool occluded = false;
     for (int step = 1; step <= settings_.steps; ++step) {
         MarchSample s;
-        s.distanceM = reach * float(step) / float(settings_.steps);
-        const glm::vec3 S = P + dir * s.distanceM;
-        if (!project(S, s.pixel, s.sampleDepth)) return occluded ? MarchEnd::Occluded : MarchEnd::LeftScreen;
+        const float t = reach * float(step) / float(settings_.steps);
+        const glm::vec3 S = P + dir * t;
+        s.distanceM = t, s.sampleDepth = depthP + depthDir * t;
+        if (!toPixel(clipP + clipDir * t, s.sampleDepth, s.pixel)) {
+            return occluded ? MarchEnd::Occluded : MarchEnd::LeftScreen;
+        }
         const size_t q = g_.index(int(s.pixel.x), int(s.pixel.y));
         s.bufferDepth = std::numeric_limits<float>::infinity();
         const glm::vec3 Nq = g_.normal[q];
