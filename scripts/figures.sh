@@ -6,14 +6,14 @@
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential ...]   (default: all twelve)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen ...]   (default: all thirteen)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen}
 
 for part in $parts; do
   case $part in
@@ -181,6 +181,38 @@ for part in $parts; do
     cp $d/chessboard/background.png docs/images/differential/chessboard-background.png
     cp $d/chessboard/composite-ldr-f2-n20.png docs/images/differential/chessboard-f2.png
     ;;
-  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench, environment, lod, differential)" >&2; exit 2 ;;
+  screen)
+    # docs/screen-and-hybrid-shadows.md: contact shadows on box-contact and the IZB/PCSS
+    # hybrid on branch-over-crate, each timed at 1 and 2 threads against its reference
+    # (hard: the map alone beside it; soft: PCSS and IZB alone), and the stages' buffers.
+    s=$out/screen
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    $app sweep scenes/hard/box-contact.json --technique shadow-map,contact-shadows --threads 1,2 --runs 5 --out $s
+    python3 $table $s/box-contact-shadow-map+contact-shadows.csv hard+max
+    $app sweep scenes/soft/branch-over-crate.json --technique pcss,izb,izb-pcss --reference reference-soft \
+      --threads 1,2 --runs 5 --out $s
+    python3 $table $s/branch-over-crate-pcss+izb+izb-pcss.csv soft
+    box=scenes/hard/box-contact.json
+    branch=scenes/soft/branch-over-crate.json
+    $app render $box --technique reference -o docs/images/screen-box-contact-reference.png > /dev/null
+    for technique in shadow-map contact-shadows; do
+      $app render $box --technique $technique -o $s/render.png \
+        --error-map docs/images/screen-box-contact-$technique-error.png > /dev/null
+    done
+    # The march of a ground pixel at the box's foot, in the map's strip of light.
+    $app render $box --technique contact-shadows -o $s/render.png --param plot-x=330 --param plot-y=290 \
+      --debug-buffers $s/box > /dev/null
+    cp $s/box/contact-shadows-march-mask.png docs/images/screen-march-mask.png
+    cp $s/box/contact-shadows-march-path.png docs/images/screen-march-path.png
+    cp $s/box/contact-shadows-march.svg docs/images/screen-march-plot.svg
+    $app render $branch --technique reference-soft -o docs/images/hybrid-branch-reference-soft.png > /dev/null
+    $app render $branch --technique izb-pcss -o docs/images/hybrid-branch-izb-pcss.png --debug-buffers $s/branch \
+      > /dev/null
+    for buffer in blend-weight izb pcss blocker-distance; do
+      cp $s/branch/izb-pcss-$buffer.png docs/images/hybrid-branch-$buffer.png
+    done
+    ;;
+  *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
+       "environment, lod, differential, screen)" >&2; exit 2 ;;
   esac
 done

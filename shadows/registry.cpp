@@ -6,10 +6,12 @@
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/fins/fins.h"
+#include "shadows/hybrid/izb_pcss.h"
 #include "shadows/izb/izb.h"
 #include "shadows/maps/shadow_map_techniques.h"
 #include "shadows/planar/planar.h"
 #include "shadows/reference/reference_techniques.h"
+#include "shadows/screen/contact_shadows.h"
 #include "shadows/technique.h"
 #include "shadows/volumes/shadow_volume.h"
 
@@ -24,9 +26,11 @@ const std::vector<Technique>& techniques() {
         withCasterLod(shadowMapTechnique()),
         withCasterLod(cascadedShadowMapTechnique()),
         withCasterLod(irregularZBufferTechnique()),
+        withCasterLod(contactShadowsTechnique()),
         withCasterLod(shadowVolumeTechnique()),
         withCasterLod(planarTechnique()),
         withCasterLod(pcssTechnique()),
+        withCasterLod(izbPcssTechnique()),
         withCasterLod(filteredShadowMapTechnique(MomentKind::Variance)),
         withCasterLod(filteredShadowMapTechnique(MomentKind::Exponential)),
         withCasterLod(filteredShadowMapTechnique(MomentKind::ExponentialVariance)),

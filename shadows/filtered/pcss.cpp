@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "shadows/debug_buffers.h"
-#include "shadows/filtered/blocker_search.h"
+#include "shadows/filtered/pcss.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_lookup.h"
@@ -22,24 +22,6 @@ namespace {
 // the PCF radius is never below half a texel and its taps round to the texel they fall in.
 constexpr double kFitMarginTexels = 1.5;
 
-struct PcssBuffers {
-    std::vector<float> visibility, blockerDistance, widthTexels;
-};
-
-// The three steps per camera pixel in float, through the shadow lookup's vector kernel
-// (shadows/maps/lookup_kernel.inl, filter kLookupPcss); where the light's centre cannot
-// reach a pixel, V = 0.
-PcssBuffers runPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const BlockerSearchSettings& search,
-                        int filterTaps) {
-    const GBuffer& g = in.gbuffer;
-    const PcfKernel searchDisk = makePcfKernel({FilterKind::Poisson, 3, search.taps, 1.0});
-    const PcfKernel filterDisk = makePcfKernel({FilterKind::Poisson, 3, filterTaps, 1.0});
-    const LookupPass pass(soft.map, soft.light, {searchDisk, search.region, filterDisk, soft.lightTexels}, in.simd);
-    PcssBuffers out{std::vector<float>(g.pixelCount()), std::vector<float>(g.pixelCount()), std::vector<float>(g.pixelCount())};
-    lookUpEveryRow(g, pass, {out.visibility.data(), out.blockerDistance.data(), out.widthTexels.data()});
-    return out;
-}
-
 void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuffers& b) {
     const DebugBuffers debug(in.debugDir, "pcss");
     if (!debug.enabled()) return;
@@ -51,15 +33,13 @@ void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuf
 }
 
 ShadowOutputs runPcss(const ShadowInputs& in) {
-    const int resolution = in.params.integer("resolution");
-    const BlockerSearchSettings search = readBlockerSearch(in.params);
-    const int filterTaps = in.params.integer("filter-taps");
+    const PcssSettings settings = readPcssSettings(in.params);
     requireAreaLight(in.light, "pcss");
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
-    const SoftShadowMap soft = renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kFitMarginTexels, true);
+    const SoftShadowMap soft = renderPcssMap(in, settings.resolution);
     timer.lap("map");
-    const PcssBuffers b = runPerPixel(in, soft, search, filterTaps);
+    const PcssBuffers b = pcssPerPixel(in, soft, settings);
     timer.lap("receivers");
     writeDebug(in, soft, b);
     // Figures in pixel order (one thread): the same for any thread count.
@@ -70,7 +50,7 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
     }
     ShadowOutputs out;
     out.visibility = b.visibility;
-    out.stats = {{"resolution_texels", double(resolution)},
+    out.stats = {{"resolution_texels", double(settings.resolution)},
                  {"light_width_at_1m_texels", 0.5 * (soft.lightTexels.x + soft.lightTexels.y)},
                  {"blocker_pixels", double(penumbra)},
                  {"mean_filter_width_texels", penumbra ? widthSum / double(penumbra) : 0.0},
@@ -82,14 +62,40 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
 
 }  // namespace
 
-Technique pcssTechnique() {
+std::vector<ParamSpec> pcssParamSpecs() {
     std::vector<ParamSpec> params = {softResolutionParam("texels per side of the map")};
     for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
     params.push_back(integerParam("filter-taps", 32, 1, 128, "PCF: Poisson taps over the eq. 7.6 width"));
+    return params;
+}
+
+PcssSettings readPcssSettings(const TechniqueParams& params) {
+    return {params.integer("resolution"), readBlockerSearch(params), params.integer("filter-taps")};
+}
+
+SoftShadowMap renderPcssMap(const ShadowInputs& in, int resolution) {
+    return renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kFitMarginTexels, true);
+}
+
+// The three steps per camera pixel in float, through the shadow lookup's vector kernel
+// (shadows/maps/lookup_kernel.inl, filter kLookupPcss).
+PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const PcssSettings& settings) {
+    const GBuffer& g = in.gbuffer;
+    const PcfKernel searchDisk = makePcfKernel({FilterKind::Poisson, 3, settings.search.taps, 1.0});
+    const PcfKernel filterDisk = makePcfKernel({FilterKind::Poisson, 3, settings.filterTaps, 1.0});
+    const LookupPass pass(soft.map, soft.light, {searchDisk, settings.search.region, filterDisk, soft.lightTexels},
+                          in.simd);
+    PcssBuffers out{std::vector<float>(g.pixelCount()), std::vector<float>(g.pixelCount()),
+                    std::vector<float>(g.pixelCount())};
+    lookUpEveryRow(g, pass, {out.visibility.data(), out.blockerDistance.data(), out.widthTexels.data()});
+    return out;
+}
+
+Technique pcssTechnique() {
     return {.name = "pcss",
             .description = "percentage-closer soft shadows (RTR 7.6, Fernando 2005): blocker search, eq. 7.6 "
                            "width, Poisson PCF",
-            .params = params,
+            .params = pcssParamSpecs(),
             .run = runPcss,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};

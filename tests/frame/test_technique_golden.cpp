@@ -65,6 +65,8 @@ const std::vector<GoldenCase>& goldenCases() {
         {"scenes/hard/near-plane-cuts-volume.json", "shadow-volume", {}},
         {"scenes/hard/spot.json", "planar", {}},
         {"scenes/soft/torus-over-plane.json", "fins", {}},
+        {"scenes/hard/box-contact.json", "contact-shadows", {}},
+        {"scenes/soft/branch-over-crate.json", "izb-pcss", {}},
     };
     return cases;
 }

@@ -22,7 +22,7 @@ using shadowlab::test::instanceBounds;
 namespace {
 
 const std::vector<std::string> kHardCases = {
-    "camera-in-shadow", "coincident-faces", "grazing-light", "huge-depth-range", "light-close",
+    "box-contact", "camera-in-shadow", "coincident-faces", "grazing-light", "huge-depth-range", "light-close",
     "near-plane-cuts-volume", "open-mesh", "point-light-inside", "sphere-terminator", "spot", "sun",
     "thin-occluder"};
 

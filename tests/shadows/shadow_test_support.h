@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <doctest/doctest.h>
@@ -30,7 +31,10 @@ struct HardScene {
     std::vector<float> reference;   // exact V (point light at the light's centre)
 
     explicit HardScene(const std::string& nameOrPath, raster::SimdLevel simd = raster::bestSimdLevel())
-        : prepared(loadScene(nameOrPath)), scene(prepared.scene()), world(prepared.world()),
+        : HardScene(loadScene(nameOrPath), simd) {}
+    // A scene changed after loading (another camera, another size).
+    explicit HardScene(Scene s, raster::SimdLevel simd = raster::bestSimdLevel())
+        : prepared(std::move(s)), scene(prepared.scene()), world(prepared.world()),
           gbuffer(renderGBuffer(world, scene.camera, simd)),
           reference(ReferenceVisibility(world).visibility(gbuffer, pointLightFor(scene.lights[0]))) {}
 

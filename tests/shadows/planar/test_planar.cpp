@@ -180,7 +180,9 @@ TEST_CASE("planar on every hard case: right on the ground plane, its known failu
         // huge-depth-range: the reference's ray offset is about 2 cm there (a 10 km scene),
         // so its contact shadows near the camera shrink by a band several pixels wide
         // (test_shadow_volume_hard_cases.cpp shows those pixels are the reference's).
-        const bool referenceOffsetCase = name == "huge-depth-range";
+        // box-contact: 1 mm in a 566 m scene, which moves the box's shadow edges by up to a
+        // pixel of its close-up (shadow-volume differs from the reference at the same pixels).
+        const bool referenceOffsetCase = name == "huge-depth-range" || name == "box-contact";
         CHECK(ground.percent() <= (referenceOffsetCase ? 0.5 : kGroundBoundPercent));
         CHECK(ground.awayFromBoundary <= ground.hitPixels / (referenceOffsetCase ? 300 : 10000));
         // Never a shadow off the plane, so no false shadow there; and the failure is visible.

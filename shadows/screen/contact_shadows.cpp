@@ -1,0 +1,126 @@
+// The `contact-shadows` technique: the stages of contact_shadows.h in order, its figures and
+// its debug buffers.
+//
+// Why the minimum: both passes estimate the visibility of the same point light, and each
+// errs mostly towards light. The map's bias moves every receiver towards the light, so a
+// caster within the bias of its receiver casts nothing there: light leaks at contacts,
+// peter panning (RTR 7.4, Figures 7.13 and 7.14). The march finds only casters that are on
+// screen, in front and no thicker than the depth thickness (RTR 7.10), so it misses the rest.
+// A pixel is shadowed if either found an occluder: the march "restores" what the bias lost,
+// which is the use Sousa et al. made of it. Its one error towards shadow, a sample behind a
+// surface thinner than the thickness, stays within the march's short length.
+#include "shadows/screen/contact_shadows.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+#include "shading/lights.h"
+#include "shadows/debug_buffers.h"
+#include "shadows/maps/shadow_map_techniques.h"
+#include "shadows/screen/march_plot.h"
+#include "shadows/screen/screen_march.h"
+#include "shadows/stage_timer.h"
+#include "shadows/technique_stage.h"
+
+namespace shadowlab {
+namespace {
+
+const char* const kName = "contact-shadows";
+const char* const kMapDebugFolder = "contact-shadows-shadow-map";
+
+MarchSettings readMarchSettings(const TechniqueParams& p) {
+    return {float(p.real("march-length")), p.integer("march-steps"), float(p.real("depth-thickness"))};
+}
+
+// The pixel whose march the debug view plots: the parameters', or the image's centre.
+glm::ivec2 plottedPixel(const ShadowInputs& in) {
+    const int i = in.params.integer("plot-x"), j = in.params.integer("plot-y");
+    if (i >= in.gbuffer.width || j >= in.gbuffer.height) {
+        throw std::invalid_argument(std::string(kName) + ": plot-x, plot-y must name a pixel of the image");
+    }
+    return {i < 0 ? in.gbuffer.width / 2 : i, j < 0 ? in.gbuffer.height / 2 : j};
+}
+
+void writeDebug(const ShadowInputs& in, const ScreenMarch& march, const ScreenMarch::Mask& mask, float thicknessM) {
+    const DebugBuffers debug(in.debugDir, kName);
+    if (!debug.enabled()) return;
+    const GBuffer& g = in.gbuffer;
+    debug.write("march-mask", g.width, g.height, mask.visibility, 0.0f, 1.0f);
+    const glm::ivec2 p = plottedPixel(in);
+    const std::vector<MarchSample> samples =
+        g.hit[g.index(p.x, p.y)] ? marchSamples(march, g, p.x, p.y) : std::vector<MarchSample>{};
+    writeMarchPlot(in.debugDir, g, mask.visibility, p.x, p.y, samples, thicknessM);
+}
+
+// Figures in pixel order (one thread): the same for any thread count.
+void addStats(ShadowOutputs& out, const ScreenMarch::Mask& mask, const std::vector<float>& mapVisibility) {
+    size_t occluded = 0, restored = 0, leftScreen = 0;
+    for (size_t k = 0; k < mask.visibility.size(); ++k) {
+        occluded += mask.end[k] == uint8_t(MarchEnd::Occluded);
+        restored += mask.end[k] == uint8_t(MarchEnd::Occluded) && mapVisibility[k] > 0.0f;
+        leftScreen += mask.end[k] == uint8_t(MarchEnd::LeftScreen);
+    }
+    out.stats.push_back({"march_occluded_pixels", double(occluded)});
+    out.stats.push_back({"restored_pixels", double(restored)});
+    out.stats.push_back({"march_left_screen_pixels", double(leftScreen)});
+}
+
+// Without the map: V = 1 wherever the light reaches the surface, for the march to shadow.
+ShadowOutputs reachedOutputs(const GBuffer& g, const Light& light) {
+    ShadowOutputs out = unlitOutputs(g);
+    const LightReach reaches(light);
+    for (size_t k = 0; k < g.pixelCount(); ++k) out.visibility[k] = g.hit[k] && reaches(g.position[k], g.normal[k]);
+    return out;
+}
+
+ShadowOutputs runContactShadows(const ShadowInputs& in) {
+    const MarchSettings settings = readMarchSettings(in.params);
+    plottedPixel(in);   // settings checked before any work
+    const Light light = pointLightFor(in.light);
+    // 1. The shadow map: the shadow-map technique's own checks, V, figures and stage times,
+    // and its buffers in a folder of their own.
+    const Technique map = shadowMapTechnique();
+    const std::filesystem::path mapDebugDir = in.debugDir.empty() ? in.debugDir : in.debugDir / kMapDebugFolder;
+    ShadowOutputs out = in.params.flag("shadow-map")
+                            ? runTechniqueStage(map, in, sharedParamValues(map, in.params), mapDebugDir)
+                            : reachedOutputs(in.gbuffer, light);
+    if (!anySurface(in.gbuffer)) return out;   // V = 0 already
+    StageTimer timer;
+    // 2. The march.
+    const ScreenMarch march(in.gbuffer, in.camera(), light, settings);
+    const ScreenMarch::Mask mask = march.mask();
+    timer.lap("march");
+    // 3. Shadowed where either pass found an occluder.
+    addStats(out, mask, out.visibility);
+    for (size_t k = 0; k < out.visibility.size(); ++k) {
+        out.visibility[k] = std::min(out.visibility[k], mask.visibility[k]);
+    }
+    timer.lap("combine");
+    timer.appendTo(out.stats);
+    writeDebug(in, march, mask, settings.thicknessM);
+    return out;
+}
+
+}  // namespace
+
+Technique contactShadowsTechnique() {
+    std::vector<ParamSpec> params = shadowMapTechnique().params;
+    params.push_back(realParam("march-length", 0.25, 1e-4, 100.0, "m marched from each pixel towards the light"));
+    params.push_back(integerParam("march-steps", 16, 1, 1024, "samples along the march"));
+    params.push_back(realParam("depth-thickness", 0.05, 0.0, 100.0,
+                               "m behind the depth buffer's surface a sample still counts as inside it"));
+    params.push_back(flagParam("shadow-map", true, "off: the march alone (no caster off screen or hidden casts)"));
+    params.push_back(integerParam("plot-x", -1, -1, 8191, "debug buffers: column of the pixel whose march is "
+                                                          "plotted; -1: the image's centre"));
+    params.push_back(integerParam("plot-y", -1, -1, 8191, "debug buffers: its row; -1: the image's centre"));
+    return {.name = kName,
+            .description = "contact shadows (RTR 7.10, Sousa et al. 2011): a shadow map, and a march over the "
+                           "camera's depth buffer that restores the shadows its bias loses at contacts",
+            .params = params,
+            .run = runContactShadows,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,25 @@
+// One technique run as a stage of another: contact-shadows runs `shadow-map` and then
+// marches the camera's depth buffer; izb-pcss runs `izb` for its hard part. The inner
+// technique reads the same scene, G-buffer, light, casters and SIMD level, with
+// parameters of its own, so it is the very technique a user can run alone (the same bytes,
+// the same errors), not a copy of it.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+// The values of the outer technique's parameters that `inner` declares under the same
+// names (contact-shadows declares every parameter of shadow-map).
+std::map<std::string, std::string> sharedParamValues(const Technique& inner, const TechniqueParams& outer);
+
+// Runs `inner` on `in` with `given` for its parameters (checked as on the command line)
+// and its intermediate buffers written to `debugDir` (empty: none).
+ShadowOutputs runTechniqueStage(const Technique& inner, const ShadowInputs& in,
+                                const std::map<std::string, std::string>& given, const std::filesystem::path& debugDir);
+
+}  // namespace shadowlab
