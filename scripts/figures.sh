@@ -6,14 +6,14 @@
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen ...]   (default: all thirteen)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric ...]   (default: all fourteen)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric}
 
 for part in $parts; do
   case $part in
@@ -180,6 +180,53 @@ for part in $parts; do
     for f in background reference-f5 composite-f5-nall error-f5-nall; do cp $d/outdoor-t2/$f.png docs/images/differential/outdoor-$f.png; done
     cp $d/chessboard/background.png docs/images/differential/chessboard-background.png
     cp $d/chessboard/composite-ldr-f2-n20.png docs/images/differential/chessboard-f2.png
+    ;;
+  volumetric)
+    # docs/volumetric-shadows.md: every volumetric map beside the plain shadow map on the four
+    # cases at 1 and 2 threads; the sweeps of slices, tolerance and nodes; the buffers.
+    v=$out/volumetric
+    maps=shadow-map,coloured-shadow-map,opacity-shadow-maps,deep-shadow-maps,adaptive-volumetric-shadow-maps
+    stem=shadow-map+coloured-shadow-map+opacity-shadow-maps+deep-shadow-maps+adaptive-volumetric-shadow-maps
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    for scene in hair-over-plane tinted-glass smoke-over-plane foliage-cards; do
+      $app sweep scenes/volumetric/$scene.json --technique $maps --threads 1,2 --runs 5 --out $v --plot-y rms > /dev/null
+      echo "$scene:"
+      python3 $table $v/$scene-$stem.csv volumetric
+    done
+    glass=scenes/volumetric/tinted-glass.json
+    hair=scenes/volumetric/hair-over-plane.json
+    $app sweep $glass --technique opacity-shadow-maps --param slices=2,4,8,16,32,64,128 --threads 2 --runs 3 \
+      --out $v/slices --plot-y rms > /dev/null
+    python3 $table $v/slices/tinted-glass-opacity-shadow-maps.csv volumetric
+    $app sweep $hair --technique deep-shadow-maps --param resolution=1024 --param tolerance=0,0.01,0.05,0.2 \
+      --param max-vertices=4,16,64 --threads 2 --runs 3 --out $v/tolerance --plot-y rms > /dev/null
+    python3 $table $v/tolerance/hair-over-plane-deep-shadow-maps.csv volumetric
+    $app sweep $hair --technique adaptive-volumetric-shadow-maps --param resolution=1024 --param nodes=2,4,8,16,32 \
+      --threads 2 --runs 3 --out $v/nodes --plot-y rms > /dev/null
+    python3 $table $v/nodes/hair-over-plane-adaptive-volumetric-shadow-maps.csv volumetric
+    cp $v/slices/tinted-glass-opacity-shadow-maps.svg docs/images/volumetric-slices.svg
+    cp $v/tolerance/hair-over-plane-deep-shadow-maps.svg docs/images/volumetric-tolerance.svg
+    cp $v/nodes/hair-over-plane-adaptive-volumetric-shadow-maps.svg docs/images/volumetric-nodes.svg
+    for scene in hair-over-plane tinted-glass smoke-over-plane foliage-cards; do
+      $app render scenes/volumetric/$scene.json --technique reference -o docs/images/volumetric-$scene-reference.png \
+        > /dev/null
+      $app render scenes/volumetric/$scene.json --technique deep-shadow-maps -o docs/images/volumetric-$scene-deep.png \
+        > /dev/null
+    done
+    $app render $glass --technique coloured-shadow-map -o docs/images/volumetric-tinted-glass-coloured.png \
+      --debug-buffers $v/glass > /dev/null
+    cp $v/glass/coloured-shadow-map-colour.png docs/images/volumetric-coloured-colour.png
+    for technique in opacity-shadow-maps deep-shadow-maps adaptive-volumetric-shadow-maps; do
+      $app render $hair --technique $technique -o $v/render.png --debug-buffers $v/hair > /dev/null
+    done
+    cp $v/hair/deep-shadow-maps-events-per-texel.png docs/images/volumetric-events-per-texel.png
+    cp $v/hair/deep-shadow-maps-vertices-per-texel.png docs/images/volumetric-vertices-per-texel.png
+    cp $v/hair/adaptive-volumetric-shadow-maps-nodes-per-texel.png docs/images/volumetric-nodes-per-texel.png
+    cp $v/hair/opacity-shadow-maps-slice-4.png docs/images/volumetric-slice-4.png
+    cp $v/hair/opacity-shadow-maps-slice-12.png docs/images/volumetric-slice-12.png
+    for technique in opacity-shadow-maps deep-shadow-maps adaptive-volumetric-shadow-maps; do
+      cp "$(ls $v/hair/$technique-curve-*.svg | head -1)" docs/images/volumetric-curve-$technique.svg
+    done
     ;;
   screen)
     # docs/screen-and-hybrid-shadows.md: contact shadows on box-contact and the IZB/PCSS

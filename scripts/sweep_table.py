@@ -3,7 +3,7 @@
 technique and settings, the median ms at each thread count side by side, and the error
 figures (the same at every thread count; the first row's are shown).
 
-usage: scripts/sweep_table.py SWEEP.csv [hard|hard+max|soft|radiance]
+usage: scripts/sweep_table.py SWEEP.csv [hard|hard+max|soft|radiance|volumetric]
        scripts/sweep_table.py --matrix SWEEP.csv ...   (one row per scene: misclassified %
                                                        of each technique)
        scripts/sweep_table.py --grid ROW COLUMN SWEEP.csv  (false shadow / false light % of
@@ -16,7 +16,11 @@ HARD = [("misclassified %", "misclassified_percent", 3), ("false shadow %", "fal
 SOFT = [("RMS", "rms", 4), ("max", "max_abs", 2), ("umbra lit %", "umbra_lit_percent", 3),
         ("umbra over %", "umbra_over_percent", 3), ("lit shadowed %", "lit_shadowed_percent", 3)]
 RADIANCE = [("RMS", "rms", 4), ("RMS displayed", "rms_display", 4)]
-KINDS = {"hard": HARD, "hard+max": HARD + [("max", "max_abs", 2)], "soft": SOFT, "radiance": RADIANCE}
+# Casters that are not opaque: V is a transmittance, so RMS and max, and the bytes a
+# volumetric map keeps per texel (empty for the others).
+VOLUMETRIC = [("RMS", "rms", 4), ("max", "max_abs", 2), ("bytes per texel", "storage_per_texel_bytes", 1)]
+KINDS = {"hard": HARD, "hard+max": HARD + [("max", "max_abs", 2)], "soft": SOFT, "radiance": RADIANCE,
+         "volumetric": VOLUMETRIC}
 # A caster level of detail's triangles, where the sweep varied it.
 CASTERS = ("caster triangles", "caster_lod_triangles", 0)
 

@@ -10,7 +10,9 @@
 #include <algorithm>
 
 #include "raster/portable_math.h"
+#include "shadows/debug_buffers.h"
 #include "shadows/deep/adaptive_nodes.h"
+#include "shadows/deep/curve_plot.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/transmittance_curve.h"
 #include "shadows/deep/volumetric_settings.h"
@@ -63,6 +65,13 @@ float nodeTransmittance(const AdaptiveMap& map, size_t texel, float z) {
     return transmittanceAt({nodes, map.counts[texel]}, z);
 }
 
+void writeNodeCounts(const ShadowInputs& in, const LightLayers& layers, const AdaptiveMap& map) {
+    const DebugBuffers debug(in.debugDir, "adaptive-volumetric-shadow-maps");
+    if (!debug.enabled()) return;
+    const std::vector<float> counts(map.counts.begin(), map.counts.end());
+    debug.write("nodes-per-texel", layers.size(), layers.size(), counts, 0.0f, float(map.capacity));
+}
+
 ShadowOutputs runAdaptiveVolumetricShadowMaps(const ShadowInputs& in) {
     const VolumetricSettings settings = readVolumetricSettings(in.params);
     const int capacity = in.params.integer("nodes");
@@ -72,14 +81,16 @@ ShadowOutputs runAdaptiveVolumetricShadowMaps(const ShadowInputs& in) {
     const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
     const AdaptiveMap map = buildAdaptiveMap(frame.layers, capacity);
     timer.lap("nodes");
+    const auto curve = [&](size_t texel, float z) { return nodeTransmittance(map, texel, z); };
     ShadowOutputs out;
-    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup,
-                                         [&](size_t texel, float z) { return nodeTransmittance(map, texel, z); });
+    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup, curve);
     timer.lap("lookup");
     addVolumetricStats(frame, double(capacity) * sizeof(CurveVertex), out.stats);
     out.stats.push_back({"nodes_count", double(capacity)});
     timer.appendTo(out.stats);
     writeVolumetricDebug(in, "adaptive-volumetric-shadow-maps", frame);
+    writeNodeCounts(in, frame.layers, map);
+    plotCurves(in.debugDir, "adaptive-volumetric-shadow-maps", frame.layers, curve);
     return out;
 }
 

@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "shading/luminance.h"
+#include "shadows/debug_buffers.h"
+#include "shadows/deep/curve_plot.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/volumetric_settings.h"
 
@@ -32,6 +34,13 @@ ColouredMap buildColouredMap(const LightLayers& layers) {
     return map;
 }
 
+void writeColourMap(const ShadowInputs& in, const LightLayers& layers, const ColouredMap& map) {
+    const DebugBuffers debug(in.debugDir, "coloured-shadow-map");
+    if (!debug.enabled()) return;
+    debug.writeRadiance("colour", layers.size(), layers.size(), map.passed);
+    debug.write("nearest-depth", layers.size(), layers.size(), map.nearest, layers.nearestDepth, 1.0f);
+}
+
 ShadowOutputs runColouredShadowMap(const ShadowInputs& in) {
     const VolumetricSettings settings = readVolumetricSettings(in.params);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);
@@ -40,17 +49,17 @@ ShadowOutputs runColouredShadowMap(const ShadowInputs& in) {
     const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
     const ColouredMap map = buildColouredMap(frame.layers);
     timer.lap("colour_map");
+    const auto curve = [&](size_t texel, float z) { return z > map.nearest[texel] ? map.passed[texel] : glm::vec3(1.0f); };
     ShadowOutputs out;
-    out.colouredVisibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup,
-                                                 [&](size_t texel, float z) {
-                                                     return z > map.nearest[texel] ? map.passed[texel] : glm::vec3(1.0f);
-                                                 });
+    out.colouredVisibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup, curve);
     out.visibility.resize(out.colouredVisibility.size());
     for (size_t k = 0; k < out.visibility.size(); ++k) out.visibility[k] = luminance(out.colouredVisibility[k]);
     timer.lap("lookup");
     addVolumetricStats(frame, sizeof(float) + sizeof(glm::vec3), out.stats);
     timer.appendTo(out.stats);
     writeVolumetricDebug(in, "coloured-shadow-map", frame);
+    writeColourMap(in, frame.layers, map);
+    plotCurves(in.debugDir, "coloured-shadow-map", frame.layers, curve);
     return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "shadows/debug_buffers.h"
 #include "shadows/deep/curve_compression.h"
+#include "shadows/deep/curve_plot.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/volumetric_settings.h"
 
@@ -86,9 +87,9 @@ ShadowOutputs runDeepShadowMaps(const ShadowInputs& in) {
     const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
     const DeepMap map = buildDeepMap(frame.layers, tolerance, maxVertices);
     timer.lap("curves");
+    const auto curve = [&](size_t texel, float z) { return transmittanceAt(curveOf(map, texel), z); };
     ShadowOutputs out;
-    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup,
-                                         [&](size_t texel, float z) { return transmittanceAt(curveOf(map, texel), z); });
+    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup, curve);
     timer.lap("lookup");
     const double texels = double(map.start.size() - 1);
     addVolumetricStats(frame, (double(map.vertices.size()) * sizeof(CurveVertex) + texels * sizeof(uint32_t)) / texels,
@@ -99,6 +100,7 @@ ShadowOutputs runDeepShadowMaps(const ShadowInputs& in) {
     timer.appendTo(out.stats);
     writeVolumetricDebug(in, "deep-shadow-maps", frame);
     writeDeepDebug(in, frame.layers, map);
+    plotCurves(in.debugDir, "deep-shadow-maps", frame.layers, curve);
     return out;
 }
 

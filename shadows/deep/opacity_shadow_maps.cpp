@@ -10,6 +10,7 @@
 
 #include "raster/portable_math.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/deep/curve_plot.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/transmittance_curve.h"
 #include "shadows/deep/volumetric_settings.h"
@@ -70,15 +71,16 @@ ShadowOutputs runOpacityShadowMaps(const ShadowInputs& in) {
     const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
     const OpacitySlices slices = buildSlices(frame.layers, count);
     timer.lap("slices");
+    const auto curve = [&](size_t texel, float z) { return sliceTransmittance(slices, texel, z); };
     ShadowOutputs out;
-    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup,
-                                         [&](size_t texel, float z) { return sliceTransmittance(slices, texel, z); });
+    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup, curve);
     timer.lap("lookup");
     addVolumetricStats(frame, double(count) * sizeof(float), out.stats);
     out.stats.push_back({"slices_count", double(count)});
     timer.appendTo(out.stats);
     writeVolumetricDebug(in, "opacity-shadow-maps", frame);
     writeSlices(in, frame.layers, slices);
+    plotCurves(in.debugDir, "opacity-shadow-maps", frame.layers, curve);
     return out;
 }
 
