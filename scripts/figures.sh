@@ -188,26 +188,28 @@ for part in $parts; do
     maps=shadow-map,coloured-shadow-map,opacity-shadow-maps,deep-shadow-maps,adaptive-volumetric-shadow-maps
     stem=shadow-map+coloured-shadow-map+opacity-shadow-maps+deep-shadow-maps+adaptive-volumetric-shadow-maps
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
-    for scene in hair-over-plane tinted-glass smoke-over-plane foliage-cards; do
+    for scene in hair-over-plane stacked-sheets tinted-glass smoke-over-plane foliage-cards; do
       $app sweep scenes/volumetric/$scene.json --technique $maps --threads 1,2 --runs 5 --out $v --plot-y rms > /dev/null
       echo "$scene:"
       python3 $table $v/$scene-$stem.csv volumetric
     done
+    # The sweeps on the staircase of sheets, whose receivers sit inside the medium.
     glass=scenes/volumetric/tinted-glass.json
     hair=scenes/volumetric/hair-over-plane.json
-    $app sweep $glass --technique opacity-shadow-maps --param slices=2,4,8,16,32,64,128 --threads 2 --runs 3 \
+    sheets=scenes/volumetric/stacked-sheets.json
+    $app sweep $sheets --technique opacity-shadow-maps --param slices=2,4,8,16,32,64,128 --threads 2 --runs 3 \
       --out $v/slices --plot-y rms > /dev/null
-    python3 $table $v/slices/tinted-glass-opacity-shadow-maps.csv volumetric
-    $app sweep $hair --technique deep-shadow-maps --param resolution=1024 --param tolerance=0,0.01,0.05,0.2 \
-      --param max-vertices=4,16,64 --threads 2 --runs 3 --out $v/tolerance --plot-y rms > /dev/null
-    python3 $table $v/tolerance/hair-over-plane-deep-shadow-maps.csv volumetric
-    $app sweep $hair --technique adaptive-volumetric-shadow-maps --param resolution=1024 --param nodes=2,4,8,16,32 \
+    python3 $table $v/slices/stacked-sheets-opacity-shadow-maps.csv volumetric
+    $app sweep $sheets --technique deep-shadow-maps --param tolerance=0,0.01,0.05,0.1,0.2 --param max-vertices=4,16 \
+      --threads 2 --runs 3 --out $v/tolerance --plot-y rms > /dev/null
+    python3 $table $v/tolerance/stacked-sheets-deep-shadow-maps.csv volumetric
+    $app sweep $sheets --technique adaptive-volumetric-shadow-maps --param nodes=2,4,8,16,32 \
       --threads 2 --runs 3 --out $v/nodes --plot-y rms > /dev/null
-    python3 $table $v/nodes/hair-over-plane-adaptive-volumetric-shadow-maps.csv volumetric
-    cp $v/slices/tinted-glass-opacity-shadow-maps.svg docs/images/volumetric-slices.svg
-    cp $v/tolerance/hair-over-plane-deep-shadow-maps.svg docs/images/volumetric-tolerance.svg
-    cp $v/nodes/hair-over-plane-adaptive-volumetric-shadow-maps.svg docs/images/volumetric-nodes.svg
-    for scene in hair-over-plane tinted-glass smoke-over-plane foliage-cards; do
+    python3 $table $v/nodes/stacked-sheets-adaptive-volumetric-shadow-maps.csv volumetric
+    cp $v/slices/stacked-sheets-opacity-shadow-maps.svg docs/images/volumetric-slices.svg
+    cp $v/tolerance/stacked-sheets-deep-shadow-maps.svg docs/images/volumetric-tolerance.svg
+    cp $v/nodes/stacked-sheets-adaptive-volumetric-shadow-maps.svg docs/images/volumetric-nodes.svg
+    for scene in hair-over-plane stacked-sheets tinted-glass smoke-over-plane foliage-cards; do
       $app render scenes/volumetric/$scene.json --technique reference -o docs/images/volumetric-$scene-reference.png \
         > /dev/null
       $app render scenes/volumetric/$scene.json --technique deep-shadow-maps -o docs/images/volumetric-$scene-deep.png \
@@ -225,7 +227,8 @@ for part in $parts; do
     cp $v/hair/opacity-shadow-maps-slice-4.png docs/images/volumetric-slice-4.png
     cp $v/hair/opacity-shadow-maps-slice-12.png docs/images/volumetric-slice-12.png
     for technique in opacity-shadow-maps deep-shadow-maps adaptive-volumetric-shadow-maps; do
-      cp "$(ls $v/hair/$technique-curve-*.svg | head -1)" docs/images/volumetric-curve-$technique.svg
+      $app render $sheets --technique $technique -o $v/render.png --debug-buffers $v/sheets > /dev/null
+      cp "$(ls $v/sheets/$technique-curve-*.svg | head -1)" docs/images/volumetric-curve-$technique.svg
     done
     ;;
   screen)

@@ -43,7 +43,8 @@ def main(path, kind):
         first = by_threads[min(by_threads)]
         cells = [technique] + ([settings] if show_settings else [])
         cells += [f"{float(by_threads[t]['median_ms']):.1f}" if t in by_threads else "" for t in threads]
-        cells += [f"{float(first[key]):.{digits}f}" for _, key, digits in columns]
+        # A figure a technique does not report (a map's bytes per texel) is left empty.
+        cells += [f"{float(first[key]):.{digits}f}" if first.get(key) else "" for _, key, digits in columns]
         print("| " + " | ".join(cells) + " |")
 
 

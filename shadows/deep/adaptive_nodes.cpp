@@ -3,23 +3,45 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 namespace shadowlab {
 
-void AdaptiveNodes::insert(float depth, float passed) {
-    int at = count;
-    while (at > 0 && nodes[at - 1].depth > depth) --at;
-    const float inFront = at == 0 ? 1.0f : nodes[at - 1].transmittance;
-    for (int k = count; k > at; --k) nodes[k] = {nodes[k - 1].depth, nodes[k - 1].transmittance * passed};
-    nodes[at] = {depth, inFront * passed};
-    if (++count > capacity) removeCheapest();
+void AdaptiveNodes::insertNode(int at, CurveVertex node) {
+    std::copy_backward(nodes + at, nodes + count, nodes + count + 1);
+    nodes[at] = node;
+    ++count;
+}
+
+void AdaptiveNodes::insertSegment(float entry, float exit, float passed) {
+    const std::span<const CurveVertex> curve(nodes, size_t(count));
+    const float inFront = transmittanceAt(curve, entry), atExit = transmittanceAt(curve, exit);
+    for (int k = 0; k < count; ++k) {
+        CurveVertex& node = nodes[k];
+        if (node.depth >= exit) {
+            node.transmittance *= passed;
+        } else if (node.depth > entry) {   // inside the segment: the share of it in front of the node
+            const float share = (node.depth - entry) / (exit - entry);
+            node.transmittance *= 1.0f + share * (passed - 1.0f);
+        }
+    }
+    // The entry node goes before any node at its depth (the value in front of the step), the
+    // exit node after every node up to its depth.
+    int at = 0;
+    while (at < count && nodes[at].depth < entry) ++at;
+    insertNode(at, {entry, inFront});
+    at = 0;
+    while (at < count && nodes[at].depth <= exit) ++at;
+    insertNode(at, {exit, atExit * passed});
+    while (count > capacity) removeCheapest();
 }
 
 void AdaptiveNodes::removeCheapest() {
     int cheapest = 1;
     float least = std::numeric_limits<float>::infinity();
     for (int k = 1; k + 1 < count; ++k) {
-        // Twice the area of the triangle the node makes with its neighbours.
+        // Twice the area of the triangle the node makes with its neighbours: what the area
+        // under the curve changes by without it.
         const CurveVertex a = nodes[k - 1], b = nodes[k], c = nodes[k + 1];
         const float area = std::abs((b.depth - a.depth) * (c.transmittance - a.transmittance) -
                                     (c.depth - a.depth) * (b.transmittance - a.transmittance));

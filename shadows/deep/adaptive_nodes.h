@@ -1,10 +1,13 @@
 // Adaptive volumetric shadow maps' per-texel storage (Salvi, Vidimce, Lauritzen and Lefohn
-// 2010, section 3.2): at most `capacity` (depth, transmittance) nodes, nearest first, the
-// transmittance just behind each, compressed on the fly. A fragment of depth d that passes
-// t becomes a node whose value is the one in front of it times t, and every node behind it
-// is multiplied by t; when the list holds one node too many, the interior node whose
-// removal changes the area under the piecewise-linear curve least is dropped (the first
-// such on a tie). The array must have room for capacity + 1 nodes.
+// 2010, section 3): at most `capacity` (depth, transmittance) nodes, nearest first, the
+// curve linear between them, compressed on the fly. An occluder arrives as a segment, its
+// entry and exit depths along the light's ray and the light it passes (section 3.1: a
+// surface is a segment of no thickness, a step): its two nodes are inserted, the nodes
+// inside it attenuated by the share of it in front of them and the nodes behind it by all
+// of it. When the list holds more than `capacity` nodes, the interior node whose removal
+// changes the area under the curve least is dropped (section 3.2: the first and the last
+// node stay; the first such node on a tie), until it fits. The array must have room for
+// capacity + 2 nodes.
 #pragma once
 
 #include "shadows/deep/transmittance_curve.h"
@@ -15,9 +18,10 @@ struct AdaptiveNodes {
     CurveVertex* nodes;
     int count, capacity;
 
-    void insert(float depth, float passed);
+    void insertSegment(float entry, float exit, float passed);
 
 private:
+    void insertNode(int at, CurveVertex node);
     void removeCheapest();
 };
 

@@ -1,10 +1,10 @@
 // `adaptive-volumetric-shadow-maps` (Salvi, Vidimce, Lauritzen and Lefohn 2010, "Adaptive
 // volumetric shadow maps", EGSR; Real-Time Rendering, 4th ed., section 7.8): a fixed number
-// of (depth, transmittance) nodes per texel, compressed on the fly as fragments arrive
-// rather than from the whole list: a fragment of depth d passing t becomes a node, every
-// node behind it is multiplied by t, and when a texel holds one node too many the interior
-// node whose removal changes the area under the curve least goes (section 3.2,
-// adaptive_nodes.h). The curve is linear between nodes (section 3.3). Fragments arrive in drawing order (the triangles'
+// of (depth, transmittance) nodes per texel, compressed on the fly as occluders arrive
+// rather than from the whole list (adaptive_nodes.h): each surface fragment or volume piece
+// is a segment whose two nodes go in, and when a texel holds too many nodes the interior
+// node whose removal changes the area under the curve least goes (section 3.2). The curve
+// is linear between nodes (section 3.3). Occluders arrive in drawing order (the triangles'
 // order, then the volume pieces front to back), which is the same on every thread count,
 // so the bytes are too; on a GPU the order, and so the result, varies from frame to frame.
 #include <algorithm>
@@ -22,12 +22,12 @@ namespace {
 
 struct AdaptiveMap {
     int capacity = 0;
-    std::vector<CurveVertex> nodes;   // capacity (+1 of room) per texel
+    std::vector<CurveVertex> nodes;   // capacity (+2 of room) per texel
     std::vector<uint8_t> counts;
 };
 
-// Texel t's events in arrival order: the surfaces by triangle, then the volume pieces (as
-// steps at their middle) front to back.
+// Texel t's events in arrival order: the surfaces by triangle, then the volume pieces
+// front to back.
 void arrivalOrder(const LightLayers& layers, size_t t, std::vector<uint32_t>& order) {
     order.clear();
     for (uint32_t e = layers.start[t]; e < layers.start[t + 1]; ++e) order.push_back(e);
@@ -41,7 +41,7 @@ void arrivalOrder(const LightLayers& layers, size_t t, std::vector<uint32_t>& or
 AdaptiveMap buildAdaptiveMap(const LightLayers& layers, int capacity) {
     AdaptiveMap map;
     map.capacity = capacity;
-    const size_t texels = layers.start.size() - 1, stride = size_t(capacity) + 1;
+    const size_t texels = layers.start.size() - 1, stride = size_t(capacity) + 2;
     map.nodes.assign(texels * stride, {1.0f, 1.0f});
     map.counts.assign(texels, 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, texels), [&](const tbb::blocked_range<size_t>& range) {
@@ -50,8 +50,7 @@ AdaptiveMap buildAdaptiveMap(const LightLayers& layers, int capacity) {
             arrivalOrder(layers, t, order);
             AdaptiveNodes list{&map.nodes[t * stride], 0, capacity};
             for (uint32_t e : order) {
-                const float depth = 0.5f * (layers.depthNear[e] + layers.depthFar[e]);
-                list.insert(depth, float(portable::exp(-double(layers.opticalDepth[e]))));
+                list.insertSegment(layers.depthNear[e], layers.depthFar[e], float(portable::exp(-double(layers.opticalDepth[e]))));
             }
             map.counts[t] = uint8_t(list.count);
         }
@@ -61,7 +60,7 @@ AdaptiveMap buildAdaptiveMap(const LightLayers& layers, int capacity) {
 
 // T(z): 1 in front of the first node, linear between nodes, the last node's value behind.
 float nodeTransmittance(const AdaptiveMap& map, size_t texel, float z) {
-    const CurveVertex* nodes = &map.nodes[texel * (size_t(map.capacity) + 1)];
+    const CurveVertex* nodes = &map.nodes[texel * (size_t(map.capacity) + 2)];
     return transmittanceAt({nodes, map.counts[texel]}, z);
 }
 
@@ -98,7 +97,7 @@ ShadowOutputs runAdaptiveVolumetricShadowMaps(const ShadowInputs& in) {
 
 Technique adaptiveVolumetricShadowMapsTechnique() {
     std::vector<ParamSpec> params = volumetricParamSpecs();
-    params.push_back(integerParam("nodes", 8, 2, 64, "(depth, transmittance) nodes per texel"));
+    params.push_back(integerParam("nodes", 8, 2, 64, "(depth, transmittance) nodes per texel; a surface takes two"));
     return {.name = "adaptive-volumetric-shadow-maps",
             .description = "adaptive volumetric shadow maps (Salvi et al. 2010): a fixed number of nodes per texel, "
                            "compressed as fragments arrive",

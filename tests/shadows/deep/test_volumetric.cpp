@@ -136,6 +136,30 @@ TEST_CASE("the volumetric shadow maps show the hair's self-shadowing") {
     }
 }
 
+TEST_CASE("inside the medium, slices, tolerance and nodes move the error as each paper says") {
+    // Receivers on the sheets themselves: sheet k lies under k others, T = 0.7^k.
+    const VolumetricCase sheets("stacked-sheets");
+    CHECK(sheets.rms("shadow-map") > 0.2);
+    // Opacity shadow maps: the smear between slices falls as they grow.
+    const double slices4 = sheets.rms("opacity-shadow-maps", {{"slices", "4"}});
+    const double slices64 = sheets.rms("opacity-shadow-maps", {{"slices", "64"}});
+    CHECK(slices4 > 2.0 * slices64);
+    // Deep shadow maps: within the tolerance of the exact curve, so the error grows with it.
+    const double exact = sheets.rms("deep-shadow-maps", {{"tolerance", "0"}});
+    CHECK(exact < 0.02);
+    CHECK(sheets.rms("deep-shadow-maps", {{"tolerance", "0.2"}}) > 2.0 * exact);
+    // Adaptive nodes: two per sheet hold the twelve steps at 32 nodes, the exact deep map's
+    // error; fewer merge steps into ramps.
+    const double nodes2 = sheets.rms("adaptive-volumetric-shadow-maps", {{"nodes", "2"}});
+    const double nodes4 = sheets.rms("adaptive-volumetric-shadow-maps", {{"nodes", "4"}});
+    const double nodes32 = sheets.rms("adaptive-volumetric-shadow-maps", {{"nodes", "32"}});
+    CHECK(nodes32 < 1.05 * exact);
+    CHECK(nodes4 > 1.3 * nodes32);
+    CHECK(nodes2 > 3.0 * nodes32);
+    // The coloured map multiplies every sheet over each one: it cannot shadow itself.
+    CHECK(sheets.rms("coloured-shadow-map") > 5.0 * exact);
+}
+
 TEST_CASE("opacity shadow maps' slice artefacts fall as the slices grow") {
     const VolumetricCase glass("tinted-glass");
     const double four = glass.rms("opacity-shadow-maps", {{"slices", "4"}});
@@ -158,10 +182,10 @@ TEST_CASE("adaptive nodes keep the final transmittance exactly and approach the 
     double previous = 1.0;
     for (int capacity : {2, 4, 8, 16, 64}) {
         CAPTURE(capacity);
-        std::vector<CurveVertex> storage(size_t(capacity) + 1);
+        std::vector<CurveVertex> storage(size_t(capacity) + 2);
         AdaptiveNodes nodes{storage.data(), 0, capacity};
-        for (const auto& e : events) nodes.insert(e[0], std::exp(-e[2]));
-        REQUIRE(nodes.count == std::min(capacity, 80));
+        for (const auto& e : events) nodes.insertSegment(e[0], e[1], std::exp(-e[2]));
+        REQUIRE(nodes.count == std::min(capacity, 160));
         const std::span<const CurveVertex> curve(storage.data(), size_t(nodes.count));
         CHECK(curve.back().transmittance == doctest::Approx(exact.back().transmittance).epsilon(1e-4));
         double error = 0.0;   // mean |T| difference over the layers' depth range
