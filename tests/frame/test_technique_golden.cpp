@@ -67,6 +67,13 @@ const std::vector<GoldenCase>& goldenCases() {
         {"scenes/soft/torus-over-plane.json", "fins", {}},
         {"scenes/hard/box-contact.json", "contact-shadows", {}},
         {"scenes/soft/branch-over-crate.json", "izb-pcss", {}},
+        {"scenes/volumetric/stacked-sheets.json", "reference", {}},
+        {"scenes/volumetric/stacked-sheets.json", "opacity-shadow-maps", {}},
+        {"scenes/volumetric/stacked-sheets.json", "deep-shadow-maps", {}},
+        {"scenes/volumetric/stacked-sheets.json", "adaptive-volumetric-shadow-maps", {}},
+        {"scenes/volumetric/tinted-glass.json", "coloured-shadow-map", {}},
+        {"scenes/volumetric/smoke-over-plane.json", "deep-shadow-maps", {{"tolerance", "0.05"}}},
+        {"scenes/volumetric/foliage-cards.json", "shadow-map", {}},
     };
     return cases;
 }
