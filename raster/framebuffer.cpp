@@ -77,7 +77,9 @@ Framebuffer::Framebuffer(int width, int height, Attachments attachments)
         for (auto& plane : color_) plane.allocate(tiles, 0.0f);
     }
     if (attachments.primitiveId) primitiveId_.allocate(tiles, 0);
-    if (attachments.fragments) fragments_.reset(new std::vector<FragmentSink>(tiles, FragmentSink{nullptr, 0, 0, growSink}));
+    if (attachments.fragments) {
+        fragments_.reset(new std::vector<FragmentSink>(tiles, FragmentSink{nullptr, 0, 0, growSink}));
+    }
 }
 
 void Framebuffer::FreeSinks::operator()(std::vector<FragmentSink>* sinks) const {

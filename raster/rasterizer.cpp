@@ -184,7 +184,8 @@ void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, cons
     }
     DrawConstants constants = {state, {call.constantColor.r, call.constantColor.g, call.constantColor.b, call.constantColor.a},
                                call.vertices.varyingCount};
-    const TileKernel kernel = kernels_->kernel[int(state.output)][state.stencil.enabled ? 1 : 0][state.alphaTest.alpha ? 1 : 0];
+    const TileKernel kernel =
+        kernels_->kernel[int(state.output)][state.stencil.enabled ? 1 : 0][state.alphaTest.alpha ? 1 : 0];
 
     const size_t batchTriangles = kChunkTriangles * kChunksPerBatch;
     chunks_.resize(kChunksPerBatch);

@@ -152,7 +152,8 @@ inline void writeColor(const TriangleSetup& tri, const DrawConstants& draw, cons
 }
 
 // The passing lanes, in lane order, onto the list of the tile they lie in.
-inline void appendFragments(const TriangleSetup& tri, const FramebufferView& fb, const FragmentVector& f, Mask pass, F32 z) {
+inline void appendFragments(const TriangleSetup& tri, const FramebufferView& fb, const FragmentVector& f, Mask pass,
+                            F32 z) {
     uint32_t passes[simd::kWidth];
     float depths[simd::kWidth];
     simd::store(passes, simd::select(pass, simd::splat(int32_t(1)), simd::splat(int32_t(0))));
@@ -172,7 +173,8 @@ inline Mask alphaTestPasses(const TriangleSetup& tri, const AlphaTest& test, F32
     const F32 zero = simd::splat(0.0f), one = simd::splat(1.0f);
     const F32 u = simd::min(simd::max(evaluatePlane(tri.varyings[1], dx, dy) / inverseW, zero), one);
     const F32 v = simd::min(simd::max(evaluatePlane(tri.varyings[2], dx, dy) / inverseW, zero), one);
-    const I32 column = simd::min(simd::truncateToInt(u * simd::splat(float(test.width))), simd::splat(int32_t(test.width - 1)));
+    const I32 column =
+        simd::min(simd::truncateToInt(u * simd::splat(float(test.width))), simd::splat(int32_t(test.width - 1)));
     const I32 row = simd::min(simd::truncateToInt((one - v) * simd::splat(float(test.height))),
                               simd::splat(int32_t(test.height - 1)));
     const F32 alpha = simd::gather(test.alpha, row * simd::splat(int32_t(test.width)) + column);
@@ -282,7 +284,8 @@ uint64_t rasterizeBlock(const TileTriangle& t, int blockX, int blockY, size_t bl
         if (!blockInsideRegion) covered = covered & insideRect(x, y, region);
         if (!simd::any(covered)) continue;
         fragments += uint64_t(simd::countLanes(covered));
-        shadeFragments<kOutput, kStencil, kAlphaTest>(t.tri, t.draw, t.fb, {covered, x, y, blockOffset + size_t(v * simd::kWidth)});
+        shadeFragments<kOutput, kStencil, kAlphaTest>(t.tri, t.draw, t.fb,
+                                                      {covered, x, y, blockOffset + size_t(v * simd::kWidth)});
     }
     return fragments;
 }

@@ -11,7 +11,9 @@ namespace shadowlab {
 AlphaTexture readAlphaTexture(const std::string& path) {
     const auto fail = [&](const std::string& problem) { throw SceneError(path + ": " + problem); };
     int width = 0, height = 0, channels = 0;
-    if (stbi_info(path.c_str(), &width, &height, &channels) == 0) fail(std::string("cannot read: ") + stbi_failure_reason());
+    if (stbi_info(path.c_str(), &width, &height, &channels) == 0) {
+        fail(std::string("cannot read: ") + stbi_failure_reason());
+    }
     if (width > 8192 || height > 8192) fail("larger than 8192 texels on a side");
     // stb_image counts 2 (grey, alpha) and 4 (RGBA) channels for images with alpha.
     if (channels != 2 && channels != 4) fail("has no alpha channel (a cut-out reads the image's alpha)");

@@ -30,9 +30,12 @@ Mesh makeGrid(glm::vec2 size, glm::ivec2 divisions) {
     mesh.cornerNormals.assign(3 * mesh.triangles.size(), glm::vec3(0.0f, 1.0f, 0.0f));
     // u along +x, v along -z: seen from above with -z at the top, the texture upright.
     const auto uvOf = [&](uint32_t vertex) {
-        return glm::vec2(float(double(vertex % rowLength) / divisions.x), float(1.0 - double(vertex / rowLength) / divisions.y));
+        return glm::vec2(float(double(vertex % rowLength) / divisions.x),
+                         float(1.0 - double(vertex / rowLength) / divisions.y));
     };
-    for (const glm::uvec3& t : mesh.triangles) mesh.cornerUvs.insert(mesh.cornerUvs.end(), {uvOf(t.x), uvOf(t.y), uvOf(t.z)});
+    for (const glm::uvec3& t : mesh.triangles) {
+        mesh.cornerUvs.insert(mesh.cornerUvs.end(), {uvOf(t.x), uvOf(t.y), uvOf(t.z)});
+    }
     return mesh;
 }
 

@@ -71,7 +71,8 @@ DensityVolume makeConstantVolume(glm::vec3 min, glm::vec3 max, float sigma) {
 }
 
 DensityVolume makeSmokePuff(glm::vec3 min, glm::vec3 max, int resolution, float sigmaMax, uint64_t seed) {
-    DensityVolume volume{.name = "smoke-puff", .min = min, .max = max, .resolution = glm::ivec3(resolution), .sigma = {}};
+    DensityVolume volume{.name = "smoke-puff", .min = min, .max = max, .resolution = glm::ivec3(resolution),
+                         .sigma = {}};
     volume.sigma.reserve(size_t(resolution) * size_t(resolution) * size_t(resolution));
     for (int z = 0; z < resolution; ++z) {
         for (int y = 0; y < resolution; ++y) {
@@ -79,7 +80,8 @@ DensityVolume makeSmokePuff(glm::vec3 min, glm::vec3 max, int resolution, float 
                 // The voxel's centre in [-1, 1]^3 of the box.
                 const glm::dvec3 q = (glm::dvec3(x, y, z) + 0.5) / double(resolution) * 2.0 - 1.0;
                 const double r2 = glm::dot(q, q), falloff = r2 < 1.0 ? (1.0 - r2) * (1.0 - r2) : 0.0;
-                const double noise = 0.65 * valueNoise(2.0 * q + 7.0, seed) + 0.35 * valueNoise(5.0 * q + 3.0, seed + 1);
+                const double noise =
+                    0.65 * valueNoise(2.0 * q + 7.0, seed) + 0.35 * valueNoise(5.0 * q + 3.0, seed + 1);
                 volume.sigma.push_back(float(sigmaMax * falloff * (0.35 + 0.65 * noise)));
             }
         }

@@ -50,10 +50,12 @@ int alphaTextureIndex(const JsonField& field, const std::string& directory, Scen
 void readTransmission(const JsonObject& object, const std::string& directory, Scene& scene, Material& material) {
     if (const auto opacity = object.optional("opacity")) material.opacity = opacity->number(kUnitInterval);
     if (const auto tint = object.optional("transmittance")) {
-        if (!object.has("opacity")) tint->fail("tints the light a translucent surface passes, so needs \"opacity\" < 1");
+        if (!object.has("opacity"))
+            tint->fail("tints the light a translucent surface passes, so needs \"opacity\" < 1");
         material.transmittance = tint->vec3(kUnitInterval);
     }
-    if (const auto texture = object.optional("alpha-texture")) material.alphaTexture = alphaTextureIndex(*texture, directory, scene);
+    if (const auto texture = object.optional("alpha-texture"))
+        material.alphaTexture = alphaTextureIndex(*texture, directory, scene);
     if (const auto cutoff = object.optional("alpha-cutoff")) {
         if (!material.cutOut()) cutoff->fail("is the cut-out's threshold, so needs \"alpha-texture\"");
         material.alphaCutoff = cutoff->number(kCutoff);

@@ -23,7 +23,8 @@ constexpr Interval kStacks{2.0, 16384.0, false, false};
 
 enum class Procedural { Grid, UvSphere, Box, Hair };
 constexpr std::array<std::pair<std::string_view, Procedural>, 4> kProcedurals{{
-    {"grid", Procedural::Grid}, {"uv-sphere", Procedural::UvSphere}, {"box", Procedural::Box}, {"hair", Procedural::Hair}}};
+    {"grid", Procedural::Grid}, {"uv-sphere", Procedural::UvSphere}, {"box", Procedural::Box},
+    {"hair", Procedural::Hair}}};
 constexpr Interval kStrands{1.0, 1048576.0, false, false};
 constexpr Interval kSegments{1.0, 1024.0, false, false};
 constexpr Interval kSeed{0.0, 2147483647.0, false, false};

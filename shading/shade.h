@@ -17,7 +17,8 @@ namespace shadowlab {
 // with E and wi from lightArrival() for scene.lights[lightIndex] (shading/lights.h), f the
 // material's BRDF (Lambert, or normalised Blinn-Phong) and V[pixel] the visibility of that
 // light (per channel where the coloured visibility colouredV is given: the light a tinted
-// caster lets through, conventions.md); the viewer (for wo) is scene.camera.eye, the camera the G-buffer was built with.
+// caster lets through, conventions.md); the viewer (for wo) is scene.camera.eye, the camera
+// the G-buffer was built with.
 // Only the selected light is shaded: the other lights of the scene are ignored, so
 // the image shows exactly the shadow being studied. Background pixels (hit = 0) get 0.
 // Throws std::out_of_range for a bad lightIndex or material index and

@@ -76,17 +76,19 @@ glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size) {
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
                         raster::SimdLevel simd) {
     const glm::mat4 clipFromWorld(view.clipFromWorld());
-    return depthMapOf(view, settings, simd, [&](raster::Rasterizer& r, raster::Framebuffer& fb, const raster::PipelineState& state) {
-        drawWorld(r, fb, state, world, clipFromWorld);
-    });
+    return depthMapOf(view, settings, simd,
+                      [&](raster::Rasterizer& r, raster::Framebuffer& fb, const raster::PipelineState& state) {
+                          drawWorld(r, fb, state, world, clipFromWorld);
+                      });
 }
 
 DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
                         const LightView& view, const DepthMapSettings& settings, raster::SimdLevel simd) {
     const glm::mat4 clipFromWorld(view.clipFromWorld());
-    return depthMapOf(view, settings, simd, [&](raster::Rasterizer& r, raster::Framebuffer& fb, const raster::PipelineState& state) {
-        r.draw(fb, state, raster::positionsDraw(positions, triangles, clipFromWorld));
-    });
+    return depthMapOf(view, settings, simd,
+                      [&](raster::Rasterizer& r, raster::Framebuffer& fb, const raster::PipelineState& state) {
+                          r.draw(fb, state, raster::positionsDraw(positions, triangles, clipFromWorld));
+                      });
 }
 
 }  // namespace shadowlab

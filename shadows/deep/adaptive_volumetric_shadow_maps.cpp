@@ -10,9 +10,7 @@
 #include <algorithm>
 
 #include "raster/portable_math.h"
-#include "shadows/debug_buffers.h"
 #include "shadows/deep/adaptive_nodes.h"
-#include "shadows/deep/curve_plot.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/transmittance_curve.h"
 #include "shadows/deep/volumetric_settings.h"
@@ -24,6 +22,17 @@ struct AdaptiveMap {
     int capacity = 0;
     std::vector<CurveVertex> nodes;   // capacity (+2 of room) per texel
     std::vector<uint8_t> counts;
+
+    // T(z): 1 in front of the first node, linear between nodes, the last node's value behind.
+    float at(size_t texel, float z) const {
+        return transmittanceAt({&nodes[texel * (size_t(capacity) + 2)], counts[texel]}, z);
+    }
+    double bytesPerTexel() const { return double(capacity) * sizeof(CurveVertex); }
+    void addStats(std::vector<TechniqueStat>& stats) const { stats.push_back({"nodes_count", double(capacity)}); }
+    void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
+        const std::vector<float> perTexel(counts.begin(), counts.end());
+        debug.write("nodes-per-texel", layers.size(), layers.size(), perTexel, 0.0f, float(capacity));
+    }
 };
 
 // Texel t's events in arrival order: the surfaces by triangle, then the volume pieces
@@ -32,7 +41,8 @@ void arrivalOrder(const LightLayers& layers, size_t t, std::vector<uint32_t>& or
     order.clear();
     for (uint32_t e = layers.start[t]; e < layers.start[t + 1]; ++e) order.push_back(e);
     std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        const bool volumeA = layers.triangle[a] == LightLayers::kVolumePiece, volumeB = layers.triangle[b] == LightLayers::kVolumePiece;
+        const bool volumeA = layers.triangle[a] == LightLayers::kVolumePiece;
+        const bool volumeB = layers.triangle[b] == LightLayers::kVolumePiece;
         if (volumeA != volumeB) return volumeB;
         return !volumeA && layers.triangle[a] < layers.triangle[b];
     });
@@ -50,7 +60,8 @@ AdaptiveMap buildAdaptiveMap(const LightLayers& layers, int capacity) {
             arrivalOrder(layers, t, order);
             AdaptiveNodes list{&map.nodes[t * stride], 0, capacity};
             for (uint32_t e : order) {
-                list.insertSegment(layers.depthNear[e], layers.depthFar[e], float(portable::exp(-double(layers.opticalDepth[e]))));
+                const float passed = float(portable::exp(-double(layers.opticalDepth[e])));
+                list.insertSegment(layers.depthNear[e], layers.depthFar[e], passed);
             }
             map.counts[t] = uint8_t(list.count);
         }
@@ -58,39 +69,10 @@ AdaptiveMap buildAdaptiveMap(const LightLayers& layers, int capacity) {
     return map;
 }
 
-// T(z): 1 in front of the first node, linear between nodes, the last node's value behind.
-float nodeTransmittance(const AdaptiveMap& map, size_t texel, float z) {
-    const CurveVertex* nodes = &map.nodes[texel * (size_t(map.capacity) + 2)];
-    return transmittanceAt({nodes, map.counts[texel]}, z);
-}
-
-void writeNodeCounts(const ShadowInputs& in, const LightLayers& layers, const AdaptiveMap& map) {
-    const DebugBuffers debug(in.debugDir, "adaptive-volumetric-shadow-maps");
-    if (!debug.enabled()) return;
-    const std::vector<float> counts(map.counts.begin(), map.counts.end());
-    debug.write("nodes-per-texel", layers.size(), layers.size(), counts, 0.0f, float(map.capacity));
-}
-
 ShadowOutputs runAdaptiveVolumetricShadowMaps(const ShadowInputs& in) {
-    const VolumetricSettings settings = readVolumetricSettings(in.params);
     const int capacity = in.params.integer("nodes");
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);
-    StageTimer timer;
-    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
-    const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
-    const AdaptiveMap map = buildAdaptiveMap(frame.layers, capacity);
-    timer.lap("nodes");
-    const auto curve = [&](size_t texel, float z) { return nodeTransmittance(map, texel, z); };
-    ShadowOutputs out;
-    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup, curve);
-    timer.lap("lookup");
-    addVolumetricStats(frame, double(capacity) * sizeof(CurveVertex), out.stats);
-    out.stats.push_back({"nodes_count", double(capacity)});
-    timer.appendTo(out.stats);
-    writeVolumetricDebug(in, "adaptive-volumetric-shadow-maps", frame);
-    writeNodeCounts(in, frame.layers, map);
-    plotCurves(in.debugDir, "adaptive-volumetric-shadow-maps", frame.layers, curve);
-    return out;
+    return runVolumetricFrame(in, "adaptive-volumetric-shadow-maps", "nodes",
+                              [&](const LightLayers& layers) { return buildAdaptiveMap(layers, capacity); });
 }
 
 }  // namespace

@@ -5,11 +5,6 @@
 // nearest translucent surface gets that colour. Its known failures: a receiver between two
 // translucent layers gets all of them (so a translucent caster cannot shadow itself
 // correctly, as RTR says), and volumes are not seen.
-#include <utility>
-
-#include "shading/luminance.h"
-#include "shadows/debug_buffers.h"
-#include "shadows/deep/curve_plot.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/volumetric_settings.h"
 
@@ -19,6 +14,14 @@ namespace {
 struct ColouredMap {
     std::vector<float> nearest;       // per texel, 1 where nothing translucent
     std::vector<glm::vec3> passed;    // per texel, the product of the translucent surfaces' passed light
+
+    glm::vec3 at(size_t texel, float z) const { return z > nearest[texel] ? passed[texel] : glm::vec3(1.0f); }
+    double bytesPerTexel() const { return sizeof(float) + sizeof(glm::vec3); }
+    void addStats(std::vector<TechniqueStat>&) const {}
+    void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
+        debug.writeRadiance("colour", layers.size(), layers.size(), passed);
+        debug.write("nearest-depth", layers.size(), layers.size(), nearest, layers.nearestDepth, 1.0f);
+    }
 };
 
 ColouredMap buildColouredMap(const LightLayers& layers) {
@@ -34,33 +37,8 @@ ColouredMap buildColouredMap(const LightLayers& layers) {
     return map;
 }
 
-void writeColourMap(const ShadowInputs& in, const LightLayers& layers, const ColouredMap& map) {
-    const DebugBuffers debug(in.debugDir, "coloured-shadow-map");
-    if (!debug.enabled()) return;
-    debug.writeRadiance("colour", layers.size(), layers.size(), map.passed);
-    debug.write("nearest-depth", layers.size(), layers.size(), map.nearest, layers.nearestDepth, 1.0f);
-}
-
 ShadowOutputs runColouredShadowMap(const ShadowInputs& in) {
-    const VolumetricSettings settings = readVolumetricSettings(in.params);
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);
-    StageTimer timer;
-    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
-    const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
-    const ColouredMap map = buildColouredMap(frame.layers);
-    timer.lap("colour_map");
-    const auto curve = [&](size_t texel, float z) { return z > map.nearest[texel] ? map.passed[texel] : glm::vec3(1.0f); };
-    ShadowOutputs out;
-    out.colouredVisibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup, curve);
-    out.visibility.resize(out.colouredVisibility.size());
-    for (size_t k = 0; k < out.visibility.size(); ++k) out.visibility[k] = luminance(out.colouredVisibility[k]);
-    timer.lap("lookup");
-    addVolumetricStats(frame, sizeof(float) + sizeof(glm::vec3), out.stats);
-    timer.appendTo(out.stats);
-    writeVolumetricDebug(in, "coloured-shadow-map", frame);
-    writeColourMap(in, frame.layers, map);
-    plotCurves(in.debugDir, "coloured-shadow-map", frame.layers, curve);
-    return out;
+    return runVolumetricFrame(in, "coloured-shadow-map", "colour_map", buildColouredMap);
 }
 
 }  // namespace

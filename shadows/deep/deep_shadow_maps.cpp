@@ -6,9 +6,7 @@
 // nearest texels' curves, evaluated at the receiver's depth, blended bilinearly (section 4.1).
 #include <algorithm>
 
-#include "shadows/debug_buffers.h"
 #include "shadows/deep/curve_compression.h"
-#include "shadows/deep/curve_plot.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/volumetric_settings.h"
 
@@ -20,6 +18,26 @@ struct DeepMap {
     std::vector<CurveVertex> vertices;
     uint32_t mostVertices = 0;
     float largestTolerance = 0.0f;        // after any doubling
+
+    std::span<const CurveVertex> curve(size_t texel) const {
+        return {vertices.data() + start[texel], start[texel + 1] - start[texel]};
+    }
+    float at(size_t texel, float z) const { return transmittanceAt(curve(texel), z); }
+    double texels() const { return double(start.size() - 1); }
+    double bytesPerTexel() const {
+        return (double(vertices.size()) * sizeof(CurveVertex) + texels() * sizeof(uint32_t)) / texels();
+    }
+    void addStats(std::vector<TechniqueStat>& stats) const {
+        stats.push_back({"vertices_per_texel_mean_count", double(vertices.size()) / texels()});
+        stats.push_back({"vertices_per_texel_max_count", double(mostVertices)});
+        stats.push_back({"largest_tolerance_ratio", double(largestTolerance)});
+    }
+    void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
+        std::vector<float> counts(start.size() - 1);
+        for (size_t t = 0; t < counts.size(); ++t) counts[t] = float(start[t + 1] - start[t]);
+        debug.write("vertices-per-texel", layers.size(), layers.size(), counts, 0.0f,
+                    float(std::max<uint32_t>(mostVertices, 1)));
+    }
 };
 
 struct CompressedTexel {
@@ -28,8 +46,8 @@ struct CompressedTexel {
 };
 
 // Texel t's curve, compressed until it has at most maxVertices.
-CompressedTexel compressTexel(const LightLayers& layers, size_t t, float tolerance, int maxVertices, ExactCurves& curves,
-                              std::vector<CurveVertex>& exact, std::vector<CurveVertex>& out) {
+CompressedTexel compressTexel(const LightLayers& layers, size_t t, float tolerance, int maxVertices,
+                              ExactCurves& curves, std::vector<CurveVertex>& exact, std::vector<CurveVertex>& out) {
     curves.build(layers, t, exact);
     compressCurve(exact, tolerance, out);
     while (out.size() > size_t(maxVertices)) {
@@ -64,44 +82,11 @@ DeepMap buildDeepMap(const LightLayers& layers, float tolerance, int maxVertices
     return map;
 }
 
-std::span<const CurveVertex> curveOf(const DeepMap& map, size_t texel) {
-    return {map.vertices.data() + map.start[texel], map.start[texel + 1] - map.start[texel]};
-}
-
-void writeDeepDebug(const ShadowInputs& in, const LightLayers& layers, const DeepMap& map) {
-    const DebugBuffers debug(in.debugDir, "deep-shadow-maps");
-    if (!debug.enabled()) return;
-    const int size = layers.size();
-    std::vector<float> counts(size_t(size) * size_t(size));
-    for (size_t t = 0; t < counts.size(); ++t) counts[t] = float(map.start[t + 1] - map.start[t]);
-    debug.write("vertices-per-texel", size, size, counts, 0.0f, float(std::max<uint32_t>(map.mostVertices, 1)));
-}
-
 ShadowOutputs runDeepShadowMaps(const ShadowInputs& in) {
-    const VolumetricSettings settings = readVolumetricSettings(in.params);
     const float tolerance = float(in.params.real("tolerance"));
     const int maxVertices = in.params.integer("max-vertices");
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);
-    StageTimer timer;
-    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
-    const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
-    const DeepMap map = buildDeepMap(frame.layers, tolerance, maxVertices);
-    timer.lap("curves");
-    const auto curve = [&](size_t texel, float z) { return transmittanceAt(curveOf(map, texel), z); };
-    ShadowOutputs out;
-    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup, curve);
-    timer.lap("lookup");
-    const double texels = double(map.start.size() - 1);
-    addVolumetricStats(frame, (double(map.vertices.size()) * sizeof(CurveVertex) + texels * sizeof(uint32_t)) / texels,
-                       out.stats);
-    out.stats.push_back({"vertices_per_texel_mean_count", double(map.vertices.size()) / texels});
-    out.stats.push_back({"vertices_per_texel_max_count", double(map.mostVertices)});
-    out.stats.push_back({"largest_tolerance_ratio", double(map.largestTolerance)});
-    timer.appendTo(out.stats);
-    writeVolumetricDebug(in, "deep-shadow-maps", frame);
-    writeDeepDebug(in, frame.layers, map);
-    plotCurves(in.debugDir, "deep-shadow-maps", frame.layers, curve);
-    return out;
+    return runVolumetricFrame(in, "deep-shadow-maps", "curves",
+                              [&](const LightLayers& layers) { return buildDeepMap(layers, tolerance, maxVertices); });
 }
 
 }  // namespace

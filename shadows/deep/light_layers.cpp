@@ -33,8 +33,9 @@ glm::ivec2 texelOfStorage(uint32_t index, int tilesX) {
     using namespace raster;
     const uint32_t tile = index / kPixelsPerTile, inTile = index % kPixelsPerTile;
     const uint32_t block = inTile / kPixelsPerBlock, inBlock = inTile % kPixelsPerBlock;
-    return {int(tile % uint32_t(tilesX)) * kTileSize + int(block % kBlocksPerTileSide) * kBlockSize + int(inBlock % kBlockSize),
-            int(tile / uint32_t(tilesX)) * kTileSize + int(block / kBlocksPerTileSide) * kBlockSize + int(inBlock / kBlockSize)};
+    const int x = int(tile % uint32_t(tilesX)) * kTileSize + int(block % kBlocksPerTileSide) * kBlockSize;
+    const int y = int(tile / uint32_t(tilesX)) * kTileSize + int(block / kBlocksPerTileSide) * kBlockSize;
+    return {x + int(inBlock % kBlockSize), y + int(inBlock / kBlockSize)};
 }
 
 struct Event {
@@ -107,8 +108,8 @@ void marchTexel(const DepthMap& map, std::span<const DensityVolume> volumes, int
             const float passed = float(portable::exp(-tau / pieces));
             for (int k = 0; k < pieces; ++k) {
                 const double s0 = t0 + (t1 - t0) * k / pieces, s1 = t0 + (t1 - t0) * (k + 1) / pieces;
-                out.push_back({depthOf(a + s0 * (b - a)), depthOf(a + s1 * (b - a)), float(tau / pieces), glm::vec3(passed),
-                               LightLayers::kVolumePiece});
+                out.push_back({depthOf(a + s0 * (b - a)), depthOf(a + s1 * (b - a)), float(tau / pieces),
+                               glm::vec3(passed), LightLayers::kVolumePiece});
             }
         });
     }

@@ -9,8 +9,6 @@
 #include <cmath>
 
 #include "raster/portable_math.h"
-#include "shadows/debug_buffers.h"
-#include "shadows/deep/curve_plot.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/transmittance_curve.h"
 #include "shadows/deep/volumetric_settings.h"
@@ -22,6 +20,11 @@ struct OpacitySlices {
     int count = 0;
     float first = 0.0f, spacing = 1.0f;   // slice k at depth first + (k + 1) spacing
     std::vector<float> opticalDepth;      // count per texel, slice by slice
+
+    float at(size_t texel, float z) const;
+    double bytesPerTexel() const { return double(count) * sizeof(float); }
+    void addStats(std::vector<TechniqueStat>& stats) const { stats.push_back({"slices_count", double(count)}); }
+    void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const;
 };
 
 OpacitySlices buildSlices(const LightLayers& layers, int count) {
@@ -41,47 +44,32 @@ OpacitySlices buildSlices(const LightLayers& layers, int count) {
     return slices;
 }
 
-float sliceTransmittance(const OpacitySlices& s, size_t texel, float z) {
-    const float u = (z - s.first) / s.spacing;   // slice k sits at u = k + 1
+float OpacitySlices::at(size_t texel, float z) const {
+    const float u = (z - first) / spacing;   // slice k sits at u = k + 1
     if (!(u > 0.0f)) return 1.0f;
-    const float* tau = &s.opticalDepth[texel * size_t(s.count)];
-    const int below = int(u);   // slice below - 1 (or the start, optical depth 0) to slice below
-    if (below >= s.count) return float(portable::exp(-double(tau[s.count - 1])));
+    const float* tau = &opticalDepth[texel * size_t(count)];
+    const int below = int(u);   // between slice below - 1 (or the start, optical depth 0) and slice below
+    if (below >= count) return float(portable::exp(-double(tau[count - 1])));
     const float from = below == 0 ? 0.0f : tau[below - 1], f = u - float(below);
     return float(portable::exp(-double(from + f * (tau[below] - from))));
 }
 
-void writeSlices(const ShadowInputs& in, const LightLayers& layers, const OpacitySlices& s) {
-    const DebugBuffers debug(in.debugDir, "opacity-shadow-maps");
-    if (!debug.enabled()) return;
+// Four of the slices: the transmittance in front of each.
+void OpacitySlices::writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
     const int size = layers.size();
-    for (int k = 0; k < s.count; k += std::max(1, s.count / 4)) {
+    for (int k = 0; k < count; k += std::max(1, count / 4)) {
         std::vector<float> image(size_t(size) * size_t(size));
-        for (size_t t = 0; t < image.size(); ++t) image[t] = float(portable::exp(-double(s.opticalDepth[t * size_t(s.count) + size_t(k)])));
+        for (size_t t = 0; t < image.size(); ++t) {
+            image[t] = float(portable::exp(-double(opticalDepth[t * size_t(count) + size_t(k)])));
+        }
         debug.write("slice-" + std::to_string(k), size, size, image, 0.0f, 1.0f);
     }
 }
 
 ShadowOutputs runOpacityShadowMaps(const ShadowInputs& in) {
-    const VolumetricSettings settings = readVolumetricSettings(in.params);
     const int count = in.params.integer("slices");
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);
-    StageTimer timer;
-    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
-    const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);
-    const OpacitySlices slices = buildSlices(frame.layers, count);
-    timer.lap("slices");
-    const auto curve = [&](size_t texel, float z) { return sliceTransmittance(slices, texel, z); };
-    ShadowOutputs out;
-    out.visibility = lookUpTransmittance(in.gbuffer, frame.layers.opaque, frame.opaqueV, settings.lookup, curve);
-    timer.lap("lookup");
-    addVolumetricStats(frame, double(count) * sizeof(float), out.stats);
-    out.stats.push_back({"slices_count", double(count)});
-    timer.appendTo(out.stats);
-    writeVolumetricDebug(in, "opacity-shadow-maps", frame);
-    writeSlices(in, frame.layers, slices);
-    plotCurves(in.debugDir, "opacity-shadow-maps", frame.layers, curve);
-    return out;
+    return runVolumetricFrame(in, "opacity-shadow-maps", "slices",
+                              [&](const LightLayers& layers) { return buildSlices(layers, count); });
 }
 
 }  // namespace

@@ -20,7 +20,8 @@ void ExactCurves::build(const LightLayers& layers, size_t texel, std::vector<Cur
             points.push_back({near, tau, 0.0});
         }
     }
-    std::stable_sort(points.begin(), points.end(), [](const Breakpoint& a, const Breakpoint& b) { return a.depth < b.depth; });
+    std::stable_sort(points.begin(), points.end(),
+                     [](const Breakpoint& a, const Breakpoint& b) { return a.depth < b.depth; });
     double tau = 0.0, slope = 0.0;
     float at = points.empty() ? 0.0f : points.front().depth;
     const auto emit = [&](float depth) {
@@ -33,7 +34,9 @@ void ExactCurves::build(const LightLayers& layers, size_t texel, std::vector<Cur
         tau += slope * (double(depth) - double(at));
         at = depth;
         emit(depth);   // the value arriving at this depth
-        for (; k < points.size() && points[k].depth == depth; ++k) tau += points[k].jump, slope += points[k].slopeChange;
+        for (; k < points.size() && points[k].depth == depth; ++k) {
+            tau += points[k].jump, slope += points[k].slopeChange;
+        }
         emit(depth);   // and leaving it
     }
 }
@@ -43,7 +46,8 @@ double opticalDepthBefore(const LightLayers& layers, size_t texel, double z) {
     for (uint32_t e = layers.start[texel]; e < layers.start[texel + 1]; ++e) {
         const double near = layers.depthNear[e], far = layers.depthFar[e];
         if (near >= z) break;   // the events are nearest first
-        tau += far <= z || far == near ? double(layers.opticalDepth[e]) : layers.opticalDepth[e] * (z - near) / (far - near);
+        const double share = far <= z || far == near ? 1.0 : (z - near) / (far - near);
+        tau += double(layers.opticalDepth[e]) * share;
     }
     return tau;
 }

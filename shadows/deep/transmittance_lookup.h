@@ -63,7 +63,8 @@ auto lookUpTransmittance(const GBuffer& g, const DepthMap& map, const std::vecto
             for (int i = 0; i < g.width; ++i) {
                 const size_t k = g.index(i, j);
                 if (opaqueV[k] == 0.0f) continue;
-                const glm::dvec3 at = offsetReceiver(map, glm::dvec3(g.position[k]), glm::dvec3(g.normal[k]), settings.offsetTexels);
+                const glm::dvec3 at =
+                    offsetReceiver(map, glm::dvec3(g.position[k]), glm::dvec3(g.normal[k]), settings.offsetTexels);
                 out[k] = opaqueV[k] * bilinearTransmittance(curve, map.size, at);
             }
         }

@@ -11,7 +11,8 @@ std::vector<ParamSpec> volumetricParamSpecs() {
     std::vector<ParamSpec> specs = shadowMapParamSpecs();
     for (ParamSpec& spec : specs) {
         // Each texel holds a list or a curve, not one depth: a smaller map by default.
-        if (spec.name == "resolution") spec = integerParam("resolution", 512, kMinMapResolution, kMaxMapResolution, "texels per side");
+        if (spec.name == "resolution")
+            spec = integerParam("resolution", 512, kMinMapResolution, kMaxMapResolution, "texels per side");
     }
     specs.push_back(realParam("transmittance-offset", 1.5, 0.0, 100.0,
                               "texels the receiver moves along its normal before the transmittance lookup"));

@@ -96,12 +96,13 @@ void transmissionFilter(const RTCFilterFunctionNArguments* args) {
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
         const uint32_t triangle = RTCHitN_primID(args->hit, args->N, i);
-        const glm::vec3 passed =
-            context->transmission->passedAt(triangle, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+        const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+        const glm::vec3 passed = context->transmission->passedAt(triangle, u, v);
         if (passed == glm::vec3(0.0f)) continue;
         args->valid[i] = 0;
-        if (passed != glm::vec3(1.0f))
-            context->crossed->push_back({context->transmission->instanceOf(triangle), RTCRayN_tfar(args->ray, args->N, i), passed});
+        if (passed == glm::vec3(1.0f)) continue;   // a cut-out's hole
+        const float t = RTCRayN_tfar(args->ray, args->N, i);   // the hit's distance, during the filter
+        context->crossed->push_back({context->transmission->instanceOf(triangle), t, passed});
     }
 }
 
@@ -110,7 +111,8 @@ double beyondVolumes(std::span<const DensityVolume> volumes, const glm::dvec3& o
     double reach = 0.0;
     for (const DensityVolume& v : volumes) {
         for (int corner = 0; corner < 8; ++corner) {
-            const glm::dvec3 p(corner & 1 ? v.max.x : v.min.x, corner & 2 ? v.max.y : v.min.y, corner & 4 ? v.max.z : v.min.z);
+            const glm::dvec3 p(corner & 1 ? v.max.x : v.min.x, corner & 2 ? v.max.y : v.min.y,
+                               corner & 4 ? v.max.z : v.min.z);
             reach = std::max(reach, glm::length(p - origin));
         }
     }

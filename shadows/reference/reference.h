@@ -70,8 +70,9 @@ public:
 
     // Whether a distant light in `direction` (unit) reaches the surface point P of geometric
     // normal N: in front of N's plane and nothing in the way of a ray to infinity from the
-    // origin visibility() uses (through casters that are not opaque: any light passes). For integrators that choose their own directions (the
-    // environment reference); not counted in raysCast().
+    // origin visibility() uses (through casters that are not opaque: any light passes). For
+    // integrators that choose their own directions (the environment reference); not counted
+    // in raysCast().
     bool directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const;
     // The same for a point `target` (a sample on an area source): in front of N's plane and
     // nothing in the way of the segment, which stops the ray offset short of the target.

@@ -46,7 +46,16 @@ json validScene() {
     })");
 }
 
-// Mesh files the cases point meshes[1] at.
+// leaf.png: 4 x 2 texels with alpha, the left half 0 and the right half 255; grey.png: no alpha.
+void writeAlphaTextures(const test::TempDir& dir) {
+    std::vector<unsigned char> rgba(4 * 2 * 4, 200);
+    for (int k = 0; k < 8; ++k) rgba[4 * size_t(k) + 3] = (k % 4) < 2 ? 0 : 255;
+    REQUIRE(stbi_write_png(dir.path("leaf.png").c_str(), 4, 2, 4, rgba.data(), 4 * 4) != 0);
+    const std::vector<unsigned char> grey(8, 128);
+    REQUIRE(stbi_write_png(dir.path("grey.png").c_str(), 4, 2, 1, grey.data(), 4) != 0);
+}
+
+// Mesh files the cases point meshes[1] at, and the alpha textures materials may name.
 void writeMeshFiles(const test::TempDir& dir) {
     const std::string corners = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     dir.write("tri.obj", corners + "f 1 2 3\n");
@@ -62,15 +71,7 @@ void writeMeshFiles(const test::TempDir& dir) {
                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                                "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
     std::filesystem::create_directory(dir.path("folder.obj"));
-}
-
-// leaf.png: 4 x 2 texels with alpha, the left half 0 and the right half 255; grey.png: no alpha.
-void writeAlphaTextures(const test::TempDir& dir) {
-    std::vector<unsigned char> rgba(4 * 2 * 4, 200);
-    for (int k = 0; k < 8; ++k) rgba[4 * size_t(k) + 3] = (k % 4) < 2 ? 0 : 255;
-    REQUIRE(stbi_write_png(dir.path("leaf.png").c_str(), 4, 2, 4, rgba.data(), 4 * 4) != 0);
-    const std::vector<unsigned char> grey(8, 128);
-    REQUIRE(stbi_write_png(dir.path("grey.png").c_str(), 4, 2, 1, grey.data(), 4) != 0);
+    writeAlphaTextures(dir);
 }
 
 struct Case {
@@ -362,7 +363,6 @@ TEST_CASE("JSON nested past the limit is refused while parsing (200000 levels cr
 TEST_CASE("casters that are not opaque load: translucent and cut-out materials, hair, volumes") {
     const test::TempDir dir;
     writeMeshFiles(dir);
-    writeAlphaTextures(dir);
     json s = validScene();
     s["meshes"].push_back({{"name", "hair"}, {"procedural", "hair"}, {"size", {1, 0.2, 0.5}}, {"strands", 50},
                            {"width", 0.004}, {"segments", 4}, {"seed", 3}});
@@ -388,9 +388,6 @@ TEST_CASE("casters that are not opaque load: translucent and cut-out materials, 
 }
 
 TEST_CASE("mistakes in casters that are not opaque") {
-    const test::TempDir dir;
-    writeMeshFiles(dir);
-    writeAlphaTextures(dir);
     const auto withMaterial = [](json material) {
         return [material](json& s) { s["materials"][0].update(material); };
     };
@@ -403,7 +400,7 @@ TEST_CASE("mistakes in casters that are not opaque") {
             s["volumes"] = {volume};
         };
     };
-    for (const Case& c : std::vector<Case>{
+    checkCases({
              {"opacity above 1", withMaterial({{"opacity", 1.5}}), {"materials[0].opacity: must be in [0, 1]"}},
              {"tint without opacity", withMaterial({{"transmittance", {1, 0, 0}}}),
               {"materials[0].transmittance: tints the light a translucent surface passes, so needs \"opacity\" < 1"}},
@@ -422,13 +419,5 @@ TEST_CASE("mistakes in casters that are not opaque") {
              {"hair without strands", [](json& s) {
                   s["meshes"].push_back({{"name", "hair"}, {"procedural", "hair"}, {"size", {1, 1, 1}}, {"width", 0.01}});
               }, {"meshes[4]: missing required field \"strands\""}},
-         }) {
-        CAPTURE(c.what);
-        json scene = validScene();
-        c.change(scene);
-        const std::string path = dir.write("scene.json", render(scene));
-        std::vector<std::string> pieces = c.pieces;
-        pieces.push_back(path + ": ");
-        test::checkMessage(test::sceneErrorOf([&] { loadScene(path); }), pieces);
-    }
+    });
 }
