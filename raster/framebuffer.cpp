@@ -89,6 +89,7 @@ void Framebuffer::FreeSinks::operator()(std::vector<FragmentSink>* sinks) const 
 
 std::span<const Fragment> Framebuffer::tileFragments(int tile) const {
     if (!fragments_) throw std::logic_error("framebuffer has no fragment lists");
+    if (tile < 0 || size_t(tile) >= fragments_->size()) throw std::out_of_range("tileFragments: no tile " + std::to_string(tile));
     const FragmentSink& sink = (*fragments_)[size_t(tile)];
     return {sink.data, sink.size};
 }

@@ -30,6 +30,15 @@ inline size_t blockLinearIndex(int x, int y, int tilesX) {
     return tile * kPixelsPerTile + size_t(blockY * kBlocksPerTileSide + blockX) * kPixelsPerBlock + size_t(inBlock);
 }
 
+// The pixel (x, y) at storage index `index` of a block-linear buffer tilesX tiles wide: the
+// inverse of blockLinearIndex.
+inline void blockLinearPixel(size_t index, int tilesX, int& x, int& y) {
+    const size_t tile = index / kPixelsPerTile, inTile = index % kPixelsPerTile;
+    const size_t block = inTile / kPixelsPerBlock, inBlock = inTile % kPixelsPerBlock;
+    x = int(tile % size_t(tilesX)) * kTileSize + int(block % kBlocksPerTileSide) * kBlockSize + int(inBlock % kBlockSize);
+    y = int(tile / size_t(tilesX)) * kTileSize + int(block / kBlocksPerTileSide) * kBlockSize + int(inBlock / kBlockSize);
+}
+
 // An allocator whose new elements are left uninitialised (default-initialised). A lazily
 // cleared buffer fills every tile before anything reads it, so zeroing its fresh storage
 // first would cost a pass over memory for nothing: 16 MiB, about 1.5 ms on one core, for

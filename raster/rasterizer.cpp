@@ -100,7 +100,8 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
         throw std::invalid_argument("draw: primitiveIds must hold one id per triangle");
     }
     const AlphaTest& alpha = state.alphaTest;
-    if (alpha.alpha && (alpha.width < 1 || alpha.height < 1 || vs.varyingCount < 2)) {
+    if (alpha.alpha && (alpha.width < 1 || alpha.height < 1 || int64_t(alpha.width) * alpha.height > INT32_MAX ||
+                        vs.varyingCount < 2)) {
         throw std::invalid_argument("draw: the alpha test needs a texture of at least 1 x 1 texels and varyings u, v");
     }
     if (uint64_t(call.firstPrimitiveId) + call.triangles.size() > uint64_t(UINT32_MAX) + 1) {

@@ -16,7 +16,7 @@ AlphaTexture readAlphaTexture(const std::string& path);
 
 // The texel a texture coordinate falls in, nearest, the coordinates clamped to the texture
 // (u right, v up, as in OBJ): the rule the rasterizer's alpha test (tile_raster.inl) and the
-// reference's (shadows/transmittance.h) both follow, in float.
+// reference's (shadows/caster_transmission.h) both follow, in float.
 inline int alphaTexelIndex(const AlphaTexture& texture, glm::vec2 uv) {
     const float u = uv.x > 0.0f ? (uv.x < 1.0f ? uv.x : 1.0f) : 0.0f;
     const float v = uv.y > 0.0f ? (uv.y < 1.0f ? uv.y : 1.0f) : 0.0f;

@@ -94,7 +94,15 @@ SimplifiedScene simplifyMeshes(const Scene& scene, double ratio) {
     requireRatio(ratio);
     SimplifiedScene out{scene, {}};
     std::vector<double> meshError(scene.meshes.size(), 0.0);
+    // A cut-out's mesh is kept whole: the simplifier keeps positions only, and a card's shape
+    // is in its texture, read at the texture coordinates, not in its two triangles.
+    std::vector<bool> cutOut(scene.meshes.size(), false);
+    for (const MeshInstance& instance : scene.instances) {
+        if (instance.material < scene.materials.size() && scene.materials[instance.material].cutOut())
+            cutOut[instance.mesh] = true;
+    }
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        if (cutOut[m]) continue;
         SimplifiedMesh s = simplifyMesh(scene.meshes[m], ratio);
         out.scene.meshes[m] = std::move(s.mesh);
         meshError[m] = s.errorObjectUnits;

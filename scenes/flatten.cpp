@@ -1,6 +1,7 @@
 // flatten(): the world-space triangle list that every technique renders, and where each
 // instance lies in it (scene.h).
 #include <optional>
+#include <stdexcept>
 
 #include "scenes/scene.h"
 #include "scenes/shading_normals.h"
@@ -39,8 +40,8 @@ bool anyCutOut(const Scene& scene) {
 // The index in world.cutOuts of a material's alpha test, added on first use; -1 for a
 // material that is no cut-out.
 int32_t cutOutOf(const Scene& scene, uint32_t material, std::vector<int32_t>& materialCutOut, WorldGeometry& world) {
+    if (material >= scene.materials.size() || !scene.materials[material].cutOut()) return -1;
     const Material& m = scene.materials[material];
-    if (!m.cutOut()) return -1;
     if (materialCutOut[material] < 0) {
         const AlphaTexture& texture = scene.alphaTextures[size_t(m.alphaTexture)];
         materialCutOut[material] = int32_t(world.cutOuts.size());
@@ -83,6 +84,8 @@ WorldGeometry flatten(const Scene& scene) {
         const glm::dmat3 toWorld = normalMatrix(instance);
         for (const glm::vec3& n : *meshNormals[instance.mesh]) world.cornerNormals.push_back(worldNormal(toWorld, n));
         if (!uvs) continue;
+        if (!mesh.cornerUvs.empty() && mesh.cornerUvs.size() != 3 * mesh.triangles.size())
+            throw std::invalid_argument("flatten: mesh " + mesh.source + " has texture coordinates for some corners only");
         if (mesh.cornerUvs.empty()) world.cornerUvs.resize(world.cornerUvs.size() + 3 * mesh.triangles.size());
         world.cornerUvs.insert(world.cornerUvs.end(), mesh.cornerUvs.begin(), mesh.cornerUvs.end());
     }

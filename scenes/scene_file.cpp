@@ -50,7 +50,7 @@ int alphaTextureIndex(const JsonField& field, const std::string& directory, Scen
 void readTransmission(const JsonObject& object, const std::string& directory, Scene& scene, Material& material) {
     if (const auto opacity = object.optional("opacity")) material.opacity = opacity->number(kUnitInterval);
     if (const auto tint = object.optional("transmittance")) {
-        if (!object.has("opacity"))
+        if (!material.translucent())
             tint->fail("tints the light a translucent surface passes, so needs \"opacity\" < 1");
         material.transmittance = tint->vec3(kUnitInterval);
     }
@@ -176,7 +176,13 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     for (const JsonField& instance : object["instances"].elements()) readInstance(instance, names, scene);
     checkCutOutUvs(object["instances"], scene);
     if (const auto volumes = object.optional("volumes")) {
-        for (const JsonField& volume : volumes->elements()) scene.volumes.push_back(readVolume(volume));
+        uint64_t voxels = 0;
+        for (const JsonField& volume : volumes->elements()) {
+            scene.volumes.push_back(readVolume(volume));
+            voxels += scene.volumes.back().sigma.size();
+            if (voxels > kMaxSceneVoxels)
+                volume.fail("the volumes hold more than " + std::to_string(kMaxSceneVoxels) + " voxels together");
+        }
     }
     for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light));
     scene.camera = readCamera(object["camera"]);

@@ -11,6 +11,9 @@
 
 namespace shadowlab {
 
+// A procedural mesh's or volume's seed (procedural_casters.h, unitHash).
+inline constexpr Interval kSeed{0.0, 2147483647.0, false, false};
+
 // The names the file gives to meshes and materials, parallel to Scene::meshes and
 // Scene::materials; instances refer to them by name.
 struct SceneNames {

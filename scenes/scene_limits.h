@@ -11,6 +11,8 @@ namespace shadowlab {
 
 inline constexpr uint64_t kMaxSceneTriangles = uint64_t(1) << 25;   // world-space, after instancing
 inline constexpr uint64_t kMaxSceneVertices = uint64_t(1) << 25;
+// Voxels of all density volumes together: 64 MiB of float extinction.
+inline constexpr uint64_t kMaxSceneVoxels = uint64_t(1) << 24;
 inline constexpr uint64_t kMaxInstances = uint64_t(1) << 16;        // after "repeat"
 inline constexpr uint64_t kMaxFileBytes = uint64_t(1) << 31;        // any scene, mesh or image file read
 inline constexpr int kMaxJsonDepth = 64;                            // nesting of a scene file

@@ -27,7 +27,6 @@ constexpr std::array<std::pair<std::string_view, Procedural>, 4> kProcedurals{{
     {"hair", Procedural::Hair}}};
 constexpr Interval kStrands{1.0, 1048576.0, false, false};
 constexpr Interval kSegments{1.0, 1024.0, false, false};
-constexpr Interval kSeed{0.0, 2147483647.0, false, false};
 
 // A procedural mesh's triangles are counted before it is made: 16384 x 16384 divisions
 // would be half a billion triangles from a line of JSON.

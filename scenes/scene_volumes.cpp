@@ -12,7 +12,6 @@ constexpr std::array<std::pair<std::string_view, VolumeKind>, 2> kVolumeKinds{{
     {"constant", VolumeKind::Constant}, {"smoke-puff", VolumeKind::SmokePuff}}};
 // 256^3 voxels are 64 MiB of floats: past that a scene file would ask for the machine.
 constexpr Interval kVoxelsPerAxis{1.0, 256.0, false, false};
-constexpr Interval kSeed{0.0, 2147483647.0, false, false};
 
 }  // namespace
 

@@ -5,6 +5,14 @@ namespace shadowlab {
 CasterTransmission::CasterTransmission(const Scene& scene, const WorldGeometry& world)
     : scene_(scene), world_(world), anyNonOpaque_(hasNonOpaqueCasters(scene)) {}
 
+bool CasterTransmission::shareVertex(uint32_t a, uint32_t b) const {
+    const glm::uvec3 s = world_.triangles[a], t = world_.triangles[b];
+    for (int i = 0; i < 3; ++i) {
+        if (s[i] == t.x || s[i] == t.y || s[i] == t.z) return true;
+    }
+    return false;
+}
+
 bool CasterTransmission::solidAt(uint32_t triangle, float u, float v) const {
     const Material& material = materialOf(triangle);
     const glm::vec2* uv = &world_.cornerUvs[3 * size_t(triangle)];

@@ -24,8 +24,15 @@ public:
 
     // Whether anything lets light through: otherwise every caster is opaque.
     bool anyNonOpaque() const { return anyNonOpaque_; }
-    const Material& materialOf(uint32_t triangle) const { return scene_.materials[world_.triangleMaterial[triangle]]; }
+    // The triangle's material; an opaque default where a scene made in code has none for it.
+    const Material& materialOf(uint32_t triangle) const {
+        const uint32_t m = world_.triangleMaterial[triangle];
+        return m < scene_.materials.size() ? scene_.materials[m] : kOpaque;
+    }
     uint32_t instanceOf(uint32_t triangle) const { return world_.triangleInstance[triangle]; }
+    // Whether two triangles share a vertex (an edge or a corner of a mesh): a ray through
+    // it hits both at one point of one surface.
+    bool shareVertex(uint32_t a, uint32_t b) const;
 
     // The light triangle t passes, per channel, at barycentric coordinates (u, v) (the
     // point (1 - u - v) A + u B + v C): 0 where opaque, 1 in a cut-out's hole, the
@@ -38,6 +45,7 @@ public:
     std::span<const DensityVolume> volumes() const { return scene_.volumes; }
 
 private:
+    static inline const Material kOpaque{};
     const Scene& scene_;
     const WorldGeometry& world_;
     bool anyNonOpaque_;

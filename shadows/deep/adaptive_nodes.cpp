@@ -13,9 +13,20 @@ void AdaptiveNodes::insertNode(int at, CurveVertex node) {
     ++count;
 }
 
+// The curve's value just behind depth z: behind every node at z (transmittanceAt gives the
+// value in front of a step at z).
+float AdaptiveNodes::behind(float z) const {
+    int after = 0;
+    while (after < count && nodes[after].depth <= z) ++after;
+    if (after == 0) return 1.0f;
+    if (after == count || nodes[after - 1].depth == z) return nodes[after - 1].transmittance;
+    const CurveVertex a = nodes[after - 1], b = nodes[after];
+    return a.transmittance + (z - a.depth) / (b.depth - a.depth) * (b.transmittance - a.transmittance);
+}
+
 void AdaptiveNodes::insertSegment(float entry, float exit, float passed) {
-    const std::span<const CurveVertex> curve(nodes, size_t(count));
-    const float inFront = transmittanceAt(curve, entry), atExit = transmittanceAt(curve, exit);
+    const float inFront = transmittanceAt(std::span<const CurveVertex>(nodes, size_t(count)), entry);
+    const float atExit = behind(exit);
     for (int k = 0; k < count; ++k) {
         CurveVertex& node = nodes[k];
         if (node.depth >= exit) {

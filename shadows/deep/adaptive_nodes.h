@@ -21,6 +21,7 @@ struct AdaptiveNodes {
     void insertSegment(float entry, float exit, float passed);
 
 private:
+    float behind(float z) const;
     void insertNode(int at, CurveVertex node);
     void removeCheapest();
 };

@@ -4,16 +4,17 @@
 // rather than from the whole list (adaptive_nodes.h): each surface fragment or volume piece
 // is a segment whose two nodes go in, and when a texel holds too many nodes the interior
 // node whose removal changes the area under the curve least goes (section 3.2). The curve
-// is linear between nodes (section 3.3). Occluders arrive in drawing order (the triangles'
-// order, then the volume pieces front to back), which is the same on every thread count,
-// so the bytes are too; on a GPU the order, and so the result, varies from frame to frame.
+// is linear between nodes (section 3.3). Occluders arrive in a fixed order, the surfaces by
+// triangle index and then the volume pieces front to back, the same on every thread count,
+// so the bytes are too; on a GPU they arrive as rasterized, and the result varies from frame
+// to frame.
 #include <algorithm>
 
 #include "raster/portable_math.h"
 #include "shadows/deep/adaptive_nodes.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/transmittance_curve.h"
-#include "shadows/deep/volumetric_settings.h"
+#include "shadows/deep/volumetric_frame.h"
 
 namespace shadowlab {
 namespace {
@@ -35,8 +36,8 @@ struct AdaptiveMap {
     }
 };
 
-// Texel t's events in arrival order: the surfaces by triangle, then the volume pieces
-// front to back.
+// Texel t's events in arrival order: the surfaces by triangle index, then the volume
+// pieces front to back.
 void arrivalOrder(const LightLayers& layers, size_t t, std::vector<uint32_t>& order) {
     order.clear();
     for (uint32_t e = layers.start[t]; e < layers.start[t + 1]; ++e) order.push_back(e);

@@ -6,7 +6,7 @@
 // translucent layers gets all of them (so a translucent caster cannot shadow itself
 // correctly, as RTR says), and volumes are not seen.
 #include "shadows/deep/deep_techniques.h"
-#include "shadows/deep/volumetric_settings.h"
+#include "shadows/deep/volumetric_frame.h"
 
 namespace shadowlab {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "shadows/deep/curve_compression.h"
 #include "shadows/deep/deep_techniques.h"
-#include "shadows/deep/volumetric_settings.h"
+#include "shadows/deep/volumetric_frame.h"
 
 namespace shadowlab {
 namespace {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <tbb/parallel_for.h>
 
@@ -28,16 +29,6 @@ CasterSplit splitCasters(const WorldGeometry& world, const CasterTransmission& t
     return split;
 }
 
-// The texel of storage index `index` of a block-linear buffer (raster::blockLinearIndex).
-glm::ivec2 texelOfStorage(uint32_t index, int tilesX) {
-    using namespace raster;
-    const uint32_t tile = index / kPixelsPerTile, inTile = index % kPixelsPerTile;
-    const uint32_t block = inTile / kPixelsPerBlock, inBlock = inTile % kPixelsPerBlock;
-    const int x = int(tile % uint32_t(tilesX)) * kTileSize + int(block % kBlocksPerTileSide) * kBlockSize;
-    const int y = int(tile / uint32_t(tilesX)) * kTileSize + int(block / kBlocksPerTileSide) * kBlockSize;
-    return {x + int(inBlock % kBlockSize), y + int(inBlock / kBlockSize)};
-}
-
 struct Event {
     float near, far, opticalDepth;
     glm::vec3 passed;
@@ -46,7 +37,8 @@ struct Event {
 
 bool nearerEvent(const Event& a, const Event& b) {
     if (a.near != b.near) return a.near < b.near;
-    return a.triangle < b.triangle;   // a surface before a volume piece at the same depth
+    if (a.triangle != b.triangle) return a.triangle < b.triangle;   // a surface before a volume piece
+    return a.far < b.far;
 }
 
 // The translucent surfaces per texel, each texel's in (depth, triangle) order: a counting
@@ -62,8 +54,9 @@ TexelSurfaces gatherSurfaces(const raster::Framebuffer& fb, const CasterTransmis
     TexelSurfaces out;
     out.start.assign(size_t(size) * size_t(size) + 1, 0);
     const auto texelIndex = [&](const raster::Fragment& f) {
-        const glm::ivec2 t = texelOfStorage(f.pixel, fb.tilesX());
-        return size_t(t.y) * size_t(size) + size_t(t.x);
+        int x = 0, y = 0;
+        raster::blockLinearPixel(f.pixel, fb.tilesX(), x, y);
+        return size_t(y) * size_t(size) + size_t(x);
     };
     for (int tile = 0; tile < tiles; ++tile) {
         for (const raster::Fragment& f : fb.tileFragments(tile)) ++out.start[texelIndex(f) + 1];
@@ -85,10 +78,45 @@ TexelSurfaces gatherSurfaces(const raster::Framebuffer& fb, const CasterTransmis
     return out;
 }
 
-// The pieces of volume along texel (x, y)'s ray, from the light to depth `stop`, each of
-// optical depth at most kMaxPieceOpticalDepth, appended nearest first.
-void marchTexel(const DepthMap& map, std::span<const DensityVolume> volumes, int x, int y, float stop,
-                std::vector<Event>& out) {
+// Where each texel's march through the volumes starts and how it is cut. The near plane is
+// fitted to triangles, not to volumes, so the march starts in front of it: for a
+// directional light at the window depth of the volumes' nearest corner (depth is affine in
+// distance there); for a point or spot light at a hundredth of the way from the light to
+// the near plane (its window depth is finite, about -99 for a far plane far beyond).
+struct VolumeMarch {
+    std::span<const DensityVolume> volumes;
+    bool perspective = false;
+    glm::dvec3 apex{0.0};     // the light, for a perspective view
+    double startDepth = 0.0;  // window depth where an orthographic march starts
+};
+
+VolumeMarch volumeMarch(const DepthMap& map, std::span<const DensityVolume> volumes) {
+    VolumeMarch march{volumes, !map.view.orthographic, glm::dvec3(glm::inverse(map.view.viewFromWorld)[3]), 0.0};
+    for (const DensityVolume& v : volumes) {
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 p(corner & 1 ? v.max.x : v.min.x, corner & 2 ? v.max.y : v.min.y,
+                               corner & 4 ? v.max.z : v.min.z);
+            const glm::dvec4 q = map.texelFromWorld * glm::dvec4(p, 1.0);
+            march.startDepth = std::min(march.startDepth, q.z / q.w);
+        }
+    }
+    return march;
+}
+
+// How many pieces a voxel crossing of optical depth tau from distance d0 to d1 (from a
+// perspective light) is cut into: each of optical depth at most kMaxPieceOpticalDepth, and
+// from a perspective light each at most 5% longer than its distance from the light, so that
+// tau, linear in distance, stays within about 1% of linear in window depth (which is affine in
+// 1 / distance) across a piece. At most 256: past an optical depth of 25 no light is left.
+int piecesFor(double tau, double d0, double d1, bool perspective) {
+    double pieces = std::ceil(tau / kMaxPieceOpticalDepth);
+    if (perspective && d0 > 0.0) pieces = std::max(pieces, std::ceil((d1 - d0) / (0.05 * d0)));
+    return int(std::clamp(pieces, 1.0, 256.0));
+}
+
+// The pieces of volume along texel (x, y)'s ray, from the march's start to depth `stop`,
+// appended nearest first.
+void marchTexel(const DepthMap& map, const VolumeMarch& march, int x, int y, float stop, std::vector<Event>& out) {
     const auto worldAt = [&](double z) {
         const glm::dvec4 p = map.worldFromTexel * glm::dvec4(x + 0.5, y + 0.5, z, 1.0);
         return glm::dvec3(p) / p.w;
@@ -97,14 +125,16 @@ void marchTexel(const DepthMap& map, std::span<const DensityVolume> volumes, int
         const glm::dvec4 q = map.texelFromWorld * glm::dvec4(p, 1.0);
         return float(q.z / q.w);
     };
-    const glm::dvec3 a = worldAt(0.0), b = worldAt(double(stop));
+    const glm::dvec3 a = march.perspective ? march.apex + 0.01 * (worldAt(0.0) - march.apex) : worldAt(march.startDepth);
+    const glm::dvec3 b = worldAt(double(stop));
     const double length = glm::length(b - a);
+    const double fromApex = march.perspective ? glm::length(a - march.apex) : 0.0;
     const size_t first = out.size();
-    for (const DensityVolume& volume : volumes) {
+    for (const DensityVolume& volume : march.volumes) {
         marchVoxels(volume, a, b, [&](double t0, double t1, double sigma) {
             const double tau = sigma * (t1 - t0) * length;
             if (tau <= 0.0) return;
-            const int pieces = int(std::ceil(tau / kMaxPieceOpticalDepth));
+            const int pieces = piecesFor(tau, fromApex + t0 * length, fromApex + t1 * length, march.perspective);
             const float passed = float(portable::exp(-tau / pieces));
             for (int k = 0; k < pieces; ++k) {
                 const double s0 = t0 + (t1 - t0) * k / pieces, s1 = t0 + (t1 - t0) * (k + 1) / pieces;
@@ -118,6 +148,7 @@ void marchTexel(const DepthMap& map, std::span<const DensityVolume> volumes, int
 
 // Every texel's surfaces and volume pieces merged, nearest first, into the layers' arrays.
 void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> volumes, LightLayers& layers) {
+    const VolumeMarch march = volumeMarch(layers.opaque, volumes);
     const int size = layers.size();
     std::vector<std::vector<Event>> rows(static_cast<size_t>(size));
     std::vector<uint32_t> counts(size_t(size) * size_t(size));
@@ -126,7 +157,7 @@ void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> v
         for (int x = 0; x < size; ++x) {
             const size_t t = size_t(y) * size_t(size) + size_t(x);
             pieces.clear();
-            if (!volumes.empty()) marchTexel(layers.opaque, volumes, x, y, layers.opaque.at(x, y), pieces);
+            if (!volumes.empty()) marchTexel(layers.opaque, march, x, y, layers.opaque.at(x, y), pieces);
             const size_t before = rows[size_t(y)].size();
             std::merge(surfaces.events.begin() + surfaces.start[t], surfaces.events.begin() + surfaces.start[t + 1],
                        pieces.begin(), pieces.end(), std::back_inserter(rows[size_t(y)]), nearerEvent);
@@ -134,8 +165,12 @@ void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> v
         }
     });
     layers.start.assign(counts.size() + 1, 0);
-    for (size_t t = 0; t < counts.size(); ++t) layers.start[t + 1] = layers.start[t] + counts[t];
-    const size_t total = layers.start.back();
+    uint64_t total = 0;
+    for (size_t t = 0; t < counts.size(); ++t) {
+        total += counts[t];
+        if (total > UINT32_MAX) throw std::length_error("the light's layers hold more than 2^32 events: lower the resolution");
+        layers.start[t + 1] = uint32_t(total);
+    }
     layers.depthNear.reserve(total), layers.depthFar.reserve(total), layers.opticalDepth.reserve(total);
     layers.passed.reserve(total), layers.triangle.reserve(total);
     for (const std::vector<Event>& row : rows) {

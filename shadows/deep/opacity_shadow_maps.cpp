@@ -11,7 +11,7 @@
 #include "raster/portable_math.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/transmittance_curve.h"
-#include "shadows/deep/volumetric_settings.h"
+#include "shadows/deep/volumetric_frame.h"
 
 namespace shadowlab {
 namespace {
@@ -48,8 +48,8 @@ float OpacitySlices::at(size_t texel, float z) const {
     const float u = (z - first) / spacing;   // slice k sits at u = k + 1
     if (!(u > 0.0f)) return 1.0f;
     const float* tau = &opticalDepth[texel * size_t(count)];
+    if (!(u < float(count))) return float(portable::exp(-double(tau[count - 1])));   // behind the last slice
     const int below = int(u);   // between slice below - 1 (or the start, optical depth 0) and slice below
-    if (below >= count) return float(portable::exp(-double(tau[count - 1])));
     const float from = below == 0 ? 0.0f : tau[below - 1], f = u - float(below);
     return float(portable::exp(-double(from + f * (tau[below] - from))));
 }

@@ -1,9 +1,11 @@
 // Stage 2: a texel's transmittance as a function of depth, T(z), the light that reaches
 // depth z along the texel's ray (Lokovic and Veach 2000, section 3: the "visibility
-// function"). From the texel's events (light_layers.h) the optical depth tau(z) is exact:
-// it steps up by each surface's share and rises linearly across each volume piece; T is
-// exp(-tau) at the vertices where anything changes and linear between them (within 1.3e-3
-// of the exponential inside a piece). A surface is a vertical step: two vertices at its
+// function"). From the texel's events (light_layers.h) the optical depth tau(z) steps up by
+// each surface's share and rises linearly across each volume piece (exact in the window
+// depth of a directional light's view, which is affine in distance; from a point or spot
+// light within about 1% of a piece's share, light_layers.cpp); T is exp(-tau) at the
+// vertices where anything changes and linear between them (within 1.3e-3 of the
+// exponential inside a piece). A surface is a vertical step: two vertices at its
 // depth, the value in front of it, then the value behind it.
 #pragma once
 

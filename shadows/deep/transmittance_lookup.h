@@ -22,7 +22,7 @@
 namespace shadowlab {
 
 struct TransmittanceLookup {
-    double offsetTexels = 1.0;    // along the normal, in texels at the receiver
+    double offsetTexels = 1.5;    // along the normal, in texels at the receiver (`transmittance-offset`)
 };
 
 // Where receiver P (normal N, facing the camera) falls in the map: texel coordinates and

@@ -78,7 +78,7 @@ void attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& worl
 // context to the filter, which lets the ray pass every surface that is not solid and notes
 // what each translucent one passes.
 struct Crossing {
-    uint32_t instance;
+    uint32_t instance, triangle;
     float t;            // along the ray
     glm::vec3 passed;
 };
@@ -102,7 +102,7 @@ void transmissionFilter(const RTCFilterFunctionNArguments* args) {
         args->valid[i] = 0;
         if (passed == glm::vec3(1.0f)) continue;   // a cut-out's hole
         const float t = RTCRayN_tfar(args->ray, args->N, i);   // the hit's distance, during the filter
-        context->crossed->push_back({context->transmission->instanceOf(triangle), t, passed});
+        context->crossed->push_back({context->transmission->instanceOf(triangle), triangle, t, passed});
     }
 }
 
@@ -137,10 +137,11 @@ public:
     // The light that passes along origin + t * direction, t in [0, tFar], per channel: 0 or
     // 1 for opaque casters; through others the product of what each translucent surface
     // passes, and exp(-optical depth) of the volumes. Each surface counts once: a ray
-    // through an edge that two triangles of a mesh share hits both at the same t, and Embree
-    // may report one hit twice, so crossings of one instance closer than kSameCrossing (of
-    // t) are one. The product is taken in (instance, t) order, so the bits do not depend on
-    // the order the BVH found them in.
+    // through an edge or a corner that triangles of a mesh share hits each of them at the
+    // same t, and Embree may report one hit twice, so crossings of one instance closer than
+    // kSameCrossing (of t) on triangles that share a vertex are one (two strands of hair, one
+    // instance, do not). The product is taken in (instance, t) order, so the bits do not
+    // depend on the order the BVH found them in.
     glm::vec3 passed(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
         if (!transmission_) return glm::vec3(unblocked(origin, direction, tFar) ? 1.0f : 0.0f);
         TransmissionContext context{{}, transmission_, &crossed_};
@@ -148,13 +149,17 @@ public:
         crossed_.clear();
         if (!reachesEnd(context.base, origin, direction, tFar)) return glm::vec3(0.0f);
         std::ranges::sort(crossed_, [](const Crossing& a, const Crossing& b) {
-            return a.instance != b.instance ? a.instance < b.instance : a.t < b.t;
+            if (a.instance != b.instance) return a.instance < b.instance;
+            return a.t != b.t ? a.t < b.t : a.triangle < b.triangle;
         });
         glm::vec3 product(1.0f);
         for (size_t k = 0; k < crossed_.size(); ++k) {
-            const bool same = k > 0 && crossed_[k].instance == crossed_[k - 1].instance &&
-                              crossed_[k].t - crossed_[k - 1].t <= kSameCrossing * crossed_[k].t;
-            if (!same) product *= crossed_[k].passed;
+            const Crossing& c = crossed_[k];
+            const bool same = k > 0 && c.instance == crossed_[k - 1].instance &&
+                              c.t - crossed_[k - 1].t <= kSameCrossing * c.t &&
+                              (c.triangle == crossed_[k - 1].triangle ||
+                               transmission_->shareVertex(c.triangle, crossed_[k - 1].triangle));
+            if (!same) product *= c.passed;
         }
         const std::span<const DensityVolume> volumes = transmission_->volumes();
         if (volumes.empty()) return product;
@@ -283,12 +288,12 @@ ReferenceVisibility::~ReferenceVisibility() = default;
 
 bool ReferenceVisibility::directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const {
     ShadowRays rays(embree_->scene, transmission_);
-    return directionPassed(rays, receiverAt(P, N, sceneDiagonal_), direction).x > 0.0f;
+    return glm::any(glm::greaterThan(directionPassed(rays, receiverAt(P, N, sceneDiagonal_), direction), glm::vec3(0.0f)));
 }
 
 bool ReferenceVisibility::pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const {
     ShadowRays rays(embree_->scene, transmission_);
-    return pointPassed(rays, receiverAt(P, N, sceneDiagonal_), target).x > 0.0f;
+    return glm::any(glm::greaterThan(pointPassed(rays, receiverAt(P, N, sceneDiagonal_), target), glm::vec3(0.0f)));
 }
 
 ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, const Light& light,

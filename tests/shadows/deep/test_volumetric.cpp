@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <map>
+#include <span>
+#include <utility>
 #include <string>
 
 #include "frame/render.h"
@@ -26,7 +28,8 @@ struct VolumetricCase {
     GBuffer gbuffer;
     std::vector<float> reference;
 
-    explicit VolumetricCase(const std::string& name) : prepared(smaller(name)) {
+    explicit VolumetricCase(const std::string& name) : VolumetricCase(smaller(name)) {}
+    explicit VolumetricCase(Scene scene) : prepared(std::move(scene)) {
         gbuffer = renderGBuffer(prepared.world(), prepared.scene().camera, raster::bestSimdLevel());
         reference = run("reference").visibility;
     }
@@ -124,6 +127,39 @@ TEST_CASE("the volumetric shadow maps see the smoke and the coloured map does no
     }
     // Its known failure: a coloured map holds surfaces only, so the smoke casts nothing.
     CHECK(smoke.rms("coloured-shadow-map") > 0.9 * shadowMap);
+}
+
+TEST_CASE("a puff above every triangle, under a spot light, is marched from in front of the near plane") {
+    // The ground alone: the light's near plane, fitted to triangles, lies at the ground, so
+    // the whole puff is in front of it. Against the spot's perspective depth, too.
+    Scene scene = VolumetricCase::smaller("smoke-over-plane");
+    std::erase_if(scene.instances, [](const MeshInstance& i) { return i.name != "ground" && i.mesh != 0; });
+    scene.lights = {Light{.type = LightType::Spot, .position = {1.6f, 3.2f, 1.0f},
+                          .direction = glm::normalize(glm::vec3(-1.6f, -3.2f, -1.0f)), .coneAngleDeg = 40.0f,
+                          .intensity = glm::vec3(30.0f)}};
+    const VolumetricCase spot(std::move(scene));
+    const double shadowMap = spot.rms("shadow-map");   // sees no caster at all
+    CHECK(shadowMap > 0.05);
+    for (const char* technique : {"opacity-shadow-maps", "deep-shadow-maps", "adaptive-volumetric-shadow-maps"}) {
+        CAPTURE(technique);
+        CHECK(spot.rms(technique) < 0.15 * shadowMap);
+    }
+}
+
+TEST_CASE("adaptive nodes keep two surfaces at one depth") {
+    std::vector<CurveVertex> storage(8);
+    AdaptiveNodes nodes{storage.data(), 0, 6};
+    nodes.insertSegment(0.5f, 0.5f, 0.5f);
+    nodes.insertSegment(0.5f, 0.5f, 0.4f);
+    const std::span<const CurveVertex> curve(storage.data(), size_t(nodes.count));
+    CHECK(transmittanceAt(curve, 0.4f) == 1.0f);
+    CHECK(transmittanceAt(curve, 0.6f) == doctest::Approx(0.2));
+    // A volume segment ending on a surface, and one starting at it.
+    nodes.insertSegment(0.3f, 0.5f, 0.8f);
+    nodes.insertSegment(0.5f, 0.7f, 0.9f);
+    const std::span<const CurveVertex> after(storage.data(), size_t(nodes.count));
+    CHECK(transmittanceAt(after, 0.4f) == doctest::Approx(0.9));
+    CHECK(transmittanceAt(after, 0.8f) == doctest::Approx(0.2 * 0.8 * 0.9));
 }
 
 TEST_CASE("the volumetric shadow maps show the hair's self-shadowing") {

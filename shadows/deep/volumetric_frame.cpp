@@ -1,4 +1,4 @@
-#include "shadows/deep/volumetric_settings.h"
+#include "shadows/deep/volumetric_frame.h"
 
 #include <algorithm>
 
