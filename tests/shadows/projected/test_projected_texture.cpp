@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <stdexcept>
 
 #include "raster/thread_count.h"
@@ -42,21 +43,13 @@ std::vector<bool> groundOnly(const Scene& scene) {
     return chosen;
 }
 
-// A card under a point light, a receiving screen between them and the ground below
-// (docs/projected-shadows.md, "Failures").
-constexpr const char* kBackwardScene = R"({
-  "meshes": [
-    {"name": "plane", "procedural": "grid", "size": [1, 1], "divisions": [1, 1]}
-  ],
-  "materials": [{"name": "grey", "model": "lambert", "albedo": [0.8, 0.8, 0.8]}],
-  "instances": [
-    {"name": "ground", "mesh": "plane", "material": "grey", "scale": [12, 1, 12]},
-    {"name": "screen", "mesh": "plane", "material": "grey", "scale": [3, 1, 3], "translate": [0, 4, 0]},
-    {"name": "card", "mesh": "plane", "material": "grey", "translate": [0, 1, 0]}
-  ],
-  "lights": [{"type": "point", "position": [0, 8, 0], "power": 100}],
-  "camera": {"eye": [0, 9, 5], "target": [0, 2, 0], "fovy": 45, "width": 160, "height": 120}
-})";
+// scenes/projected/backward-cast.json: a card under a point light, a receiving screen between
+// them and the ground below, at a quarter of its pixels.
+Scene backwardCast() {
+    Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/projected/backward-cast.json");
+    scene.camera.width /= 3, scene.camera.height /= 3;
+    return scene;
+}
 
 }  // namespace
 
@@ -114,7 +107,7 @@ TEST_CASE("projected-texture: no self-shadowing, an occluder's side turned from 
 }
 
 TEST_CASE("projected-texture: a receiver between the light and the occluder gets the shadow cast backward") {
-    const test::HardScene s(parseScene(kBackwardScene, "backward.json"));
+    const test::HardScene s(backwardCast());
     const ShadowOutputs out = s.run("projected-texture", {{"occluders", "card"}, {"receivers", "ground+screen"}});
     size_t screenPixels = 0, screenShadowed = 0, screenShadowedInReference = 0;
     for (size_t k = 0; k < s.gbuffer.pixelCount(); ++k) {
@@ -132,7 +125,7 @@ TEST_CASE("projected-texture: a receiver between the light and the occluder gets
 }
 
 TEST_CASE("projected-texture: the parameters choose the roles, instances not chosen stay lit") {
-    const test::HardScene s(parseScene(kBackwardScene, "backward.json"));
+    const test::HardScene s(backwardCast());
     // By default the ground receives and everything else occludes: the screen casts onto
     // the ground, nothing shadows the screen or the card.
     const ShadowOutputs byDefault = s.run("projected-texture");
@@ -148,16 +141,16 @@ TEST_CASE("projected-texture: the parameters choose the roles, instances not cho
 }
 
 TEST_CASE("projected-texture: without a ground the largest instance receives") {
-    std::string text = kBackwardScene;
-    text.replace(text.find("\"ground\""), 8, "\"floor\"");
-    const test::HardScene s(parseScene(text, "floor.json"));
+    Scene scene = backwardCast();
+    scene.instances[0].name = "floor";
+    const test::HardScene s(std::move(scene));
     const ShadowOutputs out = s.run("projected-texture");
     CHECK(test::stat(out, "occluder_triangles") == 4.0);   // the screen and the card
     CHECK(test::stat(out, "shadowed_receiver_pixels") > 100.0);
 }
 
 TEST_CASE("projected-texture: bad roles are refused with the names") {
-    const test::HardScene s(parseScene(kBackwardScene, "backward.json"));
+    const test::HardScene s(backwardCast());
     CHECK_THROWS_WITH_AS(s.run("projected-texture", {{"occluders", "cardd"}}),
                          doctest::Contains("occluders names no instance \"cardd\" (instances: ground, screen, card)"),
                          std::invalid_argument);
