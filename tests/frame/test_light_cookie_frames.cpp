@@ -7,7 +7,10 @@
 #include <string>
 
 #include "frame/render.h"
+#include "scenes/light_cookie.h"
 #include "scenes/scene_file.h"
+#include "shading/image_io.h"
+#include "tests/scratch_directory.h"
 #include "shading/lights.h"
 
 using namespace shadowlab;
@@ -85,4 +88,17 @@ TEST_CASE("light cookie: the scene file refuses a missing cookie and a cookie on
     CHECK_THROWS_WITH_AS(parseScene(sceneWithLight(point + blinds + "\"}"), "/tmp/cookie-scene.json"),
                          doctest::Contains("only a spot light may have one"), SceneError);
     CHECK_THROWS_AS(parseScene(sceneWithLight(spot + "\"}"), "/tmp/cookie-scene.json"), SceneError);   // a folder
+}
+
+TEST_CASE("light cookie: an RGB image keeps its channels, each value / 255, row 0 at the top") {
+    const test::ScratchDirectory dir("cookie_rgb");
+    const std::vector<uint8_t> rgb = {255, 0, 51, 0, 102, 255,    // top row
+                                      17, 34, 68, 255, 255, 255};  // bottom row
+    writePng(dir.path / "rgb.png", 2, 2, rgb);
+    const LightCookie cookie = readLightCookie((dir.path / "rgb.png").string());
+    REQUIRE(cookie.width == 2);
+    REQUIRE(cookie.height == 2);
+    for (size_t k = 0; k < 4; ++k) {
+        CHECK(cookie.texels[k] == glm::vec3(float(rgb[3 * k]), float(rgb[3 * k + 1]), float(rgb[3 * k + 2])) / 255.0f);
+    }
 }
