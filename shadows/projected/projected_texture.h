@@ -4,8 +4,9 @@
 //   1. instance_roles.h: which instances are occluders and which receivers (parameters
 //      `occluders` and `receivers`; by default the "ground" instances receive and the
 //      rest occlude);
-//   2. occluder_texture.h: the occluders drawn from the light into a binary texture;
-//   3. texture_projection.h: the texture projected onto the receiver pixels, V = 0 where
+//   2. occluder_view.h: the light's view fitted to the occluders;
+//   3. occluder_texture.h: the occluders drawn through it into a binary texture;
+//   4. texture_projection.h: the texture projected onto the receiver pixels, V = 0 where
 //      it is covered.
 //
 // Its failures are the method's, kept and asserted by the tests: no self-shadowing (an
