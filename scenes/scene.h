@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,16 @@ enum class LightType { Point, Spot, Directional, Disk, Rectangle };
 // conventions.md, "Lights". Intensity is radiant intensity (W/sr) for point and spot
 // lights, irradiance (W/m^2) for directional lights and radiance (W/(m^2 sr)) for area
 // lights; a colour times a scalar power in the scene file.
+// A light cookie, or gobo map (RTR 4th ed., section 7.2, "light attenuation mask"): the
+// fraction of a spot light's intensity sent through each texel, per channel in [0, 1],
+// row-major, row 0 at the top, read from a grey or RGB PNG (scenes/light_cookie.h) and
+// projected through the spot's cone (conventions.md, "Lights"; shading/lights.h).
+struct LightCookie {
+    std::string source;
+    int width = 0, height = 0;
+    std::vector<glm::vec3> texels;
+};
+
 struct Light {
     LightType type = LightType::Point;
     glm::vec3 position{0.0f};           // point, spot; centre of disk and rectangle
@@ -97,6 +108,8 @@ struct Light {
     float radius = 0.0f;                // disk
     glm::vec3 halfEdgeU{0.0f}, halfEdgeV{0.0f};  // rectangle
     glm::vec3 intensity{1.0f};
+    // spot: its cookie, null for none. Shared by the copies of the light, never changed.
+    std::shared_ptr<const LightCookie> cookie = nullptr;
 };
 
 struct Camera {

@@ -184,7 +184,7 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
                 volume.fail("the volumes hold more than " + std::to_string(kMaxSceneVoxels) + " voxels together");
         }
     }
-    for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light));
+    for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light, directory));
     scene.camera = readCamera(object["camera"]);
     if (const auto environment = object.optional("environment")) scene.environment = readEnvironment(*environment, directory);
     // Something must light the scene: a light, or an environment map (the environment

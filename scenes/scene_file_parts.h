@@ -29,7 +29,8 @@ void readMeshes(const JsonField& field, const std::string& directory, Scene& sce
 // Appends the instances one entry describes: one, or a lattice of copies with "repeat".
 void readInstance(const JsonField& field, const SceneNames& names, Scene& scene);
 
-Light readLight(const JsonField& field);
+// A spot light's cookie file is relative to directory.
+Light readLight(const JsonField& field, const std::string& directory);
 
 // One entry of "volumes": a procedural density volume (scene_volumes.cpp).
 DensityVolume readVolume(const JsonField& field);

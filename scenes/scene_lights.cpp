@@ -1,7 +1,10 @@
 // The "lights" array of a scene file (conventions.md, "Lights"; scene.h, Light).
 #include <array>
 #include <cmath>
+#include <filesystem>
 
+#include "scenes/light_cookie.h"
+#include "scenes/scene_file.h"
 #include "scenes/scene_file_parts.h"
 
 namespace shadowlab {
@@ -24,7 +27,7 @@ constexpr double kPerpendicularCosine = 1e-4;
 std::vector<std::string_view> keysFor(LightType type) {
     switch (type) {
         case LightType::Point: return {"type", "position", "color", "power"};
-        case LightType::Spot: return {"type", "position", "direction", "coneAngle", "color", "power"};
+        case LightType::Spot: return {"type", "position", "direction", "coneAngle", "color", "power", "cookie"};
         case LightType::Directional: return {"type", "direction", "color", "power"};
         case LightType::Disk: return {"type", "position", "normal", "radius", "color", "power"};
         case LightType::Rectangle: return {"type", "position", "halfEdgeU", "halfEdgeV", "color", "power"};
@@ -66,18 +69,32 @@ void readShape(const JsonObject& object, Light& light) {
     }
 }
 
+// A spot's cookie, its path relative to the scene file's folder.
+std::shared_ptr<const LightCookie> readCookie(const JsonField& field, const std::string& directory) {
+    try {
+        const std::filesystem::path path = std::filesystem::path(directory) / field.string();
+        return std::make_shared<const LightCookie>(readLightCookie(path.string()));
+    } catch (const SceneError& error) {
+        field.fail(error.what());
+    }
+}
+
 }  // namespace
 
-Light readLight(const JsonField& field) {
+Light readLight(const JsonField& field, const std::string& directory) {
     const JsonObject object = field.object();
     Light light;
     light.type = object["type"].choice(kLightTypes);
+    if (light.type != LightType::Spot && object.has("cookie")) {
+        object["cookie"].fail("is projected through a spot light's cone: only a spot light may have one");
+    }
     object.allowOnly(keysFor(light.type));
     if (light.type != LightType::Directional) light.position = object["position"].vec3();
     readShape(object, light);
     const glm::vec3 color = object.has("color") ? object["color"].vec3(kNonNegative) : glm::vec3(1.0f);
     light.intensity = color * object["power"].number(kNonNegative);
     if (glm::any(glm::isinf(light.intensity))) object["power"].fail("color * power overflows float");
+    if (const auto cookie = object.optional("cookie")) light.cookie = readCookie(*cookie, directory);
     return light;
 }
 

@@ -42,6 +42,28 @@ bool insideSpotCone(const Light& light, const glm::vec3& point) {
     return glm::dot(axis, fromLight) >= cosHalfAngle * glm::length(axis) * glm::length(fromLight);
 }
 
+glm::dvec2 cookieCoordinates(const Light& spot, const glm::vec3& point) {
+    const glm::dvec3 d = glm::normalize(glm::dvec3(spot.direction));
+    // Within 1e-3 radians of vertical, +Y is too close to the axis to give a stable right.
+    const bool vertical = d.x * d.x + d.z * d.z < 1e-6;
+    const glm::dvec3 right = glm::normalize(glm::cross(d, vertical ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 up = glm::cross(right, d);
+    const glm::dvec3 q = glm::dvec3(point) - glm::dvec3(spot.position);
+    const double scale = 0.5 / (portable::tan(double(spot.coneAngleDeg) * std::numbers::pi / 180.0) * glm::dot(q, d));
+    return {0.5 + glm::dot(q, right) * scale, 0.5 + glm::dot(q, up) * scale};
+}
+
+glm::vec3 cookieTransmission(const Light& light, const glm::vec3& point) {
+    if (!light.cookie) return glm::vec3(1.0f);
+    const LightCookie& cookie = *light.cookie;
+    const glm::dvec2 uv = cookieCoordinates(light, point);
+    // Clamped before the conversion to an integer, which is undefined out of range; NaN to 0.
+    const auto clamped = [](double x, int size) { return x > 0.0 ? (x < size - 1 ? x : size - 1) : 0.0; };
+    const double column = clamped(uv.x * cookie.width, cookie.width);
+    const double row = clamped((1.0 - uv.y) * cookie.height, cookie.height);
+    return cookie.texels[size_t(row) * size_t(cookie.width) + size_t(column)];
+}
+
 glm::dvec3 areaLightNormal(const Light& light) {
     if (light.type == LightType::Rectangle) {
         return glm::normalize(glm::cross(glm::dvec3(light.halfEdgeU), glm::dvec3(light.halfEdgeV)));
@@ -67,7 +89,8 @@ LightArrival lightArrival(const Light& light, const glm::vec3& point) {
         return {};
     }
     const glm::dvec3 irradiance = intensityTowards(light, fromLight) / distanceSquared;
-    return {glm::vec3(-fromLight / std::sqrt(distanceSquared)), glm::vec3(irradiance)};
+    const glm::vec3 toLight(-fromLight / std::sqrt(distanceSquared));
+    return {toLight, glm::vec3(irradiance) * cookieTransmission(light, point)};
 }
 
 }  // namespace shadowlab

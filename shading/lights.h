@@ -23,9 +23,22 @@ struct LightArrival {
 };
 
 // Point: I / d^2. Spot: the same inside the cone, 0 outside (a hard cone, no falloff, so
-// that the lit region is exactly the cone the shadow techniques are tested on).
+// that the lit region is exactly the cone the shadow techniques are tested on), times its
+// cookie's texel there if it has one (cookieTransmission).
 // Directional: the light's irradiance. Disk, rectangle: the far-field point light above.
 LightArrival lightArrival(const Light& light, const glm::vec3& point);
+
+// A spot light's cookie (RTR 4th ed., section 7.2, "gobo map") projected through its cone
+// (conventions.md, "Lights"): a square whose side spans the cone, centred on the axis, so
+// the cone's circle is inscribed in it. With d the unit axis, up0 = +Y (or -Z when the
+// axis is within 1e-3 radians of vertical), right = normalize(d x up0), up = right x d,
+// q = P - position and t = tan(half-angle):
+//     u = 0.5 + 0.5 dot(q, right) / (t dot(q, d)),   v = 0.5 + 0.5 dot(q, up) / (t dot(q, d)),
+// u to the image's right, v up (row 0 at the top). Evaluated in double.
+glm::dvec2 cookieCoordinates(const Light& spot, const glm::vec3& point);
+// The nearest texel's fraction at (u, v), clamped to the image: column floor(u W), row
+// floor((1 - v) H). 1 for a light without a cookie.
+glm::vec3 cookieTransmission(const Light& light, const glm::vec3& point);
 
 // True if the point lies inside (or on) a spot light's cone of half-angle coneAngleDeg
 // around its direction; evaluated in double. Used by shading and by the shadow reference.

@@ -10,6 +10,7 @@
 #include "shadows/izb/izb.h"
 #include "shadows/maps/shadow_map_techniques.h"
 #include "shadows/planar/planar.h"
+#include "shadows/projected/projected_texture.h"
 #include "shadows/reference/reference_techniques.h"
 #include "shadows/screen/contact_shadows.h"
 #include "shadows/technique.h"
@@ -29,6 +30,7 @@ const std::vector<Technique>& techniques() {
         withCasterLod(contactShadowsTechnique()),
         withCasterLod(shadowVolumeTechnique()),
         withCasterLod(planarTechnique()),
+        withCasterLod(projectedTextureTechnique()),
         withCasterLod(pcssTechnique()),
         withCasterLod(izbPcssTechnique()),
         withCasterLod(filteredShadowMapTechnique(MomentKind::Variance)),

@@ -32,6 +32,25 @@ std::optional<T> parseNumber(const std::string& text) {
     return value;
 }
 
+// The names of a Names value, split at '+'.
+std::vector<std::string> splitNames(const std::string& text) {
+    std::vector<std::string> names;
+    size_t begin = 0;
+    for (size_t plus = text.find('+'); plus != std::string::npos; begin = plus + 1, plus = text.find('+', begin)) {
+        names.push_back(text.substr(begin, plus - begin));
+    }
+    names.push_back(text.substr(begin));
+    return names;
+}
+
+bool allowsNames(const std::string& text) {
+    if (text == kAuto) return true;
+    for (const std::string& name : splitNames(text)) {
+        if (name.empty() || name.find_first_of("=,") != std::string::npos) return false;
+    }
+    return true;
+}
+
 const ParamChoice* findChoice(const ParamSpec& spec, const std::string& text) {
     for (const ParamChoice& c : spec.choices) {
         if (c.name == text) return &c;
@@ -59,6 +78,7 @@ std::string allowedText(const ParamSpec& spec) {
         case ParamType::Real: return "a finite number in " + rangeText(spec);
         case ParamType::Flag: return "on or off";
         case ParamType::Choice: return "one of " + choiceList(spec, ", ", false);
+        case ParamType::Names: return std::string(kAuto) + " or names joined by '+', none empty, without '=' or ','";
     }
     return "";
 }
@@ -78,6 +98,7 @@ bool allows(const ParamSpec& spec, const std::string& text) {
         }
         case ParamType::Flag: return text == "on" || text == "off";
         case ParamType::Choice: return findChoice(spec, text) != nullptr;
+        case ParamType::Names: return allowsNames(text);
     }
     return false;
 }
@@ -110,6 +131,10 @@ ParamSpec choiceParam(std::string name, std::string defaultChoice, std::vector<P
             .help = std::move(help), .choices = std::move(choices), .choiceType = &choiceType};
 }
 
+ParamSpec namesParam(std::string name, std::string help) {
+    return {.name = std::move(name), .type = ParamType::Names, .defaultValue = kAuto, .help = std::move(help)};
+}
+
 std::string paramHelp(const ParamSpec& spec) {
     const std::string help = spec.help.empty() ? "" : spec.help + " ";
     switch (spec.type) {
@@ -117,6 +142,7 @@ std::string paramHelp(const ParamSpec& spec) {
         case ParamType::Real: return help + "(" + rangeText(spec) + ")";
         case ParamType::Flag: return help + "(on | off)";
         case ParamType::Choice: return (spec.help.empty() ? "" : spec.help + ": ") + choiceList(spec, " | ", true);
+        case ParamType::Names: return help + "(auto | name+name+...)";
     }
     return spec.help;
 }
@@ -176,6 +202,13 @@ double TechniqueParams::real(const std::string& name) const {
 bool TechniqueParams::flag(const std::string& name) const {
     spec(name, ParamType::Flag);
     return values_.at(name) == "on";
+}
+
+std::optional<std::vector<std::string>> TechniqueParams::names(const std::string& name) const {
+    spec(name, ParamType::Names);
+    const std::string& text = values_.at(name);
+    if (text == kAuto) return std::nullopt;
+    return splitNames(text);
 }
 
 int TechniqueParams::choiceValue(const std::string& name, const std::type_info& type) const {

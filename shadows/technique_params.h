@@ -13,7 +13,7 @@
 
 namespace shadowlab {
 
-enum class ParamType { Integer, Real, Flag, Choice };
+enum class ParamType { Integer, Real, Flag, Choice, Names };
 
 // One allowed value of a choice parameter: its name, the enumerator (or bool) it stands
 // for, and what it means where the name does not say.
@@ -50,6 +50,9 @@ ParamSpec realParam(std::string name, double defaultValue, double min, double ma
 ParamSpec flagParam(std::string name, bool defaultValue, std::string help);
 ParamSpec choiceParam(std::string name, std::string defaultChoice, std::vector<ParamChoice> choices,
                       const std::type_info& choiceType, std::string help);
+// A list of names joined by '+' ("box+sphere", each name non-empty, no '=' or ','), or
+// "auto" (the default): the technique chooses. Scene instance names, for example.
+ParamSpec namesParam(std::string name, std::string help);
 
 template <class E>
 ParamSpec choiceParam(std::string name, std::string defaultChoice, const std::vector<Choice<E>>& choices,
@@ -77,6 +80,7 @@ public:
     std::optional<int> integerOrAuto(const std::string& name) const;   // empty for "auto"
     double real(const std::string& name) const;
     bool flag(const std::string& name) const;
+    std::optional<std::vector<std::string>> names(const std::string& name) const;   // empty for "auto"
     template <class E>
     E choice(const std::string& name) const {
         return static_cast<E>(choiceValue(name, typeid(E)));

@@ -125,3 +125,17 @@ TEST_CASE("technique parameters: name=value assignments") {
     CHECK_THROWS_AS(parseParamAssignment("resolution", parsed), std::invalid_argument);
     CHECK_THROWS_AS(parseParamAssignment("=3", parsed), std::invalid_argument);
 }
+
+TEST_CASE("technique parameters: a list of names joined by '+', or auto") {
+    const std::vector<ParamSpec> spec = {namesParam("occluders", "instances that occlude")};
+    CHECK_FALSE(TechniqueParams("pt", spec, {}).names("occluders").has_value());
+    CHECK(TechniqueParams("pt", spec, {{"occluders", "box"}}).names("occluders") == std::vector<std::string>{"box"});
+    CHECK(TechniqueParams("pt", spec, {{"occluders", "box+tree[3]"}}).names("occluders") ==
+          std::vector<std::string>{"box", "tree[3]"});
+    for (const char* bad : {"", "+", "box+", "+box", "box++tree", "a=b", "a,b"}) {
+        CAPTURE(bad);
+        CHECK_THROWS_WITH_AS(TechniqueParams("pt", spec, {{"occluders", bad}}),
+                             doctest::Contains("must be auto or names joined by '+'"), std::invalid_argument);
+    }
+    CHECK(paramHelp(spec[0]) == "instances that occlude (auto | name+name+...)");
+}

@@ -1,0 +1,62 @@
+#include "shadows/projected/projected_texture.h"
+
+#include <stdexcept>
+#include <utility>
+
+#include "shadows/debug_buffers.h"
+#include "shadows/projected/instance_roles.h"
+#include "shadows/projected/occluder_texture.h"
+#include "shadows/projected/texture_projection.h"
+#include "shadows/stage_timer.h"
+
+namespace shadowlab {
+namespace {
+
+ShadowOutputs run(const ShadowInputs& in) {
+    const Light light = pointLightFor(in.light);
+    const int resolution = in.params.integer("resolution");
+    // Both roles are chosen on the scene the camera sees; the casters' copy (a caster level
+    // of detail) has the same instances, so its triangles take the same roles.
+    const InstanceRoles roles =
+        chooseRoles(in.scene(), in.receiverWorld(), in.params.names("occluders"), in.params.names("receivers"));
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    StageTimer timer;
+    const std::vector<uint32_t> occluders = trianglesWithRole(in.casterWorld(), roles.occluder);
+    timer.lap("roles");
+    const OccluderTexture texture = renderOccluderTexture(in.casterWorld(), occluders, light, resolution, in.simd);
+    timer.lap("texture");
+    ProjectedShadow shadow = projectOntoReceivers(in.gbuffer, in.receiverWorld(), roles.receiver, light, texture);
+    timer.lap("projection");
+
+    ShadowOutputs out;
+    out.stats = {{"resolution_texels", double(resolution)},
+                 {"occluder_triangles", double(occluders.size())},
+                 {"receiver_pixels", double(shadow.receiverPixels)},
+                 {"shadowed_receiver_pixels", double(shadow.shadowedPixels)}};
+    timer.appendTo(out.stats);
+    const DebugBuffers debug(in.debugDir, "projected-texture");
+    if (debug.enabled()) {
+        if (!texture.empty()) debug.write("texture", resolution, resolution, texture.image(), 0.0f, 1.0f);
+        debug.write("receivers", in.gbuffer.width, in.gbuffer.height, shadow.receiverMask, 0.0f, 1.0f);
+    }
+    out.visibility = std::move(shadow.visibility);
+    return out;
+}
+
+}  // namespace
+
+Technique projectedTextureTechnique() {
+    return {.name = "projected-texture",
+            .description = "projected shadow texture (RTR 7.2): the occluders' image from the light projected onto "
+                           "chosen receivers (no self-shadows, shadows cast backward)",
+            .params = {namesParam("occluders", "instances drawn into the texture; auto: every one not a receiver"),
+                       namesParam("receivers", "instances the texture is projected onto; auto: those named ground, "
+                                               "else the largest by area"),
+                       integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution,
+                                    "texels per side of the occluders' texture")},
+            .run = run,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
+}
+
+}  // namespace shadowlab
