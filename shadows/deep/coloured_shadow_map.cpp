@@ -5,6 +5,8 @@
 // nearest translucent surface gets that colour. Its known failures: a receiver between two
 // translucent layers gets all of them (so a translucent caster cannot shadow itself
 // correctly, as RTR says), and volumes are not seen.
+#include <algorithm>
+
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/deep/volumetric_frame.h"
 
@@ -18,8 +20,19 @@ struct ColouredMap {
     glm::vec3 at(size_t texel, float z) const { return z > nearest[texel] ? passed[texel] : glm::vec3(1.0f); }
     double bytesPerTexel() const { return sizeof(float) + sizeof(glm::vec3); }
     void addStats(std::vector<TechniqueStat>&) const {}
+    // The colours as a picture (linear, 255 for 1) and their luminance as a buffer, and the
+    // nearest translucent depth.
     void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
-        debug.writeRadiance("colour", layers.size(), layers.size(), passed);
+        std::vector<uint8_t> rgb(3 * passed.size());
+        std::vector<float> luminances(passed.size());
+        for (size_t t = 0; t < passed.size(); ++t) {
+            for (int c = 0; c < 3; ++c) {
+                rgb[3 * t + size_t(c)] = uint8_t(255.0f * std::clamp(passed[t][c], 0.0f, 1.0f) + 0.5f);
+            }
+            luminances[t] = luminance(passed[t]);
+        }
+        debug.writePicture("colour", layers.size(), layers.size(), rgb);
+        debug.write("colour-luminance", layers.size(), layers.size(), luminances, 0.0f, 1.0f);
         debug.write("nearest-depth", layers.size(), layers.size(), nearest, layers.nearestDepth, 1.0f);
     }
 };
