@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <string>
 #include <utility>
@@ -13,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include "frame/render.h"
+#include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 #include "shadows/reference/reference.h"
 #include "shadows/technique.h"
@@ -142,6 +144,21 @@ inline double stat(const ShadowOutputs& out, const std::string& name) {
     const auto it = std::find_if(out.stats.begin(), out.stats.end(), [&](const TechniqueStat& s) { return s.name == name; });
     REQUIRE(it != out.stats.end());
     return it->value;
+}
+
+// Holds `run(level, threads)`, a V buffer, to `twin`'s bytes at every SIMD level this CPU
+// has, on 1 and 2 threads.
+template <class Run>
+void checkSameBytesEverywhere(const std::vector<float>& twin, const Run& run) {
+    for (raster::SimdLevel level : {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
+        if (!raster::simdLevelSupported(level)) continue;
+        for (int threads : {1, 2}) {
+            INFO(raster::simdLevelName(level) << " with " << threads << " thread(s)");
+            const std::vector<float> v = withThreads(threads, [&] { return run(level); });
+            REQUIRE(v.size() == twin.size());
+            CHECK(std::memcmp(v.data(), twin.data(), v.size() * sizeof(float)) == 0);
+        }
+    }
 }
 
 }  // namespace shadowlab::test
