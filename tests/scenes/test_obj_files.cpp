@@ -69,6 +69,21 @@ TEST_CASE("readObj: polygons as fans, groups, negative indices, ignored attribut
     CHECK(mesh.triangles[1] == glm::uvec3(0, 2, 3));
     CHECK(mesh.triangles[2] == glm::uvec3(4, 5, 6));
     CHECK(mesh.triangles[4] == glm::uvec3(4, 7, 8));
+    // The quad names no texture coordinate, the pentagon "vt 0 0" at every corner.
+    REQUIRE(mesh.cornerUvs.size() == 3 * mesh.triangles.size());
+    CHECK(mesh.cornerUvs[0] == glm::vec2(0.0f));
+}
+
+TEST_CASE("readObj: texture coordinates per corner, for cut-outs") {
+    const test::TempDir dir;
+    const Mesh mesh = readObj(dir.write("card.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                                    "vt 0 0\nvt 1 0\nvt 1 1 0.5\nvt 0 1\n"
+                                                    "f 1/1 2/2 3/3 4/4\n"));
+    REQUIRE(mesh.cornerUvs.size() == 6);
+    CHECK(mesh.cornerUvs[1] == glm::vec2(1.0f, 0.0f));
+    CHECK(mesh.cornerUvs[2] == glm::vec2(1.0f, 1.0f));   // the w of "vt 1 1 0.5" is not read
+    CHECK(mesh.cornerUvs[5] == glm::vec2(0.0f, 1.0f));
+    CHECK(readObj(dir.write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).cornerUvs.empty());
 }
 
 TEST_CASE("readObj: malformed files are SceneErrors naming the file and the place") {
@@ -87,6 +102,9 @@ TEST_CASE("readObj: malformed files are SceneErrors naming the file and the plac
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n", {"face 0", "vertex index 0", "out of range"}},
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2\n", {"1 face(s) with fewer than 3 vertices"}},
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", {"line 4"}},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 nan\nf 1/1 2/1 3/1\n", {"line 4", "texture coordinate v \"nan\""}},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0\nf 1/1 2/1 3/1\n", {"line 4", "texture coordinate has no v"}},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n", {"face 0", "texture coordinate index 2", "out of range"}},
     };
     for (const Case& c : cases) {
         CAPTURE(c.text);
