@@ -397,7 +397,7 @@ TEST_CASE("mistakes in casters that are not opaque") {
         return [puff, change](json& s) {
             json volume = puff;
             volume.update(change);
-            s["volumes"] = {volume};
+            s["volumes"] = json::array({volume});   // {volume} alone is the object itself on clang
         };
     };
     checkCases({
