@@ -30,7 +30,7 @@ struct AdaptiveMap {
     }
     double bytesPerTexel() const { return double(capacity) * sizeof(CurveVertex); }
     void addStats(std::vector<TechniqueStat>& stats) const { stats.push_back({"nodes_count", double(capacity)}); }
-    void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
+    void writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const {
         const std::vector<float> perTexel(counts.begin(), counts.end());
         debug.write("nodes-per-texel", layers.size(), layers.size(), perTexel, 0.0f, float(capacity));
     }
@@ -38,18 +38,18 @@ struct AdaptiveMap {
 
 // Texel t's events in arrival order: the surfaces by triangle index, then the volume
 // pieces front to back.
-void arrivalOrder(const LightLayers& layers, size_t t, std::vector<uint32_t>& order) {
+void arrivalOrder(const VolumetricLayers& layers, size_t t, std::vector<uint32_t>& order) {
     order.clear();
     for (uint32_t e = layers.start[t]; e < layers.start[t + 1]; ++e) order.push_back(e);
     std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        const bool volumeA = layers.triangle[a] == LightLayers::kVolumePiece;
-        const bool volumeB = layers.triangle[b] == LightLayers::kVolumePiece;
+        const bool volumeA = layers.triangle[a] == VolumetricLayers::kVolumePiece;
+        const bool volumeB = layers.triangle[b] == VolumetricLayers::kVolumePiece;
         if (volumeA != volumeB) return volumeB;
         return !volumeA && layers.triangle[a] < layers.triangle[b];
     });
 }
 
-AdaptiveMap buildAdaptiveMap(const LightLayers& layers, int capacity) {
+AdaptiveMap buildAdaptiveMap(const VolumetricLayers& layers, int capacity) {
     AdaptiveMap map;
     map.capacity = capacity;
     const size_t texels = layers.start.size() - 1, stride = size_t(capacity) + 2;
@@ -73,7 +73,7 @@ AdaptiveMap buildAdaptiveMap(const LightLayers& layers, int capacity) {
 ShadowOutputs runAdaptiveVolumetricShadowMaps(const ShadowInputs& in) {
     const int capacity = in.params.integer("nodes");
     return runVolumetricFrame(in, "adaptive-volumetric-shadow-maps", "nodes",
-                              [&](const LightLayers& layers) { return buildAdaptiveMap(layers, capacity); });
+                              [&](const VolumetricLayers& layers) { return buildAdaptiveMap(layers, capacity); });
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ struct ColouredMap {
     void addStats(std::vector<TechniqueStat>&) const {}
     // The colours as a picture (linear, 255 for 1) and their luminance as a buffer, and the
     // nearest translucent depth.
-    void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
+    void writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const {
         std::vector<uint8_t> rgb(3 * passed.size());
         std::vector<float> luminances(passed.size());
         for (size_t t = 0; t < passed.size(); ++t) {
@@ -37,12 +37,12 @@ struct ColouredMap {
     }
 };
 
-ColouredMap buildColouredMap(const LightLayers& layers) {
+ColouredMap buildColouredMap(const VolumetricLayers& layers) {
     const size_t texels = layers.start.size() - 1;
     ColouredMap map{std::vector<float>(texels, 1.0f), std::vector<glm::vec3>(texels, glm::vec3(1.0f))};
     for (size_t t = 0; t < texels; ++t) {
         for (uint32_t e = layers.start[t]; e < layers.start[t + 1]; ++e) {
-            if (layers.triangle[e] == LightLayers::kVolumePiece) continue;
+            if (layers.triangle[e] == VolumetricLayers::kVolumePiece) continue;
             map.nearest[t] = std::min(map.nearest[t], layers.depthNear[e]);
             map.passed[t] *= layers.passed[e];
         }

@@ -6,7 +6,7 @@
 
 namespace shadowlab {
 
-std::vector<size_t> busiestTexels(const LightLayers& layers, int count) {
+std::vector<size_t> busiestTexels(const VolumetricLayers& layers, int count) {
     std::vector<size_t> texels(layers.start.size() - 1);
     std::iota(texels.begin(), texels.end(), size_t(0));
     const size_t kept = std::min(texels.size(), size_t(count));

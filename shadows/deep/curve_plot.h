@@ -25,7 +25,7 @@ struct SampledCurve {
 };
 
 // The texels with the most events (at most `count`; the first on a tie), most first.
-std::vector<size_t> busiestTexels(const LightLayers& layers, int count);
+std::vector<size_t> busiestTexels(const VolumetricLayers& layers, int count);
 
 void writeCurvePlots(const std::filesystem::path& directory, const std::string& technique, int mapSize,
                      const std::vector<SampledCurve>& curves);
@@ -33,7 +33,7 @@ void writeCurvePlots(const std::filesystem::path& directory, const std::string& 
 // Samples the exact and the technique's curve, curve(texel, depth), at the busiest texels
 // and writes them; nothing without a debug directory.
 template <class Curve>
-void plotCurves(const std::filesystem::path& directory, const std::string& technique, const LightLayers& layers,
+void plotCurves(const std::filesystem::path& directory, const std::string& technique, const VolumetricLayers& layers,
                 const Curve& curve) {
     if (directory.empty()) return;
     constexpr int kSamples = 256;

@@ -32,7 +32,7 @@ struct DeepMap {
         stats.push_back({"vertices_per_texel_max_count", double(mostVertices)});
         stats.push_back({"largest_tolerance_ratio", double(largestTolerance)});
     }
-    void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
+    void writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const {
         std::vector<float> counts(start.size() - 1);
         for (size_t t = 0; t < counts.size(); ++t) counts[t] = float(start[t + 1] - start[t]);
         debug.write("vertices-per-texel", layers.size(), layers.size(), counts, 0.0f,
@@ -46,7 +46,7 @@ struct CompressedTexel {
 };
 
 // Texel t's curve, compressed until it has at most maxVertices.
-CompressedTexel compressTexel(const LightLayers& layers, size_t t, float tolerance, int maxVertices,
+CompressedTexel compressTexel(const VolumetricLayers& layers, size_t t, float tolerance, int maxVertices,
                               ExactCurves& curves, std::vector<CurveVertex>& exact, std::vector<CurveVertex>& out) {
     curves.build(layers, t, exact);
     compressCurve(exact, tolerance, out);
@@ -57,7 +57,7 @@ CompressedTexel compressTexel(const LightLayers& layers, size_t t, float toleran
     return {uint32_t(out.size()), tolerance};
 }
 
-DeepMap buildDeepMap(const LightLayers& layers, float tolerance, int maxVertices) {
+DeepMap buildDeepMap(const VolumetricLayers& layers, float tolerance, int maxVertices) {
     const int size = layers.size();
     std::vector<std::vector<CurveVertex>> rows(static_cast<size_t>(size));
     std::vector<CompressedTexel> texels(size_t(size) * size_t(size));
@@ -86,7 +86,9 @@ ShadowOutputs runDeepShadowMaps(const ShadowInputs& in) {
     const float tolerance = float(in.params.real("tolerance"));
     const int maxVertices = in.params.integer("max-vertices");
     return runVolumetricFrame(in, "deep-shadow-maps", "curves",
-                              [&](const LightLayers& layers) { return buildDeepMap(layers, tolerance, maxVertices); });
+                              [&](const VolumetricLayers& layers) {
+                                  return buildDeepMap(layers, tolerance, maxVertices);
+                              });
 }
 
 }  // namespace

@@ -125,7 +125,8 @@ void marchTexel(const DepthMap& map, const VolumeMarch& march, int x, int y, flo
         const glm::dvec4 q = map.texelFromWorld * glm::dvec4(p, 1.0);
         return float(q.z / q.w);
     };
-    const glm::dvec3 a = march.perspective ? march.apex + 0.01 * (worldAt(0.0) - march.apex) : worldAt(march.startDepth);
+    const glm::dvec3 a =
+        march.perspective ? march.apex + 0.01 * (worldAt(0.0) - march.apex) : worldAt(march.startDepth);
     const glm::dvec3 b = worldAt(double(stop));
     const double length = glm::length(b - a);
     const double fromApex = march.perspective ? glm::length(a - march.apex) : 0.0;
@@ -139,7 +140,7 @@ void marchTexel(const DepthMap& map, const VolumeMarch& march, int x, int y, flo
             for (int k = 0; k < pieces; ++k) {
                 const double s0 = t0 + (t1 - t0) * k / pieces, s1 = t0 + (t1 - t0) * (k + 1) / pieces;
                 out.push_back({depthOf(a + s0 * (b - a)), depthOf(a + s1 * (b - a)), float(tau / pieces),
-                               glm::vec3(passed), LightLayers::kVolumePiece});
+                               glm::vec3(passed), VolumetricLayers::kVolumePiece});
             }
         });
     }
@@ -147,7 +148,7 @@ void marchTexel(const DepthMap& map, const VolumeMarch& march, int x, int y, flo
 }
 
 // Every texel's surfaces and volume pieces merged, nearest first, into the layers' arrays.
-void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> volumes, LightLayers& layers) {
+void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> volumes, VolumetricLayers& layers) {
     const VolumeMarch march = volumeMarch(layers.opaque, volumes);
     const int size = layers.size();
     std::vector<std::vector<Event>> rows(static_cast<size_t>(size));
@@ -168,7 +169,8 @@ void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> v
     uint64_t total = 0;
     for (size_t t = 0; t < counts.size(); ++t) {
         total += counts[t];
-        if (total > UINT32_MAX) throw std::length_error("the light's layers hold more than 2^32 events: lower the resolution");
+        if (total > UINT32_MAX)
+            throw std::length_error("the light's layers hold more than 2^32 events: lower the resolution");
         layers.start[t + 1] = uint32_t(total);
     }
     layers.depthNear.reserve(total), layers.depthFar.reserve(total), layers.opticalDepth.reserve(total);
@@ -178,7 +180,7 @@ void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> v
             layers.depthNear.push_back(e.near), layers.depthFar.push_back(e.far);
             layers.opticalDepth.push_back(e.opticalDepth), layers.passed.push_back(e.passed);
             layers.triangle.push_back(e.triangle);
-            layers.volumePieces += e.triangle == LightLayers::kVolumePiece;
+            layers.volumePieces += e.triangle == VolumetricLayers::kVolumePiece;
             layers.nearestDepth = std::min(layers.nearestDepth, e.near);
             layers.farthestDepth = std::max(layers.farthestDepth, e.far);
         }
@@ -187,8 +189,9 @@ void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> v
 
 }  // namespace
 
-LightLayers renderLightLayers(const ShadowInputs& in, const Light& light, const CasterTransmission& transmission,
-                              const LightLayerSettings& settings) {
+VolumetricLayers renderVolumetricLayers(const ShadowInputs& in, const Light& light,
+                                        const CasterTransmission& transmission,
+                              const VolumetricLayerSettings& settings) {
     LightFitOptions fit;
     fit.resolution = settings.resolution;
     fit.simd = in.simd;
@@ -209,7 +212,7 @@ LightLayers renderLightLayers(const ShadowInputs& in, const Light& light, const 
     translucent.output = raster::FragmentOutput::FragmentList;
     if (!split.translucent.empty()) drawWorld(rasterizer, fb, translucent, world, clipFromWorld, split.translucent);
 
-    LightLayers layers;
+    VolumetricLayers layers;
     DepthMap& map = layers.opaque;
     map.size = settings.resolution;
     map.tilesX = fb.tilesX();

@@ -28,7 +28,7 @@ namespace shadowlab {
 // exp(-x) and its chord over [0, 0.1]).
 inline constexpr double kMaxPieceOpticalDepth = 0.1;
 
-struct LightLayers {
+struct VolumetricLayers {
     DepthMap opaque;                    // the nearest opaque surface per texel
     // Per texel (row-major, row 0 at the top) its events, nearest first: those of texel t
     // are [start[t], start[t + 1]).
@@ -47,14 +47,15 @@ struct LightLayers {
     uint32_t eventCount(size_t texel) const { return start[texel + 1] - start[texel]; }
 };
 
-struct LightLayerSettings {
+struct VolumetricLayerSettings {
     int resolution = 512;
     raster::PolygonOffset opaqueOffset;   // the opaque map's bias
 };
 
 // Throws std::invalid_argument as fitLightView does (no receivers, a point light all
 // around them: the volumetric maps have one view, no cube faces).
-LightLayers renderLightLayers(const ShadowInputs& in, const Light& light, const CasterTransmission& transmission,
-                              const LightLayerSettings& settings);
+VolumetricLayers renderVolumetricLayers(const ShadowInputs& in, const Light& light,
+                                        const CasterTransmission& transmission,
+                              const VolumetricLayerSettings& settings);
 
 }  // namespace shadowlab

@@ -24,10 +24,10 @@ struct OpacitySlices {
     float at(size_t texel, float z) const;
     double bytesPerTexel() const { return double(count) * sizeof(float); }
     void addStats(std::vector<TechniqueStat>& stats) const { stats.push_back({"slices_count", double(count)}); }
-    void writeDebug(const DebugBuffers& debug, const LightLayers& layers) const;
+    void writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const;
 };
 
-OpacitySlices buildSlices(const LightLayers& layers, int count) {
+OpacitySlices buildSlices(const VolumetricLayers& layers, int count) {
     OpacitySlices slices;
     slices.count = count;
     slices.first = layers.nearestDepth;
@@ -55,7 +55,7 @@ float OpacitySlices::at(size_t texel, float z) const {
 }
 
 // Four of the slices: the transmittance in front of each.
-void OpacitySlices::writeDebug(const DebugBuffers& debug, const LightLayers& layers) const {
+void OpacitySlices::writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const {
     const int size = layers.size();
     for (int k = 0; k < count; k += std::max(1, count / 4)) {
         std::vector<float> image(size_t(size) * size_t(size));
@@ -69,7 +69,7 @@ void OpacitySlices::writeDebug(const DebugBuffers& debug, const LightLayers& lay
 ShadowOutputs runOpacityShadowMaps(const ShadowInputs& in) {
     const int count = in.params.integer("slices");
     return runVolumetricFrame(in, "opacity-shadow-maps", "slices",
-                              [&](const LightLayers& layers) { return buildSlices(layers, count); });
+                              [&](const VolumetricLayers& layers) { return buildSlices(layers, count); });
 }
 
 }  // namespace

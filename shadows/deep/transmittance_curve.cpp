@@ -6,7 +6,7 @@
 
 namespace shadowlab {
 
-void ExactCurves::build(const LightLayers& layers, size_t texel, std::vector<CurveVertex>& out) {
+void ExactCurves::build(const VolumetricLayers& layers, size_t texel, std::vector<CurveVertex>& out) {
     out.clear();
     std::vector<Breakpoint>& points = points_;
     points.clear();
@@ -41,7 +41,7 @@ void ExactCurves::build(const LightLayers& layers, size_t texel, std::vector<Cur
     }
 }
 
-double opticalDepthBefore(const LightLayers& layers, size_t texel, double z) {
+double opticalDepthBefore(const VolumetricLayers& layers, size_t texel, double z) {
     double tau = 0.0;
     for (uint32_t e = layers.start[texel]; e < layers.start[texel + 1]; ++e) {
         const double near = layers.depthNear[e], far = layers.depthFar[e];

@@ -26,7 +26,7 @@ class ExactCurves {
 public:
     // Texel t's exact curve into `out` (cleared first); empty where nothing translucent
     // lies in front of the opaque surface.
-    void build(const LightLayers& layers, size_t texel, std::vector<CurveVertex>& out);
+    void build(const VolumetricLayers& layers, size_t texel, std::vector<CurveVertex>& out);
 
 private:
     // Where tau(z) changes: a jump (a surface) or a change of slope (a volume piece's ends).
@@ -39,7 +39,7 @@ private:
 
 // The optical depth of texel t's events in front of depth z (a volume piece counts the part
 // in front of z): what opacity shadow maps sample at their slices.
-double opticalDepthBefore(const LightLayers& layers, size_t texel, double z);
+double opticalDepthBefore(const VolumetricLayers& layers, size_t texel, double z);
 
 // T(z) of a curve: 1 in front of its first vertex, linear between vertices, the last value
 // behind the last; at a step's own depth the value in front of it, so a receiver on a

@@ -26,7 +26,7 @@ VolumetricSettings readVolumetricSettings(const TechniqueParams& params) {
 VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const CasterTransmission& transmission,
                                      const VolumetricSettings& settings, StageTimer& timer) {
     VolumetricFrame frame{pointLightFor(in.light), {}, {}};
-    frame.layers = renderLightLayers(in, frame.light, transmission,
+    frame.layers = renderVolumetricLayers(in, frame.light, transmission,
                                      {settings.map.resolution, polygonOffsetFor(settings.map.bias)});
     timer.lap("layers");
     const std::vector<DepthMap> maps{frame.layers.opaque};
@@ -38,7 +38,7 @@ VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const CasterTransmi
 }
 
 void addVolumetricStats(const VolumetricFrame& frame, double bytesPerTexel, std::vector<TechniqueStat>& stats) {
-    const LightLayers& layers = frame.layers;
+    const VolumetricLayers& layers = frame.layers;
     const double texels = double(layers.size()) * double(layers.size());
     uint32_t most = 0;
     for (size_t t = 0; t + 1 < layers.start.size(); ++t) most = std::max(most, layers.eventCount(t));

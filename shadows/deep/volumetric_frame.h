@@ -35,7 +35,7 @@ VolumetricSettings readVolumetricSettings(const TechniqueParams& params);
 // lookup (stage `opaque_lookup`), for a hard light (an area light's centre stands in).
 struct VolumetricFrame {
     Light light;
-    LightLayers layers;
+    VolumetricLayers layers;
     std::vector<float> opaqueV;
 };
 VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const CasterTransmission& transmission,

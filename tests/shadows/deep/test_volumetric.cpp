@@ -58,7 +58,8 @@ struct VolumetricCase {
     }
 };
 
-const std::vector<std::string> kVolumetricTechniques = {"coloured-shadow-map", "opacity-shadow-maps", "deep-shadow-maps",
+const std::vector<std::string> kVolumetricTechniques = {"coloured-shadow-map", "opacity-shadow-maps",
+                                                        "deep-shadow-maps",
                                                         "adaptive-volumetric-shadow-maps"};
 
 // The three maps that keep a curve per texel (all but the coloured map) within `bound`.
@@ -70,13 +71,13 @@ void checkCurveMapsBelow(const VolumetricCase& c, double bound) {
 }
 
 // A texel's events from a list of (near, far, optical depth): one texel, one map.
-LightLayers oneTexel(const std::vector<std::array<float, 3>>& events) {
-    LightLayers layers;
+VolumetricLayers oneTexel(const std::vector<std::array<float, 3>>& events) {
+    VolumetricLayers layers;
     layers.start = {0, uint32_t(events.size())};
     for (const auto& e : events) {
         layers.depthNear.push_back(e[0]), layers.depthFar.push_back(e[1]), layers.opticalDepth.push_back(e[2]);
         layers.passed.push_back(glm::vec3(std::exp(-e[2])));
-        layers.triangle.push_back(e[0] == e[1] ? 0 : LightLayers::kVolumePiece);
+        layers.triangle.push_back(e[0] == e[1] ? 0 : VolumetricLayers::kVolumePiece);
     }
     return layers;
 }
@@ -85,7 +86,7 @@ LightLayers oneTexel(const std::vector<std::array<float, 3>>& events) {
 
 TEST_CASE("a texel's exact curve steps at surfaces and ramps across volume pieces") {
     // Surfaces at 0.2 (tau 0.5) and 0.6 (tau 0.25); a volume piece from 0.3 to 0.5 (tau 0.1).
-    const LightLayers layers = oneTexel({{0.2f, 0.2f, 0.5f}, {0.3f, 0.5f, 0.1f}, {0.6f, 0.6f, 0.25f}});
+    const VolumetricLayers layers = oneTexel({{0.2f, 0.2f, 0.5f}, {0.3f, 0.5f, 0.1f}, {0.6f, 0.6f, 0.25f}});
     std::vector<CurveVertex> curve;
     ExactCurves().build(layers, 0, curve);
     CHECK(transmittanceAt(curve, 0.1f) == 1.0f);
@@ -102,9 +103,12 @@ TEST_CASE("a texel's exact curve steps at surfaces and ramps across volume piece
 TEST_CASE("compression keeps a curve within its tolerance with fewer vertices") {
     // A staircase of 60 thin layers and a long volume ramp, the shape of hair over smoke.
     std::vector<std::array<float, 3>> events;
-    for (int k = 0; k < 60; ++k) events.push_back({0.1f + 0.004f * float(k), 0.1f + 0.004f * float(k), 0.02f + 0.001f * float(k % 7)});
+    for (int k = 0; k < 60; ++k) {
+        const float depth = 0.1f + 0.004f * float(k);
+        events.push_back({depth, depth, 0.02f + 0.001f * float(k % 7)});
+    }
     for (int k = 0; k < 40; ++k) events.push_back({0.5f + 0.01f * float(k), 0.51f + 0.01f * float(k), 0.05f});
-    const LightLayers layers = oneTexel(events);
+    const VolumetricLayers layers = oneTexel(events);
     std::vector<CurveVertex> exact, compressed;
     ExactCurves().build(layers, 0, exact);
     for (float tolerance : {0.0f, 0.005f, 0.02f, 0.1f}) {
@@ -211,7 +215,7 @@ TEST_CASE("adaptive nodes keep the final transmittance exactly and approach the 
         const float depth = 0.2f + 0.005f * float((k * 37) % 80);
         events.push_back({depth, depth, 0.03f + 0.002f * float(k % 5)});
     }
-    const LightLayers layers = oneTexel(events);
+    const VolumetricLayers layers = oneTexel(events);
     std::vector<CurveVertex> exact;
     ExactCurves().build(layers, 0, exact);
     double previous = 1.0;
