@@ -29,9 +29,9 @@ VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const CasterTransmi
     frame.layers = renderVolumetricLayers(in, frame.light, transmission,
                                      {settings.map.resolution, polygonOffsetFor(settings.map.bias)});
     timer.lap("layers");
-    const std::vector<DepthMap> maps{frame.layers.opaque};
-    ShadowLookup opaque = lookUpShadows(in.gbuffer, in.camera(), frame.light, maps, OneMap{}, settings.map.bias,
-                                        makePcfKernel(settings.map.filter), in.simd);
+    // The opaque map read in place, the one map of the lookup.
+    ShadowLookup opaque = lookUpShadows(in.gbuffer, in.camera(), frame.light, std::span(&frame.layers.opaque, 1),
+                                        OneMap{}, settings.map.bias, makePcfKernel(settings.map.filter), in.simd);
     frame.opaqueV = std::move(opaque.visibility);
     timer.lap("opaque_lookup");
     return frame;

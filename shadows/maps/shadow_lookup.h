@@ -120,7 +120,7 @@ void lookUpEveryRow(const GBuffer& g, const LookupPass& pass, const LookupPass::
 // everyPixelDensity: measure the texel density at every pixel (the debug view), not only
 // at the sample its median is taken over.
 template <class MapSelector>
-ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& light, const std::vector<DepthMap>& maps,
+ShadowLookup lookUpShadows(const GBuffer& g, const Camera& camera, const Light& light, std::span<const DepthMap> maps,
                            const MapSelector& select, const BiasSettings& bias, const PcfKernel& kernel,
                            raster::SimdLevel simd, bool everyPixelDensity = false) {
     ShadowLookup out;

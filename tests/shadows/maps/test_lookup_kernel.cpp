@@ -176,8 +176,10 @@ TEST_CASE("shadow lookup: a vector across two maps takes each lane from its own 
     levels.push_back(raster::SimdLevel::Scalar);
     for (raster::SimdLevel level : levels) {
         const ShadowLookup both = lookUpShadows(s.g, s.scene.camera, s.light, maps, alternate, {}, kernel, level);
-        const ShadowLookup first = lookUpShadows(s.g, s.scene.camera, s.light, {maps[0]}, OneMap{}, {}, kernel, level);
-        const ShadowLookup second = lookUpShadows(s.g, s.scene.camera, s.light, {maps[1]}, OneMap{}, {}, kernel, level);
+        const ShadowLookup first =
+            lookUpShadows(s.g, s.scene.camera, s.light, std::span(&maps[0], 1), OneMap{}, {}, kernel, level);
+        const ShadowLookup second =
+            lookUpShadows(s.g, s.scene.camera, s.light, std::span(&maps[1], 1), OneMap{}, {}, kernel, level);
         int fromSecond = 0, mismatches = 0;
         for (size_t k = 0; k < both.visibility.size(); ++k) {
             if (both.mapIndex[k] < 0) continue;
