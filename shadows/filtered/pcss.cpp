@@ -5,11 +5,13 @@
 // the only per-pixel randomness is the disk's rotation hashed from the pixel index, so V
 // is the same bytes for any thread count.
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/filtered/pcss.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
+#include "shadows/maps/min_max_hierarchy.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_lookup.h"
 #include "shadows/maps/shadow_map_debug.h"
@@ -22,6 +24,20 @@ namespace {
 // the PCF radius is never below half a texel and its taps round to the texel they fall in.
 constexpr double kFitMarginTexels = 1.5;
 
+// The share of the taps a per-pixel PCSS takes (the search's at every pixel the light
+// reaches, the filter's where the search found blockers) whose answers were proved, summed
+// in pixel order: the same figure for any thread count and SIMD level.
+double knownTapsPercent(const GBuffer& g, const Light& light, const PcssBuffers& b, const PcssSettings& settings) {
+    const LightReach reaches(light);
+    double taken = 0.0, known = 0.0;
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
+        taken += settings.search.taps + (b.blockerDistance[k] > 0.0f ? settings.filterTaps : 0);
+        known += b.knownTaps[k];
+    }
+    return taken > 0.0 ? 100.0 * known / taken : 0.0;
+}
+
 void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuffers& b) {
     const DebugBuffers debug(in.debugDir, "pcss");
     if (!debug.enabled()) return;
@@ -30,6 +46,10 @@ void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuf
     debug.write("blocker-distance", g.width, g.height, b.blockerDistance, float(soft.zNear()), float(soft.zFar()));
     const float widest = *std::max_element(b.widthTexels.begin(), b.widthTexels.end());
     debug.write("penumbra-width", g.width, g.height, b.widthTexels, 0.0f, std::max(widest, 1.0f));
+    if (b.knownTaps.empty()) return;
+    writeMinMaxHierarchy(debug, MinMaxHierarchy(soft.map));   // built again: debug views only
+    const float most = *std::max_element(b.knownTaps.begin(), b.knownTaps.end());
+    debug.write("known-taps", g.width, g.height, b.knownTaps, 0.0f, std::max(most, 1.0f));
 }
 
 ShadowOutputs runPcss(const ShadowInputs& in) {
@@ -56,6 +76,7 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
                  {"mean_filter_width_texels", penumbra ? widthSum / double(penumbra) : 0.0},
                  {"light_near_m", soft.zNear()},
                  {"light_far_m", soft.zFar()}};
+    if (settings.minMaxHierarchy) out.stats.push_back({"hierarchy_known_taps_percent", b.knownTapsPercent});
     timer.appendTo(out.stats);
     return out;
 }
@@ -66,11 +87,14 @@ std::vector<ParamSpec> pcssParamSpecs() {
     std::vector<ParamSpec> params = {softResolutionParam("texels per side of the map")};
     for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
     params.push_back(integerParam("filter-taps", 32, 1, 128, "PCF: Poisson taps over the eq. 7.6 width"));
+    params.push_back(flagParam("min-max-hierarchy", false,
+                               "skip the taps the map's min/max depth hierarchy proves lit or shadowed (same V)"));
     return params;
 }
 
 PcssSettings readPcssSettings(const TechniqueParams& params) {
-    return {params.integer("resolution"), readBlockerSearch(params), params.integer("filter-taps")};
+    return {params.integer("resolution"), readBlockerSearch(params), params.integer("filter-taps"),
+            params.flag("min-max-hierarchy")};
 }
 
 SoftShadowMap renderPcssMap(const ShadowInputs& in, int resolution) {
@@ -83,11 +107,18 @@ PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, cons
     const GBuffer& g = in.gbuffer;
     const PcfKernel searchDisk = makePcfKernel({FilterKind::Poisson, 3, settings.search.taps, 1.0});
     const PcfKernel filterDisk = makePcfKernel({FilterKind::Poisson, 3, settings.filterTaps, 1.0});
-    const LookupPass pass(soft.map, soft.light, {searchDisk, settings.search.region, filterDisk, soft.lightTexels},
+    std::optional<MinMaxHierarchy> hierarchy;
+    if (settings.minMaxHierarchy) hierarchy.emplace(soft.map);
+    const LookupPass pass(soft.map, soft.light,
+                          {searchDisk, settings.search.region, filterDisk, soft.lightTexels,
+                           hierarchy ? &hierarchy->forKernel() : nullptr},
                           in.simd);
-    PcssBuffers out{std::vector<float>(g.pixelCount()), std::vector<float>(g.pixelCount()),
-                    std::vector<float>(g.pixelCount())};
-    lookUpEveryRow(g, pass, {out.visibility.data(), out.blockerDistance.data(), out.widthTexels.data()});
+    const size_t n = g.pixelCount();
+    PcssBuffers out{std::vector<float>(n), std::vector<float>(n), std::vector<float>(n),
+                    std::vector<float>(hierarchy ? n : 0)};
+    lookUpEveryRow(g, pass, {out.visibility.data(), out.blockerDistance.data(), out.widthTexels.data(),
+                             hierarchy ? out.knownTaps.data() : nullptr});
+    if (hierarchy) out.knownTapsPercent = knownTapsPercent(g, soft.light, out, settings);
     return out;
 }
 

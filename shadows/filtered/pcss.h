@@ -15,9 +15,10 @@ struct PcssSettings {
     int resolution = 1024;          // texels per side of the map
     BlockerSearchSettings search;
     int filterTaps = 32;            // Poisson taps of the PCF over the eq. 7.6 width
+    bool minMaxHierarchy = false;   // skip the taps the map's min/max hierarchy proves (same bits)
 };
 
-// resolution, search-taps, search-region, filter-taps.
+// resolution, search-taps, search-region, filter-taps, min-max-hierarchy.
 std::vector<ParamSpec> pcssParamSpecs();
 PcssSettings readPcssSettings(const TechniqueParams& params);
 
@@ -28,9 +29,14 @@ struct PcssBuffers {
     std::vector<float> visibility;
     std::vector<float> blockerDistance;   // d_o, m from the light's centre; 0 where no blocker was found
     std::vector<float> widthTexels;       // the eq. 7.6 filter width
+    // With the hierarchy: per pixel, the taps whose answer it proved (else empty), and the
+    // share of the taps a per-pixel PCSS takes that they are, percent.
+    std::vector<float> knownTaps;
+    double knownTapsPercent = 0.0;
 };
 
 // The three steps per camera pixel; where the light's centre cannot reach a pixel, V = 0.
+// With settings.minMaxHierarchy, the map's hierarchy is built first (min_max_hierarchy.h).
 PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const PcssSettings& settings);
 
 }  // namespace shadowlab

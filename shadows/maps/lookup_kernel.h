@@ -14,6 +14,18 @@
 
 namespace shadowlab {
 
+// A min/max depth hierarchy of a map (min_max_hierarchy.h) as the kernel reads it: level
+// l = 1 .. levels has size[l - 1] nodes of 2^l x 2^l texels per side, row-major from
+// offset[l - 1] in each of the two arrays.
+inline constexpr int kMaxHierarchyLevels = 16;
+struct LookupHierarchy {
+    const float* least;
+    const float* greatest;
+    int levels;
+    int size[kMaxHierarchyLevels];
+    int offset[kMaxHierarchyLevels];
+};
+
 // One depth map as the kernel reads it.
 struct LookupMap {
     float texelFromWorld[16];   // column-major (as glm), rounded from DepthMap::texelFromWorld
@@ -21,6 +33,8 @@ struct LookupMap {
     const float* depth;         // block-linear (raster::blockLinearIndex)
     int size;                   // texels per side
     int tilesX;                 // tiles per row of the block-linear buffer
+    // pcss: where the hierarchy proves every tap's answer, the taps are skipped; null: none.
+    const LookupHierarchy* hierarchy;
 };
 
 // The bias modes and filters, numbered as BiasMode and FilterKind (checked where they meet).
@@ -82,6 +96,8 @@ struct LookupRow {
     // out, pcss only (zeroed by the caller: vectors with no served pixel are not written):
     float* blockerDistance;     // the blockers' mean distance d_o, 0 without blockers
     float* penumbraWidth;       // the filter's width in texels (eq. 7.6), 0 likewise
+    // out, pcss with a hierarchy only (else null): the taps whose answer the hierarchy proved
+    float* knownTaps;
     int count;
 };
 

@@ -216,6 +216,74 @@ struct Poisson {
     }
 };
 
+// The depth range of the texels [x0, x1] x [y0, y1] (clamped to the map) from the map's
+// min/max hierarchy, lane by lane as MinMaxHierarchy::over: the first level whose nodes are
+// as wide as the rectangle, where it meets at most 2 x 2 of them. A node's index on an axis
+// is c / 2^l, exact in float for every texel index.
+struct DepthRangeF {
+    F32 least, greatest;
+};
+inline DepthRangeF depthRangeOver(const LookupMap& map, I32 x0, I32 y0, I32 x1, I32 y1) {
+    const LookupHierarchy& h = *map.hierarchy;
+    const I32 zero = simd::splat(int32_t(0)), last = simd::splat(int32_t(map.size - 1));
+    const auto clamp = [&](I32 c) { return simd::min(simd::max(c, zero), last); };
+    x0 = clamp(x0), y0 = clamp(y0), x1 = clamp(x1), y1 = clamp(y1);
+    const I32 span = simd::max(x1 - x0, y1 - y0);
+    F32 scale = simd::splat(0.5f);
+    I32 offset = simd::splat(int32_t(h.offset[0])), size = simd::splat(int32_t(h.size[0]));
+    for (int l = 1; l < h.levels; ++l) {   // level l + 1 where span >= 2^l
+        const Mask wider = simd::cmpGt(span, simd::splat(int32_t((1 << l) - 1)));
+        scale = simd::select(wider, simd::splat(1.0f / float(2 << l)), scale);
+        offset = simd::select(wider, simd::splat(int32_t(h.offset[l])), offset);
+        size = simd::select(wider, simd::splat(int32_t(h.size[l])), size);
+    }
+    const auto node = [&](I32 c) { return simd::truncateToInt(simd::toFloat(c) * scale); };
+    const I32 nx0 = node(x0), nx1 = node(x1), row0 = offset + node(y0) * size, row1 = offset + node(y1) * size;
+    const I32 nodes[4] = {row0 + nx0, row0 + nx1, row1 + nx0, row1 + nx1};
+    DepthRangeF r{simd::gather(h.least, nodes[0]), simd::gather(h.greatest, nodes[0])};
+    for (int k = 1; k < 4; ++k) {
+        r.least = simd::min(r.least, simd::gather(h.least, nodes[k]));
+        r.greatest = simd::max(r.greatest, simd::gather(h.greatest, nodes[k]));
+    }
+    return r;
+}
+
+// What the hierarchy proves about every tap of a disk of radius (radiusX, radiusY) texels
+// around the receiver: that litBy answers lit at each, or shadowed at each (RTR 7.6,
+// "rapidly determine fully lit and fully shadowed conditions"). Exact, not approximate:
+//  - the taps land in the texels [floor(t - e), floor(t + e)], e = 1.0001 radius, since a
+//    rotated unit-disk tap is at most 1 + a few ulps from the centre and each rounding is
+//    monotone;
+//  - litBy's float plane depth is monotone in x and in y (each of its roundings is), so
+//    its extremes over the rectangle are at the corners, computed with the same operations;
+//  - stored + tolerance is monotone in stored, so the range's ends bound every compare.
+// A texel clamped to the border is compared at the tap's own (unclamped) coordinates, as
+// litBy does; the range covers the clamped rectangle.
+struct TapProof {
+    Mask lit, shadowed;
+};
+template <bool kPlane>
+TapProof proveTaps(const LookupMap& map, const Receiver& r, F32 radiusX, F32 radiusY) {
+    const F32 margin = simd::splat(1.0001f);
+    const I32 x0 = texelIndexOf(r.texelX - radiusX * margin), x1 = texelIndexOf(r.texelX + radiusX * margin);
+    const I32 y0 = texelIndexOf(r.texelY - radiusY * margin), y1 = texelIndexOf(r.texelY + radiusY * margin);
+    F32 nearest = r.depth, farthest = r.depth;   // the receiver's compare depth over the rectangle
+    if constexpr (kPlane) {
+        const F32 half = simd::splat(0.5f);
+        const auto depthAt = [&](I32 x, I32 y) {   // litBy's plane depth
+            return r.depth + r.slopeX * ((simd::toFloat(x) + half) - r.texelX) +
+                   r.slopeY * ((simd::toFloat(y) + half) - r.texelY);
+        };
+        const F32 a = depthAt(x0, y0), b = depthAt(x1, y0), c = depthAt(x0, y1), d = depthAt(x1, y1);
+        nearest = simd::min(simd::min(a, b), simd::min(c, d));
+        farthest = simd::max(simd::max(a, b), simd::max(c, d));
+    }
+    const DepthRangeF stored = depthRangeOver(map, x0, y0, x1, y1);
+    const F32 one = simd::splat(1.0f);
+    return {simd::cmpLe(one, stored.least) | simd::cmpLe(farthest, stored.least + r.tolerance),
+            simd::cmpLt(stored.greatest, one) & simd::cmpLt(stored.greatest + r.tolerance, nearest)};
+}
+
 // Percentage-closer soft shadows (Fernando 2005, steps 1 to 3; RTR 7.6) on a perspective
 // map from the light's centre, the receiver on its own plane (blocker_search.h says why):
 //   1. blocker search: the rotated search disk over the light's cone from the receiver cut
@@ -224,7 +292,10 @@ struct Poisson {
 //   3. the rotated filter disk of radius w / 2: the lit fraction. Never below half a texel,
 //      where the taps all fall in the receiver's own texel: the map's resolution, not the
 //      light, limits the penumbra there (contact shadows are hard).
-// No blocker (or a receiver nearer than the near plane): fully lit.
+// No blocker (or a receiver nearer than the near plane): fully lit. With the map's min/max
+// hierarchy, a vector skips the search where every lane's search disk is proved lit (V = 1),
+// and the filter where every lane's filter disk is proved lit or shadowed (V = 1 or 0, the
+// values the taps give: n / n and 0 / n); the answers are the same bits either way.
 struct Pcss {
     template <bool kPlane>
     static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
@@ -236,6 +307,15 @@ struct Pcss {
         const F32 region = simd::splat(0.5f * c.searchRegion);
         const F32 searchX = region * widthTexels(zNear, 0), searchY = region * widthTexels(zNear, 1);
         const Mask searched = simd::cmpLt(zNear, dr);
+        // PCSS has one map: the lanes it serves are the served ones.
+        const Mask lanes = simd::cmpGt(simd::loadU8(row.served + i), simd::splat(int32_t(0)));
+        const bool proving = map.hierarchy != nullptr;
+        const Mask searchKnown = proving ? !searched | proveTaps<kPlane>(map, r, searchX, searchY).lit : !searched;
+        if (proving && !simd::any(lanes & !searchKnown)) {
+            simd::store(row.blockerDistance + i, zero), simd::store(row.penumbraWidth + i, zero);
+            simd::store(row.knownTaps + i, simd::splat(float(c.searchTaps)));
+            return simd::splat(1.0f);
+        }
         // A stored window depth's distance, f n / (f - z (f - n)) (SoftShadowMap::distanceOf).
         const F32 farNear = simd::splat(c.zFar * c.zNear), far = simd::splat(c.zFar), range = simd::splat(c.zFar - c.zNear);
         F32 blockers = zero, distanceSum = zero;   // in tap order: the same sums at every width
@@ -253,10 +333,20 @@ struct Pcss {
         // clamped to near .. d_r (width 0 at contact), as blocker_search.cpp.
         const F32 occluder = simd::min(simd::max(distanceSum / blockers, zNear), dr);
         const F32 widthX = widthTexels(occluder, 0), widthY = widthTexels(occluder, 1);
-        const F32 visibility = poissonLitFraction<kPlane>(map, r, cosine, sine, simd::max(half * widthX, half),
-                                                          simd::max(half * widthY, half), c.diskX, c.diskY, c.diskTaps);
+        const F32 radiusX = simd::max(half * widthX, half), radiusY = simd::max(half * widthY, half);
+        TapProof filter{simd::noLanes(), simd::noLanes()};
+        if (proving) filter = proveTaps<kPlane>(map, r, radiusX, radiusY);
+        const Mask filterKnown = filter.lit | filter.shadowed;
+        const F32 visibility = proving && !simd::any(lanes & shadowed & !filterKnown)
+                                   ? simd::select(filter.shadowed, zero, simd::splat(1.0f))
+                                   : poissonLitFraction<kPlane>(map, r, cosine, sine, radiusX, radiusY, c.diskX,
+                                                                c.diskY, c.diskTaps);
         simd::store(row.blockerDistance + i, simd::select(shadowed, occluder, zero));
         simd::store(row.penumbraWidth + i, simd::select(shadowed, half * (widthX + widthY), zero));
+        if (proving) {
+            const F32 filterTaps = simd::select(shadowed & filterKnown, simd::splat(float(c.diskTaps)), zero);
+            simd::store(row.knownTaps + i, simd::select(searchKnown, simd::splat(float(c.searchTaps)), filterTaps));
+        }
         return simd::select(shadowed, visibility, simd::splat(1.0f));
     }
 };

@@ -61,6 +61,7 @@ struct LookupPass::Tables {
     bool rotated = false;     // the filter turns a Poisson disk per pixel
     std::vector<float> rotationCos, rotationSin;   // rotated: per angle of pcf.h, its cosine and sine
     bool pcss = false;        // the filter reads the receivers' distance and writes two more images
+    bool proving = false;     // pcss with a hierarchy: it writes the known taps too
 };
 
 LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& light, const BiasSettings& bias,
@@ -115,6 +116,8 @@ LookupPass::LookupPass(const DepthMap& map, const Light& light, const Pcss& pcss
     c.searchRegion = float(pcss.searchRegion);
     c.lightTexels[0] = float(pcss.lightTexels.x), c.lightTexels[1] = float(pcss.lightTexels.y);
     c.zNear = float(map.view.zNear), c.zFar = float(map.view.zFar);
+    t.maps[0].hierarchy = pcss.hierarchy;
+    t.proving = pcss.hierarchy != nullptr;
 }
 
 LookupPass::~LookupPass() = default;
@@ -127,6 +130,7 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
     if (t.pcss && (!out.blockerDistance || !out.penumbraWidth)) {
         throw std::invalid_argument("shadow lookup: a PCSS pass writes the blocker distance and penumbra width too");
     }
+    if (t.proving && !out.knownTaps) throw std::invalid_argument("shadow lookup: a hierarchy's pass writes known taps");
     const int count = g.width;
     if (t.rotated) {
         // The per-pixel rotation of the Poisson disk, a hash of the pixel index (pcf.h).
@@ -143,7 +147,8 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
     const auto image = [&](float* a, int at) { return a ? a + k + size_t(at) : a; };
     const LookupRow row{glm::value_ptr(g.position[k]), glm::value_ptr(g.normal[k]), scratch.served.data(),
                         scratch.rotationCos.data(), scratch.rotationSin.data(), arrays, image(out.visibility, 0),
-                        image(out.blockerDistance, 0), image(out.penumbraWidth, 0), vectors};
+                        image(out.blockerDistance, 0), image(out.penumbraWidth, 0), image(out.knownTaps, 0),
+                        vectors};
     // The row's tail, fewer pixels than a vector, goes through the scalar twins (the same bits).
     const auto at = [&](float* a) { return a ? a + vectors : a; };
     const LookupRow tail{row.position + 3 * vectors, row.normal + 3 * vectors, row.served + vectors,
@@ -151,7 +156,7 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
                          {at(arrays.texelX), at(arrays.texelY), at(arrays.depth), at(arrays.slopeX), at(arrays.slopeY),
                           at(arrays.tolerance), at(arrays.distance)},
                          image(out.visibility, vectors), image(out.blockerDistance, vectors),
-                         image(out.penumbraWidth, vectors), count - vectors};
+                         image(out.penumbraWidth, vectors), image(out.knownTaps, vectors), count - vectors};
     const auto stage = [&](LookupKernel vector, LookupKernel scalar) {
         vector(t.constants, row);
         scalar(t.constants, tail);

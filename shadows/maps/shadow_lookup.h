@@ -84,6 +84,9 @@ public:
         double searchRegion = 1.0;
         const PcfKernel& filter;
         glm::dvec2 lightTexels{0.0};
+        // The map's min/max hierarchy (min_max_hierarchy.h), which lets the kernel skip the
+        // taps whose answer it proves; null: every tap is taken. It must outlive the pass.
+        const LookupHierarchy* hierarchy = nullptr;
     };
     LookupPass(const DepthMap& map, const Light& light, const Pcss& pcss, raster::SimdLevel simd);
     ~LookupPass();
@@ -97,11 +100,13 @@ public:
             : served(size_t(count)), receivers(7 * size_t(count)), rotationCos(size_t(count)), rotationSin(size_t(count)) {}
     };
 
-    // Whole images the pass writes, row by row; the last two only for pcss.
+    // Whole images the pass writes, row by row; the others only for pcss, the last only
+    // with a hierarchy (LookupRow::knownTaps).
     struct Outputs {
         float* visibility;
         float* blockerDistance = nullptr;
         float* penumbraWidth = nullptr;
+        float* knownTaps = nullptr;
     };
 
     // Row j's pixels into the outputs, given which map serves each in scratch.served; the

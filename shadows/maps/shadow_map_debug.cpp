@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "shading/image_io.h"
 
@@ -12,6 +13,17 @@ void writeDepthMap(const DebugBuffers& debug, const std::string& name, const Dep
     const std::vector<float> image = map.image();
     const float nearest = *std::min_element(image.begin(), image.end());
     debug.write(name, map.size, map.size, image, nearest, 1.0f);
+}
+
+void writeMinMaxHierarchy(const DebugBuffers& debug, const MinMaxHierarchy& hierarchy) {
+    if (!debug.enabled()) return;
+    const std::vector<float> top = hierarchy.leastImage(hierarchy.levels());
+    const float nearest = *std::min_element(top.begin(), top.end());
+    for (int level = 2; level <= std::min(6, hierarchy.levels()); level += 2) {
+        const int size = hierarchy.sizeOf(level);
+        debug.write("hierarchy-min-" + std::to_string(level), size, size, hierarchy.leastImage(level), nearest, 1.0f);
+        debug.write("hierarchy-max-" + std::to_string(level), size, size, hierarchy.greatestImage(level), nearest, 1.0f);
+    }
 }
 
 void writeTexelDensity(const DebugBuffers& debug, const GBuffer& g, const ShadowLookup& lookup) {

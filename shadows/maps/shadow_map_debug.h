@@ -9,6 +9,7 @@
 #include "shading/gbuffer.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
+#include "shadows/maps/min_max_hierarchy.h"
 #include "shadows/maps/shadow_lookup.h"
 
 namespace shadowlab {
@@ -19,5 +20,9 @@ void writeTexelDensity(const DebugBuffers& debug, const GBuffer& g, const Shadow
 // DIR/<technique>-<name>.png: one colour per map index, darkened where V < 1.
 void writeMapColouring(const std::filesystem::path& directory, const std::string& technique, const std::string& name,
                        const GBuffer& g, const ShadowLookup& lookup);
+
+// Levels 2, 4 and 6 of a min/max hierarchy (those it has): `hierarchy-min-L` and
+// `hierarchy-max-L`, each on the depth range of the whole map.
+void writeMinMaxHierarchy(const DebugBuffers& debug, const MinMaxHierarchy& hierarchy);
 
 }  // namespace shadowlab

@@ -70,7 +70,7 @@ TEST_CASE("PCF over a straight edge equals the kernel's cumulative weights, at e
             const PcfKernel kernel = makePcfKernel(settings);
             std::vector<float> diskX, diskY;
             for (const glm::dvec2& d : kernel.disk) diskX.push_back(float(d.x)), diskY.push_back(float(d.y));
-            const LookupMap lookupMap{{}, {}, map.depth.data(), map.size, map.tilesX};
+            const LookupMap lookupMap{{}, {}, map.depth.data(), map.size, map.tilesX, nullptr};
             LookupConstants c{};
             c.maps = &lookupMap, c.mapCount = 1, c.gridSize = settings.gridSize;
             c.diskX = diskX.data(), c.diskY = diskY.data(), c.diskTaps = int(diskX.size());
@@ -85,7 +85,7 @@ TEST_CASE("PCF over a straight edge equals the kernel's cumulative weights, at e
             std::vector<float> x = u;
             const LookupRow row{nullptr, nullptr, served.data(), rotationCos.data(), rotationSin.data(),
                                 {x.data(), y.data(), depth.data(), nullptr, nullptr, nullptr, nullptr},
-                                visibility.data(), nullptr, nullptr, count};
+                                visibility.data(), nullptr, nullptr, nullptr, count};
             lookupKernels(level).filter[int(settings.kind)][0](c, row);
             for (int k = 0; k < count; ++k) {
                 CAPTURE(u[size_t(k)]);
