@@ -5,13 +5,11 @@
 // the only per-pixel randomness is the disk's rotation hashed from the pixel index, so V
 // is the same bytes for any thread count.
 #include <algorithm>
-#include <optional>
 #include <stdexcept>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/filtered/pcss.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
-#include "shadows/maps/min_max_hierarchy.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_lookup.h"
 #include "shadows/maps/shadow_map_debug.h"
@@ -38,7 +36,8 @@ double knownTapsPercent(const GBuffer& g, const Light& light, const PcssBuffers&
     return taken > 0.0 ? 100.0 * known / taken : 0.0;
 }
 
-void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuffers& b) {
+void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuffers& b,
+                const std::optional<MinMaxHierarchy>& hierarchy) {
     const DebugBuffers debug(in.debugDir, "pcss");
     if (!debug.enabled()) return;
     writeDepthMap(debug, "depth", soft.map);
@@ -46,8 +45,8 @@ void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuf
     debug.write("blocker-distance", g.width, g.height, b.blockerDistance, float(soft.zNear()), float(soft.zFar()));
     const float widest = *std::max_element(b.widthTexels.begin(), b.widthTexels.end());
     debug.write("penumbra-width", g.width, g.height, b.widthTexels, 0.0f, std::max(widest, 1.0f));
-    if (b.knownTaps.empty()) return;
-    writeMinMaxHierarchy(debug, MinMaxHierarchy(soft.map));   // built again: debug views only
+    if (!hierarchy) return;
+    writeMinMaxHierarchy(debug, *hierarchy);
     const float most = *std::max_element(b.knownTaps.begin(), b.knownTaps.end());
     debug.write("known-taps", g.width, g.height, b.knownTaps, 0.0f, std::max(most, 1.0f));
 }
@@ -59,9 +58,11 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
     StageTimer timer;
     const SoftShadowMap soft = renderPcssMap(in, settings.resolution);
     timer.lap("map");
-    const PcssBuffers b = pcssPerPixel(in, soft, settings);
+    const std::optional<MinMaxHierarchy> hierarchy = pcssHierarchy(soft, settings);
+    timer.lap("hierarchy");
+    const PcssBuffers b = pcssPerPixel(in, soft, settings, hierarchy);
     timer.lap("receivers");
-    writeDebug(in, soft, b);
+    writeDebug(in, soft, b, hierarchy);
     // Figures in pixel order (one thread): the same for any thread count.
     size_t penumbra = 0;
     double widthSum = 0.0;
@@ -103,12 +104,16 @@ SoftShadowMap renderPcssMap(const ShadowInputs& in, int resolution) {
 
 // The three steps per camera pixel in float, through the shadow lookup's vector kernel
 // (shadows/maps/lookup_kernel.inl, filter kLookupPcss).
-PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const PcssSettings& settings) {
+std::optional<MinMaxHierarchy> pcssHierarchy(const SoftShadowMap& soft, const PcssSettings& settings) {
+    if (!settings.minMaxHierarchy) return std::nullopt;
+    return std::optional<MinMaxHierarchy>(std::in_place, soft.map);
+}
+
+PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const PcssSettings& settings,
+                         const std::optional<MinMaxHierarchy>& hierarchy) {
     const GBuffer& g = in.gbuffer;
     const PcfKernel searchDisk = makePcfKernel({FilterKind::Poisson, 3, settings.search.taps, 1.0});
     const PcfKernel filterDisk = makePcfKernel({FilterKind::Poisson, 3, settings.filterTaps, 1.0});
-    std::optional<MinMaxHierarchy> hierarchy;
-    if (settings.minMaxHierarchy) hierarchy.emplace(soft.map);
     const LookupPass pass(soft.map, soft.light,
                           {searchDisk, settings.search.region, filterDisk, soft.lightTexels,
                            hierarchy ? &hierarchy->forKernel() : nullptr},

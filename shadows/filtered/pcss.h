@@ -3,10 +3,12 @@
 // per pixel to choose between the hard and the soft shadow.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/soft_shadow_map.h"
+#include "shadows/maps/min_max_hierarchy.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -35,8 +37,13 @@ struct PcssBuffers {
     double knownTapsPercent = 0.0;
 };
 
+// The map's min/max hierarchy (min_max_hierarchy.h) where settings.minMaxHierarchy asks
+// for it, else none.
+std::optional<MinMaxHierarchy> pcssHierarchy(const SoftShadowMap& soft, const PcssSettings& settings);
+
 // The three steps per camera pixel; where the light's centre cannot reach a pixel, V = 0.
-// With settings.minMaxHierarchy, the map's hierarchy is built first (min_max_hierarchy.h).
-PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const PcssSettings& settings);
+// With a hierarchy, the taps whose answers it proves are skipped (the same bits).
+PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const PcssSettings& settings,
+                         const std::optional<MinMaxHierarchy>& hierarchy);
 
 }  // namespace shadowlab

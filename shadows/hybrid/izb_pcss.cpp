@@ -63,7 +63,7 @@ ShadowOutputs runIzbPcss(const ShadowInputs& in) {
     // 1. PCSS: the soft V and the blocker distances.
     const SoftShadowMap soft = renderPcssMap(in, pcss.resolution);
     timer.lap("pcss_map");
-    const PcssBuffers softPart = pcssPerPixel(in, soft, pcss);
+    const PcssBuffers softPart = pcssPerPixel(in, soft, pcss, pcssHierarchy(soft, pcss));
     timer.lap("pcss");
     // 2. The irregular z-buffer: the exact hard V.
     const ShadowOutputs hardPart = hardShadows(in);

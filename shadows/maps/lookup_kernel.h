@@ -15,12 +15,19 @@
 namespace shadowlab {
 
 // A min/max depth hierarchy of a map (min_max_hierarchy.h) as the kernel reads it: level
-// l = 1 .. levels has size[l - 1] nodes of 2^l x 2^l texels per side, row-major from
-// offset[l - 1] in each of the two arrays.
+// l = firstLevel .. levels has size[l - firstLevel] nodes of 2^l x 2^l texels per side,
+// row-major from offset[l - firstLevel] in each of the arrays: the depth range, and the
+// plane with its residuals.
 inline constexpr int kMaxHierarchyLevels = 16;
 struct LookupHierarchy {
     const float* least;
     const float* greatest;
+    const float* planeDepth;
+    const float* slopeX;
+    const float* slopeY;
+    const float* residualLow;
+    const float* residualHigh;
+    int firstLevel;
     int levels;
     int size[kMaxHierarchyLevels];
     int offset[kMaxHierarchyLevels];

@@ -216,72 +216,87 @@ struct Poisson {
     }
 };
 
-// The depth range of the texels [x0, x1] x [y0, y1] (clamped to the map) from the map's
-// min/max hierarchy, lane by lane as MinMaxHierarchy::over: the first level whose nodes are
-// as wide as the rectangle, where it meets at most 2 x 2 of them. A node's index on an axis
-// is c / 2^l, exact in float for every texel index.
-struct DepthRangeF {
-    F32 least, greatest;
+// The 2 x 2 nodes of the map's min/max hierarchy that hold the texels [x0, x1] x [y0, y1],
+// lane by lane as MinMaxHierarchy::over: the first level whose nodes are as wide as the
+// rectangle. A node's index on an axis is c / 2^l, exact in float for every texel index.
+struct HierarchyNodes {
+    I32 index[4];            // into the level arrays (a node may repeat)
+    F32 centreX[4], centreY[4];
+    F32 halfWidth;           // from a node's centre to its outermost texel centre, (2^l - 1) / 2
 };
-inline DepthRangeF depthRangeOver(const LookupMap& map, I32 x0, I32 y0, I32 x1, I32 y1) {
-    const LookupHierarchy& h = *map.hierarchy;
-    const I32 zero = simd::splat(int32_t(0)), last = simd::splat(int32_t(map.size - 1));
-    const auto clamp = [&](I32 c) { return simd::min(simd::max(c, zero), last); };
-    x0 = clamp(x0), y0 = clamp(y0), x1 = clamp(x1), y1 = clamp(y1);
+inline HierarchyNodes nodesOver(const LookupHierarchy& h, I32 x0, I32 y0, I32 x1, I32 y1) {
     const I32 span = simd::max(x1 - x0, y1 - y0);
-    F32 scale = simd::splat(0.5f);
+    F32 width = simd::splat(float(1 << h.firstLevel));
     I32 offset = simd::splat(int32_t(h.offset[0])), size = simd::splat(int32_t(h.size[0]));
-    for (int l = 1; l < h.levels; ++l) {   // level l + 1 where span >= 2^l
+    for (int l = h.firstLevel; l < h.levels; ++l) {   // level l + 1 where span >= 2^l
         const Mask wider = simd::cmpGt(span, simd::splat(int32_t((1 << l) - 1)));
-        scale = simd::select(wider, simd::splat(1.0f / float(2 << l)), scale);
-        offset = simd::select(wider, simd::splat(int32_t(h.offset[l])), offset);
-        size = simd::select(wider, simd::splat(int32_t(h.size[l])), size);
+        const int k = l + 1 - h.firstLevel;
+        width = simd::select(wider, simd::splat(float(2 << l)), width);
+        offset = simd::select(wider, simd::splat(int32_t(h.offset[k])), offset);
+        size = simd::select(wider, simd::splat(int32_t(h.size[k])), size);
     }
-    const auto node = [&](I32 c) { return simd::truncateToInt(simd::toFloat(c) * scale); };
-    const I32 nx0 = node(x0), nx1 = node(x1), row0 = offset + node(y0) * size, row1 = offset + node(y1) * size;
-    const I32 nodes[4] = {row0 + nx0, row0 + nx1, row1 + nx0, row1 + nx1};
-    DepthRangeF r{simd::gather(h.least, nodes[0]), simd::gather(h.greatest, nodes[0])};
-    for (int k = 1; k < 4; ++k) {
-        r.least = simd::min(r.least, simd::gather(h.least, nodes[k]));
-        r.greatest = simd::max(r.greatest, simd::gather(h.greatest, nodes[k]));
+    const F32 scale = simd::splat(1.0f) / width, half = simd::splat(0.5f);
+    const auto node = [&](I32 c) { return simd::toFloat(simd::truncateToInt(simd::toFloat(c) * scale)); };
+    const F32 nx[2] = {node(x0), node(x1)}, ny[2] = {node(y0), node(y1)};
+    HierarchyNodes out;
+    for (int k = 0; k < 4; ++k) {
+        const F32 x = nx[k % 2], y = ny[k / 2];
+        out.index[k] = offset + simd::truncateToInt(y) * size + simd::truncateToInt(x);
+        out.centreX[k] = (x + half) * width, out.centreY[k] = (y + half) * width;
     }
-    return r;
+    out.halfWidth = (width - simd::splat(1.0f)) * half;
+    return out;
 }
 
 // What the hierarchy proves about every tap of a disk of radius (radiusX, radiusY) texels
-// around the receiver: that litBy answers lit at each, or shadowed at each (RTR 7.6,
-// "rapidly determine fully lit and fully shadowed conditions"). Exact, not approximate:
+// around the receiver: that litBy answers lit at each, or (kShadowed) shadowed at each (RTR 7.6,
+// "rapidly determine fully lit and fully shadowed conditions"), from each node's plane and
+// residuals (min_max_hierarchy.h), so that a receiver lying in the map is proved too:
 //  - the taps land in the texels [floor(t - e), floor(t + e)], e = 1.0001 radius, since a
 //    rotated unit-disk tap is at most 1 + a few ulps from the centre and each rounding is
-//    monotone;
-//  - litBy's float plane depth is monotone in x and in y (each of its roundings is), so
-//    its extremes over the rectangle are at the corners, computed with the same operations;
-//  - stored + tolerance is monotone in stored, so the range's ends bound every compare.
-// A texel clamped to the border is compared at the tap's own (unclamped) coordinates, as
-// litBy does; the range covers the clamped rectangle.
+//    monotone; a rectangle reaching past the map's border (clamped taps) proves nothing;
+//  - over a node, stored - receiver = (node plane - receiver plane) + residual, and the
+//    planes' difference g is affine, within g(centre) -+ (|dSlopeX| + |dSlopeY|) halfWidth;
+//  - lit needs stored + tolerance >= the receiver's depth at every tap, shadowed the
+//    reverse (and no empty texel: residualHigh is then +inf). The float evaluation of both
+//    sides (litBy's and this one) errs by a few u times the magnitudes of their terms
+//    (u = 2^-24); a margin of 8 u times their sum covers it, so a proof is never wrong.
 struct TapProof {
     Mask lit, shadowed;
 };
-template <bool kPlane>
+template <bool kPlane, bool kShadowed>
 TapProof proveTaps(const LookupMap& map, const Receiver& r, F32 radiusX, F32 radiusY) {
-    const F32 margin = simd::splat(1.0001f);
+    const LookupHierarchy& h = *map.hierarchy;
+    const F32 margin = simd::splat(1.0001f), zero = simd::splat(0.0f), one = simd::splat(1.0f);
     const I32 x0 = texelIndexOf(r.texelX - radiusX * margin), x1 = texelIndexOf(r.texelX + radiusX * margin);
     const I32 y0 = texelIndexOf(r.texelY - radiusY * margin), y1 = texelIndexOf(r.texelY + radiusY * margin);
-    F32 nearest = r.depth, farthest = r.depth;   // the receiver's compare depth over the rectangle
-    if constexpr (kPlane) {
-        const F32 half = simd::splat(0.5f);
-        const auto depthAt = [&](I32 x, I32 y) {   // litBy's plane depth
-            return r.depth + r.slopeX * ((simd::toFloat(x) + half) - r.texelX) +
-                   r.slopeY * ((simd::toFloat(y) + half) - r.texelY);
-        };
-        const F32 a = depthAt(x0, y0), b = depthAt(x1, y0), c = depthAt(x0, y1), d = depthAt(x1, y1);
-        nearest = simd::min(simd::min(a, b), simd::min(c, d));
-        farthest = simd::max(simd::max(a, b), simd::max(c, d));
+    const I32 first = simd::splat(int32_t(0)), last = simd::splat(int32_t(map.size - 1));
+    const auto clamp = [&](I32 c) { return simd::min(simd::max(c, first), last); };
+    const Mask inside = simd::cmpEq(clamp(x0), x0) & simd::cmpEq(clamp(y0), y0) & simd::cmpEq(clamp(x1), x1) &
+                        simd::cmpEq(clamp(y1), y1);
+    const HierarchyNodes nodes = nodesOver(h, clamp(x0), clamp(y0), clamp(x1), clamp(y1));
+    const F32 slopeX = kPlane ? r.slopeX : zero, slopeY = kPlane ? r.slopeY : zero;
+    const F32 errorScale = simd::splat(0x1p-21f);   // 8 u
+    TapProof proof{inside, inside};
+    for (int k = 0; k < 4; ++k) {
+        const F32 depth = simd::gather(h.planeDepth, nodes.index[k]);
+        const F32 sx = simd::gather(h.slopeX, nodes.index[k]), sy = simd::gather(h.slopeY, nodes.index[k]);
+        const F32 low = simd::gather(h.residualLow, nodes.index[k]);
+        const F32 dx = nodes.centreX[k] - r.texelX, dy = nodes.centreY[k] - r.texelY;
+        const F32 receiver = r.depth + slopeX * dx + slopeY * dy;
+        const F32 g = depth - receiver;
+        const F32 spread = (abs(sx - slopeX) + abs(sy - slopeY)) * nodes.halfWidth;
+        const F32 terms = one + abs(r.depth) + abs(depth) + (abs(slopeX) + abs(sx)) * (abs(dx) + nodes.halfWidth) +
+                          (abs(slopeY) + abs(sy)) * (abs(dy) + nodes.halfWidth);
+        const F32 error = errorScale * terms;
+        proof.lit = proof.lit & simd::cmpLe(error, g - spread + low + r.tolerance);
+        if constexpr (kShadowed) {
+            const F32 high = simd::gather(h.residualHigh, nodes.index[k]);
+            proof.shadowed = proof.shadowed & simd::cmpLt(g + spread + high + r.tolerance, zero - error);
+        }
     }
-    const DepthRangeF stored = depthRangeOver(map, x0, y0, x1, y1);
-    const F32 one = simd::splat(1.0f);
-    return {simd::cmpLe(one, stored.least) | simd::cmpLe(farthest, stored.least + r.tolerance),
-            simd::cmpLt(stored.greatest, one) & simd::cmpLt(stored.greatest + r.tolerance, nearest)};
+    if constexpr (!kShadowed) proof.shadowed = simd::noLanes();
+    return proof;
 }
 
 // Percentage-closer soft shadows (Fernando 2005, steps 1 to 3; RTR 7.6) on a perspective
@@ -310,7 +325,7 @@ struct Pcss {
         // PCSS has one map: the lanes it serves are the served ones.
         const Mask lanes = simd::cmpGt(simd::loadU8(row.served + i), simd::splat(int32_t(0)));
         const bool proving = map.hierarchy != nullptr;
-        const Mask searchKnown = proving ? !searched | proveTaps<kPlane>(map, r, searchX, searchY).lit : !searched;
+        const Mask searchKnown = proving ? !searched | proveTaps<kPlane, false>(map, r, searchX, searchY).lit : !searched;
         if (proving && !simd::any(lanes & !searchKnown)) {
             simd::store(row.blockerDistance + i, zero), simd::store(row.penumbraWidth + i, zero);
             simd::store(row.knownTaps + i, simd::splat(float(c.searchTaps)));
@@ -334,13 +349,16 @@ struct Pcss {
         const F32 occluder = simd::min(simd::max(distanceSum / blockers, zNear), dr);
         const F32 widthX = widthTexels(occluder, 0), widthY = widthTexels(occluder, 1);
         const F32 radiusX = simd::max(half * widthX, half), radiusY = simd::max(half * widthY, half);
+        // The filter runs only where a lane found blockers (the others are lit), and only
+        // for lanes whose taps the hierarchy did not prove.
+        const bool filtering = simd::any(lanes & shadowed);
         TapProof filter{simd::noLanes(), simd::noLanes()};
-        if (proving) filter = proveTaps<kPlane>(map, r, radiusX, radiusY);
+        if (proving && filtering) filter = proveTaps<kPlane, true>(map, r, radiusX, radiusY);
         const Mask filterKnown = filter.lit | filter.shadowed;
-        const F32 visibility = proving && !simd::any(lanes & shadowed & !filterKnown)
-                                   ? simd::select(filter.shadowed, zero, simd::splat(1.0f))
-                                   : poissonLitFraction<kPlane>(map, r, cosine, sine, radiusX, radiusY, c.diskX,
-                                                                c.diskY, c.diskTaps);
+        const F32 visibility = filtering && !(proving && !simd::any(lanes & shadowed & !filterKnown))
+                                   ? poissonLitFraction<kPlane>(map, r, cosine, sine, radiusX, radiusY, c.diskX,
+                                                                c.diskY, c.diskTaps)
+                                   : simd::select(filter.shadowed, zero, simd::splat(1.0f));
         simd::store(row.blockerDistance + i, simd::select(shadowed, occluder, zero));
         simd::store(row.penumbraWidth + i, simd::select(shadowed, half * (widthX + widthY), zero));
         if (proving) {

@@ -1,6 +1,8 @@
 #include "shadows/maps/min_max_hierarchy.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
@@ -8,35 +10,101 @@
 namespace shadowlab {
 namespace {
 
-// Level 1 from the map's texels, each node the range of its (up to) 2 x 2 texels.
-void reduceFromMap(const DepthMap& map, int size, float* least, float* greatest) {
-    tbb::parallel_for(0, size, [&](int y) {
-        for (int x = 0; x < size; ++x) {
-            const int x1 = std::min(2 * x + 1, map.size - 1), y1 = std::min(2 * y + 1, map.size - 1);
-            const float a = map.at(2 * x, 2 * y), b = map.at(x1, 2 * y), c = map.at(2 * x, y1), d = map.at(x1, y1);
-            least[size_t(y) * size_t(size) + size_t(x)] = std::min(std::min(a, b), std::min(c, d));
-            greatest[size_t(y) * size_t(size) + size_t(x)] = std::max(std::max(a, b), std::max(c, d));
-        }
-    });
+constexpr int kFirst = MinMaxHierarchy::kFirstLevel;
+constexpr int kFirstWidth = 1 << kFirst;          // texels per side of a first-level node
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+float roundedDown(double v) {
+    const float f = float(v);
+    return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float roundedUp(double v) {
+    const float f = float(v);
+    return double(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-// Level l + 1 from level l (`below`, belowSize nodes per side).
-void reduceLevel(const float* below, int belowSize, float* out, int size, bool greatest) {
-    tbb::parallel_for(0, size, [&](int y) {
-        for (int x = 0; x < size; ++x) {
-            const int x1 = std::min(2 * x + 1, belowSize - 1), y1 = std::min(2 * y + 1, belowSize - 1);
-            const auto at = [&](int i, int j) { return below[size_t(j) * size_t(belowSize) + size_t(i)]; };
-            const float a = at(2 * x, 2 * y), b = at(x1, 2 * y), c = at(2 * x, y1), d = at(x1, y1);
-            out[size_t(y) * size_t(size) + size_t(x)] = greatest ? std::max(std::max(a, b), std::max(c, d))
-                                                                 : std::min(std::min(a, b), std::min(c, d));
+NodePlane emptyNode() { return {0.0f, 0.0f, 0.0f, float(kInf), float(kInf)}; }
+
+// The plane of a first-level node from its texels z[y][x] (texel centres at x + 0.5 - 2
+// from the node's centre): where all 16 are present and solid, the mean difference across
+// the node on each axis and the mean depth; otherwise (the map's border, empty texels) a
+// flat plane at the solid texels' mean. The residuals bound every solid texel against the
+// float plane; an empty texel makes the high residual +inf.
+NodePlane firstLevelPlane(const float (&z)[kFirstWidth][kFirstWidth], int width, int height) {
+    double sum = 0.0, across = 0.0, down = 0.0;
+    int solid = 0;
+    bool anyEmpty = false;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            if (z[y][x] >= 1.0f) anyEmpty = true;
+            else sum += z[y][x], ++solid;
         }
-    });
+    }
+    if (solid == 0) return emptyNode();
+    const bool whole = solid == kFirstWidth * kFirstWidth;
+    for (int k = 0; whole && k < kFirstWidth; ++k) {
+        across += double(z[k][kFirstWidth - 1]) - z[k][0];
+        down += double(z[kFirstWidth - 1][k]) - z[0][k];
+    }
+    const double span = double(kFirstWidth - 1) * kFirstWidth;
+    NodePlane out{float(sum / solid), float(across / span), float(down / span), 0.0f, 0.0f};
+    double low = kInf, high = -kInf;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            if (z[y][x] >= 1.0f) continue;
+            const double dx = x + 0.5 - 0.5 * kFirstWidth, dy = y + 0.5 - 0.5 * kFirstWidth;
+            const double e = double(z[y][x]) - (double(out.depth) + double(out.slopeX) * dx + double(out.slopeY) * dy);
+            low = std::min(low, e), high = std::max(high, e);
+        }
+    }
+    out.residualLow = roundedDown(low);
+    out.residualHigh = anyEmpty ? float(kInf) : roundedUp(high);
+    return out;
+}
+
+// A node's plane from its present children (index 2 row + column; `step` texels between
+// neighbouring children's centres, childHalfWidth from a child's centre to its outermost
+// texel centre): the mean of the solid children's slopes, and the mean of their centre
+// depths moved to the node's centre along them. The residuals bound every texel: a child's
+// own residual plus how far its plane departs from the node's over the child.
+NodePlane combine(const NodePlane (&kids)[4], const bool (&present)[4], double step, double childHalfWidth) {
+    double slopeX = 0.0, slopeY = 0.0;
+    int solid = 0;
+    bool anyEmpty = false;
+    for (int k = 0; k < 4; ++k) {
+        if (!present[k]) continue;
+        anyEmpty = anyEmpty || !std::isfinite(kids[k].residualHigh);
+        if (!std::isfinite(kids[k].residualLow)) continue;   // all empty
+        slopeX += kids[k].slopeX, slopeY += kids[k].slopeY, ++solid;
+    }
+    if (solid == 0) return emptyNode();
+    NodePlane out{0.0f, float(slopeX / solid), float(slopeY / solid), 0.0f, 0.0f};
+    const auto offset = [&](int k, float slope, int axisBit) { return slope * ((double((k >> axisBit) & 1) - 0.5) * step); };
+    const auto solidKid = [&](int k) { return present[k] && std::isfinite(kids[k].residualLow); };
+    double depth = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        if (solidKid(k)) depth += kids[k].depth - offset(k, out.slopeX, 0) - offset(k, out.slopeY, 1);
+    }
+    out.depth = float(depth / solid);
+    double low = kInf, high = -kInf;
+    for (int k = 0; k < 4; ++k) {
+        if (!solidKid(k)) continue;
+        const NodePlane& c = kids[k];
+        const double centre = double(c.depth) - (double(out.depth) + offset(k, out.slopeX, 0) + offset(k, out.slopeY, 1));
+        const double spread =
+            (std::abs(double(c.slopeX) - out.slopeX) + std::abs(double(c.slopeY) - out.slopeY)) * childHalfWidth;
+        low = std::min(low, centre - spread + c.residualLow);
+        high = std::max(high, centre + spread + c.residualHigh);
+    }
+    out.residualLow = roundedDown(low);
+    out.residualHigh = anyEmpty ? float(kInf) : roundedUp(high);
+    return out;
 }
 
 }  // namespace
 
 int hierarchyLevelFor(int span, int levels) {
-    int level = 1;
+    int level = MinMaxHierarchy::kFirstLevel;
     while (level < levels && span >= (1 << level)) ++level;
     return level;
 }
@@ -44,26 +112,84 @@ int hierarchyLevelFor(int span, int levels) {
 MinMaxHierarchy::MinMaxHierarchy(const DepthMap& map) : mapSize_(map.size) {
     if (map.size < 2) throw std::invalid_argument("min/max hierarchy: a map of at least 2 x 2 texels");
     size_t total = 0;
-    for (int size = map.size; size > 1;) {
-        size = (size + 1) / 2;
+    for (int size = (map.size + kFirstWidth - 1) / kFirstWidth;; size = (size + 1) / 2) {
         sizes_.push_back(size), offsets_.push_back(int(total));
         total += size_t(size) * size_t(size);
+        if (size == 1) break;
     }
     if (levels() > kMaxHierarchyLevels) throw std::invalid_argument("min/max hierarchy: map too large");
-    least_.resize(total), greatest_.resize(total);
-    reduceFromMap(map, sizes_[0], least_.data(), greatest_.data());
-    for (int l = 1; l < levels(); ++l) {
-        const size_t from = size_t(offsets_[size_t(l - 1)]), to = size_t(offsets_[size_t(l)]);
-        reduceLevel(least_.data() + from, sizes_[size_t(l - 1)], least_.data() + to, sizes_[size_t(l)], false);
-        reduceLevel(greatest_.data() + from, sizes_[size_t(l - 1)], greatest_.data() + to, sizes_[size_t(l)], true);
+    for (auto* v : {&least_, &greatest_, &planeDepth_, &slopeX_, &slopeY_, &residualLow_, &residualHigh_}) {
+        v->resize(total);
     }
-    kernel_.least = least_.data(), kernel_.greatest = greatest_.data(), kernel_.levels = levels();
-    for (int l = 0; l < levels(); ++l) kernel_.size[l] = sizes_[size_t(l)], kernel_.offset[l] = offsets_[size_t(l)];
+    buildFirstLevel(map);
+    for (int level = kFirstLevel + 1; level <= levels(); ++level) buildLevel(level);
+    kernel_ = {least_.data(),   greatest_.data(),    planeDepth_.data(), slopeX_.data(), slopeY_.data(),
+               residualLow_.data(), residualHigh_.data(), kFirstLevel,  levels(),       {},  {}};
+    for (int l = kFirstLevel; l <= levels(); ++l) {
+        kernel_.size[l - kFirstLevel] = sizeOf(l), kernel_.offset[l - kFirstLevel] = offsets_[size_t(l - kFirstLevel)];
+    }
+}
+
+// Each node's 4 x 4 texels, read once for its range and its plane.
+void MinMaxHierarchy::buildFirstLevel(const DepthMap& map) {
+    const int size = sizeOf(kFirstLevel);
+    tbb::parallel_for(0, size, [&](int ny) {
+        for (int nx = 0; nx < size; ++nx) {
+            float z[kFirstWidth][kFirstWidth];
+            const int width = std::min(kFirstWidth, map.size - nx * kFirstWidth);
+            const int height = std::min(kFirstWidth, map.size - ny * kFirstWidth);
+            float least = 1.0f, greatest = 0.0f;
+            // A node's rows are runs of 4 texels inside one 8 x 8 block of the block-linear map.
+            static_assert(raster::kBlockSize % kFirstWidth == 0);
+            for (int y = 0; y < height; ++y) {
+                const float* row = &map.depth[raster::blockLinearIndex(nx * kFirstWidth, ny * kFirstWidth + y, map.tilesX)];
+                for (int x = 0; x < width; ++x) {
+                    z[y][x] = row[x];
+                    least = std::min(least, z[y][x]), greatest = std::max(greatest, z[y][x]);
+                }
+            }
+            const size_t n = indexOf(kFirstLevel, nx, ny);
+            least_[n] = least, greatest_[n] = greatest;
+            const NodePlane p = firstLevelPlane(z, width, height);
+            planeDepth_[n] = p.depth, slopeX_[n] = p.slopeX, slopeY_[n] = p.slopeY;
+            residualLow_[n] = p.residualLow, residualHigh_[n] = p.residualHigh;
+        }
+    });
+}
+
+void MinMaxHierarchy::buildLevel(int level) {
+    const int size = sizeOf(level), below = sizeOf(level - 1);
+    const double step = double(1 << (level - 1)), childHalfWidth = 0.5 * (step - 1.0);
+    tbb::parallel_for(0, size, [&](int y) {
+        for (int x = 0; x < size; ++x) {
+            NodePlane kids[4];
+            bool present[4];
+            float least = 1.0f, greatest = 0.0f;
+            for (int k = 0; k < 4; ++k) {
+                const int cx = 2 * x + k % 2, cy = 2 * y + k / 2;
+                present[k] = cx < below && cy < below;
+                if (!present[k]) continue;
+                kids[k] = plane(level - 1, cx, cy);
+                const DepthRange r = node(level - 1, cx, cy);
+                least = std::min(least, r.least), greatest = std::max(greatest, r.greatest);
+            }
+            const size_t n = indexOf(level, x, y);
+            least_[n] = least, greatest_[n] = greatest;
+            const NodePlane p = combine(kids, present, step, childHalfWidth);
+            planeDepth_[n] = p.depth, slopeX_[n] = p.slopeX, slopeY_[n] = p.slopeY;
+            residualLow_[n] = p.residualLow, residualHigh_[n] = p.residualHigh;
+        }
+    });
+}
+
+NodePlane MinMaxHierarchy::plane(int level, int x, int y) const {
+    const size_t n = indexOf(level, x, y);
+    return {planeDepth_[n], slopeX_[n], slopeY_[n], residualLow_[n], residualHigh_[n]};
 }
 
 DepthRange MinMaxHierarchy::node(int level, int x, int y) const {
-    const size_t k = size_t(offsets_[size_t(level - 1)]) + size_t(y) * size_t(sizeOf(level)) + size_t(x);
-    return {least_[k], greatest_[k]};
+    const size_t n = indexOf(level, x, y);
+    return {least_[n], greatest_[n]};
 }
 
 DepthRange MinMaxHierarchy::over(int x0, int y0, int x1, int y1) const {
@@ -81,12 +207,12 @@ DepthRange MinMaxHierarchy::over(int x0, int y0, int x1, int y1) const {
 }
 
 std::vector<float> MinMaxHierarchy::leastImage(int level) const {
-    const auto first = least_.begin() + offsets_[size_t(level - 1)];
+    const auto first = least_.begin() + ptrdiff_t(indexOf(level, 0, 0));
     return {first, first + ptrdiff_t(sizeOf(level)) * sizeOf(level)};
 }
 
 std::vector<float> MinMaxHierarchy::greatestImage(int level) const {
-    const auto first = greatest_.begin() + offsets_[size_t(level - 1)];
+    const auto first = greatest_.begin() + ptrdiff_t(indexOf(level, 0, 0));
     return {first, first + ptrdiff_t(sizeOf(level)) * sizeOf(level)};
 }
 

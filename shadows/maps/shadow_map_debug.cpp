@@ -19,7 +19,7 @@ void writeMinMaxHierarchy(const DebugBuffers& debug, const MinMaxHierarchy& hier
     if (!debug.enabled()) return;
     const std::vector<float> top = hierarchy.leastImage(hierarchy.levels());
     const float nearest = *std::min_element(top.begin(), top.end());
-    for (int level = 2; level <= std::min(6, hierarchy.levels()); level += 2) {
+    for (int level = MinMaxHierarchy::kFirstLevel; level <= std::min(6, hierarchy.levels()); level += 2) {
         const int size = hierarchy.sizeOf(level);
         debug.write("hierarchy-min-" + std::to_string(level), size, size, hierarchy.leastImage(level), nearest, 1.0f);
         debug.write("hierarchy-max-" + std::to_string(level), size, size, hierarchy.greatestImage(level), nearest, 1.0f);

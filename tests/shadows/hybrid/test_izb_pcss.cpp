@@ -57,7 +57,7 @@ struct Parts {
         const ShadowInputs in{s.prepared, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), defaults, {}};
         const PcssSettings settings = readPcssSettings(defaults);
         const SoftShadowMap soft = renderPcssMap(in, settings.resolution);
-        pcss = pcssPerPixel(in, soft, settings);
+        pcss = pcssPerPixel(in, soft, settings, std::nullopt);
         weight = blendWeights(s.gbuffer, soft, pcss.blockerDistance, BlendDistances{});
     }
 };

@@ -37,6 +37,17 @@ DepthMap randomMap(int size, uint64_t seed) {
     return map;
 }
 
+DepthMap floorMap(int size) {
+    DepthMap map = randomMap(size, 3);
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const float z = (x * 37 + y * 11) % 97 == 0 ? 1.0f : 0.5f + 0.001f * float(x) + 0.0003f * float(y);
+            map.depth[raster::blockLinearIndex(x, y, map.tilesX)] = z;
+        }
+    }
+    return map;
+}
+
 DepthRange bruteRange(const DepthMap& map, int x0, int y0, int x1, int y1) {
     DepthRange r;
     for (int y = std::max(y0, 0); y <= std::min(y1, map.size - 1); ++y) {
@@ -49,13 +60,14 @@ DepthRange bruteRange(const DepthMap& map, int x0, int y0, int x1, int y1) {
 
 }  // namespace
 
-TEST_CASE("each node of a min-max hierarchy holds exactly the range of its texels, for maps of any size") {
-    for (int size : {2, 3, 64, 100, 129}) {
+TEST_CASE("each node of a min-max hierarchy holds exactly the range of its texels and bounds them by its plane") {
+    for (int size : {2, 3, 5, 64, 100, 129}) {
         CAPTURE(size);
-        const DepthMap map = randomMap(size, uint64_t(size));
+        // Random blocks, and a sloped floor with holes, whose planes the nodes fit closely.
+        const DepthMap map = size % 2 ? randomMap(size, uint64_t(size)) : floorMap(size);
         const MinMaxHierarchy h(map);
         CHECK(h.sizeOf(h.levels()) == 1);
-        for (int level = 1; level <= h.levels(); ++level) {
+        for (int level = MinMaxHierarchy::kFirstLevel; level <= h.levels(); ++level) {
             CAPTURE(level);
             REQUIRE(h.sizeOf(level) == (size + (1 << level) - 1) >> level);
             for (int y = 0; y < h.sizeOf(level); ++y) {
@@ -64,6 +76,17 @@ TEST_CASE("each node of a min-max hierarchy holds exactly the range of its texel
                     const DepthRange want = bruteRange(map, x * w, y * w, x * w + w - 1, y * w + w - 1);
                     REQUIRE(h.node(level, x, y).least == want.least);
                     REQUIRE(h.node(level, x, y).greatest == want.greatest);
+                    // Every solid texel within the node's plane plus its residuals.
+                    const NodePlane p = h.plane(level, x, y);
+                    for (int ty = y * w; ty < std::min(y * w + w, size); ++ty) {
+                        for (int tx = x * w; tx < std::min(x * w + w, size); ++tx) {
+                            const double z = map.at(tx, ty);
+                            const double fit = double(p.depth) + double(p.slopeX) * (tx + 0.5 - (x + 0.5) * w) +
+                                               double(p.slopeY) * (ty + 0.5 - (y + 0.5) * w);
+                            if (z < 1.0) REQUIRE(z - fit >= double(p.residualLow));
+                            REQUIRE(z - fit <= double(p.residualHigh));
+                        }
+                    }
                 }
             }
         }
@@ -83,9 +106,9 @@ TEST_CASE("a min-max hierarchy query bounds every texel of the rectangle and mee
         const int level = hierarchyLevelFor(std::min(x1, 99) - std::max(x0, 0), h.levels());
         REQUIRE(((std::min(x1, 99) >> level) - (std::max(x0, 0) >> level)) <= 1);
     }
-    CHECK(hierarchyLevelFor(0, 7) == 1);
-    CHECK(hierarchyLevelFor(1, 7) == 1);
-    CHECK(hierarchyLevelFor(2, 7) == 2);
+    CHECK(hierarchyLevelFor(0, 7) == 2);
+    CHECK(hierarchyLevelFor(3, 7) == 2);
+    CHECK(hierarchyLevelFor(4, 7) == 3);
     CHECK(hierarchyLevelFor(1000, 7) == 7);
 }
 
