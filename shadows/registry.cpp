@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "compositing/environment_techniques.h"
+#include "shadows/backprojection/backprojection.h"
 #include "shadows/deep/deep_techniques.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/fins/fins.h"
@@ -38,6 +39,7 @@ const std::vector<Technique>& techniques() {
         withCasterLod(filteredShadowMapTechnique(MomentKind::ExponentialVariance)),
         withCasterLod(filteredShadowMapTechnique(MomentKind::Hamburger4)),
         withCasterLod(multiSampleTechnique()),
+        withCasterLod(backprojectionTechnique()),
         withCasterLod(finsTechnique()),
         withCasterLod(smoothiesTechnique()),
         withCasterLod(penumbraMapsTechnique()),

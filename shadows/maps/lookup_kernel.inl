@@ -325,7 +325,8 @@ struct Pcss {
         // PCSS has one map: the lanes it serves are the served ones.
         const Mask lanes = simd::cmpGt(simd::loadU8(row.served + i), simd::splat(int32_t(0)));
         const bool proving = map.hierarchy != nullptr;
-        const Mask searchKnown = proving ? !searched | proveTaps<kPlane, false>(map, r, searchX, searchY).lit : !searched;
+        const Mask searchKnown =
+            proving ? !searched | proveTaps<kPlane, false>(map, r, searchX, searchY).lit : !searched;
         if (proving && !simd::any(lanes & !searchKnown)) {
             simd::store(row.blockerDistance + i, zero), simd::store(row.penumbraWidth + i, zero);
             simd::store(row.knownTaps + i, simd::splat(float(c.searchTaps)));

@@ -79,7 +79,9 @@ NodePlane combine(const NodePlane (&kids)[4], const bool (&present)[4], double s
     }
     if (solid == 0) return emptyNode();
     NodePlane out{0.0f, float(slopeX / solid), float(slopeY / solid), 0.0f, 0.0f};
-    const auto offset = [&](int k, float slope, int axisBit) { return slope * ((double((k >> axisBit) & 1) - 0.5) * step); };
+    const auto offset = [&](int k, float slope, int axisBit) {   // along the plane, from the node's centre
+        return slope * ((double((k >> axisBit) & 1) - 0.5) * step);
+    };
     const auto solidKid = [&](int k) { return present[k] && std::isfinite(kids[k].residualLow); };
     double depth = 0.0;
     for (int k = 0; k < 4; ++k) {
@@ -90,7 +92,8 @@ NodePlane combine(const NodePlane (&kids)[4], const bool (&present)[4], double s
     for (int k = 0; k < 4; ++k) {
         if (!solidKid(k)) continue;
         const NodePlane& c = kids[k];
-        const double centre = double(c.depth) - (double(out.depth) + offset(k, out.slopeX, 0) + offset(k, out.slopeY, 1));
+        const double fit = double(out.depth) + offset(k, out.slopeX, 0) + offset(k, out.slopeY, 1);
+        const double centre = double(c.depth) - fit;
         const double spread =
             (std::abs(double(c.slopeX) - out.slopeX) + std::abs(double(c.slopeY) - out.slopeY)) * childHalfWidth;
         low = std::min(low, centre - spread + c.residualLow);
@@ -142,7 +145,8 @@ void MinMaxHierarchy::buildFirstLevel(const DepthMap& map) {
             // A node's rows are runs of 4 texels inside one 8 x 8 block of the block-linear map.
             static_assert(raster::kBlockSize % kFirstWidth == 0);
             for (int y = 0; y < height; ++y) {
-                const float* row = &map.depth[raster::blockLinearIndex(nx * kFirstWidth, ny * kFirstWidth + y, map.tilesX)];
+                const size_t first = raster::blockLinearIndex(nx * kFirstWidth, ny * kFirstWidth + y, map.tilesX);
+                const float* row = &map.depth[first];
                 for (int x = 0; x < width; ++x) {
                     z[y][x] = row[x];
                     least = std::min(least, z[y][x]), greatest = std::max(greatest, z[y][x]);
@@ -204,6 +208,24 @@ DepthRange MinMaxHierarchy::over(int x0, int y0, int x1, int y1) const {
         }
     }
     return r;
+}
+
+bool MinMaxHierarchy::provedLit(const MapReceiver& r, int x0, int y0, int x1, int y1) const {
+    if (x0 < 0 || y0 < 0 || x1 >= mapSize_ || y1 >= mapSize_ || x1 < x0 || y1 < y0) return false;
+    const int level = hierarchyLevelFor(std::max(x1 - x0, y1 - y0), levels());
+    const double width = double(1 << level), halfWidth = 0.5 * (width - 1.0);
+    for (int y : {y0 >> level, y1 >> level}) {
+        for (int x : {x0 >> level, x1 >> level}) {
+            const NodePlane p = plane(level, x, y);
+            const glm::dvec2 centre((x + 0.5) * width, (y + 0.5) * width);
+            const double g = double(p.depth) - r.depthAt(centre);
+            const double spread =
+                (std::abs(p.slopeX - r.depthSlope.x) + std::abs(p.slopeY - r.depthSlope.y)) * halfWidth;
+            // litBy compares in double: a margin of 2^-40 covers its roundings and these.
+            if (!(g - spread + double(p.residualLow) + r.tolerance >= 0x1p-40)) return false;
+        }
+    }
+    return true;
 }
 
 std::vector<float> MinMaxHierarchy::leastImage(int level) const {

@@ -30,6 +30,7 @@
 
 #include "shadows/depth_map.h"
 #include "shadows/maps/lookup_kernel.h"
+#include "shadows/maps/shadow_bias.h"
 
 namespace shadowlab {
 
@@ -56,6 +57,10 @@ public:
     // The depths of the texels [x0, x1] x [y0, y1] (inclusive, clamped to the map) lie in
     // the range returned.
     DepthRange over(int x0, int y0, int x1, int y1) const;
+    // Whether r.litBy answers lit at every texel of [x0, x1] x [y0, y1] (inside the map), by
+    // the 2 x 2 nodes' planes and residuals: the double twin of the lookup kernel's proof
+    // (lookup_kernel.inl, proveTaps). False proves nothing.
+    bool provedLit(const MapReceiver& r, int x0, int y0, int x1, int y1) const;
     // A level as an image (row-major), for the debug views.
     std::vector<float> leastImage(int level) const;
     std::vector<float> greatestImage(int level) const;

@@ -127,7 +127,8 @@ TEST_CASE("pcss gives the same bits with and without the min-max hierarchy, at e
         const ShadowOutputs plain = run("off", raster::SimdLevel::Scalar);
         for (int threads : {1, 2}) {
             const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-            for (raster::SimdLevel level : {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
+            for (raster::SimdLevel level :
+                 {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
                 if (!raster::simdLevelSupported(level)) continue;
                 CAPTURE(raster::simdLevelName(level));
                 CAPTURE(threads);

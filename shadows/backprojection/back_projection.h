@@ -1,0 +1,48 @@
+// Backprojection, stage 2: the occluder patches seen from the receiver, projected onto the
+// light's plane, and the light samples they hide set in a bitmask (Guennebaud et al. 2006,
+// section 3.2; Schwarz and Stamminger 2007, section 3, whose bitmasks replace the sum of
+// covered areas, so that overlapping patches hide a sample once: occluder fusion, and no
+// double counting where neighbouring patches overlap).
+//
+// Gaps. Neighbouring texels at different depths are squares at different distances, and
+// seen from the receiver the light shows between them (Guennebaud et al., section 3.3).
+// Here a patch's corners are shared with its occluding neighbours: the corner takes the
+// least depth of the occluding patches around it, so a continuous occluder surface becomes
+// one closed mesh and its back-projection has no gaps. Where a neighbour lies farther than
+// `continuity` times the patch's own distance from the light (another surface behind: an
+// edge), the patch keeps its own depth at that corner, so no skirt joins the two.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shading/light_sampling.h"
+#include "shadows/backprojection/light_bitmask.h"
+#include "shadows/backprojection/occluder_patches.h"
+#include "shadows/filtered/soft_shadow_map.h"
+
+namespace shadowlab {
+
+// The light's plane and its (a, b) coordinates: X = centre + a axisA + b axisB.
+struct LightPlane {
+    glm::dvec3 centre{0.0}, normal{0.0};
+    glm::dvec3 dualA{0.0}, dualB{0.0};   // a = dualA . (X - centre), b likewise
+    explicit LightPlane(const AreaLightFrame& frame);
+};
+
+// Per-task working memory, reused across pixels.
+struct BackProjectionScratch {
+    std::vector<float> cornerDepth;       // (width + 1) x (height + 1)
+    std::vector<glm::vec2> cornerOnLight;
+    std::vector<uint8_t> cornerState;     // 0 not projected yet, 1 on the light's plane, 2 invalid
+};
+
+// Sets in `mask` the samples of `samples` that the grid's occluder patches hide from P;
+// returns the number of patches projected. Stops early once every sample is hidden. With
+// `drawn`, appends each projected patch's four corners in (a, b) (the debug view).
+int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P, const LightPlane& light,
+                       const LightGrid& samples, double continuity, LightBitmask& mask, BackProjectionScratch& scratch,
+                       std::vector<glm::vec2>* drawn = nullptr);
+
+}  // namespace shadowlab

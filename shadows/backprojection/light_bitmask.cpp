@@ -1,0 +1,85 @@
+#include "shadows/backprojection/light_bitmask.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace shadowlab {
+
+LightBitmask& LightBitmask::operator|=(const LightBitmask& o) {
+    for (size_t j = 0; j < rows.size(); ++j) rows[j] |= o.rows[j];
+    return *this;
+}
+
+LightGrid::LightGrid(int n, bool disk) : n_(n) {
+    if (n < 1 || n > kMaxLightSamplesPerAxis) {
+        throw std::invalid_argument("light bitmask: 1 to " + std::to_string(kMaxLightSamplesPerAxis) +
+                                    " samples per axis, not " + std::to_string(n));
+    }
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            const float a = centre(i), b = centre(j);
+            if (disk && a * a + b * b > 1.0f) continue;
+            onLight_.rows[size_t(j)] |= 1u << i;
+            ++count_;
+        }
+    }
+}
+
+uint32_t LightGrid::span(float lo, float hi) const {
+    // Cell i's centre -1 + (2 i + 1) / n lies in [lo, hi] for i in [ceil(first), floor(last)].
+    const float first = std::ceil((lo + 1.0f) * 0.5f * float(n_) - 0.5f);
+    const float last = std::floor((hi + 1.0f) * 0.5f * float(n_) - 0.5f);
+    const int i0 = int(std::max(first, 0.0f)), i1 = int(std::min(last, float(n_ - 1)));
+    if (!(first <= last) || i0 > i1) return 0u;
+    const uint32_t upTo = i1 == 31 ? ~0u : (2u << i1) - 1u;
+    return upTo & ~((1u << i0) - 1u);
+}
+
+void LightGrid::cover(LightBitmask& mask, const glm::vec2* v, int count) const {
+    float bLow = v[0].y, bHigh = v[0].y;
+    for (int k = 1; k < count; ++k) bLow = std::min(bLow, v[k].y), bHigh = std::max(bHigh, v[k].y);
+    const int j0 = std::max(0, int(std::ceil((bLow + 1.0f) * 0.5f * float(n_) - 0.5f)));
+    const int j1 = std::min(n_ - 1, int(std::floor((bHigh + 1.0f) * 0.5f * float(n_) - 0.5f)));
+    for (int j = j0; j <= j1; ++j) {
+        // The polygon's extent along the row b = centre(j): where the row crosses its edges.
+        const float b = centre(j);
+        float lo = 2.0f, hi = -2.0f;
+        for (int k = 0; k < count; ++k) {
+            const glm::vec2 p = v[k], q = v[(k + 1) % count];
+            if ((p.y - b) * (q.y - b) > 0.0f) continue;   // the edge does not reach the row
+            if (p.y == q.y) {                              // along the row: both ends
+                lo = std::min({lo, p.x, q.x}), hi = std::max({hi, p.x, q.x});
+                continue;
+            }
+            const float a = p.x + (q.x - p.x) * ((b - p.y) / (q.y - p.y));
+            lo = std::min(lo, a), hi = std::max(hi, a);
+        }
+        if (lo <= hi) mask.rows[size_t(j)] |= span(lo, hi);
+    }
+}
+
+void LightGrid::coverHalfPlane(LightBitmask& mask, double alpha, double beta, double gamma) const {
+    for (int j = 0; j < n_; ++j) {
+        uint32_t bits = 0;
+        for (int i = 0; i < n_; ++i) bits |= alpha * centre(i) + beta * centre(j) + gamma <= 0.0 ? 1u << i : 0u;
+        mask.rows[size_t(j)] |= bits;
+    }
+}
+
+bool LightGrid::full(const LightBitmask& mask) const {
+    for (int j = 0; j < n_; ++j) {
+        if ((mask.rows[size_t(j)] & onLight_.rows[size_t(j)]) != onLight_.rows[size_t(j)]) return false;
+    }
+    return true;
+}
+
+int LightGrid::hidden(const LightBitmask& mask) const {
+    int count = 0;
+    for (int j = 0; j < n_; ++j) count += std::popcount(mask.rows[size_t(j)] & onLight_.rows[size_t(j)]);
+    return count;
+}
+
+}  // namespace shadowlab
