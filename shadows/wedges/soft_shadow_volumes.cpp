@@ -71,6 +71,7 @@ void addWedgeStats(const WedgeSet& set, const WedgeCoverage& c, uint64_t flipped
         {"wedges_count", double(set.wedges.size())},
         {"unbounded_edges", double(set.unboundedEdges.size())},
         {"wedge_triangles", double(set.triangles.size())},
+        {"near_plane_wedges_count", double(c.nearWedges)},
         {"wedge_fill_fragments", double(c.fillFragments)},
         {"wedge_fragments", double(c.listedFragments)},
         {"wedge_inside_fragments", double(c.insideFragments)},
@@ -102,7 +103,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     const std::vector<SilhouetteEdge>& silhouette = pass.volume.silhouette;
     const WedgeSet wedges = buildWedges(in.casterWorld().positions, silhouette, lightBall(frame));
     timer.lap("wedges");
-    WedgeCoverage coverage = rasterizeWedges(rasterizer, fb, pass.clipFromWorld, wedges,
+    WedgeCoverage coverage = rasterizeWedges(rasterizer, fb, camera, pass.clipFromWorld, wedges,
                                                    {in.casterWorld().positions, silhouette}, coverageLight(frame),
                                                    in.gbuffer);
     timer.lap("coverage");

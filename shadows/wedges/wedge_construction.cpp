@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace shadowlab {
 namespace {
@@ -54,6 +55,27 @@ std::optional<Wedge> wedgeOf(uint32_t edge, const glm::dvec3& e0, const glm::dve
     return Wedge{edge, {(*frontBack)[0], (*frontBack)[1], *side0, *side1}};
 }
 
+// A triangle's direction from a finite first vertex a to vertex v: v - a, or v's own
+// direction at infinity.
+glm::dvec3 from(const glm::vec3& a, const glm::vec4& v) {
+    return v.w != 0.0f ? glm::dvec3(v) - glm::dvec3(a) : glm::dvec3(v);
+}
+
+// Wound so that its front side faces out of the wedge (inward plane normal m), as the
+// rasterizer's culling reads it; `t.x` must be finite.
+glm::uvec3 outward(glm::uvec3 t, const std::vector<glm::vec4>& v, const glm::dvec3& m) {
+    const glm::vec3 a(v[t.x]);
+    const glm::dvec3 n = glm::cross(from(a, v[t.y]), from(a, v[t.z]));
+    return glm::dot(n, m) < 0.0 ? t : glm::uvec3(t.x, t.z, t.y);
+}
+
+// The cap at infinity, seen from any finite point from inside: wound to be a back face,
+// det(g1, g2, g3) > 0 (front facing is det < 0 for three directions).
+glm::uvec3 outwardCap(glm::uvec3 t, const std::vector<glm::vec4>& v) {
+    const glm::dvec3 g1(v[t.x]), g2(v[t.y]), g3(v[t.z]);
+    return glm::dot(glm::cross(g1, g2), g3) > 0.0 ? t : glm::uvec3(t.x, t.z, t.y);
+}
+
 // Vertices e0, e1, F0, B0, F1, B1 (F, B: front or back plane meeting side plane 0 or 1).
 void appendWedgeGeometry(const Wedge& w, const glm::vec3& e0, const glm::vec3& e1, WedgeSet& set) {
     const auto& [front, back, side0, side1] = w.planes;
@@ -64,9 +86,14 @@ void appendWedgeGeometry(const Wedge& w, const glm::vec3& e0, const glm::vec3& e
                                              directionAtInfinity(front, side1, back),
                                              directionAtInfinity(back, side1, front)});
     // front (e0 e1 F1 F0), back (e0 B0 B1 e1), sides (e0 F0 B0), (e1 B1 F1), cap (F0 F1 B1 B0)
-    static constexpr glm::uvec3 kFaces[kWedgeTriangles] = {{0, 1, 4}, {0, 4, 2}, {0, 3, 5}, {0, 5, 1},
-                                                           {0, 2, 3}, {1, 5, 4}, {2, 4, 5}, {2, 5, 3}};
-    for (const glm::uvec3& f : kFaces) set.triangles.push_back(f + base);
+    const glm::dvec3 m[4] = {glm::dvec3(front), glm::dvec3(back), glm::dvec3(side0), glm::dvec3(side1)};
+    const std::pair<glm::uvec3, int> faces[kWedgeTriangles] = {{{0, 1, 4}, 0}, {{0, 4, 2}, 0}, {{0, 3, 5}, 1},
+                                                               {{0, 5, 1}, 1}, {{0, 2, 3}, 2}, {{1, 5, 4}, 3},
+                                                               {{2, 4, 5}, -1}, {{2, 5, 3}, -1}};
+    for (const auto& [f, plane] : faces) {
+        const glm::uvec3 t = f + base;
+        set.triangles.push_back(plane < 0 ? outwardCap(t, set.vertices) : outward(t, set.vertices, m[plane]));
+    }
 }
 
 }  // namespace

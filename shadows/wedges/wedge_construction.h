@@ -17,7 +17,7 @@
 // The wedges are independent (the 2003 paper's fix of the 2002 one, whose neighbouring
 // wedges shared side planes). Each is drawn as 8 triangles over the end points and four
 // directions at infinity (w = 0, like the shadow volume's far ends): front and back quads,
-// two side triangles and the cap at infinity.
+// two side triangles and the cap at infinity, wound with their front sides facing out.
 //
 // An edge whose line meets the ball (an occluder touching the light's bounding sphere) has
 // no such planes: it gets no wedge and is evaluated at every pixel instead.

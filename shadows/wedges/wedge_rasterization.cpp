@@ -1,22 +1,74 @@
 #include "shadows/wedges/wedge_rasterization.h"
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <limits>
 
 #include <tbb/parallel_for.h>
+
+#include "shadows/volumes/counting_mode.h"
 
 namespace shadowlab {
 namespace {
 
 constexpr uint32_t kNoWedge = std::numeric_limits<uint32_t>::max();
 
-raster::PipelineState wedgePassState() {
+// Front faces in front of P, or (nearPlane) back faces behind it.
+raster::PipelineState wedgePassState(bool nearPlane) {
     raster::PipelineState state;
-    state.cull = raster::CullMode::None;
+    state.cull = nearPlane ? raster::CullMode::Front : raster::CullMode::Back;
     state.clipFar = false;
-    state.depth = {.test = true, .write = false, .func = raster::CompareFunc::GreaterEqual};
+    state.depth = {.test = true, .write = false,
+                   .func = nearPlane ? raster::CompareFunc::GreaterEqual : raster::CompareFunc::Less};
     state.output = raster::FragmentOutput::FragmentList;
     return state;
+}
+
+// The triangles of the wedges of one draw, each with its wedge's index as primitive id.
+struct WedgeDraw {
+    std::vector<glm::uvec3> triangles;
+    std::vector<uint32_t> ids;
+};
+
+// Split by whether a wedge may hold part of the near-plane rectangle: every point of it is
+// within `radius` of the eye, so one outside some plane by more is outside the wedge.
+std::array<WedgeDraw, 2> splitByNearPlane(const WedgeSet& set, const glm::dvec3& eye, double radius) {
+    std::array<WedgeDraw, 2> draws;
+    for (uint32_t w = 0; w < set.wedges.size(); ++w) {
+        bool near = true;
+        for (const glm::dvec4& p : set.wedges[w].planes) near = near && glm::dot(glm::dvec3(p), eye) + p.w >= -radius;
+        WedgeDraw& d = draws[near ? 1 : 0];
+        for (uint32_t t = 0; t < kWedgeTriangles; ++t) {
+            d.triangles.push_back(set.triangles[w * kWedgeTriangles + t]);
+            d.ids.push_back(w);
+        }
+    }
+    return draws;
+}
+
+// The largest distance from the eye to a corner of the near-plane rectangle (plus 1 mm).
+double nearPlaneRadius(const Camera& camera) {
+    double radius = 0.0;
+    for (const glm::dvec3& c : nearPlaneCorners(camera)) radius = std::max(radius, glm::length(c - glm::dvec3(camera.eye)));
+    return radius + 1e-3;
+}
+
+// Both draws into the fragment list; returns the wedges drawn by their back faces.
+uint64_t drawWedges(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const Camera& camera,
+                    const glm::mat4& clipFromWorld, const WedgeSet& set) {
+    const std::array<WedgeDraw, 2> draws = splitByNearPlane(set, glm::dvec3(camera.eye), nearPlaneRadius(camera));
+    fb.clearFragments();
+    rasterizer.resetStats();
+    for (int nearPlane = 0; nearPlane < 2; ++nearPlane) {
+        raster::DrawCall call;
+        call.vertices.homogeneousPositions = set.vertices;
+        call.triangles = draws[nearPlane].triangles;
+        call.primitiveIds = draws[nearPlane].ids;
+        call.clipFromObject = clipFromWorld;
+        if (!call.triangles.empty()) rasterizer.draw(fb, wedgePassState(nearPlane == 1), call);
+    }
+    return draws[1].ids.size() / kWedgeTriangles;
 }
 
 // Per-pixel state of the pass, row-major like the G-buffer.
@@ -50,7 +102,7 @@ uint64_t shadeTile(const raster::Framebuffer& fb, int tile, const WedgeSet& set,
         int x = 0, y = 0;
         raster::blockLinearPixel(f.pixel, fb.tilesX(), x, y);
         const size_t k = g.index(x, y);
-        const uint32_t w = f.primitiveId / kWedgeTriangles;
+        const uint32_t w = f.primitiveId;
         if (!g.hit[k] || sums.lastWedge[k] == w) continue;
         sums.lastWedge[k] = w;
         const Wedge& wedge = set.wedges[w];
@@ -84,18 +136,11 @@ void shadeUnbounded(const WedgeSet& set, const CoverageProgram& program, const G
 
 }  // namespace
 
-WedgeCoverage rasterizeWedges(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const glm::mat4& clipFromWorld,
-                              const WedgeSet& wedges, const SilhouetteGeometry& silhouette, const CoverageLight& light,
-                              const GBuffer& g) {
-    raster::DrawCall call;
-    call.vertices.homogeneousPositions = wedges.vertices;
-    call.triangles = wedges.triangles;
-    call.clipFromObject = clipFromWorld;
-    fb.clearFragments();
-    rasterizer.resetStats();
-    rasterizer.draw(fb, wedgePassState(), call);
-
+WedgeCoverage rasterizeWedges(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const Camera& camera,
+                              const glm::mat4& clipFromWorld, const WedgeSet& wedges,
+                              const SilhouetteGeometry& silhouette, const CoverageLight& light, const GBuffer& g) {
     WedgeCoverage out;
+    out.nearWedges = drawWedges(rasterizer, fb, camera, clipFromWorld, wedges);
     out.fillFragments = rasterizer.stats().fragments;
     PixelSums sums{std::vector<double>(g.pixelCount(), 0.0), std::vector<uint32_t>(g.pixelCount(), 0),
                    std::vector<uint32_t>(g.pixelCount(), kNoWedge)};
