@@ -95,6 +95,27 @@ TEST_CASE("soft-shadow-volumes: a square under a rectangle light parallel to it 
     CHECK(groundError(s, flipped, expected).maxError > 0.4);
 }
 
+TEST_CASE("soft-shadow-volumes: the camera inside a wedge, in and out of the hard shadow, still matches the analytic V") {
+    // Eyes 0.5 m up next to the square's +x edge, where the light is half hidden at x = 0.75:
+    // at x = 0.72 the centre is hidden, at x = 0.8 it is not; both need z-fail. They look at
+    // that edge's penumbra on the ground, 0.7 < x < 1.1.
+    for (const float x : {0.72f, 0.8f}) {
+        INFO("eye x " << x);
+        Scene scene = softScene("square-over-plane.json", 240, 150);
+        scene.camera.eye = glm::vec3(x, 0.5f, -0.4f), scene.camera.target = glm::vec3(0.9f, 0.0f, 0.4f);
+        const test::SoftScene s(std::move(scene), 1);
+        const ShadowOutputs out = s.run(kTechnique);
+        const SquareUnderLight analytic = squareOverPlane();
+        const GroundError e = groundError(s, out.visibility, [&](const glm::dvec3& p) { return analytic.visibility(p); });
+        INFO("max |V - analytic| " << e.maxError << " over " << e.pixels << " ground pixels, " << e.penumbraPixels
+                                   << " in the penumbra");
+        CHECK(test::stat(out, "zfail_flag") == 1.0);
+        CHECK(test::stat(out, "near_plane_wedges_count") >= 1.0);
+        CHECK(e.penumbraPixels > 1000);
+        CHECK(e.maxError < 1e-5);
+    }
+}
+
 namespace {
 
 // square-over-plane with a second square 1.6 m up, shifted so that the two overlap as seen
