@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include "raster/portable_math.h"
 
@@ -91,12 +92,15 @@ double diskBeyondArea(const glm::dvec2& a, const glm::dvec2& b) {
     return 0.5 * (portable::atan2(crossPQ, glm::dot(p, q)) - crossPQ);
 }
 
-// The origin within kNearCentre of the segment a b, away from its ends by as much.
-bool nearSegment(const glm::dvec2& a, const glm::dvec2& b) {
+// Where the origin lies against the segment a b: within kNearCentre of it, and whether its
+// foot on the line falls between a and b.
+std::pair<bool, bool> nearSegment(const glm::dvec2& a, const glm::dvec2& b) {
     const glm::dvec2 e = b - a;
     const double length = glm::length(e);
     const double along = -glm::dot(a, e) / length;
-    return std::abs(cross2(a, e)) / length < kNearCentre && along > kNearCentre && along < length - kNearCentre;
+    const double outside = std::max({0.0, -along, along - length});
+    const double distance = std::hypot(cross2(a, e) / length, outside);
+    return {distance < kNearCentre, along >= 0.0 && along <= length};
 }
 
 }  // namespace
@@ -119,7 +123,8 @@ EdgeCoverage edgeCoverage(const CoverageLight& light, const glm::dvec3& p, const
     const double sigma = c > 0.0 ? 1.0 : -1.0;
     const double share = light.disk ? diskBeyondArea(e->a, e->b) / std::numbers::pi
                                     : squareClippedArea(beyondEdge(e->a, e->b, sigma)) / 4.0;
-    return {e->side * sigma * share, nearSegment(e->a, e->b), -e->side * sigma};
+    const auto [nearCentre, inSpan] = nearSegment(e->a, e->b);
+    return {e->side * sigma * share, nearCentre, inSpan, e->side * sigma};
 }
 
 }  // namespace shadowlab

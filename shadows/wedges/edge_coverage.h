@@ -41,15 +41,18 @@ struct CoverageLight {
 };
 CoverageLight coverageLight(const AreaLightFrame& frame);
 
-// As the centre crosses the projected edge's line between a and b, the cone from it turns
+// As the centre crosses the projected edge a b (between a and b), the cone from it turns
 // from one half-plane to the other and coverage_e jumps by exactly side sigma_e, the jump
-// of the hard shadow it makes up for. Where the centre lies that close to the line, the
-// stencil's depth test and this arithmetic may put it on different sides (a pixel of V off
-// by 1 along the hard shadow's boundary); hard_boundary.h then takes the stencil's side.
+// of the hard shadow it makes up for; crossing the line outside a b changes nothing.
+// Where the centre lies that close to the edge, the stencil's depth test and this
+// arithmetic may disagree on it (a pixel of V off by 1 along the hard shadow's boundary);
+// hard_boundary.h then takes the stencil's answer, and needs these figures for it.
 struct EdgeCoverage {
-    double coverage = 0.0;    // coverage_e
-    bool nearCentre = false;  // the centre within kNearCentre of the segment a b (light units)
-    double flip = 0.0;        // coverage_e with the centre on the line's other side, minus coverage_e
+    double coverage = 0.0;     // coverage_e
+    bool nearCentre = false;   // the centre within kNearCentre of the segment a b (light units)
+    bool inSpan = false;       // the centre's foot on the edge's line lies between a and b
+    double pSide = 0.0;        // sigma_e side: P's side of the plane through the edge and the
+                               // centre, oriented by cross(x1 - x0, centre - x0)
 };
 inline constexpr double kNearCentre = 1e-3;
 

@@ -1,6 +1,7 @@
 #include "shadows/wedges/hard_boundary.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace shadowlab {
@@ -29,11 +30,15 @@ std::vector<std::pair<size_t, uint32_t>> listedSides(const raster::Framebuffer& 
     return listed;
 }
 
-// The sign of the plane through the edge and the light's centre at the eye.
+// The sign of the plane through the edge and the light's centre at the eye; 0 when the eye
+// lies in it (to 1e-6 of its distance), where the side is seen edge on: no view ray
+// crosses it and the rasterizer draws none of it.
 double eyeSide(const ShadowInputs& in, const StencilPass& pass, uint32_t edge, const glm::dvec3& centre) {
     const SilhouetteEdge& e = pass.volume.silhouette[edge];
     const glm::dvec3 a(in.casterWorld().positions[e.from]), b(in.casterWorld().positions[e.to]);
-    const double s = glm::dot(glm::cross(b - a, centre - a), glm::dvec3(in.camera().eye) - a);
+    const glm::dvec3 n = glm::cross(b - a, centre - a), toEye = glm::dvec3(in.camera().eye) - a;
+    const double s = glm::dot(n, toEye);
+    if (!(std::abs(s) > 1e-6 * glm::length(n) * glm::length(toEye))) return 0.0;
     return s > 0.0 ? 1.0 : -1.0;
 }
 
@@ -48,9 +53,10 @@ uint64_t reconcileHardBoundary(raster::Rasterizer& rasterizer, raster::Framebuff
     uint64_t flipped = 0;
     for (const NearCentre& p : coverage.nearCentre) {
         const bool stencilFront = std::binary_search(listed.begin(), listed.end(), std::pair{p.pixel, p.edge});
-        const bool geometryFront = eyeSide(in, pass, p.edge, centre) != -p.flip;
+        const double eye = eyeSide(in, pass, p.edge, centre);
+        const bool geometryFront = p.inSpan && eye != 0.0 && eye != p.pSide;
         if (stencilFront == geometryFront) continue;
-        coverage.correction[p.pixel] += p.flip;
+        coverage.correction[p.pixel] += eye * (double(geometryFront) - double(stencilFront));
         ++flipped;
     }
     return flipped;

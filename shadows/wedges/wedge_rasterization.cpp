@@ -109,7 +109,7 @@ uint64_t shadeTile(const raster::Framebuffer& fb, int tile, const WedgeSet& set,
         if (!wedge.contains(glm::dvec3(g.position[k]))) continue;
         const EdgeCoverage c = program.coverage(wedge.edge, k);
         sums.correction[k] += c.coverage;
-        if (c.nearCentre) nearCentre.push_back({k, wedge.edge, c.flip});
+        if (c.nearCentre) nearCentre.push_back({k, wedge.edge, c.inSpan, c.pSide});
         ++sums.count[k], ++inside;
     }
     return inside;
@@ -126,7 +126,7 @@ void shadeUnbounded(const WedgeSet& set, const CoverageProgram& program, const G
             for (const uint32_t edge : set.unboundedEdges) {
                 const EdgeCoverage c = program.coverage(edge, k);
                 sums.correction[k] += c.coverage;
-                if (c.nearCentre) perRow[size_t(y)].push_back({k, edge, c.flip});
+                if (c.nearCentre) perRow[size_t(y)].push_back({k, edge, c.inSpan, c.pSide});
             }
             sums.count[k] += uint32_t(set.unboundedEdges.size());
         }

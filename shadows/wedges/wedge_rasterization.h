@@ -34,7 +34,8 @@ namespace shadowlab {
 struct NearCentre {
     size_t pixel;        // row-major
     uint32_t edge;       // silhouette index
-    double flip;         // EdgeCoverage::flip
+    bool inSpan;         // EdgeCoverage::inSpan
+    double pSide;        // EdgeCoverage::pSide
 };
 
 struct WedgeCoverage {
