@@ -22,7 +22,8 @@ struct ProjectedEdge {
 };
 
 // The edge cut to the points between P's level and the light, projected from P.
-std::optional<ProjectedEdge> projectEdge(const CoverageLight& light, const glm::dvec3& p, glm::dvec3 x0, glm::dvec3 x1) {
+std::optional<ProjectedEdge> projectEdge(const CoverageLight& light, const glm::dvec3& p, glm::dvec3 x0,
+                                        glm::dvec3 x1) {
     const double signedHeight = glm::dot(light.normal, p - light.centre);
     const double side = signedHeight >= 0.0 ? 1.0 : -1.0, height = std::abs(signedHeight);
     const double limit = height * (1.0 - kHorizon);
@@ -99,7 +100,7 @@ std::pair<bool, bool> nearSegment(const glm::dvec2& a, const glm::dvec2& b) {
     const double length = glm::length(e);
     const double along = -glm::dot(a, e) / length;
     const double outside = std::max({0.0, -along, along - length});
-    const double distance = std::hypot(cross2(a, e) / length, outside);
+    const double distance = portable::hypot(cross2(a, e) / length, outside);
     return {distance < kNearCentre, along >= 0.0 && along <= length};
 }
 

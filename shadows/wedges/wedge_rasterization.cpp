@@ -50,7 +50,9 @@ std::array<WedgeDraw, 2> splitByNearPlane(const WedgeSet& set, const glm::dvec3&
 // The largest distance from the eye to a corner of the near-plane rectangle (plus 1 mm).
 double nearPlaneRadius(const Camera& camera) {
     double radius = 0.0;
-    for (const glm::dvec3& c : nearPlaneCorners(camera)) radius = std::max(radius, glm::length(c - glm::dvec3(camera.eye)));
+    for (const glm::dvec3& c : nearPlaneCorners(camera)) {
+        radius = std::max(radius, glm::length(c - glm::dvec3(camera.eye)));
+    }
     return radius + 1e-3;
 }
 
