@@ -77,7 +77,7 @@ void addWedgeStats(const WedgeSet& set, const WedgeCoverage& c, uint64_t flipped
         {"wedge_inside_fragments", double(c.insideFragments)},
         {"wedge_inside_fragments_per_pixel", double(c.insideFragments) / double(pixels)},
         {"near_centre_fragments", double(c.nearCentre.size())},
-        {"stencil_side_pixels", double(flipped)},
+        {"stencil_side_fragments", double(flipped)},
     });
 }
 
