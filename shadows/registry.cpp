@@ -16,6 +16,7 @@
 #include "shadows/screen/contact_shadows.h"
 #include "shadows/technique.h"
 #include "shadows/volumes/shadow_volume.h"
+#include "shadows/wedges/soft_shadow_volumes.h"
 
 namespace shadowlab {
 
@@ -43,6 +44,7 @@ const std::vector<Technique>& techniques() {
         withCasterLod(finsTechnique()),
         withCasterLod(smoothiesTechnique()),
         withCasterLod(penumbraMapsTechnique()),
+        withCasterLod(softShadowVolumeTechnique()),
         withCasterLod(colouredShadowMapTechnique()),
         withCasterLod(opacityShadowMapsTechnique()),
         withCasterLod(deepShadowMapsTechnique()),

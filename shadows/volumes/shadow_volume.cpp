@@ -44,6 +44,9 @@
 //
 // Back-facing surfaces get V = 0 by the facing test (as in the reference), so the
 // terminator of a tessellated object is its polygonal one, as in the reference.
+//
+// Steps 1 to 5 are the stencil pass (stencil_pass.h), which the soft shadow volumes
+// (shadows/wedges/) run for the light's centre; step 6 is here.
 #include "shadows/volumes/shadow_volume.h"
 
 #include <cstdint>
@@ -54,107 +57,15 @@
 #include <tbb/parallel_reduce.h>
 
 #include "raster/rasterizer.h"
-#include "scenes/edge_adjacency.h"
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/silhouettes/silhouette_image.h"
 #include "shadows/stage_timer.h"
-#include "shadows/volumes/counting_mode.h"
-#include "shadows/volumes/infinite_projection.h"
-#include "shadows/volumes/volume_extrusion.h"
+#include "shadows/volumes/stencil_pass.h"
 
 namespace shadowlab {
 namespace {
-
-using raster::CompareFunc;
-using raster::StencilOp;
-
-enum class Counting { ZPass, ZFail };
-enum class Mode { Auto, ZPass, ZFail };   // the `mode` parameter: a counting, or auto
-
-struct CountingChoice {
-    Counting counting = Counting::ZPass;
-    bool nearPlaneShadowed = false;   // what auto decides by (counting_mode.h), reported always
-};
-
-// Step 2, taken first: step 1 builds the caps for z-fail only.
-CountingChoice chooseCounting(const ShadowInputs& in, const glm::dvec4& light) {
-    const bool nearPlaneShadowed = nearPlaneMayBeShadowed(in.camera(), light, instanceBounds(in.casters().scene(), in.casterWorld()));
-    switch (in.params.choice<Mode>("mode")) {
-        case Mode::ZPass: return {Counting::ZPass, nearPlaneShadowed};
-        case Mode::ZFail: return {Counting::ZFail, nearPlaneShadowed};
-        case Mode::Auto: break;
-    }
-    return {nearPlaneShadowed ? Counting::ZFail : Counting::ZPass, nearPlaneShadowed};
-}
-
-// The camera's depth, as the G-buffer's camera pass (no culling), but with the far plane
-// at infinity.
-void depthPrepass(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const WorldGeometry& world,
-                  const glm::mat4& clipFromWorld) {
-    raster::PipelineState state;
-    state.cull = raster::CullMode::None;
-    state.clipFar = false;
-    rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld));
-}
-
-raster::PipelineState stencilPassState(Counting counting, float offsetUnits) {
-    raster::PipelineState state;
-    state.offset.units = offsetUnits;
-    state.cull = raster::CullMode::None;
-    state.clipFar = false;
-    state.depth = {.test = true, .write = false, .func = CompareFunc::Less};
-    state.stencil.enabled = true;
-    if (counting == Counting::ZPass) {
-        state.stencil.front.depthPass = StencilOp::IncrementWrap;
-        state.stencil.back.depthPass = StencilOp::DecrementWrap;
-    } else {
-        state.stencil.back.depthFail = StencilOp::IncrementWrap;
-        state.stencil.front.depthFail = StencilOp::DecrementWrap;
-    }
-    state.colorWriteMask = 0;
-    return state;
-}
-
-// Every fragment of every volume face adds 1 to the red plane.
-raster::PipelineState fillCountState() {
-    raster::PipelineState state;
-    state.cull = raster::CullMode::None;
-    state.clipFar = false;
-    state.depth = {.test = false, .write = false, .func = CompareFunc::Always};
-    state.output = raster::FragmentOutput::ConstantColor;
-    state.colorWriteMask = 0x1;
-    state.blend = {.enabled = true, .equation = raster::BlendEquation::Add, .srcFactor = raster::BlendFactor::One,
-                   .dstFactor = raster::BlendFactor::One};
-    return state;
-}
-
-raster::DrawCall volumeDraw(const ShadowVolume& volume, Counting counting, const glm::mat4& clipFromWorld) {
-    raster::DrawCall call;
-    call.vertices.homogeneousPositions = volume.vertices;
-    call.triangles = counting == Counting::ZPass ? volume.sides() : volume.all();
-    call.clipFromObject = clipFromWorld;
-    return call;
-}
-
-// Steps 3 and 4: the depth prepass, then the stencil pass. Returns the stencil pass's
-// figures, whose fragments are the fill (step 5).
-raster::RasterStats countCrossings(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
-                                   const glm::mat4& clipFromWorld, const raster::DrawCall& volume, Counting counting) {
-    fb.clearDepth(1.0f), fb.clearStencil(0);
-    depthPrepass(rasterizer, fb, in.receiverWorld(), clipFromWorld);
-    rasterizer.resetStats();
-    rasterizer.draw(fb, stencilPassState(counting, float(in.params.real("offset"))), volume);
-    return rasterizer.stats();
-}
-
-// Step 5 per pixel, for the debug buffers: the fragments of the volume faces at each pixel.
-std::vector<float> fillPerPixel(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::DrawCall& volume) {
-    fb.clearColor(glm::vec4(0.0f));
-    rasterizer.draw(fb, fillCountState(), volume);
-    return fb.colorImage(0);
-}
 
 // Step 6, with the stencil as a signed count per pixel; rows in parallel (the count of
 // shadowed pixels is an integer sum, the same in any order).
@@ -179,30 +90,6 @@ ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light,
     return out;
 }
 
-void addVolumeStats(const ShadowInputs& in, const CountingChoice& choice, const ShadowVolume& volume,
-                    const raster::RasterStats& fill, ShadowOutputs& out) {
-    uint32_t openMeshes = 0, openEdges = 0, nonManifoldEdges = 0;
-    for (const MeshInstance& instance : in.casters().scene().instances) {
-        const EdgeAdjacency& a = in.casters().edgeAdjacency()[instance.mesh];
-        openMeshes += !a.closed, openEdges += a.openEdges, nonManifoldEdges += a.nonManifoldEdges;
-    }
-    const double fragments = double(fill.fragments);
-    out.stats.insert(out.stats.end(), {
-        {"zfail_flag", choice.counting == Counting::ZFail ? 1.0 : 0.0},
-        {"near_plane_shadowed_flag", choice.nearPlaneShadowed ? 1.0 : 0.0},
-        {"open_instances_count", double(openMeshes)},
-        {"open_edges", double(openEdges)},
-        {"non_manifold_edges", double(nonManifoldEdges)},
-        {"silhouette_edges", double(volume.silhouette.size())},
-        {"volume_side_triangles", double(volume.sideCount)},
-        {"volume_light_cap_triangles", double(volume.lightCapCount)},
-        {"volume_dark_cap_triangles", double(volume.darkCapCount)},
-        {"volume_set_up_triangles", double(fill.trianglesSetUp)},
-        {"fill_fragments", fragments},
-        {"fill_fragments_per_pixel", fragments / double(in.gbuffer.pixelCount())},
-    });
-}
-
 void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowOutputs& out, const ShadowVolume& volume,
                 const std::vector<float>& fill) {
     const Camera& camera = in.camera();
@@ -215,26 +102,17 @@ void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowO
 ShadowOutputs run(const ShadowInputs& in) {
     const Camera& camera = in.camera();
     const Light light = pointLightFor(in.light);
-    const glm::dvec4 lightH = homogeneousLight(light);
     StageTimer timer;
-    const CountingChoice choice = chooseCounting(in, lightH);
-    const ShadowVolume volume = extrudeShadowVolume(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), lightH,
-                                                    choice.counting == Counting::ZFail);
-    timer.lap("extrusion");
-
-    const glm::mat4 clipFromWorld = clipFromWorldInfinite(camera);
     const DebugBuffers debug(in.debugDir, "shadow-volume");
     raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
     raster::Rasterizer rasterizer(in.simd);
-    const raster::DrawCall call = volumeDraw(volume, choice.counting, clipFromWorld);
-    const raster::RasterStats fill = countCrossings(rasterizer, fb, in, clipFromWorld, call, choice.counting);
-    timer.lap("stencil");
+    const StencilPass pass = runStencilPass(rasterizer, fb, in, homogeneousLight(light), timer);
 
     ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb.stencilImage());
     timer.lap("visibility");
-    addVolumeStats(in, choice, volume, fill, out);
+    appendStencilPassStats(in, pass, out.stats);
     timer.appendTo(out.stats);
-    if (debug.enabled()) writeDebug(debug, in, out, volume, fillPerPixel(rasterizer, fb, call));
+    if (debug.enabled()) writeDebug(debug, in, out, pass.volume, fillPerPixel(rasterizer, fb, pass));
     return out;
 }
 
@@ -244,12 +122,7 @@ Technique shadowVolumeTechnique() {
     return {.name = "shadow-volume",
             .description = "stencil shadow volumes: silhouettes extruded to infinity, z-pass or z-fail with "
                            "two-sided wrapping stencil",
-            .params = {choiceParam<Mode>("mode", "auto",
-                                         {{"auto", Mode::Auto, "z-fail when a volume may reach the near plane"},
-                                          {"zpass", Mode::ZPass},
-                                          {"zfail", Mode::ZFail}}),
-                       realParam("offset", 0.0, 0.0, 64.0,
-                                 "polygon offset of the volume faces, in units of the depth buffer's resolution")},
+            .params = stencilPassParams(),
             .run = run,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility,

@@ -2,7 +2,8 @@
 // writes its intermediate buffers as DIR/<technique>-<name>.exr (channel Y) and .png,
 // readable, finite, of the camera's size or a light-space size, and showing them does not
 // change V. The views show what the technique computed:
-// shadow-volume's stencil and fill, izb's list lengths, shadow-map's texel density and
+// shadow-volume's stencil and fill, soft-shadow-volumes' hard shadow, wedges and coverage
+// correction, izb's list lengths, shadow-map's texel density and
 // csm's cascade colouring, each checked against the technique's own outputs and stats.
 #include <doctest/doctest.h>
 
@@ -162,6 +163,32 @@ TEST_CASE("shadow-volume debug fill: the sum over pixels is the stat fill fragme
 // Every receiver sits in exactly one texel's list (izb/lists.cpp: a counting sort of
 // receiverTexels), so the lengths sum to the receivers and the occupied texels are the
 // non-empty ones; the grid stacks `views` squares of `resolution` texels.
+TEST_CASE("soft-shadow-volumes debug: stencil and visibility are the outputs, V = clamp(1 - stencil - correction), "
+          "corrections only where wedges hold P") {
+    const SmallScene s = sceneFor("soft-shadow-volumes");
+    const ScratchDir dir("soft-shadow-volumes");
+    const Frame f = s.run("soft-shadow-volumes", dir.path);
+    const auto buffer = [&](const char* name) { return readBuffer(dir.path, "soft-shadow-volumes", name); };
+    const std::vector<float> stencil = buffer("stencil"), wedges = buffer("wedges"), correction = buffer("correction");
+    CHECK(stencil == f.shadow.stencil);
+    CHECK(buffer("visibility") == f.shadow.visibility);
+    const Light light = pointLightFor(s.prepared.scene().lights[0]);
+    size_t inWedges = 0, mismatched = 0, outsideCorrected = 0;
+    for (size_t k = 0; k < f.gbuffer.pixelCount(); ++k) {
+        if (!f.gbuffer.hit[k]) continue;
+        outsideCorrected += wedges[k] == 0.0f && correction[k] != 0.0f;
+        if (!test::facesLight(f.gbuffer, k, light)) continue;
+        inWedges += wedges[k] > 0.0f;
+        const float expected = std::clamp(1.0f - stencil[k] - correction[k], 0.0f, 1.0f);
+        mismatched += f.shadow.visibility[k] != expected;
+    }
+    INFO(inWedges << " light-facing pixels inside wedges");
+    CHECK(inWedges > 50);
+    CHECK(double(inWedges) <= test::stat(f.shadow, "wedge_inside_fragments"));
+    CHECK(mismatched == 0);
+    CHECK(outsideCorrected == 0);
+}
+
 TEST_CASE("izb debug list-length: sums to the stat receivers, and occupancy counts the non-empty texels") {
     const SmallScene s = sceneFor("izb");
     const ScratchDir dir("izb");
