@@ -14,6 +14,8 @@ LightPlane::LightPlane(const AreaLightFrame& frame) : centre(frame.centre) {
 
 namespace {
 
+constexpr int kLoop[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};   // a patch's corners in order
+
 // Where the ray from P through the map's point (texel X, Y at window depth z) meets the
 // light's plane, in (a, b); false unless the point lies between P and that plane.
 bool projectOntoLight(const SoftShadowMap& soft, const glm::dvec3& P, const LightPlane& light, double X, double Y,
@@ -46,7 +48,6 @@ int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const g
         }
     }
     const double nodeWidth = double(1 << grid.level);
-    static constexpr int kLoop[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};   // a patch's corners in order
     int projected = 0;
     for (int j = 0; j < grid.height; ++j) {
         for (int i = 0; i < grid.width; ++i) {
@@ -76,6 +77,21 @@ int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const g
             if (drawn) drawn->insert(drawn->end(), v, v + 4);
             if (samples.full(mask)) return projected;
         }
+    }
+    // The refined mixed nodes' patches, each at its own depth.
+    for (const FinePatch& p : grid.fine) {
+        const double width = double(1 << p.level);
+        glm::vec2 v[4];
+        bool valid = true;
+        for (int c = 0; c < 4 && valid; ++c) {
+            valid = projectOntoLight(soft, P, light, (p.x + kLoop[c][0]) * width, (p.y + kLoop[c][1]) * width, p.depth,
+                                     v[c]);
+        }
+        if (!valid) continue;
+        samples.cover(mask, v, 4);
+        ++projected;
+        if (drawn) drawn->insert(drawn->end(), v, v + 4);
+        if (samples.full(mask)) return projected;
     }
     return projected;
 }
