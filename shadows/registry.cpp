@@ -34,6 +34,7 @@ const std::vector<Technique>& techniques() {
         withCasterLod(planarTechnique()),
         withCasterLod(projectedTextureTechnique()),
         withCasterLod(pcssTechnique()),
+        withCasterLod(contactHardeningTechnique()),
         withCasterLod(izbPcssTechnique()),
         withCasterLod(filteredShadowMapTechnique(MomentKind::Variance)),
         withCasterLod(filteredShadowMapTechnique(MomentKind::Exponential)),

@@ -15,6 +15,8 @@
 namespace shadowlab {
 
 Technique pcssTechnique();
+// `chs`, PCSS read on the min/max hierarchy's levels (contact_hardening.cpp).
+Technique contactHardeningTechnique();
 Technique filteredShadowMapTechnique(MomentKind kind);
 Technique multiSampleTechnique();
 
