@@ -97,7 +97,8 @@ PixelResult shadePixel(const Frame& f, const glm::dvec3& P, const glm::dvec3& N,
         out.proved = f.settings.minMaxHierarchy && f.hierarchy.provedLit(r, x0, y0, x1, y1);
         if (!out.proved) {
             // 3. The occluders' patches onto the light.
-            gatherPatches(f.soft.map, f.hierarchy, r, x0, y0, x1, y1, f.settings.maxNodes, grid);
+            gatherPatches(f.soft, f.hierarchy, {r, dr, f.samples.perAxis()}, x0, y0, x1, y1, f.settings.maxNodes,
+                          grid);
             out.level = grid.level;
             if (grid.occluders > 0) {
                 out.patches = backProjectPatches(grid, f.soft, P, f.plane, f.samples, f.settings.continuity, hidden,

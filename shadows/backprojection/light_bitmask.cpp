@@ -62,10 +62,15 @@ void LightGrid::cover(LightBitmask& mask, const glm::vec2* v, int count) const {
 }
 
 void LightGrid::coverHalfPlane(LightBitmask& mask, double alpha, double beta, double gamma) const {
+    if (gamma > std::abs(alpha) + std::abs(beta)) return;   // the whole square above the plane: nothing hidden
     for (int j = 0; j < n_; ++j) {
-        uint32_t bits = 0;
-        for (int i = 0; i < n_; ++i) bits |= alpha * centre(i) + beta * centre(j) + gamma <= 0.0 ? 1u << i : 0u;
-        mask.rows[size_t(j)] |= bits;
+        const double c = beta * centre(j) + gamma;             // alpha a + c <= 0
+        if (alpha == 0.0) {
+            if (c <= 0.0) mask.rows[size_t(j)] |= onLight_.rows[size_t(j)];
+            continue;
+        }
+        const float edge = float(-c / alpha);   // hidden: a <= edge (alpha > 0) or a >= edge (alpha < 0)
+        mask.rows[size_t(j)] |= alpha > 0.0 ? span(-2.0f, edge) : span(edge, 2.0f);
     }
 }
 

@@ -4,6 +4,56 @@
 #include <cmath>
 
 namespace shadowlab {
+namespace {
+
+// Whether a node of `level` at (x, y) may occlude (some texel nearer than the receiver's
+// plane over it) and whether all of it does.
+struct NodeClass {
+    bool some = false, all = false;
+    float least = 1.0f;
+};
+NodeClass classify(const MinMaxHierarchy& hierarchy, const MapReceiver& r, int level, int x, int y) {
+    const double width = double(1 << level), halfWidth = 0.5 * (width - 1.0);
+    const double planeLeast = r.depthAt({(x + 0.5) * width, (y + 0.5) * width}) -
+                              (std::abs(r.depthSlope.x) + std::abs(r.depthSlope.y)) * halfWidth;
+    const DepthRange range = hierarchy.node(level, x, y);
+    return {range.least < 1.0f && double(range.least) + r.tolerance < planeLeast,
+            double(range.greatest) + r.tolerance < planeLeast, range.least};
+}
+
+// The coarsest level whose nodes at window depth `depth` back-project no wider than one of
+// the light's samples (0: texels; the hierarchy has no level 1).
+int sampleLevel(const SoftShadowMap& soft, const PatchReceiver& p, float depth) {
+    const double d = std::min(soft.distanceOf(depth), p.dr);
+    const glm::dvec2 w = sampleWidthTexels(soft, p.dr, d);
+    const double texels = std::min(w.x, w.y) / p.samplesPerAxis;
+    int level = 0;
+    while (level < 30 && double(2 << level) <= texels) ++level;
+    return level < MinMaxHierarchy::kFirstLevel ? 0 : level;
+}
+
+// A mixed node: one patch at its least depth once it is no wider than a light sample, else
+// its children (the next level down, or texels below the hierarchy's first level), the
+// solid ones as patches and the mixed ones refined again.
+void refine(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const PatchReceiver& p, int level, int x,
+            int y, float least, PatchGrid& out) {
+    if (level <= sampleLevel(soft, p, least)) return void(out.fine.push_back({level, x, y, least}));
+    const int down = level - 1 >= MinMaxHierarchy::kFirstLevel ? level - 1 : 0;
+    const int per = 1 << (level - down), size = down == 0 ? soft.map.size : hierarchy.sizeOf(down);
+    for (int j = y * per; j < std::min((y + 1) * per, size); ++j) {
+        for (int i = x * per; i < std::min((x + 1) * per, size); ++i) {
+            if (down == 0) {
+                if (!p.r.litBy(soft.map, i, j)) out.fine.push_back({0, i, j, soft.map.at(i, j)});
+                continue;
+            }
+            const NodeClass c = classify(hierarchy, p.r, down, i, j);
+            if (c.all) out.fine.push_back({down, i, j, c.least});
+            else if (c.some) refine(soft, hierarchy, p, down, i, j, c.least, out);
+        }
+    }
+}
+
+}  // namespace
 
 int patchLevelFor(int span, int maxNodes, int levels) {
     if (span < maxNodes) return 0;
@@ -12,57 +62,24 @@ int patchLevelFor(int span, int maxNodes, int levels) {
     return level;
 }
 
-namespace {
-
-// The refinement of a mixed node (level, x, y) into fine patches: its texels, or the nodes
-// two levels down (never below the hierarchy's first level), each where it may occlude.
-void refine(const DepthMap& map, const MinMaxHierarchy& hierarchy, const MapReceiver& r, int level, int x, int y,
-            PatchGrid& out) {
-    const int down = (1 << (2 * level)) <= kRefinedTexels ? 0 : std::max(level - 2, MinMaxHierarchy::kFirstLevel);
-    const int per = 1 << (level - down);
-    const double width = double(1 << down), halfWidth = 0.5 * (width - 1.0);
-    const double planeSpread = (std::abs(r.depthSlope.x) + std::abs(r.depthSlope.y)) * halfWidth;
-    for (int j = y * per; j < (y + 1) * per; ++j) {
-        for (int i = x * per; i < (x + 1) * per; ++i) {
-            if (down == 0) {
-                if (i < map.size && j < map.size && !r.litBy(map, i, j)) out.fine.push_back({0, i, j, map.at(i, j)});
-                continue;
-            }
-            if (i >= hierarchy.sizeOf(down) || j >= hierarchy.sizeOf(down)) continue;
-            const float least = hierarchy.node(down, i, j).least;
-            const double planeLeast = r.depthAt({(i + 0.5) * width, (j + 0.5) * width}) - planeSpread;
-            if (least < 1.0f && double(least) + r.tolerance < planeLeast) out.fine.push_back({down, i, j, least});
-        }
-    }
-}
-
-}  // namespace
-
-void gatherPatches(const DepthMap& map, const MinMaxHierarchy& hierarchy, const MapReceiver& r, int x0, int y0,
-                   int x1, int y1, int maxNodes, PatchGrid& out) {
+void gatherPatches(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const PatchReceiver& p, int x0,
+                   int y0, int x1, int y1, int maxNodes, PatchGrid& out) {
     out.level = patchLevelFor(std::max(x1 - x0, y1 - y0), maxNodes, hierarchy.levels());
     out.x0 = x0 >> out.level, out.y0 = y0 >> out.level;
     out.width = (x1 >> out.level) - out.x0 + 1, out.height = (y1 >> out.level) - out.y0 + 1;
     out.depth.assign(size_t(out.width) * size_t(out.height), 1.0f);
     out.fine.clear();
-    const double nodeWidth = double(1 << out.level), halfWidth = 0.5 * (nodeWidth - 1.0);
-    const double planeSpread = (std::abs(r.depthSlope.x) + std::abs(r.depthSlope.y)) * halfWidth;
     int gridPatches = 0;
     for (int j = 0; j < out.height; ++j) {
         for (int i = 0; i < out.width; ++i) {
             const int x = out.x0 + i, y = out.y0 + j;
             float depth = 1.0f;
             if (out.level == 0) {
-                if (!r.litBy(map, x, y)) depth = map.at(x, y);
+                if (!p.r.litBy(soft.map, x, y)) depth = soft.map.at(x, y);
             } else {
-                // Where the receiver's plane is least deep over the node: a texel nearer than
-                // that occludes wherever it lies in the node.
-                const DepthRange range = hierarchy.node(out.level, x, y);
-                const double planeLeast = r.depthAt({(x + 0.5) * nodeWidth, (y + 0.5) * nodeWidth}) - planeSpread;
-                const bool some = range.least < 1.0f && double(range.least) + r.tolerance < planeLeast;
-                const bool all = double(range.greatest) + r.tolerance < planeLeast;
-                if (all) depth = range.least;
-                else if (some) refine(map, hierarchy, r, out.level, x, y, out);
+                const NodeClass c = classify(hierarchy, p.r, out.level, x, y);
+                if (c.all) depth = c.least;
+                else if (c.some) refine(soft, hierarchy, p, out.level, x, y, c.least, out);
             }
             out.depth[size_t(j) * size_t(out.width) + size_t(i)] = depth;
             gridPatches += depth < 1.0f;

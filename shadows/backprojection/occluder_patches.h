@@ -6,15 +6,18 @@
 // it spans more than maxNodes texels on a side, the min/max hierarchy's nodes stand in for
 // texels (their section 4.1, "adaptive precision"): the first level whose nodes cover it in
 // at most maxNodes per side. A node whose every texel occludes is one patch at its least
-// depth. A mixed node (an occluder's edge: some texels occlude, some do not) is refined, as
-// the hierarchy allows: into its texels up to kRefinedTexels of them, else into the nodes
-// two levels down, each a patch at its least depth, so a thin occluder (a rail under a
-// wide plate) keeps its width instead of growing to a node's.
+// depth. A mixed node (an occluder's edge: some texels occlude, some do not) is refined
+// down the hierarchy until its nodes are no wider, back-projected, than one of the light's
+// samples: a node of 2^l texels at distance d from the light covers 2^l / w(d) of the
+// light's width, w(d) the light's cone from the receiver in texels at d (eq. 7.6 in
+// texels), so the refinement stops at 2^l <= w(d) / n for n samples per axis. A thin
+// occluder (a rail under a wide plate) keeps its width to within a sample.
 #pragma once
 
 #include <vector>
 
 #include "shadows/depth_map.h"
+#include "shadows/filtered/soft_shadow_map.h"
 #include "shadows/maps/min_max_hierarchy.h"
 #include "shadows/maps/shadow_bias.h"
 
@@ -27,8 +30,6 @@ struct FinePatch {
     float depth = 1.0f;            // window depth
 };
 
-inline constexpr int kRefinedTexels = 64;   // a mixed node of at most 8 x 8 texels is refined to texels
-
 struct PatchGrid {
     int level = 0;                 // 0: texels, else a level of the hierarchy
     int x0 = 0, y0 = 0;            // the first node, in nodes of that level
@@ -40,12 +41,20 @@ struct PatchGrid {
     float at(int i, int j) const { return depth[size_t(j) * size_t(width) + size_t(i)]; }
 };
 
-// The patches of texels [x0, x1] x [y0, y1] (inside the map) for receiver r (its plane,
-// receiver-plane bias): a texel occludes where r.litBy says shadowed; a node where its
-// least depth plus the compare's tolerance is nearer than the receiver's plane anywhere
-// over it (so a floor's own nodes, on the plane, never occlude it).
-void gatherPatches(const DepthMap& map, const MinMaxHierarchy& hierarchy, const MapReceiver& r, int x0, int y0,
-                   int x1, int y1, int maxNodes, PatchGrid& out);
+// What the patches are gathered for: the receiver (its plane, receiver-plane bias; its
+// distance dr from the light's centre) and the light's samples per axis.
+struct PatchReceiver {
+    const MapReceiver& r;
+    double dr;
+    int samplesPerAxis;
+};
+
+// The patches of texels [x0, x1] x [y0, y1] (inside the map): a texel occludes where r.litBy
+// says shadowed; a node where its least depth plus the compare's tolerance is nearer than
+// the receiver's plane anywhere over it (so a floor's own nodes, on the plane, never
+// occlude it), all of it where its greatest depth is.
+void gatherPatches(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const PatchReceiver& receiver,
+                   int x0, int y0, int x1, int y1, int maxNodes, PatchGrid& out);
 
 // The level gatherPatches uses for a region spanning `span` texels: 0 or one of the
 // hierarchy's (MinMaxHierarchy::kFirstLevel ...).
