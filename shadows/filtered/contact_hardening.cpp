@@ -62,6 +62,7 @@ Estimate searchBlockers(const SoftShadowMap& soft, const MinMaxHierarchy& h, con
     const int x0 = texel(r.texel.x - radius.x), x1 = texel(r.texel.x + radius.x);
     const int y0 = texel(r.texel.y - radius.y), y1 = texel(r.texel.y + radius.y);
     Estimate e;
+    if (h.provedLit(r, x0, y0, x1, y1)) return e;   // no node could hold a blocker: skip the search
     e.level = levelFor(std::max(x1 - x0, y1 - y0), nodes, h);
     double sum = 0.0;
     int blockers = 0;
