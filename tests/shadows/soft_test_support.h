@@ -44,6 +44,11 @@ struct SoftScene {
     }
 };
 
+// A case of scenes/soft by name, as a path from the source tree (ctest runs in the build tree).
+inline std::string softCase(const std::string& name) {
+    return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft/" + name + ".json";
+}
+
 inline Scene smallScene(const std::string& name, int width, int height) {
     Scene scene = loadScene(name);
     scene.camera.width = width, scene.camera.height = height;

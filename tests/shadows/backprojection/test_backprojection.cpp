@@ -14,6 +14,7 @@
 
 using namespace shadowlab;
 using shadowlab::test::smallScene;
+using shadowlab::test::softCase;
 using shadowlab::test::SoftScene;
 
 TEST_CASE("the light bitmask covers polygons and half-planes by their sample centres") {
@@ -41,7 +42,7 @@ TEST_CASE("the light bitmask covers polygons and half-planes by their sample cen
 
 TEST_CASE("backprojection is within a stated RMS of the soft reference on the convex cases and beats PCSS") {
     // Measured at 200 x 125: sphere-box 0.0053, two-boxes 0.0070 (PCSS 0.016 and 0.011).
-    const std::map<std::string, double> bound = {{"sphere-box", 0.008}, {"scenes/soft/two-boxes.json", 0.011}};
+    const std::map<std::string, double> bound = {{"sphere-box", 0.008}, {softCase("two-boxes"), 0.011}};
     for (const auto& [name, rmsBound] : bound) {
         CAPTURE(name);
         const SoftScene s(smallScene(name, 200, 125));
@@ -72,7 +73,7 @@ TEST_CASE("backprojection handles rectangle lights: a square light over sphere-b
 TEST_CASE("backprojection converges to the soft reference as the map resolution grows") {
     // Texels only (max-nodes large), so the patches shrink with the texels: the silhouette's
     // error is about a texel, which halves with each doubling.
-    const SoftScene s(smallScene("scenes/soft/large-light.json", 200, 125));
+    const SoftScene s(smallScene(softCase("large-light"), 200, 125));
     double previous = 1.0;
     for (int resolution : {64, 128, 256, 512}) {
         const double e = s.rms(s.run("backprojection", {{"resolution", std::to_string(resolution)},
@@ -87,7 +88,7 @@ TEST_CASE("backprojection converges to the soft reference as the map resolution 
 }
 
 TEST_CASE("backprojection gives the same bits with and without the min-max hierarchy, threads and SIMD levels") {
-    Scene scene = smallScene("scenes/soft/two-boxes.json", 160, 100);
+    Scene scene = smallScene(softCase("two-boxes"), 160, 100);
     const PreparedScene prepared(std::move(scene));
     const GBuffer g = renderGBuffer(prepared.world(), prepared.scene().camera, raster::SimdLevel::Scalar);
     const Technique& t = findTechnique("backprojection");

@@ -12,11 +12,12 @@
 
 using namespace shadowlab;
 using shadowlab::test::smallScene;
+using shadowlab::test::softCase;
 using shadowlab::test::SoftScene;
 
 TEST_CASE("chs stays within a stated RMS of the soft reference, near PCSS, reading coarse levels") {
     // Measured at 200 x 125: sphere-box 0.017 (PCSS 0.016); at 320 x 200 two-boxes and bunny within 5%.
-    for (const std::string name : {"sphere-box", "scenes/soft/two-boxes.json"}) {
+    for (const std::string& name : {std::string("sphere-box"), softCase("two-boxes")}) {
         CAPTURE(name);
         const SoftScene s(smallScene(name, 200, 125));
         const ShadowOutputs chs = s.run("chs");
@@ -35,7 +36,7 @@ TEST_CASE("chs stays within a stated RMS of the soft reference, near PCSS, readi
 }
 
 TEST_CASE("chs gives the same bytes for 1 and 2 threads") {
-    const SoftScene s(smallScene("scenes/soft/two-heights.json", 160, 100), 2);
+    const SoftScene s(smallScene(softCase("two-heights"), 160, 100), 2);
     std::vector<float> one, two;
     {
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);

@@ -405,7 +405,7 @@ std::vector<std::string> umbraScenes() {
 
 TEST_CASE("fins: multi-layer fins over-estimate the umbra less than smoothies and penumbra maps") {
     const std::vector<std::string> scenes = umbraScenes();
-    REQUIRE(scenes.size() == 7);   // sphere-box, bunny and the five cases of scenes/soft
+    REQUIRE(scenes.size() == 8);   // sphere-box, bunny, the five cases of Cai et al. and two-heights
     for (const std::string& scene : scenes) {
         const test::SoftScene s = umbraScene(scene);
         const UmbraErrors fins = umbraErrors(s, s.run("fins").visibility);

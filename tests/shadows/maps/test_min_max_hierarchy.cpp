@@ -15,6 +15,7 @@
 #include "scenes/scene_file.h"
 #include "shadows/maps/min_max_hierarchy.h"
 #include "shadows/technique.h"
+#include "tests/shadows/soft_test_support.h"
 
 using namespace shadowlab;
 
@@ -113,7 +114,8 @@ TEST_CASE("a min-max hierarchy query bounds every texel of the rectangle and mee
 }
 
 TEST_CASE("pcss gives the same bits with and without the min-max hierarchy, at every SIMD level and thread count") {
-    for (const std::string name : {"sphere-box", "scenes/soft/two-boxes.json", "scenes/soft/large-light.json"}) {
+    for (const std::string& name :
+         {std::string("sphere-box"), test::softCase("two-boxes"), test::softCase("large-light")}) {
         CAPTURE(name);
         Scene scene = loadScene(name);
         scene.camera.width = 200, scene.camera.height = 125;
