@@ -111,14 +111,6 @@ PixelResult shadePixel(const Frame& f, const glm::dvec3& P, const glm::dvec3& N,
     return out;
 }
 
-glm::ivec2 plottedPixel(const ShadowInputs& in) {
-    const int i = in.params.integer("plot-x"), j = in.params.integer("plot-y");
-    if (i >= in.gbuffer.width || j >= in.gbuffer.height) {
-        throw std::invalid_argument(std::string(kName) + ": plot-x, plot-y must name a pixel of the image");
-    }
-    return {i < 0 ? in.gbuffer.width / 2 : i, j < 0 ? in.gbuffer.height / 2 : j};
-}
-
 void writeDebug(const ShadowInputs& in, const Frame& f, const std::vector<int8_t>& level,
                 const std::vector<uint16_t>& patches) {
     const DebugBuffers debug(in.debugDir, kName);
@@ -131,8 +123,8 @@ void writeDebug(const ShadowInputs& in, const Frame& f, const std::vector<int8_t
     const float most = float(*std::max_element(patches.begin(), patches.end()));
     debug.write("patches", g.width, g.height, std::vector<float>(patches.begin(), patches.end()), 0.0f,
                 std::max(most, 1.0f));
-    const glm::ivec2 p = plottedPixel(in);
-    const size_t k = g.index(p.x, p.y);
+    const auto [i, j] = plotPixel(in.params, g.width, g.height, kName);
+    const size_t k = g.index(i, j);
     if (!g.hit[k]) return;
     PatchGrid grid;
     BackProjectionScratch scratch;
@@ -147,6 +139,7 @@ void writeDebug(const ShadowInputs& in, const Frame& f, const std::vector<int8_t
 ShadowOutputs runBackprojection(const ShadowInputs& in) {
     const Settings s = readSettings(in.params);
     requireAreaLight(in.light, kName);
+    plotPixel(in.params, in.gbuffer.width, in.gbuffer.height, kName);   // settings checked before any work
     const AreaLightFrame light = areaLightFrame(in.light);
     const LightGrid samples(s.lightSamples, light.disk);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
@@ -197,21 +190,20 @@ ShadowOutputs runBackprojection(const ShadowInputs& in) {
 }  // namespace
 
 Technique backprojectionTechnique() {
+    std::vector<ParamSpec> params = {
+        integerParam("resolution", 512, kMinMapResolution, kMaxMapResolution, "texels per side of the map"),
+        integerParam("light-samples", 16, 2, kMaxLightSamplesPerAxis,
+                     "samples per axis of the light's bitmask grid (n x n bits)"),
+        integerParam("max-nodes", 32, 4, 1024,
+                     "texels per side of a search region before the hierarchy's nodes stand in"),
+        realParam("continuity", 0.05, 0.0, 1.0,
+                  "relative distance from the light across which neighbouring patches join"),
+        flagParam("min-max-hierarchy", true, "skip the pixels whose search region the hierarchy proves lit (same V)")};
+    for (const ParamSpec& p : plotPixelParams("patches are drawn on the light")) params.push_back(p);
     return {.name = kName,
             .description = "shadow-map texels back-projected onto the area light, hidden light samples in a "
                            "bitmask (Guennebaud et al. 2006, Schwarz and Stamminger 2007)",
-            .params = {integerParam("resolution", 512, kMinMapResolution, kMaxMapResolution,
-                                    "texels per side of the map"),
-                       integerParam("light-samples", 16, 2, kMaxLightSamplesPerAxis,
-                                    "samples per axis of the light's bitmask grid (n x n bits)"),
-                       integerParam("max-nodes", 32, 4, 1024,
-                                    "texels per side of a search region before the hierarchy's nodes stand in"),
-                       realParam("continuity", 0.05, 0.0, 1.0,
-                                 "relative distance from the light across which neighbouring patches join"),
-                       flagParam("min-max-hierarchy", true,
-                                 "skip the pixels whose search region the hierarchy proves lit (same V)"),
-                       integerParam("plot-x", -1, -1, 8191, "debug buffers: column of the pixel drawn on the light"),
-                       integerParam("plot-y", -1, -1, 8191, "debug buffers: its row; -1: the image's centre")},
+            .params = params,
             .run = runBackprojection,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};

@@ -13,9 +13,7 @@ struct NodeClass {
     float least = 1.0f;
 };
 NodeClass classify(const MinMaxHierarchy& hierarchy, const MapReceiver& r, int level, int x, int y) {
-    const double width = double(1 << level), halfWidth = 0.5 * (width - 1.0);
-    const double planeLeast = r.depthAt({(x + 0.5) * width, (y + 0.5) * width}) -
-                              (std::abs(r.depthSlope.x) + std::abs(r.depthSlope.y)) * halfWidth;
+    const double planeLeast = planeLeastOver(r, level, x, y);
     const DepthRange range = hierarchy.node(level, x, y);
     return {range.least < 1.0f && double(range.least) + r.tolerance < planeLeast,
             double(range.greatest) + r.tolerance < planeLeast, range.least};
@@ -55,16 +53,9 @@ void refine(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const P
 
 }  // namespace
 
-int patchLevelFor(int span, int maxNodes, int levels) {
-    if (span < maxNodes) return 0;
-    int level = MinMaxHierarchy::kFirstLevel;
-    while (level < levels && (span >> level) + 2 > maxNodes) ++level;   // at most maxNodes per side
-    return level;
-}
-
 void gatherPatches(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const PatchReceiver& p, int x0,
                    int y0, int x1, int y1, int maxNodes, PatchGrid& out) {
-    out.level = patchLevelFor(std::max(x1 - x0, y1 - y0), maxNodes, hierarchy.levels());
+    out.level = readingLevelFor(std::max(x1 - x0, y1 - y0), maxNodes, hierarchy.levels());
     out.x0 = x0 >> out.level, out.y0 = y0 >> out.level;
     out.width = (x1 >> out.level) - out.x0 + 1, out.height = (y1 >> out.level) - out.y0 + 1;
     out.depth.assign(size_t(out.width) * size_t(out.height), 1.0f);

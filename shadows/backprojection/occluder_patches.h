@@ -56,8 +56,4 @@ struct PatchReceiver {
 void gatherPatches(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const PatchReceiver& receiver,
                    int x0, int y0, int x1, int y1, int maxNodes, PatchGrid& out);
 
-// The level gatherPatches uses for a region spanning `span` texels: 0 or one of the
-// hierarchy's (MinMaxHierarchy::kFirstLevel ...).
-int patchLevelFor(int span, int maxNodes, int levels);
-
 }  // namespace shadowlab

@@ -32,22 +32,6 @@ namespace {
 
 const char* const kName = "chs";
 
-// The level read for a region spanning `span` texels with at most `nodes` nodes a side:
-// texels where they suffice, else the hierarchy's first level that does.
-int levelFor(int span, int nodes, const MinMaxHierarchy& h) {
-    if (span < nodes) return 0;
-    int level = MinMaxHierarchy::kFirstLevel;
-    while (level < h.levels() && (span >> level) + 2 > nodes) ++level;
-    return level;
-}
-
-// The receiver plane's least depth over node (level, x, y).
-double planeLeast(const MapReceiver& r, int level, int x, int y) {
-    const double width = double(1 << level), halfWidth = 0.5 * (width - 1.0);
-    return r.depthAt({(x + 0.5) * width, (y + 0.5) * width}) -
-           (std::abs(r.depthSlope.x) + std::abs(r.depthSlope.y)) * halfWidth;
-}
-
 struct Estimate {
     double blockerDistance = 0.0;   // 0: no blocker
     int level = 0;
@@ -63,13 +47,13 @@ Estimate searchBlockers(const SoftShadowMap& soft, const MinMaxHierarchy& h, con
     const int y0 = texel(r.texel.y - radius.y), y1 = texel(r.texel.y + radius.y);
     Estimate e;
     if (h.provedLit(r, x0, y0, x1, y1)) return e;   // no node could hold a blocker: skip the search
-    e.level = levelFor(std::max(x1 - x0, y1 - y0), nodes, h);
+    e.level = readingLevelFor(std::max(x1 - x0, y1 - y0), nodes, h.levels());
     double sum = 0.0;
     int blockers = 0;
     for (int y = y0 >> e.level; y <= y1 >> e.level; ++y) {
         for (int x = x0 >> e.level; x <= x1 >> e.level; ++x) {
             const float least = e.level == 0 ? soft.map.at(x, y) : h.node(e.level, x, y).least;
-            if (least < 1.0f && double(least) + r.tolerance < planeLeast(r, e.level, x, y)) {
+            if (least < 1.0f && double(least) + r.tolerance < planeLeastOver(r, e.level, x, y)) {
                 sum += soft.distanceOf(least), ++blockers;
             }
         }
@@ -82,7 +66,7 @@ Estimate searchBlockers(const SoftShadowMap& soft, const MinMaxHierarchy& h, con
 double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const MapReceiver& r, glm::dvec2 radius,
                   int n, int& level) {
     radius = glm::max(radius, glm::dvec2(0.5));
-    level = levelFor(int(std::ceil(2.0 * std::max(radius.x, radius.y))), n, h);
+    level = readingLevelFor(int(std::ceil(2.0 * std::max(radius.x, radius.y))), n, h.levels());
     const int width = 1 << level, last = soft.map.size - 1;
     int lit = 0;
     for (int b = 0; b < n; ++b) {
@@ -97,7 +81,7 @@ double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const Map
             const int nx0 = x * width, ny0 = y * width;
             if (h.provedLit(r, nx0, ny0, std::min(nx0 + width - 1, last), std::min(ny0 + width - 1, last))) {
                 ++lit;
-            } else if (!(double(h.node(level, x, y).greatest) + r.tolerance < planeLeast(r, level, x, y))) {
+            } else if (!(double(h.node(level, x, y).greatest) + r.tolerance < planeLeastOver(r, level, x, y))) {
                 lit += r.litBy(soft.map, tx, ty);   // mixed: the texel at the tap
             }
         }

@@ -112,6 +112,19 @@ int hierarchyLevelFor(int span, int levels) {
     return level;
 }
 
+int readingLevelFor(int span, int nodes, int levels) {
+    if (span < nodes) return 0;
+    int level = MinMaxHierarchy::kFirstLevel;
+    while (level < levels && (span >> level) + 2 > nodes) ++level;   // (span >> l) + 2 nodes at most
+    return level;
+}
+
+double planeLeastOver(const MapReceiver& r, int level, int x, int y) {
+    const double width = double(1 << level), halfWidth = 0.5 * (width - 1.0);
+    return r.depthAt({(x + 0.5) * width, (y + 0.5) * width}) -
+           (std::abs(r.depthSlope.x) + std::abs(r.depthSlope.y)) * halfWidth;
+}
+
 MinMaxHierarchy::MinMaxHierarchy(const DepthMap& map) : mapSize_(map.size) {
     if (map.size < 2) throw std::invalid_argument("min/max hierarchy: a map of at least 2 x 2 texels");
     size_t total = 0;

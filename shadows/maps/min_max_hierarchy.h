@@ -81,6 +81,15 @@ private:
     LookupHierarchy kernel_{};
 };
 
+// The level at which to read a region spanning `span` texels with at most `nodes` nodes per
+// side: 0 (the texels) where they suffice, else the first of the hierarchy's that does.
+int readingLevelFor(int span, int nodes, int levels);
+
+// The receiver's plane depth at its least over node (level, x, y) of 2^level texels a side
+// (level 0: a texel): a texel nearer than this, plus the compare's tolerance, is shadowed
+// wherever it lies in the node.
+double planeLeastOver(const MapReceiver& r, int level, int x, int y);
+
 // The first level l >= MinMaxHierarchy::kFirstLevel at which a rectangle spanning `span`
 // texels (x1 - x0 or y1 - y0, the larger) meets at most two nodes per axis: span < 2^l,
 // capped at the top level.

@@ -35,11 +35,8 @@ MarchSettings readMarchSettings(const TechniqueParams& p) {
 
 // The pixel whose march the debug view plots: the parameters', or the image's centre.
 glm::ivec2 plottedPixel(const ShadowInputs& in) {
-    const int i = in.params.integer("plot-x"), j = in.params.integer("plot-y");
-    if (i >= in.gbuffer.width || j >= in.gbuffer.height) {
-        throw std::invalid_argument(std::string(kName) + ": plot-x, plot-y must name a pixel of the image");
-    }
-    return {i < 0 ? in.gbuffer.width / 2 : i, j < 0 ? in.gbuffer.height / 2 : j};
+    const auto [i, j] = plotPixel(in.params, in.gbuffer.width, in.gbuffer.height, kName);
+    return {i, j};
 }
 
 void writeDebug(const ShadowInputs& in, const ScreenMarch& march, const ScreenMarch::Mask& mask, float thicknessM) {
@@ -111,9 +108,7 @@ Technique contactShadowsTechnique() {
     params.push_back(realParam("depth-thickness", 0.05, 0.0, 100.0,
                                "m behind the depth buffer's surface a sample still counts as inside it"));
     params.push_back(flagParam("shadow-map", true, "off: the march alone (no caster off screen or hidden casts)"));
-    params.push_back(integerParam("plot-x", -1, -1, 8191, "debug buffers: column of the pixel whose march is "
-                                                          "plotted; -1: the image's centre"));
-    params.push_back(integerParam("plot-y", -1, -1, 8191, "debug buffers: its row; -1: the image's centre"));
+    for (const ParamSpec& p : plotPixelParams("march is plotted")) params.push_back(p);
     return {.name = kName,
             .description = "contact shadows (RTR 7.10, Sousa et al. 2011): a shadow map, and a march over the "
                            "camera's depth buffer that restores the shadows its bias loses at contacts",
