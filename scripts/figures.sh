@@ -58,13 +58,22 @@ for part in $parts; do
     done
     ;;
   soft)
+    # Every soft technique on every soft case: sphere-box, the bunny, the five cases of Cai
+    # et al. and two occluders at very different heights; then the min/max hierarchy's
+    # speed-up (the same V) for pcss and backprojection on three of them.
+    soft=none,reference,pcss,chs,vsm,esm,evsm,msm,multi-sample,backprojection,soft-shadow-volumes,fins,smoothies,penumbra-maps
     for scene in sphere-box bunny scenes/soft/large-light.json scenes/soft/tilted-receiver.json \
-                 scenes/soft/two-boxes.json scenes/soft/sharp-corner.json scenes/soft/torus-over-plane.json; do
-      $app sweep $scene --technique none,reference,pcss,vsm,esm,evsm,msm,multi-sample,fins,smoothies,penumbra-maps \
-        --reference reference-soft --threads 1,2 --runs 5 --out $out/soft --plot-y rms
+                 scenes/soft/two-boxes.json scenes/soft/sharp-corner.json scenes/soft/torus-over-plane.json \
+                 scenes/soft/two-heights.json; do
+      $app sweep $scene --technique $soft --reference reference-soft --threads 1,2 --runs 5 --out $out/soft --plot-y rms
       name=$(basename $scene .json)
-      python3 $table $out/soft/$name-none+reference+pcss+vsm+esm+evsm+msm+multi-sample+fins+smoothies+penumbra-maps.csv soft
-      cp $out/soft/$name-none+reference+pcss+vsm+esm+evsm+msm+multi-sample+fins+smoothies+penumbra-maps.svg docs/images/soft-$name.svg
+      python3 $table $out/soft/$name-$(echo $soft | tr , +).csv soft
+      cp $out/soft/$name-$(echo $soft | tr , +).svg docs/images/soft-$name.svg
+    done
+    for scene in sphere-box bunny scenes/soft/two-heights.json; do
+      $app sweep $scene --technique pcss,backprojection --param min-max-hierarchy=off,on --reference reference-soft \
+        --threads 1,2 --runs 5 --out $out/hierarchy --plot-y rms
+      python3 $table $out/hierarchy/$(basename $scene .json)-pcss+backprojection.csv soft
     done
     ;;
   torus)
