@@ -8,8 +8,8 @@
 // seen from the receiver the light shows between them (Guennebaud et al., section 3.3).
 // Here a patch's corners are shared with its occluding neighbours: the corner takes the
 // least depth of the occluding patches around it, so a continuous occluder surface becomes
-// one closed mesh and its back-projection has no gaps. Where a neighbour lies farther than
-// `continuity` times the patch's own distance from the light (another surface behind: an
+// one closed mesh and its back-projection has no gaps. Where that least depth is nearer the
+// light than (1 - continuity) times the patch's own distance (another surface in front: an
 // edge), the patch keeps its own depth at that corner, so no skirt joins the two.
 #pragma once
 

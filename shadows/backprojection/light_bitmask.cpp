@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace shadowlab {
 
@@ -28,12 +29,19 @@ LightGrid::LightGrid(int n, bool disk) : n_(n) {
     }
 }
 
-uint32_t LightGrid::span(float lo, float hi) const {
-    // Cell i's centre -1 + (2 i + 1) / n lies in [lo, hi] for i in [ceil(first), floor(last)].
+// The cells [ceil(first), floor(last)] whose centres -1 + (2 i + 1) / n lie in [lo, hi],
+// clamped to the grid in float before any conversion (a patch corner near the receiver's
+// own height projects arbitrarily far out); empty where lo > hi or either is NaN.
+std::pair<int, int> LightGrid::cells(float lo, float hi) const {
     const float first = std::ceil((lo + 1.0f) * 0.5f * float(n_) - 0.5f);
     const float last = std::floor((hi + 1.0f) * 0.5f * float(n_) - 0.5f);
-    const int i0 = int(std::max(first, 0.0f)), i1 = int(std::min(last, float(n_ - 1)));
-    if (!(first <= last) || i0 > i1) return 0u;
+    if (!(first <= last) || !(first <= float(n_ - 1)) || !(last >= 0.0f)) return {1, 0};
+    return {int(std::max(first, 0.0f)), int(std::min(last, float(n_ - 1)))};
+}
+
+uint32_t LightGrid::span(float lo, float hi) const {
+    const auto [i0, i1] = cells(lo, hi);
+    if (i0 > i1) return 0u;
     const uint32_t upTo = i1 == 31 ? ~0u : (2u << i1) - 1u;
     return upTo & ~((1u << i0) - 1u);
 }
@@ -41,8 +49,7 @@ uint32_t LightGrid::span(float lo, float hi) const {
 void LightGrid::cover(LightBitmask& mask, const glm::vec2* v, int count) const {
     float bLow = v[0].y, bHigh = v[0].y;
     for (int k = 1; k < count; ++k) bLow = std::min(bLow, v[k].y), bHigh = std::max(bHigh, v[k].y);
-    const int j0 = std::max(0, int(std::ceil((bLow + 1.0f) * 0.5f * float(n_) - 0.5f)));
-    const int j1 = std::min(n_ - 1, int(std::floor((bHigh + 1.0f) * 0.5f * float(n_) - 0.5f)));
+    const auto [j0, j1] = cells(bLow, bHigh);
     for (int j = j0; j <= j1; ++j) {
         // The polygon's extent along the row b = centre(j): where the row crosses its edges.
         const float b = centre(j);

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 
 #include <glm/glm.hpp>
 
@@ -43,7 +44,9 @@ public:
     int hidden(const LightBitmask& mask) const;
 
 private:
-    // The bits of the cells whose centre lies in [lo, hi].
+    // The cells whose centre lies in [lo, hi], first and last (first > last: none), and
+    // their bits.
+    std::pair<int, int> cells(float lo, float hi) const;
     uint32_t span(float lo, float hi) const;
 
     int n_ = 0;

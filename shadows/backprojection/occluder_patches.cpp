@@ -6,17 +6,18 @@
 namespace shadowlab {
 namespace {
 
-// Whether a node of `level` at (x, y) may occlude (some texel nearer than the receiver's
-// plane over it) and whether all of it does.
+// Whether a node of `level` at (x, y) may occlude (its plane and residuals do not prove it
+// lit, so a floor's node, on the receiver's plane, is left out) and whether all of it does
+// (no empty texel, and its greatest depth nearer than the plane anywhere over it).
 struct NodeClass {
     bool some = false, all = false;
     float least = 1.0f;
 };
 NodeClass classify(const MinMaxHierarchy& hierarchy, const MapReceiver& r, int level, int x, int y) {
-    const double planeLeast = planeLeastOver(r, level, x, y);
     const DepthRange range = hierarchy.node(level, x, y);
-    return {range.least < 1.0f && double(range.least) + r.tolerance < planeLeast,
-            double(range.greatest) + r.tolerance < planeLeast, range.least};
+    return {range.least < 1.0f && !hierarchy.nodeProvedLit(r, level, x, y),
+            range.greatest < 1.0f && double(range.greatest) + r.tolerance < planeLeastOver(r, level, x, y),
+            range.least};
 }
 
 // The coarsest level whose nodes at window depth `depth` back-project no wider than one of

@@ -7,7 +7,7 @@
 // hierarchy (min_max_hierarchy.h). Per camera pixel, on the receiver's plane:
 //   1. blocker search: the light's cone cut at the near plane, read at the first level where
 //      it spans at most `search-nodes` nodes a side; a node whose least depth is nearer than
-//      the receiver's plane over it holds a blocker, at that depth; d_o is their mean;
+//      the receiver's plane anywhere over it holds a blocker, at that depth; d_o is their mean;
 //   2. eq. 7.6 gives the filter's width w, as PCSS;
 //   3. an N x N grid (N = `filter-nodes`) over the width w, read at the first level where w
 //      spans at most N nodes: a node proved lit counts lit, one whose greatest depth is
@@ -52,6 +52,9 @@ Estimate searchBlockers(const SoftShadowMap& soft, const MinMaxHierarchy& h, con
     int blockers = 0;
     for (int y = y0 >> e.level; y <= y1 >> e.level; ++y) {
         for (int x = x0 >> e.level; x <= x1 >> e.level; ++x) {
+            // The node's least depth is a blocker wherever in the node it lies: a sufficient
+            // test, so no floor node counts (a necessary one, not proved lit, would count
+            // every node the proof cannot settle, at the floor's own depth).
             const float least = e.level == 0 ? soft.map.at(x, y) : h.node(e.level, x, y).least;
             if (least < 1.0f && double(least) + r.tolerance < planeLeastOver(r, e.level, x, y)) {
                 sum += soft.distanceOf(least), ++blockers;
@@ -67,7 +70,7 @@ double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const Map
                   int n, int& level) {
     radius = glm::max(radius, glm::dvec2(0.5));
     level = readingLevelFor(int(std::ceil(2.0 * std::max(radius.x, radius.y))), n, h.levels());
-    const int width = 1 << level, last = soft.map.size - 1;
+    const int last = soft.map.size - 1;
     int lit = 0;
     for (int b = 0; b < n; ++b) {
         for (int a = 0; a < n; ++a) {
@@ -78,10 +81,10 @@ double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const Map
                 continue;
             }
             const int x = tx >> level, y = ty >> level;
-            const int nx0 = x * width, ny0 = y * width;
-            if (h.provedLit(r, nx0, ny0, std::min(nx0 + width - 1, last), std::min(ny0 + width - 1, last))) {
+            const float greatest = h.node(level, x, y).greatest;
+            if (h.nodeProvedLit(r, level, x, y)) {
                 ++lit;
-            } else if (!(double(h.node(level, x, y).greatest) + r.tolerance < planeLeastOver(r, level, x, y))) {
+            } else if (!(greatest < 1.0f && double(greatest) + r.tolerance < planeLeastOver(r, level, x, y))) {
                 lit += r.litBy(soft.map, tx, ty);   // mixed: the texel at the tap
             }
         }

@@ -23,37 +23,57 @@ float roundedUp(double v) {
     return double(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
+// A node of empty texels only: +inf residuals both ways (any depth passes). A node holding
+// a NaN proves nothing: -inf below, +inf above.
 NodePlane emptyNode() { return {0.0f, 0.0f, 0.0f, float(kInf), float(kInf)}; }
+NodePlane unknownNode() { return {0.0f, 0.0f, 0.0f, float(-kInf), float(kInf)}; }
+bool allEmpty(const NodePlane& p) { return p.residualLow == float(kInf); }
 
-// The plane of a first-level node from its texels z[y][x] (texel centres at x + 0.5 - 2
-// from the node's centre): where all 16 are present and solid, the mean difference across
-// the node on each axis and the mean depth; otherwise (the map's border, empty texels) a
-// flat plane at the solid texels' mean. The residuals bound every solid texel against the
-// float plane; an empty texel makes the high residual +inf.
+// The plane of a first-level node from its solid texels z[y][x] (centres at x + 0.5 - 2
+// from the node's centre): on each axis the mean slope between the first and last solid
+// texel of every row (column) that has two, through the solid texels' centroid; empty
+// texels and those beyond the map's border left out. The residuals bound every solid texel
+// against the float plane; an empty texel makes the high residual +inf.
 NodePlane firstLevelPlane(const float (&z)[kFirstWidth][kFirstWidth], int width, int height) {
-    double sum = 0.0, across = 0.0, down = 0.0;
+    double sum = 0.0, sumX = 0.0, sumY = 0.0;
     int solid = 0;
     bool anyEmpty = false;
+    const auto offset = [](int c) { return c + 0.5 - 0.5 * kFirstWidth; };
+    const auto solidAt = [&](int x, int y) { return z[y][x] < 1.0f; };
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            if (z[y][x] >= 1.0f) anyEmpty = true;
-            else sum += z[y][x], ++solid;
+            if (std::isnan(z[y][x])) return unknownNode();
+            if (!solidAt(x, y)) anyEmpty = true;
+            else sum += z[y][x], sumX += offset(x), sumY += offset(y), ++solid;
         }
     }
     if (solid == 0) return emptyNode();
-    const bool whole = solid == kFirstWidth * kFirstWidth;
-    for (int k = 0; whole && k < kFirstWidth; ++k) {
-        across += double(z[k][kFirstWidth - 1]) - z[k][0];
-        down += double(z[kFirstWidth - 1][k]) - z[0][k];
-    }
-    const double span = double(kFirstWidth - 1) * kFirstWidth;
-    NodePlane out{float(sum / solid), float(across / span), float(down / span), 0.0f, 0.0f};
+    // The mean slope along one axis over the lines across it that hold two solid texels.
+    const auto meanSlope = [&](bool alongX) {
+        double slope = 0.0;
+        int lines = 0;
+        for (int line = 0; line < (alongX ? height : width); ++line) {
+            int first = -1, last = -1;
+            for (int c = 0; c < (alongX ? width : height); ++c) {
+                if (!(alongX ? solidAt(c, line) : solidAt(line, c))) continue;
+                if (first < 0) first = c;
+                last = c;
+            }
+            if (last <= first) continue;
+            const double zFirst = alongX ? z[line][first] : z[first][line];
+            const double zLast = alongX ? z[line][last] : z[last][line];
+            slope += (zLast - zFirst) / double(last - first), ++lines;
+        }
+        return lines ? slope / lines : 0.0;
+    };
+    NodePlane out{0.0f, float(meanSlope(true)), float(meanSlope(false)), 0.0f, 0.0f};
+    out.depth = float(sum / solid - double(out.slopeX) * (sumX / solid) - double(out.slopeY) * (sumY / solid));
     double low = kInf, high = -kInf;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            if (z[y][x] >= 1.0f) continue;
-            const double dx = x + 0.5 - 0.5 * kFirstWidth, dy = y + 0.5 - 0.5 * kFirstWidth;
-            const double e = double(z[y][x]) - (double(out.depth) + double(out.slopeX) * dx + double(out.slopeY) * dy);
+            if (!solidAt(x, y)) continue;
+            const double fit = double(out.depth) + double(out.slopeX) * offset(x) + double(out.slopeY) * offset(y);
+            const double e = double(z[y][x]) - fit;
             low = std::min(low, e), high = std::max(high, e);
         }
     }
@@ -74,7 +94,7 @@ NodePlane combine(const NodePlane (&kids)[4], const bool (&present)[4], double s
     for (int k = 0; k < 4; ++k) {
         if (!present[k]) continue;
         anyEmpty = anyEmpty || !std::isfinite(kids[k].residualHigh);
-        if (!std::isfinite(kids[k].residualLow)) continue;   // all empty
+        if (allEmpty(kids[k])) continue;
         slopeX += kids[k].slopeX, slopeY += kids[k].slopeY, ++solid;
     }
     if (solid == 0) return emptyNode();
@@ -82,7 +102,7 @@ NodePlane combine(const NodePlane (&kids)[4], const bool (&present)[4], double s
     const auto offset = [&](int k, float slope, int axisBit) {   // along the plane, from the node's centre
         return slope * ((double((k >> axisBit) & 1) - 0.5) * step);
     };
-    const auto solidKid = [&](int k) { return present[k] && std::isfinite(kids[k].residualLow); };
+    const auto solidKid = [&](int k) { return present[k] && !allEmpty(kids[k]); };
     double depth = 0.0;
     for (int k = 0; k < 4; ++k) {
         if (solidKid(k)) depth += kids[k].depth - offset(k, out.slopeX, 0) - offset(k, out.slopeY, 1);
@@ -162,7 +182,9 @@ void MinMaxHierarchy::buildFirstLevel(const DepthMap& map) {
                 const float* row = &map.depth[first];
                 for (int x = 0; x < width; ++x) {
                     z[y][x] = row[x];
-                    least = std::min(least, z[y][x]), greatest = std::max(greatest, z[y][x]);
+                    // A NaN texel (no map of ours holds one) widens the range to everything.
+                    least = std::isnan(z[y][x]) ? 0.0f : std::min(least, z[y][x]);
+                    greatest = std::isnan(z[y][x]) ? 1.0f : std::max(greatest, z[y][x]);
                 }
             }
             const size_t n = indexOf(kFirstLevel, nx, ny);
@@ -223,19 +245,26 @@ DepthRange MinMaxHierarchy::over(int x0, int y0, int x1, int y1) const {
     return r;
 }
 
+bool MinMaxHierarchy::nodeProvedLit(const MapReceiver& r, int level, int x, int y) const {
+    const NodePlane p = plane(level, x, y);
+    const double width = double(1 << level), halfWidth = 0.5 * (width - 1.0);
+    const glm::dvec2 centre((x + 0.5) * width, (y + 0.5) * width), d = centre - r.texel;
+    const double g = double(p.depth) - r.depthAt(centre);
+    const double spread = (std::abs(p.slopeX - r.depthSlope.x) + std::abs(p.slopeY - r.depthSlope.y)) * halfWidth;
+    // litBy compares in double (u = 2^-53): a margin of 2^-40 times the terms' magnitudes
+    // covers its roundings and these many times over.
+    const double terms = 1.0 + std::abs(r.depth) + std::abs(double(p.depth)) +
+                         (std::abs(r.depthSlope.x) + std::abs(p.slopeX)) * (std::abs(d.x) + halfWidth) +
+                         (std::abs(r.depthSlope.y) + std::abs(p.slopeY)) * (std::abs(d.y) + halfWidth);
+    return g - spread + double(p.residualLow) + r.tolerance >= 0x1p-40 * terms;
+}
+
 bool MinMaxHierarchy::provedLit(const MapReceiver& r, int x0, int y0, int x1, int y1) const {
     if (x0 < 0 || y0 < 0 || x1 >= mapSize_ || y1 >= mapSize_ || x1 < x0 || y1 < y0) return false;
     const int level = hierarchyLevelFor(std::max(x1 - x0, y1 - y0), levels());
-    const double width = double(1 << level), halfWidth = 0.5 * (width - 1.0);
     for (int y : {y0 >> level, y1 >> level}) {
         for (int x : {x0 >> level, x1 >> level}) {
-            const NodePlane p = plane(level, x, y);
-            const glm::dvec2 centre((x + 0.5) * width, (y + 0.5) * width);
-            const double g = double(p.depth) - r.depthAt(centre);
-            const double spread =
-                (std::abs(p.slopeX - r.depthSlope.x) + std::abs(p.slopeY - r.depthSlope.y)) * halfWidth;
-            // litBy compares in double: a margin of 2^-40 covers its roundings and these.
-            if (!(g - spread + double(p.residualLow) + r.tolerance >= 0x1p-40)) return false;
+            if (!nodeProvedLit(r, level, x, y)) return false;
         }
     }
     return true;

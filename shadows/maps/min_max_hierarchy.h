@@ -61,6 +61,8 @@ public:
     // the 2 x 2 nodes' planes and residuals: the double twin of the lookup kernel's proof
     // (lookup_kernel.inl, proveTaps). False proves nothing.
     bool provedLit(const MapReceiver& r, int x0, int y0, int x1, int y1) const;
+    // The same for every texel of node (level, x, y) that lies in the map.
+    bool nodeProvedLit(const MapReceiver& r, int level, int x, int y) const;
     // A level as an image (row-major), for the debug views.
     std::vector<float> leastImage(int level) const;
     std::vector<float> greatestImage(int level) const;

@@ -4,6 +4,7 @@
 // for any thread count and SIMD level.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -38,6 +39,23 @@ TEST_CASE("the light bitmask covers polygons and half-planes by their sample cen
     square.cover(half, triangle, 3);
     CHECK(square.hidden(half) == 136);   // the 120 cells below the diagonal and the 16 on it
     CHECK_THROWS_AS(LightGrid(33, false), std::invalid_argument);
+    // 32 per axis fills whole 32-bit rows; corners far outside the light (a patch near the
+    // receiver's height projects arbitrarily far) or not numbers clamp instead of overflowing.
+    const LightGrid wide(32, false);
+    LightBitmask all;
+    const glm::vec2 huge[4] = {{-1e30f, -1e30f}, {1e30f, -1e30f}, {1e30f, 1e30f}, {-1e30f, 1e30f}};
+    wide.cover(all, huge, 4);
+    CHECK(wide.full(all));
+    CHECK(wide.hidden(all) == 1024);
+    LightBitmask none;
+    const glm::vec2 far[3] = {{5e9f, 5e9f}, {6e9f, 5e9f}, {5e9f, 6e9f}};
+    wide.cover(none, far, 3);
+    const glm::vec2 nan[3] = {{NAN, 0.0f}, {1.0f, NAN}, {0.0f, 1.0f}};
+    wide.cover(none, nan, 3);
+    CHECK(wide.hidden(none) == 0);
+    wide.coverHalfPlane(none, 1e-30, 0.0, 1.0);   // the edge at a = -1e30: nothing hidden
+    CHECK(wide.hidden(none) == 0);
+    CHECK(LightGrid(16, true).sampleCount() == 208);
 }
 
 TEST_CASE("backprojection is within a stated RMS of the soft reference on the convex cases and beats PCSS") {
@@ -99,7 +117,9 @@ TEST_CASE("backprojection gives the same bits with and without the min-max hiera
     const std::vector<float> plain = run("off", raster::SimdLevel::Scalar);
     for (int threads : {1, 2}) {
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-        for (raster::SimdLevel level : {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
+        // The map is drawn at the level asked for (the rasterizer's kernels); the rest is scalar.
+        for (raster::SimdLevel level :
+             {raster::SimdLevel::Scalar, raster::SimdLevel::Avx2, raster::SimdLevel::Avx512}) {
             if (!raster::simdLevelSupported(level)) continue;
             CAPTURE(threads);
             CHECK(run("on", level) == plain);
@@ -113,6 +133,7 @@ TEST_CASE("backprojection refuses lights without area and bad settings") {
     point.type = LightType::Point;
     const Technique& t = findTechnique("backprojection");
     const TechniqueParams params(t.name, t.params, {});
-    CHECK_THROWS_AS(t.run({s.prepared, s.gbuffer, point, raster::SimdLevel::Scalar, params, {}}), std::invalid_argument);
+    CHECK_THROWS_AS(t.run({s.prepared, s.gbuffer, point, raster::SimdLevel::Scalar, params, {}}),
+                    std::invalid_argument);
     CHECK_THROWS_AS(TechniqueParams(t.name, t.params, {{"light-samples", "40"}}), std::invalid_argument);
 }

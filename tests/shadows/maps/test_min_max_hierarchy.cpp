@@ -113,6 +113,44 @@ TEST_CASE("a min-max hierarchy query bounds every texel of the rectangle and mee
     CHECK(hierarchyLevelFor(1000, 7) == 7);
 }
 
+TEST_CASE("a min-max hierarchy proves a region lit only where every texel is lit, for random receiver planes") {
+    // A sloped floor with holes and random blocks above it; receivers on random planes near
+    // the floor's, some exactly on it. Every proof is checked against litBy at every texel.
+    for (int size : {64, 100}) {
+        DepthMap map = floorMap(size);
+        for (int k = 0; k < 12; ++k) {   // blocks of occluders a little above the floor
+            const int bx = int(mix64(100 + uint64_t(k)) % uint64_t(size));
+            const int by = int(mix64(200 + uint64_t(k)) % uint64_t(size));
+            for (int y = by; y < std::min(by + 3, size); ++y) {
+                for (int x = bx; x < std::min(bx + 3, size); ++x) {
+                    map.depth[raster::blockLinearIndex(x, y, map.tilesX)] -= 0.002f;
+                }
+            }
+        }
+        const MinMaxHierarchy h(map);
+        int proved = 0;
+        for (uint64_t k = 0; k < 3000; ++k) {
+            MapReceiver r;
+            r.texel = {double(mix64(300 + k) % 6400) / 100.0, double(mix64(400 + k) % 6400) / 100.0};
+            // On the floor, nearer the light than it (lit), or deeper (shadowed by the floor).
+            const double lift = double(k % 3) * 0.5 * (double(mix64(500 + k) % 1000) - 1000.0) * 2e-6 * (k % 3 == 2 ? -1 : 1);
+            r.depthSlope = k % 2 ? glm::dvec2(0.001, 0.0003) : glm::dvec2(0.001 + 1e-5 * double(k % 7), 0.0003);
+            r.depth = 0.5 + 0.001 * (r.texel.x - 0.5) + 0.0003 * (r.texel.y - 0.5) + lift;
+            r.tolerance = 4e-6;
+            const int x0 = int(r.texel.x) - int(k % 9), y0 = int(r.texel.y) - int(k % 5);
+            const int x1 = int(r.texel.x) + int(k % 11), y1 = int(r.texel.y) + int(k % 13);
+            if (!h.provedLit(r, x0, y0, x1, y1)) continue;
+            ++proved;
+            for (int y = y0; y <= y1; ++y) {
+                for (int x = x0; x <= x1; ++x) REQUIRE(r.litBy(map, x, y));
+            }
+        }
+        CAPTURE(size);
+        CAPTURE(proved);
+        CHECK(proved > 100);   // on the floor itself the planes prove a good share (217, 833)
+    }
+}
+
 TEST_CASE("pcss gives the same bits with and without the min-max hierarchy, at every SIMD level and thread count") {
     for (const std::string& name :
          {std::string("sphere-box"), test::softCase("two-boxes"), test::softCase("large-light")}) {
