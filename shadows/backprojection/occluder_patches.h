@@ -50,9 +50,10 @@ struct PatchReceiver {
 };
 
 // The patches of texels [x0, x1] x [y0, y1] (inside the map): a texel occludes where r.litBy
-// says shadowed; a node where its least depth plus the compare's tolerance is nearer than
-// the receiver's plane anywhere over it (so a floor's own nodes, on the plane, never
-// occlude it), all of it where its greatest depth is.
+// says shadowed; a node may occlude unless its plane and residuals prove it lit (so a
+// floor's own nodes, on the receiver's plane, are left out), and occludes whole where it
+// holds no empty texel and its greatest depth is nearer than the receiver's plane anywhere
+// over it; the rest, mixed, is refined.
 void gatherPatches(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const PatchReceiver& receiver,
                    int x0, int y0, int x1, int y1, int maxNodes, PatchGrid& out);
 

@@ -21,7 +21,8 @@
 // texels (greatest = +inf if any is empty; both +inf if all are). Compared with the
 // receiver's own plane, a floor's node then differs by its residual alone (a few depth
 // steps, inside the compare's tolerance), so it is proved lit. The plane of a first-level node
-// comes from its texels' differences, that of a higher node is the mean of its children's;
+// comes from its solid texels (mean slopes across its rows and columns, through their
+// centroid), that of a higher node is the mean of its children's;
 // the residual bounds are computed in double against the float plane the kernel reads,
 // then rounded outwards.
 #pragma once
