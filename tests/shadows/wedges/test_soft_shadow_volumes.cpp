@@ -80,7 +80,8 @@ GroundError groundError(const test::SoftScene& s, const std::vector<float>& v, c
 TEST_CASE("soft-shadow-volumes: a square under a rectangle light parallel to it matches the analytic V within 1e-5") {
     // Two sizes: at 640 x 400 the eye lies in the plane of the -x edge's volume side (seen
     // edge on), and three pixels along that hard boundary need hard_boundary.h to leave them.
-    for (const auto& [width, height] : {std::pair{320, 200}, std::pair{640, 400}}) {
+    for (const auto& size : {std::pair{320, 200}, std::pair{640, 400}}) {
+        const int width = size.first, height = size.second;   // no structured binding: clang's INFO cannot capture one
         INFO(width << " x " << height);
         const test::SoftScene s(softScene("square-over-plane.json", width, height), 1);
         const SquareUnderLight analytic = squareOverPlane();
