@@ -21,7 +21,6 @@
 #include "shadows/debug_buffers.h"
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/pcss.h"
-#include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/stage_timer.h"
 
