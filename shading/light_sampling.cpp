@@ -85,6 +85,16 @@ AreaLightFrame areaLightFrame(const Light& light) {
     return frame;
 }
 
+AreaLightPlane areaLightPlane(const AreaLightFrame& frame) {
+    const glm::dvec3 n = glm::cross(frame.axisA, frame.axisB);
+    const double n2 = glm::dot(n, n);
+    return {.disk = frame.disk,
+            .centre = frame.centre,
+            .normal = n / std::sqrt(n2),
+            .dualA = glm::cross(frame.axisB, n) / n2,
+            .dualB = glm::cross(n, frame.axisA) / n2};
+}
+
 glm::dvec3 areaLightPoint(const AreaLightFrame& frame, const glm::dvec2& u) {
     const glm::dvec2 m = frame.disk ? concentricSquareToDisk(u) : 2.0 * u - 1.0;
     return frame.centre + m.x * frame.axisA + m.y * frame.axisB;

@@ -55,6 +55,17 @@ struct AreaLightFrame {
 // Throws std::invalid_argument unless light.type is Disk or Rectangle.
 AreaLightFrame areaLightFrame(const Light& light);
 
+// The light's plane and its coordinates (a, b) above: a point Y on the plane has
+// a = dot(Y - centre, dualA), b = dot(Y - centre, dualB), the dual basis of axisA and
+// axisB (a rectangle's half-edges need not be orthogonal). What a technique that projects
+// onto the light reads (penumbra wedges, backprojection).
+struct AreaLightPlane {
+    bool disk = false;
+    glm::dvec3 centre{0.0}, normal{0.0};     // normal: unit, along axisA x axisB
+    glm::dvec3 dualA{0.0}, dualB{0.0};
+};
+AreaLightPlane areaLightPlane(const AreaLightFrame& frame);
+
 // The point of the light for a sample u in [0, 1)^2.
 glm::dvec3 areaLightPoint(const AreaLightFrame& frame, const glm::dvec2& u);
 

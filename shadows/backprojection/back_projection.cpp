@@ -4,21 +4,13 @@
 #include <cmath>
 
 namespace shadowlab {
-
-LightPlane::LightPlane(const AreaLightFrame& frame) : centre(frame.centre) {
-    normal = glm::normalize(glm::cross(frame.axisA, frame.axisB));
-    const glm::dvec3 acrossB = glm::cross(frame.axisB, normal), acrossA = glm::cross(normal, frame.axisA);
-    dualA = acrossB / glm::dot(frame.axisA, acrossB);
-    dualB = acrossA / glm::dot(frame.axisB, acrossA);
-}
-
 namespace {
 
 constexpr int kLoop[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};   // a patch's corners in order
 
 // Where the ray from P through the map's point (texel X, Y at window depth z) meets the
 // light's plane, in (a, b); false unless the point lies between P and that plane.
-bool projectOntoLight(const SoftShadowMap& soft, const glm::dvec3& P, const LightPlane& light, double X, double Y,
+bool projectOntoLight(const SoftShadowMap& soft, const glm::dvec3& P, const AreaLightPlane& light, double X, double Y,
                       double z, glm::vec2& onLight) {
     const glm::dvec4 h = soft.map.worldFromTexel * glm::dvec4(X, Y, z, 1.0);
     const glm::dvec3 d = glm::dvec3(h) / h.w - P;
@@ -32,9 +24,9 @@ bool projectOntoLight(const SoftShadowMap& soft, const glm::dvec3& P, const Ligh
 
 }  // namespace
 
-int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P, const LightPlane& light,
-                       const LightGrid& samples, double continuity, LightBitmask& mask, BackProjectionScratch& s,
-                       std::vector<glm::vec2>* drawn) {
+int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P,
+                       const AreaLightPlane& light, const LightGrid& samples, double continuity, LightBitmask& mask,
+                       BackProjectionScratch& s, std::vector<glm::vec2>* drawn) {
     const int cw = grid.width + 1, ch = grid.height + 1;
     const size_t corners = size_t(cw) * size_t(ch);
     s.cornerDepth.assign(corners, 1.0f), s.cornerState.assign(corners, 0), s.cornerOnLight.resize(corners);

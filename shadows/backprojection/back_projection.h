@@ -24,13 +24,6 @@
 
 namespace shadowlab {
 
-// The light's plane and its (a, b) coordinates: X = centre + a axisA + b axisB.
-struct LightPlane {
-    glm::dvec3 centre{0.0}, normal{0.0};
-    glm::dvec3 dualA{0.0}, dualB{0.0};   // a = dualA . (X - centre), b likewise
-    explicit LightPlane(const AreaLightFrame& frame);
-};
-
 // Per-task working memory, reused across pixels.
 struct BackProjectionScratch {
     std::vector<float> cornerDepth;       // (width + 1) x (height + 1)
@@ -41,8 +34,8 @@ struct BackProjectionScratch {
 // Sets in `mask` the samples of `samples` that the grid's occluder patches hide from P;
 // returns the number of patches projected. Stops early once every sample is hidden. With
 // `drawn`, appends each projected patch's four corners in (a, b) (the debug view).
-int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P, const LightPlane& light,
-                       const LightGrid& samples, double continuity, LightBitmask& mask, BackProjectionScratch& scratch,
-                       std::vector<glm::vec2>* drawn = nullptr);
+int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P,
+                       const AreaLightPlane& light, const LightGrid& samples, double continuity, LightBitmask& mask,
+                       BackProjectionScratch& scratch, std::vector<glm::vec2>* drawn = nullptr);
 
 }  // namespace shadowlab

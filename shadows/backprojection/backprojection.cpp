@@ -53,7 +53,7 @@ struct PixelResult {
 struct Frame {
     const SoftShadowMap& soft;
     const MinMaxHierarchy& hierarchy;
-    const LightPlane plane;
+    const AreaLightPlane plane;
     const AreaLightFrame light;
     const LightGrid samples;
     const Settings settings;
@@ -147,7 +147,7 @@ ShadowOutputs runBackprojection(const ShadowInputs& in) {
     timer.lap("map");
     const MinMaxHierarchy hierarchy(soft.map);
     timer.lap("hierarchy");
-    const Frame f{soft, hierarchy, LightPlane(light), light, samples, s};
+    const Frame f{soft, hierarchy, areaLightPlane(light), light, samples, s};
     const GBuffer& g = in.gbuffer;
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);

@@ -22,7 +22,7 @@ struct ProjectedEdge {
 };
 
 // The edge cut to the points between P's level and the light, projected from P.
-std::optional<ProjectedEdge> projectEdge(const CoverageLight& light, const glm::dvec3& p, glm::dvec3 x0,
+std::optional<ProjectedEdge> projectEdge(const AreaLightPlane& light, const glm::dvec3& p, glm::dvec3 x0,
                                         glm::dvec3 x1) {
     const double signedHeight = glm::dot(light.normal, p - light.centre);
     const double side = signedHeight >= 0.0 ? 1.0 : -1.0, height = std::abs(signedHeight);
@@ -106,17 +106,8 @@ std::pair<bool, bool> nearSegment(const glm::dvec2& a, const glm::dvec2& b) {
 
 }  // namespace
 
-CoverageLight coverageLight(const AreaLightFrame& frame) {
-    const glm::dvec3 n = glm::cross(frame.axisA, frame.axisB);
-    const double n2 = glm::dot(n, n);
-    return {.disk = frame.disk,
-            .centre = frame.centre,
-            .normal = n / std::sqrt(n2),
-            .dualA = glm::cross(frame.axisB, n) / n2,
-            .dualB = glm::cross(n, frame.axisA) / n2};
-}
-
-EdgeCoverage edgeCoverage(const CoverageLight& light, const glm::dvec3& p, const glm::dvec3& x0, const glm::dvec3& x1) {
+EdgeCoverage edgeCoverage(const AreaLightPlane& light, const glm::dvec3& p, const glm::dvec3& x0,
+                          const glm::dvec3& x1) {
     const std::optional<ProjectedEdge> e = projectEdge(light, p, x0, x1);
     if (!e) return {};
     const double c = cross2(e->a, e->b);

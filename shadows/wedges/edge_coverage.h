@@ -34,13 +34,6 @@
 
 namespace shadowlab {
 
-struct CoverageLight {
-    bool disk = false;
-    glm::dvec3 centre{0.0}, normal{0.0};     // normal: unit, along axisA x axisB
-    glm::dvec3 dualA{0.0}, dualB{0.0};       // light coordinates of Y on the plane: dot(Y - centre, dual)
-};
-CoverageLight coverageLight(const AreaLightFrame& frame);
-
 // As the centre crosses the projected edge a b (between a and b), the cone from it turns
 // from one half-plane to the other and coverage_e jumps by exactly side sigma_e, the jump
 // of the hard shadow it makes up for; crossing the line outside a b changes nothing.
@@ -58,6 +51,6 @@ inline constexpr double kNearCentre = 1e-3;
 
 // coverage_e of the edge x0 -> x1 (as the silhouette walks it) at receiver point p: the
 // signed share of the light's area it adds to the covered area.
-EdgeCoverage edgeCoverage(const CoverageLight& light, const glm::dvec3& p, const glm::dvec3& x0, const glm::dvec3& x1);
+EdgeCoverage edgeCoverage(const AreaLightPlane& light, const glm::dvec3& p, const glm::dvec3& x0, const glm::dvec3& x1);
 
 }  // namespace shadowlab

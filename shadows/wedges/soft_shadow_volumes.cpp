@@ -104,7 +104,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     const WedgeSet wedges = buildWedges(in.casterWorld().positions, silhouette, lightBall(frame));
     timer.lap("wedges");
     WedgeCoverage coverage = rasterizeWedges(rasterizer, fb, camera, pass.clipFromWorld, wedges,
-                                                   {in.casterWorld().positions, silhouette}, coverageLight(frame),
+                                                   {in.casterWorld().positions, silhouette}, areaLightPlane(frame),
                                                    in.gbuffer);
     timer.lap("coverage");
     const uint64_t flipped = reconcileHardBoundary(rasterizer, fb, in, pass, coverage);

@@ -81,7 +81,7 @@ struct PixelSums {
 
 class CoverageProgram {
 public:
-    CoverageProgram(const SilhouetteGeometry& silhouette, const CoverageLight& light, const GBuffer& g)
+    CoverageProgram(const SilhouetteGeometry& silhouette, const AreaLightPlane& light, const GBuffer& g)
         : silhouette_(silhouette), light_(light), g_(g) {}
 
     EdgeCoverage coverage(uint32_t edge, size_t pixel) const {
@@ -92,7 +92,7 @@ public:
 
 private:
     const SilhouetteGeometry& silhouette_;
-    const CoverageLight& light_;
+    const AreaLightPlane& light_;
     const GBuffer& g_;
 };
 
@@ -140,7 +140,7 @@ void shadeUnbounded(const WedgeSet& set, const CoverageProgram& program, const G
 
 WedgeCoverage rasterizeWedges(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const Camera& camera,
                               const glm::mat4& clipFromWorld, const WedgeSet& wedges,
-                              const SilhouetteGeometry& silhouette, const CoverageLight& light, const GBuffer& g) {
+                              const SilhouetteGeometry& silhouette, const AreaLightPlane& light, const GBuffer& g) {
     WedgeCoverage out;
     out.nearWedges = drawWedges(rasterizer, fb, camera, clipFromWorld, wedges);
     out.fillFragments = rasterizer.stats().fragments;

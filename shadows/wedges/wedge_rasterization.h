@@ -58,6 +58,6 @@ struct SilhouetteGeometry {
 // fragment list.
 WedgeCoverage rasterizeWedges(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const Camera& camera,
                               const glm::mat4& clipFromWorld, const WedgeSet& wedges,
-                              const SilhouetteGeometry& silhouette, const CoverageLight& light, const GBuffer& g);
+                              const SilhouetteGeometry& silhouette, const AreaLightPlane& light, const GBuffer& g);
 
 }  // namespace shadowlab
