@@ -10,7 +10,6 @@
 #include "shadows/backprojection/backprojection.h"
 
 #include <algorithm>
-#include <array>
 #include <string>
 
 #include <tbb/parallel_for.h>
@@ -63,17 +62,12 @@ struct Frame {
 // a receiver at distance dr: the light's cone from it cut at the near plane, then twice cut
 // at the least depth the hierarchy finds in the last region (an occluder there is at least
 // that far from the light, and the cone narrows with distance).
-std::array<int, 4> searchRegion(const Frame& f, const MapReceiver& r, double dr) {
-    const int last = f.soft.map.size - 1;
+TexelRect searchRegion(const Frame& f, const MapReceiver& r, double dr) {
     double nearest = f.soft.zNear();
-    std::array<int, 4> region{};
+    TexelRect region;
     for (int pass = 0; pass < 3; ++pass) {
-        const glm::dvec2 radius = 0.5 * sampleWidthTexels(f.soft, dr, nearest);
-        region = {std::clamp(texelIndexOf(r.texel.x - radius.x), 0, last),
-                  std::clamp(texelIndexOf(r.texel.y - radius.y), 0, last),
-                  std::clamp(texelIndexOf(r.texel.x + radius.x), 0, last),
-                  std::clamp(texelIndexOf(r.texel.y + radius.y), 0, last)};
-        const float least = f.hierarchy.over(region[0], region[1], region[2], region[3]).least;
+        region = coneTexels(f.soft, r.texel, dr, nearest);
+        const float least = f.hierarchy.over(region.x0, region.y0, region.x1, region.y1).least;
         if (least >= 1.0f) break;
         nearest = std::clamp(f.soft.distanceOf(least), nearest, dr);
     }

@@ -40,11 +40,7 @@ struct Estimate {
 // Steps 1 and 2: the blockers' mean distance, from the nodes of the search region.
 Estimate searchBlockers(const SoftShadowMap& soft, const MinMaxHierarchy& h, const MapReceiver& r, double dr,
                         int nodes) {
-    const glm::dvec2 radius = 0.5 * sampleWidthTexels(soft, dr, soft.zNear());
-    const int last = soft.map.size - 1;
-    const auto texel = [&](double c) { return std::clamp(texelIndexOf(c), 0, last); };
-    const int x0 = texel(r.texel.x - radius.x), x1 = texel(r.texel.x + radius.x);
-    const int y0 = texel(r.texel.y - radius.y), y1 = texel(r.texel.y + radius.y);
+    const auto [x0, y0, x1, y1] = coneTexels(soft, r.texel, dr, soft.zNear());
     Estimate e;
     if (h.provedLit(r, x0, y0, x1, y1)) return e;   // no node could hold a blocker: skip the search
     e.level = readingLevelFor(std::max(x1 - x0, y1 - y0), nodes, h.levels());

@@ -107,4 +107,12 @@ glm::dvec2 sampleWidthTexels(const SoftShadowMap& soft, double dr, double dOcclu
     return soft.lightTexels * ((dr - dOccluder) / (dr * dOccluder));
 }
 
+TexelRect coneTexels(const SoftShadowMap& soft, const glm::dvec2& texel, double dr, double dOccluder) {
+    const glm::dvec2 radius = 0.5 * sampleWidthTexels(soft, dr, dOccluder);
+    const int last = soft.map.size - 1;
+    const auto clamped = [&](double c) { return std::clamp(texelIndexOf(c), 0, last); };
+    return {clamped(texel.x - radius.x), clamped(texel.y - radius.y), clamped(texel.x + radius.x),
+            clamped(texel.y + radius.y)};
+}
+
 }  // namespace shadowlab

@@ -92,4 +92,13 @@ void forEachReceiverFacingLight(const GBuffer& g, const SoftShadowMap& soft, Per
 // distance dr, on the plane at distance dOccluder (both m, 0 < dOccluder < dr).
 glm::dvec2 sampleWidthTexels(const SoftShadowMap& soft, double dr, double dOccluder);
 
+// Texels [x0, x1] x [y0, y1], inclusive.
+struct TexelRect {
+    int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+};
+
+// The texels of that cone about a receiver at texel position `texel`, clamped to the map:
+// the region a blocker search reads (dOccluder = near plane: every texel that can shadow it).
+TexelRect coneTexels(const SoftShadowMap& soft, const glm::dvec2& texel, double dr, double dOccluder);
+
 }  // namespace shadowlab
