@@ -14,10 +14,8 @@ struct NodeClass {
     float least = 1.0f;
 };
 NodeClass classify(const MinMaxHierarchy& hierarchy, const MapReceiver& r, int level, int x, int y) {
-    const DepthRange range = hierarchy.node(level, x, y);
-    return {range.least < 1.0f && !hierarchy.nodeProvedLit(r, level, x, y),
-            range.greatest < 1.0f && double(range.greatest) + r.tolerance < planeLeastOver(r, level, x, y),
-            range.least};
+    const float least = hierarchy.node(level, x, y).least;
+    return {least < 1.0f && !hierarchy.nodeProvedLit(r, level, x, y), hierarchy.nodeShadowed(r, level, x, y), least};
 }
 
 // The coarsest level whose nodes at window depth `depth` back-project no wider than one of

@@ -77,10 +77,9 @@ double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const Map
                 continue;
             }
             const int x = tx >> level, y = ty >> level;
-            const float greatest = h.node(level, x, y).greatest;
             if (h.nodeProvedLit(r, level, x, y)) {
                 ++lit;
-            } else if (!(greatest < 1.0f && double(greatest) + r.tolerance < planeLeastOver(r, level, x, y))) {
+            } else if (!h.nodeShadowed(r, level, x, y)) {
                 lit += r.litBy(soft.map, tx, ty);   // mixed: the texel at the tap
             }
         }

@@ -259,6 +259,11 @@ bool MinMaxHierarchy::nodeProvedLit(const MapReceiver& r, int level, int x, int 
     return g - spread + double(p.residualLow) + r.tolerance >= 0x1p-40 * terms;
 }
 
+bool MinMaxHierarchy::nodeShadowed(const MapReceiver& r, int level, int x, int y) const {
+    const float greatest = node(level, x, y).greatest;
+    return greatest < 1.0f && double(greatest) + r.tolerance < planeLeastOver(r, level, x, y);
+}
+
 bool MinMaxHierarchy::provedLit(const MapReceiver& r, int x0, int y0, int x1, int y1) const {
     if (x0 < 0 || y0 < 0 || x1 >= mapSize_ || y1 >= mapSize_ || x1 < x0 || y1 < y0) return false;
     const int level = hierarchyLevelFor(std::max(x1 - x0, y1 - y0), levels());

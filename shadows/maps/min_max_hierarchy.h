@@ -64,6 +64,10 @@ public:
     bool provedLit(const MapReceiver& r, int x0, int y0, int x1, int y1) const;
     // The same for every texel of node (level, x, y) that lies in the map.
     bool nodeProvedLit(const MapReceiver& r, int level, int x, int y) const;
+    // Whether r.litBy answers shadowed at every texel of node (level, x, y): none is empty,
+    // and its greatest depth plus the compare's tolerance is nearer than the receiver's plane
+    // anywhere over the node.
+    bool nodeShadowed(const MapReceiver& r, int level, int x, int y) const;
     // A level as an image (row-major), for the debug views.
     std::vector<float> leastImage(int level) const;
     std::vector<float> greatestImage(int level) const;
