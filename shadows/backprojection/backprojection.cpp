@@ -41,7 +41,7 @@ Settings readSettings(const TechniqueParams& p) {
             p.flag("min-max-hierarchy")};
 }
 
-// One pixel's working state; `drawn` collects its patches for the debug view.
+// What one pixel's shading found, beside its V (the debug views and stats).
 struct PixelResult {
     float visibility = 0.0f;
     int level = -1;             // -1: nothing searched (proved lit, or nearer than the near plane)

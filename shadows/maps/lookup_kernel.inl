@@ -356,10 +356,10 @@ struct Pcss {
         TapProof filter{simd::noLanes(), simd::noLanes()};
         if (proving && filtering) filter = proveTaps<kPlane, true>(map, r, radiusX, radiusY);
         const Mask filterKnown = filter.lit | filter.shadowed;
-        const F32 visibility = filtering && !(proving && !simd::any(lanes & shadowed & !filterKnown))
-                                   ? poissonLitFraction<kPlane>(map, r, cosine, sine, radiusX, radiusY, c.diskX,
-                                                                c.diskY, c.diskTaps)
-                                   : simd::select(filter.shadowed, zero, simd::splat(1.0f));
+        const bool tapsNeeded = filtering && !(proving && !simd::any(lanes & shadowed & !filterKnown));
+        const F32 visibility = tapsNeeded ? poissonLitFraction<kPlane>(map, r, cosine, sine, radiusX, radiusY,
+                                                                       c.diskX, c.diskY, c.diskTaps)
+                                          : simd::select(filter.shadowed, zero, simd::splat(1.0f));
         simd::store(row.blockerDistance + i, simd::select(shadowed, occluder, zero));
         simd::store(row.penumbraWidth + i, simd::select(shadowed, half * (widthX + widthY), zero));
         if (proving) {

@@ -187,11 +187,7 @@ void MinMaxHierarchy::buildFirstLevel(const DepthMap& map) {
                     greatest = std::isnan(z[y][x]) ? 1.0f : std::max(greatest, z[y][x]);
                 }
             }
-            const size_t n = indexOf(kFirstLevel, nx, ny);
-            least_[n] = least, greatest_[n] = greatest;
-            const NodePlane p = firstLevelPlane(z, width, height);
-            planeDepth_[n] = p.depth, slopeX_[n] = p.slopeX, slopeY_[n] = p.slopeY;
-            residualLow_[n] = p.residualLow, residualHigh_[n] = p.residualHigh;
+            store(indexOf(kFirstLevel, nx, ny), {least, greatest}, firstLevelPlane(z, width, height));
         }
     });
 }
@@ -212,13 +208,15 @@ void MinMaxHierarchy::buildLevel(int level) {
                 const DepthRange r = node(level - 1, cx, cy);
                 least = std::min(least, r.least), greatest = std::max(greatest, r.greatest);
             }
-            const size_t n = indexOf(level, x, y);
-            least_[n] = least, greatest_[n] = greatest;
-            const NodePlane p = combine(kids, present, step, childHalfWidth);
-            planeDepth_[n] = p.depth, slopeX_[n] = p.slopeX, slopeY_[n] = p.slopeY;
-            residualLow_[n] = p.residualLow, residualHigh_[n] = p.residualHigh;
+            store(indexOf(level, x, y), {least, greatest}, combine(kids, present, step, childHalfWidth));
         }
     });
+}
+
+void MinMaxHierarchy::store(size_t n, const DepthRange& range, const NodePlane& p) {
+    least_[n] = range.least, greatest_[n] = range.greatest;
+    planeDepth_[n] = p.depth, slopeX_[n] = p.slopeX, slopeY_[n] = p.slopeY;
+    residualLow_[n] = p.residualLow, residualHigh_[n] = p.residualHigh;
 }
 
 NodePlane MinMaxHierarchy::plane(int level, int x, int y) const {
@@ -275,13 +273,8 @@ bool MinMaxHierarchy::provedLit(const MapReceiver& r, int x0, int y0, int x1, in
     return true;
 }
 
-std::vector<float> MinMaxHierarchy::leastImage(int level) const {
-    const auto first = least_.begin() + ptrdiff_t(indexOf(level, 0, 0));
-    return {first, first + ptrdiff_t(sizeOf(level)) * sizeOf(level)};
-}
-
-std::vector<float> MinMaxHierarchy::greatestImage(int level) const {
-    const auto first = greatest_.begin() + ptrdiff_t(indexOf(level, 0, 0));
+std::vector<float> MinMaxHierarchy::levelImage(const std::vector<float>& values, int level) const {
+    const auto first = values.begin() + ptrdiff_t(indexOf(level, 0, 0));
     return {first, first + ptrdiff_t(sizeOf(level)) * sizeOf(level)};
 }
 

@@ -69,14 +69,16 @@ public:
     // anywhere over the node.
     bool nodeShadowed(const MapReceiver& r, int level, int x, int y) const;
     // A level as an image (row-major), for the debug views.
-    std::vector<float> leastImage(int level) const;
-    std::vector<float> greatestImage(int level) const;
+    std::vector<float> leastImage(int level) const { return levelImage(least_, level); }
+    std::vector<float> greatestImage(int level) const { return levelImage(greatest_, level); }
     // The view the vector kernels read (lookup_kernel.h); valid while this object lives.
     const LookupHierarchy& forKernel() const { return kernel_; }
 
 private:
     void buildFirstLevel(const DepthMap& map);
     void buildLevel(int level);
+    void store(size_t n, const DepthRange& range, const NodePlane& p);
+    std::vector<float> levelImage(const std::vector<float>& values, int level) const;
     size_t indexOf(int level, int x, int y) const {
         return size_t(offsets_[size_t(level - kFirstLevel)]) + size_t(y) * size_t(sizeOf(level)) + size_t(x);
     }
