@@ -39,6 +39,14 @@ inline void blockLinearPixel(size_t index, int tilesX, int& x, int& y) {
     y = int(tile / size_t(tilesX)) * kTileSize + int(block / kBlocksPerTileSide) * kBlockSize + int(inBlock / kBlockSize);
 }
 
+// The row-major index (y width + x) of the pixel at block-linear storage index `index`:
+// where a fragment list's pixel lands in an image.
+inline size_t rowMajorIndexOf(size_t index, int tilesX, int width) {
+    int x = 0, y = 0;
+    blockLinearPixel(index, tilesX, x, y);
+    return size_t(y) * size_t(width) + size_t(x);
+}
+
 // An allocator whose new elements are left uninitialised (default-initialised). A lazily
 // cleared buffer fills every tile before anything reads it, so zeroing its fresh storage
 // first would cost a pass over memory for nothing: 16 MiB, about 1.5 ms on one core, for

@@ -54,9 +54,7 @@ TexelSurfaces gatherSurfaces(const raster::Framebuffer& fb, const CasterTransmis
     TexelSurfaces out;
     out.start.assign(size_t(size) * size_t(size) + 1, 0);
     const auto texelIndex = [&](const raster::Fragment& f) {
-        int x = 0, y = 0;
-        raster::blockLinearPixel(f.pixel, fb.tilesX(), x, y);
-        return size_t(y) * size_t(size) + size_t(x);
+        return raster::rowMajorIndexOf(f.pixel, fb.tilesX(), size);
     };
     for (int tile = 0; tile < tiles; ++tile) {
         for (const raster::Fragment& f : fb.tileFragments(tile)) ++out.start[texelIndex(f) + 1];

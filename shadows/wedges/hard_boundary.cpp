@@ -21,9 +21,7 @@ std::vector<std::pair<size_t, uint32_t>> listedSides(const raster::Framebuffer& 
     std::vector<std::pair<size_t, uint32_t>> listed;
     for (int tile = 0; tile < fb.tilesX() * fb.tilesY(); ++tile) {
         for (const raster::Fragment& f : fb.tileFragments(tile)) {
-            int x = 0, y = 0;
-            raster::blockLinearPixel(f.pixel, fb.tilesX(), x, y);
-            listed.emplace_back(size_t(y) * size_t(width) + size_t(x), f.primitiveId);
+            listed.emplace_back(raster::rowMajorIndexOf(f.pixel, fb.tilesX(), width), f.primitiveId);
         }
     }
     std::sort(listed.begin(), listed.end());

@@ -101,9 +101,7 @@ uint64_t shadeTile(const raster::Framebuffer& fb, int tile, const WedgeSet& set,
                    const GBuffer& g, PixelSums& sums, std::vector<NearCentre>& nearCentre) {
     uint64_t inside = 0;
     for (const raster::Fragment& f : fb.tileFragments(tile)) {
-        int x = 0, y = 0;
-        raster::blockLinearPixel(f.pixel, fb.tilesX(), x, y);
-        const size_t k = g.index(x, y);
+        const size_t k = raster::rowMajorIndexOf(f.pixel, fb.tilesX(), g.width);
         const uint32_t w = f.primitiveId;
         if (!g.hit[k] || sums.lastWedge[k] == w) continue;
         sums.lastWedge[k] = w;
