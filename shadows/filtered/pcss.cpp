@@ -24,13 +24,15 @@ constexpr double kFitMarginTexels = 1.5;
 
 // The share of the taps a per-pixel PCSS takes (the search's at every pixel the light
 // reaches, the filter's where the search found blockers) whose answers were proved, summed
-// in pixel order: the same figure for any thread count and SIMD level.
-double knownTapsPercent(const GBuffer& g, const Light& light, const PcssBuffers& b, const PcssSettings& settings) {
-    const LightReach reaches(light);
+// in pixel order: the same figure for any thread count and SIMD level. The pass left V = 0
+// and no blocker exactly where the light does not reach (a reached pixel without blockers
+// is lit, V = 1), so the reach is read from its outputs, not tested again.
+double knownTapsPercent(const PcssBuffers& b, const PcssSettings& settings) {
     double taken = 0.0, known = 0.0;
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
-        taken += settings.search.taps + (b.blockerDistance[k] > 0.0f ? settings.filterTaps : 0);
+    for (size_t k = 0; k < b.visibility.size(); ++k) {
+        const bool blockers = b.blockerDistance[k] > 0.0f;
+        if (!blockers && b.visibility[k] == 0.0f) continue;
+        taken += settings.search.taps + (blockers ? settings.filterTaps : 0);
         known += b.knownTaps[k];
     }
     return taken > 0.0 ? 100.0 * known / taken : 0.0;
@@ -123,7 +125,7 @@ PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, cons
                     std::vector<float>(hierarchy ? n : 0)};
     lookUpEveryRow(g, pass, {out.visibility.data(), out.blockerDistance.data(), out.widthTexels.data(),
                              hierarchy ? out.knownTaps.data() : nullptr});
-    if (hierarchy) out.knownTapsPercent = knownTapsPercent(g, soft.light, out, settings);
+    if (hierarchy) out.knownTapsPercent = knownTapsPercent(out, settings);
     return out;
 }
 
