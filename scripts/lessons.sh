@@ -1,0 +1,22 @@
+#!/bin/sh
+# Regenerates every picture of docs/lessons/: each lesson's script, scripts/lessons/NAME.sh,
+# renders its small scene with the technique's intermediate buffers (render --debug-buffers)
+# into docs/lessons/images/NAME/ and prints the figures the page quotes. About a minute a
+# lesson on 2 cores.
+# usage: scripts/lessons.sh [NAME ...]   (default: every lesson, in order; NAME as 01-planar)
+# The program is build/app/shadowlab unless SHADOWLAB names another.
+set -eu
+cd "$(dirname "$0")/.."
+app=${SHADOWLAB:-build/app/shadowlab}
+export app
+if [ $# -eq 0 ]; then
+  set -- $(ls scripts/lessons | sed -n 's/\.sh$//p')
+fi
+for lesson in "$@"; do
+  script=scripts/lessons/$lesson.sh
+  [ -f "$script" ] || { echo "lessons.sh: no lesson '$lesson' (see scripts/lessons/)" >&2; exit 1; }
+  images=docs/lessons/images/$lesson
+  mkdir -p "$images" out/lessons/$lesson
+  echo "== $lesson"
+  images=$images scratch=out/lessons/$lesson sh "$script"
+done
