@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
-#include <iterator>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 
 #include <tbb/info.h>
@@ -18,72 +16,7 @@
 namespace shadowlab {
 namespace {
 
-using Settings = std::map<std::string, std::string>;
-
-// One setting of a technique, numbered in the sweep's fixed order: technique by technique,
-// then the cross product of its axes. A shard selects settings by this number.
-struct PlannedSetting {
-    uint64_t index;
-    Settings params;
-};
-
-// One technique with the settings it is swept over.
-struct SweepPlan {
-    const Technique* technique;
-    std::vector<PlannedSetting> settings;
-};
-
-bool hasParam(const Technique& technique, const std::string& name) {
-    return std::ranges::any_of(technique.params, [&](const ParamSpec& p) { return p.name == name; });
-}
-
-// Every combination of the axes' values, the first axis varying slowest.
-std::vector<Settings> crossProduct(const std::vector<SweepAxis>& axes) {
-    std::vector<Settings> combinations{{}};
-    for (const SweepAxis& axis : axes) {
-        std::vector<Settings> next;
-        for (const Settings& partial : combinations) {
-            for (const std::string& value : axis.values) {
-                Settings extended = partial;
-                extended[axis.name] = value;
-                next.push_back(std::move(extended));
-            }
-        }
-        combinations = std::move(next);
-    }
-    return combinations;
-}
-
-// Each technique gets the axes it has; every axis must belong to at least one technique,
-// or it was a typo.
-std::vector<SweepPlan> planSweep(const SweepOptions& options) {
-    std::vector<SweepPlan> plans;
-    uint64_t index = 0;
-    for (const Technique* technique : options.techniques) {
-        if (std::ranges::any_of(plans, [&](const SweepPlan& p) { return p.technique->name == technique->name; }))
-            throw std::invalid_argument("technique '" + technique->name + "' is listed twice");
-        std::vector<SweepAxis> axes;
-        std::ranges::copy_if(options.axes, std::back_inserter(axes), [&](const SweepAxis& a) { return hasParam(*technique, a.name); });
-        SweepPlan& plan = plans.emplace_back(SweepPlan{technique, {}});
-        for (Settings& params : crossProduct(axes)) plan.settings.push_back({index++, std::move(params)});
-    }
-    for (size_t i = 0; i < options.axes.size(); ++i) {
-        const SweepAxis& axis = options.axes[i];
-        if (std::ranges::any_of(options.axes.begin(), options.axes.begin() + i, [&](const SweepAxis& a) { return a.name == axis.name; }))
-            throw std::invalid_argument("--param " + axis.name + ": given twice; list every value in one axis");
-        if (std::ranges::none_of(plans, [&](const SweepPlan& p) { return hasParam(*p.technique, axis.name); }))
-            throw std::invalid_argument("--param " + axis.name + ": none of the techniques has this parameter (see `shadowlab techniques`)");
-    }
-    return plans;
-}
-
 const char* const kShardRule = "expected I/N with 1 <= I <= N (I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N)";
-
-uint64_t settingCount(const std::vector<SweepPlan>& plans) {
-    uint64_t count = 0;
-    for (const SweepPlan& plan : plans) count += plan.settings.size();
-    return count;
-}
 
 // The plans with only the shard's settings; a shard without any is a mistake in N.
 std::vector<SweepPlan> shardOf(std::vector<SweepPlan> plans, const SweepShard& shard) {
@@ -145,17 +78,6 @@ std::string statValue(const SweepRow& row, const std::string& name) {
     return stat == row.stats.end() ? "" : csvNumber(stat->value);
 }
 
-// One frame per setting first: a value the technique rejects fails before the long part.
-void checkSettings(const PreparedScene& prepared, const std::vector<SweepPlan>& plans, const SweepOptions& options) {
-    const ProgressStage checked(options.progress, "sweep: checking setting", settingCount(plans));
-    for (const SweepPlan& plan : plans) {
-        for (const PlannedSetting& setting : plan.settings) {
-            renderFrame(prepared, *plan.technique, {options.simd, setting.params, {}});
-            checked.advance();
-        }
-    }
-}
-
 // Each reference the techniques are scored against, rendered once.
 std::map<std::string, ImageChannels> renderReferences(const PreparedScene& prepared, const std::vector<SweepPlan>& plans, const SweepOptions& options) {
     std::map<std::string, ImageChannels> references;
@@ -209,18 +131,6 @@ TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique
     return {summarizeTimes(std::move(ms)), std::move(frame)};
 }
 
-SweepAxis parseSweepAxis(const std::string& text) {
-    std::map<std::string, std::string> assignment;
-    parseParamAssignment(text, assignment);
-    SweepAxis axis{assignment.begin()->first, {}};
-    std::istringstream values(assignment.begin()->second + ",");
-    for (std::string value; std::getline(values, value, ',');) {
-        if (value.empty()) throw std::invalid_argument("--param " + text + ": empty value in the comma-separated list");
-        axis.values.push_back(value);
-    }
-    return axis;
-}
-
 std::string SweepRow::settingsLabel() const {
     std::string label;
     for (const auto& [name, value] : settings) label += (label.empty() ? "" : " ") + name + "=" + value;
@@ -247,13 +157,13 @@ SweepResults runSweep(const SweepOptions& options) {
     if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
     if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
     if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
-    const std::vector<SweepPlan> grid = planSweep(options);
+    const std::vector<SweepPlan> grid = planSweep(options.techniques, options.axes);
     const std::vector<SweepPlan> plans = shardOf(grid, options.shard);
     const std::vector<int> threads = threadCounts(options);
     Scene scene = loadScene(options.scene);
     applyOverrides(scene, options.overrides);
     const PreparedScene prepared(std::move(scene));
-    checkSettings(prepared, plans, options);
+    checkSettings(prepared, plans, options.simd, options.progress, "sweep");
     // Every reference of the grid, not only the shard's: the shards' fingerprints must agree.
     const std::map<std::string, ImageChannels> references = renderReferences(prepared, grid, options);
     SweepResults results{prepared.scene().name, {}, describeGrid(grid, threads, references, options), options.shard, {}};

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "app/sweep_plan.h"
 #include "app/timing.h"
 #include "frame/render.h"
 #include "raster/rasterizer.h"
@@ -29,14 +30,6 @@
 #include "shadows/technique.h"
 
 namespace shadowlab {
-
-struct SweepAxis {
-    std::string name;
-    std::vector<std::string> values;
-};
-
-// "name=v1,v2,v3" -> axis; throws std::invalid_argument without a name or with an empty value.
-SweepAxis parseSweepAxis(const std::string& text);
 
 // One of `count` parts of a sweep. index counts from 1, as SLURM_ARRAY_TASK_ID does for
 // a job array submitted with --array=1-count; 1 of 1 is the whole sweep.
