@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -130,6 +131,18 @@ struct Environment {
     float rotationDeg = 0.0f;
 };
 
+// A fly-through (docs/flythrough.md): the camera's eye and target, and optionally the first
+// light's position (or a directional light's direction towards it), at keyframe times.
+struct PathKeyframe {
+    double time = 0.0;
+    glm::vec3 eye{0.0f}, target{0.0f};
+    std::optional<glm::vec3> light;
+};
+struct CameraPath {
+    std::vector<PathKeyframe> keyframes;   // times strictly increasing; none: the scene has no path
+    int frames = 0;                        // frames to sample it at; 0: the command's default
+};
+
 struct Scene {
     std::string name;
     std::vector<Mesh> meshes;
@@ -140,6 +153,7 @@ struct Scene {
     std::vector<Light> lights;
     Camera camera;
     Environment environment;
+    CameraPath flythrough;
 };
 
 // Every triangle of every instance in world space, in instance order, then mesh order.

@@ -12,6 +12,7 @@
 #include "raster/fixed_point.h"
 #include "scenes/alpha_texture.h"
 #include "scenes/camera.h"
+#include "scenes/camera_path.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
@@ -166,7 +167,8 @@ void checkSize(const JsonField& root, const Scene& scene) {
 
 Scene readScene(const JsonField& root, const std::string& directory, const std::string& name) {
     const JsonObject object =
-        root.object({"description", "meshes", "materials", "instances", "volumes", "lights", "camera", "environment"});
+        root.object({"description", "meshes", "materials", "instances", "volumes", "lights", "camera", "environment",
+                     "flythrough"});
     if (const auto description = object.optional("description")) description->string();   // for readers only
     Scene scene;
     scene.name = name;
@@ -186,6 +188,7 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     }
     for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light, directory));
     scene.camera = readCamera(object["camera"]);
+    if (const auto flythrough = object.optional("flythrough")) scene.flythrough = readCameraPath(*flythrough, scene.lights);
     if (const auto environment = object.optional("environment")) scene.environment = readEnvironment(*environment, directory);
     // Something must light the scene: a light, or an environment map (the environment
     // techniques need no other light; the shadow techniques then say they have none).

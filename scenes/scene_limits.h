@@ -17,5 +17,7 @@ inline constexpr uint64_t kMaxInstances = uint64_t(1) << 16;        // after "re
 inline constexpr uint64_t kMaxFileBytes = uint64_t(1) << 31;        // any scene, mesh or image file read
 inline constexpr int kMaxJsonDepth = 64;                            // nesting of a scene file
 inline constexpr size_t kMaxImageChannels = 16;                     // channels of an EXR read (compare)
+inline constexpr size_t kMaxPathKeyframes = size_t(1) << 16;         // of a fly-through's camera path
+inline constexpr int kMaxPathFrames = 100000;                        // frames a path is sampled at
 
 }  // namespace shadowlab

@@ -1,0 +1,177 @@
+#include "scenes/camera_path.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "scenes/camera.h"
+#include "scenes/scene_file.h"
+#include "scenes/scene_limits.h"
+
+namespace shadowlab {
+namespace {
+
+bool lightIsDirection(const std::vector<Light>& lights) {
+    return !lights.empty() && lights.front().type == LightType::Directional;
+}
+
+const char* lightKey(const std::vector<Light>& lights) {
+    return lightIsDirection(lights) ? "light_direction" : "light_position";
+}
+
+// Linear interpolation of two directions passes through zero if they are opposite; beyond
+// this angle between two keyframes (170 degrees) the turn needs a keyframe in between.
+constexpr float kMaxTurnCosine = -0.9848f;
+
+// What is wrong with the last keyframe of `path`, given that the ones before it are right;
+// "" if nothing.
+std::string lastKeyframeProblem(const CameraPath& path, const std::vector<Light>& lights) {
+    const PathKeyframe& key = path.keyframes.back();
+    if (key.eye == key.target) return "the eye is on the target";
+    if (key.light && lights.empty()) return "the scene has no light to move";
+    if (path.keyframes.size() == 1) {
+        if (key.light && lightIsDirection(lights) && key.light == glm::vec3(0.0f)) return "the light's direction is zero";
+        return {};
+    }
+    const PathKeyframe& previous = path.keyframes[path.keyframes.size() - 2];
+    if (!(key.time > previous.time))
+        return "times must increase from keyframe to keyframe, got " + std::to_string(key.time) + " after " +
+               std::to_string(previous.time);
+    if (key.light.has_value() != previous.light.has_value())
+        return std::string("give ") + lightKey(lights) + " in every keyframe or in none";
+    if (key.light && lightIsDirection(lights)) {
+        if (*key.light == glm::vec3(0.0f)) return "the light's direction is zero";
+        if (glm::dot(glm::normalize(*key.light), glm::normalize(*previous.light)) < kMaxTurnCosine)
+            return "the light turns by more than 170 degrees from the keyframe before; add a keyframe between";
+    }
+    return {};
+}
+
+glm::vec3 lerp(const glm::vec3& a, const glm::vec3& b, float s) { return a + (b - a) * s; }
+
+// ---- CSV --------------------------------------------------------------------------------
+
+std::vector<std::string> splitCommas(const std::string& line) {
+    std::vector<std::string> fields;
+    std::istringstream in(line + ",");
+    for (std::string field; std::getline(in, field, ',');) {
+        const size_t first = field.find_first_not_of(" \t\r"), last = field.find_last_not_of(" \t\r");
+        fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
+    }
+    return fields;
+}
+
+std::vector<std::string> csvColumns(const std::vector<Light>& lights, bool withLight) {
+    std::vector<std::string> columns{"time", "eye_x", "eye_y", "eye_z", "target_x", "target_y", "target_z"};
+    if (withLight)
+        for (const char* axis : {"_x", "_y", "_z"}) columns.push_back(lightKey(lights) + std::string(axis));
+    return columns;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ",") + name;
+    return text;
+}
+
+// The whole field as a finite double, or nullopt.
+std::optional<double> finiteNumber(const std::string& field) {
+    double value = 0.0;
+    const char* last = field.data() + field.size();
+    const auto [end, error] = std::from_chars(field.data(), last, value);
+    if (field.empty() || error != std::errc{} || end != last || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+}  // namespace
+
+PathSample samplePath(const CameraPath& path, int frame, int frames) {
+    const std::vector<PathKeyframe>& keys = path.keyframes;
+    const PathKeyframe& last = keys.back();
+    const double t = frames == 1 ? keys.front().time
+                   : frame == frames - 1 ? last.time
+                                         : keys.front().time + (last.time - keys.front().time) * frame / (frames - 1);
+    if (t == last.time) return {t, last.eye, last.target, last.light};
+    // The segment [k, k + 1] with time k <= t < time k + 1: a keyframe's own time gives it exactly.
+    const size_t k = size_t(std::ranges::upper_bound(keys, t, {}, &PathKeyframe::time) - keys.begin()) - 1;
+    const float s = float((t - keys[k].time) / (keys[k + 1].time - keys[k].time));
+    PathSample sample{t, lerp(keys[k].eye, keys[k + 1].eye, s), lerp(keys[k].target, keys[k + 1].target, s), {}};
+    if (keys[k].light) sample.light = lerp(*keys[k].light, *keys[k + 1].light, s);
+    return sample;
+}
+
+void placeOnPath(const PathSample& sample, int frame, Camera& camera, std::vector<Light>& lights) {
+    camera.eye = sample.eye;
+    camera.target = sample.target;
+    if (viewFrameProblem(camera) != ViewFrameProblem::None)
+        throw std::invalid_argument("frame " + std::to_string(frame) +
+                                    " of the path: the camera's view is undefined there (its eye is on its target, "
+                                    "or it looks straight along its up vector); add a keyframe");
+    if (!sample.light) return;
+    Light& light = lights.front();
+    if (light.type == LightType::Directional) light.direction = glm::normalize(*sample.light);
+    else light.position = *sample.light;
+}
+
+CameraPath readCameraPath(const JsonField& field, const std::vector<Light>& lights) {
+    const JsonObject object = field.object({"frames", "keyframes"});
+    CameraPath path;
+    if (const auto frames = object.optional("frames")) path.frames = frames->integer({1.0, double(kMaxPathFrames), false, false});
+    const std::vector<JsonField> keyframes = object["keyframes"].elements();
+    if (keyframes.empty()) object["keyframes"].fail("needs at least one keyframe");
+    if (keyframes.size() > kMaxPathKeyframes)
+        object["keyframes"].fail("more than " + std::to_string(kMaxPathKeyframes) + " keyframes");
+    for (const JsonField& entry : keyframes) {
+        const JsonObject key = entry.object({"time", "eye", "target", lightKey(lights)});
+        PathKeyframe& keyframe = path.keyframes.emplace_back();
+        keyframe.time = key["time"].number();
+        keyframe.eye = key["eye"].vec3();
+        keyframe.target = key["target"].vec3();
+        if (const auto light = key.optional(lightKey(lights))) keyframe.light = light->vec3();
+        if (const std::string problem = lastKeyframeProblem(path, lights); !problem.empty()) entry.fail(problem);
+    }
+    return path;
+}
+
+CameraPath parseCameraPathCsv(const std::string& text, const std::string& file, const std::vector<Light>& lights) {
+    std::istringstream in(text);
+    std::vector<std::string> columns;
+    CameraPath path;
+    int lineNumber = 0;
+    const auto fail = [&](const std::string& problem) {
+        throw SceneError(file + ": line " + std::to_string(lineNumber) + ": " + problem);
+    };
+    for (std::string line; std::getline(in, line);) {
+        ++lineNumber;
+        if (line.find_first_not_of(" \t\r") == std::string::npos || line.front() == '#') continue;
+        const std::vector<std::string> fields = splitCommas(line);
+        if (columns.empty()) {
+            if (fields != csvColumns(lights, false) && fields != csvColumns(lights, true))
+                fail("expected the header " + joined(csvColumns(lights, false)) + " (then " +
+                     lightKey(lights) + "_x,_y,_z to move the first light), got " + line);
+            columns = fields;
+            continue;
+        }
+        if (fields.size() != columns.size())
+            fail("expected " + std::to_string(columns.size()) + " values, got " + std::to_string(fields.size()));
+        if (path.keyframes.size() == kMaxPathKeyframes) fail("more than " + std::to_string(kMaxPathKeyframes) + " keyframes");
+        std::vector<float> values;
+        for (size_t c = 0; c < fields.size(); ++c) {
+            const std::optional<double> value = finiteNumber(fields[c]);
+            if (!value || (c > 0 && std::abs(*value) > std::numeric_limits<float>::max())) fail(columns[c] + ": expected a finite number, got '" + fields[c] + "'");
+            values.push_back(float(*value));
+            if (c == 0) path.keyframes.emplace_back().time = *value;
+        }
+        PathKeyframe& keyframe = path.keyframes.back();
+        keyframe.eye = {values[1], values[2], values[3]};
+        keyframe.target = {values[4], values[5], values[6]};
+        if (values.size() == 10) keyframe.light = glm::vec3(values[7], values[8], values[9]);
+        if (const std::string problem = lastKeyframeProblem(path, lights); !problem.empty()) fail(problem);
+    }
+    if (path.keyframes.empty()) fail(columns.empty() ? "no header and no keyframes" : "no keyframes after the header");
+    return path;
+}
+
+}  // namespace shadowlab
