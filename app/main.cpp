@@ -19,6 +19,8 @@
 #include "app/bench_passes.h"
 #include "app/composite.h"
 #include "app/environment.h"
+#include "app/flythrough.h"
+#include "app/flythrough_report.h"
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
 #include "app/sweep.h"
@@ -31,6 +33,7 @@
 #include "raster/thread_count.h"
 #include "scenes/obj_writer.h"
 #include "scenes/read_file.h"
+#include "scenes/scene_limits.h"
 #include "scenes/scene_file.h"
 #include "shading/compare.h"
 #include "shading/image_io.h"
@@ -208,6 +211,31 @@ void runMergeSweepCommand(const MergeSweepArgs& a) {
     writeSweepReport(merged, a.outDir, plotY);
 }
 
+struct FlythroughArgs {
+    FlythroughOptions options;
+    std::vector<std::string> techniques, params;
+    std::string simd = "auto", outDir = "out";
+    bool progress = false;
+};
+
+void runFlythroughCommand(FlythroughArgs a) {
+    Progress progress(std::cerr);
+    a.options.progress = progressIfWanted(progress, a.progress);
+    for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
+    for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
+    a.options.simd = raster::parseSimdLevel(a.simd);
+    std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
+    const FlythroughResults results = runFlythrough(a.options);
+    std::cout << formatFlythroughText(results);
+    const std::filesystem::path stem = std::filesystem::path(a.outDir) / flythroughFileStem(results);
+    writeReport(stem, formatFlythroughCsv(results), formatFlythroughJson(results),
+                formatFlythroughSvg(results, FlythroughPlot::Flicker));
+    for (const auto& [suffix, plot] : {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error}}) {
+        writeTextFile(stem.string() + suffix, formatFlythroughSvg(results, plot));
+        std::cout << "wrote " << stem.string() + suffix << "\n";
+    }
+}
+
 struct ScalingArgs {
     ScalingOptions options;
     std::string technique, simd = "auto", outDir = "out";
@@ -354,6 +382,28 @@ void addMergeSweepCommand(CLI::App& app, MergeSweepArgs& a) {
     m->callback([&a] { runMergeSweepCommand(a); });
 }
 
+void addFlythroughCommand(CLI::App& app, FlythroughArgs& a) {
+    CLI::App* f = app.add_subcommand("flythrough", "shadows in motion: time, error and flicker of techniques along a "
+                                                   "camera (and light) path (CSV, JSON, SVG plots)");
+    f->add_option("scene", a.options.scene, "built-in scene name or scene file (.json)")->required();
+    f->add_option("--technique", a.techniques, "techniques to run, comma-separated")->delimiter(',')->required();
+    f->add_option("--param", a.params, "one axis: name=v1,v2,... (repeatable; the cross product is run)");
+    f->add_option("--path", a.options.pathFile, "keyframes as CSV (docs/flythrough.md); default: the scene's "
+                                               "\"flythrough\"")->check(CLI::ExistingFile);
+    f->add_option("--frames", a.options.frames, "frames sampled along the path (default: the path's, else " +
+                  std::to_string(kDefaultPathFrames) + ")")->check(CLI::Range(1, kMaxPathFrames));
+    f->add_option("--width", a.options.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+    f->add_option("--height", a.options.overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+    f->add_option("--threads", a.options.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, kMaxThreads));
+    addTimingOptions(f, "frames per path frame", a.options.runs, a.options.warmupRuns, a.simd);
+    f->add_option("--stable-tolerance", a.options.stableTolerance,
+                  "the reference's V counts as unchanged if it moves by at most this")->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
+    f->add_option("--out", a.outDir, "directory for SCENE-flythrough-TECHNIQUES.csv, .json, .svg (flicker), "
+                                     "-time.svg and -error.svg")->capture_default_str();
+    addProgressFlag(f, a.progress);
+    f->callback([&a] { runFlythroughCommand(a); });
+}
+
 void addScalingCommand(CLI::App& app, ScalingArgs& a) {
     CLI::App* s = app.add_subcommand("scaling", "time against triangle count over a series of scenes, fitted as t = a + b n (CSV, JSON, SVG)");
     s->add_option("scenes", a.options.scenes, "two or more built-in scene names or scene files (e.g. scenes/scaling/*.json)")->required();
@@ -460,6 +510,7 @@ int main(int argc, char** argv) {
     SweepArgs sweep;
     MergeSweepArgs mergeSweep;
     ScalingArgs scaling;
+    FlythroughArgs flythrough;
     CompareArgs compare;
     BenchArgs bench;
     ExportArgs exportObj;
@@ -469,6 +520,7 @@ int main(int argc, char** argv) {
     addSweepCommand(app, sweep);
     addMergeSweepCommand(app, mergeSweep);
     addScalingCommand(app, scaling);
+    addFlythroughCommand(app, flythrough);
     addCompareCommand(app, compare);
     addBenchCommand(app, bench);
     addTechniquesCommand(app);

@@ -80,7 +80,7 @@ expect_png() {
 
 # ---- Help ---------------------------------------------------------------------------------
 expect_usage --help
-for command in render sweep merge-sweep compare bench scaling export-obj techniques environment composite; do
+for command in render sweep merge-sweep compare bench scaling flythrough export-obj techniques environment composite; do
     expect_usage "$command" --help
 done
 run techniques
@@ -123,6 +123,21 @@ if grep -q "neither OpenEXR nor Radiance HDR" "$err"; then pass; else fail "the 
 run environment "$maps/pmndrs_sky.hdr" --lights 8 --rotation 30 --phong 8 --ggx 0.5 --out "$scratch/env"
 if [ "$rc" -eq 0 ] && grep -q "8 median-cut and structured lights" "$out"; then pass; else fail "environment exited $rc: $(cat "$err")"; fi
 for image in environment sh-radiance sh-irradiance lights structured-lights prefiltered-phong-8 prefiltered-ggx-0.5 split-sum; do expect_png "$scratch/env/$image.png"; done
+expect_error "flythrough of a scene without a path" flythrough "$maps/../hard/spot.json" --technique shadow-map --out "$scratch/fly"
+if grep -q 'has no "flythrough" path' "$err"; then pass; else fail "the missing path is not named: $(cat "$err")"; fi
+printf 'time,eye_x,eye_y,eye_z,target_x,target_y,target_z\n1,0,4,9,0,0,0\n0,0,4,8,0,0,0\n' >"$scratch/back.csv"
+expect_error "flythrough of keyframes going back in time" flythrough sphere-box --path "$scratch/back.csv" \
+    --technique shadow-map --out "$scratch/fly"
+if grep -q "back.csv: line 3: times must increase" "$err"; then pass; else fail "the bad keyframe is not named: $(cat "$err")"; fi
+expect_error "flythrough of a radiance technique" flythrough sphere-box --technique env-additive --out "$scratch/fly"
+run flythrough sphere-box --technique shadow-map --frames 3 --runs 1 --warmup 0 "${tiny[@]}" --out "$scratch/fly"
+if [ "$rc" -eq 0 ] && [ "$(wc -l <"$scratch/fly/sphere-box-flythrough-shadow-map.csv")" -eq 4 ] &&
+   grep -q "<polyline" "$scratch/fly/sphere-box-flythrough-shadow-map-time.svg" &&
+   grep -q '"flicker": null' "$scratch/fly/sphere-box-flythrough-shadow-map.json"; then
+    pass
+else
+    fail "flythrough exited $rc or wrote no table, plot or JSON: $(cat "$err")"
+fi
 expect_error "composite of an unknown case" composite no-such-room --width 32 --height 20 --out "$scratch/comp"
 expect_error "composite of a frame past the path" composite room --frames 99 --width 32 --height 20 --out "$scratch/comp"
 expect_error "composite with negative passes" composite room --passes -1 --width 32 --height 20 --out "$scratch/comp"

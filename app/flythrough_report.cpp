@@ -1,0 +1,143 @@
+#include "app/flythrough_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "app/line_plot.h"
+#include "app/sweep.h"
+
+namespace shadowlab {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::array<float, 3> xyz(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+std::string settingsText(const FlythroughSeries& series) {
+    std::string text;
+    for (const auto& [name, value] : series.settings) text += (text.empty() ? "" : " ") + name + "=" + value;
+    return text;
+}
+
+std::vector<std::string> vectorFields(const std::optional<glm::vec3>& v) {
+    if (!v) return {"", "", ""};
+    return {csvNumber(v->x), csvNumber(v->y), csvNumber(v->z)};
+}
+
+Json frameJson(const FlythroughFrame& f) {
+    Json frame = {{"frame", f.frame}, {"time", f.time}, {"eye", xyz(f.eye)}, {"target", xyz(f.target)}};
+    if (f.light) frame["light"] = xyz(*f.light);
+    frame["median_ms"] = f.medianMs;
+    frame["min_ms"] = f.minMs;
+    frame["errors"] = Json::parse(formatJson(f.errors));
+    frame["flicker"] = f.flicker ? Json{{"mean", f.flicker->mean}, {"p99", f.flicker->p99},
+                                        {"pixels", f.flicker->pixels}, {"stable_pixels", f.flicker->stablePixels}}
+                                 : Json(nullptr);
+    return frame;
+}
+
+Json seriesJson(const FlythroughSeries& s) {
+    const PathFigures p = pathFigures(s);
+    Json frames = Json::array();
+    for (const FlythroughFrame& f : s.frames) frames.push_back(frameJson(f));
+    return {{"technique", s.technique}, {"reference", s.reference}, {"settings", s.settings},
+            {"path_figures", {{"median_ms", p.medianMs}, {"mean_rms", p.meanRms},
+                              {"mean_misclassified_percent", p.meanMisclassifiedPercent},
+                              {"flicker_mean", p.flickerMean}, {"flicker_p99", p.flickerP99}}},
+            {"frames", frames}};
+}
+
+// The plotted value of a frame, or nullopt where it has none (flicker on frame 0).
+std::optional<double> plotted(const FlythroughFrame& frame, FlythroughPlot plot) {
+    switch (plot) {
+        case FlythroughPlot::Time: return frame.medianMs;
+        case FlythroughPlot::Error: return frame.errors.rms;
+        case FlythroughPlot::Flicker: return frame.flicker ? std::optional(frame.flicker->mean) : std::nullopt;
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::string flythroughFileStem(const FlythroughResults& results) {
+    std::vector<std::string> names;
+    for (const FlythroughSeries& s : results.series)
+        if (std::ranges::find(names, s.technique) == names.end()) names.push_back(s.technique);
+    std::string techniques;
+    for (const std::string& name : names) techniques += (techniques.empty() ? "" : "+") + name;
+    return results.scene + "-flythrough-" + techniques;
+}
+
+std::string formatFlythroughText(const FlythroughResults& results) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%s: %d frames of path %s, %d threads, median of %d runs after %d warm-up\n",
+                  results.scene.c_str(), results.frames, results.path.c_str(), results.threads, results.runs,
+                  results.warmupRuns);
+    std::string text = line;
+    std::snprintf(line, sizeof line, "%-36s %10s %10s %8s %13s %12s\n", "series", "median ms", "mean RMS",
+                  "miscl %", "flicker mean", "flicker p99");
+    text += line;
+    for (const FlythroughSeries& s : results.series) {
+        const PathFigures p = pathFigures(s);
+        std::snprintf(line, sizeof line, "%-36s %10.3f %10.5f %8.3f %13.6f %12.5f\n", s.label().c_str(), p.medianMs,
+                      p.meanRms, p.meanMisclassifiedPercent, p.flickerMean, p.flickerP99);
+        text += line;
+    }
+    return text;
+}
+
+std::string formatFlythroughCsv(const FlythroughResults& results) {
+    std::string csv = csvLine({"technique", "settings", "frame", "time", "eye_x", "eye_y", "eye_z", "target_x",
+                               "target_y", "target_z", "light_x", "light_y", "light_z", "median_ms", "min_ms", "rms",
+                               "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
+                               "flicker_mean", "flicker_p99", "flicker_stable_percent"});
+    for (const FlythroughSeries& s : results.series) {
+        for (const FlythroughFrame& f : s.frames) {
+            std::vector<std::string> fields{s.technique, settingsText(s), std::to_string(f.frame), csvNumber(f.time)};
+            for (const auto& v : {std::optional(f.eye), std::optional(f.target), f.light}) {
+                const std::vector<std::string> three = vectorFields(v);
+                fields.insert(fields.end(), three.begin(), three.end());
+            }
+            const ErrorFigures& e = f.errors;
+            for (double x : {f.medianMs, f.minMs, e.rms, e.maxAbs, e.percentOfPixels(e.misclassified()),
+                             e.percentOfPixels(e.falseShadow), e.percentOfPixels(e.falseLight)})
+                fields.push_back(csvNumber(x));
+            for (double x : {f.flicker ? f.flicker->mean : NAN, f.flicker ? f.flicker->p99 : NAN,
+                             f.flicker ? f.flicker->stablePercent() : NAN})
+                fields.push_back(f.flicker ? csvNumber(x) : "");
+            csv += csvLine(fields);
+        }
+    }
+    return csv;
+}
+
+std::string formatFlythroughJson(const FlythroughResults& results) {
+    Json series = Json::array();
+    for (const FlythroughSeries& s : results.series) series.push_back(seriesJson(s));
+    const Json json = {{"scene", results.scene}, {"path", results.path}, {"frames", results.frames},
+                       {"threads", results.threads}, {"warmup", results.warmupRuns}, {"runs", results.runs},
+                       {"stable_tolerance", results.stableTolerance}, {"series", series}};
+    return json.dump(1) + "\n";
+}
+
+std::string formatFlythroughSvg(const FlythroughResults& results, FlythroughPlot plot) {
+    static constexpr const char* kTitles[] = {"technique time (median ms)", "RMS of V against the reference",
+                                              "flicker: mean |V_t - V_t-1| where the reference is unchanged"};
+    const char* yTitle = kTitles[int(plot)];
+    LinePlot linePlot{results.scene + ": " + yTitle + " along the path", "frame", yTitle, {}};
+    for (const FlythroughSeries& s : results.series) {
+        PlotSeries& line = linePlot.series.emplace_back(PlotSeries{s.label(), {}, {}, {}});
+        for (const FlythroughFrame& f : s.frames) {
+            const std::optional<double> y = plotted(f, plot);
+            if (!y || !std::isfinite(*y)) continue;
+            line.x.push_back(f.frame);
+            line.y.push_back(*y);
+        }
+    }
+    return formatLinePlotSvg(linePlot);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,141 @@
+// `shadowlab flythrough`: time, error and flicker along a camera path. A camera that does
+// not move must not flicker at all; texel snapping must remove the flicker a sub-texel
+// move of the camera causes in cascaded shadow maps; the files read back.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/flythrough.h"
+#include "app/flythrough_report.h"
+#include "scenes/scene_file.h"
+#include "tests/scratch_directory.h"
+
+using namespace shadowlab;
+
+namespace {
+
+std::string sunScene() { return builtinSceneDir() + "/hard/sun.json"; }
+
+// Keyframes as CSV: the camera from (eye, target) at time 0 to both moved by `move` at time 1.
+std::string writePath(const test::ScratchDirectory& dir, const glm::vec3& eye, const glm::vec3& target,
+                      const glm::vec3& move) {
+    const std::string file = (dir.path / "path.csv").string();
+    std::ofstream out(file);
+    out << "time,eye_x,eye_y,eye_z,target_x,target_y,target_z\n";
+    for (float s : {0.0f, 1.0f}) {
+        const glm::vec3 e = eye + s * move, t = target + s * move;
+        out << s << ',' << e.x << ',' << e.y << ',' << e.z << ',' << t.x << ',' << t.y << ',' << t.z << '\n';
+    }
+    return file;
+}
+
+FlythroughOptions smallRun(const std::string& scene, std::vector<std::string> techniques, int frames) {
+    FlythroughOptions options;
+    options.scene = scene;
+    options.overrides.width = 160;
+    options.overrides.height = 100;
+    options.frames = frames;
+    options.warmupRuns = 0;
+    options.runs = 1;
+    options.threads = 2;
+    for (const std::string& name : techniques) options.techniques.push_back(&findTechnique(name));
+    return options;
+}
+
+}  // namespace
+
+TEST_CASE("a static camera gives zero flicker for every technique") {
+    const test::ScratchDirectory dir("flythrough_static");
+    for (const auto& [scene, techniques] : {std::pair{std::string("sphere-box"), std::vector<std::string>{"shadow-map", "pcss", "fins"}},
+                                            {sunScene(), {"csm", "shadow-map"}}}) {
+        FlythroughOptions options = smallRun(scene, techniques, 3);
+        options.pathFile = writePath(dir, {0, 4, 9}, {0, 0.5f, 0}, {0, 0, 0});
+        const FlythroughResults results = runFlythrough(options);
+        REQUIRE(results.series.size() == techniques.size());
+        for (const FlythroughSeries& series : results.series) {
+            const std::string label = series.label();
+            CAPTURE(label);
+            REQUIRE(series.frames.size() == 3);
+            CHECK_FALSE(series.frames[0].flicker);
+            for (size_t f = 1; f < 3; ++f) {
+                REQUIRE(series.frames[f].flicker);
+                const FlickerFigures& flicker = *series.frames[f].flicker;
+                CHECK(flicker.pixels > 10000);
+                CHECK(flicker.stablePixels == flicker.pixels);
+                CHECK(flicker.mean == 0.0);
+                CHECK(flicker.p99 == 0.0);
+                CHECK(series.frames[f].errors.rms == series.frames[0].errors.rms);
+            }
+            CHECK(pathFigures(series).flickerMean == 0.0);
+        }
+    }
+}
+
+TEST_CASE("texel snapping removes the flicker a sub-texel camera move causes in cascaded shadow maps") {
+    // The sun over sphere-box, the camera moving 2 mm a frame along its view axis: a third of
+    // a texel of the nearest cascade at 512 texels. Unsnapped, every cascade follows the
+    // camera and its texels slide under the world, flipping texels along every shadow edge;
+    // snapped, the texels stay in place and only pixels sliding over the (world-fixed)
+    // staircase change, few near the image's centre, whose surface points barely move.
+    FlythroughOptions options = smallRun(builtinSceneDir() + "/hard/sun.json", {"csm"}, 8);
+    options.overrides.width = 640;
+    options.overrides.height = 400;
+    options.pathFile = builtinSceneDir() + "/flythrough/sun-dolly.csv";
+    options.axes = {{"snap", {"off", "on"}}, {"resolution", {"512"}}};
+    const FlythroughResults results = runFlythrough(options);
+    REQUIRE(results.series.size() == 2);
+    CHECK(results.series[0].settings.at("snap") == "off");
+    const PathFigures off = pathFigures(results.series[0]), on = pathFigures(results.series[1]);
+    MESSAGE("flicker mean: snap off ", off.flickerMean, ", on ", on.flickerMean);
+    CHECK(off.flickerMean > 2e-4);
+    CHECK(on.flickerMean < 0.5 * off.flickerMean);
+    for (const FlythroughFrame& frame : results.series[1].frames)
+        if (frame.flicker) CHECK(frame.flicker->stablePercent() > 99.0);
+}
+
+TEST_CASE("a fly-through follows the scene's path and writes its table, JSON and plots") {
+    const FlythroughResults results = runFlythrough(smallRun("sphere-box", {"shadow-map"}, 4));
+    CHECK(results.path == "scene");
+    REQUIRE(results.series.size() == 1);
+    const FlythroughSeries& series = results.series[0];
+    REQUIRE(series.frames.size() == 4);
+    // sphere-box's path: frame 0 at its first keyframe, frame 3 at its last, frame 1 at time 1.
+    CHECK(series.frames[0].eye == glm::vec3(0, 4, 9));
+    CHECK(series.frames[1].eye == glm::vec3(5, 3.5f, 7.5f));
+    CHECK(series.frames[3].eye == glm::vec3(6, 2, -4));
+    // The camera moves a lot between frames: some pixels see other surfaces, whose reference
+    // differs, and are left out.
+    REQUIRE(series.frames[1].flicker);
+    CHECK(series.frames[1].flicker->stablePixels < series.frames[1].flicker->pixels);
+    CHECK(series.frames[1].errors.rms != series.frames[0].errors.rms);
+
+    const std::string csv = formatFlythroughCsv(results);
+    CHECK(std::count(csv.begin(), csv.end(), '\n') == 5);
+    CHECK(csv.rfind("technique,settings,frame,time,eye_x", 0) == 0);
+    const nlohmann::json json = nlohmann::json::parse(formatFlythroughJson(results));
+    CHECK(json["frames"] == 4);
+    CHECK(json["series"][0]["frames"][0]["flicker"].is_null());
+    CHECK(json["series"][0]["frames"][2]["flicker"]["stable_pixels"].get<uint64_t>() ==
+          series.frames[2].flicker->stablePixels);
+    CHECK(json["series"][0]["path_figures"]["flicker_mean"].get<double>() == pathFigures(series).flickerMean);
+    for (FlythroughPlot plot : {FlythroughPlot::Time, FlythroughPlot::Error, FlythroughPlot::Flicker})
+        CHECK(formatFlythroughSvg(results, plot).find("shadow-map") != std::string::npos);
+    CHECK(flythroughFileStem(results) == "sphere-box-flythrough-shadow-map");
+}
+
+TEST_CASE("a fly-through refuses what it cannot measure, before rendering") {
+    CHECK_THROWS_WITH_AS(runFlythrough(smallRun(builtinSceneDir() + "/hard/spot.json", {"shadow-map"}, 2)),
+                         doctest::Contains("has no \"flythrough\" path"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(runFlythrough(smallRun("sphere-box", {"env-subtractive"}, 2)),
+                         doctest::Contains("flicker is measured on V"), std::invalid_argument);
+    FlythroughOptions moved = smallRun("sphere-box", {"shadow-map"}, 2);
+    moved.overrides.eye = glm::vec3(1, 2, 3);
+    CHECK_THROWS_WITH_AS(runFlythrough(moved), doctest::Contains("the path places the camera"), std::invalid_argument);
+    FlythroughOptions typo = smallRun("sphere-box", {"shadow-map"}, 2);
+    typo.axes = {{"resolutoin", {"512"}}};
+    CHECK_THROWS_WITH_AS(runFlythrough(typo), doctest::Contains("none of the techniques"), std::invalid_argument);
+}
