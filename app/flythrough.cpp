@@ -1,6 +1,8 @@
 #include "app/flythrough.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <filesystem>
 #include <map>
 #include <stdexcept>
 
@@ -13,6 +15,7 @@
 #include "scenes/read_file.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_limits.h"
+#include "shading/tonemap.h"
 
 namespace shadowlab {
 namespace {
@@ -47,7 +50,22 @@ struct SeriesState {
     const Technique* technique;
     FlythroughSeries series;
     ImageChannels previous;   // scoredImage() of the frame before
+    std::filesystem::path framesDir;   // where its frames' PNGs go; empty: nowhere
 };
+
+// image-NNNN.png and error-NNNN.png of a series' frame, in its own directory.
+void writeFrameImages(const std::filesystem::path& framesDir, const FlythroughSeries& series, int frame,
+                      const ImageChannels& reference, const ImageChannels& scored, const Frame& rendered) {
+    std::string name = series.label();
+    std::ranges::replace(name, ' ', '_');
+    const std::filesystem::path dir = framesDir / name;
+    std::filesystem::create_directories(dir);
+    char number[16];
+    std::snprintf(number, sizeof number, "%04d.png", frame);
+    const int w = scored.width, h = scored.height;
+    writePng((dir / (std::string("image-") + number)).string(), w, h, toSrgb8Image(rendered.radiance, {0.0f, ToneOperator::Reinhard}));
+    writePng((dir / (std::string("error-") + number)).string(), w, h, errorMapImage(reference, scored, rendered.radiance));
+}
 
 FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels& reference, const ImageChannels* previousReference,
                              SeriesState& state, const FlythroughOptions& options, const ProgressStage& progress) {
@@ -58,6 +76,8 @@ FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels&
     frame.minMs = timed.timing.minMs;
     frame.errors = scoreFrame(reference, timed.last);
     ImageChannels scored = scoredImage(timed.last);
+    if (!state.framesDir.empty())
+        writeFrameImages(state.framesDir, state.series, int(state.series.frames.size()), reference, scored, timed.last);
     if (previousReference)
         frame.flicker = flickerFigures(*previousReference, reference, state.previous, scored, channel::V, options.stableTolerance);
     state.previous = std::move(scored);
@@ -65,6 +85,12 @@ FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels&
 }
 
 }  // namespace
+
+std::string flythroughFileStem(const std::string& scene, const std::vector<const Technique*>& techniques) {
+    std::string names;
+    for (const Technique* t : techniques) names += (names.empty() ? "" : "+") + t->name;
+    return scene + "-flythrough-" + names;
+}
 
 std::string FlythroughSeries::label() const {
     std::string text = technique;
@@ -122,10 +148,15 @@ FlythroughResults runFlythrough(const FlythroughOptions& options) {
     }
     checkSettings(prepared, plans, options.simd, options.progress, "flythrough");
 
+    const std::filesystem::path framesDir =
+        options.imagesDir.empty() ? std::filesystem::path()
+                                  : std::filesystem::path(options.imagesDir) /
+                                        (flythroughFileStem(results.scene, options.techniques) + "-frames");
     std::vector<SeriesState> states;
     for (const SweepPlan& plan : plans)
         for (const PlannedSetting& setting : plan.settings)
-            states.push_back({plan.technique, {plan.technique->name, plan.technique->referenceName, setting.params, {}}, {}});
+            states.push_back({plan.technique, {plan.technique->name, plan.technique->referenceName, setting.params, {}}, {},
+                              framesDir});
     const ProgressStage progress(options.progress, "flythrough: frame",
                                  uint64_t(results.frames) * states.size() * uint64_t(options.warmupRuns + options.runs));
     std::map<std::string, ImageChannels> previousReferences;

@@ -32,6 +32,10 @@ struct FlythroughOptions {
     int threads = 0;                         // 0: all cores
     int warmupRuns = 1, runs = 3;
     float stableTolerance = kStableReferenceTolerance;
+    // Each frame's image and error map as PNG, DIR/STEM-frames/SERIES/image-NNNN.png and
+    // error-NNNN.png (STEM: flythroughFileStem; SERIES: the label, '_' for spaces), e.g. to
+    // make a video; empty: none.
+    std::string imagesDir;
     raster::SimdLevel simd = raster::bestSimdLevel();
     Progress* progress = nullptr;
 };
@@ -69,6 +73,10 @@ struct FlythroughResults {
     float stableTolerance = 0.0f;
     std::vector<FlythroughSeries> series;    // per technique, its settings in axis order
 };
+
+// "<scene>-flythrough-<technique>[+<technique>...]", each technique once, in order: the stem
+// of the command's files.
+std::string flythroughFileStem(const std::string& scene, const std::vector<const Technique*>& techniques);
 
 // Loads the scene and the path (the CSV, or the scene's own: a scene without one fails),
 // checks every technique setting with one frame, then renders the path. Throws

@@ -62,15 +62,6 @@ std::optional<double> plotted(const FlythroughFrame& frame, FlythroughPlot plot)
 
 }  // namespace
 
-std::string flythroughFileStem(const FlythroughResults& results) {
-    std::vector<std::string> names;
-    for (const FlythroughSeries& s : results.series)
-        if (std::ranges::find(names, s.technique) == names.end()) names.push_back(s.technique);
-    std::string techniques;
-    for (const std::string& name : names) techniques += (techniques.empty() ? "" : "+") + name;
-    return results.scene + "-flythrough-" + techniques;
-}
-
 std::string formatFlythroughText(const FlythroughResults& results) {
     char line[256];
     std::snprintf(line, sizeof line, "%s: %d frames of path %s, %d threads, median of %d runs after %d warm-up\n",

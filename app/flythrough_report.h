@@ -8,9 +8,6 @@
 
 namespace shadowlab {
 
-// "<scene>-flythrough-<technique>[+<technique>...]"
-std::string flythroughFileStem(const FlythroughResults& results);
-
 // Per series: its label and PathFigures.
 std::string formatFlythroughText(const FlythroughResults& results);
 

@@ -215,7 +215,7 @@ struct FlythroughArgs {
     FlythroughOptions options;
     std::vector<std::string> techniques, params;
     std::string simd = "auto", outDir = "out";
-    bool progress = false;
+    bool images = false, progress = false;
 };
 
 void runFlythroughCommand(FlythroughArgs a) {
@@ -225,9 +225,11 @@ void runFlythroughCommand(FlythroughArgs a) {
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
     a.options.simd = raster::parseSimdLevel(a.simd);
     std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
+    if (a.images) a.options.imagesDir = a.outDir;
     const FlythroughResults results = runFlythrough(a.options);
     std::cout << formatFlythroughText(results);
-    const std::filesystem::path stem = std::filesystem::path(a.outDir) / flythroughFileStem(results);
+    const std::filesystem::path stem =
+        std::filesystem::path(a.outDir) / flythroughFileStem(results.scene, a.options.techniques);
     writeReport(stem, formatFlythroughCsv(results), formatFlythroughJson(results),
                 formatFlythroughSvg(results, FlythroughPlot::Flicker));
     for (const auto& [suffix, plot] : {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error}}) {
@@ -400,6 +402,8 @@ void addFlythroughCommand(CLI::App& app, FlythroughArgs& a) {
                   "the reference's V counts as unchanged if it moves by at most this")->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
     f->add_option("--out", a.outDir, "directory for SCENE-flythrough-TECHNIQUES.csv, .json, .svg (flicker), "
                                      "-time.svg and -error.svg")->capture_default_str();
+    f->add_flag("--images", a.images, "also write every frame's image and error map, "
+                                      "OUT/SCENE-flythrough-TECHNIQUES-frames/SETTING/image-NNNN.png and error-NNNN.png");
     addProgressFlag(f, a.progress);
     f->callback([&a] { runFlythroughCommand(a); });
 }

@@ -3,6 +3,7 @@
 // move of the camera causes in cascaded shadow maps; the files read back.
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -97,8 +98,15 @@ TEST_CASE("texel snapping removes the flicker a sub-texel camera move causes in 
         if (frame.flicker) CHECK(frame.flicker->stablePercent() > 99.0);
 }
 
-TEST_CASE("a fly-through follows the scene's path and writes its table, JSON and plots") {
-    const FlythroughResults results = runFlythrough(smallRun("sphere-box", {"shadow-map"}, 4));
+TEST_CASE("a fly-through follows the scene's path and writes its table, JSON, plots and frames") {
+    const test::ScratchDirectory dir("flythrough_files");
+    FlythroughOptions options = smallRun("sphere-box", {"shadow-map"}, 4);
+    options.imagesDir = dir.path.string();
+    const FlythroughResults results = runFlythrough(options);
+    const std::filesystem::path frames = dir.path / "sphere-box-flythrough-shadow-map-frames" / "shadow-map";
+    for (const char* file : {"image-0000.png", "error-0000.png", "image-0003.png", "error-0003.png"})
+        CHECK(std::filesystem::file_size(frames / file) > 100);
+    CHECK_FALSE(std::filesystem::exists(frames / "image-0004.png"));
     CHECK(results.path == "scene");
     REQUIRE(results.series.size() == 1);
     const FlythroughSeries& series = results.series[0];
@@ -124,7 +132,8 @@ TEST_CASE("a fly-through follows the scene's path and writes its table, JSON and
     CHECK(json["series"][0]["path_figures"]["flicker_mean"].get<double>() == pathFigures(series).flickerMean);
     for (FlythroughPlot plot : {FlythroughPlot::Time, FlythroughPlot::Error, FlythroughPlot::Flicker})
         CHECK(formatFlythroughSvg(results, plot).find("shadow-map") != std::string::npos);
-    CHECK(flythroughFileStem(results) == "sphere-box-flythrough-shadow-map");
+    CHECK(flythroughFileStem(results.scene, {&findTechnique("shadow-map"), &findTechnique("pcss")}) ==
+          "sphere-box-flythrough-shadow-map+pcss");
 }
 
 TEST_CASE("a fly-through refuses what it cannot measure, before rendering") {
