@@ -6,14 +6,14 @@
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
 # cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric ...]   (default: all fourteen)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|flythrough ...]   (default: all fifteen)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric flythrough}
 
 for part in $parts; do
   case $part in
@@ -271,7 +271,31 @@ for part in $parts; do
       cp $s/branch/izb-pcss-$buffer.png docs/images/hybrid-branch-$buffer.png
     done
     ;;
+  flythrough)
+    # Shadows in motion (docs/flythrough.md): per-frame time, error and flicker along the
+    # built-in paths, at 640 x 400 and 2 threads; the README's flicker table.
+    f=$out/flythrough
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    for move in dolly slide; do
+      $app flythrough scenes/hard/sun.json --path scenes/flythrough/sun-$move.csv --frames 48 --technique csm \
+        --param snap=off,on --threads 2 --out $f/$move > /dev/null
+    done
+    $app flythrough scenes/flythrough/avenue.json --technique csm --param snap=off,on --threads 2 --out $f > /dev/null
+    $app flythrough scenes/hard/sun.json --technique shadow-map,csm --threads 2 --out $f > /dev/null
+    $app flythrough sphere-box --technique shadow-map --param resolution=512,1024,2048,4096 --width 640 --height 400 \
+      --threads 2 --out $f > /dev/null
+    soft=pcss,chs,vsm,esm,evsm,msm,multi-sample,backprojection,soft-shadow-volumes,fins,smoothies,penumbra-maps
+    $app flythrough sphere-box --technique $soft --width 640 --height 400 --threads 2 --out $f > /dev/null
+    python3 scripts/flythrough_table.py $f/dolly/sun-flythrough-csm.json $f/slide/sun-flythrough-csm.json \
+      $f/avenue-flythrough-csm.json \
+      $f/sun-flythrough-shadow-map+csm.json $f/sphere-box-flythrough-shadow-map.json \
+      $f/sphere-box-flythrough-$(echo $soft | tr , +).json
+    for plot in .svg -time.svg -error.svg; do
+      cp $f/avenue-flythrough-csm$plot docs/images/flythrough-avenue-csm$plot
+      cp $f/sphere-box-flythrough-$(echo $soft | tr , +)$plot docs/images/flythrough-sphere-box-soft$plot
+    done
+    ;;
   *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
-       "environment, lod, differential, screen)" >&2; exit 2 ;;
+       "environment, lod, differential, screen, volumetric, flythrough)" >&2; exit 2 ;;
   esac
 done
