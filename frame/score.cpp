@@ -40,12 +40,17 @@ ImageChannels scoredImage(const Frame& frame) {
     return image;
 }
 
-ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName,
-                                   Progress* progress) {
+Frame renderReferenceFrame(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName,
+                           Progress* progress) {
     FrameSettings settings;
     settings.simd = simd;
     settings.progress = progress;
-    return scoredImage(renderFrame(prepared, findTechnique(referenceName), settings));
+    return renderFrame(prepared, findTechnique(referenceName), settings);
+}
+
+ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName,
+                                   Progress* progress) {
+    return scoredImage(renderReferenceFrame(prepared, simd, referenceName, progress));
 }
 
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {

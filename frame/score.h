@@ -26,8 +26,11 @@ const char* scoredChannel(TechniqueOutput output);
 inline constexpr const char* kDisplayLuminance = "Y.display";
 ImageChannels scoredImage(const Frame& frame);
 
-// Renders the scene with the technique named referenceName (at its default settings) and
-// returns its scoredImage(); the technique reports on `progress` if one is given.
+// Renders the scene with the technique named referenceName (at its default settings); the
+// technique reports on `progress` if one is given. renderReferenceImage() returns the
+// frame's scoredImage(), renderReferenceFrame() the frame itself (its shaded image too).
+Frame renderReferenceFrame(const PreparedScene& prepared, raster::SimdLevel simd,
+                           const std::string& referenceName = "reference", Progress* progress = nullptr);
 ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd,
                                    const std::string& referenceName = "reference", Progress* progress = nullptr);
 
