@@ -26,6 +26,7 @@
 #include "app/sweep_merge.h"
 #include "app/sweep_plot.h"
 #include "shadows/depth_map.h"
+#include "frame/frame_images.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"
@@ -166,7 +167,7 @@ struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
     std::string simd = "auto", outDir = "out", plotY = "misclassified", shard, casterLod;
-    bool progress = false;
+    bool progress = false, images = false;
 };
 
 // The sweep's report: the table on stdout and STEM.csv, .json and .svg in the directory.
@@ -191,6 +192,7 @@ void runSweepCommand(SweepArgs a) {
             throw std::invalid_argument("--plot-y rms-display: " + t->name + " is scored on V, which has no displayed luminance");
     }
     std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
+    if (a.images) a.options.imagesOutDir = a.outDir;
     writeSweepReport(runSweep(a.options), a.outDir, plotY);
 }
 
@@ -202,7 +204,13 @@ struct MergeSweepArgs {
 void runMergeSweepCommand(const MergeSweepArgs& a) {
     const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
     std::vector<SweepShardFile> files;
-    for (const std::string& path : a.shards) files.push_back({path, parseSweepJson(readWholeFile(path), path)});
+    for (const std::string& path : a.shards) {
+        SweepResults shard = parseSweepJson(readWholeFile(path), path);
+        // The pictures' paths are relative to each shard's JSON; the merged JSON goes to --out.
+        const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+        for (SweepRow& row : shard.rows) row.images = rebased(row.images, directory, a.outDir);
+        files.push_back({path, std::move(shard)});
+    }
     const SweepResults merged = mergeSweepShards(files);
     std::filesystem::create_directories(a.outDir);
     writeSweepReport(merged, a.outDir, plotY);
@@ -343,6 +351,9 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
                   "run only part I of N: the settings whose index k (from 0, in the sweep's order) has k mod N = I - 1, "
                   "at every thread count; I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N. "
                   "Writes SCENE-TECHNIQUES-shard-I-of-N.*; merge-sweep joins the shards")->type_name("I/N");
+    s->add_flag("--images", a.images,
+                "also write each setting's image, error map, V and debug buffers and each reference's image and V "
+                "as PNG into OUT/SCENE-TECHNIQUES-images (for `shadowlab report`)");
     addProgressFlag(s, a.progress);
     s->callback([&a] { runSweepCommand(a); });
 }
