@@ -345,6 +345,10 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(s, "frames per row", a.options.runs, a.options.warmupRuns, a.simd);
     addSweepReportOptions(s, a.outDir, a.plotY);
+    s->add_option("--width", a.options.overrides.width, "image width in pixels")
+        ->check(CLI::Range(1, raster::kMaxViewport));
+    s->add_option("--height", a.options.overrides.height, "image height in pixels")
+        ->check(CLI::Range(1, raster::kMaxViewport));
     addLightOptions(s, a.options.overrides);
     s->add_option("--reference", a.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
     s->add_option("--shard", a.shard,
