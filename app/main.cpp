@@ -106,12 +106,29 @@ struct RenderArgs {
     bool progress = false;
 };
 
+// The pictures the JSON of --error-map names, relative to it, for `shadowlab report`: the
+// -o image, the error map, the technique's debug buffers and the reference's image, written
+// here beside the error map as E-reference-image.png (and E-reference-visibility.png).
+FrameImages scoreImages(const RenderArgs& a, const std::string& technique, const Frame& referenceFrame) {
+    const std::filesystem::path base = std::filesystem::path(a.json).parent_path(), errorMap = a.errorMap;
+    const std::string name = errorMap.stem().string() + "-reference";
+    const FrameImages reference = writeFramePictures(base, errorMap.parent_path(), name, referenceFrame, nullptr);
+    FrameImages images;
+    if (!a.png.empty()) images.image = relativePath(a.png, base);
+    images.errorMap = relativePath(errorMap, base);
+    images.referenceImage = reference.image;
+    images.referenceVisibility = reference.visibility;
+    if (!a.debugDir.empty()) images.debugBuffers = debugPictures(base, a.debugDir, technique);
+    return images;
+}
+
 // The technique's frame against the exact reference: the error map, the counts, the JSON.
 void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Technique& technique,
                    const FrameSettings& settings, const Frame& frame) {
     const Scene& scene = prepared.scene();
     const std::string& referenceName = a.reference.empty() ? technique.referenceName : a.reference;
-    const ImageChannels reference = renderReferenceImage(prepared, settings.simd, referenceName, settings.progress);
+    const Frame referenceFrame = renderReferenceFrame(prepared, settings.simd, referenceName, settings.progress);
+    const ImageChannels reference = scoredImage(referenceFrame);
     const ImageChannels test = scoredImage(frame);
     const ErrorFigures figures = scoreFrame(reference, frame);
     writePng(a.errorMap, scene.camera.width, scene.camera.height,
@@ -120,7 +137,8 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
               << " (red: false shadow, blue: false light)\n";
     if (a.json.empty()) return;
     const TechniqueParams params(technique.name, technique.params, settings.params);
-    writeTextFile(a.json, formatScoreJson(scene.name, technique.name, referenceName, params.values(), frame, figures));
+    writeTextFile(a.json, formatScoreJson(scene.name, technique.name, referenceName, params.values(), frame, figures,
+                                          scoreImages(a, technique.name, referenceFrame)));
 }
 
 void runRender(const RenderArgs& a) {
