@@ -19,6 +19,7 @@
 #include "app/bench_passes.h"
 #include "app/composite.h"
 #include "app/environment.h"
+#include "app/report_site.h"
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
 #include "app/sweep.h"
@@ -234,6 +235,17 @@ void runMergeSweepCommand(const MergeSweepArgs& a) {
     writeSweepReport(merged, a.outDir, plotY);
 }
 
+struct ReportArgs {
+    std::vector<std::string> files;
+    std::string outDir = "out/report", plotY = "misclassified";
+};
+
+void runReportCommand(const ReportArgs& a) {
+    const size_t pages = writeReportSite(a.files, a.outDir, parsePlotErrorAxis(a.plotY));
+    std::cout << "wrote " << pages << " pages: " << (std::filesystem::path(a.outDir) / "index.html").string()
+              << "\n";
+}
+
 struct ScalingArgs {
     ScalingOptions options;
     std::string technique, simd = "auto", outDir = "out";
@@ -387,6 +399,16 @@ void addMergeSweepCommand(CLI::App& app, MergeSweepArgs& a) {
     m->callback([&a] { runMergeSweepCommand(a); });
 }
 
+void addReportCommand(CLI::App& app, ReportArgs& a) {
+    CLI::App* r = app.add_subcommand("report", "a static HTML site of sweep and render --error-map --json results, "
+                                               "read from file:// (index, a page per scene and per setting)");
+    r->add_option("files", a.files, "JSON files of sweep (with --images for pictures) or of render --error-map --json")
+        ->required();
+    r->add_option("--out", a.outDir, "directory for index.html and the rest of the site")->capture_default_str();
+    r->add_option("--plot-y", a.plotY, "the plots' error axis, as sweep's --plot-y")->capture_default_str();
+    r->callback([&a] { runReportCommand(a); });
+}
+
 void addScalingCommand(CLI::App& app, ScalingArgs& a) {
     CLI::App* s = app.add_subcommand("scaling", "time against triangle count over a series of scenes, fitted as t = a + b n (CSV, JSON, SVG)");
     s->add_option("scenes", a.options.scenes, "two or more built-in scene names or scene files (e.g. scenes/scaling/*.json)")->required();
@@ -492,6 +514,7 @@ int main(int argc, char** argv) {
     RenderArgs render;
     SweepArgs sweep;
     MergeSweepArgs mergeSweep;
+    ReportArgs report;
     ScalingArgs scaling;
     CompareArgs compare;
     BenchArgs bench;
@@ -501,6 +524,7 @@ int main(int argc, char** argv) {
     addRenderCommand(app, render);
     addSweepCommand(app, sweep);
     addMergeSweepCommand(app, mergeSweep);
+    addReportCommand(app, report);
     addScalingCommand(app, scaling);
     addCompareCommand(app, compare);
     addBenchCommand(app, bench);

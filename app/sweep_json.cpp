@@ -217,6 +217,41 @@ SweepResults parseSweepJson(const std::string& text, const std::string& file) {
     }
 }
 
+ScoreRecord parseScoreJson(const std::string& text, const std::string& file) {
+    try {
+        const Json j = parseOrderedJson(text);
+        ScoreRecord record;
+        record.scene = j.at("scene").get<std::string>();
+        SweepRow& r = record.row;
+        r.technique = j.at("technique").get<std::string>();
+        r.reference = j.at("reference").get<std::string>();
+        r.settings = j.at("settings").get<std::map<std::string, std::string>>();
+        r.threads = 0;
+        r.medianMs = r.minMs = number(j.at("technique_ms"));
+        r.errors = readErrors(j.at("errors"));
+        for (const auto& [name, value] : j.at("stats").items()) r.stats.push_back({name, number(value)});
+        if (j.contains("images")) r.images = readImages(j.at("images"));
+        return record;
+    } catch (const Json::exception& error) {
+        throw std::runtime_error(file + ": not the JSON of render --error-map --json: " + error.what());
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error(file + ": " + error.what());
+    }
+}
+
+ResultsKind resultsKind(const std::string& text, const std::string& file) {
+    Json j;
+    try {
+        j = parseOrderedJson(text);
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error(file + ": " + error.what());
+    }
+    if (j.is_object() && j.contains("grid") && j.contains("rows")) return ResultsKind::Sweep;
+    if (j.is_object() && j.contains("technique_ms") && j.contains("errors")) return ResultsKind::Score;
+    throw std::runtime_error(file + ": neither a sweep's JSON (with grid and rows) nor that of render --error-map "
+                                    "--json (with technique_ms and errors)");
+}
+
 std::string sweepDifference(const SweepResults& a, const SweepResults& b) {
     const Json ja = identity(a), jb = identity(b);
     for (const auto& [key, value] : ja.items())

@@ -80,7 +80,7 @@ expect_png() {
 
 # ---- Help ---------------------------------------------------------------------------------
 expect_usage --help
-for command in render sweep merge-sweep compare bench scaling export-obj techniques environment composite; do
+for command in render sweep merge-sweep report compare bench scaling export-obj techniques environment composite; do
     expect_usage "$command" --help
 done
 run techniques
