@@ -21,6 +21,7 @@
 #include "app/environment.h"
 #include "app/flythrough.h"
 #include "app/flythrough_report.h"
+#include "app/report_site.h"
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
 #include "app/sweep.h"
@@ -28,6 +29,7 @@
 #include "app/sweep_merge.h"
 #include "app/sweep_plot.h"
 #include "shadows/depth_map.h"
+#include "frame/frame_images.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"
@@ -108,12 +110,29 @@ struct RenderArgs {
     bool progress = false;
 };
 
+// The pictures the JSON of --error-map names, relative to it, for `shadowlab report`: the
+// -o image, the error map, the technique's debug buffers and the reference's image, written
+// here beside the error map as E-reference-image.png (and E-reference-visibility.png).
+FrameImages scoreImages(const RenderArgs& a, const std::string& technique, const Frame& referenceFrame) {
+    const std::filesystem::path base = std::filesystem::path(a.json).parent_path(), errorMap = a.errorMap;
+    const std::string name = errorMap.stem().string() + "-reference";
+    const FrameImages reference = writeFramePictures(base, errorMap.parent_path(), name, referenceFrame, nullptr);
+    FrameImages images;
+    if (!a.png.empty()) images.image = relativePath(a.png, base);
+    images.errorMap = relativePath(errorMap, base);
+    images.referenceImage = reference.image;
+    images.referenceVisibility = reference.visibility;
+    if (!a.debugDir.empty()) images.debugBuffers = debugPictures(base, a.debugDir, technique);
+    return images;
+}
+
 // The technique's frame against the exact reference: the error map, the counts, the JSON.
 void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Technique& technique,
                    const FrameSettings& settings, const Frame& frame) {
     const Scene& scene = prepared.scene();
     const std::string& referenceName = a.reference.empty() ? technique.referenceName : a.reference;
-    const ImageChannels reference = renderReferenceImage(prepared, settings.simd, referenceName, settings.progress);
+    const Frame referenceFrame = renderReferenceFrame(prepared, settings.simd, referenceName, settings.progress);
+    const ImageChannels reference = scoredImage(referenceFrame);
     const ImageChannels test = scoredImage(frame);
     const ErrorFigures figures = scoreFrame(reference, frame);
     writePng(a.errorMap, scene.camera.width, scene.camera.height,
@@ -122,7 +141,8 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
               << " (red: false shadow, blue: false light)\n";
     if (a.json.empty()) return;
     const TechniqueParams params(technique.name, technique.params, settings.params);
-    writeTextFile(a.json, formatScoreJson(scene.name, technique.name, referenceName, params.values(), frame, figures));
+    writeTextFile(a.json, formatScoreJson(scene.name, technique.name, referenceName, params.values(), frame, figures,
+                                          scoreImages(a, technique.name, referenceFrame)));
 }
 
 void runRender(const RenderArgs& a) {
@@ -169,7 +189,7 @@ struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
     std::string simd = "auto", outDir = "out", plotY = "misclassified", shard, casterLod;
-    bool progress = false;
+    bool progress = false, images = false;
 };
 
 // The sweep's report: the table on stdout and STEM.csv, .json and .svg in the directory.
@@ -194,6 +214,7 @@ void runSweepCommand(SweepArgs a) {
             throw std::invalid_argument("--plot-y rms-display: " + t->name + " is scored on V, which has no displayed luminance");
     }
     std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
+    if (a.images) a.options.imagesOutDir = a.outDir;
     writeSweepReport(runSweep(a.options), a.outDir, plotY);
 }
 
@@ -205,7 +226,13 @@ struct MergeSweepArgs {
 void runMergeSweepCommand(const MergeSweepArgs& a) {
     const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
     std::vector<SweepShardFile> files;
-    for (const std::string& path : a.shards) files.push_back({path, parseSweepJson(readWholeFile(path), path)});
+    for (const std::string& path : a.shards) {
+        SweepResults shard = parseSweepJson(readWholeFile(path), path);
+        // The pictures' paths are relative to each shard's JSON; the merged JSON goes to --out.
+        const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+        for (SweepRow& row : shard.rows) row.images = rebased(row.images, directory, a.outDir);
+        files.push_back({path, std::move(shard)});
+    }
     const SweepResults merged = mergeSweepShards(files);
     std::filesystem::create_directories(a.outDir);
     writeSweepReport(merged, a.outDir, plotY);
@@ -236,6 +263,17 @@ void runFlythroughCommand(FlythroughArgs a) {
         writeTextFile(stem.string() + suffix, formatFlythroughSvg(results, plot));
         std::cout << "wrote " << stem.string() + suffix << "\n";
     }
+}
+
+struct ReportArgs {
+    std::vector<std::string> files;
+    std::string outDir = "out/report", plotY = "misclassified";
+};
+
+void runReportCommand(const ReportArgs& a) {
+    const size_t pages = writeReportSite(a.files, a.outDir, parsePlotErrorAxis(a.plotY));
+    std::cout << "wrote " << pages << " pages: " << (std::filesystem::path(a.outDir) / "index.html").string()
+              << "\n";
 }
 
 struct ScalingArgs {
@@ -367,12 +405,19 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(s, "frames per row", a.options.runs, a.options.warmupRuns, a.simd);
     addSweepReportOptions(s, a.outDir, a.plotY);
+    s->add_option("--width", a.options.overrides.width, "image width in pixels")
+        ->check(CLI::Range(1, raster::kMaxViewport));
+    s->add_option("--height", a.options.overrides.height, "image height in pixels")
+        ->check(CLI::Range(1, raster::kMaxViewport));
     addLightOptions(s, a.options.overrides);
     s->add_option("--reference", a.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
     s->add_option("--shard", a.shard,
                   "run only part I of N: the settings whose index k (from 0, in the sweep's order) has k mod N = I - 1, "
                   "at every thread count; I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N. "
                   "Writes SCENE-TECHNIQUES-shard-I-of-N.*; merge-sweep joins the shards")->type_name("I/N");
+    s->add_flag("--images", a.images,
+                "also write each setting's image, error map, V and debug buffers and each reference's image and V "
+                "as PNG into OUT/SCENE-TECHNIQUES-images (for `shadowlab report`)");
     addProgressFlag(s, a.progress);
     s->callback([&a] { runSweepCommand(a); });
 }
@@ -406,6 +451,16 @@ void addFlythroughCommand(CLI::App& app, FlythroughArgs& a) {
                                       "OUT/SCENE-flythrough-TECHNIQUES-frames/SETTING/image-NNNN.png and error-NNNN.png");
     addProgressFlag(f, a.progress);
     f->callback([&a] { runFlythroughCommand(a); });
+}
+
+void addReportCommand(CLI::App& app, ReportArgs& a) {
+    CLI::App* r = app.add_subcommand("report", "a static HTML site of sweep and render --error-map --json results, "
+                                               "read from file:// (index, a page per scene and per setting)");
+    r->add_option("files", a.files, "JSON files of sweep (with --images for pictures) or of render --error-map --json")
+        ->required();
+    r->add_option("--out", a.outDir, "directory for index.html and the rest of the site")->capture_default_str();
+    r->add_option("--plot-y", a.plotY, "the plots' error axis, as sweep's --plot-y")->capture_default_str();
+    r->callback([&a] { runReportCommand(a); });
 }
 
 void addScalingCommand(CLI::App& app, ScalingArgs& a) {
@@ -513,6 +568,7 @@ int main(int argc, char** argv) {
     RenderArgs render;
     SweepArgs sweep;
     MergeSweepArgs mergeSweep;
+    ReportArgs report;
     ScalingArgs scaling;
     FlythroughArgs flythrough;
     CompareArgs compare;
@@ -523,6 +579,7 @@ int main(int argc, char** argv) {
     addRenderCommand(app, render);
     addSweepCommand(app, sweep);
     addMergeSweepCommand(app, mergeSweep);
+    addReportCommand(app, report);
     addScalingCommand(app, scaling);
     addFlythroughCommand(app, flythrough);
     addCompareCommand(app, compare);

@@ -78,22 +78,53 @@ std::string statValue(const SweepRow& row, const std::string& name) {
     return stat == row.stats.end() ? "" : csvNumber(stat->value);
 }
 
+// A reference as the settings are scored against it, and its pictures (with imagesDir).
+struct RenderedReference {
+    ImageChannels scored;
+    FrameImages images;
+};
+
 // Each reference the techniques are scored against, rendered once.
-std::map<std::string, ImageChannels> renderReferences(const PreparedScene& prepared, const std::vector<SweepPlan>& plans, const SweepOptions& options) {
-    std::map<std::string, ImageChannels> references;
+// With a pictures folder (else empty), each reference's pictures are written into it.
+std::map<std::string, RenderedReference> renderReferences(const PreparedScene& prepared,
+                                                          const std::vector<SweepPlan>& plans,
+                                                          const SweepOptions& options,
+                                                          const std::filesystem::path& folder) {
+    std::map<std::string, RenderedReference> references;
     for (const SweepPlan& plan : plans) {
         const std::string& name = referenceFor(*plan.technique, options);
-        if (!references.contains(name)) references.emplace(name, renderReferenceImage(prepared, options.simd, name, options.progress));
+        if (references.contains(name)) continue;
+        const Frame frame = renderReferenceFrame(prepared, options.simd, name, options.progress);
+        FrameImages images;
+        if (!folder.empty()) images = writeFramePictures(options.imagesOutDir, folder, name, frame, nullptr);
+        references.emplace(name, RenderedReference{scoredImage(frame), std::move(images)});
     }
     return references;
 }
 
+// A setting's pictures, from one more untimed frame that also writes its debug buffers:
+// the frames are deterministic, so they are those of the timed frames.
+FrameImages writeSettingPictures(const PreparedScene& prepared, const Technique& technique,
+                                 const PlannedSetting& setting, const RenderedReference& reference,
+                                 const SweepOptions& options, const std::filesystem::path& folder) {
+    const std::string name = "setting-" + std::to_string(setting.index);
+    const std::filesystem::path& base = options.imagesOutDir;
+    const std::filesystem::path debugDir = folder / (name + "-debug");
+    const Frame frame = renderFrame(prepared, technique, {options.simd, setting.params, debugDir});
+    FrameImages images = writeFramePictures(base, folder, name, frame, &reference.scored);
+    images.referenceImage = reference.images.image;
+    images.referenceVisibility = reference.images.visibility;
+    images.debugBuffers = debugPictures(base, debugDir, technique.name);
+    return images;
+}
+
 // The grid the whole sweep covers, as every shard of it describes it.
 SweepGrid describeGrid(const std::vector<SweepPlan>& plans, const std::vector<int>& threads,
-                       const std::map<std::string, ImageChannels>& references, const SweepOptions& options) {
+                       const std::map<std::string, RenderedReference>& references, const SweepOptions& options) {
     SweepGrid grid{options.axes, options.overrides, options.reference, {}, threads, options.warmupRuns, options.runs,
                    settingCount(plans)};
-    for (const auto& [name, image] : references) grid.referenceFingerprints[name] = referenceFingerprint(image);
+    for (const auto& [name, reference] : references)
+        grid.referenceFingerprints[name] = referenceFingerprint(reference.scored);
     return grid;
 }
 
@@ -164,23 +195,32 @@ SweepResults runSweep(const SweepOptions& options) {
     applyOverrides(scene, options.overrides);
     const PreparedScene prepared(std::move(scene));
     checkSettings(prepared, plans, options.simd, options.progress, "sweep");
-    // Every reference of the grid, not only the shard's: the shards' fingerprints must agree.
-    const std::map<std::string, ImageChannels> references = renderReferences(prepared, grid, options);
-    SweepResults results{prepared.scene().name, {}, describeGrid(grid, threads, references, options), options.shard, {}};
+    SweepResults results{prepared.scene().name, {}, {}, options.shard, {}};
     for (const SweepPlan& plan : grid) results.techniques.push_back(plan.technique->name);
+    const std::filesystem::path folder =
+        options.imagesOutDir.empty() ? std::filesystem::path() : options.imagesOutDir / sweepImagesFolder(results);
+    // Every reference of the grid, not only the shard's: the shards' fingerprints must agree.
+    const std::map<std::string, RenderedReference> references = renderReferences(prepared, grid, options, folder);
+    results.grid = describeGrid(grid, threads, references, options);
     const ProgressStage frames(options.progress, "sweep: frame",
                                settingCount(plans) * threads.size() * uint64_t(options.warmupRuns + options.runs));
     for (const SweepPlan& plan : plans) {
+        const RenderedReference& reference = references.at(referenceFor(*plan.technique, options));
         for (const PlannedSetting& setting : plan.settings) {
+            const size_t first = results.rows.size();
             for (int n : threads) {
                 SweepRow row = withThreads(n, [&] {
-                    return measure(prepared, references.at(referenceFor(*plan.technique, options)), *plan.technique,
-                                   {options.simd, setting.params, {}}, options, frames);
+                    return measure(prepared, reference.scored, *plan.technique, {options.simd, setting.params, {}},
+                                   options, frames);
                 });
                 row.setting = setting.index;
                 row.threads = n;
                 results.rows.push_back(std::move(row));
             }
+            if (folder.empty()) continue;
+            const FrameImages images =
+                writeSettingPictures(prepared, *plan.technique, setting, reference, options, folder);
+            for (size_t k = first; k < results.rows.size(); ++k) results.rows[k].images = images;
         }
     }
     return results;
@@ -209,6 +249,8 @@ std::string sweepFileStem(const SweepResults& results) {
     return results.scene + "-" + techniques +
            (shard.count > 1 ? "-shard-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) : "");
 }
+
+std::string sweepImagesFolder(const SweepResults& results) { return sweepFileStem(results) + "-images"; }
 
 std::string formatSweepText(const SweepResults& results) {
     std::string text = results.scene + (results.shard.count > 1 ? ", shard " + results.shard.name() : "") + "\n";

@@ -16,12 +16,14 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "app/sweep_plan.h"
 #include "app/timing.h"
+#include "frame/frame_images.h"
 #include "frame/render.h"
 #include "raster/rasterizer.h"
 #include "shading/compare.h"
@@ -55,6 +57,11 @@ struct SweepOptions {
     raster::SimdLevel simd = raster::bestSimdLevel();
     SweepShard shard;                       // the settings to run: all, by default
     Progress* progress = nullptr;           // reports the frames done (and the references' rows)
+    // Non-empty: the directory the sweep's files go to; each setting's pictures (FrameImages,
+    // from one more untimed frame that also writes the debug buffers) and each reference's
+    // are written into its folder STEM-images (sweepImagesFolder()), and the rows name them
+    // relative to the directory.
+    std::filesystem::path imagesOutDir;
 };
 
 // What a sweep was asked for, besides its scene, techniques and shard: the shards of one
@@ -78,6 +85,7 @@ struct SweepRow {
     double medianMs = 0.0, minMs = 0.0;
     ErrorFigures errors;
     std::vector<TechniqueStat> stats;              // of the last measured frame
+    FrameImages images;                            // with SweepOptions::imagesDir: the same at every thread count
     std::string settingsLabel() const;             // "a=1 b=2", or "defaults"
 };
 
@@ -113,6 +121,9 @@ std::string referenceFingerprint(const ImageChannels& reference);
 // The output file stem: "<scene>-<technique>[+<technique>...]", and "-shard-<i>-of-<n>"
 // after it for a shard, so that shards writing to one directory keep their files apart.
 std::string sweepFileStem(const SweepResults& results);
+
+// The folder of a sweep's pictures, beside its other files: "<sweepFileStem()>-images".
+std::string sweepImagesFolder(const SweepResults& results);
 
 // A table for the terminal: one line per row.
 std::string formatSweepText(const SweepResults& results);

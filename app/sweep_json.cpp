@@ -45,15 +45,18 @@ Json gridJson(const SweepResults& results) {
 Json rowJson(const SweepRow& r) {
     Json stats = Json::object();
     for (const TechniqueStat& s : r.stats) stats[s.name] = s.value;
-    return {{"setting", r.setting},
-            {"technique", r.technique},
-            {"reference", r.reference},
-            {"settings", r.settings},
-            {"threads", r.threads},
-            {"median_ms", r.medianMs},
-            {"min_ms", r.minMs},
-            {"errors", Json::parse(formatJson(r.errors))},
-            {"stats", stats}};
+    Json j = {{"setting", r.setting},
+              {"technique", r.technique},
+              {"reference", r.reference},
+              {"settings", r.settings},
+              {"threads", r.threads},
+              {"median_ms", r.medianMs},
+              {"min_ms", r.minMs},
+              {"errors", Json::parse(formatJson(r.errors))},
+              {"stats", stats}};
+    // Only with pictures (sweep --images): the JSON of a sweep without them stays as it was.
+    if (!r.images.empty()) j["images"] = Json::parse(formatFrameImagesJson(r.images));
+    return j;
 }
 
 // A sweep's JSON is 5 levels deep; a deeper file would only strain the recursive parser.
@@ -130,6 +133,21 @@ ErrorFigures readErrors(const Json& j) {
     return e;
 }
 
+std::string readOptionalPath(const Json& j, const char* key) {
+    return j.contains(key) ? j.at(key).get<std::string>() : std::string();
+}
+
+FrameImages readImages(const Json& j) {
+    FrameImages images;
+    images.image = readOptionalPath(j, "image");
+    images.errorMap = readOptionalPath(j, "error_map");
+    images.visibility = readOptionalPath(j, "visibility");
+    images.referenceImage = readOptionalPath(j, "reference_image");
+    images.referenceVisibility = readOptionalPath(j, "reference_visibility");
+    if (j.contains("debug_buffers")) images.debugBuffers = j.at("debug_buffers").get<std::vector<std::string>>();
+    return images;
+}
+
 SweepRow readRow(const Json& j) {
     SweepRow r;
     r.setting = j.at("setting").get<uint64_t>();
@@ -141,6 +159,7 @@ SweepRow readRow(const Json& j) {
     r.minMs = number(j.at("min_ms"));
     r.errors = readErrors(j.at("errors"));
     for (const auto& [name, value] : j.at("stats").items()) r.stats.push_back({name, number(value)});
+    if (j.contains("images")) r.images = readImages(j.at("images"));
     return r;
 }
 
@@ -196,6 +215,41 @@ SweepResults parseSweepJson(const std::string& text, const std::string& file) {
     } catch (const std::runtime_error& error) {
         throw std::runtime_error(file + ": " + error.what());
     }
+}
+
+ScoreRecord parseScoreJson(const std::string& text, const std::string& file) {
+    try {
+        const Json j = parseOrderedJson(text);
+        ScoreRecord record;
+        record.scene = j.at("scene").get<std::string>();
+        SweepRow& r = record.row;
+        r.technique = j.at("technique").get<std::string>();
+        r.reference = j.at("reference").get<std::string>();
+        r.settings = j.at("settings").get<std::map<std::string, std::string>>();
+        r.threads = 0;
+        r.medianMs = r.minMs = number(j.at("technique_ms"));
+        r.errors = readErrors(j.at("errors"));
+        for (const auto& [name, value] : j.at("stats").items()) r.stats.push_back({name, number(value)});
+        if (j.contains("images")) r.images = readImages(j.at("images"));
+        return record;
+    } catch (const Json::exception& error) {
+        throw std::runtime_error(file + ": not the JSON of render --error-map --json: " + error.what());
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error(file + ": " + error.what());
+    }
+}
+
+ResultsKind resultsKind(const std::string& text, const std::string& file) {
+    Json j;
+    try {
+        j = parseOrderedJson(text);
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error(file + ": " + error.what());
+    }
+    if (j.is_object() && j.contains("grid") && j.contains("rows")) return ResultsKind::Sweep;
+    if (j.is_object() && j.contains("technique_ms") && j.contains("errors")) return ResultsKind::Score;
+    throw std::runtime_error(file + ": neither a sweep's JSON (with grid and rows) nor that of render --error-map "
+                                    "--json (with technique_ms and errors)");
 }
 
 std::string sweepDifference(const SweepResults& a, const SweepResults& b) {

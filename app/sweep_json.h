@@ -23,6 +23,20 @@ std::string formatSweepJson(const SweepResults& results);
 // deeper than a sweep's, or lacking or mistyping a field.
 SweepResults parseSweepJson(const std::string& text, const std::string& file);
 
+// The JSON of `render --error-map E --json J` (frame/score.h, formatScoreJson) as the one
+// row a report shows of it: technique_ms is its median and minimum time, threads 0 (the
+// file does not say). Throws std::runtime_error naming `file` and the problem.
+struct ScoreRecord {
+    std::string scene;
+    SweepRow row;
+};
+ScoreRecord parseScoreJson(const std::string& text, const std::string& file);
+
+// Which of the two a file's text is, told apart by their fields ("grid" and "rows", or
+// "technique_ms" and "errors"); throws std::runtime_error naming `file` if it is neither.
+enum class ResultsKind { Sweep, Score };
+ResultsKind resultsKind(const std::string& text, const std::string& file);
+
 // "" if a and b are parts of one sweep: the same scene and SweepResults::techniques and
 // the same SweepGrid. Otherwise the first field that differs and both values, a's first:
 // "runs: 5 against 3".

@@ -136,17 +136,21 @@ std::vector<svg::LabelBox> takenBoxes(const SweepResults& results, const Axes& a
     return taken;
 }
 
-std::string pointsSvg(const SweepResults& results, const Axes& a, PlotErrorAxis axis) {
+std::string pointsSvg(const SweepResults& results, const Axes& a, PlotErrorAxis axis,
+                      const std::vector<std::string>& links) {
     std::set<int> threadCounts;
     for (const SweepRow& row : results.rows) threadCounts.insert(row.threads);
     std::string svg;
     std::vector<svg::LabelBox> placed = takenBoxes(results, a, axis);
-    for (const SweepRow& row : results.rows) {
+    for (size_t k = 0; k < results.rows.size(); ++k) {
+        const SweepRow& row = results.rows[k];
         const double x = a.x(row.medianMs), y = a.y(plottedError(row, axis));
         const std::string label = rowLabel(row, threadCounts.size() > 1);
-        svg += format(R"(<circle class="point" cx="%.1f" cy="%.1f" r="4" fill="%s"><title>%s %s: %.4g ms, %.4g</title></circle>)" "\n",
-                      x, y, svg::kPalette[techniqueIndex(results, row.technique) % std::size(svg::kPalette)],
-                      svg::escape(row.technique).c_str(), svg::escape(label).c_str(), row.medianMs, plottedError(row, axis));
+        const std::string point = format(
+            R"(<circle class="point" cx="%.1f" cy="%.1f" r="4" fill="%s"><title>%s %s: %.4g ms, %.4g</title></circle>)",
+            x, y, svg::kPalette[techniqueIndex(results, row.technique) % std::size(svg::kPalette)],
+            svg::escape(row.technique).c_str(), svg::escape(label).c_str(), row.medianMs, plottedError(row, axis));
+        svg += (links.empty() ? point : "<a href=\"" + links[k] + "\">" + point + "</a>") + "\n";
         svg += svg::label(x, y, label, placed, kTop, kBottom);
     }
     return svg;
@@ -208,8 +212,10 @@ std::vector<size_t> paretoFront(const std::vector<SweepRow>& rows, PlotErrorAxis
     return front;
 }
 
-std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis) {
+std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis, const std::vector<std::string>& links) {
     if (results.rows.empty()) throw std::invalid_argument("sweep plot: no rows");
+    if (!links.empty() && links.size() != results.rows.size())
+        throw std::invalid_argument("sweep plot: one link per row");
     const Axes a = fitAxes(results.rows, axis);
     std::string svg = format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%.0f" height="%.0f" viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="12">)" "\n",
                              kWidth, kHeight, kWidth, kHeight);
@@ -218,7 +224,7 @@ std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis) {
                   svg::escape(results.scene).c_str());
     svg += axesSvg(a, axis);
     svg += frontSvg(results, paretoFront(results.rows, axis), a, axis);
-    svg += pointsSvg(results, a, axis);
+    svg += pointsSvg(results, a, axis, links);
     svg += legendSvg(results);
     return svg + "</svg>\n";
 }

@@ -34,6 +34,8 @@ double plottedError(const SweepRow& row, PlotErrorAxis axis);
 std::vector<size_t> paretoFront(const std::vector<SweepRow>& rows, PlotErrorAxis axis);
 
 // Every row is one <circle class="point">; front rows also get a <circle class="pareto">.
-std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis);
+// With `links` (one URL per row, already escaped for an attribute), each point is an <a>
+// to its row's URL, as the report's scene pages draw it.
+std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis, const std::vector<std::string>& links = {});
 
 }  // namespace shadowlab

@@ -40,12 +40,17 @@ ImageChannels scoredImage(const Frame& frame) {
     return image;
 }
 
-ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName,
-                                   Progress* progress) {
+Frame renderReferenceFrame(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName,
+                           Progress* progress) {
     FrameSettings settings;
     settings.simd = simd;
     settings.progress = progress;
-    return scoredImage(renderFrame(prepared, findTechnique(referenceName), settings));
+    return renderFrame(prepared, findTechnique(referenceName), settings);
+}
+
+ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd, const std::string& referenceName,
+                                   Progress* progress) {
+    return scoredImage(renderReferenceFrame(prepared, simd, referenceName, progress));
 }
 
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {
@@ -89,7 +94,7 @@ std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageCh
 
 std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
                             const std::map<std::string, std::string>& settings, const Frame& frame,
-                            const ErrorFigures& figures) {
+                            const ErrorFigures& figures, const FrameImages& images) {
     nlohmann::ordered_json stats = nlohmann::ordered_json::object();
     for (const TechniqueStat& s : frame.shadow.stats) stats[s.name] = s.value;
     nlohmann::ordered_json j;
@@ -103,6 +108,7 @@ std::string formatScoreJson(const std::string& sceneName, const std::string& tec
     for (const TechniqueStat& s : frame.preparation) preparation[s.name] = s.value;
     j["preparation"] = preparation;
     j["errors"] = nlohmann::ordered_json::parse(formatJson(figures));
+    if (!images.empty()) j["images"] = nlohmann::ordered_json::parse(formatFrameImagesJson(images));
     return j.dump(2) + "\n";
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "frame/frame_images.h"
 #include "frame/render.h"
 #include "shading/compare.h"
 #include "shading/image_io.h"
@@ -26,8 +27,11 @@ const char* scoredChannel(TechniqueOutput output);
 inline constexpr const char* kDisplayLuminance = "Y.display";
 ImageChannels scoredImage(const Frame& frame);
 
-// Renders the scene with the technique named referenceName (at its default settings) and
-// returns its scoredImage(); the technique reports on `progress` if one is given.
+// Renders the scene with the technique named referenceName (at its default settings); the
+// technique reports on `progress` if one is given. renderReferenceImage() returns the
+// frame's scoredImage(), renderReferenceFrame() the frame itself (its shaded image too).
+Frame renderReferenceFrame(const PreparedScene& prepared, raster::SimdLevel simd,
+                           const std::string& referenceName = "reference", Progress* progress = nullptr);
 ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd,
                                    const std::string& referenceName = "reference", Progress* progress = nullptr);
 
@@ -51,9 +55,10 @@ std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageCh
                                    const std::vector<glm::vec3>& shaded, const std::string& scored = channel::V);
 
 // One JSON object: {"scene", "technique", "reference", "settings": {name: value},
-// "technique_ms", "stats": {name: value}, "preparation": {name: ms}, "errors": formatJson(figures)}.
+// "technique_ms", "stats": {name: value}, "preparation": {name: ms}, "errors": formatJson(figures)},
+// and "images": formatFrameImagesJson(images) unless `images` is empty.
 std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
                             const std::map<std::string, std::string>& settings, const Frame& frame,
-                            const ErrorFigures& figures);
+                            const ErrorFigures& figures, const FrameImages& images = {});
 
 }  // namespace shadowlab

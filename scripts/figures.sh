@@ -5,52 +5,54 @@
 # caster level of detail, and differential rendering into photographs (the Figure 3 table is
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
-# cores; run nothing else meanwhile (times are medians, but a busy machine still moves them).
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|flythrough ...]   (default: all fifteen)
+# cores, and more for the sweeps' pictures (README, "Report"); run nothing else meanwhile (times are medians, but a busy machine still moves them).
+# Last, the HTML report of every sweep (each run with --images): out/report/index.html.
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|flythrough|report ...]
+#        (default: all sixteen, report last)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric flythrough}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric flythrough report}
 
 for part in $parts; do
   case $part in
   hard)
     for scene in sphere-box bunny; do
-      $app sweep $scene --technique none,reference,shadow-map,izb,shadow-volume,planar \
+      $app sweep $scene --images --technique none,reference,shadow-map,izb,shadow-volume,planar \
         --threads 1,2 --runs 5 --out $out/hard
       python3 $table $out/hard/$scene-none+reference+shadow-map+izb+shadow-volume+planar.csv hard
       cp $out/hard/$scene-none+reference+shadow-map+izb+shadow-volume+planar.svg docs/images/hard-$scene.svg
     done
     # Cascades need a directional light: the sun over sphere-box.
-    $app sweep scenes/hard/sun.json --technique shadow-map,csm --threads 1,2 --runs 5 --out $out/hard
+    $app sweep scenes/hard/sun.json --images --technique shadow-map,csm --threads 1,2 --runs 5 --out $out/hard
     python3 $table $out/hard/sun-shadow-map+csm.csv hard
     ;;
   cases)
     # Misclassified % of each hard-shadow technique on every hard case, at its defaults.
     for scene in scenes/hard/*.json; do
-      $app sweep $scene --technique shadow-map,izb,shadow-volume,planar --threads 2 --runs 1 --out $out/cases > /dev/null
+      $app sweep $scene --images --technique shadow-map,izb,shadow-volume,planar --threads 2 --runs 1 --out $out/cases > /dev/null
     done
-    $app sweep scenes/hard/sun.json --technique shadow-map --param warp=lispsm --threads 2 --runs 1 --out $out/cases/lispsm > /dev/null
-    $app sweep scenes/hard/sun.json --technique csm --threads 2 --runs 1 --out $out/cases/csm > /dev/null
+    $app sweep scenes/hard/sun.json --images --technique shadow-map --param warp=lispsm --threads 2 --runs 1 --out $out/cases/lispsm > /dev/null
+    $app sweep scenes/hard/sun.json --images --technique csm --threads 2 --runs 1 --out $out/cases/csm > /dev/null
     python3 $table --matrix $out/cases/*.csv
     python3 $table $out/cases/lispsm/sun-shadow-map.csv hard
     python3 $table $out/cases/csm/sun-csm.csv hard
     ;;
   bias)
     # How acne (false shadow) and leaks (false light) move with resolution and slope bias.
-    $app sweep sphere-box --technique shadow-map --param resolution=512,1024,2048,4096 \
+    $app sweep sphere-box --images --technique shadow-map --param resolution=512,1024,2048,4096 \
       --param slope-factor=0,0.5,1.5,4 --threads 2 --runs 3 --out $out/bias
     python3 $table --grid resolution slope-factor $out/bias/sphere-box-shadow-map.csv
     ;;
   models)
     # The bias models and depth layers of docs/shadow-maps.md ("Why the default bias").
     for scene in sphere-box bunny; do
-      $app sweep $scene --technique shadow-map --param bias=slope-scaled,receiver-plane,constant,normal-offset \
+      $app sweep $scene --images --technique shadow-map --param bias=slope-scaled,receiver-plane,constant,normal-offset \
         --threads 2 --runs 1 --out $out/models/bias > /dev/null
-      $app sweep $scene --technique shadow-map --param layer=second,midpoint --threads 2 --runs 1 \
+      $app sweep $scene --images --technique shadow-map --param layer=second,midpoint --threads 2 --runs 1 \
         --out $out/models/layer > /dev/null
       echo "$scene"
       python3 $table $out/models/bias/$scene-shadow-map.csv hard
@@ -65,13 +67,13 @@ for part in $parts; do
     for scene in sphere-box bunny scenes/soft/large-light.json scenes/soft/tilted-receiver.json \
                  scenes/soft/two-boxes.json scenes/soft/sharp-corner.json scenes/soft/torus-over-plane.json \
                  scenes/soft/two-heights.json; do
-      $app sweep $scene --technique $soft --reference reference-soft --threads 1,2 --runs 5 --out $out/soft --plot-y rms
+      $app sweep $scene --images --technique $soft --reference reference-soft --threads 1,2 --runs 5 --out $out/soft --plot-y rms
       name=$(basename $scene .json)
       python3 $table $out/soft/$name-$(echo $soft | tr , +).csv soft
       cp $out/soft/$name-$(echo $soft | tr , +).svg docs/images/soft-$name.svg
     done
     for scene in sphere-box bunny scenes/soft/two-heights.json; do
-      $app sweep $scene --technique pcss,backprojection --param min-max-hierarchy=off,on --reference reference-soft \
+      $app sweep $scene --images --technique pcss,backprojection --param min-max-hierarchy=off,on --reference reference-soft \
         --threads 1,2 --runs 5 --out $out/hierarchy --plot-y rms
       python3 $table $out/hierarchy/$(basename $scene .json)-pcss+backprojection.csv soft
     done
@@ -138,13 +140,13 @@ for part in $parts; do
     # a share of their triangles, the receivers whole; speed against error per ratio, for
     # hard, soft and environment shadows, and the bunny's shadow at three ratios.
     ratios=1,0.5,0.25,0.1,0.05,0.02,0.01
-    $app sweep bunny --technique shadow-map,izb,shadow-volume --caster-lod $ratios --threads 2 --runs 11 --out $out/lod
+    $app sweep bunny --images --technique shadow-map,izb,shadow-volume --caster-lod $ratios --threads 2 --runs 11 --out $out/lod
     python3 $table $out/lod/bunny-shadow-map+izb+shadow-volume.csv hard
     cp $out/lod/bunny-shadow-map+izb+shadow-volume.svg docs/images/lod-bunny-hard.svg
-    $app sweep bunny --technique pcss,fins --caster-lod $ratios --threads 2 --runs 11 --out $out/lod
+    $app sweep bunny --images --technique pcss,fins --caster-lod $ratios --threads 2 --runs 11 --out $out/lod
     python3 $table $out/lod/bunny-pcss+fins.csv soft
     cp $out/lod/bunny-pcss+fins.svg docs/images/lod-bunny-soft.svg
-    $app sweep scenes/environment/bunny-interior.json --technique env-additive,env-subtractive --param lights=20,40 \
+    $app sweep scenes/environment/bunny-interior.json --images --technique env-additive,env-subtractive --param lights=20,40 \
       --caster-lod 1,0.25,0.05,0.01 --reference reference-env-lights --threads 2 --runs 3 --plot-y rms-display \
       --out $out/lod
     python3 $table $out/lod/bunny-interior-env-additive+env-subtractive.csv radiance
@@ -198,7 +200,7 @@ for part in $parts; do
     stem=shadow-map+coloured-shadow-map+opacity-shadow-maps+deep-shadow-maps+adaptive-volumetric-shadow-maps
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
     for scene in hair-over-plane stacked-sheets tinted-glass smoke-over-plane foliage-cards; do
-      $app sweep scenes/volumetric/$scene.json --technique $maps --threads 1,2 --runs 5 --out $v --plot-y rms > /dev/null
+      $app sweep scenes/volumetric/$scene.json --images --technique $maps --threads 1,2 --runs 5 --out $v --plot-y rms > /dev/null
       echo "$scene:"
       python3 $table $v/$scene-$stem.csv volumetric
     done
@@ -206,13 +208,13 @@ for part in $parts; do
     glass=scenes/volumetric/tinted-glass.json
     hair=scenes/volumetric/hair-over-plane.json
     sheets=scenes/volumetric/stacked-sheets.json
-    $app sweep $sheets --technique opacity-shadow-maps --param slices=2,4,8,16,32,64,128 --threads 2 --runs 3 \
+    $app sweep $sheets --images --technique opacity-shadow-maps --param slices=2,4,8,16,32,64,128 --threads 2 --runs 3 \
       --out $v/slices --plot-y rms > /dev/null
     python3 $table $v/slices/stacked-sheets-opacity-shadow-maps.csv volumetric
-    $app sweep $sheets --technique deep-shadow-maps --param tolerance=0,0.01,0.05,0.1,0.2 --param max-vertices=4,16 \
+    $app sweep $sheets --images --technique deep-shadow-maps --param tolerance=0,0.01,0.05,0.1,0.2 --param max-vertices=4,16 \
       --threads 2 --runs 3 --out $v/tolerance --plot-y rms > /dev/null
     python3 $table $v/tolerance/stacked-sheets-deep-shadow-maps.csv volumetric
-    $app sweep $sheets --technique adaptive-volumetric-shadow-maps --param nodes=2,4,8,16,32 \
+    $app sweep $sheets --images --technique adaptive-volumetric-shadow-maps --param nodes=2,4,8,16,32 \
       --threads 2 --runs 3 --out $v/nodes --plot-y rms > /dev/null
     python3 $table $v/nodes/stacked-sheets-adaptive-volumetric-shadow-maps.csv volumetric
     cp $v/slices/stacked-sheets-opacity-shadow-maps.svg docs/images/volumetric-slices.svg
@@ -246,9 +248,9 @@ for part in $parts; do
     # (hard: the map alone beside it; soft: PCSS and IZB alone), and the stages' buffers.
     s=$out/screen
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
-    $app sweep scenes/hard/box-contact.json --technique shadow-map,contact-shadows --threads 1,2 --runs 5 --out $s
+    $app sweep scenes/hard/box-contact.json --images --technique shadow-map,contact-shadows --threads 1,2 --runs 5 --out $s
     python3 $table $s/box-contact-shadow-map+contact-shadows.csv hard+max
-    $app sweep scenes/soft/branch-over-crate.json --technique pcss,izb,izb-pcss --reference reference-soft \
+    $app sweep scenes/soft/branch-over-crate.json --images --technique pcss,izb,izb-pcss --reference reference-soft \
       --threads 1,2 --runs 5 --out $s
     python3 $table $s/branch-over-crate-pcss+izb+izb-pcss.csv soft
     box=scenes/hard/box-contact.json
@@ -295,7 +297,13 @@ for part in $parts; do
       cp $f/sphere-box-flythrough-$(echo $soft | tr , +)$plot docs/images/flythrough-sphere-box-soft$plot
     done
     ;;
+  report)
+    # Every sweep's JSON under out/figures (the files with a grid of reference fingerprints;
+    # bench and composite JSON are not sweeps) as one site: a page per scene and per setting.
+    sweeps=$(find $out -name '*.json' | sort | xargs grep -l '"reference_fingerprints"')
+    $app report $sweeps --out out/report
+    ;;
   *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
-       "environment, lod, differential, screen, volumetric, flythrough)" >&2; exit 2 ;;
+       "environment, lod, differential, screen, volumetric, flythrough, report)" >&2; exit 2 ;;
   esac
 done

@@ -9,7 +9,10 @@ packages=(g++ cmake make pkg-config python3
           libbenchmark-dev libembree-dev nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
           libmeshoptimizer-dev
           libegl-dev libgl-dev libgl1-mesa-dri
-          clang-14 libclang-rt-14-dev)   # the sanitizer build (scripts/sanitize.sh)
+          clang-14 libclang-rt-14-dev    # the sanitizer build (scripts/sanitize.sh)
+          chromium)                      # the report's browser test (tests/report)
+# Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
+command -v node > /dev/null || packages+=(nodejs npm)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -21,6 +24,9 @@ if [ ${#missing[@]} -gt 0 ]; then
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+
+# playwright-core, at the version package-lock.json pins, into tests/report/node_modules.
+(cd tests/report && npm ci --no-audit --no-fund --silent)
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"

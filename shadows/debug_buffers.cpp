@@ -9,6 +9,16 @@
 
 namespace shadowlab {
 
+std::vector<uint8_t> greyImage(const std::vector<float>& values, float low, float high) {
+    std::vector<uint8_t> rgb(values.size() * 3);
+    const float scale = high > low ? 1.0f / (high - low) : 0.0f;
+    for (size_t k = 0; k < values.size(); ++k) {
+        const float t = std::isfinite(values[k]) ? std::clamp((values[k] - low) * scale, 0.0f, 1.0f) : 0.0f;
+        rgb[3 * k] = rgb[3 * k + 1] = rgb[3 * k + 2] = uint8_t(std::lround(t * 255.0f));
+    }
+    return rgb;
+}
+
 DebugBuffers::DebugBuffers(std::filesystem::path directory, std::string technique)
     : directory_(std::move(directory)), technique_(std::move(technique)) {
     if (enabled()) std::filesystem::create_directories(directory_);
@@ -23,13 +33,7 @@ void DebugBuffers::write(const std::string& name, int width, int height, const s
     exr.width = width, exr.height = height;
     exr.set("Y", values);
     writeExr(base.string() + ".exr", exr);
-    std::vector<uint8_t> rgb(values.size() * 3);
-    const float scale = high > low ? 1.0f / (high - low) : 0.0f;
-    for (size_t k = 0; k < values.size(); ++k) {
-        const float t = std::isfinite(values[k]) ? std::clamp((values[k] - low) * scale, 0.0f, 1.0f) : 0.0f;
-        rgb[3 * k] = rgb[3 * k + 1] = rgb[3 * k + 2] = uint8_t(std::lround(t * 255.0f));
-    }
-    writePng(base.string() + ".png", width, height, rgb);
+    writePng(base.string() + ".png", width, height, greyImage(values, low, high));
 }
 
 void DebugBuffers::writeRadiance(const std::string& name, int width, int height,

@@ -15,6 +15,10 @@
 
 namespace shadowlab {
 
+// RGB bytes for writePng(): `values` mapped linearly from [low, high] to black..white (a
+// value outside clamped, a NaN or infinity black).
+std::vector<uint8_t> greyImage(const std::vector<float>& values, float low, float high);
+
 class DebugBuffers {
 public:
     // An empty directory writes nothing; otherwise it is created if missing.

@@ -80,7 +80,7 @@ expect_png() {
 
 # ---- Help ---------------------------------------------------------------------------------
 expect_usage --help
-for command in render sweep merge-sweep compare bench scaling flythrough export-obj techniques environment composite; do
+for command in render sweep merge-sweep report compare bench scaling flythrough export-obj techniques environment composite; do
     expect_usage "$command" --help
 done
 run techniques
@@ -256,6 +256,29 @@ for bad in 0/3 4/3 1/0 garbage; do
 done
 expect_error "more shards than settings" "${grid[@]}" --shard 8/8 --out "$scratch/bad-shard"
 if grep -qF "the sweep has only 7 settings" "$err"; then pass; else fail "--shard 8/8: $(cat "$err")"; fi
+
+# ---- Pictures and the report -----------------------------------------------------------------
+# Two shards with --images, merged into another directory (the pictures' paths rebased onto
+# it), and the report of the merged JSON: every setting's page with its pictures copied.
+pictures=(sweep "$scratch/tiny-sun.json" --technique shadow-map --param resolution=64,256 --threads 1 --runs 1
+          --warmup 0 --images --out "$scratch/pictures/shards")
+for i in 1 2; do
+    run "${pictures[@]}" --shard "$i/2"
+    if [ "$rc" -eq 0 ]; then pass; else fail "sweep --images --shard $i/2 exited $rc: $(cat "$err")"; fi
+done
+run merge-sweep "$scratch/pictures/shards/"*.json --out "$scratch/pictures/merged"
+if [ "$rc" -eq 0 ]; then pass; else fail "merge-sweep of shards with pictures exited $rc: $(cat "$err")"; fi
+run report "$scratch/pictures/merged/tiny-sun-shadow-map.json" --out "$scratch/pictures/site"
+if [ "$rc" -eq 0 ] && grep -q "wrote 4 pages: $scratch/pictures/site/index.html" "$out"; then
+    pass
+else
+    fail "report of the merged sweep exited $rc: $(cat "$out" "$err")"
+fi
+for setting in 0 1; do
+    page="$scratch/pictures/site/tiny-sun-shadow-map-setting-$setting.html"
+    src=$(grep -o 'src="[^"]*setting-'"$setting"'-error-map.png"' "$page" | head -1 | sed 's/^src="//; s/"$//')
+    if [ -n "$src" ] && [ -s "$scratch/pictures/site/$src" ]; then pass; else fail "setting $setting: no error map in the site"; fi
+done
 
 # ---- Progress ------------------------------------------------------------------------------
 # The soft reference at this size takes about 3 s on one thread, past the 2 s after which

@@ -178,6 +178,12 @@ expect "bench --json into a missing directory" "cannot write '$dir/missing/b.jso
 expect "binary garbage as a sweep's shard" "garbage.json: invalid JSON: [json.exception.parse_error.101]" merge-sweep "$dir/garbage.json" --out "$dir/merged"
 expect "a shard nested 100000 deep" "deep.json: nested deeper than 64 levels" merge-sweep "$dir/deep.json" --out "$dir/merged"
 expect "a scene file as a shard" "valid.json: not the JSON of a sweep: " merge-sweep "$dir/valid.json" --out "$dir/merged"
+expect "binary garbage as a report's input" "garbage.json: invalid JSON: [json.exception.parse_error.101]" \
+    report "$dir/garbage.json" --out "$dir/report"
+expect "a shard nested 100000 deep as a report's input" "deep.json: nested deeper than 64 levels" \
+    report "$dir/deep.json" --out "$dir/report"
+expect "a scene file as a report's input" "valid.json: neither a sweep's JSON (with grid and rows) nor that of render" \
+    report "$dir/valid.json" --out "$dir/report"
 expect "export-obj into a missing directory" "$dir/missing/x.obj: cannot open for writing: No such file or directory" export-obj sphere-box "$dir/missing/x.obj"
 
 echo "$cases cases, $failed failed"
