@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Prints the figures a lesson page quotes, as a Markdown table, from `render --json` files.
+
+usage: lesson_figures.py [--stats NAME,NAME...] LABEL=FILE.json ...
+
+One row per file, in the order given: the label (the setting the row shows), then the error
+figures against the technique's exact reference over the hit pixels (conventions.md,
+"Figures and errors"): misclassified, false shadow and false light in % of the pixels for
+hard shadows; RMS and mean |error| of V, and the umbra-lit and lit-shadowed shares, for soft
+ones. --stats adds columns of the technique's own stats (architecture.md, "Stat names").
+The lesson scripts (scripts/lessons/NAME.sh) call it; it reads nothing else.
+"""
+import json
+import sys
+
+HARD = [("misclassified %", "misclassified_percent"), ("false shadow %", "false_shadow_percent"),
+        ("false light %", "false_light_percent"), ("RMS", "rms")]
+SOFT = [("RMS", "rms"), ("mean abs", "mean_abs"), ("umbra lit %", "umbra_lit_percent"),
+        ("lit shadowed %", "lit_shadowed_percent")]
+
+
+def number(value):
+    """Four significant figures; integers (counts) whole."""
+    if float(value).is_integer() and abs(value) >= 1:
+        return str(int(value))
+    return f"{value:.4g}"
+
+
+def main(argv):
+    stats = []
+    if len(argv) >= 2 and argv[0] == "--stats":
+        stats = argv[1].split(",")
+        argv = argv[2:]
+    if not argv or any("=" not in a for a in argv):
+        sys.exit("lesson_figures.py: usage: lesson_figures.py [--stats A,B] LABEL=FILE.json ...")
+    rows = []
+    for arg in argv:
+        label, path = arg.rsplit("=", 1)   # labels may hold "=", paths do not
+        with open(path) as f:
+            figures = json.load(f)
+        errors = figures["errors"]
+        columns = HARD if errors["binary"] else SOFT
+        missing = [s for s in stats if s not in figures["stats"]]
+        if missing:
+            sys.exit(f"lesson_figures.py: {path} has no stat {', '.join(missing)}")
+        rows.append((label, columns, [number(errors[key]) for _, key in columns] +
+                     [number(figures["stats"][s]) for s in stats]))
+    header = [name for name, _ in rows[0][1]] + stats
+    print("| setting | " + " | ".join(header) + " |")
+    print("| --- " * (len(header) + 1) + "|")
+    for label, columns, values in rows:
+        if columns is not rows[0][1]:
+            sys.exit("lesson_figures.py: mixing hard (binary) and soft figures in one table")
+        print(f"| {label} | " + " | ".join(values) + " |")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
