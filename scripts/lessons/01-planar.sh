@@ -15,7 +15,7 @@ shot() {
 }
 
 # Planar projected shadows: the stencil, the classic translucent composite, V in the image.
-shot planar sphere-box --technique planar
+shot planar scenes/sphere-box.json --technique planar
 cp "$scratch/planar-buffers/planar-stencil.png" "$images/planar-stencil.png"
 cp "$scratch/planar-buffers/planar-shadow.png" "$images/planar-shadow.png"
 cp "$scratch/planar.png" "$images/planar-final.png"
@@ -23,7 +23,7 @@ cp "$scratch/planar-error.png" "$images/planar-error.png"
 
 # The failure: nothing off the plane is shadowed; a lower light shows more of it.
 for light in 2,3,4 6,3,3; do
-  shot "planar-light-$light" sphere-box --technique planar --light-pos "$light"
+  shot "planar-light-$light" scenes/sphere-box.json --technique planar --light-pos "$light"
   cp "$scratch/planar-light-$light-error.png" "$images/planar-error-light-$(echo "$light" | tr , _).png"
 done
 echo "planar, sphere-box, light position (--light-pos):"
@@ -31,7 +31,7 @@ $figures "4,8,3 (the scene's)=$scratch/planar.json" "2,3,4=$scratch/planar-light
   "6,3,3=$scratch/planar-light-6,3,3.json"
 
 # Projected shadow textures: the occluders' texture from the light, the receivers, V.
-shot projected sphere-box --technique projected-texture --param resolution=256
+shot projected scenes/sphere-box.json --technique projected-texture --param resolution=256
 cp "$scratch/projected-buffers/projected-texture-texture.png" "$images/projected-texture.png"
 cp "$scratch/projected-buffers/projected-texture-receivers.png" "$images/projected-receivers.png"
 cp "$scratch/projected-error.png" "$images/projected-error.png"

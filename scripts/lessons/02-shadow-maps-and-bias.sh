@@ -11,7 +11,7 @@ close="--eye -1.5,2.2,-4.5 --target 1.2,0.3,-1 --fovy 45"
 # shot NAME [RENDER ARGS...]: sphere-box's image, error map, figures and buffers into $scratch/NAME*
 shot() {
   name=$1; shift
-  "$app" render sphere-box --technique shadow-map "$@" --width 480 --height 300 --threads 2 \
+  "$app" render scenes/sphere-box.json --technique shadow-map "$@" --width 480 --height 300 --threads 2 \
     -o "$scratch/$name.png" --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" \
     --debug-buffers "$scratch/$name-buffers" > "$scratch/$name.log"
 }
