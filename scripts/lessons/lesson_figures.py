@@ -5,9 +5,9 @@ usage: lesson_figures.py [--stats NAME,NAME...] LABEL=FILE.json ...
 
 One row per file, in the order given: the label (the setting the row shows), then the error
 figures against the technique's exact reference over the hit pixels (conventions.md,
-"Figures and errors"): misclassified, false shadow and false light in % of the pixels for
-hard shadows; RMS and mean |error| of V, and the umbra-lit and lit-shadowed shares, for soft
-ones. --stats adds columns of the technique's own stats (architecture.md, "Stat names").
+"Figures and errors"): misclassified, false shadow and false light in % of the pixels and
+RMS when every row is a hard (binary) V; else RMS and mean |error| of V and the umbra-lit
+and lit-shadowed shares. --stats adds columns of the technique's own stats (architecture.md, "Stat names").
 The lesson scripts (scripts/lessons/NAME.sh) call it; it reads nothing else.
 """
 import json
@@ -33,24 +33,24 @@ def main(argv):
         argv = argv[2:]
     if not argv or any("=" not in a for a in argv):
         sys.exit("lesson_figures.py: usage: lesson_figures.py [--stats A,B] LABEL=FILE.json ...")
-    rows = []
+    loaded = []
     for arg in argv:
         label, path = arg.rsplit("=", 1)   # labels may hold "=", paths do not
-        with open(path) as f:
-            figures = json.load(f)
-        errors = figures["errors"]
-        columns = HARD if errors["binary"] else SOFT
+        try:
+            with open(path) as f:
+                loaded.append((label, path, json.load(f)))
+        except (OSError, ValueError) as error:
+            sys.exit(f"lesson_figures.py: {path}: {error}")
+    # Hard figures only when every row is binary; a filtered (fractional) V beside a hard
+    # one is compared on the soft columns, which binary rows have too.
+    columns = HARD if all(figures["errors"]["binary"] for _, _, figures in loaded) else SOFT
+    print("| setting | " + " | ".join([name for name, _ in columns] + stats) + " |")
+    print("| --- " * (len(columns) + len(stats) + 1) + "|")
+    for label, path, figures in loaded:
         missing = [s for s in stats if s not in figures["stats"]]
         if missing:
             sys.exit(f"lesson_figures.py: {path} has no stat {', '.join(missing)}")
-        rows.append((label, columns, [number(errors[key]) for _, key in columns] +
-                     [number(figures["stats"][s]) for s in stats]))
-    header = [name for name, _ in rows[0][1]] + stats
-    print("| setting | " + " | ".join(header) + " |")
-    print("| --- " * (len(header) + 1) + "|")
-    for label, columns, values in rows:
-        if columns is not rows[0][1]:
-            sys.exit("lesson_figures.py: mixing hard (binary) and soft figures in one table")
+        values = [number(figures["errors"][key]) for _, key in columns] + [number(figures["stats"][s]) for s in stats]
         print(f"| {label} | " + " | ".join(values) + " |")
 
 
