@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Prints the figures a lesson page quotes, as a Markdown table, from `render --json` files.
+"""Prints the figures a lesson page quotes, as a Markdown table, from `render --json` or
+`compare --json` files.
 
 usage: lesson_figures.py [--stats NAME,NAME...] LABEL=FILE.json ...
 
@@ -26,6 +27,11 @@ def number(value):
     return f"{value:.4g}"
 
 
+def errorsOf(figures):
+    """render --json nests the error figures under "errors"; compare --json is them alone."""
+    return figures.get("errors", figures)
+
+
 def main(argv):
     stats = []
     if len(argv) >= 2 and argv[0] == "--stats":
@@ -43,14 +49,15 @@ def main(argv):
             sys.exit(f"lesson_figures.py: {path}: {error}")
     # Hard figures only when every row is binary; a filtered (fractional) V beside a hard
     # one is compared on the soft columns, which binary rows have too.
-    columns = HARD if all(figures["errors"]["binary"] for _, _, figures in loaded) else SOFT
+    columns = HARD if all(errorsOf(figures)["binary"] for _, _, figures in loaded) else SOFT
     print("| setting | " + " | ".join([name for name, _ in columns] + stats) + " |")
     print("| --- " * (len(columns) + len(stats) + 1) + "|")
     for label, path, figures in loaded:
-        missing = [s for s in stats if s not in figures["stats"]]
+        missing = [s for s in stats if s not in figures.get("stats", {})]
         if missing:
             sys.exit(f"lesson_figures.py: {path} has no stat {', '.join(missing)}")
-        values = [number(figures["errors"][key]) for _, key in columns] + [number(figures["stats"][s]) for s in stats]
+        values = [number(errorsOf(figures)[key]) for _, key in columns]
+        values += [number(figures["stats"][s]) for s in stats]
         print(f"| {label} | " + " | ".join(values) + " |")
 
 
