@@ -46,3 +46,12 @@ cp "$scratch/backward-chosen-error.png" "$images/backward-chosen-error.png"
 echo "projected-texture, sphere-box (resolution=256) and backward-cast (roles):"
 $figures "sphere-box, auto roles=$scratch/projected.json" "backward-cast, auto roles=$scratch/backward-auto.json" \
   "backward-cast, occluders=card receivers=ground+screen=$scratch/backward-chosen.json"
+
+# The figures of the page's "Try this" list.
+shot try-plane scenes/sphere-box.json --technique planar --param plane-y=0.5
+shot try-low-light scenes/sphere-box.json --technique planar --light-pos 0,1.5,3
+shot try-receivers scenes/sphere-box.json --technique projected-texture --param receivers=ground+sphere
+echo "Try this:"
+$figures --stats receiver_pixels "planar, plane-y=0.5=$scratch/try-plane.json" \
+  "planar, light at (0, 1.5, 3)=$scratch/try-low-light.json" \
+  "projected-texture, receivers=ground+sphere=$scratch/try-receivers.json"
