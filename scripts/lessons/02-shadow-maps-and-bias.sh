@@ -52,3 +52,15 @@ done
 echo "shadow-map, close view, the default bias, resolution:"
 $figures --stats median_texels_per_pixel "128=$scratch/resolution-128.json" "512=$scratch/slope.json" \
   "2048=$scratch/resolution-2048.json"
+
+# The figures of the page's "Try this" list, from the scene's camera at 512 texels.
+shot try-no-bias --param resolution=512 --param bias=constant --param constant-bias=0
+shot try-no-slope --param resolution=512 --param slope-factor=0 --param slope-units=4
+shot try-second --param resolution=512 --param layer=second
+shot try-midpoint --param resolution=512 --param layer=midpoint
+shot try-grazing --param resolution=512 --light-pos 9,1.5,3
+echo "Try this (the scene's camera, resolution=512):"
+$figures --stats median_texels_per_pixel "bias=constant, constant-bias=0=$scratch/try-no-bias.json" \
+  "slope-factor=0, slope-units=4=$scratch/try-no-slope.json" "layer=second=$scratch/try-second.json" \
+  "layer=midpoint=$scratch/try-midpoint.json" "the default=$scratch/overview.json" \
+  "light at (9, 1.5, 3)=$scratch/try-grazing.json"
