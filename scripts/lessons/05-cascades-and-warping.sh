@@ -77,3 +77,11 @@ $figures --stats median_texels_per_pixel,lispsm_n_opt_m \
   "lispsm, the scene's sun (4, 8, 3)=$scratch/lispsm.json" "lispsm, sun behind the camera (-3.2, 2, 2.8)=$scratch/behind-lispsm.json"
 $figures --stats median_texels_per_pixel \
   "none, the scene's sun=$scratch/single.json" "none, sun behind the camera=$scratch/behind-single.json"
+
+# The figures of the page's "Try this" list.
+shot try-camera-bounds "$scene" csm --param resolution=256 --param bounds=camera
+shot try-no-snap "$scene" csm --param resolution=256 --param snap=off
+echo "Try this (csm, 4 cascades of 256^2):"
+$figures --stats cascade0_split_far_m,cascade1_split_far_m,cascade2_split_far_m \
+  "bounds=camera=$scratch/try-camera-bounds.json" "snap=off=$scratch/try-no-snap.json" \
+  "the default=$scratch/csm.json"
