@@ -6,6 +6,8 @@
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
 figures="python3 scripts/lessons/lesson_figures.py"
+# ImageMagick, without the time stamps it would write into each PNG (same bytes every run).
+convert="convert -define png:exclude-chunks=date,time"
 work=receiver_pixels,resolution_texels,list_max_receivers,list_mean_nonempty_receivers,empty_texels_percent
 work=$work,texel_triangle_pairs_count,segment_tests_count
 
@@ -15,7 +17,7 @@ lists() {
   name=$1; out=$2; shift 2
   percent=$(python3 -c 'import json, sys
 print(min(100.0, 800.0 / json.load(open(sys.argv[1]))["stats"]["list_max_receivers"]))' "$scratch/$name.json")
-  convert "$scratch/$name-buffers/izb-list-length.png" -level "0%,$percent%" "$@" "$out"
+  $convert "$scratch/$name-buffers/izb-list-length.png" -level "0%,$percent%" "$@" "$out"
 }
 
 # shot NAME [RENDER ARGS...]: sphere-box's image, error map, figures and buffers into $scratch/NAME*
@@ -52,3 +54,12 @@ lists grazing "$images/list-length-grazing.png"
 cp "$scratch/grazing.png" "$images/grazing.png"
 echo "izb, sphere-box, the light at (9, 1.5, 3), automatic resolution:"
 $figures --stats "$work" "grazing light=$scratch/grazing.json"
+
+# The figures of the page's "Try this" list.
+shot try-16 --param resolution=16
+"$app" render scenes/hard/point-light-inside.json --technique izb --width 480 --height 300 --threads 2 \
+  -o "$scratch/try-point-inside.png" --error-map "$scratch/try-point-inside-error.png" \
+  --json "$scratch/try-point-inside.json" > "$scratch/try-point-inside.log"
+echo "Try this:"
+$figures --stats views_count,list_mean_nonempty_receivers,segment_tests_count \
+  "sphere-box, resolution=16=$scratch/try-16.json" "point-light-inside=$scratch/try-point-inside.json"
