@@ -6,6 +6,8 @@
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
 figures="python3 scripts/lessons/lesson_figures.py"
+# ImageMagick, without the time stamps it would write into each PNG (same bytes every run).
+convert="convert -define png:exclude-chunks=date,time"
 scene=scenes/soft/torus-over-plane.json
 size="--width 480 --height 300 --threads 2"
 # The enlarged part of the image where the torus's shadow leaves the green plane's umbra.
@@ -14,7 +16,7 @@ crop="-crop 240x150+100+100 +repage -scale 200%"
 # The exact soft shadow, scored against once: every shot below compares with it.
 "$app" render "$scene" --technique reference-soft $size -o "$scratch/reference.png" \
   --aov "$scratch/reference.exr" > "$scratch/reference.log"
-convert "$scratch/reference.png" $crop "$images/reference-crop.png"
+$convert "$scratch/reference.png" $crop "$images/reference-crop.png"
 
 # shot NAME TECHNIQUE [RENDER ARGS...]: image, buffers, heat map and error figures into $scratch/NAME*
 shot() {
@@ -23,18 +25,18 @@ shot() {
     --debug-buffers "$scratch/$name-buffers" > "$scratch/$name.log"
   "$app" compare "$scratch/reference.exr" "$scratch/$name.exr" --heatmap "$scratch/$name-diff.png" \
     --json "$scratch/$name.json" > "$scratch/$name-compare.log"
-  convert "$scratch/$name.png" $crop "$scratch/$name-crop.png"
+  $convert "$scratch/$name.png" $crop "$scratch/$name-crop.png"
 }
 
 # VSM's stages, without light-bleeding reduction, over a 15-texel box.
 shot vsm-0 vsm --param filter-width=15 --param bleeding-reduction=0
 buffers="$scratch/vsm-0-buffers"
 for buffer in linear-depth filtered1; do
-  convert "$buffers/vsm-$buffer.png" -resize 512x512 "$images/vsm-$buffer.png"
+  $convert "$buffers/vsm-$buffer.png" -resize 512x512 "$images/vsm-$buffer.png"
 done
 # The variance the Chebyshev bound reads, sigma^2 = M2 - M1^2, from the two filtered EXR
 # buffers: 0 black, 0.02 (normalised depth squared) and above white.
-convert "$buffers/vsm-filtered2.exr" "$buffers/vsm-filtered1.exr" -fx "min(1, 50*(u - v*v))" -depth 8 \
+$convert "$buffers/vsm-filtered2.exr" "$buffers/vsm-filtered1.exr" -fx "min(1, 50*(u - v*v))" -depth 8 \
   -resize 512x512 "$images/vsm-variance.png"
 cp "$scratch/reference.png" "$images/reference.png"
 cp "$scratch/vsm-0.png" "$images/vsm-bleeding-0.png"
