@@ -46,9 +46,9 @@ $figures "slope-scaled (1.5, 4)=$scratch/slope.json" "normal-offset (1 texel + 0
 # The staircase: the resolution, with the default bias.
 for resolution in 128 2048; do
   shot "resolution-$resolution" $close --param resolution="$resolution"
-  cp "$scratch/resolution-$resolution.png" "$images/close-resolution-$resolution.png"
   cp "$scratch/resolution-$resolution-error.png" "$images/close-resolution-$resolution-error.png"
 done
+cp "$scratch/resolution-128.png" "$images/close-resolution-128.png"
 echo "shadow-map, close view, the default bias, resolution:"
 $figures --stats median_texels_per_pixel "128=$scratch/resolution-128.json" "512=$scratch/slope.json" \
   "2048=$scratch/resolution-2048.json"
