@@ -39,7 +39,6 @@ done
 $convert "$buffers/vsm-filtered2.exr" "$buffers/vsm-filtered1.exr" -fx "min(1, 50*(u - v*v))" -depth 8 \
   -resize 512x512 "$images/vsm-variance.png"
 cp "$scratch/reference.png" "$images/reference.png"
-cp "$scratch/vsm-0.png" "$images/vsm-bleeding-0.png"
 
 # Light bleeding against bleeding-reduction.
 for amount in 0.2 0.5; do
@@ -47,6 +46,8 @@ for amount in 0.2 0.5; do
 done
 for amount in 0 0.2 0.5; do
   cp "$scratch/vsm-$amount-crop.png" "$images/vsm-bleeding-$amount-crop.png"
+done
+for amount in 0 0.5; do
   cp "$scratch/vsm-$amount-diff.png" "$images/vsm-bleeding-$amount-diff.png"
 done
 echo "vsm, filter-width=15, bleeding-reduction:"
