@@ -46,8 +46,9 @@ done
 cp "$scratch/cascades-1.png" "$images/cascades-1.png"
 cp "$scratch/cascades-8-buffers/csm-cascades.png" "$images/cascades-8-colouring.png"
 echo "one shadow map of 512^2 texels, and csm with 256^2 texels per cascade:"
-$figures --stats median_texels_per_pixel "shadow-map, 512=$scratch/single.json" "csm, 1 cascade=$scratch/cascades-1.json" \
-  "csm, 2 cascades=$scratch/cascades-2.json" "csm, 4 cascades=$scratch/csm.json" "csm, 8 cascades=$scratch/cascades-8.json"
+$figures --stats median_texels_per_pixel "shadow-map, 512=$scratch/single.json" \
+  "csm, 1 cascade=$scratch/cascades-1.json" "csm, 2 cascades=$scratch/cascades-2.json" \
+  "csm, 4 cascades=$scratch/csm.json" "csm, 8 cascades=$scratch/cascades-8.json"
 
 # The split scheme, 4 cascades.
 for split in uniform log; do
@@ -74,7 +75,8 @@ shot behind-lispsm "$behind" shadow-map --param resolution=512 --param warp=lisp
 cp "$scratch/behind-lispsm-buffers/shadow-map-texel-density.png" "$images/behind-lispsm-texel-density.png"
 echo "shadow-map 512, warp, sun direction:"
 $figures --stats median_texels_per_pixel,lispsm_n_opt_m \
-  "lispsm, the scene's sun (4, 8, 3)=$scratch/lispsm.json" "lispsm, sun behind the camera (-3.2, 2, 2.8)=$scratch/behind-lispsm.json"
+  "lispsm, the scene's sun (4, 8, 3)=$scratch/lispsm.json" \
+  "lispsm, sun behind the camera (-3.2, 2, 2.8)=$scratch/behind-lispsm.json"
 $figures --stats median_texels_per_pixel \
   "none, the scene's sun=$scratch/single.json" "none, sun behind the camera=$scratch/behind-single.json"
 
