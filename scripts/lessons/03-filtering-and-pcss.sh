@@ -6,6 +6,12 @@
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
 figures="python3 scripts/lessons/lesson_figures.py"
+# ImageMagick, without the time stamps it would write into each PNG (same bytes every run).
+convert="convert -define png:exclude-chunks=date,time"
+if ! command -v convert > /dev/null; then
+  echo "03-filtering-and-pcss.sh: needs ImageMagick's convert (apt-get install imagemagick)" >&2
+  exit 1
+fi
 close="--eye -0.5,3.2,3.8 --target -0.4,0.4,-0.6 --fovy 40"
 
 # shot NAME TECHNIQUE [RENDER ARGS...]: sphere-box's image, buffers, error map and figures
@@ -45,9 +51,9 @@ soft_reference reference-soft
 cp "$scratch/reference-soft.png" "$images/reference-soft.png"
 shot pcss pcss
 cp "$scratch/pcss-buffers/pcss-depth.png" "$images/pcss-depth.png"
-# Blocker distances are mapped from the light's near to far plane and use a fifth of that
-# range: stretched so the nearest value (0, no blocker) is black and the farthest white.
-convert "$scratch/pcss-buffers/pcss-blocker-distance.png" -auto-level "$images/pcss-blocker-distance.png"
+# Blocker distances are mapped from the light's near to far plane and use less than a
+# quarter of that range: stretched so that 0 (no blocker) is black and the farthest white.
+$convert "$scratch/pcss-buffers/pcss-blocker-distance.png" -auto-level "$images/pcss-blocker-distance.png"
 cp "$scratch/pcss-buffers/pcss-penumbra-width.png" "$images/pcss-penumbra-width.png"
 cp "$scratch/pcss.png" "$images/pcss-final.png"
 cp "$scratch/pcss-diff.png" "$images/pcss-diff.png"
