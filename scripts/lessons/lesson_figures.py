@@ -8,8 +8,8 @@ One row per file, in the order given: the label (the setting the row shows), the
 figures against the technique's exact reference over the hit pixels (conventions.md,
 "Figures and errors"): misclassified, false shadow and false light in % of the pixels and
 RMS when every row is a hard (binary) V; else RMS and mean |error| of V and the umbra-lit
-and lit-shadowed shares. --stats adds columns of the technique's own stats (architecture.md, "Stat names").
-The lesson scripts (scripts/lessons/NAME.sh) call it; it reads nothing else.
+and lit-shadowed shares. --stats adds columns of the technique's own stats (architecture.md,
+"Stat names"). The lesson scripts (scripts/lessons/NAME.sh) call it; it reads nothing else.
 """
 import json
 import sys
