@@ -5,7 +5,9 @@
 # caster level of detail, and differential rendering into photographs (the Figure 3 table is
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
-# cores, and more for the sweeps' pictures (README, "Report"); run nothing else meanwhile (times are medians, but a busy machine still moves them).
+# cores, more for the sweeps' pictures (README, "Report"), and half an hour for the
+# fly-throughs; run nothing else meanwhile (times are medians, but a busy machine still
+# moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
 # usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|flythrough|report ...]
 #        (default: all sixteen, report last)
