@@ -17,7 +17,7 @@ render() {
 # The stages of `fins`, as buffers: the light's maps of the layer that holds the sphere and
 # the box, and the camera's illuminance buffer.
 rm -rf "$scratch/debug"
-render fins sphere-box fins $view --debug-buffers "$scratch/debug"
+render fins scenes/sphere-box.json fins $view --debug-buffers "$scratch/debug"
 layer=$(ls "$scratch/debug" | sed -n 's/^fins-layer-\([0-9]*\)-shadow-map\.png$/\1/p' | head -n 1)
 for buffer in shadow-map outer-weight inner-weight outer-depth illuminance; do
   cp "$scratch/debug/fins-layer-$layer-$buffer.png" "$images/fins-occluder-layer-$buffer.png"
@@ -27,9 +27,9 @@ cp "$scratch/debug/fins-layers.png" "$images/fins-layers.png"
 echo "the occluders' layer: $layer of $(ls "$scratch/debug" | grep -c 'shadow-map\.png$') drawn"
 
 # The baselines: outer fins only.
-render penumbra-maps sphere-box penumbra-maps $view
-render smoothies-0.06 sphere-box smoothies $view --param size=0.06
-render smoothies-0.2 sphere-box smoothies $view --param size=0.2
+render penumbra-maps scenes/sphere-box.json penumbra-maps $view
+render smoothies-0.06 scenes/sphere-box.json smoothies $view --param size=0.06
+render smoothies-0.2 scenes/sphere-box.json smoothies $view --param size=0.2
 
 # Figure 7 of the paper: one layer against sixteen on the torus over the green plane.
 render torus-layers-1 scenes/soft/torus-over-plane.json fins --param layers=1
@@ -41,5 +41,6 @@ print("| run | RMS | max | umbra over % | umbra lit % |")
 print("| --- | --- | --- | --- | --- |")
 for name in ["fins", "penumbra-maps", "smoothies-0.06", "smoothies-0.2", "torus-layers-1", "torus-layers-16"]:
     e = json.load(open(f"{sys.argv[1]}/{name}.json"))["errors"]
-    print(f"| {name} | {e['rms']:.4f} | {e['max_abs']:.3f} | {e['umbra_over_percent']:.3f} | {e['umbra_lit_percent']:.3f} |")
+    print(f"| {name} | {e['rms']:.4f} | {e['max_abs']:.3f} "
+          f"| {e['umbra_over_percent']:.3f} | {e['umbra_lit_percent']:.3f} |")
 PY

@@ -10,7 +10,7 @@ view="--eye -3,5,4.5 --target -0.3,0.3,-0.6 --light-radius 1"
 render() {
   name=$1 technique=$2
   shift 2
-  nice -n 10 "$app" render sphere-box --technique "$technique" $size $view "$@" -o "$images/$name.png" \
+  nice -n 10 "$app" render scenes/sphere-box.json --technique "$technique" $size $view "$@" -o "$images/$name.png" \
     --error-map "$images/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
 }
 
