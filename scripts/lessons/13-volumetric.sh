@@ -9,13 +9,16 @@ size="--width 480 --height 300 --threads 2"
 sheets=scenes/volumetric/stacked-sheets.json
 
 # render NAME SCENE TECHNIQUE [ARGS]: the image, its error map against the exact reference
-# (one Embree ray a pixel, multiplying what each surface lets through) and $scratch/NAME.json.
+# (one Embree ray a pixel, multiplying what each surface lets through) and the figures, as
+# $scratch/NAME.png, NAME-error.png and NAME.json.
 render() {
   name=$1 scene=$2 technique=$3
   shift 3
-  nice -n 10 "$app" render "$scene" --technique "$technique" $size "$@" -o "$images/$name.png" \
-    --error-map "$images/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
+  nice -n 10 "$app" render "$scene" --technique "$technique" $size "$@" -o "$scratch/$name.png" \
+    --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
 }
+# show FILE ...: copies the pictures the page shows from $scratch into the lesson's images.
+show() { for file in "$@"; do cp "$scratch/$file.png" "$images/$file.png"; done; }
 # keep DEBUG_NAME SHOWN_NAME: copies one debug buffer's PNG into the lesson's images.
 keep() { cp "$scratch/debug/$1.png" "$images/$2.png"; }
 # curve TECHNIQUE SHOWN_NAME: the plot of the busiest texel's curve, exact against kept.
@@ -59,6 +62,8 @@ render glass-coloured scenes/volumetric/tinted-glass.json coloured-shadow-map --
 keep coloured-shadow-map-colour glass-colour-map
 nice -n 10 "$app" render scenes/volumetric/tinted-glass.json --technique reference $size \
   -o "$images/glass-reference.png" > "$scratch/glass-reference.log"
+show sheets-shadow-map sheets-coloured sheets-opacity-4 sheets-opacity-64 sheets-deep sheets-avsm-2 \
+  glass-coloured glass-coloured-error
 
 python3 - "$scratch" <<'PY'
 import json, sys
