@@ -7,13 +7,15 @@ box=scenes/hard/box-contact.json
 branch=scenes/soft/branch-over-crate.json
 
 # render NAME SCENE TECHNIQUE [ARGS]: the image, its error map against the technique's exact
-# reference and the figures in $scratch/NAME.json.
+# reference and the figures, as $scratch/NAME.png, NAME-error.png and NAME.json.
 render() {
   name=$1 scene=$2 technique=$3
   shift 3
-  nice -n 10 "$app" render "$scene" --technique "$technique" --threads 2 "$@" -o "$images/$name.png" \
-    --error-map "$images/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
+  nice -n 10 "$app" render "$scene" --technique "$technique" --threads 2 "$@" -o "$scratch/$name.png" \
+    --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
 }
+# show FILE ...: copies the pictures the page shows from $scratch into the lesson's images.
+show() { for file in "$@"; do cp "$scratch/$file.png" "$images/$file.png"; done; }
 # keep DEBUG_NAME SHOWN_NAME: copies one debug buffer's PNG into the lesson's images.
 keep() { cp "$scratch/debug/$1.png" "$images/$2.png"; }
 
@@ -40,6 +42,9 @@ render branch-izb "$branch" izb $size --reference reference-soft
 render branch-hybrid "$branch" izb-pcss $size --debug-buffers "$scratch/debug"
 for buffer in blend-weight izb pcss blocker-distance; do keep "izb-pcss-$buffer" "hybrid-$buffer"; done
 render branch-hybrid-wide "$branch" izb-pcss $size --param hard-below=0.5 --param soft-above=1.5
+show box-shadow-map-error box-contact-0.05-error box-contact-0.25-error box-contact-1-error \
+  box-march-alone-error branch-pcss-error branch-izb-error branch-hybrid branch-hybrid-error \
+  branch-hybrid-wide-error
 
 python3 - "$scratch" <<'PY'
 import json, sys
