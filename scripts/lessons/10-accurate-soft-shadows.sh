@@ -8,13 +8,16 @@ size="--width 480 --height 300 --threads 2"
 view="--eye -3,5,4.5 --target -0.3,0.3,-0.6 --light-radius 1"
 
 # render NAME SCENE TECHNIQUE [ARGS]: the image, its error map against the exact soft
-# reference (reference-soft, 32 x 32 rays a pixel) and the figures in $scratch/NAME.json.
+# reference (reference-soft, 32 x 32 rays a pixel) and the figures, as $scratch/NAME.png,
+# NAME-error.png and NAME.json.
 render() {
   name=$1 scene=$2 technique=$3
   shift 3
-  nice -n 10 "$app" render "$scene" --technique "$technique" $size "$@" -o "$images/$name.png" \
-    --error-map "$images/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
+  nice -n 10 "$app" render "$scene" --technique "$technique" $size "$@" -o "$scratch/$name.png" \
+    --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
 }
+# show FILE ...: copies the pictures the page shows from $scratch into the lesson's images.
+show() { for file in "$@"; do cp "$scratch/$file.png" "$images/$file.png"; done; }
 # keep DEBUG_NAME SHOWN_NAME: copies one debug buffer's PNG into the lesson's images.
 keep() { cp "$scratch/debug/$1.png" "$images/$2.png"; }
 
@@ -50,6 +53,10 @@ render ssv-stacked-count scenes/soft/stacked-squares.json soft-shadow-volumes --
 render ssv-stacked-binary scenes/soft/stacked-squares.json soft-shadow-volumes --param hard-shadow=binary
 nice -n 10 "$app" render scenes/soft/stacked-squares.json --technique reference-soft $size \
   -o "$images/stacked-reference.png" > "$scratch/stacked-reference.log"
+for run in pcss-hierarchy-on chs-filter-nodes-8 chs-filter-nodes-2 backprojection-samples-4 \
+  backprojection-samples-8 backprojection-samples-16 ssv ssv-stacked-count ssv-stacked-binary; do
+  show "$run" "$run-error"
+done
 
 python3 - "$scratch" <<'PY'
 import json, sys
