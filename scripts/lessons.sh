@@ -1,9 +1,10 @@
 #!/bin/sh
 # Regenerates every picture of docs/lessons/: each lesson's script, scripts/lessons/NAME.sh,
 # renders its small scene with the technique's intermediate buffers (render --debug-buffers)
-# into docs/lessons/images/NAME/ and prints the figures the page quotes. Seconds to a minute
-# a lesson on 2 cores, four minutes for 03 (eight exact soft references). Crops and
-# contrast stretches use ImageMagick (scripts/setup.sh installs it).
+# into docs/lessons/images/NAME/ and prints the figures the page quotes. Seconds to a few
+# minutes a lesson on 2 cores; 03 about four (eight exact soft references) and 11 about
+# twenty (each scored frame renders the exact environment integral). Crops and contrast
+# stretches use ImageMagick, plots rsvg-convert (scripts/setup.sh installs both).
 # usage: scripts/lessons.sh [NAME ...]   (default: every lesson, in order; NAME as 01-planar)
 # The program is build/app/shadowlab unless SHADOWLAB names another.
 set -eu

@@ -11,7 +11,7 @@ packages=(g++ cmake make pkg-config python3
           libegl-dev libgl-dev libgl1-mesa-dri
           clang-14 libclang-rt-14-dev    # the sanitizer build (scripts/sanitize.sh)
           chromium                       # the report's browser test (tests/report)
-          imagemagick)                   # the lessons' crops and contrast stretches (scripts/lessons/)
+          imagemagick librsvg2-bin)      # the lessons' crops, contrast stretches and plots (scripts/lessons/)
 # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
 command -v node > /dev/null || packages+=(nodejs npm)
 missing=()
