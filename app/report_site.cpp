@@ -71,13 +71,29 @@ void planSettings(ReportSource& source) {
 }
 
 // Where a picture goes in the site: images/SOURCE/ and then its path in the JSON, each part
-// made safe ('..' becomes 'up'), so that two pictures never meet and a picture several rows
-// share (a reference's) is copied once.
+// made safe ('..' becomes 'up'), so that a picture several rows share (a reference's) is
+// copied once. Making names safe can make two alike ("a b.png", "a-b.png"): copyPictures
+// then gives the second another name.
 std::filesystem::path sitePath(const std::string& sourceName, const std::string& relative) {
     std::filesystem::path site = std::filesystem::path("images") / sourceName;
     for (const std::filesystem::path& part : std::filesystem::path(relative).lexically_normal().relative_path())
         if (!part.empty()) site /= part == ".." ? "up" : safeFileName(part.string());
     return site;
+}
+
+// `site`, or if another picture holds it, the first of SITE-2, SITE-3, ... (before the
+// extension) that is free or holds this picture.
+std::filesystem::path freeSitePath(const std::filesystem::path& site, const std::filesystem::path& picture,
+                                   const std::map<std::filesystem::path, std::filesystem::path>& copies) {
+    const auto same = [](const std::filesystem::path& a, const std::filesystem::path& b) {
+        return std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal();
+    };
+    std::filesystem::path candidate = site;
+    for (int k = 2;; ++k) {
+        const auto taken = copies.find(candidate);
+        if (taken == copies.end() || same(taken->second, picture)) return candidate;
+        candidate = site.parent_path() / (site.stem().string() + "-" + std::to_string(k) + site.extension().string());
+    }
 }
 
 // Every picture of every row, from beside its JSON to its place in the site; the rows then
@@ -92,7 +108,7 @@ void copyPictures(std::vector<ReportSource>& sources, const std::filesystem::pat
                 if (!std::filesystem::is_regular_file(picture))
                     throw std::runtime_error(source.file + ": picture '" + relative + "' not found (no file " +
                                              picture.string() + ")");
-                const std::filesystem::path site = sitePath(source.name, relative);
+                const std::filesystem::path site = freeSitePath(sitePath(source.name, relative), picture, copies);
                 copies.emplace(site, picture);
                 return site.generic_string();
             });

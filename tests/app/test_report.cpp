@@ -175,6 +175,27 @@ TEST_CASE("report: a render's JSON is a page of one row with its pictures") {
     CHECK(std::filesystem::is_regular_file(site / "images/render/pics/debug/map.png"));
 }
 
+TEST_CASE("report: two pictures whose safe names are alike keep their own files") {
+    // "a b.png" and "a-b.png" are both made "a-b.png"; the second must not show the first.
+    const test::ScratchDirectory scratch("report_alike");
+    const SweepRow row = oddSweep(scratch.path).rows[0];
+    writeTinyPng(scratch.path / "a b.png");
+    writePng(scratch.path / "a-b.png", 2, 2, std::vector<uint8_t>(2 * 2 * 3, 7));
+    FrameImages images;
+    images.image = "a b.png";
+    images.errorMap = "a-b.png";
+    writeTextFile(scratch.path / "render.json",
+                  formatScoreJson("box", "shadow-map", "reference", {}, Frame{}, row.errors, images));
+    const std::filesystem::path site = scratch.path / "site";
+    writeReportSite({(scratch.path / "render.json").string()}, site, PlotErrorAxis::Misclassified);
+    const std::string page = readWholeFile((site / "render-setting-0.html").string());
+    CHECK(countOf(page, "src=\"images/render/a-b.png\"") == 1);
+    CHECK(countOf(page, "src=\"images/render/a-b-2.png\"") == 1);
+    CHECK(readWholeFile((site / "images/render/a-b.png").string()) == readWholeFile((scratch.path / "a b.png").string()));
+    CHECK(readWholeFile((site / "images/render/a-b-2.png").string()) ==
+          readWholeFile((scratch.path / "a-b.png").string()));
+}
+
 TEST_CASE("report: a file of neither kind, a missing picture, broken JSON and no files fail naming the problem") {
     const test::ScratchDirectory scratch("report_errors");
     const std::filesystem::path site = scratch.path / "site";
