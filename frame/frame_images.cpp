@@ -7,6 +7,7 @@
 #include "frame/score.h"
 #include "shading/tonemap.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/technique.h"
 
 namespace shadowlab {
 namespace {
@@ -37,8 +38,9 @@ std::string relativePath(const std::filesystem::path& path, const std::filesyste
 }
 
 FrameImages writeFramePictures(const std::filesystem::path& base, const std::filesystem::path& folder,
-                               const std::string& name, const Frame& frame, const ImageChannels* reference) {
-    std::filesystem::create_directories(folder);
+                               const std::string& name, const Frame& frame, const ImageChannels* reference,
+                               const ToneMapOptions& tone) {
+    if (!folder.empty()) std::filesystem::create_directories(folder);
     const int width = frame.gbuffer.width, height = frame.gbuffer.height;
     const auto write = [&](const std::string& suffix, const std::vector<uint8_t>& rgb) {
         const std::filesystem::path path = folder / (name + "-" + suffix + ".png");
@@ -46,7 +48,7 @@ FrameImages writeFramePictures(const std::filesystem::path& base, const std::fil
         return relativePath(path, base);
     };
     FrameImages images;
-    images.image = write("image", toSrgb8Image(frame.radiance, {}));
+    images.image = write("image", toSrgb8Image(frame.radiance, tone));
     if (reference)
         images.errorMap = write("error-map", errorMapImage(*reference, scoredImage(frame), frame.radiance,
                                                           scoredChannel(frame.output)));
@@ -59,10 +61,15 @@ std::vector<std::string> debugPictures(const std::filesystem::path& base, const 
                                        const std::string& technique) {
     std::vector<std::string> pictures;
     if (!std::filesystem::is_directory(directory)) return pictures;
+    const auto ownedByLongerName = [&](const std::string& file) {
+        return std::ranges::any_of(techniques(), [&](const Technique& other) {
+            return other.name.starts_with(technique + "-") && file.starts_with(other.name + "-");
+        });
+    };
     for (const auto& entry : std::filesystem::directory_iterator(directory)) {
-        const std::string extension = entry.path().extension().string();
+        const std::string extension = entry.path().extension().string(), file = entry.path().filename().string();
         if (entry.is_regular_file() && (extension == ".png" || extension == ".svg") &&
-            entry.path().filename().string().starts_with(technique + "-"))
+            file.starts_with(technique + "-") && !ownedByLongerName(file))
             pictures.push_back(relativePath(entry.path(), base));
     }
     std::ranges::sort(pictures);

@@ -11,11 +11,12 @@
 
 #include "frame/render.h"
 #include "shading/image_io.h"
+#include "shading/tonemap.h"
 
 namespace shadowlab {
 
 struct FrameImages {
-    std::string image;                       // tone-mapped sRGB PNG (Reinhard, exposure 0)
+    std::string image;                       // tone-mapped sRGB PNG (writeFramePictures' tone)
     std::string errorMap;                    // errorMapImage() against the reference
     std::string visibility;                  // V, 0 black to 1 white (visibility techniques)
     std::string referenceImage, referenceVisibility;   // the same of the reference
@@ -23,15 +24,18 @@ struct FrameImages {
     bool empty() const;
 };
 
-// Writes FOLDER/NAME-image.png, FOLDER/NAME-error-map.png if `reference` is given (the
-// frame's scoredImage() against it) and, for a visibility frame, FOLDER/NAME-visibility.png;
-// returns their paths relative to `base` (creates FOLDER if missing).
+// Writes FOLDER/NAME-image.png (tone mapped with `tone`), FOLDER/NAME-error-map.png if
+// `reference` is given (the frame's scoredImage() against it) and, for a visibility frame,
+// FOLDER/NAME-visibility.png; returns their paths relative to `base` (creates FOLDER if
+// missing; an empty FOLDER is the working directory).
 FrameImages writeFramePictures(const std::filesystem::path& base, const std::filesystem::path& folder,
-                               const std::string& name, const Frame& frame, const ImageChannels* reference);
+                               const std::string& name, const Frame& frame, const ImageChannels* reference,
+                               const ToneMapOptions& tone = {});
 
 // The pictures of a technique's debug buffers: the PNG and SVG files directly in
-// `directory` whose names start with "TECHNIQUE-" (none if it does not exist), sorted,
-// relative to `base`.
+// `directory` whose names start with "TECHNIQUE-" but not with the name of a technique that
+// extends it ("reference-soft-" is not reference's), sorted, relative to `base` (none if the
+// directory does not exist).
 std::vector<std::string> debugPictures(const std::filesystem::path& base, const std::filesystem::path& directory,
                                        const std::string& technique);
 

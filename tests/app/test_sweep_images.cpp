@@ -9,6 +9,7 @@
 
 #include "app/sweep.h"
 #include "app/sweep_json.h"
+#include "frame/frame_images.h"
 #include "scenes/read_file.h"
 #include "tests/app/text_count.h"
 #include "tests/scratch_directory.h"
@@ -93,3 +94,14 @@ TEST_CASE("merge-sweep with pictures: the paths are made relative to the merged 
     CHECK(rebased(images, "out", "out").image == images.image);
 }
 
+
+TEST_CASE("a technique's debug pictures leave out those of a technique whose name extends its own") {
+    const test::ScratchDirectory scratch("debug_pictures_names");
+    for (const char* name : {"reference-a.png", "reference-soft-b.png", "izb-x.svg", "izb-pcss-y.png", "izb-z.exr"})
+        writeTextFile(scratch.path / name, "x");
+    CHECK(debugPictures(scratch.path, scratch.path, "reference") == std::vector<std::string>{"reference-a.png"});
+    CHECK(debugPictures(scratch.path, scratch.path, "reference-soft") ==
+          std::vector<std::string>{"reference-soft-b.png"});
+    CHECK(debugPictures(scratch.path, scratch.path, "izb") == std::vector<std::string>{"izb-x.svg"});
+    CHECK(debugPictures(scratch.path, scratch.path, "izb-pcss") == std::vector<std::string>{"izb-pcss-y.png"});
+}
