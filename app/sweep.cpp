@@ -162,11 +162,7 @@ TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique
     return {summarizeTimes(std::move(ms)), std::move(frame)};
 }
 
-std::string SweepRow::settingsLabel() const {
-    std::string label;
-    for (const auto& [name, value] : settings) label += (label.empty() ? "" : " ") + name + "=" + value;
-    return label.empty() ? "defaults" : label;
-}
+std::string SweepRow::settingsLabel() const { return shadowlab::settingsLabel(settings); }
 
 SweepShard parseSweepShard(const std::string& text) {
     // Digits only: from_chars alone would take "1/3x" or a sign.

@@ -45,6 +45,12 @@ SweepAxis parseSweepAxis(const std::string& text) {
     return axis;
 }
 
+std::string settingsLabel(const std::map<std::string, std::string>& params) {
+    std::string label;
+    for (const auto& [name, value] : params) label += (label.empty() ? "" : " ") + name + "=" + value;
+    return label.empty() ? "defaults" : label;
+}
+
 std::vector<SweepPlan> planSweep(const std::vector<const Technique*>& techniques, const std::vector<SweepAxis>& axes) {
     std::vector<SweepPlan> plans;
     uint64_t index = 0;
@@ -52,16 +58,19 @@ std::vector<SweepPlan> planSweep(const std::vector<const Technique*>& techniques
         if (std::ranges::any_of(plans, [&](const SweepPlan& p) { return p.technique->name == technique->name; }))
             throw std::invalid_argument("technique '" + technique->name + "' is listed twice");
         std::vector<SweepAxis> own;
-        std::ranges::copy_if(axes, std::back_inserter(own), [&](const SweepAxis& a) { return hasParam(*technique, a.name); });
+        std::ranges::copy_if(axes, std::back_inserter(own),
+                             [&](const SweepAxis& a) { return hasParam(*technique, a.name); });
         SweepPlan& plan = plans.emplace_back(SweepPlan{technique, {}});
         for (Settings& params : crossProduct(own)) plan.settings.push_back({index++, std::move(params)});
     }
     for (size_t i = 0; i < axes.size(); ++i) {
         const SweepAxis& axis = axes[i];
-        if (std::ranges::any_of(axes.begin(), axes.begin() + i, [&](const SweepAxis& a) { return a.name == axis.name; }))
+        const auto sameName = [&](const SweepAxis& a) { return a.name == axis.name; };
+        if (std::ranges::any_of(axes.begin(), axes.begin() + i, sameName))
             throw std::invalid_argument("--param " + axis.name + ": given twice; list every value in one axis");
         if (std::ranges::none_of(plans, [&](const SweepPlan& p) { return hasParam(*p.technique, axis.name); }))
-            throw std::invalid_argument("--param " + axis.name + ": none of the techniques has this parameter (see `shadowlab techniques`)");
+            throw std::invalid_argument("--param " + axis.name +
+                                        ": none of the techniques has this parameter (see `shadowlab techniques`)");
     }
     return plans;
 }

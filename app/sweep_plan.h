@@ -34,6 +34,9 @@ struct SweepPlan {
     std::vector<PlannedSetting> settings;
 };
 
+// A setting's values as "a=1 b=2", or "defaults" for none.
+std::string settingsLabel(const std::map<std::string, std::string>& params);
+
 // Each technique with the cross product of the axes it has. Throws std::invalid_argument
 // for a technique listed twice, an axis given twice, or an axis no technique has (a typo).
 std::vector<SweepPlan> planSweep(const std::vector<const Technique*>& techniques, const std::vector<SweepAxis>& axes);
