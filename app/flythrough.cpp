@@ -1,7 +1,6 @@
 #include "app/flythrough.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -15,7 +14,8 @@
 #include "scenes/read_file.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_limits.h"
-#include "shading/tonemap.h"
+#include "app/svg.h"
+#include "frame/frame_images.h"
 
 namespace shadowlab {
 namespace {
@@ -25,11 +25,13 @@ void checkOptions(const FlythroughOptions& options) {
     if (options.runs < 1 || options.warmupRuns < 0)
         throw std::invalid_argument("flythrough: runs must be >= 1, warm-up runs >= 0");
     if (options.frames < 0 || options.frames > kMaxPathFrames)
-        throw std::invalid_argument("flythrough: frames must be in 1.." + std::to_string(kMaxPathFrames));
+        throw std::invalid_argument("flythrough: frames must be in 2.." + std::to_string(kMaxPathFrames) +
+                                    " (0: the path's own)");
     if (!(options.stableTolerance >= 0.0f && options.stableTolerance <= 1.0f))
         throw std::invalid_argument("flythrough: the stable-reference tolerance must be in [0, 1]");
     if (options.overrides.eye || options.overrides.target || options.overrides.lightPosition)
-        throw std::invalid_argument("flythrough: the path places the camera and the light; give no eye, target or light position");
+        throw std::invalid_argument(
+            "flythrough: the path places the camera and the light; give no eye, target or light position");
     for (const Technique* technique : options.techniques) {
         if (technique->output != TechniqueOutput::Visibility)
             throw std::invalid_argument("flythrough: " + technique->name +
@@ -38,7 +40,8 @@ void checkOptions(const FlythroughOptions& options) {
 }
 
 CameraPath loadPath(const FlythroughOptions& options, const Scene& scene) {
-    if (!options.pathFile.empty()) return parseCameraPathCsv(readWholeFile(options.pathFile), options.pathFile, scene.lights);
+    if (!options.pathFile.empty())
+        return parseCameraPathCsv(readWholeFile(options.pathFile), options.pathFile, scene.lights);
     if (scene.flythrough.keyframes.empty())
         throw std::invalid_argument("scene " + scene.name + " has no \"flythrough\" path: give --path KEYFRAMES.csv "
                                     "(docs/flythrough.md)");
@@ -53,35 +56,94 @@ struct SeriesState {
     std::filesystem::path framesDir;   // where its frames' PNGs go; empty: nowhere
 };
 
-// image-NNNN.png and error-NNNN.png of a series' frame, in its own directory.
+// A series' frame as NNNN-image.png, NNNN-error-map.png and NNNN-visibility.png in the
+// series' own directory.
 void writeFrameImages(const std::filesystem::path& framesDir, const FlythroughSeries& series, int frame,
-                      const ImageChannels& reference, const ImageChannels& scored, const Frame& rendered) {
+                      const ImageChannels& reference, const Frame& rendered) {
     std::string name = series.label();
     std::ranges::replace(name, ' ', '_');
     const std::filesystem::path dir = framesDir / name;
-    std::filesystem::create_directories(dir);
-    char number[16];
-    std::snprintf(number, sizeof number, "%04d.png", frame);
-    const int w = scored.width, h = scored.height;
-    writePng((dir / (std::string("image-") + number)).string(), w, h, toSrgb8Image(rendered.radiance, {0.0f, ToneOperator::Reinhard}));
-    writePng((dir / (std::string("error-") + number)).string(), w, h, errorMapImage(reference, scored, rendered.radiance));
+    const std::string number = svg::format("%04d", frame);
+    writeFramePictures(dir, dir, number, rendered, &reference);
 }
 
-FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels& reference, const ImageChannels* previousReference,
-                             SeriesState& state, const FlythroughOptions& options, const ProgressStage& progress) {
+FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels& reference,
+                             const ImageChannels* previousReference, SeriesState& state,
+                             const FlythroughOptions& options, const ProgressStage& progress) {
     const FrameSettings settings{options.simd, state.series.settings, {}};
-    const TimedFrames timed = timeFrames(prepared, *state.technique, settings, options.warmupRuns, options.runs, progress);
+    const TimedFrames timed =
+        timeFrames(prepared, *state.technique, settings, options.warmupRuns, options.runs, progress);
     FlythroughFrame frame;
     frame.medianMs = timed.timing.medianMs;
     frame.minMs = timed.timing.minMs;
     frame.errors = scoreFrame(reference, timed.last);
-    ImageChannels scored = scoredImage(timed.last);
     if (!state.framesDir.empty())
-        writeFrameImages(state.framesDir, state.series, int(state.series.frames.size()), reference, scored, timed.last);
+        writeFrameImages(state.framesDir, state.series, int(state.series.frames.size()), reference, timed.last);
+    ImageChannels scored = scoredImage(timed.last);
     if (previousReference)
-        frame.flicker = flickerFigures(*previousReference, reference, state.previous, scored, channel::V, options.stableTolerance);
+        frame.flicker =
+            flickerFigures(*previousReference, reference, state.previous, scored, channel::V, options.stableTolerance);
     state.previous = std::move(scored);
     return frame;
+}
+
+
+// A frame of the path: where it is, and the camera and lights placed there.
+struct PathFrame {
+    PathSample sample;
+    Camera camera;
+    std::vector<Light> lights;
+};
+
+// Every frame placed before any is rendered: an undefined view half way fails first.
+std::vector<PathFrame> placeWholePath(const CameraPath& path, int frames, const Camera& baseCamera,
+                                      const std::vector<Light>& baseLights) {
+    std::vector<PathFrame> placed;
+    for (int f = 0; f < frames; ++f) {
+        PathFrame& frame = placed.emplace_back(PathFrame{samplePath(path, f, frames), baseCamera, baseLights});
+        placeOnPath(frame.sample, f, frame.camera, frame.lights);
+    }
+    return placed;
+}
+
+std::vector<SeriesState> seriesStates(const std::vector<SweepPlan>& plans, const FlythroughOptions& options,
+                                      const std::string& scene) {
+    const std::filesystem::path framesDir =
+        options.imagesDir.empty() ? std::filesystem::path()
+                                  : std::filesystem::path(options.imagesDir) /
+                                        (flythroughFileStem(scene, options.techniques) + "-frames");
+    std::vector<SeriesState> states;
+    for (const SweepPlan& plan : plans) {
+        for (const PlannedSetting& setting : plan.settings) {
+            const FlythroughSeries series{plan.technique->name, plan.technique->referenceName, setting.params, {}};
+            states.push_back({plan.technique, series, {}, framesDir});
+        }
+    }
+    return states;
+}
+
+// One frame of the path for every series; each reference rendered once. Returns the
+// references, which the next frame's flicker is measured against.
+std::map<std::string, ImageChannels> renderPathFrame(const PreparedScene& prepared, const PathSample& sample, int f,
+                                                     const std::map<std::string, ImageChannels>& previousReferences,
+                                                     std::vector<SeriesState>& states, const FlythroughOptions& options,
+                                                     const ProgressStage& progress) {
+    std::map<std::string, ImageChannels> references;
+    for (SeriesState& state : states) {
+        const std::string& name = state.series.reference;
+        if (!references.contains(name)) references.emplace(name, renderReferenceImage(prepared, options.simd, name));
+        const auto previous = previousReferences.find(name);
+        FlythroughFrame frame = measureFrame(prepared, references.at(name),
+                                             previous == previousReferences.end() ? nullptr : &previous->second,
+                                             state, options, progress);
+        frame.frame = f;
+        frame.time = sample.time;
+        frame.eye = sample.eye;
+        frame.target = sample.target;
+        frame.light = sample.light;
+        state.series.frames.push_back(std::move(frame));
+    }
+    return references;
 }
 
 }  // namespace
@@ -93,9 +155,7 @@ std::string flythroughFileStem(const std::string& scene, const std::vector<const
 }
 
 std::string FlythroughSeries::label() const {
-    std::string text = technique;
-    for (const auto& [name, value] : settings) text += " " + name + "=" + value;
-    return text;
+    return settings.empty() ? technique : technique + " " + settingsLabel(settings);
 }
 
 PathFigures pathFigures(const FlythroughSeries& series) {
@@ -108,7 +168,7 @@ PathFigures pathFigures(const FlythroughSeries& series) {
         figures.meanRms += frame.errors.rms / double(series.frames.size());
         figures.meanMisclassifiedPercent +=
             frame.errors.percentOfPixels(frame.errors.misclassified()) / double(series.frames.size());
-        if (!frame.flicker) continue;
+        if (!frame.flicker || frame.flicker->stablePixels == 0) continue;
         changeSum += frame.flicker->mean * double(frame.flicker->stablePixels);
         stable += double(frame.flicker->stablePixels);
         p99Sum += frame.flicker->p99;
@@ -126,64 +186,31 @@ FlythroughResults runFlythrough(const FlythroughOptions& options) {
     Scene scene = loadScene(options.scene);
     applyOverrides(scene, options.overrides);
     const CameraPath path = loadPath(options, scene);
+    const int frames = options.frames ? options.frames : path.frames ? path.frames : kDefaultPathFrames;
+    if (frames < 2) throw std::invalid_argument("flythrough: a path needs at least 2 frames; flicker compares each "
+                                                "frame with the one before");
     const Camera baseCamera = scene.camera;
     const std::vector<Light> baseLights = scene.lights;
     PreparedScene prepared(std::move(scene));
 
-    FlythroughResults results;
-    results.scene = prepared.scene().name;
-    results.path = options.pathFile.empty() ? "scene" : options.pathFile;
-    results.frames = options.frames ? options.frames : path.frames ? path.frames : kDefaultPathFrames;
-    results.threads = options.threads ? options.threads : tbb::info::default_concurrency();
-    results.warmupRuns = options.warmupRuns;
-    results.runs = options.runs;
-    results.stableTolerance = options.stableTolerance;
-    // Every frame's camera first: an undefined view half way fails before the long part.
-    std::vector<PathSample> samples;
-    for (int f = 0; f < results.frames; ++f) {
-        samples.push_back(samplePath(path, f, results.frames));
-        Camera camera = baseCamera;
-        std::vector<Light> lights = baseLights;
-        placeOnPath(samples.back(), f, camera, lights);
-    }
+    FlythroughResults results{prepared.scene().name, options.pathFile.empty() ? "scene" : options.pathFile,
+                              frames,
+                              options.threads ? options.threads : tbb::info::default_concurrency(),
+                              options.warmupRuns, options.runs, options.stableTolerance, {}};
+    const std::vector<PathFrame> placed = placeWholePath(path, results.frames, baseCamera, baseLights);
     checkSettings(prepared, plans, options.simd, options.progress, "flythrough");
-
-    const std::filesystem::path framesDir =
-        options.imagesDir.empty() ? std::filesystem::path()
-                                  : std::filesystem::path(options.imagesDir) /
-                                        (flythroughFileStem(results.scene, options.techniques) + "-frames");
-    std::vector<SeriesState> states;
-    for (const SweepPlan& plan : plans)
-        for (const PlannedSetting& setting : plan.settings)
-            states.push_back({plan.technique, {plan.technique->name, plan.technique->referenceName, setting.params, {}}, {},
-                              framesDir});
-    const ProgressStage progress(options.progress, "flythrough: frame",
-                                 uint64_t(results.frames) * states.size() * uint64_t(options.warmupRuns + options.runs));
+    std::vector<SeriesState> states = seriesStates(plans, options, results.scene);
+    const uint64_t framesToRender =
+        uint64_t(results.frames) * states.size() * uint64_t(options.warmupRuns + options.runs);
+    const ProgressStage progress(options.progress, "flythrough: frame", framesToRender);
     std::map<std::string, ImageChannels> previousReferences;
     for (int f = 0; f < results.frames; ++f) {
-        Camera camera = baseCamera;
-        std::vector<Light> lights = baseLights;
-        placeOnPath(samples[f], f, camera, lights);
-        prepared.setCamera(camera);
-        prepared.setLights(lights);
-        std::map<std::string, ImageChannels> references;
+        prepared.setCamera(placed[f].camera);
+        prepared.setLights(placed[f].lights);
         withThreads(results.threads, [&] {
-            for (SeriesState& state : states) {
-                const std::string& name = state.series.reference;
-                if (!references.contains(name)) references.emplace(name, renderReferenceImage(prepared, options.simd, name));
-                const auto previous = previousReferences.find(name);
-                FlythroughFrame frame = measureFrame(prepared, references.at(name),
-                                                     previous == previousReferences.end() ? nullptr : &previous->second,
-                                                     state, options, progress);
-                frame.frame = f;
-                frame.time = samples[f].time;
-                frame.eye = samples[f].eye;
-                frame.target = samples[f].target;
-                frame.light = samples[f].light;
-                state.series.frames.push_back(std::move(frame));
-            }
+            previousReferences =
+                renderPathFrame(prepared, placed[f].sample, f, previousReferences, states, options, progress);
         });
-        previousReferences = std::move(references);
     }
     for (SeriesState& state : states) results.series.push_back(std::move(state.series));
     return results;

@@ -26,15 +26,15 @@ struct FlythroughOptions {
     std::string scene;                       // built-in name or .json path
     SceneOverrides overrides;                // size only: the path moves the camera and light
     std::string pathFile;                    // CSV keyframes; empty: the scene's "flythrough"
-    int frames = 0;                          // 0: the path's own count, else kDefaultPathFrames
+    int frames = 0;                          // >= 2; 0: the path's own count, else kDefaultPathFrames
     std::vector<const Technique*> techniques;
     std::vector<SweepAxis> axes;
     int threads = 0;                         // 0: all cores
     int warmupRuns = 1, runs = 3;
     float stableTolerance = kStableReferenceTolerance;
-    // Each frame's image and error map as PNG, DIR/STEM-frames/SERIES/image-NNNN.png and
-    // error-NNNN.png (STEM: flythroughFileStem; SERIES: the label, '_' for spaces), e.g. to
-    // make a video; empty: none.
+    // Each frame's image, error map and V as PNG, DIR/STEM-frames/SERIES/NNNN-image.png,
+    // NNNN-error-map.png and NNNN-visibility.png (STEM: flythroughFileStem; SERIES: the
+    // label, '_' for spaces), e.g. to make a video; empty: none.
     std::string imagesDir;
     raster::SimdLevel simd = raster::bestSimdLevel();
     Progress* progress = nullptr;
@@ -60,7 +60,8 @@ struct FlythroughSeries {
 
 // A series' figures over the path: the median of the frames' times, the mean of their RMS
 // and misclassified share, the mean change over every stable pixel of every frame pair (each
-// pair weighted by its stable pixels) and the mean of the pairs' 99th percentiles.
+// pair weighted by its stable pixels) and the mean of the 99th percentiles of the pairs that
+// have stable pixels.
 struct PathFigures {
     double medianMs = 0.0, meanRms = 0.0, meanMisclassifiedPercent = 0.0;
     double flickerMean = 0.0, flickerP99 = 0.0;

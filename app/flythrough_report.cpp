@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include "app/line_plot.h"
+#include "app/svg.h"
 #include "app/sweep.h"
 
 namespace shadowlab {
@@ -15,12 +15,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 std::array<float, 3> xyz(const glm::vec3& v) { return {v.x, v.y, v.z}; }
-
-std::string settingsText(const FlythroughSeries& series) {
-    std::string text;
-    for (const auto& [name, value] : series.settings) text += (text.empty() ? "" : " ") + name + "=" + value;
-    return text;
-}
 
 std::vector<std::string> vectorFields(const std::optional<glm::vec3>& v) {
     if (!v) return {"", "", ""};
@@ -63,19 +57,16 @@ std::optional<double> plotted(const FlythroughFrame& frame, FlythroughPlot plot)
 }  // namespace
 
 std::string formatFlythroughText(const FlythroughResults& results) {
-    char line[256];
-    std::snprintf(line, sizeof line, "%s: %d frames of path %s, %d threads, median of %d runs after %d warm-up\n",
-                  results.scene.c_str(), results.frames, results.path.c_str(), results.threads, results.runs,
-                  results.warmupRuns);
-    std::string text = line;
-    std::snprintf(line, sizeof line, "%-36s %10s %10s %8s %13s %12s\n", "series", "median ms", "mean RMS",
-                  "miscl %", "flicker mean", "flicker p99");
-    text += line;
+    using svg::format;
+    std::string text = format("%s: %d frames of path %s, %d threads, median of %d runs after %d warm-up\n",
+                              results.scene.c_str(), results.frames, results.path.c_str(), results.threads,
+                              results.runs, results.warmupRuns);
+    text += format("%-36s %10s %10s %8s %13s %12s\n", "series", "median ms", "mean RMS", "miscl %", "flicker mean",
+                   "flicker p99");
     for (const FlythroughSeries& s : results.series) {
         const PathFigures p = pathFigures(s);
-        std::snprintf(line, sizeof line, "%-36s %10.3f %10.5f %8.3f %13.6f %12.5f\n", s.label().c_str(), p.medianMs,
-                      p.meanRms, p.meanMisclassifiedPercent, p.flickerMean, p.flickerP99);
-        text += line;
+        text += format("%-36s %10.3f %10.5f %8.3f %13.6f %12.5f\n", s.label().c_str(), p.medianMs, p.meanRms,
+                       p.meanMisclassifiedPercent, p.flickerMean, p.flickerP99);
     }
     return text;
 }
@@ -87,7 +78,8 @@ std::string formatFlythroughCsv(const FlythroughResults& results) {
                                "flicker_mean", "flicker_p99", "flicker_stable_percent"});
     for (const FlythroughSeries& s : results.series) {
         for (const FlythroughFrame& f : s.frames) {
-            std::vector<std::string> fields{s.technique, settingsText(s), std::to_string(f.frame), csvNumber(f.time)};
+            std::vector<std::string> fields{s.technique, settingsLabel(s.settings), std::to_string(f.frame),
+                                            csvNumber(f.time)};
             for (const auto& v : {std::optional(f.eye), std::optional(f.target), f.light}) {
                 const std::vector<std::string> three = vectorFields(v);
                 fields.insert(fields.end(), three.begin(), three.end());

@@ -65,6 +65,12 @@ void addVec3Option(CLI::App* cmd, const std::string& name, std::optional<glm::ve
     }, help)->type_name("X,Y,Z");
 }
 
+// --width and --height of render, sweep and flythrough; applyOverrides() applies them.
+void addSizeOptions(CLI::App* cmd, SceneOverrides& overrides) {
+    cmd->add_option("--width", overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+    cmd->add_option("--height", overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+}
+
 // --light-pos and --light-radius, shared by render and sweep; applyOverrides() checks them.
 void addLightOptions(CLI::App* cmd, SceneOverrides& overrides) {
     addVec3Option(cmd, "--light-pos", overrides.lightPosition, "position (centre) of the scene's first light");
@@ -116,7 +122,8 @@ struct RenderArgs {
 FrameImages scoreImages(const RenderArgs& a, const std::string& technique, const Frame& referenceFrame) {
     const std::filesystem::path base = std::filesystem::path(a.json).parent_path(), errorMap = a.errorMap;
     const std::string name = errorMap.stem().string() + "-reference";
-    const FrameImages reference = writeFramePictures(base, errorMap.parent_path(), name, referenceFrame, nullptr);
+    const FrameImages reference = writeFramePictures(base, errorMap.parent_path(), name, referenceFrame, nullptr,
+                                                     {a.exposure, ToneOperator::Reinhard});
     FrameImages images;
     if (!a.png.empty()) images.image = relativePath(a.png, base);
     images.errorMap = relativePath(errorMap, base);
@@ -259,7 +266,8 @@ void runFlythroughCommand(FlythroughArgs a) {
         std::filesystem::path(a.outDir) / flythroughFileStem(results.scene, a.options.techniques);
     writeReport(stem, formatFlythroughCsv(results), formatFlythroughJson(results),
                 formatFlythroughSvg(results, FlythroughPlot::Flicker));
-    for (const auto& [suffix, plot] : {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error}}) {
+    for (const auto& [suffix, plot] :
+         {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error}}) {
         writeTextFile(stem.string() + suffix, formatFlythroughSvg(results, plot));
         std::cout << "wrote " << stem.string() + suffix << "\n";
     }
@@ -368,8 +376,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     r->add_option("--technique", a.technique, "shadow technique (see `shadowlab techniques`)")->capture_default_str();
     r->add_option("-o,--output", a.png, "tone-mapped sRGB PNG to write");
     r->add_option("--aov", a.aov, "OpenEXR file with R G B, P.*, N.*, Ns.*, hit, V, depth (and stencil)");
-    r->add_option("--width", a.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
-    r->add_option("--height", a.overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
+    addSizeOptions(r, a.overrides);
     r->add_option("--threads", a.threads, "worker threads (0: all cores)")->check(CLI::Range(0, kMaxThreads));
     addSimdOption(r, a.simd);
     addVec3Option(r, "--eye", a.overrides.eye, "camera position, overriding the scene's");
@@ -405,10 +412,7 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(s, "frames per row", a.options.runs, a.options.warmupRuns, a.simd);
     addSweepReportOptions(s, a.outDir, a.plotY);
-    s->add_option("--width", a.options.overrides.width, "image width in pixels")
-        ->check(CLI::Range(1, raster::kMaxViewport));
-    s->add_option("--height", a.options.overrides.height, "image height in pixels")
-        ->check(CLI::Range(1, raster::kMaxViewport));
+    addSizeOptions(s, a.options.overrides);
     addLightOptions(s, a.options.overrides);
     s->add_option("--reference", a.options.reference, "score every technique against this one (default: each against the one it names, reference or reference-soft)");
     s->add_option("--shard", a.shard,
@@ -438,17 +442,21 @@ void addFlythroughCommand(CLI::App& app, FlythroughArgs& a) {
     f->add_option("--path", a.options.pathFile, "keyframes as CSV (docs/flythrough.md); default: the scene's "
                                                "\"flythrough\"")->check(CLI::ExistingFile);
     f->add_option("--frames", a.options.frames, "frames sampled along the path (default: the path's, else " +
-                  std::to_string(kDefaultPathFrames) + ")")->check(CLI::Range(1, kMaxPathFrames));
-    f->add_option("--width", a.options.overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
-    f->add_option("--height", a.options.overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
-    f->add_option("--threads", a.options.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, kMaxThreads));
+                  std::to_string(kDefaultPathFrames) + ")")->check(CLI::Range(2, kMaxPathFrames));
+    addSizeOptions(f, a.options.overrides);
+    f->add_option("--threads", a.options.threads, "worker threads (0: all cores)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, kMaxThreads));
     addTimingOptions(f, "frames per path frame", a.options.runs, a.options.warmupRuns, a.simd);
     f->add_option("--stable-tolerance", a.options.stableTolerance,
-                  "the reference's V counts as unchanged if it moves by at most this")->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
+                  "the reference's V counts as unchanged if it moves by at most this")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0f, 1.0f));
     f->add_option("--out", a.outDir, "directory for SCENE-flythrough-TECHNIQUES.csv, .json, .svg (flicker), "
                                      "-time.svg and -error.svg")->capture_default_str();
-    f->add_flag("--images", a.images, "also write every frame's image and error map, "
-                                      "OUT/SCENE-flythrough-TECHNIQUES-frames/SETTING/image-NNNN.png and error-NNNN.png");
+    f->add_flag("--images", a.images,
+                "also write every frame's image, error map and V, "
+                "OUT/SCENE-flythrough-TECHNIQUES-frames/SETTING/NNNN-image.png, -error-map.png, -visibility.png");
     addProgressFlag(f, a.progress);
     f->callback([&a] { runFlythroughCommand(a); });
 }

@@ -32,13 +32,17 @@ std::string lastKeyframeProblem(const CameraPath& path, const std::vector<Light>
     if (key.eye == key.target) return "the eye is on the target";
     if (key.light && lights.empty()) return "the scene has no light to move";
     if (path.keyframes.size() == 1) {
-        if (key.light && lightIsDirection(lights) && key.light == glm::vec3(0.0f)) return "the light's direction is zero";
+        if (key.light && lightIsDirection(lights) && key.light == glm::vec3(0.0f))
+            return "the light's direction is zero";
         return {};
     }
     const PathKeyframe& previous = path.keyframes[path.keyframes.size() - 2];
     if (!(key.time > previous.time))
         return "times must increase from keyframe to keyframe, got " + std::to_string(key.time) + " after " +
                std::to_string(previous.time);
+    // Frames are placed at fractions of the whole span, which must itself be a number.
+    if (!std::isfinite(key.time - path.keyframes.front().time))
+        return "the path's times span more than the largest number; use smaller times";
     if (key.light.has_value() != previous.light.has_value())
         return std::string("give ") + lightKey(lights) + " in every keyframe or in none";
     if (key.light && lightIsDirection(lights)) {
@@ -118,7 +122,8 @@ void placeOnPath(const PathSample& sample, int frame, Camera& camera, std::vecto
 CameraPath readCameraPath(const JsonField& field, const std::vector<Light>& lights) {
     const JsonObject object = field.object({"frames", "keyframes"});
     CameraPath path;
-    if (const auto frames = object.optional("frames")) path.frames = frames->integer({1.0, double(kMaxPathFrames), false, false});
+    if (const auto frames = object.optional("frames"))
+        path.frames = frames->integer({2.0, double(kMaxPathFrames), false, false});
     const std::vector<JsonField> keyframes = object["keyframes"].elements();
     if (keyframes.empty()) object["keyframes"].fail("needs at least one keyframe");
     if (keyframes.size() > kMaxPathKeyframes)
@@ -156,11 +161,13 @@ CameraPath parseCameraPathCsv(const std::string& text, const std::string& file, 
         }
         if (fields.size() != columns.size())
             fail("expected " + std::to_string(columns.size()) + " values, got " + std::to_string(fields.size()));
-        if (path.keyframes.size() == kMaxPathKeyframes) fail("more than " + std::to_string(kMaxPathKeyframes) + " keyframes");
+        if (path.keyframes.size() == kMaxPathKeyframes)
+            fail("more than " + std::to_string(kMaxPathKeyframes) + " keyframes");
         std::vector<float> values;
         for (size_t c = 0; c < fields.size(); ++c) {
             const std::optional<double> value = finiteNumber(fields[c]);
-            if (!value || (c > 0 && std::abs(*value) > std::numeric_limits<float>::max())) fail(columns[c] + ": expected a finite number, got '" + fields[c] + "'");
+            if (!value || (c > 0 && std::abs(*value) > std::numeric_limits<float>::max()))
+                fail(columns[c] + ": expected a finite number, got '" + fields[c] + "'");
             values.push_back(float(*value));
             if (c == 0) path.keyframes.emplace_back().time = *value;
         }

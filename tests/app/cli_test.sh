@@ -80,7 +80,8 @@ expect_png() {
 
 # ---- Help ---------------------------------------------------------------------------------
 expect_usage --help
-for command in render sweep merge-sweep report compare bench scaling flythrough export-obj techniques environment composite; do
+for command in render sweep merge-sweep report compare bench scaling flythrough export-obj techniques environment \
+               composite; do
     expect_usage "$command" --help
 done
 run techniques
@@ -123,12 +124,13 @@ if grep -q "neither OpenEXR nor Radiance HDR" "$err"; then pass; else fail "the 
 run environment "$maps/pmndrs_sky.hdr" --lights 8 --rotation 30 --phong 8 --ggx 0.5 --out "$scratch/env"
 if [ "$rc" -eq 0 ] && grep -q "8 median-cut and structured lights" "$out"; then pass; else fail "environment exited $rc: $(cat "$err")"; fi
 for image in environment sh-radiance sh-irradiance lights structured-lights prefiltered-phong-8 prefiltered-ggx-0.5 split-sum; do expect_png "$scratch/env/$image.png"; done
-expect_error "flythrough of a scene without a path" flythrough "$maps/../hard/spot.json" --technique shadow-map --out "$scratch/fly"
+expect_error "flythrough of a scene without a path" flythrough "$maps/../hard/spot.json" --technique shadow-map \
+    --out "$scratch/fly"
 if grep -q 'has no "flythrough" path' "$err"; then pass; else fail "the missing path is not named: $(cat "$err")"; fi
 printf 'time,eye_x,eye_y,eye_z,target_x,target_y,target_z\n1,0,4,9,0,0,0\n0,0,4,8,0,0,0\n' >"$scratch/back.csv"
 expect_error "flythrough of keyframes going back in time" flythrough sphere-box --path "$scratch/back.csv" \
     --technique shadow-map --out "$scratch/fly"
-if grep -q "back.csv: line 3: times must increase" "$err"; then pass; else fail "the bad keyframe is not named: $(cat "$err")"; fi
+if grep -q "back.csv: line 3: times must increase" "$err"; then pass; else fail "the bad keyframe is unnamed: $(cat "$err")"; fi
 expect_error "flythrough of a radiance technique" flythrough sphere-box --technique env-additive --out "$scratch/fly"
 run flythrough sphere-box --technique shadow-map --frames 3 --runs 1 --warmup 0 "${tiny[@]}" --out "$scratch/fly"
 if [ "$rc" -eq 0 ] && [ "$(wc -l <"$scratch/fly/sphere-box-flythrough-shadow-map.csv")" -eq 4 ] &&

@@ -51,8 +51,9 @@ FlythroughOptions smallRun(const std::string& scene, std::vector<std::string> te
 
 TEST_CASE("a static camera gives zero flicker for every technique") {
     const test::ScratchDirectory dir("flythrough_static");
-    for (const auto& [scene, techniques] : {std::pair{std::string("sphere-box"), std::vector<std::string>{"shadow-map", "pcss", "fins"}},
-                                            {sunScene(), {"csm", "shadow-map"}}}) {
+    using Case = std::pair<std::string, std::vector<std::string>>;
+    for (const auto& [scene, techniques] : {Case{"sphere-box", {"shadow-map", "pcss", "fins"}},
+                                            Case{sunScene(), {"csm", "shadow-map"}}}) {
         FlythroughOptions options = smallRun(scene, techniques, 3);
         options.pathFile = writePath(dir, {0, 4, 9}, {0, 0.5f, 0}, {0, 0, 0});
         const FlythroughResults results = runFlythrough(options);
@@ -77,8 +78,9 @@ TEST_CASE("a static camera gives zero flicker for every technique") {
 }
 
 TEST_CASE("texel snapping removes the flicker a sub-texel camera move causes in cascaded shadow maps") {
-    // The sun over sphere-box, the camera moving 2 mm a frame along its view axis: a third of
-    // a texel of the nearest cascade at 512 texels. Unsnapped, every cascade follows the
+    // The sun over sphere-box, the camera moving 13 mm a frame along its view axis (the path's
+    // 94 mm over 8 frames): under a texel of every cascade at 512 texels (the nearest is over
+    // 12 m wide, 2.4 cm a texel). Unsnapped, every cascade follows the
     // camera and its texels slide under the world, flipping texels along every shadow edge;
     // snapped, the texels stay in place and only pixels sliding over the (world-fixed)
     // staircase change, few near the image's centre, whose surface points barely move.
@@ -104,9 +106,9 @@ TEST_CASE("a fly-through follows the scene's path and writes its table, JSON, pl
     options.imagesDir = dir.path.string();
     const FlythroughResults results = runFlythrough(options);
     const std::filesystem::path frames = dir.path / "sphere-box-flythrough-shadow-map-frames" / "shadow-map";
-    for (const char* file : {"image-0000.png", "error-0000.png", "image-0003.png", "error-0003.png"})
+    for (const char* file : {"0000-image.png", "0000-error-map.png", "0003-image.png", "0003-visibility.png"})
         CHECK(std::filesystem::file_size(frames / file) > 100);
-    CHECK_FALSE(std::filesystem::exists(frames / "image-0004.png"));
+    CHECK_FALSE(std::filesystem::exists(frames / "0004-image.png"));
     CHECK(results.path == "scene");
     REQUIRE(results.series.size() == 1);
     const FlythroughSeries& series = results.series[0];
@@ -144,6 +146,8 @@ TEST_CASE("a fly-through refuses what it cannot measure, before rendering") {
     FlythroughOptions moved = smallRun("sphere-box", {"shadow-map"}, 2);
     moved.overrides.eye = glm::vec3(1, 2, 3);
     CHECK_THROWS_WITH_AS(runFlythrough(moved), doctest::Contains("the path places the camera"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(runFlythrough(smallRun("sphere-box", {"shadow-map"}, 1)), doctest::Contains("at least 2 frames"),
+                         std::invalid_argument);
     FlythroughOptions typo = smallRun("sphere-box", {"shadow-map"}, 2);
     typo.axes = {{"resolutoin", {"512"}}};
     CHECK_THROWS_WITH_AS(runFlythrough(typo), doctest::Contains("none of the techniques"), std::invalid_argument);

@@ -85,7 +85,7 @@ TEST_CASE("a scene file's flythrough loads, and every mistake in it names its fi
     };
     const std::string key0 = R"({"time": 0, "eye": [0, 4, 9], "target": [0, 0, 0]})";
     test::checkMessage(errorOf(R"({"keyframes": []})"), {"path.json", "flythrough.keyframes", "at least one"});
-    test::checkMessage(errorOf(R"({"frames": 0, "keyframes": [)" + key0 + "]}"), {"flythrough.frames"});
+    test::checkMessage(errorOf(R"({"frames": 1, "keyframes": [)" + key0 + "]}"), {"flythrough.frames"});
     test::checkMessage(errorOf(R"({"keyframes": [)" + key0 + "," + key0 + "]}"),
                        {"flythrough.keyframes[1]", "times must increase"});
     test::checkMessage(errorOf(R"({"keyframes": [{"time": 0, "eye": [0, 0, 0], "target": [0, 0, 0]}]})"),
@@ -96,7 +96,8 @@ TEST_CASE("a scene file's flythrough loads, and every mistake in it names its fi
     test::checkMessage(errorOf(R"({"keyframes": [{"time": 0, "eye": [0, 4, 9], "target": [0, 0, 0],
                                    "light_position": [0, 1, 0]}]})", true), {"unknown key", "light_direction"});
     test::checkMessage(errorOf(R"({"keyframes": [{"time": 0, "eye": [0, 4, 9], "target": [0, 0, 0],
-                                   "light_position": [0, 5, 0]}, {"time": 1, "eye": [0, 4, 9], "target": [0, 0, 0]}]})"),
+                                   "light_position": [0, 5, 0]},
+                                  {"time": 1, "eye": [0, 4, 9], "target": [0, 0, 0]}]})"),
                        {"keyframes[1]", "every keyframe or in none"});
     test::checkMessage(errorOf(R"({"keyframes": [{"time": 0, "eye": [0, 4, 9], "target": [0, 0, 0],
                                    "light_direction": [0, 1, 0]}, {"time": 1, "eye": [0, 4, 9], "target": [0, 0, 0],
@@ -130,6 +131,7 @@ TEST_CASE("keyframes read from CSV, and every mistake in the file names its line
     test::checkMessage(errorOf(header + "0,0,4,9,0,0,inf\n"), {"line 2", "target_z"});
     test::checkMessage(errorOf(header + "0,0,4,1e39,0,0,0\n"), {"line 2", "eye_z"});
     test::checkMessage(errorOf(header + "1,0,4,9,0,0,0\n0,0,4,8,0,0,0\n"), {"line 3", "times must increase"});
+    test::checkMessage(errorOf(header + "-1e308,0,4,9,0,0,0\n1e308,0,4,8,0,0,0\n"), {"line 3", "span"});
     // A point light's path names positions; light_direction is for a directional light.
     test::checkMessage(errorOf("time,eye_x,eye_y,eye_z,target_x,target_y,target_z,light_direction_x,"
                                "light_direction_y,light_direction_z\n"), {"line 1", "light_position"});
