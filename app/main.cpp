@@ -118,15 +118,16 @@ struct RenderArgs {
 
 // The pictures the JSON of --error-map names, relative to it, for `shadowlab report`: the
 // -o image, the error map, the technique's debug buffers and the reference's image, written
-// here beside the error map as E-reference-image.png (and E-reference-visibility.png).
+// here beside the JSON as J-reference-image.png (and J-reference-visibility.png), so that
+// the folders of the other pictures get nothing they did not ask for.
 FrameImages scoreImages(const RenderArgs& a, const std::string& technique, const Frame& referenceFrame) {
-    const std::filesystem::path base = std::filesystem::path(a.json).parent_path(), errorMap = a.errorMap;
-    const std::string name = errorMap.stem().string() + "-reference";
-    const FrameImages reference = writeFramePictures(base, errorMap.parent_path(), name, referenceFrame, nullptr,
-                                                     {a.exposure, ToneOperator::Reinhard});
+    const std::filesystem::path json = a.json, base = json.parent_path();
+    const std::string name = json.stem().string() + "-reference";
+    const FrameImages reference =
+        writeFramePictures(base, base, name, referenceFrame, nullptr, {a.exposure, ToneOperator::Reinhard});
     FrameImages images;
     if (!a.png.empty()) images.image = relativePath(a.png, base);
-    images.errorMap = relativePath(errorMap, base);
+    images.errorMap = relativePath(a.errorMap, base);
     images.referenceImage = reference.image;
     images.referenceVisibility = reference.visibility;
     if (!a.debugDir.empty()) images.debugBuffers = debugPictures(base, a.debugDir, technique);
@@ -389,7 +390,10 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     r->add_option("--exposure", a.exposure, "exposure in stops for the PNG")->capture_default_str();
     CLI::Option* errorMap = r->add_option("--error-map", a.errorMap,
         "also render the exact reference; PNG of false shadow (red) and false light (blue) over the dimmed image");
-    r->add_option("--json", a.json, "with --error-map: error figures, technique stats and time as JSON")->needs(errorMap);
+    r->add_option("--json", a.json,
+                  "with --error-map: error figures, technique stats, time and the pictures as JSON; writes the "
+                  "reference's image (and V) beside it as JSON-STEM-reference-image.png (-visibility.png)")
+        ->needs(errorMap);
     r->add_option("--reference", a.reference, "with --error-map: the technique to score against (default: the one the technique names, reference or reference-soft)")->needs(errorMap);
     addProgressFlag(r, a.progress);
     r->callback([&a] { withThreads(a.threads, [&a] { runRender(a); }); });
