@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 app=${SHADOWLAB:-build/app/shadowlab}
 export app
 if [ $# -eq 0 ]; then
-  set -- $(ls scripts/lessons | sed -n 's/\.sh$//p')
+  set -- $(ls scripts/lessons | sed -n 's/^\([0-9].*\)\.sh$/\1/p')   # not common.sh
 fi
 for lesson in "$@"; do
   script=scripts/lessons/$lesson.sh

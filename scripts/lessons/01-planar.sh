@@ -4,7 +4,7 @@
 # no shadow off the plane as the light moves, and shadows cast backward on backward-cast.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
-figures="python3 scripts/lessons/lesson_figures.py"
+. scripts/lessons/common.sh
 
 # shot NAME SCENE [RENDER ARGS...]: image, error map, figures and buffers into $scratch/NAME*
 shot() {

@@ -5,7 +5,7 @@
 # into leaks and the resolution moves the staircase.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
-figures="python3 scripts/lessons/lesson_figures.py"
+. scripts/lessons/common.sh
 close="--eye -1.5,2.2,-4.5 --target 1.2,0.3,-1 --fovy 45"
 
 # shot NAME [RENDER ARGS...]: sphere-box's image, error map, figures and buffers into $scratch/NAME*

@@ -5,13 +5,8 @@
 # noise against filter-taps, and the light's centre standing in for the disk as it grows.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
-figures="python3 scripts/lessons/lesson_figures.py"
-# ImageMagick, without the time stamps it would write into each PNG (same bytes every run).
-convert="convert -define png:exclude-chunks=date,time"
-if ! command -v convert > /dev/null; then
-  echo "03-filtering-and-pcss.sh: needs ImageMagick's convert (apt-get install imagemagick)" >&2
-  exit 1
-fi
+. scripts/lessons/common.sh
+need_convert
 close="--eye -0.5,3.2,3.8 --target -0.4,0.4,-0.6 --fovy 40"
 
 # shot NAME TECHNIQUE [RENDER ARGS...]: sphere-box's image, buffers, error map and figures

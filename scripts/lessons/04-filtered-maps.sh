@@ -5,13 +5,8 @@
 # against bleeding-reduction, the four moment kinds side by side, and the filter's width.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
-figures="python3 scripts/lessons/lesson_figures.py"
-# ImageMagick, without the time stamps it would write into each PNG (same bytes every run).
-convert="convert -define png:exclude-chunks=date,time"
-if ! command -v convert > /dev/null; then
-  echo "04-filtered-maps.sh: needs ImageMagick's convert (apt-get install imagemagick)" >&2
-  exit 1
-fi
+. scripts/lessons/common.sh
+need_convert
 scene=scenes/soft/torus-over-plane.json
 size="--width 480 --height 300 --threads 2"
 # The enlarged part of the image where the torus's shadow leaves the green plane's umbra.

@@ -5,7 +5,7 @@
 # cascades and the split scheme, then LiSPSM's warp and its dueling-frusta limit.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
-figures="python3 scripts/lessons/lesson_figures.py"
+. scripts/lessons/common.sh
 scene=scenes/hard/sun.json
 view="--eye -3.2,1.1,1.8 --target 0,0.2,-1 --fovy 55"
 

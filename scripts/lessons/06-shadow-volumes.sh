@@ -5,7 +5,7 @@
 # the wrong start and z-fail does not; the fill each mode costs.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
-figures="python3 scripts/lessons/lesson_figures.py"
+. scripts/lessons/common.sh
 inside="--eye -1,0.5,-0.8 --target 2,0.6,-1 --fovy 60"
 
 # shot NAME [RENDER ARGS...]: sphere-box's image, error map, figures and buffers into $scratch/NAME*

@@ -5,13 +5,8 @@
 # never V, and a grazing light, which lengthens the lists.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
-figures="python3 scripts/lessons/lesson_figures.py"
-# ImageMagick, without the time stamps it would write into each PNG (same bytes every run).
-convert="convert -define png:exclude-chunks=date,time"
-if ! command -v convert > /dev/null; then
-  echo "07-irregular-z-buffer.sh: needs ImageMagick's convert (apt-get install imagemagick)" >&2
-  exit 1
-fi
+. scripts/lessons/common.sh
+need_convert
 work=receiver_pixels,resolution_texels,list_max_receivers,list_mean_nonempty_receivers,empty_texels_percent
 work=$work,texel_triangle_pairs_count,segment_tests_count
 

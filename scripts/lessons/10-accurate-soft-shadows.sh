@@ -4,22 +4,9 @@
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch. Needs rsvg-convert
 # (librsvg) to turn backprojection's light plot into a PNG.
 set -eu
+. scripts/lessons/common.sh
 size="--width 480 --height 300 --threads 2"
 view="--eye -3,5,4.5 --target -0.3,0.3,-0.6 --light-radius 1"
-
-# render NAME SCENE TECHNIQUE [ARGS]: the image, its error map against the exact soft
-# reference (reference-soft, 32 x 32 rays a pixel) and the figures, as $scratch/NAME.png,
-# NAME-error.png and NAME.json.
-render() {
-  name=$1 scene=$2 technique=$3
-  shift 3
-  nice -n 10 "$app" render "$scene" --technique "$technique" $size "$@" -o "$scratch/$name.png" \
-    --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
-}
-# show FILE ...: copies the pictures the page shows from $scratch into the lesson's images.
-show() { for file in "$@"; do cp "$scratch/$file.png" "$images/$file.png"; done; }
-# keep DEBUG_NAME SHOWN_NAME: copies one debug buffer's PNG into the lesson's images.
-keep() { cp "$scratch/debug/$1.png" "$images/$2.png"; }
 
 rm -rf "$scratch/debug"
 # 1. The min/max hierarchy, as PCSS builds and reads it (the same V with it on or off).

@@ -5,36 +5,35 @@
 # against the exact integral (reference-env, 2 x 1024 samples a pixel), which each run
 # renders again: 3 to 4 minutes a run on 2 shared cores, 23 minutes for the lesson.
 set -eu
+. scripts/lessons/common.sh
 scene=scenes/environment/bunny-interior.json
 size="--width 480 --height 300 --threads 2"
 
 nice -n 10 "$app" render "$scene" --technique reference-env $size -o "$images/reference.png" \
   > "$scratch/reference.log"
 
-# render NAME TECHNIQUE [ARGS]: the image and its figures against reference-env in
-# $scratch/NAME.json (the error map, a classification at V = 0.5, means little for radiance
-# and stays in $scratch).
-render() {
+# render_image NAME TECHNIQUE [ARGS]: the image, shown, and its figures against reference-env
+# in $scratch/NAME.json (the error map, a classification at V = 0.5, means little for
+# radiance and stays in $scratch).
+render_image() {
   name=$1 technique=$2
   shift 2
-  nice -n 10 "$app" render "$scene" --technique "$technique" $size "$@" -o "$images/$name.png" \
-    --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
+  render "$name" "$scene" "$technique" "$@"
+  show "$name"
 }
-# keep DEBUG_NAME SHOWN_NAME: copies one debug buffer's PNG into the lesson's images.
-keep() { cp "$scratch/debug/$1.png" "$images/$2.png"; }
 
 # The stages at N = 40 lights and sampling detail 1/16: the lights on the map, C, S, S'.
 rm -rf "$scratch/debug"
-render subtractive-40-1-16 env-subtractive --param lights=40 --param sampling-detail=1/16 \
+render_image subtractive-40-1-16 env-subtractive --param lights=40 --param sampling-detail=1/16 \
   --debug-buffers "$scratch/debug"
 for buffer in lights C S S-resampled sh-irradiance; do keep "env-subtractive-$buffer" "$buffer"; done
 
 # Illumination detail N, additive against subtractive; then the sampling detail.
 for n in 10 40; do
-  render "additive-$n" env-additive --param lights=$n
-  render "subtractive-$n" env-subtractive --param lights=$n
+  render_image "additive-$n" env-additive --param lights=$n
+  render_image "subtractive-$n" env-subtractive --param lights=$n
 done
-render subtractive-40-1-256 env-subtractive --param lights=40 --param sampling-detail=1/256
+render_image subtractive-40-1-256 env-subtractive --param lights=40 --param sampling-detail=1/256
 
 python3 - "$scratch" <<'PY'
 import json, sys

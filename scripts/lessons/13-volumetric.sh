@@ -5,22 +5,10 @@
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch. Needs rsvg-convert
 # (librsvg) to turn the transmittance curve plots into PNGs.
 set -eu
+. scripts/lessons/common.sh
 size="--width 480 --height 300 --threads 2"
 sheets=scenes/volumetric/stacked-sheets.json
 
-# render NAME SCENE TECHNIQUE [ARGS]: the image, its error map against the exact reference
-# (one Embree ray a pixel, multiplying what each surface lets through) and the figures, as
-# $scratch/NAME.png, NAME-error.png and NAME.json.
-render() {
-  name=$1 scene=$2 technique=$3
-  shift 3
-  nice -n 10 "$app" render "$scene" --technique "$technique" $size "$@" -o "$scratch/$name.png" \
-    --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
-}
-# show FILE ...: copies the pictures the page shows from $scratch into the lesson's images.
-show() { for file in "$@"; do cp "$scratch/$file.png" "$images/$file.png"; done; }
-# keep DEBUG_NAME SHOWN_NAME: copies one debug buffer's PNG into the lesson's images.
-keep() { cp "$scratch/debug/$1.png" "$images/$2.png"; }
 # curve TECHNIQUE SHOWN_NAME: the plot of the busiest texel's curve, exact against kept.
 curve() {
   plot=$(ls "$scratch/debug/$1"-curve-*.svg | head -n 1)

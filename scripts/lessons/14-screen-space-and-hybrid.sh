@@ -3,21 +3,10 @@
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch. Needs rsvg-convert
 # (librsvg) to turn the march plot into a PNG.
 set -eu
+. scripts/lessons/common.sh
+size="--threads 2"   # each scene at its own size
 box=scenes/hard/box-contact.json
 branch=scenes/soft/branch-over-crate.json
-
-# render NAME SCENE TECHNIQUE [ARGS]: the image, its error map against the technique's exact
-# reference and the figures, as $scratch/NAME.png, NAME-error.png and NAME.json.
-render() {
-  name=$1 scene=$2 technique=$3
-  shift 3
-  nice -n 10 "$app" render "$scene" --technique "$technique" --threads 2 "$@" -o "$scratch/$name.png" \
-    --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" > "$scratch/$name.log"
-}
-# show FILE ...: copies the pictures the page shows from $scratch into the lesson's images.
-show() { for file in "$@"; do cp "$scratch/$file.png" "$images/$file.png"; done; }
-# keep DEBUG_NAME SHOWN_NAME: copies one debug buffer's PNG into the lesson's images.
-keep() { cp "$scratch/debug/$1.png" "$images/$2.png"; }
 
 rm -rf "$scratch/debug"
 # 1. Contact shadows: the map alone, then the map and the march at three lengths, and the
@@ -34,14 +23,14 @@ render box-contact-1 "$box" contact-shadows --param march-length=1
 render box-march-alone "$box" contact-shadows --param shadow-map=off
 
 # 2. The hybrid: PCSS and the irregular z-buffer alone, then blended at two pairs of distances.
-size="--width 480 --height 300"
-nice -n 10 "$app" render "$branch" --technique reference-soft --threads 2 $size -o "$images/branch-reference.png" \
+branch_size="--width 480 --height 300"
+nice -n 10 "$app" render "$branch" --technique reference-soft --threads 2 $branch_size -o "$images/branch-reference.png" \
   > "$scratch/branch-reference.log"
-render branch-pcss "$branch" pcss $size
-render branch-izb "$branch" izb $size --reference reference-soft
-render branch-hybrid "$branch" izb-pcss $size --debug-buffers "$scratch/debug"
+render branch-pcss "$branch" pcss $branch_size
+render branch-izb "$branch" izb $branch_size --reference reference-soft
+render branch-hybrid "$branch" izb-pcss $branch_size --debug-buffers "$scratch/debug"
 for buffer in blend-weight izb pcss blocker-distance; do keep "izb-pcss-$buffer" "hybrid-$buffer"; done
-render branch-hybrid-wide "$branch" izb-pcss $size --param hard-below=0.5 --param soft-above=1.5
+render branch-hybrid-wide "$branch" izb-pcss $branch_size --param hard-below=0.5 --param soft-above=1.5
 show box-shadow-map-error box-contact-0.05-error box-contact-0.25-error box-contact-1-error \
   box-march-alone-error branch-pcss-error branch-izb-error branch-hybrid branch-hybrid-error \
   branch-hybrid-wide-error
