@@ -8,12 +8,12 @@ set -eu
 . scripts/lessons/common.sh
 close="--eye -1.5,2.2,-4.5 --target 1.2,0.3,-1 --fovy 45"
 
+size="--width 480 --height 300 --threads 2"
+
 # shot NAME [RENDER ARGS...]: sphere-box's image, error map, figures and buffers into $scratch/NAME*
 shot() {
   name=$1; shift
-  "$app" render scenes/sphere-box.json --technique shadow-map "$@" --width 480 --height 300 --threads 2 \
-    -o "$scratch/$name.png" --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" \
-    --debug-buffers "$scratch/$name-buffers" > "$scratch/$name.log"
+  render "$name" scenes/sphere-box.json shadow-map "$@" --debug-buffers "$scratch/$name-buffers"
 }
 
 # The stages from the scene's camera: the depth map, the texel density, V.

@@ -8,12 +8,12 @@ set -eu
 . scripts/lessons/common.sh
 inside="--eye -1,0.5,-0.8 --target 2,0.6,-1 --fovy 60"
 
+size="--width 480 --height 300 --threads 2"
+
 # shot NAME [RENDER ARGS...]: sphere-box's image, error map, figures and buffers into $scratch/NAME*
 shot() {
   name=$1; shift
-  "$app" render scenes/sphere-box.json --technique shadow-volume "$@" --width 480 --height 300 --threads 2 \
-    -o "$scratch/$name.png" --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" \
-    --debug-buffers "$scratch/$name-buffers" > "$scratch/$name.log"
+  render "$name" scenes/sphere-box.json shadow-volume "$@" --debug-buffers "$scratch/$name-buffers"
 }
 
 # The stages from the scene's camera (auto: z-pass here), and z-fail's fill with its caps.
