@@ -5,7 +5,7 @@
 # caster level of detail, and differential rendering into photographs (the Figure 3 table is
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
 # docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
-# cores, more for the sweeps' pictures (README, "Report"), and half an hour for the
+# cores, more for the sweeps' pictures (README, "Report"), and ten minutes for the
 # fly-throughs; run nothing else meanwhile (times are medians, but a busy machine still
 # moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
