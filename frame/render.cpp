@@ -63,6 +63,10 @@ void applyOverrides(Scene& scene, const SceneOverrides& o) {
     if (o.lightPosition) {
         requireFinite(*o.lightPosition, "--light-pos");
         if (scene.lights.empty()) throw std::invalid_argument("--light-pos: the scene has no light");
+        // A sun has a direction and no position: moving it would silently change nothing.
+        if (scene.lights[0].type == LightType::Directional)
+            throw std::invalid_argument("--light-pos: the scene's first light is directional, which has no position "
+                                        "(its direction is set in the scene file)");
         scene.lights[0].position = *o.lightPosition;
     }
     if (o.lightRadius) applyLightRadius(scene, *o.lightRadius);

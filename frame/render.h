@@ -30,7 +30,8 @@ struct SceneOverrides {
 // Applies the overrides; throws std::invalid_argument for a size outside 1..8192, a fovy
 // outside (0, 180), a non-finite vector, an eye equal to the target or a viewing direction
 // parallel to the camera's up (the scene file's rule, viewFrameProblem), or a light radius
-// that is not > 0 (and finite) or whose first light is not a disk.
+// that is not > 0 (and finite) or whose first light is not a disk, or a light position for
+// a directional first light (which has none).
 void applyOverrides(Scene& scene, const SceneOverrides& overrides);
 
 struct Frame {
