@@ -7,15 +7,15 @@
 
 #include <tbb/info.h>
 
+#include "app/svg.h"
 #include "app/sweep.h"
+#include "frame/frame_images.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"
 #include "scenes/camera_path.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_limits.h"
-#include "app/svg.h"
-#include "frame/frame_images.h"
 
 namespace shadowlab {
 namespace {
@@ -48,11 +48,11 @@ CameraPath loadPath(const FlythroughOptions& options, const Scene& scene) {
     return scene.flythrough;
 }
 
-// The previous frame of a series, to measure flicker against.
+// One technique setting along the path, with its frame before, to measure flicker against.
 struct SeriesState {
     const Technique* technique;
     FlythroughSeries series;
-    ImageChannels previous;   // scoredImage() of the frame before
+    ImageChannels previous;            // scoredImage() of the frame before
     std::filesystem::path framesDir;   // where its frames' PNGs go; empty: nowhere
 };
 
