@@ -19,7 +19,7 @@ build=${1:-build-asan}
 seconds=${2:-60}
 shift $(( $# < 2 ? $# : 2 ))
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(scene_file compositing_file obj_reader ply_reader exr_reader environment_file)
+[[ ${#targets[@]} -gt 0 ]] || targets=(scene_file compositing_file camera_path obj_reader ply_reader exr_reader environment_file)
 
 # Extra seeds beside tests/fuzz/corpus/<target>: the built-in scene files (copied, since
 # libFuzzer reads folders recursively and scenes/ also holds sources and large meshes) and
@@ -29,6 +29,7 @@ for file in scenes/*.json scenes/*/*.json; do cp "$file" "$build/fuzz/seeds/scen
 declare -A more_seeds=(
   [scene_file]="$build/fuzz/seeds/scene_file"
   [compositing_file]="scenes/compositing"
+  [camera_path]="scenes/flythrough"
   [obj_reader]="tests/fuzz/meshes"
   [ply_reader]="tests/fuzz/meshes"
   [exr_reader]=""
@@ -38,7 +39,7 @@ declare -A more_seeds=(
 # 8192 x 8192 floats or a tile of 16 (256 MB); a scene's vectors of 2^25 triangles (400 MB,
 # twice that while growing); an environment map of 8192^2 RGB floats (805 MB). A larger one
 # is a finding (the EXR headers that asked for 2 GB).
-declare -A malloc_limit_mb=([scene_file]=2048 [compositing_file]=2048 [obj_reader]=2048 [ply_reader]=2048 [exr_reader]=1024 [environment_file]=1024)
+declare -A malloc_limit_mb=([scene_file]=2048 [compositing_file]=2048 [camera_path]=1024 [obj_reader]=2048 [ply_reader]=2048 [exr_reader]=1024 [environment_file]=1024)
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p "$build/fuzz/artifacts"
 for target in "${targets[@]}"; do
