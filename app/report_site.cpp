@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <utility>
+#include <variant>
 
 #include "app/report_assets.h"
 #include "app/report_pages.h"
@@ -40,15 +41,12 @@ SweepResults renderAsSweep(ScoreRecord record) {
 }
 
 ReportSource readSource(const std::string& file) {
-    const std::string text = readWholeFile(file);
+    std::variant<SweepResults, ScoreRecord> parsed = parseResultsJson(readWholeFile(file), file);
     ReportSource source;
     source.file = file;
-    if (resultsKind(text, file) == ResultsKind::Sweep) {
-        source.results = parseSweepJson(text, file);
-    } else {
-        source.render = true;
-        source.results = renderAsSweep(parseScoreJson(text, file));
-    }
+    source.render = std::holds_alternative<ScoreRecord>(parsed);
+    source.results = source.render ? renderAsSweep(std::get<ScoreRecord>(std::move(parsed)))
+                                   : std::get<SweepResults>(std::move(parsed));
     return source;
 }
 

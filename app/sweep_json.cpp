@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
@@ -148,19 +149,38 @@ FrameImages readImages(const Json& j) {
     return images;
 }
 
-SweepRow readRow(const Json& j) {
+// The fields a sweep's row and a render's JSON share: what was run, against what, how
+// well, its stats and its pictures.
+SweepRow readScoredRow(const Json& j) {
     SweepRow r;
-    r.setting = j.at("setting").get<uint64_t>();
     r.technique = j.at("technique").get<std::string>();
     r.reference = j.at("reference").get<std::string>();
     r.settings = j.at("settings").get<std::map<std::string, std::string>>();
-    r.threads = j.at("threads").get<int>();
-    r.medianMs = number(j.at("median_ms"));
-    r.minMs = number(j.at("min_ms"));
     r.errors = readErrors(j.at("errors"));
     for (const auto& [name, value] : j.at("stats").items()) r.stats.push_back({name, number(value)});
     if (j.contains("images")) r.images = readImages(j.at("images"));
     return r;
+}
+
+SweepRow readRow(const Json& j) {
+    SweepRow r = readScoredRow(j);
+    r.setting = j.at("setting").get<uint64_t>();
+    r.threads = j.at("threads").get<int>();
+    r.medianMs = number(j.at("median_ms"));
+    r.minMs = number(j.at("min_ms"));
+    return r;
+}
+
+// A render's one frame: technique_ms is its median and minimum; threads 0 (not recorded).
+ScoreRecord readScore(const Json& j) {
+    try {
+        ScoreRecord record{j.at("scene").get<std::string>(), readScoredRow(j)};
+        record.row.threads = 0;
+        record.row.medianMs = record.row.minMs = number(j.at("technique_ms"));
+        return record;
+    } catch (const Json::exception& error) {
+        throw std::runtime_error(std::string("not the JSON of render --error-map --json: ") + error.what());
+    }
 }
 
 SweepResults readSweep(const Json& j) {
@@ -217,39 +237,16 @@ SweepResults parseSweepJson(const std::string& text, const std::string& file) {
     }
 }
 
-ScoreRecord parseScoreJson(const std::string& text, const std::string& file) {
+std::variant<SweepResults, ScoreRecord> parseResultsJson(const std::string& text, const std::string& file) {
     try {
         const Json j = parseOrderedJson(text);
-        ScoreRecord record;
-        record.scene = j.at("scene").get<std::string>();
-        SweepRow& r = record.row;
-        r.technique = j.at("technique").get<std::string>();
-        r.reference = j.at("reference").get<std::string>();
-        r.settings = j.at("settings").get<std::map<std::string, std::string>>();
-        r.threads = 0;
-        r.medianMs = r.minMs = number(j.at("technique_ms"));
-        r.errors = readErrors(j.at("errors"));
-        for (const auto& [name, value] : j.at("stats").items()) r.stats.push_back({name, number(value)});
-        if (j.contains("images")) r.images = readImages(j.at("images"));
-        return record;
-    } catch (const Json::exception& error) {
-        throw std::runtime_error(file + ": not the JSON of render --error-map --json: " + error.what());
+        if (j.is_object() && j.contains("grid") && j.contains("rows")) return readSweep(j);
+        if (j.is_object() && j.contains("technique_ms") && j.contains("errors")) return readScore(j);
+        throw std::runtime_error("neither a sweep's JSON (with grid and rows) nor that of render --error-map --json "
+                                 "(with technique_ms and errors)");
     } catch (const std::runtime_error& error) {
         throw std::runtime_error(file + ": " + error.what());
     }
-}
-
-ResultsKind resultsKind(const std::string& text, const std::string& file) {
-    Json j;
-    try {
-        j = parseOrderedJson(text);
-    } catch (const std::runtime_error& error) {
-        throw std::runtime_error(file + ": " + error.what());
-    }
-    if (j.is_object() && j.contains("grid") && j.contains("rows")) return ResultsKind::Sweep;
-    if (j.is_object() && j.contains("technique_ms") && j.contains("errors")) return ResultsKind::Score;
-    throw std::runtime_error(file + ": neither a sweep's JSON (with grid and rows) nor that of render --error-map "
-                                    "--json (with technique_ms and errors)");
 }
 
 std::string sweepDifference(const SweepResults& a, const SweepResults& b) {

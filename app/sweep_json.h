@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <variant>
 
 #include "app/sweep.h"
 
@@ -25,17 +26,16 @@ SweepResults parseSweepJson(const std::string& text, const std::string& file);
 
 // The JSON of `render --error-map E --json J` (frame/score.h, formatScoreJson) as the one
 // row a report shows of it: technique_ms is its median and minimum time, threads 0 (the
-// file does not say). Throws std::runtime_error naming `file` and the problem.
+// file does not say).
 struct ScoreRecord {
     std::string scene;
     SweepRow row;
 };
-ScoreRecord parseScoreJson(const std::string& text, const std::string& file);
 
-// Which of the two a file's text is, told apart by their fields ("grid" and "rows", or
-// "technique_ms" and "errors"); throws std::runtime_error naming `file` if it is neither.
-enum class ResultsKind { Sweep, Score };
-ResultsKind resultsKind(const std::string& text, const std::string& file);
+// A report's input, parsed once: a sweep's JSON (as parseSweepJson) or a render's, told
+// apart by their fields ("grid" and "rows", or "technique_ms" and "errors"). Throws
+// std::runtime_error naming `file` and the problem, also for a file that is neither.
+std::variant<SweepResults, ScoreRecord> parseResultsJson(const std::string& text, const std::string& file);
 
 // "" if a and b are parts of one sweep: the same scene and SweepResults::techniques and
 // the same SweepGrid. Otherwise the first field that differs and both values, a's first:
