@@ -52,20 +52,9 @@ CameraPath loadPath(const FlythroughOptions& options, const Scene& scene) {
 struct SeriesState {
     const Technique* technique;
     FlythroughSeries series;
-    ImageChannels previous;            // scoredImage() of the frame before
-    std::filesystem::path framesDir;   // where its frames' PNGs go; empty: nowhere
+    ImageChannels previous;              // scoredImage() of the frame before
+    std::filesystem::path picturesDir;   // its frames' NNNN-image.png, ...; empty: none
 };
-
-// A series' frame as NNNN-image.png, NNNN-error-map.png and NNNN-visibility.png in the
-// series' own directory.
-void writeFrameImages(const std::filesystem::path& framesDir, const FlythroughSeries& series, int frame,
-                      const ImageChannels& reference, const Frame& rendered) {
-    std::string name = series.label();
-    std::ranges::replace(name, ' ', '_');
-    const std::filesystem::path dir = framesDir / name;
-    const std::string number = svg::format("%04d", frame);
-    writeFramePictures(dir, dir, number, rendered, &reference);
-}
 
 FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels& reference,
                              const ImageChannels* previousReference, SeriesState& state,
@@ -77,8 +66,10 @@ FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels&
     frame.medianMs = timed.timing.medianMs;
     frame.minMs = timed.timing.minMs;
     frame.errors = scoreFrame(reference, timed.last);
-    if (!state.framesDir.empty())
-        writeFrameImages(state.framesDir, state.series, int(state.series.frames.size()), reference, timed.last);
+    if (!state.picturesDir.empty()) {
+        const std::string number = svg::format("%04d", int(state.series.frames.size()));
+        writeFramePictures(state.picturesDir, state.picturesDir, number, timed.last, &reference);
+    }
     ImageChannels scored = scoredImage(timed.last);
     if (previousReference)
         frame.flicker =
@@ -86,7 +77,6 @@ FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels&
     state.previous = std::move(scored);
     return frame;
 }
-
 
 // A frame of the path: where it is, and the camera and lights placed there.
 struct PathFrame {
@@ -109,14 +99,15 @@ std::vector<PathFrame> placeWholePath(const CameraPath& path, int frames, const 
 std::vector<SeriesState> seriesStates(const std::vector<SweepPlan>& plans, const FlythroughOptions& options,
                                       const std::string& scene) {
     const std::filesystem::path framesDir =
-        options.imagesDir.empty() ? std::filesystem::path()
-                                  : std::filesystem::path(options.imagesDir) /
-                                        (flythroughFileStem(scene, options.techniques) + "-frames");
+        options.imagesOutDir / (flythroughFileStem(scene, options.techniques) + "-frames");
     std::vector<SeriesState> states;
     for (const SweepPlan& plan : plans) {
         for (const PlannedSetting& setting : plan.settings) {
             const FlythroughSeries series{plan.technique->name, plan.technique->referenceName, setting.params, {}};
-            states.push_back({plan.technique, series, {}, framesDir});
+            std::string folder = series.label();
+            std::ranges::replace(folder, ' ', '_');
+            states.push_back({plan.technique, series, {},
+                              options.imagesOutDir.empty() ? std::filesystem::path() : framesDir / folder});
         }
     }
     return states;

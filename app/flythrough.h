@@ -7,6 +7,7 @@
 // have is counted.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,10 +33,11 @@ struct FlythroughOptions {
     int threads = 0;                         // 0: all cores
     int warmupRuns = 1, runs = 3;
     float stableTolerance = kStableReferenceTolerance;
-    // Each frame's image, error map and V as PNG, DIR/STEM-frames/SERIES/NNNN-image.png,
-    // NNNN-error-map.png and NNNN-visibility.png (STEM: flythroughFileStem; SERIES: the
-    // label, '_' for spaces), e.g. to make a video; empty: none.
-    std::string imagesDir;
+    // Non-empty: the directory the command's files go to; each frame's image, error map and V
+    // are written as PNG into DIR/STEM-frames/SERIES/NNNN-image.png, NNNN-error-map.png and
+    // NNNN-visibility.png (STEM: flythroughFileStem; SERIES: the label, '_' for spaces), e.g.
+    // to make a video.
+    std::filesystem::path imagesOutDir;
     raster::SimdLevel simd = raster::bestSimdLevel();
     Progress* progress = nullptr;
 };

@@ -88,9 +88,10 @@ std::string formatFlythroughCsv(const FlythroughResults& results) {
             for (double x : {f.medianMs, f.minMs, e.rms, e.maxAbs, e.percentOfPixels(e.misclassified()),
                              e.percentOfPixels(e.falseShadow), e.percentOfPixels(e.falseLight)})
                 fields.push_back(csvNumber(x));
-            for (double x : {f.flicker ? f.flicker->mean : NAN, f.flicker ? f.flicker->p99 : NAN,
-                             f.flicker ? f.flicker->stablePercent() : NAN})
-                fields.push_back(f.flicker ? csvNumber(x) : "");
+            if (!f.flicker) fields.insert(fields.end(), 3, "");   // frame 0 has nothing to differ from
+            else
+                for (double x : {f.flicker->mean, f.flicker->p99, f.flicker->stablePercent()})
+                    fields.push_back(csvNumber(x));
             csv += csvLine(fields);
         }
     }

@@ -260,7 +260,7 @@ void runFlythroughCommand(FlythroughArgs a) {
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
     a.options.simd = raster::parseSimdLevel(a.simd);
     std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
-    if (a.images) a.options.imagesDir = a.outDir;
+    if (a.images) a.options.imagesOutDir = a.outDir;
     const FlythroughResults results = runFlythrough(a.options);
     std::cout << formatFlythroughText(results);
     const std::filesystem::path stem =

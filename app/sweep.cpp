@@ -78,7 +78,7 @@ std::string statValue(const SweepRow& row, const std::string& name) {
     return stat == row.stats.end() ? "" : csvNumber(stat->value);
 }
 
-// A reference as the settings are scored against it, and its pictures (with imagesDir).
+// A reference as the settings are scored against it, and its pictures (with imagesOutDir).
 struct RenderedReference {
     ImageChannels scored;
     FrameImages images;

@@ -85,7 +85,7 @@ struct SweepRow {
     double medianMs = 0.0, minMs = 0.0;
     ErrorFigures errors;
     std::vector<TechniqueStat> stats;              // of the last measured frame
-    FrameImages images;                            // with SweepOptions::imagesDir: the same at every thread count
+    FrameImages images;                            // with SweepOptions::imagesOutDir: the same at every thread count
     std::string settingsLabel() const;             // "a=1 b=2", or "defaults"
 };
 

@@ -103,7 +103,7 @@ TEST_CASE("texel snapping removes the flicker a sub-texel camera move causes in 
 TEST_CASE("a fly-through follows the scene's path and writes its table, JSON, plots and frames") {
     const test::ScratchDirectory dir("flythrough_files");
     FlythroughOptions options = smallRun("sphere-box", {"shadow-map"}, 4);
-    options.imagesDir = dir.path.string();
+    options.imagesOutDir = dir.path;
     const FlythroughResults results = runFlythrough(options);
     const std::filesystem::path frames = dir.path / "sphere-box-flythrough-shadow-map-frames" / "shadow-map";
     for (const char* file : {"0000-image.png", "0000-error-map.png", "0003-image.png", "0003-visibility.png"})
