@@ -31,11 +31,8 @@ std::string lastKeyframeProblem(const CameraPath& path, const std::vector<Light>
     const PathKeyframe& key = path.keyframes.back();
     if (key.eye == key.target) return "the eye is on the target";
     if (key.light && lights.empty()) return "the scene has no light to move";
-    if (path.keyframes.size() == 1) {
-        if (key.light && lightIsDirection(lights) && key.light == glm::vec3(0.0f))
-            return "the light's direction is zero";
-        return {};
-    }
+    if (key.light && lightIsDirection(lights) && *key.light == glm::vec3(0.0f)) return "the light's direction is zero";
+    if (path.keyframes.size() == 1) return {};
     const PathKeyframe& previous = path.keyframes[path.keyframes.size() - 2];
     if (!(key.time > previous.time))
         return "times must increase from keyframe to keyframe, got " + std::to_string(key.time) + " after " +
@@ -45,11 +42,9 @@ std::string lastKeyframeProblem(const CameraPath& path, const std::vector<Light>
         return "the path's times span more than the largest number; use smaller times";
     if (key.light.has_value() != previous.light.has_value())
         return std::string("give ") + lightKey(lights) + " in every keyframe or in none";
-    if (key.light && lightIsDirection(lights)) {
-        if (*key.light == glm::vec3(0.0f)) return "the light's direction is zero";
-        if (glm::dot(glm::normalize(*key.light), glm::normalize(*previous.light)) < kMaxTurnCosine)
-            return "the light turns by more than 170 degrees from the keyframe before; add a keyframe between";
-    }
+    if (key.light && lightIsDirection(lights) &&
+        glm::dot(glm::normalize(*key.light), glm::normalize(*previous.light)) < kMaxTurnCosine)
+        return "the light turns by more than 170 degrees from the keyframe before; add a keyframe between";
     return {};
 }
 
