@@ -1,5 +1,5 @@
 // `planar`: planar projected shadows (Blinn 1988, "Me and My (Fake) Shadow"; RTR 4th ed.,
-// section 7.2; Lehtinen 2015, "Cast Shadows on Planar Surfaces"). Every occluder is drawn
+// section 7.1.1; Lehtinen 2015, "Cast Shadows on Planar Surfaces"). Every occluder is drawn
 // a second time squashed onto the receiver plane y = plane-y by the planar projection
 // matrix, as dark translucent geometry. Passes, into one colour + stencil framebuffer:
 //
@@ -11,7 +11,7 @@
 //   3. shadow pass: every other instance through clipFromWorld * M, colour (0, 0, 0,
 //      opacity) blended over white, stencil test equal 0 with increment: the first
 //      fragment at a pixel blends and lifts the stencil to 1, so overlapping projected
-//      triangles never darken a pixel twice (RTR 7.2, "to avoid double blending").
+//      triangles never darken a pixel twice (RTR 7.1.1, "to avoid double blending").
 //
 // V = 0 where the stencil is 1 (a receiver pixel the projected shadow covers) and outside
 // a spot light's cone, 1 on every other surface. Known failure modes, kept visible on purpose and asserted by the tests:
@@ -20,7 +20,7 @@
 //     through its N.L factor; the V buffer does not);
 //   - receivers below or beside the plane, and objects under it, receive nothing;
 //   - triangles with a vertex as far from the plane as the light, or farther, are not
-//     drawn: M would send them through w <= 0 and cast "anti-shadows" (RTR 7.2); the part
+//     drawn: M would send them through w <= 0 and cast "anti-shadows" (RTR 7.1.1); the part
 //     of an occluder below the plane is projected too (hidden under the occluder as long
 //     as the occluder stands on the plane).
 #include "shadows/planar/planar.h"

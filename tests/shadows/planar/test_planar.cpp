@@ -1,4 +1,4 @@
-// planar (shadows/planar/planar.cpp): the projection matrix of RTR 7.2, the ground shadow against
+// planar (shadows/planar/planar.cpp): the projection matrix of RTR 7.1.1, the ground shadow against
 // the exact reference, the stencil against double blending, and the technique's known
 // failure modes, asserted as such: no self-shadowing (the sphere's own terminator is
 // missed), no shadows on anything but the receiver plane (a box under a slab stays lit).
@@ -70,7 +70,7 @@ TEST_CASE("planar: sphere-box's ground shadow matches the reference, the objects
                     << split.onReceiver.awayFromBoundary << " away from a boundary; elsewhere " << split.elsewhere.count);
     CHECK(split.onReceiver.percent() <= 0.01);
     CHECK(split.onReceiver.awayFromBoundary == 0);
-    // Known failure mode (RTR 7.2; Lehtinen 2015, "Limitations of Planar Shadows"): no
+    // Known failure mode (RTR 7.1.1; Lehtinen 2015, "Limitations of Planar Shadows"): no
     // self-shadows, no shadows on other objects. The sphere's unlit half and the box's
     // faces turned from the light keep V = 1, all of it false light, none false shadow.
     CHECK(split.elsewhereShadowed == 0);
