@@ -65,12 +65,12 @@ FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels&
     FlythroughFrame frame;
     frame.medianMs = timed.timing.medianMs;
     frame.minMs = timed.timing.minMs;
-    frame.errors = scoreFrame(reference, timed.last);
+    ImageChannels scored = scoredImage(timed.last);
+    frame.errors = scoreImage(reference, scored, timed.last.output);
     if (!state.picturesDir.empty()) {
         const std::string number = svg::format("%04d", int(state.series.frames.size()));
         writeFramePictures(state.picturesDir, state.picturesDir, number, timed.last, &reference);
     }
-    ImageChannels scored = scoredImage(timed.last);
     if (previousReference)
         frame.flicker =
             flickerFigures(*previousReference, reference, state.previous, scored, channel::V, options.stableTolerance);

@@ -142,7 +142,7 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
     const Frame referenceFrame = renderReferenceFrame(prepared, settings.simd, referenceName, settings.progress);
     const ImageChannels reference = scoredImage(referenceFrame);
     const ImageChannels test = scoredImage(frame);
-    const ErrorFigures figures = scoreFrame(reference, frame);
+    const ErrorFigures figures = scoreImage(reference, test, frame.output);
     writePng(a.errorMap, scene.camera.width, scene.camera.height,
              errorMapImage(reference, test, frame.radiance, scoredChannel(frame.output)));
     std::cout << "against " << referenceName << "\n" << formatText(figures) << "error map: " << a.errorMap

@@ -53,23 +53,26 @@ ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLe
     return scoredImage(renderReferenceFrame(prepared, simd, referenceName, progress));
 }
 
-ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {
+ErrorFigures scoreImage(const ImageChannels& reference, const ImageChannels& test, TechniqueOutput output) {
     CompareOptions options;
     // Assigned from a std::string: GCC 12 warns falsely (-Wrestrict) on assigning the char*.
-    options.channel = std::string(scoredChannel(frame.output));
+    options.channel = std::string(scoredChannel(output));
     if (!reference.find(options.channel)) {
         std::string why = "the reference has no ";
         why.append(options.channel).append(" channel: a technique is scored against a reference of the same output");
         throw std::invalid_argument(why);
     }
-    const ImageChannels test = scoredImage(frame);
     ErrorFigures figures = compareImages(reference, test, options);
-    if (frame.output == TechniqueOutput::Radiance && reference.find(kDisplayLuminance)) {
+    if (output == TechniqueOutput::Radiance && reference.find(kDisplayLuminance)) {
         CompareOptions display;
         display.channel = kDisplayLuminance;
         figures.rmsDisplay = compareImages(reference, test, display).rms;
     }
     return figures;
+}
+
+ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {
+    return scoreImage(reference, scoredImage(frame), frame.output);
 }
 
 std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,

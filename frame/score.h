@@ -35,10 +35,13 @@ Frame renderReferenceFrame(const PreparedScene& prepared, raster::SimdLevel simd
 ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLevel simd,
                                    const std::string& referenceName = "reference", Progress* progress = nullptr);
 
-// The frame's scored channel against the reference's (compareImages with the default
-// options otherwise); for a radiance frame, also the RMS of the display luminance
-// (ErrorFigures::rmsDisplay). Throws std::invalid_argument if the reference lacks that channel
-// (a radiance technique scored against a visibility reference, or the other way round).
+// The scored channel of `test` (the scoredImage() of a frame whose technique gives `output`)
+// against the reference's (compareImages with the default options otherwise); for radiance,
+// also the RMS of the display luminance (ErrorFigures::rmsDisplay). Throws
+// std::invalid_argument if the reference lacks that channel (a radiance technique scored
+// against a visibility reference, or the other way round).
+ErrorFigures scoreImage(const ImageChannels& reference, const ImageChannels& test, TechniqueOutput output);
+// scoreImage() of the frame's scoredImage(), for a caller that needs no more of it.
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame);
 
 // Error-map colours, 8-bit sRGB. Red and blue as in `shadowlab compare`'s heat map, at
