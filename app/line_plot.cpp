@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/vec2.hpp>
+
 #include "app/svg.h"
 
 namespace shadowlab {
@@ -13,6 +15,18 @@ using svg::format;
 
 constexpr double kWidth = 800, kHeight = 500;
 constexpr double kLeft = 70, kRight = 620, kTop = 40, kBottom = 440;   // the legend sits right of the plot
+// One legend row per series, its name from kLegendText on. 7 units a character is generous
+// for 12-unit sans-serif.
+constexpr double kLegendRow = 18, kLegendText = kRight + 46, kLegendCharWidth = 7;
+
+// The canvas widens for long series names (a fly-through's are its settings) and deepens
+// for many series, so that no legend entry is cut off.
+glm::dvec2 canvasSize(const LinePlot& plot) {
+    size_t longest = 0;
+    for (const PlotSeries& s : plot.series) longest = std::max(longest, s.name.size());
+    return {std::max(kWidth, kLegendText + kLegendCharWidth * double(longest) + 10),
+            std::max(kHeight, kTop + 10 + kLegendRow * double(plot.series.size()))};
+}
 
 struct Axis {
     double step, top;
@@ -48,10 +62,11 @@ std::string formatLinePlotSvg(const LinePlot& plot) {
     const Axis ax(largestX), ay(1.05 * largestY);
     const auto X = [&](double x) { return kLeft + x / ax.top * (kRight - kLeft); };
     const auto Y = [&](double y) { return kBottom - y / ay.top * (kBottom - kTop); };
+    const glm::dvec2 canvas = canvasSize(plot);
     std::string text = format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%.0f" height="%.0f" )"
                               R"(viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="12">)" "\n",
-                              kWidth, kHeight, kWidth, kHeight);
-    text += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", kWidth, kHeight);
+                              canvas.x, canvas.y, canvas.x, canvas.y);
+    text += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", canvas.x, canvas.y);
     text += format(R"(<text x="%.1f" y="24" font-size="14">%s</text>)" "\n", kLeft, svg::escape(plot.title).c_str());
     text += format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n", kLeft,
                    kTop, kRight - kLeft, kBottom - kTop);
@@ -83,10 +98,10 @@ std::string formatLinePlotSvg(const LinePlot& plot) {
                 "\n", X(s.x[k]), Y(s.y[k]), colour, svg::escape(s.name).c_str(), s.x[k], s.y[k]);
             if (!s.labels.empty()) text += svg::label(X(s.x[k]), Y(s.y[k]), s.labels[k], placed, kTop, kBottom);
         }
-        const double legendY = kTop + 10 + 18 * double(i);
+        const double legendY = kTop + 10 + kLegendRow * double(i);
         text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-width="2"/>)" "\n",
                        kRight + 20, legendY - 4, kRight + 40, legendY - 4, colour);
-        text += format(R"(<text x="%.1f" y="%.1f">%s</text>)" "\n", kRight + 46, legendY, svg::escape(s.name).c_str());
+        text += format(R"(<text x="%.1f" y="%.1f">%s</text>)" "\n", kLegendText, legendY, svg::escape(s.name).c_str());
     }
     return text + "</svg>\n";
 }

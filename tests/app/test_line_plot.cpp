@@ -41,3 +41,31 @@ TEST_CASE("line plot: no points, mismatched lengths and negative or non-finite v
     CHECK_THROWS_AS(formatLinePlotSvg({"t", "x", "y", {{"a", {-1}, {1}, {}}}}), std::invalid_argument);
     CHECK_THROWS_AS(formatLinePlotSvg({"t", "x", "y", {{"a", {1}, {std::nan("")}, {}}}}), std::invalid_argument);
 }
+
+// A fly-through names its series by their settings ("chs filter-nodes=4 search-nodes=32"),
+// and a cross product of settings makes many: every legend entry must fit on the canvas.
+TEST_CASE("line plot: the canvas widens for long series names and deepens for many series") {
+    const std::regex size(R"re(<svg [^>]*width="([0-9.]+)" height="([0-9.]+)")re");
+    const auto canvasOf = [&](const LinePlot& plot) {
+        const std::string svg = formatLinePlotSvg(plot);
+        std::smatch m;
+        REQUIRE(std::regex_search(svg, m, size));
+        return std::pair(std::stod(m[1]), std::stod(m[2]));
+    };
+    const std::pair<double, double> plain = canvasOf({"t", "x", "y", {{"a", {1}, {1}, {}}}});
+    CHECK(plain == std::pair(800.0, 500.0));
+
+    const std::string name(60, 'n');   // 60 characters of 12-unit text: at least 300 units wide
+    const std::pair<double, double> wide = canvasOf({"t", "x", "y", {{name, {1}, {1}, {}}}});
+    CHECK(wide.first >= 666.0 + 60 * 6.0);
+    CHECK(wide.second == 500.0);
+
+    LinePlot many{"t", "x", "y", {}};
+    for (int k = 0; k < 40; ++k) many.series.push_back({std::to_string(k), {1}, {double(k)}, {}});
+    const std::string svg = formatLinePlotSvg(many);
+    const std::pair<double, double> deep = canvasOf(many);
+    const std::regex legend(R"re(<text x="666.0" y="([0-9.]+)">39</text>)re");
+    std::smatch m;
+    REQUIRE(std::regex_search(svg, m, legend));
+    CHECK(std::stod(m[1]) + 4.0 <= deep.second);   // the last entry's descent is on the canvas
+}
