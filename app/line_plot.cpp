@@ -15,9 +15,9 @@ using svg::format;
 
 constexpr double kWidth = 800, kHeight = 500;
 constexpr double kLeft = 70, kRight = 620, kTop = 40, kBottom = 440;   // the legend sits right of the plot
-// One legend row per series, its name from kLegendText on. 7 units a character is generous
-// for 12-unit sans-serif.
-constexpr double kLegendRow = 18, kLegendText = kRight + 46, kLegendCharWidth = 7;
+// One legend row per series, its name from kLegendText on. 8 units a character covers
+// 12-unit DejaVu Sans, Debian's sans-serif (digits and most letters 7.6, '=' 10).
+constexpr double kLegendRow = 18, kLegendText = kRight + 46, kLegendCharWidth = 8;
 
 // The canvas widens for long series names (a fly-through's are its settings) and deepens
 // for many series, so that no legend entry is cut off.

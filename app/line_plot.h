@@ -1,7 +1,8 @@
 // A plot of a few series of points joined by lines (SVG, as the sweep and scaling plots):
 // the figures of differential rendering (docs/differential-rendering.md): time against
 // RMS per number of passes, the shadow's depth as the object is lifted, the 8-bit path's
-// error against the share of sources occluded.
+// error against the share of sources occluded; and a fly-through's time, error and flicker
+// per frame (docs/flythrough.md).
 #pragma once
 
 #include <string>

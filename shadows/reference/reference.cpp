@@ -59,7 +59,8 @@ void throwIfEmbreeError(RTCDevice device, const char* what) {
 // not: the tasks of its BVH build, run by TBB's workers, would be reported as races on
 // Embree's task contexts. A TSan build (scripts/tsan.sh) therefore builds the BVH in an arena
 // of one thread, where no worker touches Embree's tasks; every loop of ours stays parallel and
-// checked. The BVH's layout cannot change an answer (see the top of this file).
+// checked. The BVH's layout cannot change an answer (see the top of this file and
+// ShadowRays::passed).
 #if defined(__SANITIZE_THREAD__)
 #define SHADOWLAB_THREAD_SANITIZER 1
 #elif defined(__has_feature)

@@ -55,9 +55,9 @@ TEST_CASE("line plot: the canvas widens for long series names and deepens for ma
     const std::pair<double, double> plain = canvasOf({"t", "x", "y", {{"a", {1}, {1}, {}}}});
     CHECK(plain == std::pair(800.0, 500.0));
 
-    const std::string name(60, 'n');   // 60 characters of 12-unit text: at least 300 units wide
+    const std::string name(60, 'n');   // 'n' is 7.6 units wide in 12-unit DejaVu Sans
     const std::pair<double, double> wide = canvasOf({"t", "x", "y", {{name, {1}, {1}, {}}}});
-    CHECK(wide.first >= 666.0 + 60 * 6.0);
+    CHECK(wide.first >= 666.0 + 60 * 7.6);
     CHECK(wide.second == 500.0);
 
     LinePlot many{"t", "x", "y", {}};

@@ -118,6 +118,11 @@ TEST_CASE("a radiance technique's image is the frame's, scored on its luminance 
     // After Reinhard's c / (1 + Y), for greys Y / (1 + Y): 0.75 / 1.75 - 0.5 / 1.5 = 2 / 21.
     REQUIRE(scoreFrame(scored, brighter).rmsDisplay.has_value());
     CHECK(*scoreFrame(scored, brighter).rmsDisplay == doctest::Approx(2.0 / 21.0).epsilon(1e-5));
+    // scoreImage() of an image the caller already has gives the same figures, to the bit.
+    const ErrorFigures fromImage = scoreImage(scored, scoredImage(brighter), brighter.output);
+    CHECK(fromImage.rms == scoreFrame(scored, brighter).rms);
+    CHECK(fromImage.rmsDisplay == scoreFrame(scored, brighter).rmsDisplay);
+    CHECK_THROWS_AS(scoreImage(scored, scoredImage(brighter), TechniqueOutput::Visibility), std::invalid_argument);
     CHECK_FALSE(scoreFrame(scoredImage(renderFrame(prepared, findTechnique("none"))), renderFrame(prepared, findTechnique("none")))
                     .rmsDisplay.has_value());
     // A radiance frame has no V to score against a visibility reference, and the other way round.
