@@ -17,8 +17,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
-
 void writeImage(const std::filesystem::path& dir, const std::string& name, int width, int height,
                 const std::vector<glm::vec3>& radiance, const ToneMapOptions& tone) {
     ImageChannels image;

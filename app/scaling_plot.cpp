@@ -13,8 +13,8 @@ namespace {
 using svg::format;
 
 // Canvas and plot area in SVG user units, as in the sweep plot.
-constexpr double kWidth = 800, kHeight = 500;
-constexpr double kLeft = 70, kRight = 760, kTop = 40, kBottom = 440;
+constexpr double kCanvasWidth = 800, kCanvasHeight = 500;
+constexpr double kPlotLeft = 70, kPlotRight = 760, kPlotTop = 40, kPlotBottom = 440;
 
 // Linear axes from 0 to a whole number of nice ticks past the largest value.
 struct Axis {
@@ -22,13 +22,13 @@ struct Axis {
     explicit Axis(double largest) : step(svg::niceTickStep(largest)), top(std::max(step, std::ceil(largest / step) * step)) {}
 };
 
-struct Axes {
+struct ScalingAxes {
     Axis n, ms;
-    double x(double triangles) const { return kLeft + triangles / n.top * (kRight - kLeft); }
-    double y(double time) const { return kBottom - time / ms.top * (kBottom - kTop); }
+    double x(double triangles) const { return kPlotLeft + triangles / n.top * (kPlotRight - kPlotLeft); }
+    double y(double time) const { return kPlotBottom - time / ms.top * (kPlotBottom - kPlotTop); }
 };
 
-Axes fitAxes(const ScalingResults& results) {
+ScalingAxes fitAxes(const ScalingResults& results) {
     double largestN = 0.0, largestMs = 0.0;
     for (const ScalingPoint& p : results.points) {
         largestN = std::max(largestN, double(p.triangles));
@@ -37,25 +37,25 @@ Axes fitAxes(const ScalingResults& results) {
     return {Axis(largestN), Axis(1.05 * largestMs)};   // headroom: the slowest point is not on the frame
 }
 
-std::string axesSvg(const Axes& a) {
+std::string axesSvg(const ScalingAxes& a) {
     std::string text = format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n",
-                              kLeft, kTop, kRight - kLeft, kBottom - kTop);
+                              kPlotLeft, kPlotTop, kPlotRight - kPlotLeft, kPlotBottom - kPlotTop);
     for (double n = 0.0; n <= a.n.top * (1 + 1e-9); n += a.n.step) {
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", a.x(n), kTop, a.x(n), kBottom);
-        text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", a.x(n), kBottom + 16, n);
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", a.x(n), kPlotTop, a.x(n), kPlotBottom);
+        text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", a.x(n), kPlotBottom + 16, n);
     }
     for (double t = 0.0; t <= a.ms.top * (1 + 1e-9); t += a.ms.step) {
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kLeft, a.y(t), kRight, a.y(t));
-        text += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kLeft - 6, a.y(t) + 4, t);
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kPlotLeft, a.y(t), kPlotRight, a.y(t));
+        text += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kPlotLeft - 6, a.y(t) + 4, t);
     }
-    text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">triangles n</text>)" "\n", (kLeft + kRight) / 2, kBottom + 40);
+    text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">triangles n</text>)" "\n", (kPlotLeft + kPlotRight) / 2, kPlotBottom + 40);
     text += format(R"svg(<text transform="translate(18 %.1f) rotate(-90)" text-anchor="middle">technique median ms</text>)svg" "\n",
-                   (kTop + kBottom) / 2);
+                   (kPlotTop + kPlotBottom) / 2);
     return text;
 }
 
 // The fitted line where it lies inside the plot: n in [0, n.top] and t in [0, ms.top].
-std::string fitSvg(const ScalingResults& results, const Axes& a) {
+std::string fitSvg(const ScalingResults& results, const ScalingAxes& a) {
     const LineFit& f = results.fit;
     double lo = 0.0, hi = a.n.top;
     if (f.b != 0.0) {
@@ -70,7 +70,7 @@ std::string fitSvg(const ScalingResults& results, const Axes& a) {
                   a.x(lo), a.y(f.at(lo)), a.x(hi), a.y(f.at(hi)), svg::kPalette[1]);
 }
 
-std::string pointsSvg(const ScalingResults& results, const Axes& a) {
+std::string pointsSvg(const ScalingResults& results, const ScalingAxes& a) {
     std::vector<svg::LabelBox> placed;   // labels must not cover any point
     for (const ScalingPoint& p : results.points) {
         const double x = a.x(double(p.triangles)), y = a.y(p.medianMs);
@@ -81,7 +81,7 @@ std::string pointsSvg(const ScalingResults& results, const Axes& a) {
         const double x = a.x(double(p.triangles)), y = a.y(p.medianMs);
         text += format(R"(<circle class="point" cx="%.1f" cy="%.1f" r="4" fill="%s"><title>%s: %llu triangles, %.4g ms</title></circle>)" "\n",
                        x, y, svg::kPalette[0], svg::escape(p.scene).c_str(), (unsigned long long)p.triangles, p.medianMs);
-        text += svg::label(x, y, p.scene, placed, kTop, kBottom);
+        text += svg::label(x, y, p.scene, placed, kPlotTop, kPlotBottom);
     }
     return text;
 }
@@ -90,13 +90,13 @@ std::string pointsSvg(const ScalingResults& results, const Axes& a) {
 
 std::string formatScalingSvg(const ScalingResults& results) {
     if (results.points.empty()) throw std::invalid_argument("scaling plot: no points");
-    const Axes a = fitAxes(results);
+    const ScalingAxes a = fitAxes(results);
     const LineFit& f = results.fit;
     std::string text = format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%.0f" height="%.0f" viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="12">)" "\n",
-                              kWidth, kHeight, kWidth, kHeight);
-    text += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", kWidth, kHeight);
+                              kCanvasWidth, kCanvasHeight, kCanvasWidth, kCanvasHeight);
+    text += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", kCanvasWidth, kCanvasHeight);
     text += format(R"(<text x="%.1f" y="24" font-size="14">%s, %d thread(s): t = %.4g + n / %.4g ms, R&#178; = %.4f</text>)" "\n",
-                   kLeft, svg::escape(results.technique).c_str(), results.threads, f.a, 1.0 / f.b, f.r2);
+                   kPlotLeft, svg::escape(results.technique).c_str(), results.threads, f.a, 1.0 / f.b, f.r2);
     text += axesSvg(a);
     text += fitSvg(results, a);
     text += pointsSvg(results, a);

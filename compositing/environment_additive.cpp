@@ -9,7 +9,7 @@
 namespace shadowlab {
 namespace {
 
-ShadowOutputs run(const ShadowInputs& in) {
+ShadowOutputs runAdditive(const ShadowInputs& in) {
     StageTimer timer;
     const std::vector<EnvironmentLight> lights = sampleLights(in.prepared, in.params);
     const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
@@ -33,7 +33,7 @@ Technique additive(std::string name, std::string description, int lights, const 
     return {.name = std::move(name),
             .description = std::move(description),
             .params = std::move(params),
-            .run = run,
+            .run = runAdditive,
             .referenceName = "reference-env",
             .output = TechniqueOutput::Radiance,
             .prepare = prepareSampledLights};

@@ -80,7 +80,7 @@ glm::dvec3 estimate(const Integrand& integrand, int rounds, Pcg32 rng) {
     return sum / double(rounds);
 }
 
-ShadowOutputs run(const ShadowInputs& in) {
+ShadowOutputs runExactIntegral(const ShadowInputs& in) {
     const int samples = in.params.integer("samples");
     if (samples % 2 != 0) throw std::invalid_argument("reference-env: samples must be even (two halves)");
     StageTimer timer;
@@ -139,7 +139,7 @@ Technique environmentReferenceTechnique() {
                            "multiple importance sampling, in two independent halves",
             .params = {integerParam("samples", 1024, 2, 1 << 20,
                                     "samples per pixel of each strategy, environment and BRDF (even: two halves)")},
-            .run = run,
+            .run = runExactIntegral,
             .referenceName = "reference-env",
             .output = TechniqueOutput::Radiance,
             .prepare = prepareEnvironment};

@@ -45,7 +45,7 @@ uint64_t subtract(const std::vector<glm::vec3>& C, const std::vector<glm::vec3>&
     return clamped;
 }
 
-ShadowOutputs run(const ShadowInputs& in) {
+ShadowOutputs runSubtractive(const ShadowInputs& in) {
     refuseUnservedMaterials(in);
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
@@ -99,7 +99,7 @@ Technique environmentSubtractiveTechnique() {
             .description = "environment light, subtractive shadows (DeCoro and Rusinkiewicz 2008): fast local "
                            "illumination C less the occluded light of N lights, S, at a sampling detail",
             .params = std::move(params),
-            .run = run,
+            .run = runSubtractive,
             .referenceName = "reference-env",
             .output = TechniqueOutput::Radiance,
             .prepare = prepareSubtractive};

@@ -41,3 +41,10 @@ inline constexpr double kExpOverflow = 709.782712893384;
 inline constexpr double kExpUnderflow = -745.1332191019412;
 
 }  // namespace shadowlab::portable::detail
+
+namespace shadowlab {
+
+// pi, for every layer: one name for the concept (portable_math.h's own constant).
+inline constexpr double kPi = portable::detail::kPi;
+
+}  // namespace shadowlab

@@ -1,8 +1,8 @@
+#include "raster/portable_constants.h"
 #include "shading/brdf_sampling.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "raster/portable_math.h"
 #include "shading/luminance.h"
@@ -10,8 +10,6 @@
 
 namespace shadowlab {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 double diffuseShare(const Material& m) {
     if (m.model == MaterialModel::Lambert) return 1.0;

@@ -2,15 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
+#include "raster/portable_constants.h"
 #include "raster/portable_math.h"
 
 namespace shadowlab {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // The map's mean radiance over each block of the upper hemisphere (weighted by the texels'
 // solid angles), rows from the zenith, columns in the map's order.

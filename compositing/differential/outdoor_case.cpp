@@ -4,18 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "raster/portable_constants.h"
 #include "scenes/camera.h"
 #include "shading/luminance.h"
 
 namespace shadowlab {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // The ground's diffuse reflectance: pi times its mean radiance in the map (the lower
 // hemisphere within 60 degrees of the nadir, where the ground is seen) over the sky's

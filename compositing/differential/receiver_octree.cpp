@@ -19,7 +19,7 @@ int octant(const glm::dvec3& c, const glm::dvec3& split) {
     return (c.x > split.x ? 1 : 0) | (c.y > split.y ? 2 : 0) | (c.z > split.z ? 4 : 0);
 }
 
-struct Builder {
+struct OctreeBuilder {
     std::span<const Aabb> bounds;
     uint32_t leafSize;
     ReceiverOctree& tree;
@@ -62,7 +62,7 @@ ReceiverOctree buildReceiverOctree(std::span<const Aabb> patchBounds, uint32_t l
     tree.patches.resize(patchBounds.size());
     std::iota(tree.patches.begin(), tree.patches.end(), 0u);
     tree.nodes.push_back({boundsOf(tree.patches, patchBounds), 0, uint32_t(patchBounds.size()), -1, 0});
-    Builder{patchBounds, leafSize, tree}.split(0);
+    OctreeBuilder{patchBounds, leafSize, tree}.split(0);
     return tree;
 }
 

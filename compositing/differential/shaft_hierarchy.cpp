@@ -7,7 +7,7 @@ namespace {
 
 double diagonal(const Aabb& b) { return glm::length(b.max - b.min); }
 
-struct Builder {
+struct ShaftBuilder {
     const SourceTree& sources;
     const ReceiverOctree& receivers;
     const ShaftSignificance& significant;
@@ -49,7 +49,7 @@ ShaftHierarchy buildShaftHierarchy(const SourceTree& sources, const ReceiverOctr
                                    const ShaftSignificance& significant) {
     ShaftHierarchy out;
     if (sources.nodes.empty() || receivers.nodes.empty()) return out;
-    Builder builder{sources, receivers, significant, out};
+    ShaftBuilder builder{sources, receivers, significant, out};
     builder.addChild(0, 0);
     if (!out.nodes.empty()) builder.split(0);
     return out;

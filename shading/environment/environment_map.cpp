@@ -7,12 +7,6 @@
 #include "raster/portable_math.h"
 
 namespace shadowlab {
-namespace {
-
-constexpr double kPi = portable::detail::kPi;
-
-}  // namespace
-
 double EnvironmentMap::rowEdgeTheta(int j) const { return kPi * double(j) / double(height); }
 
 double EnvironmentMap::columnEdgePhi(int i) const {

@@ -10,8 +10,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
-
 // Level `level` of a map: texel (i, j) spans the map's columns [i 2^level, (i + 1) 2^level) and
 // rows [j 2^level, (j + 1) 2^level), clipped to the map. Fills everything but the radiance
 // and the brightest luminance.

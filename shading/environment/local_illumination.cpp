@@ -9,8 +9,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
-
 void refuseBlinnPhong(const Material& material) {
     if (material.model == MaterialModel::BlinnPhong) {
         throw std::invalid_argument("material \"" + material.name +

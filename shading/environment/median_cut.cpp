@@ -13,8 +13,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
-
 struct Region {
     glm::ivec2 first, last;   // texels [first, last)
     double energy = 0.0;

@@ -14,7 +14,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
 constexpr double kTolerance = 1e-3;   // the error budget of a texel, relative to the map (LobeIntegrator)
 constexpr double kOutputTexelsPerWidth = 3.0;
 

@@ -12,7 +12,7 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kTolerance = 1e-3;
+constexpr double kLobeTolerance = 1e-3;
 
 // Where a pyramid texel lies in the map: texels [first, last) (each level halves indices).
 struct Extent {
@@ -29,7 +29,7 @@ struct Reflection {
     const Material& material;
     glm::dvec3 N, v;
     double meanLuminance;
-    double threshold = 0.0;   // kTolerance * integral of the weight's luminance * mean luminance
+    double threshold = 0.0;   // kLobeTolerance * integral of the weight's luminance * mean luminance
 
     glm::dvec3 weight(const glm::dvec3& l) const {
         const double cosine = glm::dot(N, l);
@@ -65,7 +65,7 @@ struct Reflection {
         // The error budget from the weight's integral, by the top level's midpoint rule.
         double albedo = 0.0;
         for (size_t k = 0; k < top.solidAngle.size(); ++k) albedo += luminance(weight({top.x[k], top.y[k], top.z[k]})) * top.solidAngle[k];
-        threshold = kTolerance * albedo * meanLuminance;
+        threshold = kLobeTolerance * albedo * meanLuminance;
         glm::dvec3 sum(0.0);
         for (int tj = 0; tj < top.height; ++tj) {
             for (int ti = 0; ti < top.width; ++ti) accumulate(pyramid.levels.size() - 1, ti, tj, sum);

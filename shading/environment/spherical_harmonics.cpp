@@ -13,7 +13,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
 const double kC0 = 0.5 / std::sqrt(kPi), kC1 = std::sqrt(3.0 / (4.0 * kPi)), kC2 = std::sqrt(15.0 / (4.0 * kPi));
 const double kC20 = std::sqrt(5.0 / (16.0 * kPi)), kC22 = std::sqrt(15.0 / (16.0 * kPi));
 

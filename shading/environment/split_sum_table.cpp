@@ -14,7 +14,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
 // Midpoint samples of s (u = sin^2(pi s / 2), below) and of the half vector's azimuth over
 // [0, pi] (the integrand is symmetric about the plane of n and v). Against a brute-force
 // integral over l: within 5e-4 for n . v >= 1/64 (tests/shading/environment).

@@ -42,7 +42,7 @@ constexpr uint64_t kLightSampleSeed = 0x4eb3f1997ull;   // fixed: the same point
 constexpr int kMaxSamples = 4096;                        // counts fit uint16_t
 // Receivers stay this far inside each map's sides: a nearest lookup reaches half a
 // texel, and the receiver's texel may differ by another from where the fit put it.
-constexpr double kFitMarginTexels = 1.5;
+constexpr double kNearestFitMarginTexels = 1.5;
 
 // Adds the hard shadow of the point light `point` from `map` to every pixel's count: the
 // shadow map's nearest lookup (shadow_lookup.h), in float through its vector kernel, with
@@ -70,7 +70,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     const DebugBuffers debug(in.debugDir, "multi-sample");
     LightFitOptions fit;
     fit.resolution = resolution;
-    fit.marginTexels = kFitMarginTexels;
+    fit.marginTexels = kNearestFitMarginTexels;
     fit.simd = in.simd;
     const DepthMapSettings depth{resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
     std::vector<uint16_t> lit(in.gbuffer.pixelCount(), 0);

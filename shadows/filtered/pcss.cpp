@@ -20,7 +20,7 @@ namespace {
 
 // Beyond the blocker search's reach (soft_shadow_map.h), which also bounds the filter's:
 // the PCF radius is never below half a texel and its taps round to the texel they fall in.
-constexpr double kFitMarginTexels = 1.5;
+constexpr double kSearchFitMarginTexels = 1.5;
 
 // The share of the taps a per-pixel PCSS takes (the search's at every pixel the light
 // reaches, the filter's where the search found blockers) whose answers were proved, summed
@@ -101,7 +101,7 @@ PcssSettings readPcssSettings(const TechniqueParams& params) {
 }
 
 SoftShadowMap renderPcssMap(const ShadowInputs& in, int resolution) {
-    return renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kFitMarginTexels, true);
+    return renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kSearchFitMarginTexels, true);
 }
 
 // The three steps per camera pixel in float, through the shadow lookup's vector kernel

@@ -16,8 +16,10 @@
 #include "app/sweep_json.h"
 #include "app/sweep_plot.h"
 #include "scenes/scene_file.h"
+#include "tests/app/text_count.h"
 
 using namespace shadowlab;
+using test::countOf;
 
 namespace {
 
@@ -84,12 +86,6 @@ bool wellFormedXml(const std::string& xml) {
         }
     }
     return open.empty() && roots == 1;
-}
-
-size_t countOf(const std::string& text, const std::string& pattern) {
-    size_t n = 0;
-    for (size_t at = text.find(pattern); at != std::string::npos; at = text.find(pattern, at + 1)) ++n;
-    return n;
 }
 
 SweepRow rowAt(double ms, double misclassifiedPercent) {

@@ -11,13 +11,13 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <numbers>
 #include <random>
 #include <set>
 #include <stdexcept>
 
 #include "compositing/differential/irradiance_volume.h"
 #include "compositing/differential/patch_radiance.h"
+#include "raster/portable_constants.h"
 #include "raster/thread_count.h"
 #include "shading/luminance.h"
 #include "tests/compositing/random_boxes.h"
@@ -27,8 +27,6 @@ using namespace shadowlab;
 using namespace shadowlab::test;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // A receiver at the origin facing +z, an a x b rectangle at height c facing down with one
 // corner straight above it (the catalogue's closed form, tests/shading/test_form_factor.cpp).

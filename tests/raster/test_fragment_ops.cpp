@@ -17,10 +17,10 @@ constexpr int kSize = 16;
 
 // Two triangles covering the whole 16x16 framebuffer at depth z; `clockwise` flips the
 // winding so the quad is back-facing.
-struct Quad {
+struct FullQuad {
     std::vector<glm::vec3> p;
     std::vector<glm::uvec3> t;
-    Quad(float z, bool backFacing = false) {
+    FullQuad(float z, bool backFacing = false) {
         p = {{0, 0, z}, {kSize, 0, z}, {kSize, kSize, z}, {0, kSize, z}};
         // Window y grows downwards, so (0,0) -> (0,16) -> (16,16) is counter-clockwise in NDC.
         t = backFacing ? std::vector<glm::uvec3>{{0, 1, 2}, {0, 2, 3}} : std::vector<glm::uvec3>{{0, 3, 2}, {0, 2, 1}};
@@ -75,7 +75,7 @@ TEST_CASE("depth test: every compare function and the write mask") {
                     s.stencil.enabled = true;   // records which fragments passed
                     s.stencil.front.depthPass = StencilOp::Replace;
                     s.stencil.front.reference = 1;
-                    Quad q(z);
+                    FullQuad q(z);
                     r.draw(fb, s, test::windowDraw(fb, q.p, q.t));
                     const bool pass = compareDefinition(func, z, 0.5f);
                     const auto depth = fb.depthImage();
@@ -109,7 +109,7 @@ TEST_CASE("stencil: every operation on every outcome, with reference and write m
                     f.reference = reference;
                     f.writeMask = writeMask;
                     (outcome == 0 ? f.stencilFail : outcome == 1 ? f.depthFail : f.depthPass) = op;
-                    Quad q(outcome == 1 ? 0.75f : 0.25f);
+                    FullQuad q(outcome == 1 ? 0.75f : 0.25f);
                     r.draw(fb, s, test::windowDraw(fb, q.p, q.t));
                     const uint8_t next = stencilOpDefinition(op, initial, reference);
                     const uint8_t expected = uint8_t((initial & ~writeMask) | (next & writeMask));
@@ -130,7 +130,7 @@ TEST_CASE("stencil compare: (reference & mask) FUNC (stored & mask)") {
             PipelineState s;
             s.stencil.enabled = true;
             s.stencil.front = {func, StencilOp::Zero, StencilOp::Keep, StencilOp::Replace, 0x37, 0x3c, 0xff};
-            Quad q(0.5f);
+            FullQuad q(0.5f);
             Rasterizer r;
             r.draw(fb, s, test::windowDraw(fb, q.p, q.t));
             const bool pass = compareDefinition(func, float(0x37 & 0x3c), float(stored & 0x3c));
@@ -150,7 +150,7 @@ TEST_CASE("two-sided stencil applies the front or back operations by facing") {
     s.stencil.front.depthPass = StencilOp::IncrementWrap;
     s.stencil.back.depthPass = StencilOp::DecrementWrap;
     Rasterizer r;
-    Quad front(0.5f), back(0.5f, true);
+    FullQuad front(0.5f), back(0.5f, true);
     r.draw(fb, s, test::windowDraw(fb, front.p, front.t));
     r.draw(fb, s, test::windowDraw(fb, front.p, front.t));
     r.draw(fb, s, test::windowDraw(fb, back.p, back.t));
@@ -158,7 +158,7 @@ TEST_CASE("two-sided stencil applies the front or back operations by facing") {
 }
 
 TEST_CASE("back and front culling follow the counter-clockwise front-face convention") {
-    Quad front(0.5f), back(0.5f, true);
+    FullQuad front(0.5f), back(0.5f, true);
     for (CullMode cull : {CullMode::None, CullMode::Back, CullMode::Front}) {
         Framebuffer fb(kSize, kSize, {.stencil = true});
         PipelineState s = test::countingState();
@@ -216,7 +216,7 @@ TEST_CASE("blending: every equation, with factors, and the colour write mask") {
             s.output = FragmentOutput::ConstantColor;
             s.blend = {true, c.eq, c.sf, c.df};
             s.colorWriteMask = 0xb;   // R, G and A; B stays
-            Quad q(0.5f);
+            FullQuad q(0.5f);
             DrawCall call = test::windowDraw(fb, q.p, q.t);
             call.constantColor = src;
             Rasterizer r(level);

@@ -6,16 +6,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <numbers>
 
+#include "raster/portable_constants.h"
 #include "shading/environment/split_sum_table.h"
 #include "shading/shade.h"
 
 using namespace shadowlab;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // integral of f(wi, wo) (N . wi) dwi over the upper hemisphere, N = +Z, wo in the xz-plane;
 // a midpoint grid fine in theta, and in phi finer towards the mirror's azimuth (phi = pi,

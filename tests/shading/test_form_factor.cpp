@@ -6,16 +6,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
+#include "raster/portable_constants.h"
 #include "shading/form_factor.h"
 
 using namespace shadowlab;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 struct Box {
     double a, b, c;   // the rectangle's sides and its distance

@@ -3,17 +3,15 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
+#include "raster/portable_constants.h"
 #include "shading/lights.h"
 #include "shading/shade.h"
 
 using namespace shadowlab;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // One pixel at the origin looking up (N = +Y), one background pixel.
 GBuffer onePointAtOrigin(uint32_t material) {

@@ -16,8 +16,10 @@
 #include "shadows/light_view.h"
 #include "shadows/receiver_bounds.h"
 #include "tests/raster/raster_test_util.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
+using test::sameBits;
 
 namespace {
 
@@ -25,8 +27,6 @@ namespace {
 const BoundsKernels& kernelsOf(raster::SimdLevel level) {
     return raster::forSimdLevel(level, boundsKernelsScalar, boundsKernelsAvx2, boundsKernelsAvx512);
 }
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 

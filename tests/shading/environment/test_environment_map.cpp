@@ -13,13 +13,11 @@
 #include "shading/environment/environment_file.h"
 #include "shading/image_io.h"
 #include "tests/scratch_directory.h"
+#include "tests/shading/environment/shipped_maps.h"
 
 using namespace shadowlab;
 
 namespace {
-
-constexpr double kPi = portable::detail::kPi;
-const std::filesystem::path kMaps = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "environments";
 
 double distance(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b); }
 

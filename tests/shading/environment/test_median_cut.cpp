@@ -10,15 +10,9 @@
 #include "raster/portable_constants.h"
 #include "shading/environment/environment_file.h"
 #include "shading/environment/median_cut.h"
+#include "tests/shading/environment/shipped_maps.h"
 
 using namespace shadowlab;
-
-namespace {
-
-constexpr double kPi = portable::detail::kPi;
-const std::filesystem::path kMaps = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "environments";
-
-}  // namespace
 
 TEST_CASE("median cut: the regions tile the map and the lights' powers sum to its integral, N from 1 to 4000") {
     const EnvironmentMap map = readEnvironmentMap(kMaps / "blender_interior.exr", 0.3);

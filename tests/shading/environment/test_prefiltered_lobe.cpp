@@ -19,8 +19,6 @@ using namespace shadowlab;
 
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
-
 double phongWeight(double shininess, double c) { return c > 0.0 ? std::pow(c, shininess) : 0.0; }
 
 double ggxWeight(double alpha, double c) {

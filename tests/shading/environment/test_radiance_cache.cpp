@@ -16,7 +16,7 @@ using namespace shadowlab;
 namespace {
 
 // Brute force: f cos L dOmega summed at every map texel's centre.
-glm::dvec3 bruteForce(const EnvironmentMap& map, const Material& m, const glm::dvec3& N, const glm::dvec3& v) {
+glm::dvec3 bruteForceAtTexelCentres(const EnvironmentMap& map, const Material& m, const glm::dvec3& N, const glm::dvec3& v) {
     glm::dvec3 sum(0.0);
     for (int j = 0; j < map.height; ++j) {
         for (int i = 0; i < map.width; ++i) {
@@ -53,7 +53,7 @@ TEST_CASE("radiance cache: a cached normal's integral agrees with brute force ov
         for (int j = 0; j < cache.size; ++j) {
             for (int i = 0; i < cache.size; ++i) {
                 const glm::dvec3 N = octahedralDecode({(i + 0.5) / cache.size, (j + 0.5) / cache.size});
-                const glm::dvec3 exact = bruteForce(map, *m, N, v);
+                const glm::dvec3 exact = bruteForceAtTexelCentres(map, *m, N, v);
                 const glm::dvec3 cached(cache.radiance[size_t(j) * cache.size + i]);
                 if (luminance(exact) > 1e-3) worst = std::max(worst, std::abs(luminance(cached) / luminance(exact) - 1.0));
             }

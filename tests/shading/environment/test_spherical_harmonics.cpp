@@ -14,13 +14,11 @@
 #include "shading/environment/spherical_harmonics.h"
 
 #include "sphere_directions.h"
+#include "tests/shading/environment/shipped_maps.h"
 
 using namespace shadowlab;
 
 namespace {
-
-constexpr double kPi = portable::detail::kPi;
-const std::filesystem::path kMaps = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "environments";
 
 // The integral over texel (i, j) of f(direction), by a midpoint rule in (theta, phi) with
 // n x n points, each weighted by sin(theta) dtheta dphi.
@@ -39,7 +37,6 @@ double quadrature(const EnvironmentMap& map, int i, int j, int n, F f) {
     }
     return sum * (theta1 - theta0) / n * (phi1 - phi0) / n;
 }
-
 
 }  // namespace
 

@@ -17,8 +17,6 @@ using namespace shadowlab;
 
 namespace {
 
-constexpr double kPi = portable::detail::kPi;
-
 double lambda(double cosTheta, double alpha) {
     const double tan2 = (1.0 - cosTheta * cosTheta) / (cosTheta * cosTheta);
     return 0.5 * (-1.0 + std::sqrt(1.0 + alpha * alpha * tan2));

@@ -21,8 +21,10 @@
 #include "shadows/filtered/moments.h"
 #include "tests/raster/raster_test_util.h"
 #include "tests/shadows/soft_test_support.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
+using test::sameBits;
 using namespace shadowlab::test;
 
 namespace {
@@ -70,8 +72,6 @@ MomentMap plainBlurPass(const MomentMap& from, const std::vector<double>& w, int
     }
     return to;
 }
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 

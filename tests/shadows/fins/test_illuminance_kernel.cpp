@@ -16,8 +16,10 @@
 #include "shadows/fins/illuminance_kernel.h"
 #include "shadows/maps/shadow_bias.h"
 #include "tests/raster/raster_test_util.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
+using test::sameBits;
 
 namespace {
 
@@ -68,8 +70,6 @@ Placed placedBy(raster::SimdLevel level, const Setup& setup, const std::vector<f
     kernelsOf(level).place(setup.place(), P.data(), uint32_t(P.size() / 3), placed.columns());
     return placed;
 }
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // The maps' values at the placed texels: hard depths around the receivers' own (some empty,
 // 1), fin depths in front of and behind them (some uncovered, 1), weights in [0, 1].
