@@ -1,33 +1,53 @@
 #!/usr/bin/env bash
 # Installs shadowlab's dependencies from Debian 12's packages (only what is missing) and
-# builds everything in build/ (Release, -Wall -Wextra, -ffp-contract=off).
+# builds in build/ (Release, -Wall -Wextra, -ffp-contract=off).
+#
+#   scripts/setup.sh command   the command's packages, then the shadowlab command alone
+#                              (scripts/quickstart.sh: no test, benchmark or browser package)
+#   scripts/setup.sh           everything: the tests', the sanitizers' and the report test's
+#                              packages, ccache, playwright-core; every target (scripts/test.sh)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+mode=${1:-all}
+[[ $mode == command || $mode == all ]] || { echo "usage: scripts/setup.sh [command]" >&2; exit 2; }
 
 packages=(g++ cmake make pkg-config python3
-          libglm-dev libstb-dev libopenexr-dev libimath-dev libtbb-dev doctest-dev
-          libbenchmark-dev libembree-dev nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
-          libmeshoptimizer-dev
-          libegl-dev libgl-dev libgl1-mesa-dri
-          clang-14 libclang-rt-14-dev    # the sanitizer build (scripts/sanitize.sh)
-          chromium                       # the report's browser test (tests/report)
-          imagemagick librsvg2-bin)      # the lessons' crops, contrast stretches and plots (scripts/lessons/)
-# Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
-command -v node > /dev/null || packages+=(nodejs npm)
-missing=()
-for p in "${packages[@]}"; do
+          libglm-dev libstb-dev libopenexr-dev libimath-dev libtbb-dev libembree-dev
+          nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libmeshoptimizer-dev)
+if [[ $mode == all ]]; then
+  packages+=(doctest-dev libbenchmark-dev     # the tests and the stage benchmarks
+             ccache                           # the compiler cache of every build (scripts/ccache.sh)
+             libegl-dev libgl-dev libgl1-mesa-dri   # the llvmpipe peer (bench/peers)
+             clang-14 libclang-rt-14-dev      # the sanitizer builds (scripts/sanitize.sh, tsan.sh)
+             chromium                         # the report's browser test (tests/report)
+             imagemagick librsvg2-bin)        # the lessons' crops, contrast stretches and plots (scripts/lessons/)
+  # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
+  command -v node > /dev/null || packages+=(nodejs npm)
+fi
+install_missing() {
+  local missing=() p sudo=""
+  for p in "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-    sudo=""
-    [ "$(id -u)" -eq 0 ] || sudo="sudo"
-    echo "installing: ${missing[*]}"
-    $sudo apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  done
+  [ ${#missing[@]} -gt 0 ] || return 0
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "installing: ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+source scripts/steps.sh
+step "packages (apt)" install_missing "${packages[@]}"
+
+if [[ $mode == command ]]; then
+  # A build/ that test.sh configured keeps its tests; a new one leaves them out.
+  [[ -f build/CMakeCache.txt ]] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_BUILD_TESTS=OFF
+  cmake --build build -j"$(nproc)" --target shadowlab
+  exit 0
 fi
 
 # playwright-core, at the version package-lock.json pins, into tests/report/node_modules.
-(cd tests/report && npm ci --no-audit --no-fund --silent)
+step "playwright-core (npm ci)" bash -c "cd tests/report && npm ci --no-audit --no-fund --silent"
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)"
+source scripts/ccache.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_BUILD_TESTS=ON "${ccache_launcher[@]}"
+step "build: GCC Release, every target" cmake --build build -j"$(nproc)"

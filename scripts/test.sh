@@ -3,6 +3,8 @@
 # temporary prefix and build and run the examples against the installed package.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+source scripts/steps.sh
 scripts/setup.sh
-ctest --test-dir build --output-on-failure --timeout 300 -j"$(nproc)"   # --timeout: tests added without one
-scripts/test_install.sh
+# --timeout: for tests added without one.
+step "tests: every test (ctest)" ctest --test-dir build --output-on-failure --timeout 300 -j"$(nproc)"
+step "tests: the installed package's examples" scripts/test_install.sh
