@@ -10,7 +10,8 @@
 #
 #   scripts/fuzz.sh [build-dir] [seconds per target] [targets...]
 #
-# .ci/run gives each target 60 s; README "Reliability" says how to run them for hours.
+# .ci/run gives each target 20 s from its seeds; README "Reliability" says how to run them
+# for hours.
 # SHADOWLAB_FUZZ_FLAGS adds libFuzzer flags after the defaults (a later flag wins): on a
 # busy machine, -timeout=60, since the timeout is wall-clock time.
 set -euo pipefail
