@@ -17,7 +17,7 @@ packages=(g++ cmake make pkg-config python3
 if [[ $mode == all ]]; then
   packages+=(doctest-dev libbenchmark-dev     # the tests and the stage benchmarks
              ccache                           # the compiler cache of every build (scripts/ccache.sh)
-             libegl-dev libgl-dev libgl1-mesa-dri   # the llvmpipe peer (bench/peers)
+             libegl-dev libgl-dev libopengl-dev libgl1-mesa-dri   # the llvmpipe peer (bench/peers)
              clang-14 libclang-rt-14-dev      # the sanitizer builds (scripts/sanitize.sh, tsan.sh)
              chromium                         # the report's browser test (tests/report)
              imagemagick librsvg2-bin)        # the lessons' crops, contrast stretches and plots (scripts/lessons/)
