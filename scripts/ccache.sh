@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by the build scripts (setup.sh, sanitize.sh, tsan.sh): the compiler cache, where
 # Debian's ccache is installed. ccache keys each object by the compiler, every flag and the
 # bytes of the source and of every header it reads, so a cached object is the one the same
