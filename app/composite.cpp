@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numeric>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -206,13 +207,15 @@ CompositeFrame timedFrame(const DifferentialModel& m, const PreparedObject& obje
 // The frames asked for, each checked against the path.
 std::vector<int> chosenFrames(const CompositeArgs& a, const CompositingScene& scene) {
     const int count = int(scene.objects.front().path.size());
-    std::vector<int> frames = a.frames;
-    for (int k = 0; frames.empty() && k < count; ++k) frames.push_back(k);
-    if (a.frames.empty()) return frames;
-    for (const int k : frames) {
+    if (a.frames.empty()) {
+        std::vector<int> every(count);
+        std::iota(every.begin(), every.end(), 0);
+        return every;
+    }
+    for (const int k : a.frames) {
         if (k < 0 || k >= count) throw std::invalid_argument("composite: no such frame in the path");
     }
-    return frames;
+    return a.frames;
 }
 
 // What every frame of a run shares, and the plots it fills.
