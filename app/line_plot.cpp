@@ -11,28 +11,23 @@
 namespace shadowlab {
 namespace {
 
+using svg::Axis;
 using svg::format;
+using svg::kCanvasHeight, svg::kCanvasWidth, svg::kPlotBottom, svg::kPlotLeft, svg::kPlotTop;
 
-constexpr double kWidth = 800, kHeight = 500;
-constexpr double kLeft = 70, kRight = 620, kTop = 40, kBottom = 440;   // the legend sits right of the plot
+constexpr double kLinePlotRight = 620;   // the legend sits right of the plot
 // One legend row per series, its name from kLegendText on. 8 units a character covers
 // 12-unit DejaVu Sans, Debian's sans-serif (digits and most letters 7.6, '=' 10).
-constexpr double kLegendRow = 18, kLegendText = kRight + 46, kLegendCharWidth = 8;
+constexpr double kLegendRow = 18, kLegendText = kLinePlotRight + 46, kLegendCharWidth = 8;
 
 // The canvas widens for long series names (a fly-through's are its settings) and deepens
 // for many series, so that no legend entry is cut off.
 glm::dvec2 canvasSize(const LinePlot& plot) {
     size_t longest = 0;
     for (const PlotSeries& s : plot.series) longest = std::max(longest, s.name.size());
-    return {std::max(kWidth, kLegendText + kLegendCharWidth * double(longest) + 10),
-            std::max(kHeight, kTop + 10 + kLegendRow * double(plot.series.size()))};
+    return {std::max(kCanvasWidth, kLegendText + kLegendCharWidth * double(longest) + 10),
+            std::max(kCanvasHeight, kPlotTop + 10 + kLegendRow * double(plot.series.size()))};
 }
-
-struct Axis {
-    double step, top;
-    explicit Axis(double largest)
-        : step(svg::niceTickStep(largest)), top(std::max(step, std::ceil(largest / step) * step)) {}
-};
 
 void requireValid(const LinePlot& plot) {
     size_t points = 0;
@@ -60,30 +55,30 @@ std::string formatLinePlotSvg(const LinePlot& plot) {
         for (double y : s.y) largestY = std::max(largestY, y);
     }
     const Axis ax(largestX), ay(1.05 * largestY);
-    const auto X = [&](double x) { return kLeft + x / ax.top * (kRight - kLeft); };
-    const auto Y = [&](double y) { return kBottom - y / ay.top * (kBottom - kTop); };
+    const auto X = [&](double x) { return kPlotLeft + x / ax.top * (kLinePlotRight - kPlotLeft); };
+    const auto Y = [&](double y) { return kPlotBottom - y / ay.top * (kPlotBottom - kPlotTop); };
     const glm::dvec2 canvas = canvasSize(plot);
     std::string text = format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%.0f" height="%.0f" )"
                               R"(viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="12">)" "\n",
                               canvas.x, canvas.y, canvas.x, canvas.y);
     text += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", canvas.x, canvas.y);
-    text += format(R"(<text x="%.1f" y="24" font-size="14">%s</text>)" "\n", kLeft, svg::escape(plot.title).c_str());
-    text += format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n", kLeft,
-                   kTop, kRight - kLeft, kBottom - kTop);
+    text += format(R"(<text x="%.1f" y="24" font-size="14">%s</text>)" "\n", kPlotLeft, svg::escape(plot.title).c_str());
+    text += format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n", kPlotLeft,
+                   kPlotTop, kLinePlotRight - kPlotLeft, kPlotBottom - kPlotTop);
     for (double x = 0.0; x <= ax.top * (1 + 1e-9); x += ax.step) {
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", X(x), kTop, X(x),
-                       kBottom);
-        text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", X(x), kBottom + 16, x);
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", X(x), kPlotTop, X(x),
+                       kPlotBottom);
+        text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", X(x), kPlotBottom + 16, x);
     }
     for (double y = 0.0; y <= ay.top * (1 + 1e-9); y += ay.step) {
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kLeft, Y(y), kRight,
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kPlotLeft, Y(y), kLinePlotRight,
                        Y(y));
-        text += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kLeft - 6, Y(y) + 4, y);
+        text += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kPlotLeft - 6, Y(y) + 4, y);
     }
-    text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%s</text>)" "\n", (kLeft + kRight) / 2, kBottom + 40,
+    text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%s</text>)" "\n", (kPlotLeft + kLinePlotRight) / 2, kPlotBottom + 40,
                    svg::escape(plot.xTitle).c_str());
     text += format(R"svg(<text transform="translate(18 %.1f) rotate(-90)" text-anchor="middle">%s</text>)svg" "\n",
-                   (kTop + kBottom) / 2, svg::escape(plot.yTitle).c_str());
+                   (kPlotTop + kPlotBottom) / 2, svg::escape(plot.yTitle).c_str());
     std::vector<svg::LabelBox> placed;
     for (size_t i = 0; i < plot.series.size(); ++i) {
         const PlotSeries& s = plot.series[i];
@@ -96,11 +91,11 @@ std::string formatLinePlotSvg(const LinePlot& plot) {
             text += format(
                 R"(<circle class="point" cx="%.1f" cy="%.1f" r="3.5" fill="%s"><title>%s: %g, %g</title></circle>)"
                 "\n", X(s.x[k]), Y(s.y[k]), colour, svg::escape(s.name).c_str(), s.x[k], s.y[k]);
-            if (!s.labels.empty()) text += svg::label(X(s.x[k]), Y(s.y[k]), s.labels[k], placed, kTop, kBottom);
+            if (!s.labels.empty()) text += svg::label(X(s.x[k]), Y(s.y[k]), s.labels[k], placed, kPlotTop, kPlotBottom);
         }
-        const double legendY = kTop + 10 + kLegendRow * double(i);
+        const double legendY = kPlotTop + 10 + kLegendRow * double(i);
         text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-width="2"/>)" "\n",
-                       kRight + 20, legendY - 4, kRight + 40, legendY - 4, colour);
+                       kLinePlotRight + 20, legendY - 4, kLinePlotRight + 40, legendY - 4, colour);
         text += format(R"(<text x="%.1f" y="%.1f">%s</text>)" "\n", kLegendText, legendY, svg::escape(s.name).c_str());
     }
     return text + "</svg>\n";

@@ -10,21 +10,15 @@
 namespace shadowlab {
 namespace {
 
+using svg::Axis;
 using svg::format;
+using svg::kCanvasHeight, svg::kCanvasWidth, svg::kPlotBottom, svg::kPlotLeft, svg::kPlotTop;
 
-// Canvas and plot area in SVG user units, as in the sweep plot.
-constexpr double kCanvasWidth = 800, kCanvasHeight = 500;
-constexpr double kPlotLeft = 70, kPlotRight = 760, kPlotTop = 40, kPlotBottom = 440;
-
-// Linear axes from 0 to a whole number of nice ticks past the largest value.
-struct Axis {
-    double step, top;
-    explicit Axis(double largest) : step(svg::niceTickStep(largest)), top(std::max(step, std::ceil(largest / step) * step)) {}
-};
+constexpr double kScalingPlotRight = 760;   // no legend
 
 struct ScalingAxes {
     Axis n, ms;
-    double x(double triangles) const { return kPlotLeft + triangles / n.top * (kPlotRight - kPlotLeft); }
+    double x(double triangles) const { return kPlotLeft + triangles / n.top * (kScalingPlotRight - kPlotLeft); }
     double y(double time) const { return kPlotBottom - time / ms.top * (kPlotBottom - kPlotTop); }
 };
 
@@ -39,16 +33,16 @@ ScalingAxes fitAxes(const ScalingResults& results) {
 
 std::string axesSvg(const ScalingAxes& a) {
     std::string text = format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n",
-                              kPlotLeft, kPlotTop, kPlotRight - kPlotLeft, kPlotBottom - kPlotTop);
+                              kPlotLeft, kPlotTop, kScalingPlotRight - kPlotLeft, kPlotBottom - kPlotTop);
     for (double n = 0.0; n <= a.n.top * (1 + 1e-9); n += a.n.step) {
         text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", a.x(n), kPlotTop, a.x(n), kPlotBottom);
         text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", a.x(n), kPlotBottom + 16, n);
     }
     for (double t = 0.0; t <= a.ms.top * (1 + 1e-9); t += a.ms.step) {
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kPlotLeft, a.y(t), kPlotRight, a.y(t));
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kPlotLeft, a.y(t), kScalingPlotRight, a.y(t));
         text += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kPlotLeft - 6, a.y(t) + 4, t);
     }
-    text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">triangles n</text>)" "\n", (kPlotLeft + kPlotRight) / 2, kPlotBottom + 40);
+    text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">triangles n</text>)" "\n", (kPlotLeft + kScalingPlotRight) / 2, kPlotBottom + 40);
     text += format(R"svg(<text transform="translate(18 %.1f) rotate(-90)" text-anchor="middle">technique median ms</text>)svg" "\n",
                    (kPlotTop + kPlotBottom) / 2);
     return text;

@@ -1,5 +1,6 @@
-// Helpers shared by the hand-written SVG plots (sweep_plot.cpp, scaling_plot.cpp): text
-// formatting and escaping, tick steps and the colour palette.
+// Helpers shared by the hand-written SVG plots (sweep_plot.cpp, scaling_plot.cpp,
+// line_plot.cpp): text formatting and escaping, tick steps and axes, the canvas and the
+// colour palette.
 #pragma once
 
 #include <cmath>
@@ -43,6 +44,17 @@ inline double niceTickStep(double largest) {
         if (m * decade >= rough) return m * decade;
     return 10.0 * decade;
 }
+
+// A linear axis from 0 to a whole number of nice ticks past the largest value.
+struct Axis {
+    double step, top;
+    explicit Axis(double largest) : step(niceTickStep(largest)), top(std::max(step, std::ceil(largest / step) * step)) {}
+};
+
+// The canvas of every plot and the left, top and bottom edges of its plot area, in SVG user
+// units (pixels); each plot sets its right edge, beyond which a legend may sit.
+inline constexpr double kCanvasWidth = 800, kCanvasHeight = 500;
+inline constexpr double kPlotLeft = 70, kPlotTop = 40, kPlotBottom = 440;
 
 // The box a point's label covers, in SVG user units.
 struct LabelBox {

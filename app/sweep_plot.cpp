@@ -11,9 +11,10 @@
 namespace shadowlab {
 namespace {
 
-// Canvas and plot area in SVG user units (pixels); the legend sits right of the plot.
-constexpr double kWidth = 800, kHeight = 500;
-constexpr double kLeft = 70, kRight = 600, kTop = 40, kBottom = 440;
+using svg::format;
+using svg::kCanvasHeight, svg::kCanvasWidth, svg::kPlotBottom, svg::kPlotLeft, svg::kPlotTop;
+
+constexpr double kSweepPlotRight = 600;   // the legend sits right of the plot
 
 // Times below a microsecond (a technique that does nothing) are drawn at 1 us: a log axis
 // has no place for 0.
@@ -22,8 +23,6 @@ constexpr double kMinPlottedMs = 1e-3;
 struct Range {
     double lo, hi;
 };
-
-using svg::format;
 
 double plottedMs(const SweepRow& row) { return std::max(row.medianMs, kMinPlottedMs); }
 
@@ -42,9 +41,9 @@ struct Axes {
     Range decades;
     double errorStep, errorTop;
     double x(double ms) const {
-        return kLeft + (std::log10(std::max(ms, kMinPlottedMs)) - decades.lo) / (decades.hi - decades.lo) * (kRight - kLeft);
+        return kPlotLeft + (std::log10(std::max(ms, kMinPlottedMs)) - decades.lo) / (decades.hi - decades.lo) * (kSweepPlotRight - kPlotLeft);
     }
-    double y(double error) const { return kBottom - error / errorTop * (kBottom - kTop); }
+    double y(double error) const { return kPlotBottom - error / errorTop * (kPlotBottom - kPlotTop); }
 };
 
 Axes fitAxes(const std::vector<SweepRow>& rows, PlotErrorAxis axis) {
@@ -78,21 +77,21 @@ const char* axisTitle(PlotErrorAxis axis) {
 
 std::string axesSvg(const Axes& a, PlotErrorAxis axis) {
     std::string svg = format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n",
-                             kLeft, kTop, kRight - kLeft, kBottom - kTop);
+                             kPlotLeft, kPlotTop, kSweepPlotRight - kPlotLeft, kPlotBottom - kPlotTop);
     for (double ms : timeTicks(a.decades)) {
         const double x = a.x(ms);
-        svg += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", x, kTop, x, kBottom);
-        svg += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", x, kBottom + 16, ms);
+        svg += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", x, kPlotTop, x, kPlotBottom);
+        svg += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", x, kPlotBottom + 16, ms);
     }
     for (double e = 0.0; e <= a.errorTop * (1 + 1e-9); e += a.errorStep) {
         const double y = a.y(e);
-        svg += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kLeft, y, kRight, y);
-        svg += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kLeft - 6, y + 4, e);
+        svg += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kPlotLeft, y, kSweepPlotRight, y);
+        svg += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kPlotLeft - 6, y + 4, e);
     }
     svg += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">technique median ms (log scale)</text>)" "\n",
-                  (kLeft + kRight) / 2, kBottom + 40);
+                  (kPlotLeft + kSweepPlotRight) / 2, kPlotBottom + 40);
     svg += format(R"svg(<text transform="translate(18 %.1f) rotate(-90)" text-anchor="middle">%s</text>)svg" "\n",
-                  (kTop + kBottom) / 2, axisTitle(axis));
+                  (kPlotTop + kPlotBottom) / 2, axisTitle(axis));
     return svg;
 }
 
@@ -128,7 +127,7 @@ std::string rowLabel(const SweepRow& row, bool severalThreadCounts) {
 
 // Labels must not cover the legend or any point.
 std::vector<svg::LabelBox> takenBoxes(const SweepResults& results, const Axes& a, PlotErrorAxis axis) {
-    std::vector<svg::LabelBox> taken = {{kRight + 10, kTop, kWidth, kTop + 20.0 * double(results.techniques.size() + 1)}};
+    std::vector<svg::LabelBox> taken = {{kSweepPlotRight + 10, kPlotTop, kCanvasWidth, kPlotTop + 20.0 * double(results.techniques.size() + 1)}};
     for (const SweepRow& row : results.rows) {
         const double x = a.x(row.medianMs), y = a.y(plottedError(row, axis));
         taken.push_back({x - 4, y - 4, x + 4, y + 4});
@@ -151,20 +150,20 @@ std::string pointsSvg(const SweepResults& results, const Axes& a, PlotErrorAxis 
             x, y, svg::kPalette[techniqueIndex(results, row.technique) % std::size(svg::kPalette)],
             svg::escape(row.technique).c_str(), svg::escape(label).c_str(), row.medianMs, plottedError(row, axis));
         svg += (links.empty() ? point : "<a href=\"" + links[k] + "\">" + point + "</a>") + "\n";
-        svg += svg::label(x, y, label, placed, kTop, kBottom);
+        svg += svg::label(x, y, label, placed, kPlotTop, kPlotBottom);
     }
     return svg;
 }
 
 std::string legendSvg(const SweepResults& results) {
     std::string svg;
-    double y = kTop + 10;
+    double y = kPlotTop + 10;
     for (size_t k = 0; k < results.techniques.size(); ++k, y += 20) {
-        svg += format(R"(<circle cx="%.1f" cy="%.1f" r="4" fill="%s"/>)" "\n", kRight + 20, y, svg::kPalette[k % std::size(svg::kPalette)]);
-        svg += format(R"(<text x="%.1f" y="%.1f">%s</text>)" "\n", kRight + 30, y + 4, svg::escape(results.techniques[k]).c_str());
+        svg += format(R"(<circle cx="%.1f" cy="%.1f" r="4" fill="%s"/>)" "\n", kSweepPlotRight + 20, y, svg::kPalette[k % std::size(svg::kPalette)]);
+        svg += format(R"(<text x="%.1f" y="%.1f">%s</text>)" "\n", kSweepPlotRight + 30, y + 4, svg::escape(results.techniques[k]).c_str());
     }
-    svg += format(R"(<circle cx="%.1f" cy="%.1f" r="7" fill="none" stroke="#000"/>)" "\n", kRight + 20, y);
-    svg += format(R"(<text x="%.1f" y="%.1f">Pareto front</text>)" "\n", kRight + 30, y + 4);
+    svg += format(R"(<circle cx="%.1f" cy="%.1f" r="7" fill="none" stroke="#000"/>)" "\n", kSweepPlotRight + 20, y);
+    svg += format(R"(<text x="%.1f" y="%.1f">Pareto front</text>)" "\n", kSweepPlotRight + 30, y + 4);
     return svg;
 }
 
@@ -218,9 +217,9 @@ std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis, cons
         throw std::invalid_argument("sweep plot: one link per row");
     const Axes a = fitAxes(results.rows, axis);
     std::string svg = format(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%.0f" height="%.0f" viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="12">)" "\n",
-                             kWidth, kHeight, kWidth, kHeight);
-    svg += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", kWidth, kHeight);
-    svg += format(R"(<text x="%.1f" y="24" font-size="14">%s: speed against error</text>)" "\n", kLeft,
+                             kCanvasWidth, kCanvasHeight, kCanvasWidth, kCanvasHeight);
+    svg += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", kCanvasWidth, kCanvasHeight);
+    svg += format(R"(<text x="%.1f" y="24" font-size="14">%s: speed against error</text>)" "\n", kPlotLeft,
                   svg::escape(results.scene).c_str());
     svg += axesSvg(a, axis);
     svg += frontSvg(results, paretoFront(results.rows, axis), a, axis);

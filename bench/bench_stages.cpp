@@ -15,6 +15,7 @@
 #include "raster/setup.h"
 #include "frame/render.h"
 #include "scenes/scene_file.h"
+#include "shading/lights.h"
 #include "shadows/izb/izb.h"
 #include "shadows/maps/shadow_lookup.h"
 #include "shadows/ray_offset.h"
@@ -263,7 +264,7 @@ void BM_IrregularZBuffer(benchmark::State& state) {
             benchmark::DoNotOptimize(izb::listReceivers(receivers, texelLists));
         }
         if (stage == 4) benchmark::DoNotOptimize(izb::binOccluders(grid, lists, izb::projectOccluders(grid, world)));
-        if (stage == 5) benchmark::DoNotOptimize(izb::traverseOccluders(grid, izb::homogeneousLight(light), listed, lists, bins, occluders, bestSimdLevel()));
+        if (stage == 5) benchmark::DoNotOptimize(izb::traverseOccluders(grid, homogeneousLight(light), listed, lists, bins, occluders, bestSimdLevel()));
     }
     static const char* const names[] = {"", "receivers", "light grid", "lists", "binning", "traversal"};
     state.SetLabel(names[stage]);

@@ -15,6 +15,15 @@ struct Aabb {
     glm::dvec3 min, max;   // min <= max on every axis
 };
 
+// The box's centre.
+inline glm::dvec3 centre(const Aabb& b) { return 0.5 * (b.min + b.max); }
+
+// A ball, as a bound of a set of points.
+struct Sphere {
+    glm::dvec3 centre;
+    double radius;
+};
+
 // The box holding both.
 inline Aabb merged(const Aabb& a, const Aabb& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
 

@@ -16,6 +16,12 @@ enum class ViewFrameProblem { None, EyeAtTarget, UpParallel };
 ViewFrameProblem viewFrameProblem(const Camera& camera);
 
 glm::mat4 viewFromWorld(const Camera& camera);
+// The up vector for a view along `axis` (lookAt's third argument): +Y, or +X when the axis
+// is within 25.8 degrees of Y (|y| >= 0.9 of a unit axis), where +Y would make the view's
+// frame ill-conditioned.
+inline glm::dvec3 lookAtUp(const glm::dvec3& axis) {
+    return glm::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+}
 // OpenGL's perspective projection (the entries of glm::perspectiveRH_NO), its tangent from
 // raster/portable_math.h so that the matrix is the same bits on every CPU.
 glm::dmat4 clipFromViewD(const Camera& camera);

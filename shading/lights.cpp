@@ -64,6 +64,11 @@ glm::vec3 cookieTransmission(const Light& light, const glm::vec3& point) {
     return cookie.texels[size_t(row) * size_t(cookie.width) + size_t(column)];
 }
 
+glm::dvec4 homogeneousLight(const Light& light) {
+    if (light.type == LightType::Directional) return glm::dvec4(glm::dvec3(light.direction), 0.0);
+    return glm::dvec4(glm::dvec3(light.position), 1.0);
+}
+
 glm::dvec3 areaLightNormal(const Light& light) {
     if (light.type == LightType::Rectangle) {
         return glm::normalize(glm::cross(glm::dvec3(light.halfEdgeU), glm::dvec3(light.halfEdgeV)));

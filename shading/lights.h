@@ -82,6 +82,11 @@ inline bool lightReaches(const Light& light, const glm::vec3& P, const glm::vec3
 // counter-clockwise into V, like a front face (conventions.md, "Space and camera").
 glm::dvec3 areaLightNormal(const Light& light);
 
+// The light as a homogeneous point: (position, 1) for point, spot and (as their centre)
+// area lights; (direction towards the light, 0) for a directional light. The direction from
+// a point O to the light is then light.xyz - light.w * O.
+glm::dvec4 homogeneousLight(const Light& light);
+
 // Emitting area in m^2: pi r^2 for a disk, 4 |U x V| for a rectangle.
 double areaLightArea(const Light& light);
 

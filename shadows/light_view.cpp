@@ -12,6 +12,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include "scenes/camera.h"
 #include "shading/lights.h"
 #include "shadows/receiver_bounds.h"
 
@@ -189,10 +190,6 @@ double nearestGeometry(const WorldGeometry& world, const glm::dmat4& viewFromWor
     return chunks ? *std::min_element(nearest.begin(), nearest.end()) : kInfinity;
 }
 
-glm::dvec3 anyPerpendicular(const glm::dvec3& axis) {
-    return std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-}
-
 // The margin of o.marginTexels around the receivers; a side of no width (one receiver, or
 // receivers along a line the light looks across) first gets a width of 1e-6 of its
 // coordinates' size, so the view's projection stays finite.
@@ -223,7 +220,7 @@ LightView perspectiveView(const Light& light, const glm::dvec3& axis, const GBuf
                           const LightFitOptions& o) {
     LightView view;
     const glm::dvec3 apex(light.position);
-    view.viewFromWorld = glm::lookAtRH(apex, apex + axis, anyPerpendicular(axis));
+    view.viewFromWorld = glm::lookAtRH(apex, apex + axis, lookAtUp(axis));
     Bounds b = receiverBounds(light, g, view.viewFromWorld, false, o.simd);
     widen(b, o);
     fitDepthRange(view, b, world, o);
@@ -252,7 +249,7 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     view.orthographic = true;
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(light.direction));
     // The eye sits anywhere on the light's side; depths are then measured from it.
-    view.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, anyPerpendicular(towardsLight));
+    view.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, lookAtUp(towardsLight));
     // Depths here may be negative (the eye is anywhere on the light's side): the farthest is
     // the largest of them, not of them and 0.
     Bounds b = receiverBounds(light, receivers, view.viewFromWorld, true, options.simd);

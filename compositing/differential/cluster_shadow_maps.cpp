@@ -5,16 +5,14 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scenes/camera.h"
+
 namespace shadowlab {
 namespace {
 
 // A light at (or inside) the object's bounding sphere sees it over a hemisphere or more:
 // the cone is capped at 160 degrees (cot 80 degrees), which one map can still hold.
 constexpr double kWidestCotangent = 0.17632698070846498;
-
-glm::dvec3 upFor(const glm::dvec3& forward) {
-    return std::abs(forward.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-}
 
 }  // namespace
 
@@ -27,7 +25,7 @@ ClusterMap clusterShadowMap(const glm::dvec3& light, const glm::dvec3& sphereCen
     const double cotangent = d > r ? std::max(std::sqrt(d * d - r * r) / r, kWidestCotangent) : kWidestCotangent;
     LightView view;
     const glm::dvec3 forward = d > 0.0 ? toObject / d : glm::dvec3(0, -1, 0);
-    view.viewFromWorld = glm::lookAt(light, light + forward, upFor(forward));
+    view.viewFromWorld = glm::lookAt(light, light + forward, lookAtUp(forward));
     view.zNear = std::max(d - r, 1e-3 * r);
     view.zFar = d + r;
     view.clipFromView = glm::dmat4(0.0);

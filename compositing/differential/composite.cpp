@@ -217,7 +217,8 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
     CompositeFrame out;
     const WorldGeometry whole = placed(object.levels.whole, placements);
     const std::vector<Aabb> boxes = instanceBounds(object.levels.whole, whole);   // one per object
-    const Aabb box = std::accumulate(boxes.begin() + 1, boxes.end(), boxes.front(), merged);
+    const Aabb box = std::accumulate(boxes.begin() + 1, boxes.end(), boxes.front(),
+                                     [](const Aabb& a, const Aabb& b) { return merged(a, b); });
     timer.lap("object");
     out.hits = traverseObjects(m, boxes);
     timer.lap("traversal");

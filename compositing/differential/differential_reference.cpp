@@ -3,16 +3,12 @@
 #include <tbb/parallel_for.h>
 
 #include "compositing/differential/patch_radiance.h"
+#include "scenes/bounds.h"
 #include "scenes/float_range.h"
 #include "shadows/camera_pass.h"
 
 namespace shadowlab {
 namespace {
-
-struct Sphere {
-    glm::dvec3 centre;
-    double radius;
-};
 
 // Whether some segment from x to a point of the patch (within its bounding sphere) may pass
 // through the object's sphere: a point at t along x -> q lies within t r_patch of the same

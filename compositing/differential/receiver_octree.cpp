@@ -4,10 +4,10 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "scenes/bounds.h"
+
 namespace shadowlab {
 namespace {
-
-glm::dvec3 centre(const Aabb& b) { return 0.5 * (b.min + b.max); }
 
 Aabb boundsOf(std::span<const uint32_t> patches, std::span<const Aabb> bounds) {
     Aabb box = bounds[patches[0]];

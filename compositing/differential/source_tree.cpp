@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <numeric>
 
+#include "scenes/bounds.h"
+
 namespace shadowlab {
 namespace {
-
-glm::dvec3 centre(const Aabb& b) { return 0.5 * (b.min + b.max); }
 
 int widestAxis(std::span<const uint32_t> patches, std::span<const Aabb> bounds) {
     glm::dvec3 lo(centre(bounds[patches[0]])), hi = lo;

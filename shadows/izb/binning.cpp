@@ -14,7 +14,7 @@
 namespace shadowlab::izb {
 namespace {
 
-constexpr size_t kChunk = 8192;   // triangles per binning task
+constexpr size_t kTrianglesPerTask = 8192;   // triangles per binning task
 
 struct TilePair {
     uint32_t tile, triangle;
@@ -53,10 +53,10 @@ TileBins binOccluders(const LightGrid& grid, const TexelLists& lists, const Proj
     bins.tilesPerSide = tilesPerSide(grid.resolution);
     const std::vector<uint8_t> used = tilesWithReceivers(grid, lists, bins.tilesPerSide);
     const size_t triangles = occluders.world.triangles.size();
-    const size_t chunks = (triangles + kChunk - 1) / kChunk;
+    const size_t chunks = (triangles + kTrianglesPerTask - 1) / kTrianglesPerTask;
     std::vector<std::vector<TilePair>> pairs(chunks);
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-        for (size_t t = c * kChunk; t < std::min(triangles, (c + 1) * kChunk); ++t) {
+        for (size_t t = c * kTrianglesPerTask; t < std::min(triangles, (c + 1) * kTrianglesPerTask); ++t) {
             for (int view = 0; view < int(grid.views.size()); ++view) {
                 binTriangle(grid, view, uint32_t(t), occluders, bins.tilesPerSide, used, pairs[c]);
             }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "shading/lights.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/izb/izb.h"
 #include "shadows/ray_offset.h"
@@ -103,7 +104,7 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     timer.lap("binning");
 
     const izb::Occlusion occlusion =
-        izb::traverseOccluders(grid, izb::homogeneousLight(light), listed, lists, bins, occluders, in.simd);
+        izb::traverseOccluders(grid, homogeneousLight(light), listed, lists, bins, occluders, in.simd);
     for (size_t e = 0; e < listed.size(); ++e) {
         if (occlusion.blocked[e]) out.visibility[listed.pixel[e]] = 0.0f;
     }

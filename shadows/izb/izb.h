@@ -60,10 +60,8 @@ namespace izb {
 Kernels kernels(raster::SimdLevel simd);
 
 // ---- 1. Receivers ------------------------------------------------------------------------
-// A point or directional light as a homogeneous point: (L, 1) or (towards-light, 0), so
-// the direction from O to the light is always light.xyz - light.w * O.
+// A point or directional light as a homogeneous point (shading/lights.h, homogeneousLight()).
 using HomogeneousLight = glm::dvec4;
-HomogeneousLight homogeneousLight(const Light& pointOrDirectional);
 
 // A camera sample that faces the light. It is shadowed when a triangle meets the segment
 // origin + t * (light.xyz - light.w * origin), t in [0, tFar]. One record of 24 bytes, so

@@ -14,7 +14,7 @@
 namespace shadowlab::izb {
 namespace {
 
-constexpr size_t kChunk = 4096;   // pixels per task
+constexpr size_t kPixelsPerTask = 4096;   // pixels per task
 
 // A chunk's lit points and their segments, as the segments kernel reads and writes them.
 struct SegmentBatch {
@@ -22,8 +22,8 @@ struct SegmentBatch {
     std::vector<uint32_t> pixel;
 
     SegmentBatch() {
-        for (std::vector<double>& c : column) c.resize(kChunk + kKernelPadding);
-        pixel.resize(kChunk);
+        for (std::vector<double>& c : column) c.resize(kPixelsPerTask + kKernelPadding);
+        pixel.resize(kPixelsPerTask);
     }
     void add(uint32_t k, const glm::vec3& P, const glm::vec3& N, size_t n) {
         column[0][n] = P.x, column[1][n] = P.y, column[2][n] = P.z;
@@ -42,11 +42,6 @@ struct SegmentBatch {
 
 }  // namespace
 
-HomogeneousLight homogeneousLight(const Light& light) {
-    if (light.type == LightType::Directional) return {glm::dvec3(light.direction), 0.0};
-    return {glm::dvec3(light.position), 1.0};
-}
-
 Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal, std::vector<float>& visibility,
                           raster::SimdLevel simd) {
     const HomogeneousLight h = homogeneousLight(light);
@@ -58,14 +53,14 @@ Receivers gatherReceivers(const GBuffer& g, const Light& light, double diagonal,
     // with a segment left (a point light nearer than the offset leaves none: seen, as in the
     // reference). The chunks are then joined in order, each copied to the slot an exclusive
     // prefix sum of their sizes gives it.
-    const size_t chunks = (g.pixelCount() + kChunk - 1) / kChunk;
+    const size_t chunks = (g.pixelCount() + kPixelsPerTask - 1) / kPixelsPerTask;
     visibility.assign(g.pixelCount(), 0.0f);
     std::vector<Receivers> kept(chunks);
     tbb::enumerable_thread_specific<SegmentBatch> batches;   // one per worker, reused by its chunks
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
         SegmentBatch& batch = batches.local();
         size_t lit = 0;
-        for (size_t k = c * kChunk; k < std::min(g.pixelCount(), (c + 1) * kChunk); ++k) {
+        for (size_t k = c * kPixelsPerTask; k < std::min(g.pixelCount(), (c + 1) * kPixelsPerTask); ++k) {
             if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
             visibility[k] = 1.0f;
             batch.add(uint32_t(k), g.position[k], g.normal[k], lit++);

@@ -10,6 +10,8 @@
 #include <tbb/parallel_for.h>
 
 #include "raster/portable_math.h"
+#include "scenes/bounds.h"
+#include "scenes/camera.h"
 #include "shadows/maps/receiver_ranges.h"
 #include "shadows/technique.h"
 
@@ -23,10 +25,6 @@ glm::dvec3 viewAxis(const Camera& camera) {
 // The smallest sphere around the slice's eight corners, centred on the view axis: the
 // corners at distance d lie r(d) = d sqrt(tan^2 + (aspect tan)^2) off the axis; the centre
 // t balances the near and far corner distances, clamped to the slice.
-struct Sphere {
-    glm::dvec3 centre;
-    double radius;
-};
 Sphere sliceSphere(const Camera& camera, double d0, double d1) {
     const double tanY = portable::tan(0.5 * double(camera.fovyDeg) * std::numbers::pi / 180.0);
     const double aspect = double(camera.width) / camera.height;
@@ -104,8 +102,7 @@ std::vector<Cascade> fitCascades(const Light& sun, const Camera& camera, const G
 
     // One light rotation for all cascades and all frames: fitLightView's, so its depths apply.
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(sun.direction));
-    const glm::dvec3 up = std::abs(towardsLight.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-    const glm::dmat4 lightFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, up);
+    const glm::dmat4 lightFromWorld = glm::lookAtRH(glm::dvec3(0.0), -towardsLight, lookAtUp(towardsLight));
     LightFitOptions options;
     options.resolution = s.resolution, options.marginTexels = s.marginTexels, options.simd = simd;
     GBuffer receivers;

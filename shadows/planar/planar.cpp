@@ -127,7 +127,7 @@ raster::PipelineState shadowState() {
     return state;
 }
 
-ShadowOutputs run(const ShadowInputs& in) {
+ShadowOutputs runPlanar(const ShadowInputs& in) {
     const Camera& camera = in.camera();
     const glm::dvec4 plane(0.0, 1.0, 0.0, -in.params.real("plane-y"));
     const float opacity = float(in.params.real("opacity"));
@@ -206,7 +206,7 @@ Technique planarTechnique() {
             .params = {realParam("plane-y", 0.0, -1e6, 1e6, "height of the receiver plane y = plane-y, in metres"),
                        realParam("opacity", 0.6, 0.0, 1.0,
                                  "alpha of the dark translucent shadow in the debug image; V does not depend on it")},
-            .run = run,
+            .run = runPlanar,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};
 }

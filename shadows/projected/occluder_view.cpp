@@ -8,6 +8,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include "scenes/camera.h"
+
 namespace shadowlab {
 namespace {
 
@@ -53,8 +55,6 @@ glm::dvec3 occludersCentre(const WorldGeometry& casters, std::span<const uint32_
     return {0.5 * (box.lo.x + box.hi.x), 0.5 * (box.lo.y + box.hi.y), -0.5 * (box.lo.z + box.hi.z)};
 }
 
-glm::dvec3 upFor(const glm::dvec3& axis) { return std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0); }
-
 // Sides widened by two texels, so that no occluder vertex lies on a clipping plane; depth
 // by a part in 10^4 for the same reason.
 void widen(Extent& e, int resolution) {
@@ -76,7 +76,7 @@ LightView fitOccluderView(const WorldGeometry& casters, std::span<const uint32_t
     if (!(glm::length(axis) > 0.0)) {
         throw std::invalid_argument("projected-texture: the occluders are centred on the light");
     }
-    view.viewFromWorld = glm::lookAtRH(apex, apex + glm::normalize(axis), upFor(glm::normalize(axis)));
+    view.viewFromWorld = glm::lookAtRH(apex, apex + glm::normalize(axis), lookAtUp(glm::normalize(axis)));
     Extent e = extentIn(casters, occluders, view.viewFromWorld, !view.orthographic);
     // A frustum wider than 4 in x / depth (about 63 degrees either side of a centred axis)
     // would stretch its outer texels without bound.

@@ -5,13 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
-
 namespace shadowlab {
-
-glm::dvec4 homogeneousLight(const Light& light) {
-    if (light.type == LightType::Directional) return glm::dvec4(glm::dvec3(light.direction), 0.0);
-    return glm::dvec4(glm::dvec3(light.position), 1.0);
-}
 
 bool facesLight(const glm::dvec4& light, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     const glm::dvec3 A(a), B(b), C(c);

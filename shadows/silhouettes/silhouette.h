@@ -28,10 +28,6 @@
 
 namespace shadowlab {
 
-// The light as a homogeneous point: (position, 1) for point, spot and (as their centre)
-// area lights; (direction towards the light, 0) for a directional light.
-glm::dvec4 homogeneousLight(const Light& light);
-
 // From p towards the light (not normalised): L - p, or the light's direction.
 inline glm::dvec3 towardsLight(const glm::dvec4& light, const glm::dvec3& p) {
     return glm::dvec3(light) - light.w * p;

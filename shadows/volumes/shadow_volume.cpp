@@ -99,7 +99,7 @@ void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowO
     debug.write("fill", camera.width, camera.height, fill, 0.0f, 8.0f);
 }
 
-ShadowOutputs run(const ShadowInputs& in) {
+ShadowOutputs runShadowVolume(const ShadowInputs& in) {
     const Camera& camera = in.camera();
     const Light light = pointLightFor(in.light);
     StageTimer timer;
@@ -123,7 +123,7 @@ Technique shadowVolumeTechnique() {
             .description = "stencil shadow volumes: silhouettes extruded to infinity, z-pass or z-fail with "
                            "two-sided wrapping stencil",
             .params = stencilPassParams(),
-            .run = run,
+            .run = runShadowVolume,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};

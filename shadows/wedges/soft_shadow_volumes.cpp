@@ -44,7 +44,7 @@
 namespace shadowlab {
 namespace {
 
-constexpr const char* kName = "soft-shadow-volumes";
+constexpr const char* kSoftShadowVolumesName = "soft-shadow-volumes";
 
 enum class HardShadow { Count, Binary };   // the `hard-shadow` parameter
 
@@ -89,9 +89,9 @@ void writeDebug(const DebugBuffers& debug, const Camera& camera, const ShadowOut
     debug.write("visibility", camera.width, camera.height, out.visibility, 0.0f, 1.0f);
 }
 
-ShadowOutputs run(const ShadowInputs& in) {
+ShadowOutputs runSoftShadowVolumes(const ShadowInputs& in) {
     if (in.light.type != LightType::Disk && in.light.type != LightType::Rectangle)
-        throw std::invalid_argument(std::string(kName) + ": needs an area light (disk or rectangle)");
+        throw std::invalid_argument(std::string(kSoftShadowVolumesName) + ": needs an area light (disk or rectangle)");
     const AreaLightFrame frame = areaLightFrame(in.light);
     const Light centre = pointLightFor(in.light);
     const Camera& camera = in.camera();
@@ -115,7 +115,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     appendStencilPassStats(in, pass, out.stats);
     addWedgeStats(wedges, coverage, flipped, in.gbuffer.pixelCount(), out.stats);
     timer.appendTo(out.stats);
-    const DebugBuffers debug(in.debugDir, kName);
+    const DebugBuffers debug(in.debugDir, kSoftShadowVolumesName);
     if (debug.enabled()) writeDebug(debug, camera, out, coverage);
     return out;
 }
@@ -133,11 +133,11 @@ std::vector<ParamSpec> params() {
 }  // namespace
 
 Technique softShadowVolumeTechnique() {
-    return {.name = kName,
+    return {.name = kSoftShadowVolumesName,
             .description = "soft shadow volumes: penumbra wedges on the centre's silhouette edges over its stencil "
                            "hard shadow, the light's covered area per pixel computed exactly",
             .params = params(),
-            .run = run,
+            .run = runSoftShadowVolumes,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};

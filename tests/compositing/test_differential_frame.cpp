@@ -21,15 +21,13 @@
 #include "raster/thread_count.h"
 #include "shading/luminance.h"
 #include "tests/compositing/room_case.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
+using test::sameBytes;
 using namespace shadowlab::test;
 
 namespace {
-
-bool sameBytes(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
-}
 
 // RMS of the luminance difference over the pixels that are not the object's.
 double receiverRms(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b, const std::vector<uint8_t>& object) {

@@ -17,15 +17,13 @@
 #include "compositing/bilateral_upsample.h"
 #include "frame/score.h"
 #include "tests/compositing/environment_scenes.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
+using test::sameBytes;
 using namespace shadowlab::test;
 
 namespace {
-
-bool sameBytes(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
-}
 
 // The paper's glossy bunny (Phong 40) under the interior map, its exact reference (1024
 // samples per strategy), and the RMS of a frame's luminance against it. The claim is the

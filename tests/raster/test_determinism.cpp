@@ -13,8 +13,10 @@
 
 #include "raster/rasterizer.h"
 #include "raster/thread_count.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab::raster;
+using shadowlab::test::sameBytes;
 
 namespace {
 
@@ -91,11 +93,6 @@ Outputs render(SimdLevel level, const TestScene& scene) {
     s.output = FragmentOutput::DepthOnly;
     r.draw(fb, s, call);
     return {fb.depthImage(), fb.colorImage(0), fb.colorImage(3), fb.stencilImage(), fb.primitiveIdImage()};
-}
-
-template <class T>
-bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
 }  // namespace

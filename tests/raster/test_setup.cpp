@@ -19,7 +19,7 @@ using namespace shadowlab::raster;
 
 namespace {
 
-constexpr int kWidth = 1024, kHeight = 768;
+constexpr int kViewportWidth = 1024, kViewportHeight = 768;
 
 // A mix of triangles: a few pixels wide, huge (up to the guard band's 2^22 sub-pixels),
 // degenerate (two equal corners, or collinear), with depths including 0 and subnormals.
@@ -53,7 +53,7 @@ std::vector<SetupConstants> constantCases() {
     for (CullMode cull : {CullMode::None, CullMode::Back, CullMode::Front}) {
         for (bool conservative : {false, true}) {
             for (PolygonOffset offset : {PolygonOffset{0.0f, 0.0f}, PolygonOffset{1.1f, 4.0f}, PolygonOffset{0.0f, -2.0f}}) {
-                for (int planeCount : {0, 4}) cases.push_back({kWidth, kHeight, cull, conservative, offset, planeCount});
+                for (int planeCount : {0, 4}) cases.push_back({kViewportWidth, kViewportHeight, cull, conservative, offset, planeCount});
             }
         }
     }

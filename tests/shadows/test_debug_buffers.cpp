@@ -22,12 +22,14 @@
 #include "shading/image_io.h"
 #include "shadows/maps/cascades.h"
 #include "shadows/maps/shadow_lookup.h"
+#include "tests/same_bits.h"
 #include "tests/scratch_directory.h"
 #include "tests/shadows/maps/shadow_map_test_util.h"
 #include "tests/shadows/shadow_test_support.h"
 #include "tests/shadows/soft_test_support.h"
 
 using namespace shadowlab;
+using test::sameBytes;
 namespace fs = std::filesystem;
 
 namespace {
@@ -62,10 +64,6 @@ std::vector<float> readBuffer(const fs::path& dir, const std::string& technique,
 }
 
 double sum(const std::vector<float>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
-
-bool sameBytes(const std::vector<float>& a, const std::vector<float>& b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
-}
 
 // One .exr of the directory: a same-named .png of the same size, channel Y, only finite
 // values; the camera's size, or a light-space one (one or more stacked squares: a map,

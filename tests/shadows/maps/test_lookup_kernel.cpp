@@ -16,8 +16,10 @@
 #include "shadows/maps/shadow_lookup.h"
 #include "shadows/technique.h"
 #include "shadow_map_test_util.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
+using test::sameBytes;
 
 namespace {
 
@@ -47,10 +49,6 @@ struct LookupScene {
 const LookupScene& lookupScene() {
     static const LookupScene s;
     return s;
-}
-
-bool sameBytes(const std::vector<float>& a, const std::vector<float>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
 std::vector<raster::SimdLevel> vectorLevels() {

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include "raster/thread_count.h"
+#include "shading/lights.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/volumes/counting_mode.h"
 #include "tests/shadows/shadow_test_support.h"
