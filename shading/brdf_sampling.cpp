@@ -1,9 +1,9 @@
-#include "raster/portable_constants.h"
 #include "shading/brdf_sampling.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "raster/portable_constants.h"
 #include "raster/portable_math.h"
 #include "shading/luminance.h"
 #include "shading/microfacet_ggx.h"

@@ -7,6 +7,7 @@
 #include "raster/portable_math.h"
 
 namespace shadowlab {
+
 double EnvironmentMap::rowEdgeTheta(int j) const { return kPi * double(j) / double(height); }
 
 double EnvironmentMap::columnEdgePhi(int i) const {

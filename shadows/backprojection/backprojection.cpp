@@ -26,7 +26,7 @@
 namespace shadowlab {
 namespace {
 
-const char* const kName = "backprojection";
+const char* const kBackprojectionName = "backprojection";
 
 struct Settings {
     int resolution = 512;
@@ -106,7 +106,7 @@ PixelResult shadePixel(const Frame& f, const glm::dvec3& P, const glm::dvec3& N,
 
 void writeDebug(const ShadowInputs& in, const Frame& f, const std::vector<int8_t>& level,
                 const std::vector<uint16_t>& patches) {
-    const DebugBuffers debug(in.debugDir, kName);
+    const DebugBuffers debug(in.debugDir, kBackprojectionName);
     if (!debug.enabled()) return;
     const GBuffer& g = in.gbuffer;
     writeDepthMap(debug, "depth", f.soft.map);
@@ -116,7 +116,7 @@ void writeDebug(const ShadowInputs& in, const Frame& f, const std::vector<int8_t
     const float most = float(*std::max_element(patches.begin(), patches.end()));
     debug.write("patches", g.width, g.height, std::vector<float>(patches.begin(), patches.end()), 0.0f,
                 std::max(most, 1.0f));
-    const auto [i, j] = plotPixel(in.params, g.width, g.height, kName);
+    const auto [i, j] = plotPixel(in.params, g.width, g.height, kBackprojectionName);
     const size_t k = g.index(i, j);
     if (!g.hit[k]) return;
     PatchGrid grid;
@@ -125,14 +125,14 @@ void writeDebug(const ShadowInputs& in, const Frame& f, const std::vector<int8_t
     LightBitmask hidden;
     const PixelResult r =
         shadePixel(f, glm::dvec3(g.position[k]), glm::dvec3(g.normal[k]), grid, scratch, &drawn, &hidden);
-    writeLightPlot(in.debugDir / (std::string(kName) + "-light.svg"), f.samples, f.light.disk, hidden, drawn,
+    writeLightPlot(in.debugDir / (std::string(kBackprojectionName) + "-light.svg"), f.samples, f.light.disk, hidden, drawn,
                    r.level);
 }
 
 ShadowOutputs runBackprojection(const ShadowInputs& in) {
     const Settings s = readSettings(in.params);
-    requireAreaLight(in.light, kName);
-    plotPixel(in.params, in.gbuffer.width, in.gbuffer.height, kName);   // settings checked before any work
+    requireAreaLight(in.light, kBackprojectionName);
+    plotPixel(in.params, in.gbuffer.width, in.gbuffer.height, kBackprojectionName);   // settings checked before any work
     const AreaLightFrame light = areaLightFrame(in.light);
     const LightGrid samples(s.lightSamples, light.disk);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
@@ -193,7 +193,7 @@ Technique backprojectionTechnique() {
                   "relative distance from the light across which neighbouring patches join"),
         flagParam("min-max-hierarchy", true, "skip the pixels whose search region the hierarchy proves lit (same V)")};
     for (const ParamSpec& p : plotPixelParams("patches are drawn on the light")) params.push_back(p);
-    return {.name = kName,
+    return {.name = kBackprojectionName,
             .description = "shadow-map texels back-projected onto the area light, hidden light samples in a "
                            "bitmask (Guennebaud et al. 2006, Schwarz and Stamminger 2007)",
             .params = params,

@@ -30,7 +30,7 @@
 namespace shadowlab {
 namespace {
 
-const char* const kName = "chs";
+const char* const kChsName = "chs";
 
 struct Estimate {
     double blockerDistance = 0.0;   // 0: no blocker
@@ -90,7 +90,7 @@ double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const Map
 ShadowOutputs runChs(const ShadowInputs& in) {
     const int resolution = in.params.integer("resolution");
     const int searchNodes = in.params.integer("search-nodes"), filterNodes = in.params.integer("filter-nodes");
-    requireAreaLight(in.light, kName);
+    requireAreaLight(in.light, kChsName);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const SoftShadowMap soft = renderPcssMap(in, resolution);
@@ -116,7 +116,7 @@ ShadowOutputs runChs(const ShadowInputs& in) {
         },
         [](Row&) {});
     timer.lap("receivers");
-    const DebugBuffers debug(in.debugDir, kName);
+    const DebugBuffers debug(in.debugDir, kChsName);
     if (debug.enabled()) {
         writeDepthMap(debug, "depth", soft.map);
         writeMinMaxHierarchy(debug, h);
@@ -134,7 +134,7 @@ ShadowOutputs runChs(const ShadowInputs& in) {
 }  // namespace
 
 Technique contactHardeningTechnique() {
-    return {.name = kName,
+    return {.name = kChsName,
             .description = "contact-hardening soft shadows: PCSS read on the levels of a min/max mip chain (RTR 7.6, "
                            "Sikachev et al.)",
             .params = {softResolutionParam("texels per side of the map"),

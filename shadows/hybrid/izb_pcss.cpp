@@ -13,12 +13,12 @@
 namespace shadowlab {
 namespace {
 
-const char* const kName = "izb-pcss";
+const char* const kIzbPcssName = "izb-pcss";
 
 BlendDistances readBlendDistances(const TechniqueParams& p) {
     const BlendDistances d{float(p.real("hard-below")), float(p.real("soft-above"))};
     if (!(d.hardBelowM < d.softAboveM)) {
-        throw std::invalid_argument(std::string(kName) + ": hard-below must be less than soft-above");
+        throw std::invalid_argument(std::string(kIzbPcssName) + ": hard-below must be less than soft-above");
     }
     return d;
 }
@@ -32,7 +32,7 @@ ShadowOutputs hardShadows(const ShadowInputs& in) {
 void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const std::vector<float>& weight,
                 const std::vector<float>& hard, const std::vector<float>& blockerDistance,
                 const std::vector<float>& softV) {
-    const DebugBuffers debug(in.debugDir, kName);
+    const DebugBuffers debug(in.debugDir, kIzbPcssName);
     if (!debug.enabled()) return;
     const GBuffer& g = in.gbuffer;
     debug.write("blend-weight", g.width, g.height, weight, 0.0f, 1.0f);
@@ -57,7 +57,7 @@ void addStats(ShadowOutputs& out, const GBuffer& g, const std::vector<float>& we
 ShadowOutputs runIzbPcss(const ShadowInputs& in) {
     const PcssSettings pcss = readPcssSettings(in.params);
     const BlendDistances distances = readBlendDistances(in.params);
-    requireAreaLight(in.light, kName);
+    requireAreaLight(in.light, kIzbPcssName);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     // 1. PCSS: the soft V and the blocker distances.
@@ -93,7 +93,7 @@ Technique izbPcssTechnique() {
                                                                "exact hard shadow is kept"));
     params.push_back(realParam("soft-above", 0.4, 0.0, 1000.0, "m from receiver to occluder from which PCSS is "
                                                                "kept; blended between"));
-    return {.name = kName,
+    return {.name = kIzbPcssName,
             .description = "hybrid of The Division (RTR 7.9, Story and Wyman 2016): irregular z-buffer shadows "
                            "near their occluders, PCSS far from them, blended by the occluder distance",
             .params = params,

@@ -12,7 +12,7 @@
 namespace shadowlab {
 namespace {
 
-ShadowOutputs run(const ShadowInputs& in) {
+ShadowOutputs runProjectedTexture(const ShadowInputs& in) {
     const Light light = pointLightFor(in.light);
     const int resolution = in.params.integer("resolution");
     // Both roles are chosen on the scene the camera sees; the casters' copy (a caster level
@@ -54,7 +54,7 @@ Technique projectedTextureTechnique() {
                                                "else the largest by area"),
                        integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution,
                                     "texels per side of the occluders' texture")},
-            .run = run,
+            .run = runProjectedTexture,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};
 }

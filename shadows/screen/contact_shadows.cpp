@@ -26,7 +26,7 @@
 namespace shadowlab {
 namespace {
 
-const char* const kName = "contact-shadows";
+const char* const kContactShadowsName = "contact-shadows";
 const char* const kMapDebugFolder = "contact-shadows-shadow-map";
 
 MarchSettings readMarchSettings(const TechniqueParams& p) {
@@ -35,12 +35,12 @@ MarchSettings readMarchSettings(const TechniqueParams& p) {
 
 // The pixel whose march the debug view plots: the parameters', or the image's centre.
 glm::ivec2 plottedPixel(const ShadowInputs& in) {
-    const auto [i, j] = plotPixel(in.params, in.gbuffer.width, in.gbuffer.height, kName);
+    const auto [i, j] = plotPixel(in.params, in.gbuffer.width, in.gbuffer.height, kContactShadowsName);
     return {i, j};
 }
 
 void writeDebug(const ShadowInputs& in, const ScreenMarch& march, const ScreenMarch::Mask& mask, float thicknessM) {
-    const DebugBuffers debug(in.debugDir, kName);
+    const DebugBuffers debug(in.debugDir, kContactShadowsName);
     if (!debug.enabled()) return;
     const GBuffer& g = in.gbuffer;
     debug.write("march-mask", g.width, g.height, mask.visibility, 0.0f, 1.0f);
@@ -109,7 +109,7 @@ Technique contactShadowsTechnique() {
                                "m behind the depth buffer's surface a sample still counts as inside it"));
     params.push_back(flagParam("shadow-map", true, "off: the march alone (no caster off screen or hidden casts)"));
     for (const ParamSpec& p : plotPixelParams("march is plotted")) params.push_back(p);
-    return {.name = kName,
+    return {.name = kContactShadowsName,
             .description = "contact shadows (RTR 7.10, Sousa et al. 2011): a shadow map, and a march over the "
                            "camera's depth buffer that restores the shadows its bias loses at contacts",
             .params = params,

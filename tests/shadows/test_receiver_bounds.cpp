@@ -24,7 +24,7 @@ using test::sameBits;
 namespace {
 
 // Every level's kernels, chosen as light_view.cpp chooses them.
-const BoundsKernels& kernelsOf(raster::SimdLevel level) {
+const BoundsKernels& boundsKernelsOf(raster::SimdLevel level) {
     return raster::forSimdLevel(level, boundsKernelsScalar, boundsKernelsAvx2, boundsKernelsAvx512);
 }
 
@@ -65,7 +65,7 @@ TEST_CASE("receiver bounds: the scalar twin is glm's double expression, every SI
         CHECK_FALSE(scalar.behindApex);
         for (raster::SimdLevel level : test::supportedLevels()) {
             CAPTURE(raster::simdLevelName(level));
-            const BoundsKernels& k = kernelsOf(level);
+            const BoundsKernels& k = boundsKernelsOf(level);
             const size_t body = n / size_t(k.width) * size_t(k.width);
             BoundsResult vector = emptyBounds();
             k.space[space]({p, served.data(), body, glm::value_ptr(view)}, vector);
@@ -85,7 +85,7 @@ TEST_CASE("receiver bounds: the scalar twin is glm's double expression, every SI
         boundsKernelsScalar().space[kPerspectiveView]({p, served.data(), n, glm::value_ptr(view)}, scalar);
         CHECK(scalar.behindApex == bool(flag));
         for (raster::SimdLevel level : test::supportedLevels()) {
-            const BoundsKernels& k = kernelsOf(level);
+            const BoundsKernels& k = boundsKernelsOf(level);
             BoundsResult vector = emptyBounds();
             k.space[kPerspectiveView]({p, served.data(), n / size_t(k.width) * size_t(k.width), glm::value_ptr(view)}, vector);
             CHECK(vector.behindApex == bool(flag));

@@ -382,7 +382,7 @@ UmbraErrors umbraErrors(const test::SoftScene& s, const std::vector<float>& V) {
     return e;
 }
 
-std::string softScene(const std::string& name) {
+std::string softScenePath(const std::string& name) {
     return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft/" + name + ".json";
 }
 
@@ -424,7 +424,7 @@ TEST_CASE("fins: multi-layer fins over-estimate the umbra less than smoothies an
 }
 
 TEST_CASE("fins: 16 layers keep the light out of the green plane's umbra, one layer does not (Figure 7)") {
-    const test::SoftScene s = umbraScene(softScene("torus-over-plane"));
+    const test::SoftScene s = umbraScene(softScenePath("torus-over-plane"));
     const UmbraErrors one = umbraErrors(s, s.run("fins", {{"layers", "1"}}).visibility);
     const UmbraErrors sixteen = umbraErrors(s, s.run("fins").visibility);
     INFO("light in the umbra: " << one.lightInUmbra << " (1 layer), " << sixteen.lightInUmbra << " (16 layers); RMS "

@@ -23,7 +23,7 @@ using test::sameBits;
 
 namespace {
 
-fins::IlluminanceKernels kernelsOf(raster::SimdLevel level) {
+fins::IlluminanceKernels illuminanceKernelsOf(raster::SimdLevel level) {
     return raster::forSimdLevel(level, fins::illuminanceKernelsScalar, fins::illuminanceKernelsAvx2,
                                 fins::illuminanceKernelsAvx512);
 }
@@ -67,7 +67,7 @@ struct Placed {
 // The receivers P placed by a level's kernel.
 Placed placedBy(raster::SimdLevel level, const Setup& setup, const std::vector<float>& P) {
     Placed placed(P.size() / 3);
-    kernelsOf(level).place(setup.place(), P.data(), uint32_t(P.size() / 3), placed.columns());
+    illuminanceKernelsOf(level).place(setup.place(), P.data(), uint32_t(P.size() / 3), placed.columns());
     return placed;
 }
 
@@ -148,7 +148,7 @@ TEST_CASE("fins illuminance kernel: every SIMD level gives the scalar twin's bit
             const double e = inner ? 0.5 : 1.0;
             const fins::IlluminateConstants c{setup.view.clipFromView[2][2], setup.view.clipFromView[3][2], L0, e, bernstein};
             std::vector<float> twin = before;
-            kernelsOf(raster::SimdLevel::Scalar).illuminate(c, placed.columns(), texels.columns(inner), uint32_t(n), twin.data());
+            illuminanceKernelsOf(raster::SimdLevel::Scalar).illuminate(c, placed.columns(), texels.columns(inner), uint32_t(n), twin.data());
             int penumbra = 0;
             for (size_t k = 0; k < n; ++k) {
                 const double stored = texels.column[0][k], Lr = placed.column[3][k];
@@ -164,7 +164,7 @@ TEST_CASE("fins illuminance kernel: every SIMD level gives the scalar twin's bit
             for (raster::SimdLevel level : test::supportedLevels()) {
                 INFO(raster::simdLevelName(level));
                 std::vector<float> got = before;
-                kernelsOf(level).illuminate(c, placed.columns(), texels.columns(inner), uint32_t(n), got.data());
+                illuminanceKernelsOf(level).illuminate(c, placed.columns(), texels.columns(inner), uint32_t(n), got.data());
                 CHECK(std::memcmp(got.data(), twin.data(), n * sizeof(float)) == 0);
             }
         }

@@ -159,7 +159,7 @@ void checkSquareShadow(const SquareScene& scene, const Light& light) {
 // is the part with S.x >= -x.
 constexpr double kOccluderY = 2.0, kLightY = 4.0;
 
-WorldGeometry halfPlaneScene() {
+WorldGeometry halfPlaneGeometry() {
     WorldGeometry w;
     addQuad(w, {-20.0, 0.0, -20.0}, {-20.0, 0.0, 20.0}, {20.0, 0.0, 20.0}, {20.0, 0.0, -20.0});
     addQuad(w, {-20.0, kOccluderY, -20.0}, {-20.0, kOccluderY, 20.0}, {0.0, kOccluderY, 20.0},
@@ -214,7 +214,7 @@ std::vector<Range> strataXRanges(const AreaLightFrame& frame, int n, int sub) {
 // The test uses delta = 1e-6 per point (so it would pass for almost any seed); the ray
 // offset (micrometres) moves the edge by far less than the 1e-4 added for it.
 void checkProfile(const Light& light, double (*exactFraction)(const Light&, double hiddenBelow)) {
-    const ReferenceVisibility reference(halfPlaneScene());
+    const ReferenceVisibility reference(halfPlaneGeometry());
     const ReferenceOptions options;  // 32 x 32
     const int n = options.areaSamplesPerAxis, samples = n * n;
     const std::vector<Range> ranges = strataXRanges(areaLightFrame(light), n, 16);
