@@ -3,7 +3,8 @@
 
     scripts/compile_times.py [--build DIR] [--target T ...] [--top N] [-- cmake options]
 
-Configures DIR afresh (default build-times/, Release, no compiler cache) with this script as
+Configures DIR afresh (default build-times/, Release, no compiler cache; a DIR that exists
+must be one this script made) with this script as
 CMake's compiler and linker launcher, builds the targets (default: all) on every core, and
 prints the total CPU time (user + system of each compiler and linker process), the wall
 time, and the N units that cost the most. Each compile or link is timed by the kernel's
@@ -59,8 +60,11 @@ def main():
     args = parser.parse_args()
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     build = os.path.abspath(args.build)
-    shutil.rmtree(build, ignore_errors=True)
     log = os.path.join(build, "compile_times.tsv")
+    # It starts from nothing, so it removes the folder: only one it made itself.
+    if os.path.exists(build) and not os.path.exists(log):
+        sys.exit(f"compile_times: {build} exists and is not a folder of this script's; name another with --build")
+    shutil.rmtree(build, ignore_errors=True)
     launcher = f"{sys.executable};{os.path.abspath(__file__)};--record;{log};--"
     subprocess.check_call(["cmake", "-S", root, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
                            f"-DCMAKE_CXX_COMPILER_LAUNCHER={launcher}",

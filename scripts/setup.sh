@@ -11,11 +11,12 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 mode=${1:-all}
 [[ $mode == command || $mode == all ]] || { echo "usage: scripts/setup.sh [command]" >&2; exit 2; }
 
-packages=(g++ cmake make pkg-config python3
+packages=(g++ cmake make
           libglm-dev libstb-dev libopenexr-dev libimath-dev libtbb-dev libembree-dev
           nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libmeshoptimizer-dev)
 if [[ $mode == all ]]; then
-  packages+=(doctest-dev libbenchmark-dev     # the tests and the stage benchmarks
+  packages+=(python3                          # the layout checks and the figures' scripts
+             doctest-dev libbenchmark-dev     # the tests and the stage benchmarks
              ccache                           # the compiler cache of every build (scripts/ccache.sh)
              libegl-dev libgl-dev libopengl-dev libgl1-mesa-dri   # the llvmpipe peer (bench/peers)
              clang-14 libclang-rt-14-dev      # the sanitizer builds (scripts/sanitize.sh, tsan.sh)
