@@ -3,6 +3,7 @@
 // files whole or not at all.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <initializer_list>
 #include <iostream>
@@ -65,6 +66,12 @@ void addVec3Option(CLI::App* cmd, const std::string& name, std::optional<glm::ve
     }, help)->type_name("X,Y,Z");
 }
 
+// An option whose text is checked by what reads it: given, even as '', or not given, so that
+// an empty value reaches the check instead of being taken for a missing one.
+void addOptionalText(CLI::App* cmd, const std::string& name, std::optional<std::string>& target, const std::string& help) {
+    cmd->add_option_function<std::string>(name, [&target](const std::string& text) { target = text; }, help)->type_name("TEXT");
+}
+
 // --width and --height of render, sweep and flythrough; applyOverrides() applies them.
 void addSizeOptions(CLI::App* cmd, SceneOverrides& overrides) {
     cmd->add_option("--width", overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
@@ -96,6 +103,26 @@ Progress* progressIfWanted(Progress& progress, bool asked) {
     return asked || isatty(fileno(stderr)) ? &progress : nullptr;
 }
 
+// Every floating-point option of every command must be a finite number: CLI11's Range lets
+// NaN through (it compares false both ways) and an infinity past a one-sided bound, and a NaN
+// exposure or rotation became a black image or a crash. The check goes on each option CLI11
+// reads as FLOAT (one value or a list, each value checked), so a new option cannot miss it.
+void requireFiniteFloats(CLI::App& app) {
+    const CLI::Validator finite(
+        [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) return "must be a finite number, got '" + text + "'";
+            return {};
+        },
+        "", "FINITE");
+    for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+        for (CLI::Option* option : command->get_options()) {
+            if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite);
+        }
+    }
+}
+
 // CLI11 answers a mistyped command with "A subcommand is required"; name it instead.
 void requireKnownCommand(const CLI::App& app, int argc, char** argv) {
     if (argc < 2 || argv[1][0] == '-') return;
@@ -108,7 +135,8 @@ void requireKnownCommand(const CLI::App& app, int argc, char** argv) {
 }
 
 struct RenderArgs {
-    std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json, reference, casterLod;
+    std::string scene, technique = "none", png, aov, debugDir, simd = "auto", errorMap, json, reference;
+    std::optional<std::string> casterLod;   // given, even empty, or not
     std::vector<std::string> params;
     int threads = 0;
     float exposure = 0.0f;
@@ -165,7 +193,7 @@ void runRender(const RenderArgs& a) {
     Progress progress(std::cerr);
     FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir, progressIfWanted(progress, a.progress)};
     for (const std::string& p : a.params) parseParamAssignment(p, settings.params);
-    if (!a.casterLod.empty()) settings.params["caster-lod"] = a.casterLod;
+    if (a.casterLod) settings.params["caster-lod"] = *a.casterLod;
     const Frame frame = renderFrame(prepared, technique, settings);
     const Scene& scene = prepared.scene();
     std::printf("%s: %s in %.2f ms\n", scene.name.c_str(), technique.name.c_str(), frame.techniqueMs);
@@ -196,7 +224,8 @@ void writeReport(const std::filesystem::path& stem, const std::string& csv, cons
 struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
-    std::string simd = "auto", outDir = "out", plotY = "misclassified", shard, casterLod;
+    std::string simd = "auto", outDir = "out", plotY = "misclassified", shard;
+    std::optional<std::string> casterLod;   // given, even empty, or not
     bool progress = false, images = false;
 };
 
@@ -213,7 +242,7 @@ void runSweepCommand(SweepArgs a) {
     a.options.progress = progressIfWanted(progress, a.progress);
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
-    if (!a.casterLod.empty()) a.options.axes.push_back(parseSweepAxis("caster-lod=" + a.casterLod));
+    if (a.casterLod) a.options.axes.push_back(parseSweepAxis("caster-lod=" + *a.casterLod));
     a.options.simd = raster::parseSimdLevel(a.simd);
     if (!a.shard.empty()) a.options.shard = parseSweepShard(a.shard);
     const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
@@ -385,7 +414,7 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
     r->add_option("--fovy", a.overrides.fovyDeg, "vertical field of view in degrees");
     addLightOptions(r, a.overrides);
     r->add_option("--param", a.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
-    r->add_option("--caster-lod", a.casterLod, "share of the casters' triangles kept, 0.001..1: --param caster-lod=R");
+    addOptionalText(r, "--caster-lod", a.casterLod, "share of the casters' triangles kept, 0.001..1: --param caster-lod=R");
     r->add_option("--debug-buffers", a.debugDir, "directory for the technique's intermediate buffers");
     r->add_option("--exposure", a.exposure, "exposure in stops for the PNG")->capture_default_str();
     CLI::Option* errorMap = r->add_option("--error-map", a.errorMap,
@@ -412,7 +441,7 @@ void addSweepCommand(CLI::App& app, SweepArgs& a) {
     s->add_option("scene", a.options.scene, "built-in scene name or scene file (.json)")->required();
     s->add_option("--technique", a.techniques, "techniques to compare, comma-separated")->delimiter(',')->required();
     s->add_option("--param", a.params, "one axis: name=v1,v2,... (repeatable; the cross product is run)");
-    s->add_option("--caster-lod", a.casterLod, "caster levels of detail, comma-separated: the axis --param caster-lod=R1,R2,...");
+    addOptionalText(s, "--caster-lod", a.casterLod, "caster levels of detail, comma-separated: the axis --param caster-lod=R1,R2,...");
     s->add_option("--threads", a.options.threads, "thread counts, comma-separated (default: all cores)")->delimiter(',')->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(s, "frames per row", a.options.runs, a.options.warmupRuns, a.simd);
     addSweepReportOptions(s, a.outDir, a.plotY);
@@ -600,6 +629,7 @@ int main(int argc, char** argv) {
     addExportObjCommand(app, exportObj);
     addEnvironmentCommand(app, environment);
     addCompositeCommand(app, composite);
+    requireFiniteFloats(app);
     try {
         requireKnownCommand(app, argc, argv);
         app.parse(argc, argv);
