@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Every target's sources compile as one translation unit.
 
-    scripts/check_one_unit.py SOURCE_DIR SCRATCH_DIR
+    scripts/check_one_unit.py SOURCE_DIR SCRATCH_DIR [CXX_COMPILER]
 
 The build compiles each target's files in batches of eight (CMake's unity build, README
 "Build time"), so the names a file keeps to itself, in its unnamed namespace, share a unit
@@ -9,7 +9,8 @@ with the rest of its batch. Two files that define the same such name compile onl
 they fall in different batches, and a file added elsewhere may put them together. This
 check configures SCRATCH_DIR with each target as one batch (CMAKE_UNITY_BUILD_BATCH_SIZE=0)
 and runs the compiler's front end (-fsyntax-only) on every such unit, so any clash, in any
-batching, fails here. Exits 1, with the compiler's messages, if a unit does not compile.
+batching, fails here; it cannot see a file-local overload that wins a call in a neighbour's
+file without an error. Exits 1, with the compiler's messages, if a unit does not compile.
 """
 import concurrent.futures
 import json
@@ -30,12 +31,13 @@ def syntax_only(entry):
             skip = True
         elif word not in ("-c", "-MD", "-MMD"):
             checked.append(word)
-    return checked[:1] + ["-fsyntax-only"] + checked[1:], entry["directory"]
+    return checked + ["-fsyntax-only"], entry["directory"]
 
 
 def main():
     source, scratch = sys.argv[1], sys.argv[2]
-    subprocess.run(["cmake", "-S", source, "-B", scratch, "-DCMAKE_BUILD_TYPE=Release",
+    compiler = [f"-DCMAKE_CXX_COMPILER={sys.argv[3]}"] if len(sys.argv) > 3 else []
+    subprocess.run(["cmake", "-S", source, "-B", scratch, "-DCMAKE_BUILD_TYPE=Release", *compiler,
                     "-DCMAKE_UNITY_BUILD=ON", "-DCMAKE_UNITY_BUILD_BATCH_SIZE=0",
                     "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON"], check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(scratch, "compile_commands.json")) as f:

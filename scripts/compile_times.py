@@ -65,12 +65,14 @@ def main():
     if os.path.exists(build) and not os.path.exists(log):
         sys.exit(f"compile_times: {build} exists and is not a folder of this script's; name another with --build")
     shutil.rmtree(build, ignore_errors=True)
+    os.makedirs(build)
+    open(log, "w").close()   # marks the folder as this script's
     launcher = f"{sys.executable};{os.path.abspath(__file__)};--record;{log};--"
     subprocess.check_call(["cmake", "-S", root, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
                            f"-DCMAKE_CXX_COMPILER_LAUNCHER={launcher}",
                            f"-DCMAKE_CXX_LINKER_LAUNCHER={launcher}", *args.cmake_options],
                           stdout=subprocess.DEVNULL)
-    open(log, "w").close()
+    open(log, "w").close()   # the build's units only, not the configure's checks
     targets = [a for t in args.target for a in ("--target", t)]
     start = time.monotonic()
     subprocess.check_call(["cmake", "--build", build, f"-j{os.cpu_count()}", *targets],
