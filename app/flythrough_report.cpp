@@ -8,13 +8,12 @@
 #include "app/line_plot.h"
 #include "app/svg.h"
 #include "app/sweep.h"
+#include "app/sweep_json.h"
 
 namespace shadowlab {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::array<float, 3> xyzArray(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
 std::vector<std::string> vectorFields(const std::optional<glm::vec3>& v) {
     if (!v) return {"", "", ""};
@@ -22,8 +21,8 @@ std::vector<std::string> vectorFields(const std::optional<glm::vec3>& v) {
 }
 
 Json frameJson(const FlythroughFrame& f) {
-    Json frame = {{"frame", f.frame}, {"time", f.time}, {"eye", xyzArray(f.eye)}, {"target", xyzArray(f.target)}};
-    if (f.light) frame["light"] = xyzArray(*f.light);
+    Json frame = {{"frame", f.frame}, {"time", f.time}, {"eye", xyz(f.eye)}, {"target", xyz(f.target)}};
+    if (f.light) frame["light"] = xyz(*f.light);
     frame["median_ms"] = f.medianMs;
     frame["min_ms"] = f.minMs;
     frame["errors"] = Json::parse(formatJson(f.errors));

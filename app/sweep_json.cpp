@@ -17,8 +17,6 @@ namespace {
 // order of the CSV's columns.
 using Json = nlohmann::ordered_json;
 
-std::array<float, 3> xyz(const glm::vec3& v) { return {v.x, v.y, v.z}; }
-
 // Only the overrides given, so that a sweep without any writes {}.
 Json overridesJson(const SceneOverrides& o) {
     Json j = Json::object();

@@ -2,12 +2,19 @@
 // and its reader, with which `shadowlab merge-sweep` joins the files of a sweep's shards.
 #pragma once
 
+#include <array>
 #include <string>
 #include <variant>
+
+#include <glm/glm.hpp>
 
 #include "app/sweep.h"
 
 namespace shadowlab {
+
+// A position as its JSON array [x, y, z], as the sweep's overrides and a fly-through's frames
+// write it.
+inline std::array<float, 3> xyz(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
 // {"scene", "grid": {"techniques", "axes": [{"name", "values"}], "overrides": {the given
 //  ones of "width", "height", "eye", "target", "fovy", "light_position", "light_radius"},
