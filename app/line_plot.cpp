@@ -62,7 +62,8 @@ std::string formatLinePlotSvg(const LinePlot& plot) {
                               R"(viewBox="0 0 %.0f %.0f" font-family="sans-serif" font-size="12">)" "\n",
                               canvas.x, canvas.y, canvas.x, canvas.y);
     text += format(R"(<rect width="%.0f" height="%.0f" fill="#fff"/>)" "\n", canvas.x, canvas.y);
-    text += format(R"(<text x="%.1f" y="24" font-size="14">%s</text>)" "\n", kPlotLeft, svg::escape(plot.title).c_str());
+    text += format(R"(<text x="%.1f" y="24" font-size="14">%s</text>)" "\n", kPlotLeft,
+                   svg::escape(plot.title).c_str());
     text += format(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="none" stroke="#444"/>)" "\n", kPlotLeft,
                    kPlotTop, kLinePlotRight - kPlotLeft, kPlotBottom - kPlotTop);
     for (double x = 0.0; x <= ax.top * (1 + 1e-9); x += ax.step) {
@@ -71,12 +72,12 @@ std::string formatLinePlotSvg(const LinePlot& plot) {
         text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%g</text>)" "\n", X(x), kPlotBottom + 16, x);
     }
     for (double y = 0.0; y <= ay.top * (1 + 1e-9); y += ay.step) {
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kPlotLeft, Y(y), kLinePlotRight,
-                       Y(y));
+        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#ddd"/>)" "\n", kPlotLeft, Y(y),
+                       kLinePlotRight, Y(y));
         text += format(R"(<text x="%.1f" y="%.1f" text-anchor="end">%g</text>)" "\n", kPlotLeft - 6, Y(y) + 4, y);
     }
-    text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%s</text>)" "\n", (kPlotLeft + kLinePlotRight) / 2, kPlotBottom + 40,
-                   svg::escape(plot.xTitle).c_str());
+    text += format(R"(<text x="%.1f" y="%.1f" text-anchor="middle">%s</text>)" "\n", (kPlotLeft + kLinePlotRight) / 2,
+                   kPlotBottom + 40, svg::escape(plot.xTitle).c_str());
     text += format(R"svg(<text transform="translate(18 %.1f) rotate(-90)" text-anchor="middle">%s</text>)svg" "\n",
                    (kPlotTop + kPlotBottom) / 2, svg::escape(plot.yTitle).c_str());
     std::vector<svg::LabelBox> placed;

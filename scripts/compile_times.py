@@ -4,10 +4,10 @@
     scripts/compile_times.py [--build DIR] [--target T ...] [--top N] [-- cmake options]
 
 Configures DIR afresh (default build-times/, Release, no compiler cache; a DIR that exists
-must be one this script made) with this script as
-CMake's compiler and linker launcher, builds the targets (default: all) on every core, and
-prints the total CPU time (user + system of each compiler and linker process), the wall
-time, and the N units that cost the most. Each compile or link is timed by the kernel's
+must be one this script made) with this script as CMake's compiler and linker launcher,
+builds the targets (default: all) on every core, records each unit's CPU time (user +
+system of each compiler and linker process) in DIR/compile_times.tsv, and prints the total,
+the wall time, and the N units that cost the most. Each compile or link is timed by the kernel's
 accounting of the child process (getrusage), so the figures do not depend on how many
 jobs ran beside it.
 
