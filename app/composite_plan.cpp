@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/svg.h"
+#include "scenes/bounds.h"
 
 namespace shadowlab {
 namespace {
@@ -72,8 +73,7 @@ std::string formatPlanSvg(const DifferentialModel& m, const CompositeFrame& fram
         const ShaftNode& shaft = m.shafts.nodes[size_t(index)];
         const uint32_t slot = m.sourceTree.nodes[size_t(shaft.source)].patch;
         const glm::dvec3 from = m.model.centre(m.transfers.sources[slot]);
-        const Aabb& leaf = m.receiverOctree.nodes[size_t(shaft.receiver)].bounds;
-        const glm::dvec3 to = 0.5 * (leaf.min + leaf.max);
+        const glm::dvec3 to = centre(m.receiverOctree.nodes[size_t(shaft.receiver)].bounds);
         text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-opacity="0.25"/>)" "\n",
                        v.x(from), v.y(from), v.x(to), v.y(to), colourOf(cluster[slot]));
     }

@@ -24,6 +24,9 @@ struct Sphere {
     double radius;
 };
 
+// The ball through the box's corners.
+inline Sphere boundingSphere(const Aabb& b) { return {centre(b), 0.5 * glm::length(b.max - b.min)}; }
+
 // The box holding both.
 inline Aabb merged(const Aabb& a, const Aabb& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
 

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "compositing/differential/frame_transfers.h"
+#include "scenes/bounds.h"
 #include "scenes/float_range.h"
 #include "shadows/camera_pass.h"
 #include "shadows/stage_timer.h"
@@ -132,12 +133,11 @@ std::vector<ClusterMap> clusterMaps(const DifferentialModel& m, const PreparedOb
                                     std::span<const glm::mat4> placements, const Aabb& box,
                                     const CompositeSettings& settings, CompositeFrame& out) {
     const WorldGeometry casters = placed(object.levels.simplified.scene, placements);
-    const glm::dvec3 centre = 0.5 * (box.min + box.max);
-    const double radius = 0.5 * glm::length(box.max - box.min);
+    const Sphere bound = boundingSphere(box);
     std::vector<ClusterMap> maps;
     for (const SourceCluster& cluster : out.clusters) {
         out.lights.push_back(clusterLight(m, cluster));
-        maps.push_back(clusterShadowMap(out.lights.back(), centre, radius, casters, settings.mapSize, settings.simd));
+        maps.push_back(clusterShadowMap(out.lights.back(), bound.centre, bound.radius, casters, settings.mapSize, settings.simd));
     }
     return maps;
 }
@@ -232,7 +232,7 @@ CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& 
         m, out.clusters, rows, settings.ldr ? frameIntensityTransfers(m, out.hits.sourcePatches, rows) : m.transfers.L);
     std::vector<uint8_t> listedPatch(m.model.patches.size(), 0);
     for (const uint32_t slot : out.hits.receiverPatches) listedPatch[m.transfers.receiverPatches[slot]] = 1;
-    const std::vector<uint8_t> open = openToObject(m, out.clusters, 0.5 * (box.min + box.max));
+    const std::vector<uint8_t> open = openToObject(m, out.clusters, centre(box));
     timer.lap("transfer_sums");
     // The model's pixels are the photograph's (m.pixels): only the object's are built.
     const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, settings.simd,

@@ -29,13 +29,10 @@ std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const P
     const WorldGeometry whole = placed(object.levels.whole, placements);
     const ReferenceVisibility objectRays(whole);
     const Aabb box = boundsOf(whole);
-    const Sphere objectSphere{0.5 * (box.min + box.max), 0.5 * glm::length(box.max - box.min)};
+    const Sphere objectSphere = boundingSphere(box);
     const std::vector<uint32_t> radiant = radiantPatches(m.model, m.radiance);
     std::vector<Sphere> patchSpheres;
-    for (const uint32_t j : radiant) {
-        const Aabb b = patchBounds(m.model, j);
-        patchSpheres.push_back({0.5 * (b.min + b.max), 0.5 * glm::length(b.max - b.min)});
-    }
+    for (const uint32_t j : radiant) patchSpheres.push_back(boundingSphere(patchBounds(m.model, j)));
     // The camera's view with the object: its pixels, and which are the model's.
     const uint32_t modelTriangles = uint32_t(m.geometry.triangles.size());
     const GBuffer g = renderGBuffer(withObject(m, whole), m.camera, raster::SimdLevel::Scalar);
