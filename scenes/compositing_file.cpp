@@ -27,6 +27,7 @@ Camera readCamera(const JsonObject& o) {
     camera.fovyDeg = o["fovy"].number({0.0, 180.0, true, true});
     camera.width = o["width"].integer(kPixels), camera.height = o["height"].integer(kPixels);
     camera.zNear = 0.01f, camera.zFar = 1000.0f;
+    checkViewFrame(o, camera);
     return camera;
 }
 
@@ -39,15 +40,22 @@ Camera readCalibratedCamera(const JsonObject& o, const std::string& directory, g
         for (int row = 0; row < 4; ++row) {
             for (int col = 0; col < 4; ++col) worldFromTarget[col][row] = values[size_t(4 * row + col)].number();
         }
+        if (!isRigid(worldFromTarget)) {
+            m->fail("must be rigid: a rotation (orthonormal, determinant +1, to 1e-4) and a translation, "
+                    "its last row 0 0 0 1");
+        }
     }
+    Camera camera;
     try {
         const PhotoCalibration calibration =
             readPhotoCalibration((std::filesystem::path(directory) / o["file"].string()).string());
         double off = 0.0;
-        return cameraOf(calibration, worldFromTarget, crop, off);
+        camera = cameraOf(calibration, worldFromTarget, crop, off);
     } catch (const std::exception& error) {
         o["file"].fail(error.what());
     }
+    checkViewFrame(o, camera);
+    return camera;
 }
 
 PatchSurface readSurface(const JsonField& field) {

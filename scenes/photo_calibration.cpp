@@ -78,20 +78,30 @@ PhotoCalibration readPhotoCalibration(const std::string& path) {
     for (int row = 0; row < 3; ++row) {
         for (int col = 0; col < 3; ++col) c.R[col][row] = R[size_t(3 * row + col)];
     }
-    const glm::dmat3 identity = glm::transpose(c.R) * c.R;
-    for (int a = 0; a < 3; ++a) {
-        for (int b = 0; b < 3; ++b) {
-            if (std::abs(identity[a][b] - (a == b ? 1.0 : 0.0)) > 1e-4) {
-                throw std::runtime_error("calibration '" + path + "': R is not a rotation");
-            }
-        }
+    if (!isRotation(c.R)) {
+        throw std::runtime_error("calibration '" + path + "': R is not a rotation (orthonormal, determinant +1, to 1e-4)");
     }
-    if (glm::determinant(c.R) < 0.0) throw std::runtime_error("calibration '" + path + "': R is a reflection");
     c.t = {t[0], t[1], t[2]};
     return c;
 }
 
+bool isRotation(const glm::dmat3& m) {
+    const glm::dmat3 identity = glm::transpose(m) * m;
+    for (int a = 0; a < 3; ++a) {
+        for (int b = 0; b < 3; ++b) {
+            if (!(std::abs(identity[a][b] - (a == b ? 1.0 : 0.0)) <= 1e-4)) return false;
+        }
+    }
+    return glm::determinant(m) > 0.0;
+}
+
+bool isRigid(const glm::dmat4& m) {
+    const bool lastRow = m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0;
+    return lastRow && isRotation(glm::dmat3(m));
+}
+
 Camera cameraOf(const PhotoCalibration& c, const glm::dmat4& worldFromTarget, glm::ivec2& crop, double& offAxisPixels) {
+    if (!isRigid(worldFromTarget)) throw std::invalid_argument("photo camera: worldFromTarget is not rigid");
     if (std::abs(c.fx - c.fy) > 0.01 * c.fx)
         throw std::invalid_argument("photo camera: fx and fy differ (square pixels only)");
     // The principal point in our pixel coordinates (centres at whole + 0.5).

@@ -24,13 +24,19 @@ struct PhotoCalibration {
 // is not a rotation (to 1e-4).
 PhotoCalibration readPhotoCalibration(const std::string& path);
 
+// Whether m is a rotation: orthonormal to 1e-4 in each entry of m^T m, determinant +1.
+bool isRotation(const glm::dmat3& m);
+// Whether m is a rigid transform: a rotation, a translation and a last row of 0 0 0 1.
+bool isRigid(const glm::dmat4& m);
+
 // Our camera for the calibration, in the world frame `worldFromTarget` places the target in
 // (a rigid transform): the same centre, axes and focal lengths, on the largest window of
 // whole pixels centred on the principal point (our cameras are symmetric; conventions.md).
 // `crop` gets the window's first column and row in the photograph, and `offAxisPixels` how
 // far (in pixels) the principal point misses the window's centre (under 0.71 by
 // construction: half a pixel on each axis).
-// Throws std::invalid_argument when fx and fy differ by more than 1% (square pixels only).
+// Throws std::invalid_argument when fx and fy differ by more than 1% (square pixels only)
+// or worldFromTarget is not rigid.
 Camera cameraOf(const PhotoCalibration& calibration, const glm::dmat4& worldFromTarget, glm::ivec2& crop,
                 double& offAxisPixels);
 

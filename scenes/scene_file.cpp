@@ -91,15 +91,6 @@ void readMaterial(const JsonField& field, const std::string& directory, Scene& s
     names.materials.push_back(material.name);
 }
 
-void checkViewFrame(const JsonObject& object, const Camera& camera) {
-    switch (viewFrameProblem(camera)) {
-        case ViewFrameProblem::EyeAtTarget: object["target"].fail("must differ from eye");
-        case ViewFrameProblem::UpParallel:
-            (object.has("up") ? object["up"] : object.field()).fail("up must not be zero or parallel to the viewing direction");
-        case ViewFrameProblem::None: break;
-    }
-}
-
 Camera readCamera(const JsonField& field) {
     const JsonObject object = field.object({"eye", "target", "up", "fovy", "width", "height", "near", "far"});
     Camera camera;
@@ -219,6 +210,16 @@ std::string scenePath(const std::string& nameOrPath, const std::string& sceneDir
 }
 
 }  // namespace
+
+void checkViewFrame(const JsonObject& object, const Camera& camera) {
+    switch (viewFrameProblem(camera)) {
+        case ViewFrameProblem::EyeAtTarget:
+            (object.has("target") ? object["target"] : object.field()).fail("the camera's eye and target must differ");
+        case ViewFrameProblem::UpParallel:
+            (object.has("up") ? object["up"] : object.field()).fail("up must not be zero or parallel to the viewing direction");
+        case ViewFrameProblem::None: break;
+    }
+}
 
 std::string findBuiltinSceneDir(const std::string& compiledDir) {
     const char* override = std::getenv("SHADOWLAB_SCENE_DIR");

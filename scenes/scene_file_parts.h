@@ -32,6 +32,10 @@ void readInstance(const JsonField& field, const SceneNames& names, Scene& scene)
 // A spot light's cookie file is relative to directory.
 Light readLight(const JsonField& field, const std::string& directory);
 
+// Fails on a camera object whose view frame is undefined (camera.h, viewFrameProblem),
+// naming its "target" or "up" when it has one: the rule of every camera a file holds.
+void checkViewFrame(const JsonObject& object, const Camera& camera);
+
 // One entry of "volumes": a procedural density volume (scene_volumes.cpp).
 DensityVolume readVolume(const JsonField& field);
 

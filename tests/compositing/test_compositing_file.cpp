@@ -26,6 +26,16 @@ std::filesystem::path scratch() {
     return dir;
 }
 
+// The shipped file's calibration, replaced by a camera in some variants.
+constexpr const char* kCalibrationBlock =
+    "\"calibration\": {\n"
+    "    \"file\": \"../photos/chessboard_left05_camera.txt\",\n"
+    "    \"world_from_target\": [1, 0, 0, 0,\n"
+    "                          0, 0, -1, 0,\n"
+    "                          0, 1, 0, 0,\n"
+    "                          0, 0, 0, 1]\n"
+    "  }";
+
 // The shipped file with one text replaced, in a scratch folder, its "../" paths made to
 // point at the built-in scenes.
 std::string variant(const std::string& name, const std::string& from, const std::string& to) {
@@ -101,6 +111,20 @@ TEST_CASE("compositing file: malformed files are refused, naming the file and th
     CHECK(errorOf(variant("scale", "\"scale\": 0.005}", "\"scale\": -1}")).find("scale") != std::string::npos);
     CHECK(errorOf(variant("calibration", "chessboard_left05_camera.txt", "missing_camera.txt")).find("missing_camera.txt") !=
           std::string::npos);
+    // Every camera is checked as a scene file's is (viewFrameProblem), and a calibration's
+    // placement must be rigid: each of these exited 0 and returned the photograph unchanged.
+    const std::string calibration = kCalibrationBlock;
+    const std::string camera = "\"camera\": {\"eye\": [0, 1, 1], \"fovy\": 40, \"width\": 64, \"height\": 64, ";
+    CHECK(errorOf(variant("eye", calibration, camera + "\"target\": [0, 1, 1]}"))
+              .find("camera.target: the camera's eye and target must differ") != std::string::npos);
+    CHECK(errorOf(variant("up", calibration, camera + "\"target\": [0, 3, 1]}"))
+              .find("camera: up must not be zero or parallel") != std::string::npos);
+    const std::string rigid = "calibration.world_from_target: must be rigid";
+    const std::string identityRows = "[1, 0, 0, 0,\n                          0, 0, -1, 0,\n                          0, 1, 0, 0,";
+    CHECK(errorOf(variant("singular", identityRows, "[1, 0, 0, 0,  0, 0, 0, 0,  0, 1, 0, 0,")).find(rigid) != std::string::npos);
+    CHECK(errorOf(variant("scaled", identityRows, "[2, 0, 0, 0,  0, 0, -2, 0,  0, 2, 0, 0,")).find(rigid) != std::string::npos);
+    CHECK(errorOf(variant("mirror", identityRows, "[-1, 0, 0, 0,  0, 0, -1, 0,  0, 1, 0, 0,")).find(rigid) != std::string::npos);
+    CHECK(errorOf(variant("projective", "0, 0, 0, 1]", "0, 0, 0.5, 1]")).find(rigid) != std::string::npos);
     // A photograph smaller than the calibrated camera's window.
     const std::filesystem::path small = scratch() / "small.png";
     writePng(small, 32, 32, std::vector<uint8_t>(32 * 32 * 3, 128));

@@ -238,7 +238,7 @@ TEST_CASE("camera, sizes and transforms out of range") {
          {"camera.near: near must be less than far"}},
         {"zero near", [](json& s) { s["camera"]["near"] = 0; }, {"camera.near: must be > 0, got 0"}},
         {"eye on target", [](json& s) { s["camera"]["target"] = s["camera"]["eye"]; },
-         {"camera.target: must differ from eye"}},
+         {"camera.target: the camera's eye and target must differ"}},
         {"looking straight down with up +Y", [](json& s) { s["camera"]["eye"] = {0, 9, 0}; s["camera"]["target"] = {0, 0, 0}; },
          {"camera: up must not be zero or parallel to the viewing direction"}},
         {"zero grid size", [](json& s) { s["meshes"][0]["size"][0] = 0; }, {"meshes[0].size[0]: must be > 0, got 0"}},
