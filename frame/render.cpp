@@ -8,14 +8,18 @@
 
 #include "scenes/camera.h"
 #include "scenes/caster_lod.h"
+#include "scenes/scene_limits.h"
 #include "shading/shade.h"
 
 namespace shadowlab {
 namespace {
 
-void requireFinite(const glm::vec3& v, const char* what) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-        throw std::invalid_argument(std::string(what) + " must be three finite numbers");
+// A position given on the command line, bound as a scene file's are (scene_limits.h).
+void requireCoordinate(const glm::vec3& v, const char* what) {
+    const auto inWorld = [](float x) { return std::abs(double(x)) <= kMaxCoordinate; };   // false for NaN
+    if (!inWorld(v.x) || !inWorld(v.y) || !inWorld(v.z)) {
+        throw std::invalid_argument(std::string(what) + " must be three numbers within +-" +
+                                    (std::ostringstream() << kMaxCoordinate).str() + " metres");
     }
 }
 
@@ -45,8 +49,8 @@ void applyOverrides(Scene& scene, const SceneOverrides& o) {
     Camera& c = scene.camera;
     if (o.width) c.width = *o.width;
     if (o.height) c.height = *o.height;
-    if (o.eye) requireFinite(*o.eye, "--eye"), c.eye = *o.eye;
-    if (o.target) requireFinite(*o.target, "--target"), c.target = *o.target;
+    if (o.eye) requireCoordinate(*o.eye, "--eye"), c.eye = *o.eye;
+    if (o.target) requireCoordinate(*o.target, "--target"), c.target = *o.target;
     if (o.fovyDeg) c.fovyDeg = *o.fovyDeg;
     if (c.width < 1 || c.height < 1 || c.width > raster::kMaxViewport || c.height > raster::kMaxViewport) {
         throw std::invalid_argument("image size must be within 1.." + std::to_string(raster::kMaxViewport));
@@ -61,7 +65,7 @@ void applyOverrides(Scene& scene, const SceneOverrides& o) {
         case ViewFrameProblem::None: break;
     }
     if (o.lightPosition) {
-        requireFinite(*o.lightPosition, "--light-pos");
+        requireCoordinate(*o.lightPosition, "--light-pos");
         if (scene.lights.empty()) throw std::invalid_argument("--light-pos: the scene has no light");
         // A sun has a direction and no position: moving it would silently change nothing.
         if (scene.lights[0].type == LightType::Directional)

@@ -8,6 +8,7 @@
 
 #include "scenes/camera.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
 
 namespace shadowlab {
@@ -48,7 +49,10 @@ std::string lastKeyframeProblem(const CameraPath& path, const std::vector<Light>
     return {};
 }
 
-glm::vec3 lerp(const glm::vec3& a, const glm::vec3& b, float s) { return a + (b - a) * s; }
+// In double, as (1 - s) a + s b: exact at both keys, and b - a cannot overflow.
+glm::vec3 lerp(const glm::vec3& a, const glm::vec3& b, float s) {
+    return glm::vec3((1.0 - double(s)) * glm::dvec3(a) + double(s) * glm::dvec3(b));
+}
 
 // ---- CSV --------------------------------------------------------------------------------
 
@@ -127,9 +131,9 @@ CameraPath readCameraPath(const JsonField& field, const std::vector<Light>& ligh
         const JsonObject key = entry.object({"time", "eye", "target", lightKey(lights)});
         PathKeyframe& keyframe = path.keyframes.emplace_back();
         keyframe.time = key["time"].number();
-        keyframe.eye = key["eye"].vec3();
-        keyframe.target = key["target"].vec3();
-        if (const auto light = key.optional(lightKey(lights))) keyframe.light = light->vec3();
+        keyframe.eye = key["eye"].vec3(kCoordinate);
+        keyframe.target = key["target"].vec3(kCoordinate);
+        if (const auto light = key.optional(lightKey(lights))) keyframe.light = light->vec3(kCoordinate);
         if (const std::string problem = lastKeyframeProblem(path, lights); !problem.empty()) entry.fail(problem);
     }
     return path;
@@ -161,8 +165,9 @@ CameraPath parseCameraPathCsv(const std::string& text, const std::string& file, 
         std::vector<float> values;
         for (size_t c = 0; c < fields.size(); ++c) {
             const std::optional<double> value = finiteNumber(fields[c]);
-            if (!value || (c > 0 && std::abs(*value) > std::numeric_limits<float>::max()))
-                fail(columns[c] + ": expected a finite number, got '" + fields[c] + "'");
+            if (!value) fail(columns[c] + ": expected a finite number, got '" + fields[c] + "'");
+            if (c > 0 && !kCoordinate.contains(*value))
+                fail(columns[c] + ": must be " + kCoordinate.describe() + " (metres), got '" + fields[c] + "'");
             values.push_back(float(*value));
             if (c == 0) path.keyframes.emplace_back().time = *value;
         }

@@ -22,7 +22,7 @@ constexpr Interval kReflectance{0.0, 1.0, false, true};
 Camera readCamera(const JsonObject& o) {
     o.allowOnly({"eye", "target", "up", "fovy", "width", "height"});
     Camera camera;
-    camera.eye = o["eye"].vec3(), camera.target = o["target"].vec3();
+    camera.eye = o["eye"].vec3(kCoordinate), camera.target = o["target"].vec3(kCoordinate);
     if (auto up = o.optional("up")) camera.up = up->vec3();
     camera.fovyDeg = o["fovy"].number({0.0, 180.0, true, true});
     camera.width = o["width"].integer(kPixels), camera.height = o["height"].integer(kPixels);
@@ -62,8 +62,8 @@ PatchSurface readSurface(const JsonField& field) {
     const JsonObject o = field.object({"name", "origin", "edge_u", "edge_v", "cells", "reflectance", "emitted"});
     PatchSurface s;
     if (auto name = o.optional("name")) s.name = name->string();
-    s.origin = glm::dvec3(o["origin"].vec3()), s.edgeU = glm::dvec3(o["edge_u"].vec3()),
-        s.edgeV = glm::dvec3(o["edge_v"].vec3());
+    s.origin = glm::dvec3(o["origin"].vec3(kCoordinate)), s.edgeU = glm::dvec3(o["edge_u"].vec3(kCoordinate)),
+        s.edgeV = glm::dvec3(o["edge_v"].vec3(kCoordinate));
     const std::vector<JsonField> cells = o["cells"].elements(2);
     s.cellsU = cells[0].integer({1.0, 4096.0, false, false}), s.cellsV = cells[1].integer({1.0, 4096.0, false, false});
     if (auto rho = o.optional("reflectance")) s.reflectance = glm::dvec3(rho->vec3(kReflectance));
@@ -75,7 +75,7 @@ PatchSurface readSurface(const JsonField& field) {
 // then the turn about +Y, then the translation.
 glm::mat4 readPlacement(const JsonField& field) {
     const JsonObject o = field.object({"translate", "scale", "rotate_y"});
-    const glm::vec3 translate = o.has("translate") ? o["translate"].vec3() : glm::vec3(0.0f);
+    const glm::vec3 translate = o.has("translate") ? o["translate"].vec3(kCoordinate) : glm::vec3(0.0f);
     const float scale = o.has("scale") ? o["scale"].number(kPositive) : 1.0f;
     const float turn = o.has("rotate_y") ? o["rotate_y"].number({-3600.0, 3600.0, false, false}) : 0.0f;
     // The turn's sine and cosine from raster/portable_math.h (the same bits on every CPU).

@@ -94,8 +94,8 @@ void readMaterial(const JsonField& field, const std::string& directory, Scene& s
 Camera readCamera(const JsonField& field) {
     const JsonObject object = field.object({"eye", "target", "up", "fovy", "width", "height", "near", "far"});
     Camera camera;
-    camera.eye = object["eye"].vec3();
-    camera.target = object["target"].vec3();
+    camera.eye = object["eye"].vec3(kCoordinate);
+    camera.target = object["target"].vec3(kCoordinate);
     if (const auto up = object.optional("up")) camera.up = up->vec3();
     camera.fovyDeg = object["fovy"].number(kFovyDeg);
     camera.width = object["width"].integer(kImageSize);

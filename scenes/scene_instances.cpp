@@ -78,7 +78,7 @@ glm::mat4 rotationAbout(int axis, float degrees) {
 // (world axes, in that order), then moved.
 glm::mat4 readTranslateRotateScale(const JsonObject& object) {
     glm::vec3 translate(0.0f), rotateDeg(0.0f), scale(1.0f);
-    if (const auto field = object.optional("translate")) translate = field->vec3();
+    if (const auto field = object.optional("translate")) translate = field->vec3(kCoordinate);
     if (const auto field = object.optional("rotate")) rotateDeg = field->vec3();
     if (const auto field = object.optional("scale"))
         scale = field->raw().is_number() ? glm::vec3(field->number(kPositive)) : field->vec3(kPositive);
@@ -105,7 +105,7 @@ std::vector<glm::vec3> readRepeat(const JsonField& field, size_t instancesBefore
     if (instancesBefore + copies > kMaxInstances)
         object["count"].fail("makes " + std::to_string(copies) + " copies; a scene holds at most " +
                              std::to_string(kMaxInstances) + " instances");
-    const glm::vec3 offset = object["offset"].vec3();
+    const glm::vec3 offset = object["offset"].vec3(kCoordinate);
     std::vector<glm::vec3> shifts;
     for (int k = 0; k < n.z; ++k)
         for (int j = 0; j < n.y; ++j)
@@ -113,15 +113,14 @@ std::vector<glm::vec3> readRepeat(const JsonField& field, size_t instancesBefore
     return shifts;
 }
 
-// Every vertex must land at a finite float in world space (worldPosition, as flatten()
-// places it; a translation of 3e38 with a scale of 2e38 overflows): otherwise infinities
-// would reach the rasterizer, Embree and the ray offsets.
-void checkFiniteInWorld(const JsonField& field, const MeshInstance& instance, const Mesh& mesh) {
+// Every vertex must land within the world's bound (scene_limits.h, kMaxCoordinate) as
+// flatten() places it (worldPosition): a translation of 3e38 with a scale of 2e38 would
+// overflow, and coordinates near 2e18 abort Embree.
+void checkInWorld(const JsonField& field, const MeshInstance& instance, const Mesh& mesh) {
     for (size_t k = 0; k < mesh.positions.size(); ++k) {
-        const glm::vec3 q = worldPosition(instance, mesh.positions[k]);
-        if (std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)) continue;
-        field.fail("instance \"" + instance.name + "\": vertex " + std::to_string(k) +
-                   " is not finite in world space (the transform overflows float)");
+        if (withinWorld(worldPosition(instance, mesh.positions[k]))) continue;
+        field.fail("instance \"" + instance.name + "\": vertex " + std::to_string(k) + " lands outside the world (every coordinate " +
+                   kCoordinate.describe() + " metres)");
     }
 }
 
@@ -141,7 +140,7 @@ void readInstance(const JsonField& field, const SceneNames& names, Scene& scene)
     if (!repeat) {
         if (scene.instances.size() >= kMaxInstances)
             field.fail("a scene holds at most " + std::to_string(kMaxInstances) + " instances");
-        checkFiniteInWorld(field, instance, scene.meshes[instance.mesh]);
+        checkInWorld(field, instance, scene.meshes[instance.mesh]);
         scene.instances.push_back(instance);
         return;
     }
@@ -150,7 +149,7 @@ void readInstance(const JsonField& field, const SceneNames& names, Scene& scene)
         MeshInstance shifted = instance;
         shifted.name = instance.name + "[" + std::to_string(copy) + "]";
         shifted.worldFromObject = glm::translate(glm::mat4(1.0f), shifts[copy]) * instance.worldFromObject;
-        checkFiniteInWorld(field, shifted, scene.meshes[instance.mesh]);
+        checkInWorld(field, shifted, scene.meshes[instance.mesh]);
         scene.instances.push_back(shifted);
     }
 }

@@ -44,8 +44,8 @@ glm::vec3 unitDirection(const JsonField& field) {
 }
 
 void readRectangle(const JsonObject& object, Light& light) {
-    light.halfEdgeU = object["halfEdgeU"].vec3();
-    light.halfEdgeV = object["halfEdgeV"].vec3();
+    light.halfEdgeU = object["halfEdgeU"].vec3(kCoordinate);
+    light.halfEdgeV = object["halfEdgeV"].vec3(kCoordinate);
     const glm::dvec3 u(light.halfEdgeU), v(light.halfEdgeV);
     if (!(glm::length(glm::cross(u, v)) > 0.0))
         object["halfEdgeV"].fail("the rectangle has zero area (a half-edge is zero or they are parallel)");
@@ -89,7 +89,7 @@ Light readLight(const JsonField& field, const std::string& directory) {
         object["cookie"].fail("is projected through a spot light's cone: only a spot light may have one");
     }
     object.allowOnly(keysFor(light.type));
-    if (light.type != LightType::Directional) light.position = object["position"].vec3();
+    if (light.type != LightType::Directional) light.position = object["position"].vec3(kCoordinate);
     readShape(object, light);
     const glm::vec3 color = object.has("color") ? object["color"].vec3(kNonNegative) : glm::vec3(1.0f);
     light.intensity = color * object["power"].number(kNonNegative);

@@ -20,7 +20,7 @@ DensityVolume readVolume(const JsonField& field) {
     const VolumeKind kind = object["procedural"].choice(kVolumeKinds);
     if (kind == VolumeKind::Constant) object.allowOnly({"name", "procedural", "min", "max", "density"});
     else object.allowOnly({"name", "procedural", "min", "max", "density", "resolution", "seed"});
-    const glm::vec3 min = object["min"].vec3(), max = object["max"].vec3();
+    const glm::vec3 min = object["min"].vec3(kCoordinate), max = object["max"].vec3(kCoordinate);
     if (!glm::all(glm::lessThan(min, max))) object["max"].fail("must be greater than min in x, y and z");
     const float density = object["density"].number(kNonNegative);
     DensityVolume volume = kind == VolumeKind::Constant

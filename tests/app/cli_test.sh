@@ -142,6 +142,8 @@ expect_error "render without scene" render -o "$scratch/x.png"
 expect_error "bad --width" render sphere-box --width 0 -o "$scratch/x.png"
 expect_error "csm without a sun" render sphere-box --technique csm "${tiny[@]}" -o "$scratch/x.png"
 expect_error "--light-pos of a sun" render "$(dirname "${BASH_SOURCE[0]}")/../../scenes/hard/sun.json" --light-pos 1,2,3 "${tiny[@]}" -o "$scratch/x.png"
+expect_error "--light-pos beyond the world's bound (Embree aborted)" render sphere-box --technique reference --light-pos 1.9e18,5,0 "${tiny[@]}" -o "$scratch/x.png"
+expect_error "--eye beyond the world's bound" render sphere-box --eye 0,2e6,0 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
 maps=$(dirname "${BASH_SOURCE[0]}")/../../scenes/environments
 expect_error "environment of a missing map" environment "$scratch/none.hdr"

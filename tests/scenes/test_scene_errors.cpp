@@ -284,12 +284,16 @@ TEST_CASE("scene limits: counted before anything is allocated") {
          {"meshes[0].divisions: makes 536870912 triangles, more than a scene may hold (33554432)"}},
         {"a 16384 x 16384 sphere", [](json& s) { s["meshes"][2]["slices"] = 16384; s["meshes"][2]["stacks"] = 16384; },
          {"meshes[2].stacks: makes 536838144 triangles, more than a scene may hold (33554432)"}},
-        {"a transform overflowing float", [](json& s) { s["instances"][1]["translate"] = {3e38, 0, 0}; s["instances"][1]["scale"] = 2e38; },
-         {"instances[1]: instance \"tri\": vertex 1 is not finite in world space (the transform overflows float)"}},
-        {"a repeat whose copies overflow float", [](json& s) {
-             s["instances"][1]["translate"] = {3e38, 0, 0};
-             s["instances"][1]["repeat"] = {{"count", {3, 1, 1}}, {"offset", {1e38, 0, 0}}};
-         }, {"instances[1]: instance \"tri[1]\": vertex 0 is not finite in world space"}},
+        {"a translation beyond the world's bound", [](json& s) { s["instances"][1]["translate"] = {3e38, 0, 0}; },
+         {"instances[1].translate[0]: must be in [-1e+06, 1e+06], got 3e+38"}},
+        {"a transform placing a vertex beyond the world's bound", [](json& s) {
+             s["instances"][1]["translate"] = {9e5, 0, 0}; s["instances"][1]["scale"] = 2e38;
+         },
+         {"instances[1]: instance \"tri\": vertex 1 lands outside the world (every coordinate in [-1e+06, 1e+06] metres)"}},
+        {"a repeat whose copies leave the world", [](json& s) {
+             s["instances"][1]["translate"] = {9e5, 0, 0};
+             s["instances"][1]["repeat"] = {{"count", {3, 1, 1}}, {"offset", {2e5, 0, 0}}};
+         }, {"instances[1]: instance \"tri[1]\": vertex 0 lands outside the world"}},
         {"instances past the triangle limit", [](json& s) {
              s["meshes"][0]["divisions"] = {2048, 2048};   // 8.4 M triangles, five copies
              s["instances"][0]["repeat"] = {{"count", {5, 1, 1}}, {"offset", {1, 0, 0}}};
