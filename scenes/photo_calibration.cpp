@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
@@ -10,14 +9,14 @@
 #include <vector>
 
 #include "raster/portable_math.h"
+#include "scenes/read_file.h"
 
 namespace shadowlab {
 namespace {
 
 // Every "key numbers..." line of the file, '#' lines and blank ones skipped.
 std::map<std::string, std::vector<double>> readKeyedNumbers(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot read calibration '" + path + "'");
+    std::istringstream in(readWholeFile(path));
     std::map<std::string, std::vector<double>> lines;
     std::string line;
     while (std::getline(in, line)) {

@@ -1,7 +1,6 @@
 #include "scenes/read_file.h"
 
 #include <cerrno>
-#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -10,21 +9,40 @@
 #include "scenes/scene_limits.h"
 
 namespace shadowlab {
+namespace {
 
-std::string readWholeFile(const std::string& path) {
-    // A directory opens without error on Linux and only fails when read; say what it is.
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored))
-        throw SceneError(path + ": is a directory, not a file");
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) throw SceneError(path + ": cannot open: " + std::strerror(errno));
-    const std::streamoff size = in.tellg();
-    if (size < 0) throw SceneError(path + ": cannot tell its size (not a regular file?)");
-    if (uint64_t(size) > kMaxFileBytes)
+const char* kindOf(std::filesystem::file_type type) {
+    switch (type) {
+        case std::filesystem::file_type::directory: return "a directory";
+        case std::filesystem::file_type::fifo: return "a FIFO (named pipe)";
+        case std::filesystem::file_type::socket: return "a socket";
+        case std::filesystem::file_type::character: return "a character device";
+        case std::filesystem::file_type::block: return "a block device";
+        default: return "not a regular file";
+    }
+}
+
+}  // namespace
+
+uint64_t regularFileSize(const std::string& path) {
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(path, error);
+    if (error) throw SceneError(path + ": cannot open: " + error.message());
+    if (status.type() != std::filesystem::file_type::regular)
+        throw SceneError(path + ": is " + kindOf(status.type()) + ", not a file");
+    const uint64_t size = std::filesystem::file_size(path, error);
+    if (error) throw SceneError(path + ": cannot tell its size: " + error.message());
+    if (size > kMaxFileBytes)
         throw SceneError(path + ": " + std::to_string(size) + " bytes, more than the " + std::to_string(kMaxFileBytes) +
                          " a file may have");
+    return size;
+}
+
+std::string readWholeFile(const std::string& path) {
+    const uint64_t size = regularFileSize(path);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path + ": cannot open: " + std::strerror(errno));
     std::string bytes(size_t(size), '\0');
-    in.seekg(0);
     if (!in.read(bytes.data(), std::streamsize(bytes.size())))
         throw SceneError(path + ": cannot read: " + std::strerror(errno));
     return bytes;

@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 #include "raster/fixed_point.h"
 #include "scenes/alpha_texture.h"
@@ -118,9 +117,11 @@ Environment readEnvironment(const JsonField& field, const std::string& directory
     if (const auto ambient = object.optional("ambient")) environment.ambient = ambient->vec3(kNonNegative);
     if (const auto map = object.optional("map")) {
         environment.map = (fs::path(directory) / map->string()).string();
-        std::error_code ignored;
-        if (fs::is_directory(environment.map, ignored)) map->fail(environment.map + ": is a directory, not a file");
-        if (!std::ifstream(environment.map, std::ios::binary)) map->fail(environment.map + ": cannot open");
+        try {
+            regularFileSize(environment.map);   // read when a technique needs it; checked now
+        } catch (const SceneError& error) {
+            map->fail(error.what());
+        }
     }
     if (const auto rotation = object.optional("rotation")) {
         if (environment.map.empty()) rotation->fail("turns the map, so needs \"map\"");

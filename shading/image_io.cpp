@@ -21,10 +21,12 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
-#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include "raster/fixed_point.h"
+#include "scenes/image_file.h"
+#include "scenes/read_file.h"
+#include "scenes/scene_file.h"
 #include "scenes/scene_limits.h"
 
 namespace shadowlab {
@@ -269,11 +271,12 @@ ImageChannels readExrOrThrow(const fs::path& path, const std::vector<std::string
 
 ImageChannels readExrFromFile(const fs::path& path, const std::vector<std::string>* wanted) {
     return readExrOrThrow(path, wanted, [&](uint64_t& fileBytes) {
-        auto stream = std::make_unique<Imf::StdIFStream>(path.c_str());
-        std::error_code error;
-        fileBytes = fs::file_size(path, error);
-        if (error) throw std::runtime_error("cannot read EXR file " + quoted(path) + ": " + error.message());
-        return stream;
+        try {
+            fileBytes = regularFileSize(path.string());   // before opening: a FIFO would block
+        } catch (const SceneError& error) {
+            throw std::runtime_error("cannot read EXR file " + quoted(path) + ": " + error.what());
+        }
+        return std::make_unique<Imf::StdIFStream>(path.c_str());
     });
 }
 
@@ -373,19 +376,8 @@ void writePng(const fs::path& path, int width, int height, const std::vector<uin
 }
 
 Image8 readImage8(const fs::path& path) {
-    int width = 0, height = 0, channels = 0;
-    if (stbi_info(path.c_str(), &width, &height, &channels) == 0) {
-        throw std::runtime_error("cannot read image " + quoted(path) + ": " + stbi_failure_reason());
-    }
-    if (width > 8192 || height > 8192) {
-        throw std::runtime_error("cannot read image " + quoted(path) + ": larger than 8192 pixels on a side");
-    }
-    const std::unique_ptr<unsigned char, decltype(&stbi_image_free)> pixels(
-        stbi_load(path.c_str(), &width, &height, &channels, 3), stbi_image_free);
-    if (!pixels) throw std::runtime_error("cannot read image " + quoted(path) + ": " + stbi_failure_reason());
-    Image8 image{width, height, {}};
-    image.rgb.assign(pixels.get(), pixels.get() + size_t(width) * size_t(height) * 3);
-    return image;
+    DecodedImage image = readImage(path.string(), 3, {ImageFormat::Png, ImageFormat::Jpeg});
+    return {image.width, image.height, std::move(image.bytes)};
 }
 
 void writeFileAtomically(const fs::path& path, const std::function<void(const fs::path&)>& write) {

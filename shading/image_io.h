@@ -80,9 +80,9 @@ ImageChannels parseExr(const std::string& bytes, const std::filesystem::path& pa
 void writePng(const std::filesystem::path& path, int width, int height,
               const std::vector<uint8_t>& rgb);
 
-// An 8-bit image read by stb_image (PNG, JPEG and the other formats it knows), converted
-// to RGB, row 0 at the top. Throws std::runtime_error naming the file for one it cannot
-// read, or one over 8192 pixels on a side (checked before the pixels are decoded).
+// An 8-bit PNG or JPEG image (scenes/image_file.h, readImage), converted to RGB, row 0 at
+// the top. Throws SceneError (a std::runtime_error) naming the file for one it cannot read,
+// another format, a truncated file, or one over 8192 pixels on a side.
 struct Image8 {
     int width = 0, height = 0;
     std::vector<uint8_t> rgb;   // 3 bytes per pixel

@@ -159,8 +159,46 @@ expect "an EXR attribute of 2^31 - 1 bytes in 24" "header attribute 'x' declares
 expect "an EXR data window of 2^31 - 1 rows" "data window is 1 x 2147483647 pixels; images must be 1..8192 on a side" compare "$dir/tall-window.exr" "$dir/ok.exr" --heatmap "$out"
 expect "a channel the EXR lacks" "has no channel 'Q'" compare "$dir/ok.exr" "$dir/ok.exr" --channel Q --heatmap "$out"
 
-# ---- Command-line values --------------------------------------------------------------------
+# ---- Images and special files ----------------------------------------------------------------
+# Every reader checks a file's type before opening it (a FIFO blocked every one of them) and
+# reads no more than the file's size (/dev/zero as a calibration read 2 GB); every 8-bit
+# image goes through one checked decoder that accepts PNG (and JPEG for photographs).
+src=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 tiny=(--width 32 --height 20)
+mkfifo "$dir/fifo"
+# A run-length Radiance HDR cut short (stb_image 2.27 spun for ever on it), a TGA and a PPM
+# whose headers promise 64 x 64 pixels the file does not hold, a PNG cut in half.
+printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 64 +X 64\n\x02\x02\x00\x40\x80' >"$dir/short.hdr"
+printf '\x00\x00\x02\x00\x00\x00\x00\x00\x00\x00\x00\x00\x40\x00\x40\x00\x18\x00\x80\x80' >"$dir/short.tga"
+printf 'P6\n64 64\n255\n\x80\x80' >"$dir/short.ppm"
+blinds=$src/scenes/cookies/textures/blinds.png
+head -c "$(($(stat -c %s "$blinds") / 2))" "$blinds" >"$dir/half.png"
+for image in short.hdr short.tga short.ppm half.png fifo; do
+    sed "s|textures/blinds.png|$dir/$image|" "$src/scenes/cookies/spot-cookie.json" >"$dir/cookie-$image.json"
+done
+expect "a truncated run-length HDR as a cookie" "short.hdr: is a Radiance HDR image; here only PNG is read" render "$dir/cookie-short.hdr.json" "${tiny[@]}" -o "$out"
+expect "a short TGA as a cookie" "short.tga: is not an image this program reads" render "$dir/cookie-short.tga.json" "${tiny[@]}" -o "$out"
+expect "a short PPM as a cookie" "short.ppm: is a PNM image; here only PNG is read" render "$dir/cookie-short.ppm.json" "${tiny[@]}" -o "$out"
+expect "half a PNG as a cookie" "half.png: is truncated: a PNG file ends with its IEND chunk" render "$dir/cookie-half.png.json" "${tiny[@]}" -o "$out"
+expect "a FIFO as a cookie" "fifo: is a FIFO (named pipe), not a file" render "$dir/cookie-fifo.json" "${tiny[@]}" -o "$out"
+sed "s|../environments/pmndrs_sky.exr|$dir/fifo|" "$src/scenes/environment/sphere-sky.json" >"$dir/sky-fifo.json"
+expect "a FIFO as a scene's environment map" "environment.map: $dir/fifo: is a FIFO (named pipe), not a file" render "$dir/sky-fifo.json" "${tiny[@]}" -o "$out"
+expect "a FIFO as an environment map" "fifo: is a FIFO (named pipe), not a file" environment "$dir/fifo" --out "$dir/env"
+expect "a FIFO as a camera path" "fifo: is a FIFO (named pipe), not a file" flythrough sphere-box --technique shadow-map --path "$dir/fifo" --out "$dir/fly"
+expect "a FIFO as a sweep's shard" "fifo: is a FIFO (named pipe), not a file" merge-sweep "$dir/fifo" --out "$dir/merged"
+expect "a FIFO as a report's input" "fifo: is a FIFO (named pipe), not a file" report "$dir/fifo" --out "$dir/report"
+expect "a FIFO as an EXR to compare" "fifo: is a FIFO (named pipe), not a file" compare "$dir/fifo" "$dir/ok.exr" --heatmap "$out"
+compositing() {   # compositing NAME FROM TO: the shipped chessboard file with FROM replaced by TO
+    sed -e "s|\"\.\./|\"$src/scenes/|g" -e "s|$2|$3|" "$src/scenes/compositing/chessboard.json" >"$dir/$1.json"
+}
+compositing photo-fifo "$src/scenes/photos/chessboard_left05_undistorted.png" "$dir/fifo"
+compositing calibration-zero "$src/scenes/photos/chessboard_left05_camera.txt" /dev/zero
+compositing photo-half "$src/scenes/photos/chessboard_left05_undistorted.png" "$dir/half.png"
+expect "a FIFO as a compositing file's photograph" "fifo: is a FIFO (named pipe), not a file" composite "$dir/photo-fifo.json" --no-reference --frames 0
+expect "/dev/zero as a calibration" "/dev/zero: is a character device, not a file" composite "$dir/calibration-zero.json" --no-reference --frames 0
+expect "half a PNG as a photograph" "half.png: is truncated" composite "$dir/photo-half.json" --no-reference --frames 0
+
+# ---- Command-line values --------------------------------------------------------------------
 expect "render --threads 100000" "--threads: Value 100000 not in range 0 to 1024" render sphere-box --threads 100000 -o "$out"
 expect "render --width 0" "--width: Value 0 not in range 1 to 8192" render sphere-box --width 0 -o "$out"
 expect "render --width 9000" "--width: Value 9000 not in range 1 to 8192" render sphere-box --width 9000 -o "$out"
