@@ -395,8 +395,8 @@ void addProgressFlag(CLI::App* cmd, bool& progress) {
 // --runs, --warmup and --simd of the timing commands (sweep, scaling, bench); `unit` says
 // what is repeated, e.g. "frames per row". Their --threads differ (a list, or one count).
 void addTimingOptions(CLI::App* cmd, const std::string& unit, int& runs, int& warmupRuns, std::string& simd) {
-    cmd->add_option("--runs", runs, "measured " + unit)->capture_default_str()->check(CLI::Range(1, 10000));
-    cmd->add_option("--warmup", warmupRuns, "warm-up " + unit)->capture_default_str()->check(CLI::Range(0, 1000));
+    cmd->add_option("--runs", runs, "measured " + unit)->capture_default_str()->check(CLI::Range(1, kMaxRuns));
+    cmd->add_option("--warmup", warmupRuns, "warm-up " + unit)->capture_default_str()->check(CLI::Range(0, kMaxWarmupRuns));
     addSimdOption(cmd, simd);
 }
 

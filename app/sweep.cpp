@@ -18,14 +18,16 @@ namespace {
 
 const char* const kShardRule = "expected I/N with 1 <= I <= N (I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N)";
 
-// The plans with only the shard's settings; a shard without any is a mistake in N.
+// The plans with only the shard's settings. N may not exceed the sweep's settings: a shard
+// without any is a mistake in N, and merge-sweep would wait for N files.
 std::vector<SweepPlan> shardOf(std::vector<SweepPlan> plans, const SweepShard& shard) {
     if (!shard.valid()) throw std::invalid_argument("shard " + shard.name() + ": " + kShardRule);
     const uint64_t all = settingCount(plans);
-    for (SweepPlan& plan : plans) std::erase_if(plan.settings, [&](const PlannedSetting& s) { return !shard.holds(s.index); });
-    if (settingCount(plans) == 0)
+    if (uint64_t(shard.count) > all)
         throw std::invalid_argument("--shard " + shard.name() + ": the sweep has only " + std::to_string(all) +
-                                    " settings, so this shard has none (use at most " + std::to_string(all) + " shards)");
+                                    " settings, so some shards would have none (use at most " + std::to_string(all) +
+                                    " shards)");
+    for (SweepPlan& plan : plans) std::erase_if(plan.settings, [&](const PlannedSetting& s) { return !shard.holds(s.index); });
     return plans;
 }
 

@@ -40,10 +40,18 @@ struct SweepShard {
     bool valid() const { return count >= 1 && index >= 1 && index <= count; }
     std::string name() const { return std::to_string(index) + "/" + std::to_string(count); }
     bool holds(uint64_t setting) const { return setting % uint64_t(count) == uint64_t(index - 1); }
+    // How many of a sweep's `settings` this shard holds.
+    uint64_t heldOf(uint64_t settings) const {
+        return settings / uint64_t(count) + (uint64_t(index - 1) < settings % uint64_t(count) ? 1 : 0);
+    }
 };
 
 // "i/n" with 1 <= i <= n -> shard; throws std::invalid_argument for anything else.
 SweepShard parseSweepShard(const std::string& text);
+
+// The most measured and warm-up frames per row: the bounds of `--runs` and `--warmup`, to
+// which a sweep's JSON is held when read back.
+inline constexpr int kMaxRuns = 10000, kMaxWarmupRuns = 1000;
 
 struct SweepOptions {
     std::string scene;                      // built-in name or .json path

@@ -1,5 +1,6 @@
 #include "app/sweep_json.h"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <optional>
@@ -8,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "raster/thread_count.h"
 #include "scenes/scene_limits.h"
 
 namespace shadowlab {
@@ -181,6 +183,31 @@ ScoreRecord readScore(const Json& j) {
     }
 }
 
+// Every count the file carries, checked before any is used to size or bound a loop (a
+// shard of 1/1000000000, a grid of 2^63 settings or no thread counts kept merge-sweep busy
+// for ever): the shard within the grid, thread counts as `sweep --threads` takes them,
+// runs as `--runs` and `--warmup` do, and exactly the rows the shard's settings make.
+void checkCounts(const SweepResults& r) {
+    const SweepGrid& g = r.grid;
+    const auto fail = [](const std::string& problem) { throw std::runtime_error("not the JSON of a sweep: " + problem); };
+    if (!r.shard.valid()) fail("shard " + r.shard.name() + ": not a shard (1 <= index <= count)");
+    if (g.settings < 1 || uint64_t(r.shard.count) > g.settings)
+        fail("grid.settings " + std::to_string(g.settings) + " must be at least 1 and the shards' count " +
+             std::to_string(r.shard.count));
+    if (g.threads.empty()) fail("grid.threads lists no thread count");
+    for (size_t k = 0; k < g.threads.size(); ++k) {
+        if (g.threads[k] < 1 || g.threads[k] > kMaxThreads || std::count(g.threads.begin(), g.threads.begin() + long(k), g.threads[k]))
+            fail("grid.threads: each must be 1.." + std::to_string(kMaxThreads) + " and given once, got " + std::to_string(g.threads[k]));
+    }
+    if (g.runs < 1 || g.runs > kMaxRuns || g.warmupRuns < 0 || g.warmupRuns > kMaxWarmupRuns)
+        fail("grid.runs must be 1.." + std::to_string(kMaxRuns) + " and grid.warmup 0.." + std::to_string(kMaxWarmupRuns));
+    const uint64_t held = r.shard.heldOf(g.settings);
+    if (held > r.rows.size() || held * g.threads.size() != r.rows.size())
+        fail("shard " + r.shard.name() + " of " + std::to_string(g.settings) + " settings at " + std::to_string(g.threads.size()) +
+             " thread counts has " + std::to_string(held) + " x " + std::to_string(g.threads.size()) + " rows, the file " +
+             std::to_string(r.rows.size()));
+}
+
 SweepResults readSweep(const Json& j) {
     SweepResults r;
     std::string where;   // the row being read, for the message
@@ -196,8 +223,7 @@ SweepResults readSweep(const Json& j) {
     } catch (const Json::exception& error) {
         throw std::runtime_error("not the JSON of a sweep: " + where + error.what());
     }
-    if (!r.shard.valid())
-        throw std::runtime_error("shard " + r.shard.name() + ": not a shard (1 <= index <= count)");
+    checkCounts(r);
     return r;
 }
 

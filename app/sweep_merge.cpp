@@ -24,10 +24,18 @@ void checkShards(const std::vector<SweepShardFile>& files) {
         if (const auto [at, added] = given.emplace(shard.index, &file.path); !added)
             throw std::runtime_error("shard " + shard.name() + " is given twice: " + *at->second + " and " + file.path);
     }
+    if (given.size() == size_t(count)) return;
+    // The first few missing, found within files.size() + kListed steps however large N is.
+    constexpr int kListed = 8;
     std::string missing;
-    for (int index = 1; index <= count; ++index)
-        if (!given.contains(index)) missing += (missing.empty() ? "" : ", ") + SweepShard{index, count}.name();
-    if (!missing.empty()) throw std::runtime_error("missing shard(s) " + missing + " of the sweep of " + first.path);
+    for (int index = 1, listed = 0; index <= count && listed < kListed; ++index) {
+        if (given.contains(index)) continue;
+        missing += (missing.empty() ? "" : ", ") + SweepShard{index, count}.name();
+        ++listed;
+    }
+    const size_t absent = size_t(count) - given.size();
+    if (absent > size_t(kListed)) missing += " and " + std::to_string(absent - size_t(kListed)) + " more";
+    throw std::runtime_error("missing shard(s) " + missing + " of the sweep of " + first.path);
 }
 
 std::string cell(uint64_t setting, int threads) {

@@ -34,6 +34,7 @@ SweepResults oddSweep(const std::filesystem::path& dir) {
     results.techniques = {"<b>technique</b>"};
     results.grid.threads = {1};
     results.grid.runs = 1;
+    results.grid.settings = 1;
     SweepRow row;
     row.technique = "<b>technique</b>";
     row.reference = "reference";
@@ -67,6 +68,7 @@ std::string twoSettingSweepFile(const std::filesystem::path& dir) {
     results.techniques = {"shadow-map"};
     results.grid.threads = {1, 2};
     results.grid.runs = 1;
+    results.grid.settings = 2;
     for (uint64_t setting : {0, 1}) {
         const std::string name = "s-images/setting-" + std::to_string(setting);
         const FrameImages images = {name + "-image.png", name + "-error-map.png", name + "-visibility.png",

@@ -66,6 +66,7 @@ TEST_CASE("sweep JSON with pictures: read back, it writes the same bytes, and wi
     SweepResults results;
     results.scene = "box";
     results.techniques = {"shadow-map"};
+    results.grid.settings = 1, results.grid.threads = {1}, results.grid.runs = 1;   // one row, as read back
     SweepRow row;
     row.technique = "shadow-map";
     row.errors.channel = "V";

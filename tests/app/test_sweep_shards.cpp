@@ -203,7 +203,7 @@ TEST_CASE("sweep JSON: unreadable text is refused naming the file") {
                          std::runtime_error);
     SweepResults zero = handShard(1, 3, "z.json").results;
     zero.shard = {0, 3};
-    CHECK_THROWS_WITH_AS(parseSweepJson(formatSweepJson(zero), "z.json"), doctest::Contains("z.json: shard 0/3: not a shard"),
+    CHECK_THROWS_WITH_AS(parseSweepJson(formatSweepJson(zero), "z.json"), doctest::Contains("z.json: not the JSON of a sweep: shard 0/3: not a shard"),
                          std::runtime_error);
 }
 
@@ -220,10 +220,47 @@ TEST_CASE("sweep --shard: I/N with 1 <= I <= N, digits only") {
 }
 
 TEST_CASE("sweep --shard: more shards than settings is an error, before rendering") {
-    SweepOptions options = tinyOptions({8, 8});
-    options.scene = "no-such-scene";   // not reached
-    CHECK_THROWS_WITH_AS(runSweep(options), doctest::Contains("the sweep has only 7 settings, so this shard has none"),
-                         std::invalid_argument);
+    // Shard 1 of 8 and of 10^9 hold setting 0, but merge-sweep would wait for N files.
+    for (const SweepShard shard : {SweepShard{8, 8}, SweepShard{1, 8}, SweepShard{1, 1000000000}}) {
+        SweepOptions options = tinyOptions(shard);
+        options.scene = "no-such-scene";   // not reached
+        CHECK_THROWS_WITH_AS(runSweep(options), doctest::Contains("the sweep has only 7 settings, so some shards would have none"),
+                             std::invalid_argument);
+    }
+}
+
+TEST_CASE("sweep JSON: every count is checked before it bounds a loop") {
+    // Each of these kept merge-sweep busy for ever, or until memory ran out.
+    const auto errorOf = [](SweepResults results) {
+        try {
+            parseSweepJson(formatSweepJson(results), "s.json");
+        } catch (const std::runtime_error& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    const SweepResults shard = handShard(1, 3, "a.json").results;
+    CHECK(errorOf(shard).empty());
+    SweepResults bad = shard;
+    bad.shard = {1, 1000000000};
+    CHECK(errorOf(bad) == "s.json: not the JSON of a sweep: grid.settings 3 must be at least 1 and the shards' count 1000000000");
+    bad = shard;
+    bad.grid.settings = uint64_t(1) << 63;
+    CHECK(errorOf(bad).find("shard 1/3 of 9223372036854775808 settings at 1 thread counts has 3074457345618258603 x 1 rows, "
+                            "the file 1") != std::string::npos);
+    bad = shard;
+    bad.grid.threads.clear();
+    CHECK(errorOf(bad) == "s.json: not the JSON of a sweep: grid.threads lists no thread count");
+    for (const std::vector<int>& threads : {std::vector<int>{0}, std::vector<int>{2000}, std::vector<int>{1, 1}}) {
+        bad.grid.threads = threads;
+        CHECK(errorOf(bad).find("grid.threads: each must be 1..1024 and given once") != std::string::npos);
+    }
+    bad = shard;
+    bad.grid.runs = 0;
+    CHECK(errorOf(bad).find("grid.runs must be 1..10000 and grid.warmup 0..1000") != std::string::npos);
+    bad = shard;
+    bad.rows.push_back(bad.rows.back());
+    CHECK(errorOf(bad).find("has 1 x 1 rows, the file 2") != std::string::npos);
 }
 
 TEST_CASE("sweep file stem: a shard's names the shard, the whole sweep's does not") {
