@@ -34,6 +34,7 @@
 #include "frame/render.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"
+#include "scenes/error_text.h"
 #include "scenes/obj_writer.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_limits.h"
@@ -604,7 +605,8 @@ int main(int argc, char** argv) {
     keepFreedMemoryForReuse();
     CLI::App app{"shadowlab: a deterministic CPU rasterizer for studying real-time shadows"};
     app.require_subcommand(1);
-    app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + std::string(e.what()) + "\n"; });
+    // One line whatever the message quotes (scenes/error_text.h).
+    app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + oneLine(e.what()) + "\n"; });
     // Each command's callback runs its work during parse(), reading these.
     RenderArgs render;
     SweepArgs sweep;
@@ -636,7 +638,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         return app.exit(error);
     } catch (const std::exception& error) {
-        std::cerr << "shadowlab: error: " << error.what() << "\n";
+        std::cerr << "shadowlab: error: " << oneLine(error.what()) << "\n";
         return 1;
     }
     return 0;

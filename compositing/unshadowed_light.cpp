@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "compositing/environment_source.h"
+#include "scenes/error_text.h"
 #include "shading/environment/radiance_cache.h"
 
 namespace shadowlab {
@@ -55,8 +56,8 @@ void refuseUnservedMaterials(const ShadowInputs& in) {
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     for (size_t m = 0; m < materials.size(); ++m) {
         if (visible[m] && !tablesServe(materials[m], map))
-            throw std::invalid_argument("material \"" + materials[m].name +
-                                        "\": prefiltered tables cannot light it (Blinn-Phong, or a lobe too sharp "
+            throw std::invalid_argument("material " + inQuotes(materials[m].name) +
+                                        ": prefiltered tables cannot light it (Blinn-Phong, or a lobe too sharp "
                                         "for the map); use --param unshadowed=radiance-cache");
     }
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "scenes/error_text.h"
 #include "scenes/float_range.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_limits.h"
@@ -208,7 +209,7 @@ std::optional<JsonField> JsonObject::optional(const char* key) const {
 void JsonObject::allowOnly(const std::vector<std::string_view>& keys) const {
     for (const auto& [key, value] : field_.value_->items()) {
         if (std::find(keys.begin(), keys.end(), key) == keys.end())
-            field_.fail("unknown key \"" + key + "\" (allowed: " + joinNames(keys) + ")");
+            field_.fail("unknown key " + inQuotes(key) + " (allowed: " + joinNames(keys) + ")");
     }
 }
 

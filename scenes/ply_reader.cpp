@@ -21,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "scenes/error_text.h"
 #include "scenes/float_range.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file.h"
@@ -99,14 +100,14 @@ public:
             else if (keyword == "element") parseElement(words);
             else if (keyword == "property") parseProperty(words);
             else if (keyword != "comment" && keyword != "obj_info")
-                fail("unknown header keyword \"" + keyword + "\"");
+                fail("unknown header keyword " + inQuotes(keyword));
         }
         if (!sawFormat) fail("the header has no \"format\" line");
         // A row of an element without properties is no bytes at all: its count would make
         // the body loop run without reading (up to 2^64 times), so it is refused.
         for (const PlyElement& element : header_.elements) {
             if (element.properties.empty() && element.count > 0)
-                fail("element \"" + element.name + "\" has " + std::to_string(element.count) + " rows but no properties");
+                fail("element " + inQuotes(element.name) + " has " + std::to_string(element.count) + " rows but no properties");
         }
         header_.bodyOffset = pos_;
         header_.bodyFirstLine = line_ + 1;
@@ -134,7 +135,7 @@ private:
         if (words.size() != 3 || words[2] != "1.0") fail("expected \"format <encoding> 1.0\"");
         if (words[1] == "binary_big_endian") fail("binary_big_endian PLY is not supported");
         if (words[1] != "ascii" && words[1] != "binary_little_endian")
-            fail("unknown format \"" + words[1] + "\"");
+            fail("unknown format " + inQuotes(words[1]));
         header_.binary = words[1] == "binary_little_endian";
         return true;
     }
@@ -145,7 +146,7 @@ private:
         element.name = words[1];
         const auto [end, error] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), element.count);
         if (error != std::errc() || end != words[2].data() + words[2].size())
-            fail("element count \"" + words[2] + "\" is not a non-negative integer");
+            fail("element count " + inQuotes(words[2]) + " is not a non-negative integer");
         header_.elements.push_back(element);
     }
 
@@ -164,7 +165,7 @@ private:
 
     PlyType type(const std::string& name) const {
         if (const auto found = typeNamed(name)) return *found;
-        fail("unknown property type \"" + name + "\"");
+        fail("unknown property type " + inQuotes(name));
     }
 
     const std::string& bytes_;
@@ -213,7 +214,7 @@ PlyLayout findLayout(const PlyHeader& header, const std::string& file) {
     for (size_t axis = 0; axis < 3; ++axis) {
         const std::string name = std::string("n") + char('x' + axis);
         const auto index = propertyIndex(*layout.vertex, name);
-        if (index && layout.vertex->properties[*index].countType) fail("the vertex property \"" + name + "\" is a list");
+        if (index && layout.vertex->properties[*index].countType) fail("the vertex property " + inQuotes(name) + " is a list");
         if (index) normal[normalAxes++] = *index;
     }
     if (normalAxes == 3) layout.normal = normal;
@@ -247,8 +248,8 @@ public:
         const bool fits = !expected.integral ||
                           (value == std::trunc(value) && value >= expected.lo && value <= expected.hi);
         if (error != std::errc() || end != token.data() + token.size() || !fits)
-            return failure("line " + std::to_string(line_) + ": \"" + std::string(token) +
-                           "\" is not a valid " + std::string(expected.name));
+            return failure("line " + std::to_string(line_) + ": " + inQuotes(token) +
+                           " is not a valid " + std::string(expected.name));
         return value;
     }
 

@@ -12,6 +12,7 @@
 #include "scenes/alpha_texture.h"
 #include "scenes/camera.h"
 #include "scenes/camera_path.h"
+#include "scenes/error_text.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
@@ -70,7 +71,7 @@ void readMaterial(const JsonField& field, const std::string& directory, Scene& s
     const JsonField nameField = object["name"];
     material.name = nameField.string();
     if (std::ranges::find(names.materials, material.name) != names.materials.end())
-        nameField.fail("another material is already named \"" + material.name + "\"");
+        nameField.fail("another material is already named " + inQuotes(material.name));
     if (const auto model = object.optional("model")) material.model = model->choice(kMaterialModels);
     std::vector<std::string_view> allowed = {"name", "model", "albedo", "opacity", "transmittance", "alpha-texture",
                                              "alpha-cutoff"};
@@ -135,7 +136,7 @@ void checkCutOutUvs(const JsonField& instances, const Scene& scene) {
     for (size_t k = 0; k < scene.instances.size(); ++k) {
         const MeshInstance& instance = scene.instances[k];
         if (scene.materials[instance.material].cutOut() && scene.meshes[instance.mesh].cornerUvs.empty())
-            instances.fail("instance \"" + instance.name + "\" has a cut-out material (alpha-texture) on a mesh without "
+            instances.fail("instance " + inQuotes(instance.name) + " has a cut-out material (alpha-texture) on a mesh without "
                            "texture coordinates");
     }
 }
@@ -205,7 +206,7 @@ std::string scenePath(const std::string& nameOrPath, const std::string& sceneDir
     if (looksLikePath(nameOrPath)) return nameOrPath;
     const fs::path path = fs::path(sceneDir) / (nameOrPath + ".json");
     if (!fs::is_regular_file(path))
-        throw SceneError("unknown scene \"" + nameOrPath + "\" (built-in scenes: " + joinedNames(sceneNamesIn(sceneDir)) +
+        throw SceneError("unknown scene " + inQuotes(nameOrPath) + " (built-in scenes: " + joinedNames(sceneNamesIn(sceneDir)) +
                          "; a scene file path must end in .json or contain a '/')");
     return path.string();
 }

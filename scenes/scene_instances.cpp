@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "raster/portable_math.h"
+#include "scenes/error_text.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
 
@@ -21,7 +22,7 @@ constexpr Interval kRepeatCount{1.0, 1024.0, false, false};
 uint32_t indexOfName(const JsonField& field, const std::vector<std::string>& names, const char* kind) {
     const std::string name = field.string();
     const auto found = std::ranges::find(names, name);
-    if (found == names.end()) field.fail(std::string("no ") + kind + " is named \"" + name + "\"");
+    if (found == names.end()) field.fail(std::string("no ") + kind + " is named " + inQuotes(name));
     return uint32_t(found - names.begin());
 }
 
@@ -119,7 +120,7 @@ std::vector<glm::vec3> readRepeat(const JsonField& field, size_t instancesBefore
 void checkInWorld(const JsonField& field, const MeshInstance& instance, const Mesh& mesh) {
     for (size_t k = 0; k < mesh.positions.size(); ++k) {
         if (withinWorld(worldPosition(instance, mesh.positions[k]))) continue;
-        field.fail("instance \"" + instance.name + "\": vertex " + std::to_string(k) + " lands outside the world (every coordinate " +
+        field.fail("instance " + inQuotes(instance.name) + ": vertex " + std::to_string(k) + " lands outside the world (every coordinate " +
                    kCoordinate.describe() + " metres)");
     }
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "scenes/obj_reader.h"
+#include "scenes/error_text.h"
 #include "scenes/ply_reader.h"
 #include "scenes/procedural.h"
 #include "scenes/procedural_casters.h"
@@ -97,7 +98,7 @@ Mesh readMeshFile(const JsonObject& object, const std::string& directory) {
     const std::string path = (std::filesystem::path(directory) / field.string()).string();
     const std::string extension = lowercaseExtension(path);
     if (extension != ".obj" && extension != ".ply")
-        field.fail("unknown mesh format \"" + extension + "\" (allowed: .obj, .ply)");
+        field.fail("unknown mesh format " + inQuotes(extension) + " (allowed: .obj, .ply)");
     try {
         return extension == ".obj" ? readObj(path) : readPly(path);
     } catch (const SceneError& error) {
@@ -119,7 +120,7 @@ void readMeshes(const JsonField& field, const std::string& directory, Scene& sce
         const JsonField nameField = object["name"];
         const std::string name = nameField.string();
         if (std::ranges::find(names.meshes, name) != names.meshes.end())
-            nameField.fail("another mesh is already named \"" + name + "\"");
+            nameField.fail("another mesh is already named " + inQuotes(name));
         scene.meshes.push_back(readMesh(object, directory));
         names.meshes.push_back(name);
     }

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenes/error_text.h"
 #include "shading/tonemap.h"
 
 namespace shadowlab {
@@ -20,7 +21,7 @@ struct ComparedChannels {
 };
 
 std::string describe(const ImageChannels& image) {
-    return image.source.empty() ? std::string("(in memory)") : "'" + image.source + "'";
+    return image.source.empty() ? std::string("(in memory)") : "'" + oneLine(image.source) + "'";
 }
 
 ComparedChannels channelsToCompare(const ImageChannels& reference, const ImageChannels& test,

@@ -24,6 +24,7 @@
 #include <stb_image_write.h>
 
 #include "raster/fixed_point.h"
+#include "scenes/error_text.h"
 #include "scenes/image_file.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file.h"
@@ -34,7 +35,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+std::string quotedPath(const fs::path& path) { return "'" + oneLine(path.string()) + "'"; }
 
 // A name no other writer uses: the same directory (so rename() stays within one file
 // system), hidden, and unique per process and per call.
@@ -90,12 +91,12 @@ std::vector<std::string> channelNamesOf(const Imf::Header& header) {
 // images shadowlab writes (raster::kMaxViewport on a side, kMaxImageChannels channels).
 void checkExrSize(const fs::path& path, int64_t width, int64_t height, size_t channels) {
     if (width < 1 || height < 1 || width > raster::kMaxViewport || height > raster::kMaxViewport) {
-        throw std::runtime_error("EXR file " + quoted(path) + ": its data window is " + std::to_string(width) + " x " +
+        throw std::runtime_error("EXR file " + quotedPath(path) + ": its data window is " + std::to_string(width) + " x " +
                                  std::to_string(height) + " pixels; images must be 1.." +
                                  std::to_string(raster::kMaxViewport) + " on a side");
     }
     if (channels > kMaxImageChannels) {
-        throw std::runtime_error("EXR file " + quoted(path) + ": " + std::to_string(channels) +
+        throw std::runtime_error("EXR file " + quotedPath(path) + ": " + std::to_string(channels) +
                                  " channels, more than " + std::to_string(kMaxImageChannels));
     }
 }
@@ -112,7 +113,7 @@ void checkExrSize(const fs::path& path, int64_t width, int64_t height, size_t ch
 // multi-part file ends its list of headers with an empty one. Every value must take exactly
 // the bytes it declares, within the file, and every data window must pass checkExrSize().
 [[noreturn]] void refuseExrHeader(const fs::path& path, const std::string& why) {
-    throw std::runtime_error("EXR file " + quoted(path) + ": " + why);
+    throw std::runtime_error("EXR file " + quotedPath(path) + ": " + why);
 }
 
 // Tiles: more than any writer uses (32 to 256 are usual), and small enough that a tile of
@@ -244,7 +245,7 @@ ImageChannels readExrStream(Imf::IStream& stream, uint64_t fileBytes, const fs::
     Imf::FrameBuffer frameBuffer;
     for (size_t k = 0; k < image.names.size(); ++k) {
         if (input.header().channels().findChannel(image.names[k]) == nullptr) {
-            throw std::runtime_error("EXR file " + quoted(path) + " has no channel '" + image.names[k] + "'");
+            throw std::runtime_error("EXR file " + quotedPath(path) + " has no channel '" + image.names[k] + "'");
         }
         image.data[k].resize(image.pixelCount());
         // Any stored type (HALF, UINT, FLOAT) is converted to FLOAT by the library.
@@ -265,7 +266,7 @@ ImageChannels readExrOrThrow(const fs::path& path, const std::vector<std::string
         auto stream = open(fileBytes);
         return readExrStream(*stream, fileBytes, path, wanted);
     } catch (const Iex::BaseExc& e) {
-        throw std::runtime_error("cannot read EXR file " + quoted(path) + ": " + e.what());
+        throw std::runtime_error("cannot read EXR file " + quotedPath(path) + ": " + e.what());
     }
 }
 
@@ -274,7 +275,7 @@ ImageChannels readExrFromFile(const fs::path& path, const std::vector<std::strin
         try {
             fileBytes = regularFileSize(path.string());   // before opening: a FIFO would block
         } catch (const SceneError& error) {
-            throw std::runtime_error("cannot read EXR file " + quoted(path) + ": " + error.what());
+            throw std::runtime_error("cannot read EXR file " + quotedPath(path) + ": " + error.what());
         }
         return std::make_unique<Imf::StdIFStream>(path.c_str());
     });
@@ -291,7 +292,7 @@ const std::vector<float>& ImageChannels::at(std::string_view name) const {
     if (const std::vector<float>* values = find(name)) {
         return *values;
     }
-    throw std::runtime_error("image " + (source.empty() ? std::string("(in memory)") : "'" + source + "'") +
+    throw std::runtime_error("image " + (source.empty() ? std::string("(in memory)") : quotedPath(source)) +
                              " has no channel '" + std::string(name) + "'");
 }
 
@@ -342,7 +343,7 @@ void writeExr(const fs::path& path, const ImageChannels& image) {
     try {
         checkWritable(image);
     } catch (const std::invalid_argument& e) {
-        throw std::runtime_error("cannot write EXR file " + quoted(path) + ": " + e.what());
+        throw std::runtime_error("cannot write EXR file " + quotedPath(path) + ": " + e.what());
     }
     writeFileAtomically(path, [&](const fs::path& temporary) { writeExrFile(temporary, image); });
 }
@@ -364,7 +365,7 @@ ImageChannels parseExr(const std::string& bytes, const fs::path& path) {
 
 void writePng(const fs::path& path, int width, int height, const std::vector<uint8_t>& rgb) {
     if (width <= 0 || height <= 0 || rgb.size() != size_t(width) * size_t(height) * 3) {
-        throw std::runtime_error("cannot write PNG file " + quoted(path) + ": " + std::to_string(rgb.size()) +
+        throw std::runtime_error("cannot write PNG file " + quotedPath(path) + ": " + std::to_string(rgb.size()) +
                                  " bytes for " + std::to_string(width) + " x " + std::to_string(height) +
                                  " RGB pixels");
     }
@@ -388,7 +389,7 @@ void writeFileAtomically(const fs::path& path, const std::function<void(const fs
     } catch (const std::exception& e) {
         std::error_code ignored;  // the temporary may not exist; nothing more to report
         fs::remove(temporary, ignored);
-        throw std::runtime_error("cannot write " + quoted(path) + ": " + e.what());
+        throw std::runtime_error("cannot write " + quotedPath(path) + ": " + e.what());
     }
 }
 

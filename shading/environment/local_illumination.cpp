@@ -5,20 +5,21 @@
 #include <string>
 
 #include "raster/portable_constants.h"
+#include "scenes/error_text.h"
 
 namespace shadowlab {
 namespace {
 
 void refuseBlinnPhong(const Material& material) {
     if (material.model == MaterialModel::BlinnPhong) {
-        throw std::invalid_argument("material \"" + material.name +
-                                    "\": Blinn-Phong cannot be lit by a prefiltered environment; use phong or ggx");
+        throw std::invalid_argument("material " + inQuotes(material.name) +
+                                    ": Blinn-Phong cannot be lit by a prefiltered environment; use phong or ggx");
     }
 }
 
 void requireTable(const PrefilteredLobes& table, const Material& material) {
     if (table.maps.empty()) {
-        throw std::invalid_argument("material \"" + material.name + "\": no prefiltered table was built for its model");
+        throw std::invalid_argument("material " + inQuotes(material.name) + ": no prefiltered table was built for its model");
     }
 }
 
@@ -37,7 +38,7 @@ LocalIllumination buildLocalIllumination(const EnvironmentMap& map, const std::v
                 roughness.push_back(material.roughness);
             }
         } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument("material \"" + material.name + "\": " + e.what());
+            throw std::invalid_argument("material " + inQuotes(material.name) + ": " + e.what());
         }
     }
     LocalIllumination light;

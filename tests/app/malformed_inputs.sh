@@ -159,6 +159,15 @@ expect "an EXR attribute of 2^31 - 1 bytes in 24" "header attribute 'x' declares
 expect "an EXR data window of 2^31 - 1 rows" "data window is 1 x 2147483647 pixels; images must be 1..8192 on a side" compare "$dir/tall-window.exr" "$dir/ok.exr" --heatmap "$out"
 expect "a channel the EXR lacks" "has no channel 'Q'" compare "$dir/ok.exr" "$dir/ok.exr" --channel Q --heatmap "$out"
 
+# ---- Quoted text stays on one line ----------------------------------------------------------
+# A newline or an escape character in a JSON key, a name or a file name split the message.
+printf '{"meshes": [], "materials": [], "instances": [], "camera": {}, "bad\\nkey\\u001b[31m": 1}\n' >"$dir/key-newline.json"
+scene name-newline.json "$box" '[{"mesh": "bo\nx", "material": "m"}]'
+expect "a JSON key holding a newline" 'unknown key "bad\nkey\x1b[31m"' render "$dir/key-newline.json" -o "$out"
+expect "a mesh name holding a newline" 'no mesh is named "bo\nx"' render "$dir/name-newline.json" -o "$out"
+expect "a file name holding a newline" 'two\nlines.json: cannot open' render "$dir/two
+lines.json" -o "$out"
+
 # ---- Images and special files ----------------------------------------------------------------
 # Every reader checks a file's type before opening it (a FIFO blocked every one of them) and
 # reads no more than the file's size (/dev/zero as a calibration read 2 GB); every 8-bit

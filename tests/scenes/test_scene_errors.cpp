@@ -412,7 +412,7 @@ TEST_CASE("mistakes in casters that are not opaque") {
               {"materials[0].alpha-cutoff: is the cut-out's threshold, so needs \"alpha-texture\""}},
              {"texture without alpha", withMaterial({{"alpha-texture", "grey.png"}}),
               {"materials[0].alpha-texture: ", "grey.png: has no alpha channel"}},
-             {"missing texture", withMaterial({{"alpha-texture", "none.png"}}), {"materials[0].alpha-texture: ", "none.png: cannot read"}},
+             {"missing texture", withMaterial({{"alpha-texture", "none.png"}}), {"materials[0].alpha-texture: ", "none.png: cannot open"}},
              {"cut-out mesh without uvs",
               [](json& s) { s["materials"][1]["alpha-texture"] = "leaf.png"; },
               {"instances: instance", "has a cut-out material (alpha-texture) on a mesh without texture coordinates"}},
