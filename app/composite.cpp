@@ -13,6 +13,7 @@
 #include "compositing/differential/composite.h"
 #include "compositing/differential/compositing_inputs.h"
 #include "app/composite_plan.h"
+#include "app/staged_outputs.h"
 #include "app/line_plot.h"
 #include "compositing/differential/differential_reference.h"
 #include "compositing/differential/intensity_error.h"
@@ -23,6 +24,7 @@
 #include "scenes/compositing_file.h"
 #include "scenes/obj_reader.h"
 #include "scenes/scene_file.h"
+#include "scenes/write_file.h"
 #include "shading/environment/environment_file.h"
 #include "shading/image_io.h"
 #include "shading/luminance.h"
@@ -330,8 +332,8 @@ nlohmann::ordered_json runFrame(Run& run, int k, std::span<const glm::mat4> plac
 void run(const CompositeArgs& a) {
     const CompositingScene scene = compositingCase(a);
     const std::vector<int> frames = chosenFrames(a, scene);
-    const std::filesystem::path dir(a.outDir);
-    std::filesystem::create_directories(dir);
+    StagedOutputs outputs(a.outDir, {"composite.json"});
+    const std::filesystem::path& dir = outputs.folder();
     PreprocessSettings preprocessSettings;
     preprocessSettings.sourceShare = a.sourceShare;
     preprocessSettings.significance = a.significance;
@@ -362,6 +364,7 @@ void run(const CompositeArgs& a) {
     std::erase_if(run.depth.series, [](const PlotSeries& series) { return series.x.empty(); });
     if (!run.depth.series.empty()) writeTextFile(dir / "shadow-depth.svg", formatLinePlotSvg(run.depth));
     writeTextFile(dir / "composite.json", json.dump(2) + "\n");
+    outputs.commit();
 }
 
 }  // namespace

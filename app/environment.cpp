@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/staged_outputs.h"
 #include "raster/portable_constants.h"
+#include "scenes/write_file.h"
 #include "shading/environment/environment_debug.h"
 #include "shading/environment/environment_file.h"
 #include "shading/environment/prefiltered_lobe.h"
@@ -76,8 +78,8 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
     const std::vector<EnvironmentLight> structured = structuredLights(map, pyramid, a.lights, &structuredRegions);
     for (double n : a.phongShininess) checkLobe(GlossyLobe::NormalisedPhong, n, map);   // before any output
     for (double alpha : a.ggxRoughness) checkLobe(GlossyLobe::Ggx, alpha, map);
-    const std::filesystem::path dir(a.outDir);
-    std::filesystem::create_directories(dir);
+    StagedOutputs outputs(a.outDir, {"environment.json"});
+    const std::filesystem::path& dir = outputs.folder();
     const ToneMapOptions tone{a.exposure, ToneOperator::Reinhard};
     writeImage(dir, "environment", map, map.radiance, tone);
     writeImage(dir, "sh-radiance", map, shImage(map, radiance), tone);
@@ -98,10 +100,11 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
                                    {"structured_lights", lightsJson(structured)}};
     for (const glm::dvec3& c : radiance.c) json["sh_radiance"].push_back({c.r, c.g, c.b});
     writeTextFile(dir / "environment.json", json.dump(2) + "\n");
+    outputs.commit();
     std::printf("%s: %d x %d texels, integral of L dOmega (%.6g, %.6g, %.6g)\n", map.source.c_str(), map.width, map.height,
                 power.r, power.g, power.b);
     std::printf("L_00 (%.6g, %.6g, %.6g); %d median-cut and structured lights; buffers in %s\n", radiance.c[0].r, radiance.c[0].g,
-                radiance.c[0].b, a.lights, dir.c_str());
+                radiance.c[0].b, a.lights, outputs.destination().c_str());
 }
 
 }  // namespace shadowlab

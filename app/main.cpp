@@ -28,7 +28,9 @@
 #include "app/sweep.h"
 #include "app/sweep_json.h"
 #include "app/sweep_merge.h"
+#include "app/staged_outputs.h"
 #include "app/sweep_plot.h"
+#include "scenes/write_file.h"
 #include "shadows/depth_map.h"
 #include "frame/frame_images.h"
 #include "frame/render.h"
@@ -216,10 +218,15 @@ void runRender(const RenderArgs& a) {
 
 // The three files of a sweep or scaling report: STEM.csv, STEM.json and STEM.svg.
 void writeReport(const std::filesystem::path& stem, const std::string& csv, const std::string& json, const std::string& svg) {
-    for (const auto& [extension, text] : {std::pair{".csv", &csv}, {".json", &json}, {".svg", &svg}}) {
+    for (const auto& [extension, text] : {std::pair{".csv", &csv}, {".json", &json}, {".svg", &svg}})
         writeTextFile(stem.string() + extension, *text);
-        std::cout << "wrote " << stem.string() + extension << "\n";
-    }
+}
+
+// Moves a command's staged files into place and names those at the top of its folder (the
+// pictures of --images, in subfolders, are not listed one by one).
+void commitAndList(StagedOutputs& outputs) {
+    for (const std::filesystem::path& file : outputs.commit())
+        if (file.parent_path() == outputs.destination()) std::cout << "wrote " << file.string() << "\n";
 }
 
 struct SweepArgs {
@@ -231,10 +238,10 @@ struct SweepArgs {
 };
 
 // The sweep's report: the table on stdout and STEM.csv, .json and .svg in the directory.
-void writeSweepReport(const SweepResults& results, const std::string& outDir, PlotErrorAxis plotY) {
+void writeSweepReport(const SweepResults& results, const std::filesystem::path& outDir, PlotErrorAxis plotY) {
     requirePlottable(results.rows, plotY);
     std::cout << formatSweepText(results);
-    writeReport(std::filesystem::path(outDir) / sweepFileStem(results), formatSweepCsv(results), formatSweepJson(results),
+    writeReport(outDir / sweepFileStem(results), formatSweepCsv(results), formatSweepJson(results),
                 formatSweepSvg(results, plotY));
 }
 
@@ -251,9 +258,10 @@ void runSweepCommand(SweepArgs a) {
         if (plotY == PlotErrorAxis::RmsDisplay && t->output != TechniqueOutput::Radiance)
             throw std::invalid_argument("--plot-y rms-display: " + t->name + " is scored on V, which has no displayed luminance");
     }
-    std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
-    if (a.images) a.options.imagesOutDir = a.outDir;
-    writeSweepReport(runSweep(a.options), a.outDir, plotY);
+    StagedOutputs outputs(a.outDir);   // before the long part, so that it fails early
+    if (a.images) a.options.imagesOutDir = outputs.folder();
+    writeSweepReport(runSweep(a.options), outputs.folder(), plotY);
+    commitAndList(outputs);
 }
 
 struct MergeSweepArgs {
@@ -272,8 +280,9 @@ void runMergeSweepCommand(const MergeSweepArgs& a) {
         files.push_back({path, std::move(shard)});
     }
     const SweepResults merged = mergeSweepShards(files);
-    std::filesystem::create_directories(a.outDir);
-    writeSweepReport(merged, a.outDir, plotY);
+    StagedOutputs outputs(a.outDir);
+    writeSweepReport(merged, outputs.folder(), plotY);
+    commitAndList(outputs);
 }
 
 struct FlythroughArgs {
@@ -289,19 +298,17 @@ void runFlythroughCommand(FlythroughArgs a) {
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
     a.options.simd = raster::parseSimdLevel(a.simd);
-    std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
-    if (a.images) a.options.imagesOutDir = a.outDir;
+    StagedOutputs outputs(a.outDir);   // before the long part, so that it fails early
+    if (a.images) a.options.imagesOutDir = outputs.folder();
     const FlythroughResults results = runFlythrough(a.options);
     std::cout << formatFlythroughText(results);
-    const std::filesystem::path stem =
-        std::filesystem::path(a.outDir) / flythroughFileStem(results.scene, a.options.techniques);
+    const std::filesystem::path stem = outputs.folder() / flythroughFileStem(results.scene, a.options.techniques);
     writeReport(stem, formatFlythroughCsv(results), formatFlythroughJson(results),
                 formatFlythroughSvg(results, FlythroughPlot::Flicker));
     for (const auto& [suffix, plot] :
-         {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error}}) {
+         {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error}})
         writeTextFile(stem.string() + suffix, formatFlythroughSvg(results, plot));
-        std::cout << "wrote " << stem.string() + suffix << "\n";
-    }
+    commitAndList(outputs);
 }
 
 struct ReportArgs {
@@ -328,11 +335,12 @@ void runScalingCommand(ScalingArgs a) {
     a.options.technique = &findTechnique(a.technique);
     for (const std::string& p : a.params) parseParamAssignment(p, a.options.params);
     a.options.simd = raster::parseSimdLevel(a.simd);
-    std::filesystem::create_directories(a.outDir);   // before the long part, so that it fails early
+    StagedOutputs outputs(a.outDir);   // before the long part, so that it fails early
     const ScalingResults results = runScaling(a.options);
     std::cout << formatScalingText(results);
-    writeReport(std::filesystem::path(a.outDir) / scalingFileStem(results), formatScalingCsv(results),
-                formatScalingJson(results), formatScalingSvg(results));
+    writeReport(outputs.folder() / scalingFileStem(results), formatScalingCsv(results), formatScalingJson(results),
+                formatScalingSvg(results));
+    commitAndList(outputs);
 }
 
 struct CompareArgs {

@@ -54,7 +54,10 @@ ReportSite collectReport(const std::vector<std::string>& files, const std::files
                          PlotErrorAxis plotY);
 
 // collectReport(), then index.html, a page per scene and per setting, report.css and
-// report.js, all in outDir (created if missing). Returns the number of pages.
+// report.js, all in outDir (created if missing), whole or not at all (staged_outputs.h).
+// The files written are listed in outDir/report-files.txt; what the last report listed
+// and this one did not write (the stale pages of another sweep) is removed. Returns the
+// number of pages.
 size_t writeReportSite(const std::vector<std::string>& files, const std::filesystem::path& outDir,
                        PlotErrorAxis plotY);
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "scenes/scene_file.h"
+#include "scenes/write_file.h"
 #include "shading/image_io.h"
 #include "shadows/technique.h"
 

@@ -7,6 +7,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "scenes/write_file.h"
+
 namespace shadowlab {
 namespace {
 
@@ -27,24 +29,13 @@ bool writeLines(std::FILE* out, const WorldGeometry& geometry) {
 }  // namespace
 
 void writeObj(const WorldGeometry& geometry, const std::string& path) {
-    // Same directory, so the rename is atomic and never crosses file systems.
-    const std::string temporary = path + ".partial";
-    File out(std::fopen(temporary.c_str(), "wb"), &std::fclose);
-    // Errors name the file asked for; the temporary is this function's business.
-    if (!out) throw std::runtime_error(path + ": cannot open for writing: " + std::strerror(errno));
-    const bool written = writeLines(out.get(), geometry);
-    const bool closed = std::fclose(out.release()) == 0;   // flushes: a full disk shows here
-    if (!written || !closed) {
-        const std::string reason = std::strerror(errno);
-        std::remove(temporary.c_str());
-        throw std::runtime_error(path + ": cannot write: " + reason);
-    }
-    std::error_code renameError;
-    std::filesystem::rename(temporary, path, renameError);
-    if (renameError) {
-        std::remove(temporary.c_str());
-        throw std::runtime_error(path + ": cannot rename " + temporary + ": " + renameError.message());
-    }
+    writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+        File out(std::fopen(temporary.c_str(), "wb"), &std::fclose);
+        if (!out) throw std::runtime_error(std::string("cannot open for writing: ") + std::strerror(errno));
+        const bool written = writeLines(out.get(), geometry);
+        const bool closed = std::fclose(out.release()) == 0;   // flushes: a full disk shows here
+        if (!written || !closed) throw std::runtime_error(std::string("cannot write: ") + std::strerror(errno));
+    });
 }
 
 }  // namespace shadowlab

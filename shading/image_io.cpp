@@ -4,7 +4,8 @@
 #include "shading/image_io.h"
 
 #include <algorithm>
-#include <atomic>
+#include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -29,6 +30,7 @@
 #include "scenes/read_file.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_limits.h"
+#include "scenes/write_file.h"
 
 namespace shadowlab {
 namespace fs = std::filesystem;
@@ -39,14 +41,6 @@ std::string quotedPath(const fs::path& path) { return "'" + oneLine(path.string(
 
 // A name no other writer uses: the same directory (so rename() stays within one file
 // system), hidden, and unique per process and per call.
-fs::path temporaryPathFor(const fs::path& path) {
-    static std::atomic<uint64_t> counter{0};
-    std::string name(1, '.');
-    name += path.filename().string();
-    name += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter.fetch_add(1));
-    return path.parent_path() / name;
-}
-
 void checkWritable(const ImageChannels& image) {
     if (image.width <= 0 || image.height <= 0 || image.names.empty()) {
         throw std::invalid_argument("image is empty");
@@ -379,29 +373,6 @@ void writePng(const fs::path& path, int width, int height, const std::vector<uin
 Image8 readImage8(const fs::path& path) {
     DecodedImage image = readImage(path.string(), 3, {ImageFormat::Png, ImageFormat::Jpeg});
     return {image.width, image.height, std::move(image.bytes)};
-}
-
-void writeFileAtomically(const fs::path& path, const std::function<void(const fs::path&)>& write) {
-    const fs::path temporary = temporaryPathFor(path);
-    try {
-        write(temporary);
-        fs::rename(temporary, path);
-    } catch (const std::exception& e) {
-        std::error_code ignored;  // the temporary may not exist; nothing more to report
-        fs::remove(temporary, ignored);
-        throw std::runtime_error("cannot write " + quotedPath(path) + ": " + e.what());
-    }
-}
-
-void writeTextFile(const fs::path& path, std::string_view text) {
-    writeFileAtomically(path, [&](const fs::path& temporary) {
-        std::ofstream out(temporary, std::ios::binary);
-        out.write(text.data(), std::streamsize(text.size()));
-        out.close();
-        if (!out) {
-            throw std::runtime_error("write failed");
-        }
-    });
 }
 
 }  // namespace shadowlab

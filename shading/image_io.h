@@ -1,11 +1,8 @@
 // Image files: multi-channel float32 OpenEXR for checks, 8-bit sRGB PNG for people
 // (conventions.md, "Buffers written to disk").
 //
-// Every file is written whole or not at all: it is first written to a temporary name in
-// the same directory and then renamed over the destination (rename() within one file
-// system is atomic in POSIX), so a reader never sees a half-written image and a failed
-// write leaves no file behind (a process killed mid-write can leave a hidden temporary
-// ".NAME.tmp.*", never a partial NAME). Errors are std::runtime_error naming the file.
+// Every file is written whole or not at all (scenes/write_file.h, writeFileAtomically;
+// writeTextFile is there too). Errors are std::runtime_error naming the file.
 #pragma once
 
 #include <cstdint>
@@ -88,12 +85,5 @@ struct Image8 {
     std::vector<uint8_t> rgb;   // 3 bytes per pixel
 };
 Image8 readImage8(const std::filesystem::path& path);
-
-// Runs write(temporaryPath), then renames the temporary file to `path`. If write throws or
-// the rename fails, the temporary file is removed and std::runtime_error is thrown.
-void writeFileAtomically(const std::filesystem::path& path,
-                         const std::function<void(const std::filesystem::path&)>& write);
-// A text file (JSON, CSV, reports) written the same way.
-void writeTextFile(const std::filesystem::path& path, std::string_view text);
 
 }  // namespace shadowlab

@@ -17,6 +17,7 @@
 #include "bench/peers/egl_context.h"
 #include "bench/peers/workloads.h"
 #include "scenes/scene_file.h"
+#include "scenes/write_file.h"
 
 namespace shadowlab::peers {
 namespace {

@@ -54,10 +54,10 @@ expect_error() {
     fi
 }
 
-# expect_no_file PATH: neither PATH nor a hidden temporary of it (.NAME.tmp.*, image_io.h).
+# expect_no_file PATH: neither PATH nor a hidden temporary beside it (.sl-XXXXXX, image_io.h).
 expect_no_file() {
     local path=$1 leftovers
-    leftovers=$(find "$(dirname "$path")" -maxdepth 1 -name ".$(basename "$path").tmp.*" | wc -l)
+    leftovers=$(find "$(dirname "$path")" -maxdepth 1 -name '.sl-*' | wc -l)
     if [ -e "$path" ]; then
         fail "$path exists after a failing command"
     elif [ "$leftovers" -ne 0 ]; then
@@ -211,7 +211,13 @@ expect_png "$scratch/ok.png"
 expect_error "compare --json into a missing directory" compare "$scratch/ok.exr" "$scratch/ok.exr" \
     --heatmap "$scratch/h.png" --json "$scratch/missing/h.json"
 expect_no_file "$scratch/h.png"
-leftovers=$(find "$scratch" -maxdepth 1 -name '.*.tmp.*' | wc -l)
+# A legal name of 251 bytes: its temporary was longer than the 255 a folder holds.
+long=$scratch/$(head -c 247 /dev/zero | tr '\0' a).png
+run render sphere-box --technique none "${tiny[@]}" -o "$long"
+if [ "$rc" -eq 0 ]; then pass; else fail "a 251-byte output name: exited $rc: $(cat "$err")"; fi
+expect_png "$long"
+rm -f "$long"
+leftovers=$(find "$scratch" -maxdepth 1 -name '.sl-*' | wc -l)
 if [ "$leftovers" -eq 0 ]; then pass; else fail "$leftovers temporary file(s) left in $scratch"; fi
 
 # ---- Sharded sweeps -------------------------------------------------------------------------
@@ -313,6 +319,34 @@ for setting in 0 1; do
     src=$(grep -o 'src="[^"]*setting-'"$setting"'-error-map.png"' "$page" | head -1 | sed 's/^src="//; s/"$//')
     if [ -n "$src" ] && [ -s "$scratch/pictures/site/$src" ]; then pass; else fail "setting $setting: no error map in the site"; fi
 done
+
+# ---- Whole or nothing, for every command that writes a folder ----------------------------------
+# A folder in the way of one of a command's later files fails the command, which leaves
+# nothing else in its --out folder (it stages every file and moves them in at the end,
+# app/staged_outputs.h): environment, composite, flythrough, merge-sweep and report each left
+# the files written before the one that failed.
+blocked() {   # blocked WHAT NAME COMMAND...: NAME a folder in --out $scratch/blocked-WHAT
+    local what=$1 name=$2
+    shift 2
+    local dir=$scratch/blocked-$what left
+    rm -rf "$dir"
+    mkdir -p "$dir/$name"
+    expect_error "$what with a folder in the way of $name" "$@" --out "$dir"
+    if grep -qF "a folder is in the way" "$err"; then pass; else fail "$what: the error does not say why: $(cat "$err")"; fi
+    left=$(cd "$dir" && find . -mindepth 1 ! -path "./$name" | head -3)
+    if [ -z "$left" ]; then pass; else fail "$what left files beside the folder in the way: $left"; fi
+}
+blocked environment sh-irradiance.png environment "$maps/pmndrs_sky.hdr" --lights 4
+blocked composite background.png composite room --width 32 --height 20 --frames 0 --passes 2 --no-reference
+blocked flythrough sphere-box-flythrough-shadow-map-error.svg flythrough sphere-box --technique shadow-map --frames 3 \
+    --runs 1 --warmup 0 "${tiny[@]}"
+blocked sweep "$stem-shard-1-of-3.svg" "${grid[@]}" --shard 1/3
+blocked merge-sweep tiny-sun-shadow-map.svg merge-sweep "$scratch/pictures/shards/"*.json
+blocked report index.html report "$scratch/pictures/merged/tiny-sun-shadow-map.json"
+# A report into a folder holding another report's pages leaves none of them.
+run report "$scratch/whole/$stem.json" --out "$scratch/pictures/site"
+stale=$(find "$scratch/pictures/site" -name 'tiny-sun-shadow-map-*' | head -3)
+if [ "$rc" -eq 0 ] && [ -z "$stale" ]; then pass; else fail "report exited $rc or left the last report's pages: $stale"; fi
 
 # ---- Progress ------------------------------------------------------------------------------
 # The soft reference at this size takes about 3 s on one thread, past the 2 s after which

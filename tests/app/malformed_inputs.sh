@@ -231,7 +231,7 @@ expect "a shard nested 100000 deep as a report's input" "deep.json: nested deepe
     report "$dir/deep.json" --out "$dir/report"
 expect "a scene file as a report's input" "valid.json: neither a sweep's JSON (with grid and rows) nor that of render" \
     report "$dir/valid.json" --out "$dir/report"
-expect "export-obj into a missing directory" "$dir/missing/x.obj: cannot open for writing: No such file or directory" export-obj sphere-box "$dir/missing/x.obj"
+expect "export-obj into a missing directory" "cannot write '$dir/missing/x.obj': cannot make a temporary file: No such file or directory" export-obj sphere-box "$dir/missing/x.obj"
 
 echo "$cases cases, $failed failed"
 [ "$cases" -ge 40 ] || { echo "FAIL: the catalogue holds only $cases cases"; exit 1; }

@@ -12,6 +12,7 @@
 #include "app/sweep_json.h"
 #include "frame/score.h"
 #include "scenes/read_file.h"
+#include "scenes/write_file.h"
 #include "shading/image_io.h"
 #include "tests/app/text_count.h"
 #include "tests/scratch_directory.h"

@@ -11,6 +11,7 @@
 #include "app/sweep_json.h"
 #include "frame/frame_images.h"
 #include "scenes/read_file.h"
+#include "scenes/write_file.h"
 #include "tests/app/text_count.h"
 #include "tests/scratch_directory.h"
 

@@ -83,7 +83,7 @@ TEST_CASE("light cookie: the scene file refuses a missing cookie and a cookie on
     CHECK_THROWS_WITH_AS(parseScene(sceneWithLight(spot + "no-such-cookie.png\"}"), "/tmp/cookie-scene.json"),
                          doctest::Contains("lights[0].cookie"), SceneError);
     CHECK_THROWS_WITH_AS(parseScene(sceneWithLight(spot + "no-such-cookie.png\"}"), "/tmp/cookie-scene.json"),
-                         doctest::Contains("no-such-cookie.png: cannot read"), SceneError);
+                         doctest::Contains("no-such-cookie.png: cannot open"), SceneError);
     const std::string point = R"({"type": "point", "position": [0, 4, 0], "power": 10, "cookie": ")";
     CHECK_THROWS_WITH_AS(parseScene(sceneWithLight(point + blinds + "\"}"), "/tmp/cookie-scene.json"),
                          doctest::Contains("only a spot light may have one"), SceneError);

@@ -11,6 +11,7 @@
 
 #include <stb/stb_image.h>
 
+#include "scenes/write_file.h"
 #include "shading/image_io.h"
 #include "tests/scratch_directory.h"
 
