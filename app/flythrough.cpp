@@ -41,7 +41,7 @@ void checkOptions(const FlythroughOptions& options) {
 
 CameraPath loadPath(const FlythroughOptions& options, const Scene& scene) {
     if (!options.pathFile.empty())
-        return parseCameraPathCsv(readWholeFile(options.pathFile), options.pathFile, scene.lights);
+        return parseCameraPathCsv(readWholeFile(options.pathFile, kMaxPathFileBytes), options.pathFile, scene.lights);
     if (scene.flythrough.keyframes.empty())
         throw std::invalid_argument("scene " + scene.name + " has no \"flythrough\" path: give --path KEYFRAMES.csv "
                                     "(docs/flythrough.md)");

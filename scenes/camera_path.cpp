@@ -140,14 +140,17 @@ CameraPath readCameraPath(const JsonField& field, const std::vector<Light>& ligh
 }
 
 CameraPath parseCameraPathCsv(const std::string& text, const std::string& file, const std::vector<Light>& lights) {
-    std::istringstream in(text);
     std::vector<std::string> columns;
     CameraPath path;
     int lineNumber = 0;
     const auto fail = [&](const std::string& problem) {
         throw SceneError(file + ": line " + std::to_string(lineNumber) + ": " + problem);
     };
-    for (std::string line; std::getline(in, line);) {
+    // Line by line in place: the text may be the largest a path file may be (kMaxPathFileBytes).
+    for (size_t at = 0; at < text.size();) {
+        const size_t end = std::min(text.find('\n', at), text.size());
+        const std::string line = text.substr(at, end - at);
+        at = end + 1;
         ++lineNumber;
         if (line.find_first_not_of(" \t\r") == std::string::npos || line.front() == '#') continue;
         const std::vector<std::string> fields = splitCommas(line);

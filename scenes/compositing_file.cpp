@@ -141,7 +141,15 @@ CompositingFile parseCompositingFile(const std::string& text, const std::string&
         }
     }
     if (scene.objects.empty()) o["objects"].fail("needs at least one object");
-    if (auto dome = o.optional("dome")) file.dome = readDome(dome->object(), directory);
+    if (auto dome = o.optional("dome")) {
+        file.dome = readDome(dome->object(), directory);
+        // Counted before the map is read and the dome's patches are made.
+        size_t patches = size_t(file.dome->columns) * size_t(file.dome->rows);
+        for (const PatchSurface& s : scene.surfaces) patches += size_t(s.cellsU) * size_t(s.cellsV);
+        if (patches > kMaxCompositingPatches)
+            dome->fail("makes " + std::to_string(patches) + " patches with the surfaces, more than " +
+                       std::to_string(kMaxCompositingPatches));
+    }
     return file;
 }
 

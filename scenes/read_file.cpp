@@ -24,7 +24,7 @@ const char* kindOf(std::filesystem::file_type type) {
 
 }  // namespace
 
-uint64_t regularFileSize(const std::string& path) {
+uint64_t regularFileSize(const std::string& path, uint64_t maxBytes) {
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(path, error);
     if (error) throw SceneError(path + ": cannot open: " + error.message());
@@ -32,14 +32,14 @@ uint64_t regularFileSize(const std::string& path) {
         throw SceneError(path + ": is " + kindOf(status.type()) + ", not a file");
     const uint64_t size = std::filesystem::file_size(path, error);
     if (error) throw SceneError(path + ": cannot tell its size: " + error.message());
-    if (size > kMaxFileBytes)
-        throw SceneError(path + ": " + std::to_string(size) + " bytes, more than the " + std::to_string(kMaxFileBytes) +
-                         " a file may have");
+    if (size > maxBytes)
+        throw SceneError(path + ": " + std::to_string(size) + " bytes, more than the " + std::to_string(maxBytes) +
+                         " such a file may have");
     return size;
 }
 
-std::string readWholeFile(const std::string& path) {
-    const uint64_t size = regularFileSize(path);
+std::string readWholeFile(const std::string& path, uint64_t maxBytes) {
+    const uint64_t size = regularFileSize(path, maxBytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path + ": cannot open: " + std::strerror(errno));
     std::string bytes(size_t(size), '\0');

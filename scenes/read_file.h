@@ -7,15 +7,17 @@
 #include <cstdint>
 #include <string>
 
+#include "scenes/scene_limits.h"
+
 namespace shadowlab {
 
 // The size of the regular file at `path` (a symbolic link is followed). Throws SceneError
 // naming the file for a missing one, a directory, a FIFO, a socket or a device, or one
-// larger than kMaxFileBytes (scene_limits.h).
-uint64_t regularFileSize(const std::string& path);
+// larger than `maxBytes` (by default kMaxFileBytes, scene_limits.h).
+uint64_t regularFileSize(const std::string& path, uint64_t maxBytes = kMaxFileBytes);
 
 // The file's bytes, after regularFileSize's checks; throws SceneError naming the file and
 // the reason if it cannot be read.
-std::string readWholeFile(const std::string& path);
+std::string readWholeFile(const std::string& path, uint64_t maxBytes = kMaxFileBytes);
 
 }  // namespace shadowlab

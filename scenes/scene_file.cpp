@@ -172,12 +172,7 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     checkCutOutUvs(object["instances"], scene);
     if (const auto volumes = object.optional("volumes")) {
         uint64_t voxels = 0;
-        for (const JsonField& volume : volumes->elements()) {
-            scene.volumes.push_back(readVolume(volume));
-            voxels += scene.volumes.back().sigma.size();
-            if (voxels > kMaxSceneVoxels)
-                volume.fail("the volumes hold more than " + std::to_string(kMaxSceneVoxels) + " voxels together");
-        }
+        for (const JsonField& volume : volumes->elements()) scene.volumes.push_back(readVolume(volume, voxels));
     }
     for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light, directory));
     scene.camera = readCamera(object["camera"]);

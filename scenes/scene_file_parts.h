@@ -44,6 +44,8 @@ Light readLight(const JsonField& field, const std::string& directory);
 void checkViewFrame(const JsonObject& object, const Camera& camera);
 
 // One entry of "volumes": a procedural density volume (scene_volumes.cpp).
-DensityVolume readVolume(const JsonField& field);
+// `voxels`: those of the volumes before it; adds this one's, refusing a sum over
+// kMaxSceneVoxels before any voxel is made.
+DensityVolume readVolume(const JsonField& field, uint64_t& voxels);
 
 }  // namespace shadowlab

@@ -19,6 +19,8 @@ inline constexpr int kMaxJsonDepth = 64;                            // nesting o
 inline constexpr size_t kMaxImageChannels = 16;                     // channels of an EXR read (compare)
 inline constexpr size_t kMaxPathKeyframes = size_t(1) << 16;         // of a fly-through's camera path
 inline constexpr int kMaxPathFrames = 100000;                        // frames a path is sampled at
+// A path's CSV file: its most keyframes at 10 numbers of 100 characters, comments aside.
+inline constexpr uint64_t kMaxPathFileBytes = uint64_t(kMaxPathKeyframes) * 1024;
 // The largest magnitude of a world-space coordinate, in metres: of a camera's eye and
 // target, a light's position, every vertex after instancing, a path's keys. Far inside
 // what every stage handles (float products of two coordinates stay finite; Embree aborts

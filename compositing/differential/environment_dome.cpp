@@ -50,6 +50,9 @@ PatchSurface domeCell(const EnvironmentMap& map, int a, int b, int columns, int 
 std::vector<PatchSurface> environmentDome(const EnvironmentMap& map, int columns, int rows, double radiusM) {
     if (columns < 4 || rows < 1) throw std::invalid_argument("environment dome: needs 4 columns and 1 row or more");
     if (!(radiusM > 0.0)) throw std::invalid_argument("environment dome: the radius must be positive");
+    if (size_t(columns) * size_t(rows) > kMaxCompositingPatches)   // before the map is summed into cells
+        throw std::invalid_argument("environment dome: " + std::to_string(size_t(columns) * size_t(rows)) +
+                                    " patches, more than " + std::to_string(kMaxCompositingPatches));
     const std::vector<glm::dvec3> radiance = domeRadiance(map, columns, rows);
     std::vector<PatchSurface> dome;
     for (int b = 0; b < rows; ++b) {

@@ -193,6 +193,9 @@ expect "a FIFO as a cookie" "fifo: is a FIFO (named pipe), not a file" render "$
 sed "s|../environments/pmndrs_sky.exr|$dir/fifo|" "$src/scenes/environment/sphere-sky.json" >"$dir/sky-fifo.json"
 expect "a FIFO as a scene's environment map" "environment.map: $dir/fifo: is a FIFO (named pipe), not a file" render "$dir/sky-fifo.json" "${tiny[@]}" -o "$out"
 expect "a FIFO as an environment map" "fifo: is a FIFO (named pipe), not a file" environment "$dir/fifo" --out "$dir/env"
+# A path of 10^7 rows (300 MB) was read whole, twice, before row 65,538 was refused.
+truncate -s 100M "$dir/huge.csv"
+expect "a camera path past its size bound" "huge.csv: 104857600 bytes, more than the 67108864 such a file may have" flythrough sphere-box --technique shadow-map --path "$dir/huge.csv" --out "$dir/fly"
 expect "a FIFO as a camera path" "fifo: is a FIFO (named pipe), not a file" flythrough sphere-box --technique shadow-map --path "$dir/fifo" --out "$dir/fly"
 expect "a FIFO as a sweep's shard" "fifo: is a FIFO (named pipe), not a file" merge-sweep "$dir/fifo" --out "$dir/merged"
 expect "a FIFO as a report's input" "fifo: is a FIFO (named pipe), not a file" report "$dir/fifo" --out "$dir/report"

@@ -125,6 +125,9 @@ TEST_CASE("compositing file: malformed files are refused, naming the file and th
     CHECK(errorOf(variant("scaled", identityRows, "[2, 0, 0, 0,  0, 0, -2, 0,  0, 2, 0, 0,")).find(rigid) != std::string::npos);
     CHECK(errorOf(variant("mirror", identityRows, "[-1, 0, 0, 0,  0, 0, -1, 0,  0, 1, 0, 0,")).find(rigid) != std::string::npos);
     CHECK(errorOf(variant("projective", "0, 0, 0, 1]", "0, 0, 0.5, 1]")).find(rigid) != std::string::npos);
+    // A dome past the patch budget, refused at reading (it was built whole, then refused).
+    CHECK(errorOf(variant("dome", "\"columns\": 32, \"rows\": 8", "\"columns\": 1024, \"rows\": 512"))
+              .find("dome: makes 524358 patches with the surfaces, more than 65536") != std::string::npos);
     // A photograph smaller than the calibrated camera's window.
     const std::filesystem::path small = scratch() / "small.png";
     writePng(small, 32, 32, std::vector<uint8_t>(32 * 32 * 3, 128));

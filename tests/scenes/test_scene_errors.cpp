@@ -9,6 +9,8 @@
 #include <stb_image_write.h>
 
 #include "scenes/scene_file.h"
+#include "scenes/scene_file_parts.h"
+#include "scenes/scene_limits.h"
 #include "tests/scenes/scene_test_files.h"
 
 using namespace shadowlab;
@@ -424,4 +426,23 @@ TEST_CASE("mistakes in casters that are not opaque") {
                   s["meshes"].push_back({{"name", "hair"}, {"procedural", "hair"}, {"size", {1, 1, 1}}, {"width", 0.01}});
               }, {"meshes[4]: missing required field \"strands\""}},
     });
+}
+
+// The voxel budget is spent before a volume is made (a 256^3 puff took 1.8 s to be refused):
+// with the budget already full, even a puff of one voxel is refused, and one of 256^3 is
+// refused without its 2^24 voxels being generated.
+TEST_CASE("scene limits: a volume's voxels are counted before they are made") {
+    const json puff = {{"name", "puff"}, {"procedural", "smoke-puff"}, {"min", {-1, 0, -1}}, {"max", {1, 2, 1}},
+                       {"resolution", 1}, {"density", 2}};
+    uint64_t voxels = kMaxSceneVoxels;
+    test::checkMessage(test::sceneErrorOf([&] { readVolume(JsonField(puff, "s.json", "volumes[1]"), voxels); }),
+                       {"s.json: volumes[1]: the volumes hold more than 16777216 voxels together"});
+    json big = puff;
+    big["resolution"] = 256;
+    voxels = 1;
+    test::checkMessage(test::sceneErrorOf([&] { readVolume(JsonField(big, "s.json", "volumes[1]"), voxels); }),
+                       {"the volumes hold more than 16777216 voxels together"});
+    voxels = 0;
+    CHECK(readVolume(JsonField(puff, "s.json", "volumes[0]"), voxels).sigma.size() == 1);
+    CHECK(voxels == 1);
 }
