@@ -232,7 +232,7 @@ void commitAndList(StagedOutputs& outputs) {
 struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
-    std::string simd = "auto", outDir = "out", plotY = "misclassified", shard;
+    std::string simd = "auto", outDir = "out", plotY = "auto", shard;
     std::optional<std::string> casterLod;   // given, even empty, or not
     bool progress = false, images = false;
 };
@@ -266,7 +266,7 @@ void runSweepCommand(SweepArgs a) {
 
 struct MergeSweepArgs {
     std::vector<std::string> shards;
-    std::string outDir = "out", plotY = "misclassified";
+    std::string outDir = "out", plotY = "auto";
 };
 
 void runMergeSweepCommand(const MergeSweepArgs& a) {
@@ -313,7 +313,7 @@ void runFlythroughCommand(FlythroughArgs a) {
 
 struct ReportArgs {
     std::vector<std::string> files;
-    std::string outDir = "out/report", plotY = "misclassified";
+    std::string outDir = "out/report", plotY = "auto";
 };
 
 void runReportCommand(const ReportArgs& a) {
@@ -441,8 +441,9 @@ void addRenderCommand(CLI::App& app, RenderArgs& a) {
 void addSweepReportOptions(CLI::App* cmd, std::string& outDir, std::string& plotY) {
     cmd->add_option("--out", outDir, "directory for SCENE-TECHNIQUES.csv, .json and .svg")->capture_default_str();
     cmd->add_option("--plot-y", plotY,
-                    "plot's error axis: misclassified (%), rms, umbra (umbra errors, %) or rms-display (shaded images "
-                    "as displayed)")->capture_default_str();
+                    "plot's error axis: auto (rms if every row is scored against a soft reference or on luminance, "
+                    "else misclassified), misclassified (%), rms, umbra (umbra errors, %) or rms-display (shaded "
+                    "images as displayed)")->capture_default_str();
 }
 
 void addSweepCommand(CLI::App& app, SweepArgs& a) {

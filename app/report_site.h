@@ -39,7 +39,7 @@ struct ReportScene {
 struct ReportSite {
     std::vector<ReportSource> sources;
     std::vector<ReportScene> scenes;   // in the order they first appear
-    PlotErrorAxis plotY = PlotErrorAxis::Misclassified;
+    PlotErrorAxis plotY = PlotErrorAxis::Auto;
 };
 
 // `text` with every character but letters, digits, '.', '_', '+' and '-' replaced by '-':

@@ -70,6 +70,7 @@ const char* axisTitle(PlotErrorAxis axis) {
         case PlotErrorAxis::Rms: return "RMS error (V, or Y of a shaded image)";
         case PlotErrorAxis::RmsDisplay: return "RMS error of the displayed luminance";
         case PlotErrorAxis::Umbra: return "umbra errors, both ways (% of pixels)";
+        case PlotErrorAxis::Auto:   // resolved before (resolvedPlotAxis)
         case PlotErrorAxis::Misclassified: break;
     }
     return "misclassified pixels (%)";
@@ -170,11 +171,20 @@ std::string legendSvg(const SweepResults& results) {
 }  // namespace
 
 PlotErrorAxis parsePlotErrorAxis(const std::string& name) {
+    if (name == "auto") return PlotErrorAxis::Auto;
     if (name == "misclassified") return PlotErrorAxis::Misclassified;
     if (name == "rms") return PlotErrorAxis::Rms;
     if (name == "umbra") return PlotErrorAxis::Umbra;
     if (name == "rms-display") return PlotErrorAxis::RmsDisplay;
-    throw std::invalid_argument("plot axis must be misclassified, rms, umbra or rms-display, got '" + name + "'");
+    throw std::invalid_argument("plot axis must be auto, misclassified, rms, umbra or rms-display, got '" + name + "'");
+}
+
+PlotErrorAxis resolvedPlotAxis(PlotErrorAxis asked, const std::vector<SweepRow>& rows) {
+    if (asked != PlotErrorAxis::Auto) return asked;
+    const std::string hard = Technique{}.referenceName;
+    return std::ranges::any_of(rows, [&](const SweepRow& row) { return row.reference == hard; })
+               ? PlotErrorAxis::Misclassified
+               : PlotErrorAxis::Rms;
 }
 
 void requirePlottable(const std::vector<SweepRow>& rows, PlotErrorAxis axis) {
@@ -191,12 +201,14 @@ double plottedError(const SweepRow& row, PlotErrorAxis axis) {
         case PlotErrorAxis::Rms: return e.rms;
         case PlotErrorAxis::RmsDisplay: return e.rmsDisplay.value();   // requirePlottable first
         case PlotErrorAxis::Umbra: return e.percentOfPixels(e.umbraErrors());
+        case PlotErrorAxis::Auto:   // a row alone cannot choose: callers resolve (resolvedPlotAxis)
         case PlotErrorAxis::Misclassified: break;
     }
     return e.percentOfPixels(e.misclassified());
 }
 
-std::vector<size_t> paretoFront(const std::vector<SweepRow>& rows, PlotErrorAxis axis) {
+std::vector<size_t> paretoFront(const std::vector<SweepRow>& rows, PlotErrorAxis asked) {
+    const PlotErrorAxis axis = resolvedPlotAxis(asked, rows);
     std::vector<size_t> order(rows.size());
     for (size_t k = 0; k < order.size(); ++k) order[k] = k;
     // Faster first, then lower error, then earlier row: each row is on the front exactly
@@ -211,8 +223,9 @@ std::vector<size_t> paretoFront(const std::vector<SweepRow>& rows, PlotErrorAxis
     return front;
 }
 
-std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis axis, const std::vector<std::string>& links) {
+std::string formatSweepSvg(const SweepResults& results, PlotErrorAxis asked, const std::vector<std::string>& links) {
     if (results.rows.empty()) throw std::invalid_argument("sweep plot: no rows");
+    const PlotErrorAxis axis = resolvedPlotAxis(asked, results.rows);
     if (!links.empty() && links.size() != results.rows.size())
         throw std::invalid_argument("sweep plot: one link per row");
     const Axes a = fitAxes(results.rows, axis);

@@ -13,15 +13,22 @@
 namespace shadowlab {
 
 enum class PlotErrorAxis {
+    Auto,            // the default: Rms if no row is scored against the hard `reference`, else Misclassified
     Misclassified,   // misclassified pixels, % of the reference's hit pixels
     Rms,             // RMS error of V, or of the luminance Y of a shaded image
     Umbra,           // umbra errors both ways (soft shadows), % of the hit pixels
     RmsDisplay,      // RMS error of a shaded image's displayed luminance (ErrorFigures::rmsDisplay)
 };
 
-// Throws std::invalid_argument for a name other than "misclassified", "rms", "umbra" or
-// "rms-display".
+// Throws std::invalid_argument for a name other than "auto", "misclassified", "rms", "umbra"
+// or "rms-display".
 PlotErrorAxis parsePlotErrorAxis(const std::string& name);
+
+// The axis a plot of `rows` draws: `asked`, or for Auto, Rms when every row is scored against
+// a soft reference (or on luminance), where a misclassified pixel is one whose V crosses 0.5
+// and so ranks a blurred map above an accurate one (vsm at 1024 plotted better than pcss with
+// twice pcss's RMS); Misclassified when some row is scored against hard shadows.
+PlotErrorAxis resolvedPlotAxis(PlotErrorAxis asked, const std::vector<SweepRow>& rows);
 
 // Throws std::invalid_argument naming a row the axis has no figure for (rms-display of a
 // technique scored on V), before anything is drawn.

@@ -273,6 +273,27 @@ TEST_CASE("Pareto front: the rows no other row beats in both time and error, fas
     CHECK(paretoFront({}, PlotErrorAxis::Rms).empty());
 }
 
+// A soft technique's misclassified pixels count where V crosses 0.5: a blurred map can have
+// few and twice the RMS (vsm at 1024 ranked above pcss). The default axis is RMS when no
+// row is scored against hard shadows.
+TEST_CASE("plot axis: by default RMS when every row is scored against a soft reference") {
+    SweepRow blurred = rowAt(1, 1), accurate = rowAt(2, 3);
+    blurred.errors.rms = 0.08, accurate.errors.rms = 0.04;
+    for (SweepRow* row : {&blurred, &accurate}) row->reference = "reference-soft";
+    CHECK(parsePlotErrorAxis("auto") == PlotErrorAxis::Auto);
+    CHECK(resolvedPlotAxis(PlotErrorAxis::Auto, {blurred, accurate}) == PlotErrorAxis::Rms);
+    CHECK(resolvedPlotAxis(PlotErrorAxis::Umbra, {blurred, accurate}) == PlotErrorAxis::Umbra);
+    // Both on the front by RMS; by misclassified pixels the accurate one is beaten.
+    CHECK(paretoFront({blurred, accurate}, PlotErrorAxis::Auto) == std::vector<size_t>{0, 1});
+    CHECK(paretoFront({blurred, accurate}, PlotErrorAxis::Misclassified) == std::vector<size_t>{0});
+    SweepRow hard = rowAt(3, 2);
+    hard.reference = "reference";
+    CHECK(resolvedPlotAxis(PlotErrorAxis::Auto, {blurred, hard}) == PlotErrorAxis::Misclassified);
+    SweepResults soft;
+    soft.scene = "soft", soft.rows = {blurred, accurate};
+    CHECK(formatSweepSvg(soft, PlotErrorAxis::Auto).find("RMS error (V, or Y of a shaded image)") != std::string::npos);
+}
+
 TEST_CASE("sweep file stem: scene, then the techniques joined by +") {
     SweepResults results;
     results.scene = "sphere-box";
