@@ -31,6 +31,7 @@
 #include "app/staged_outputs.h"
 #include "app/sweep_plot.h"
 #include "scenes/write_file.h"
+#include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
 #include "frame/frame_images.h"
 #include "frame/render.h"
@@ -151,7 +152,7 @@ struct RenderArgs {
 // -o image, the error map, the technique's debug buffers and the reference's image, written
 // here beside the JSON as J-reference-image.png (and J-reference-visibility.png), so that
 // the folders of the other pictures get nothing they did not ask for.
-FrameImages scoreImages(const RenderArgs& a, const std::string& technique, const Frame& referenceFrame) {
+FrameImages scoreImages(const RenderArgs& a, const std::string& technique, const Frame& frame, const Frame& referenceFrame) {
     const std::filesystem::path json = a.json, base = json.parent_path();
     const std::string name = json.stem().string() + "-reference";
     const FrameImages reference =
@@ -159,6 +160,12 @@ FrameImages scoreImages(const RenderArgs& a, const std::string& technique, const
     FrameImages images;
     if (!a.png.empty()) images.image = relativePath(a.png, base);
     images.errorMap = relativePath(a.errorMap, base);
+    // The technique's own V beside the reference's, as a sweep's --images shows it.
+    if (frame.output == TechniqueOutput::Visibility) {
+        const std::filesystem::path visibility = base / (json.stem().string() + "-visibility.png");
+        writePng(visibility, frame.gbuffer.width, frame.gbuffer.height, greyImage(frame.shadow.visibility, 0.0f, 1.0f));
+        images.visibility = relativePath(visibility, base);
+    }
     images.referenceImage = reference.image;
     images.referenceVisibility = reference.visibility;
     if (!a.debugDir.empty()) images.debugBuffers = debugPictures(base, a.debugDir, technique);
@@ -181,7 +188,7 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
     if (a.json.empty()) return;
     const TechniqueParams params(technique.name, technique.params, settings.params);
     writeTextFile(a.json, formatScoreJson(scene.name, technique.name, referenceName, params.values(), frame, figures,
-                                          scoreImages(a, technique.name, referenceFrame)));
+                                          scoreImages(a, technique.name, frame, referenceFrame), a.overrides));
 }
 
 void runRender(const RenderArgs& a) {

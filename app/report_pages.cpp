@@ -5,6 +5,7 @@
 
 #include "app/report_html.h"
 #include "app/sweep_plot.h"
+#include "frame/overrides_json.h"
 
 namespace shadowlab {
 namespace {
@@ -16,7 +17,12 @@ const char* const kIndexTitle = "shadowlab report";
 std::string indexLink() { return html::link("index.html", kIndexTitle); }
 
 const ReportScene& sceneOf(const ReportSite& site, const ReportSource& source) {
-    return *std::ranges::find(site.scenes, source.results.scene, &ReportScene::name);
+    const auto k = size_t(&source - site.sources.data());
+    return *std::ranges::find_if(site.scenes, [&](const ReportScene& s) { return std::ranges::count(s.sources, k) > 0; });
+}
+
+std::string conditionsParagraph(const ReportScene& scene) {
+    return "<p class=\"conditions\">Measured under: " + escape(scene.conditions) + ".</p>\n";
 }
 
 const ReportSetting& settingOfRow(const ReportSource& source, size_t row) {
@@ -46,11 +52,11 @@ std::string scenesTable(const ReportSite& site) {
         }
         std::string names;
         for (const std::string& t : techniques) names += (names.empty() ? "" : ", ") + escape(t);
-        rows += "<tr>" + html::cell(html::link(scene.page, scene.name)) +
+        rows += "<tr>" + html::cell(html::link(scene.page, scene.name)) + html::cell(escape(scene.conditions)) +
                 html::numberCell(double(scene.sources.size()), "%.0f") + html::cell(names) +
                 html::numberCell(double(settings), "%.0f") + "</tr>\n";
     }
-    return html::sortableTable({"scene", "files", "techniques", "settings"}, rows);
+    return html::sortableTable({"scene", "conditions", "files", "techniques", "settings"}, rows);
 }
 
 // One line per technique and scene: the settings' pages.
@@ -73,10 +79,10 @@ std::string techniquesTable(const ReportSite& site) {
             }
             if (!links.empty())
                 rows += "<tr>" + html::cell(escape(technique)) + html::cell(html::link(scene.page, scene.name)) +
-                        html::cell(links) + "</tr>\n";
+                        html::cell(escape(scene.conditions)) + html::cell(links) + "</tr>\n";
         }
     }
-    return html::sortableTable({"technique", "scene", "settings"}, rows);
+    return html::sortableTable({"technique", "scene", "conditions", "settings"}, rows);
 }
 
 // ---- a scene's page ----
@@ -223,7 +229,7 @@ std::string indexPage(const ReportSite& site) {
 }
 
 std::string scenePage(const ReportSite& site, const ReportScene& scene) {
-    std::string body;
+    std::string body = conditionsParagraph(scene);
     for (size_t k : scene.sources) body += sourceSection(site, site.sources[k]);
     return html::page(scene.name, indexLink(), body);
 }
@@ -232,8 +238,8 @@ std::string settingPage(const ReportSite& site, const ReportSource& source, cons
     const SweepRow& row = source.results.rows[setting.rows.front()];
     const ReportScene& scene = sceneOf(site, source);
     const std::string trail = indexLink() + " &rsaquo; " + html::link(scene.page, scene.name);
-    const std::string from =
-        "<p>Scene " + escape(scene.name) + ", from <code>" + escape(source.file) + "</code>.</p>\n";
+    const std::string from = "<p>Scene " + escape(scene.name) + ", from <code>" + escape(source.file) + "</code>.</p>\n" +
+                             conditionsParagraph(scene);
     return html::page(settingTitle(row), trail,
                       from + picturesSection(setting, row) + errorsTable(row) + timesTable(source, setting) +
                           statsTable(row) + debugSection(row.images));

@@ -39,6 +39,7 @@ SweepResults renderAsSweep(ScoreRecord record) {
     SweepResults results;
     results.scene = record.scene;
     results.techniques = {record.row.technique};
+    results.grid.overrides = record.overrides;
     results.rows = {std::move(record.row)};
     return results;
 }
@@ -174,15 +175,16 @@ void measurePictures(std::vector<ReportSource>& sources, const std::filesystem::
     }
 }
 
-// Scenes in the order they first appear, each with its sources.
+// Scenes under their conditions in the order they first appear, each with its sources.
 std::vector<ReportScene> groupScenes(const std::vector<ReportSource>& sources, std::set<std::string>& taken) {
     std::vector<ReportScene> scenes;
     for (size_t k = 0; k < sources.size(); ++k) {
         const std::string& name = sources[k].results.scene;
-        auto scene = std::ranges::find(scenes, name, &ReportScene::name);
+        const std::string conditions = describeOverrides(sources[k].results.grid.overrides);
+        auto scene = std::ranges::find_if(scenes, [&](const ReportScene& s) { return s.name == name && s.conditions == conditions; });
         if (scene == scenes.end())
             scene = scenes.insert(scenes.end(),
-                                  {name, uniqueName("scene-" + safeFileName(name), taken) + ".html", {}});
+                                  {name, uniqueName("scene-" + safeFileName(name), taken) + ".html", conditions, {}});
         scene->sources.push_back(k);
     }
     return scenes;

@@ -31,8 +31,12 @@ struct ReportSource {
     std::vector<ReportSetting> settings;   // in the order of their first rows
 };
 
+// The results of one scene under one set of conditions (its overrides of image size, view
+// and light): results measured under other conditions are not comparable, so each set has
+// its own page.
 struct ReportScene {
     std::string name, page;
+    std::string conditions;        // describeOverrides() of its sources' overrides
     std::vector<size_t> sources;   // indices into ReportSite::sources, in the order given
 };
 

@@ -19,19 +19,6 @@ namespace {
 // order of the CSV's columns.
 using Json = nlohmann::ordered_json;
 
-// Only the overrides given, so that a sweep without any writes {}.
-Json overridesJson(const SceneOverrides& o) {
-    Json j = Json::object();
-    if (o.width) j["width"] = *o.width;
-    if (o.height) j["height"] = *o.height;
-    if (o.eye) j["eye"] = xyz(*o.eye);
-    if (o.target) j["target"] = xyz(*o.target);
-    if (o.fovyDeg) j["fovy"] = *o.fovyDeg;
-    if (o.lightPosition) j["light_position"] = xyz(*o.lightPosition);
-    if (o.lightRadius) j["light_radius"] = *o.lightRadius;
-    return j;
-}
-
 Json gridJson(const SweepResults& results) {
     const SweepGrid& g = results.grid;
     Json axes = Json::array();
@@ -75,29 +62,6 @@ Json parseOrderedJson(const std::string& text) {
 // formatSweepJson writes NaN as null.
 double number(const Json& value) {
     return value.is_null() ? std::numeric_limits<double>::quiet_NaN() : value.get<double>();
-}
-
-template <class T>
-void readOptional(const Json& j, const char* key, std::optional<T>& into) {
-    if (j.contains(key)) into = j.at(key).get<T>();
-}
-
-void readOptional(const Json& j, const char* key, std::optional<glm::vec3>& into) {
-    if (!j.contains(key)) return;
-    const auto v = j.at(key).get<std::array<float, 3>>();
-    into = glm::vec3(v[0], v[1], v[2]);
-}
-
-SceneOverrides readOverrides(const Json& j) {
-    SceneOverrides o;
-    readOptional(j, "width", o.width);
-    readOptional(j, "height", o.height);
-    readOptional(j, "eye", o.eye);
-    readOptional(j, "target", o.target);
-    readOptional(j, "fovy", o.fovyDeg);
-    readOptional(j, "light_position", o.lightPosition);
-    readOptional(j, "light_radius", o.lightRadius);
-    return o;
 }
 
 SweepGrid readGrid(const Json& j) {
@@ -174,7 +138,8 @@ SweepRow readRow(const Json& j) {
 // A render's one frame: technique_ms is its median and minimum; threads 0 (not recorded).
 ScoreRecord readScore(const Json& j) {
     try {
-        ScoreRecord record{j.at("scene").get<std::string>(), readScoredRow(j)};
+        ScoreRecord record{j.at("scene").get<std::string>(), readScoredRow(j), {}};
+        if (j.contains("overrides")) record.overrides = readOverrides(j.at("overrides"));
         record.row.threads = 0;
         record.row.medianMs = record.row.minMs = number(j.at("technique_ms"));
         return record;

@@ -9,12 +9,9 @@
 #include <glm/glm.hpp>
 
 #include "app/sweep.h"
+#include "frame/overrides_json.h"
 
 namespace shadowlab {
-
-// A position as its JSON array [x, y, z], as the sweep's overrides and a fly-through's frames
-// write it.
-inline std::array<float, 3> xyz(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
 // {"scene", "grid": {"techniques", "axes": [{"name", "values"}], "overrides": {the given
 //  ones of "width", "height", "eye", "target", "fovy", "light_position", "light_radius"},
@@ -37,6 +34,7 @@ SweepResults parseSweepJson(const std::string& text, const std::string& file);
 struct ScoreRecord {
     std::string scene;
     SweepRow row;
+    SceneOverrides overrides;   // "overrides": {} in a file written before they were recorded
 };
 
 // A report's input, parsed once: a sweep's JSON (as parseSweepJson) or a render's, told

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frame/overrides_json.h"
 #include "shading/luminance.h"
 #include "shading/tonemap.h"
 
@@ -97,11 +98,12 @@ std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageCh
 
 std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
                             const std::map<std::string, std::string>& settings, const Frame& frame,
-                            const ErrorFigures& figures, const FrameImages& images) {
+                            const ErrorFigures& figures, const FrameImages& images, const SceneOverrides& overrides) {
     nlohmann::ordered_json stats = nlohmann::ordered_json::object();
     for (const TechniqueStat& s : frame.shadow.stats) stats[s.name] = s.value;
     nlohmann::ordered_json j;
     j["scene"] = sceneName;
+    j["overrides"] = overridesJson(overrides);
     j["technique"] = technique;
     j["reference"] = reference;
     j["settings"] = settings;

@@ -1,4 +1,4 @@
-# Lesson 08: multi-layered shadow fins (Cai et al. 2006) and their baselines, smoothies and
+# Lesson 8: multi-layered shadow fins (Cai et al. 2006) and their baselines, smoothies and
 # penumbra maps, on sphere-box under a disk light of radius 1 m, seen from the shadow's side.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu

@@ -1,4 +1,4 @@
-# Lesson 09: multi-sample soft shadows (Heckbert and Herf 1997), the average of N hard shadow
+# Lesson 9: multi-sample soft shadows (Heckbert and Herf 1997), the average of N hard shadow
 # maps from points on the area light, on sphere-box under a disk light of radius 1 m.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu

@@ -178,6 +178,32 @@ TEST_CASE("report: a render's JSON is a page of one row with its pictures") {
     CHECK(std::filesystem::is_regular_file(site / "images/render/pics/debug/map.png"));
 }
 
+// A render under another view or light is not comparable with one under the scene's own:
+// the JSON records the overrides, and the report files each under its conditions.
+TEST_CASE("report: results are grouped by the conditions they were measured under, shown on every page") {
+    const test::ScratchDirectory scratch("report_conditions");
+    const SweepRow row = oddSweep(scratch.path).rows[0];
+    SceneOverrides moved;
+    moved.width = 320, moved.height = 200, moved.lightPosition = glm::vec3(-5.0f, 5.0f, 2.0f);
+    writeTextFile(scratch.path / "default.json", formatScoreJson("box", "pcss", "reference-soft", {}, Frame{}, row.errors));
+    writeTextFile(scratch.path / "moved.json",
+                  formatScoreJson("box", "pcss", "reference-soft", {}, Frame{}, row.errors, {}, moved));
+    const auto record = std::get<ScoreRecord>(parseResultsJson(readWholeFile((scratch.path / "moved.json").string()), "m"));
+    CHECK(record.overrides.lightPosition == moved.lightPosition);
+    CHECK(record.overrides.width == 320);
+    const std::filesystem::path site = scratch.path / "site";
+    writeReportSite({(scratch.path / "default.json").string(), (scratch.path / "moved.json").string()}, site,
+                    PlotErrorAxis::Auto);
+    const std::string index = readWholeFile((site / "index.html").string());
+    CHECK(countOf(index, "href=\"scene-box.html\"") >= 1);
+    CHECK(countOf(index, "href=\"scene-box-2.html\"") >= 1);   // the same scene under other conditions
+    CHECK(countOf(index, "the scene&#39;s own view and light") + countOf(index, "the scene's own view and light") == 1);
+    const std::string conditions = "320 x 200 pixels, light at (-5, 5, 2)";
+    CHECK(countOf(index, conditions) == 1);
+    CHECK(countOf(readWholeFile((site / "scene-box-2.html").string()), conditions) == 1);
+    CHECK(countOf(readWholeFile((site / "moved-setting-0.html").string()), conditions) == 1);
+}
+
 TEST_CASE("report: two pictures whose safe names are alike keep their own files") {
     // "a b.png" and "a-b.png" are both made "a-b.png"; the second must not show the first.
     const test::ScratchDirectory scratch("report_alike");

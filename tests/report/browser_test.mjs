@@ -30,7 +30,9 @@ function run(...args) {
 const size = ["--width", "160", "--height", "100"];
 run("sweep", "sphere-box", "--technique", "shadow-map,pcss", "--param", "resolution=256,1024", ...size,
     "--light-radius", "0.5", "--threads", "1", "--runs", "1", "--warmup", "0", "--images", "--out", results);
-run("render", "sphere-box", "--technique", "shadow-map", ...size, "-o", path.join(results, "render.png"),
+// The render under the sweep's conditions (size and light radius), so that the report files
+// it with the sweep, on one scene page.
+run("render", "sphere-box", "--technique", "shadow-map", ...size, "--light-radius", "0.5", "-o", path.join(results, "render.png"),
     "--error-map", path.join(results, "render-error.png"), "--json", path.join(results, "render.json"),
     "--debug-buffers", path.join(results, "render-debug"));
 run("report", path.join(results, "sphere-box-shadow-map+pcss.json"), path.join(results, "render.json"), "--out", site);
