@@ -34,8 +34,10 @@ struct ShaftHierarchy {
     size_t leafCount() const;       // shafts without children, each listing its two nodes' patches
 };
 
-// Whether the transfer from a source node's patches to a receiver node's vertices matters
-// (Gibson et al.: some vertex gets 2% of its light or more). Called once per shaft built.
+// Whether to keep the shaft from a source node's patches to a receiver node's vertices
+// (Gibson et al.: some vertex gets 2% of its light through it or more). Called once per
+// shaft, in a fixed order (a shaft's children in turn, then each child's), so that a caller
+// may keep account of the light it leaves out (preprocess.cpp).
 using ShaftSignificance = std::function<bool(int32_t sourceNode, int32_t receiverNode)>;
 
 ShaftHierarchy buildShaftHierarchy(const SourceTree& sources, const ReceiverOctree& receivers,
