@@ -69,13 +69,15 @@ std::string formatPlanSvg(const DifferentialModel& m, const CompositeFrame& fram
         text += polygon(v, m.model.corners(p), listed[p] ? "#cfe3f7" : "none", "#ccc");
     }
     const std::vector<int> cluster = clusterOfSource(m, frame);
+    // A leaf shaft above the source tree's leaves stands for its pairs: a line from each.
     for (const int32_t index : frame.hits.leafShafts) {
         const ShaftNode& shaft = m.shafts.nodes[size_t(index)];
-        const uint32_t slot = m.sourceTree.nodes[size_t(shaft.source)].patch;
-        const glm::dvec3 from = m.model.centre(m.transfers.sources[slot]);
         const glm::dvec3 to = centre(m.receiverOctree.nodes[size_t(shaft.receiver)].bounds);
-        text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-opacity="0.25"/>)" "\n",
-                       v.x(from), v.y(from), v.x(to), v.y(to), colourOf(cluster[slot]));
+        forEachPatch(m.sourceTree, shaft.source, [&](uint32_t slot) {
+            const glm::dvec3 from = m.model.centre(m.transfers.sources[slot]);
+            text += format(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-opacity="0.25"/>)" "\n",
+                           v.x(from), v.y(from), v.x(to), v.y(to), colourOf(cluster[slot]));
+        });
     }
     for (size_t s = 0; s < m.transfers.sources.size(); ++s) {
         const bool inCluster = cluster[s] >= 0;

@@ -1,8 +1,9 @@
 // A frame of differential rendering seen from above (docs/differential-rendering.md): the
 // receivers in plan, those the traversal listed filled, the leaf shafts the object's box
-// touched drawn from their source patch to their receiver leaf, each source coloured by
-// the cluster that holds it, each cluster's light ringed, and the objects' boxes: the
-// "shafts the object touches" and "the clusters" of Gibson et al. 2003 (sections 6.1 and 8).
+// touched drawn from each of their source patches to their receiver node, each source
+// coloured by the cluster that holds it, each cluster's light ringed, and the objects'
+// boxes: the "shafts the object touches" and "the clusters" of Gibson et al. 2003
+// (sections 6.1 and 8).
 #pragma once
 
 #include <string>

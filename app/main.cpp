@@ -576,7 +576,7 @@ void addCompositeCommand(CLI::App& app, CompositeArgs& a) {
     c->add_option("--map-size", a.mapSize, "texels per side of each cluster's shadow map")->capture_default_str()->check(CLI::Range(kMinMapResolution, kMaxMapResolution));
     c->add_option("--shadow-triangles", a.shadowTriangles, "triangles of the object the maps draw")->capture_default_str()->check(CLI::Range(4, 1 << 24));
     c->add_option("--source-share", a.sourceShare, "share of the radiant power the source set holds")->capture_default_str()->check(CLI::Range(1e-6, 1.0));
-    c->add_option("--significance", a.significance, "a shaft is kept if some vertex gets this share of its light through it")->capture_default_str()->check(CLI::Range(1e-6, 1.0));
+    c->add_option("--significance", a.significance, "the shaft hierarchy leaves out less than this share of any vertex's light (the paper's 2% rule)")->capture_default_str()->check(CLI::Range(1e-6, 1.0));
     c->add_option("--reference-strata", a.referenceStrata, "the reference's strata per side of an emitting and of a reflecting patch")->delimiter(',')->expected(2)->capture_default_str()->check(CLI::Range(1, 64));
     c->add_flag("--reference-convergence", a.referenceConvergence, "also render the reference at twice the strata per side and report the RMS between the two");
     c->add_flag("--ldr", a.ldr, "composite the 8-bit photograph with intensity transfers");

@@ -10,20 +10,46 @@
 namespace shadowlab {
 namespace {
 
-// The map's mean radiance over each block of the upper hemisphere (weighted by the texels'
-// solid angles), rows from the zenith, columns in the map's order.
-std::vector<glm::dvec3> domeRadiance(const EnvironmentMap& map, int columns, int rows) {
-    std::vector<glm::dvec3> sum(size_t(columns * rows), glm::dvec3(0.0));
-    std::vector<double> weight(sum.size(), 0.0);
-    for (int j = 0; j < map.height / 2; ++j) {
-        const double omega = map.texelSolidAngle(j);
-        const int row = std::min(rows - 1, j * rows / (map.height / 2));
-        for (int i = 0; i < map.width; ++i) {
-            const size_t cell = size_t(row * columns + std::min(columns - 1, i * columns / map.width));
-            sum[cell] += glm::dvec3(map.at(i, j)) * omega, weight[cell] += omega;
+// How texel k of an axis cut into `texels` shares [0, end) cut into `blocks` equal blocks:
+// the measure of each texel's part in each block it reaches.
+struct AxisShare {
+    int texel, block;
+    double measure;
+};
+template <class Measure>
+std::vector<AxisShare> axisShares(int texels, int blocks, double end, const Measure& measure) {
+    std::vector<AxisShare> shares;
+    for (int k = 0; k < texels; ++k) {
+        const double t0 = double(k) / texels, t1 = double(k + 1) / texels;
+        for (int b = int(t0 / end * blocks); b < blocks && end * b / blocks < t1; ++b) {
+            const double lo = std::max(t0, end * b / blocks), hi = std::min(t1, end * (b + 1) / blocks);
+            if (hi > lo) shares.push_back({k, b, measure(lo, hi)});
         }
     }
-    for (size_t c = 0; c < sum.size(); ++c) sum[c] = weight[c] > 0.0 ? sum[c] / weight[c] : glm::dvec3(0.0);
+    return shares;
+}
+
+// The map's mean radiance over each block of the upper hemisphere, rows from the zenith,
+// columns in the map's order: each texel weighted by the solid angle it shares with the
+// block, so the blocks hold the map's light above the horizon exactly however many there
+// are (blocks finer than the texels share them rather than stay dark).
+std::vector<glm::dvec3> domeRadiance(const EnvironmentMap& map, int columns, int rows) {
+    const std::vector<AxisShare> across = axisShares(map.width, columns, 1.0, [](double u0, double u1) {
+        return 2.0 * kPi * (u1 - u0);
+    });
+    const std::vector<AxisShare> down = axisShares(map.height, rows, 0.5, [](double v0, double v1) {
+        return portable::cos(kPi * v0) - portable::cos(kPi * v1);   // theta = pi v
+    });
+    std::vector<glm::dvec3> sum(size_t(columns * rows), glm::dvec3(0.0));
+    std::vector<double> weight(sum.size(), 0.0);
+    for (const AxisShare& row : down) {
+        for (const AxisShare& column : across) {
+            const size_t cell = size_t(row.block * columns + column.block);
+            const double omega = row.measure * column.measure;
+            sum[cell] += glm::dvec3(map.at(column.texel, row.texel)) * omega, weight[cell] += omega;
+        }
+    }
+    for (size_t c = 0; c < sum.size(); ++c) sum[c] /= weight[c];   // every block holds some texel
     return sum;
 }
 

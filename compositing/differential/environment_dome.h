@@ -1,7 +1,9 @@
 // A distant environment as patches of a compositing model (the outdoor and photograph
-// cases): the map's upper half cut into columns x rows blocks of texels, each a rectangle
-// tangent to a dome of the given radius at the block's centre direction, facing in, with the
-// block's mean radiance (weighted by the texels' solid angles) and exactly its solid angle.
+// cases): the map's upper half cut into columns x rows blocks, each a rectangle tangent to a
+// dome of the given radius at the block's centre direction, facing in, with the block's mean
+// radiance (each texel weighted by the solid angle it shares with the block) and exactly its
+// solid angle: the dome holds the map's light above the horizon however finely it is cut,
+// blocks finer than the texels included.
 // Gibson et al. 2003 map a light probe's radiance onto the scene's distant patches the same
 // way (section 3).
 #pragma once

@@ -1,5 +1,6 @@
 #include "compositing/differential/preprocess.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -53,24 +54,44 @@ std::vector<float> nodeTransfers(const SourceTree& tree, const TransferTable& ta
     return sums;
 }
 
-ShaftHierarchy prunedShafts(const DifferentialModel& m) {
-    const size_t rows = m.transfers.vertices.size();
-    // Section 6: a shaft matters if some vertex of its receivers gets at least
-    // `significance` of its light through it.
-    const auto significant = [&](int32_t sourceNode, int32_t receiverNode) {
-        const ReceiverNode& r = m.receiverOctree.nodes[receiverNode];
-        const float* through = m.nodeTransfer.data() + size_t(sourceNode) * rows;
+// Per receiver-octree node, the rows of its patches' vertices, each once.
+std::vector<std::vector<int32_t>> receiverRows(const DifferentialModel& m) {
+    std::vector<std::vector<int32_t>> rows(m.receiverOctree.nodes.size());
+    for (size_t n = 0; n < rows.size(); ++n) {
+        const ReceiverNode& r = m.receiverOctree.nodes[n];
         for (uint32_t k = r.firstPatch; k < r.firstPatch + r.patchCount; ++k) {
             const Patch& patch = m.model.patches[m.transfers.receiverPatches[m.receiverOctree.patches[k]]];
-            for (const uint32_t v : patch.vertex) {
-                const int32_t row = m.transfers.rowOfVertex[v];
-                const double total = luminance(m.transfers.total[size_t(row)]);
-                if (total > 0.0 && through[row] >= m.settings.significance * total) return true;
-            }
+            for (const uint32_t v : patch.vertex) rows[n].push_back(m.transfers.rowOfVertex[v]);
         }
+        std::sort(rows[n].begin(), rows[n].end());
+        rows[n].erase(std::unique(rows[n].begin(), rows[n].end()), rows[n].end());
+    }
+    return rows;
+}
+
+// Section 6's rule, kept per vertex. The paper keeps a shaft if some vertex of its receivers
+// gets `significance` (2%) of its light through it, and leaves it out otherwise; but a vertex
+// loses the light of every shaft left out, and a light cut into n patches is n shafts, each
+// of which may fall under the rule. So a shaft is left out only if at every vertex of its
+// receivers the light left out so far and its own stay under that share (the paper's test is
+// the case of nothing left out yet), and is charged to them: however finely the sources are
+// cut, no vertex loses more than the share of its light, which the paper takes for less
+// than the eye tells apart (its reference 17, Hecht).
+ShaftHierarchy prunedShafts(const DifferentialModel& m) {
+    const std::vector<std::vector<int32_t>> rowsOf = receiverRows(m);
+    const size_t rows = m.transfers.vertices.size();
+    std::vector<double> share(rows), leftOut(rows, 0.0);
+    for (size_t r = 0; r < rows; ++r) share[r] = m.settings.significance * luminance(m.transfers.total[r]);
+    // Called in the order the shafts are built, which fixes what is charged first.
+    const auto keep = [&](int32_t sourceNode, int32_t receiverNode) {
+        const float* through = m.nodeTransfer.data() + size_t(sourceNode) * rows;
+        for (const int32_t r : rowsOf[size_t(receiverNode)]) {
+            if (share[r] > 0.0 && leftOut[r] + through[r] >= share[r]) return true;
+        }
+        for (const int32_t r : rowsOf[size_t(receiverNode)]) leftOut[r] += through[r];
         return false;
     };
-    return buildShaftHierarchy(m.sourceTree, m.receiverOctree, significant);
+    return buildShaftHierarchy(m.sourceTree, m.receiverOctree, keep);
 }
 
 size_t shaftBytes(const ShaftHierarchy& shafts) {

@@ -24,7 +24,7 @@ namespace shadowlab {
 
 struct PreprocessSettings {
     double sourceShare = 0.7;       // of all radiant power (section 4)
-    double significance = 0.02;     // a shaft is kept if some vertex gets this share of its light
+    double significance = 0.02;     // the most of a vertex's light the shafts leave out (section 6)
     uint32_t receiverLeafSize = 8;  // patches per receiver octree leaf (section 6)
     PatchSampling sampling;
     raster::SimdLevel simd = raster::bestSimdLevel();

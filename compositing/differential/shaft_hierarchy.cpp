@@ -7,6 +7,15 @@ namespace {
 
 double diagonal(const Aabb& b) { return glm::length(b.max - b.min); }
 
+// The paper's frame tags: a patch found through another shaft is not listed again.
+struct TaggedList {
+    std::vector<uint8_t> found;
+    std::vector<uint32_t>& patches;
+    void add(uint32_t patch) {
+        if (!found[patch]) found[patch] = 1, patches.push_back(patch);
+    }
+};
+
 struct ShaftBuilder {
     const SourceTree& sources;
     const ReceiverOctree& receivers;
@@ -16,7 +25,7 @@ struct ShaftBuilder {
     void addChild(int32_t source, int32_t receiver) {
         if (!significant(source, receiver)) return;
         out.nodes.push_back({makeShaft(sources.nodes[source].bounds, receivers.nodes[receiver].bounds), source,
-                             receiver, -1, 0, sources.nodes[source].leaf() && receivers.nodes[receiver].leaf()});
+                             receiver, -1, 0});
     }
 
     // The children of shaft `index`: its larger non-leaf end split, the other end kept.
@@ -33,7 +42,10 @@ struct ShaftBuilder {
             for (uint32_t c = 0; c < r.childCount; ++c) addChild(source, r.firstChild + int32_t(c));
         }
         const uint32_t count = uint32_t(out.nodes.size()) - uint32_t(first);
-        if (count == 0) return;   // nothing below is significant: it stays, leading nowhere
+        // No child passes the 2% rule (section 6) on its own, but together they passed it
+        // here: this shaft stays a leaf standing for all of them, or a light cut into dim
+        // enough patches would be lost whole.
+        if (count == 0) return;
         out.nodes[index].firstChild = first, out.nodes[index].childCount = count;
         for (uint32_t c = 0; c < count; ++c) split(first + int32_t(c));
     }
@@ -42,7 +54,7 @@ struct ShaftBuilder {
 }  // namespace
 
 size_t ShaftHierarchy::leafCount() const {
-    return size_t(std::count_if(nodes.begin(), nodes.end(), [](const ShaftNode& n) { return n.pair; }));
+    return size_t(std::count_if(nodes.begin(), nodes.end(), [](const ShaftNode& n) { return n.leaf(); }));
 }
 
 ShaftHierarchy buildShaftHierarchy(const SourceTree& sources, const ReceiverOctree& receivers,
@@ -59,27 +71,24 @@ ShaftHits traverseShafts(const ShaftHierarchy& shafts, const SourceTree& sources
                          const Aabb& object) {
     ShaftHits hits;
     if (shafts.nodes.empty()) return hits;
-    // The paper's frame tags: a patch found through another shaft is not listed again.
-    std::vector<uint8_t> sourceFound(sources.leafOfPatch.size(), 0), receiverFound(receivers.patches.size(), 0);
+    TaggedList sourceList{std::vector<uint8_t>(sources.leafOfPatch.size(), 0), hits.sourcePatches};
+    TaggedList receiverList{std::vector<uint8_t>(receivers.patches.size(), 0), hits.receiverPatches};
     std::vector<int32_t> stack{0};
     while (!stack.empty()) {
         const int32_t index = stack.back();
         const ShaftNode& n = shafts.nodes[size_t(index)];
         stack.pop_back();
         if (!shaftMayTouch(n.shaft, object)) continue;
-        if (n.firstChild >= 0) {
+        if (!n.leaf()) {
             for (uint32_t c = n.childCount; c-- > 0;) stack.push_back(n.firstChild + int32_t(c));
             continue;
         }
-        if (!n.pair) continue;   // a shaft whose every pair below was insignificant
+        // Section 6.1 lists a leaf's source patch and receivers; a leaf above the source
+        // tree's leaves lists every patch under its source node, as its pairs would.
         hits.leafShafts.push_back(index);
-        const uint32_t patch = sources.nodes[n.source].patch;
-        if (!sourceFound[patch]) sourceFound[patch] = 1, hits.sourcePatches.push_back(patch);
+        forEachPatch(sources, n.source, [&](uint32_t patch) { sourceList.add(patch); });
         const ReceiverNode& r = receivers.nodes[n.receiver];
-        for (uint32_t k = r.firstPatch; k < r.firstPatch + r.patchCount; ++k) {
-            const uint32_t p = receivers.patches[k];
-            if (!receiverFound[p]) receiverFound[p] = 1, hits.receiverPatches.push_back(p);
-        }
+        for (uint32_t k = r.firstPatch; k < r.firstPatch + r.patchCount; ++k) receiverList.add(receivers.patches[k]);
     }
     return hits;
 }

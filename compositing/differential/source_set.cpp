@@ -23,7 +23,9 @@ std::vector<uint32_t> selectSources(std::span<const EmittingPatch> patches, doub
     std::vector<uint32_t> sources;
     double power = 0.0;
     for (uint32_t p : order) {
-        if (power >= share * total || patches[p].radiance * patches[p].area == 0.0) break;
+        if (patches[p].radiance * patches[p].area == 0.0) break;
+        // Past the share, only patches as bright as the last taken: a light of one radiance whole.
+        if (power >= share * total && patches[p].radiance < patches[sources.back()].radiance) break;
         sources.push_back(p);
         power += patches[p].radiance * patches[p].area;
     }

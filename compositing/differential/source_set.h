@@ -1,7 +1,10 @@
 // The source set of Gibson et al. 2003 (section 4): every patch with radiance may light the
 // scene, but only the brightest matter. The patches are sorted by decreasing radiance and
 // the source set is the shortest run from the top whose power reaches a share of all the
-// patches' power (70% "accounts for all primary and important secondary sources of light").
+// patches' power (70% "accounts for all primary and important secondary sources of light"),
+// and every other patch as bright as the last of it: the set is all the patches above a
+// radiance, so a light of one radiance is in it whole or not at all, however finely it is
+// cut (the sorted order alone would keep the first of its patches and leave the others).
 // A Lambertian patch of radiance L and area A emits the power pi L A.
 #pragma once
 

@@ -32,4 +32,12 @@ struct SourceTree {
 // to the receivers. Deterministic: ties in the median split go by patch index.
 SourceTree buildSourceTree(std::span<const Aabb> patchBounds, std::span<const double> transfer);
 
+// Calls f(patch) for every patch under `node`, left to right.
+template <class F>
+void forEachPatch(const SourceTree& tree, int32_t node, const F& f) {
+    const SourceNode& n = tree.nodes[size_t(node)];
+    if (n.leaf()) return f(n.patch);
+    for (const int32_t child : n.children) forEachPatch(tree, child, f);
+}
+
 }  // namespace shadowlab

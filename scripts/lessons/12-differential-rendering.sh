@@ -1,7 +1,7 @@
 # Lesson 12: differential rendering, a synthetic bunny's shadows composited into a photograph of
 # a room (Gibson et al. 2003) with `shadowlab composite`, at 480 x 300: frame 5 of the room's
 # path at 1, 10 and all shadow passes, and the bunny on the floor (room-lift, frame 0) with the
-# shafts kept at the paper's 2% of a vertex's light and at 0.2%.
+# paper's source set (70% of the radiant power) and with every radiant patch a source.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch. Needs rsvg-convert
 # (librsvg) to turn the plan of the shafts into a PNG.
 set -eu
@@ -16,7 +16,7 @@ composite() {
 # keep RUN FILE SHOWN_NAME: copies one of a run's PNGs into the lesson's images.
 keep() { cp "$scratch/$1/$2.png" "$images/$3.png"; }
 
-rm -rf "$scratch/room" "$scratch/lift" "$scratch/lift-significance-0.002"
+rm -rf "$scratch/room" "$scratch/lift" "$scratch/lift-share-1"
 composite room room --frames 5 --passes 1,10,0 --masks
 keep room background photograph
 for n in 1 10 all; do
@@ -30,11 +30,12 @@ for c in 0 1; do keep room "mask-f5-n10-c$c" "mask-n10-c$c"; done
 keep room mask-f5-n1-c0 mask-n1-c0
 rsvg-convert -w 480 -b white "$scratch/room/plan-f5-n10.svg" > "$images/plan-n10.png"
 
-# The contact: the bunny on the floor, shafts kept down to 2% of a vertex's light, then 0.2%.
+# The contact: the bunny on the floor, the brightest patches to 70% of the power as sources,
+# then every radiant patch.
 composite lift room-lift --frames 0 --passes 0
-composite lift-significance-0.002 room-lift --frames 0 --passes 0 --significance 0.002
+composite lift-share-1 room-lift --frames 0 --passes 0 --source-share 1
 keep lift composite-f0-nall lift-composite
-keep lift-significance-0.002 composite-f0-nall lift-composite-significance-0.002
+keep lift-share-1 composite-f0-nall lift-composite-share-1
 keep lift reference-f0 lift-reference
 
 python3 - "$scratch" <<'PY'
@@ -42,7 +43,7 @@ import json, sys
 print("| run | frame | n | clusters | RMS | on the object | elsewhere | photograph as it is | deepest shadow "
       "| reference's deepest |")
 print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-for run in ["room", "lift", "lift-significance-0.002"]:
+for run in ["room", "lift", "lift-share-1"]:
     j = json.load(open(f"{sys.argv[1]}/{run}/composite.json"))
     for f in j["frames"]:
         for p in f["passes"]:

@@ -58,6 +58,26 @@ TEST_CASE("environment dome: the upper hemisphere's solid angle, every patch fac
     CHECK_THROWS_AS(environmentDome(map, 32, 8, 0.0), std::invalid_argument);
 }
 
+TEST_CASE("environment dome: the patches hold the map's light above the horizon however finely it is cut") {
+    // A 16 x 8 map of varied radiance, so that blocks finer than its texels, and blocks across
+    // texel edges, must share texels.
+    EnvironmentMap map = constantEnvironment(16, 8, glm::vec3(0.0f));
+    for (size_t k = 0; k < map.radiance.size(); ++k) map.radiance[k] = glm::vec3(float(1 + k % 7), float(k % 3), 2.0f);
+    glm::dvec3 above(0.0);   // sum of L dOmega over the texels above the horizon
+    for (int j = 0; j < map.height / 2; ++j) {
+        for (int i = 0; i < map.width; ++i) above += glm::dvec3(map.at(i, j)) * map.texelSolidAngle(j);
+    }
+    const double R = 50.0;
+    for (const glm::ivec2 cut : {glm::ivec2(4, 1), glm::ivec2(16, 4), glm::ivec2(20, 3), glm::ivec2(64, 16)}) {
+        glm::dvec3 held(0.0);
+        for (const PatchSurface& p : environmentDome(map, cut.x, cut.y, R)) {
+            held += p.emitted[0] * (glm::length(glm::cross(p.edgeU, p.edgeV)) / (R * R));
+        }
+        INFO(cut.x << " x " << cut.y << " patches");
+        for (int c = 0; c < 3; ++c) CHECK(held[c] == doctest::Approx(above[c]).epsilon(1e-9));
+    }
+}
+
 TEST_CASE("outdoor case: the photograph is the panorama through the pinhole, over a ground the camera stands on") {
     const EnvironmentMap map = readEnvironmentMap(builtinSceneDir() + "/environments/blender_forest.exr");
     OutdoorSettings settings;

@@ -2,7 +2,8 @@
 // shaft_hierarchy.h; Gibson et al. 2003 section 6): the octree's ranges partition the
 // patches; every source-receiver pair's shaft appears once as a leaf; the traversal finds
 // every source and receiver whose pair shaft an object's box touches (brute force over all
-// pairs); insignificant shafts are not kept.
+// pairs); insignificant shafts are not kept; a kept shaft whose children all fail the rule
+// lists every patch below it.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -99,4 +100,37 @@ TEST_CASE("shaft hierarchy: insignificant shafts are not kept, and their sources
     const ShaftHierarchy none = buildShaftHierarchy(sources, receivers, [](int32_t, int32_t) { return false; });
     CHECK(none.nodes.empty());
     CHECK(traverseShafts(none, sources, receivers, everywhere).sourcePatches.empty());
+}
+
+TEST_CASE("shaft hierarchy: a kept shaft whose children all fail the rule is a leaf listing every patch below it") {
+    std::mt19937_64 rng(9);
+    // 8 sources, so every source node splits into two of equal size down to single patches.
+    const std::vector<Aabb> sourceBoxes = randomBoxes(rng, 8, glm::dvec3(-2, 4, -2), glm::dvec3(2, 4, 2), 0.3);
+    const std::vector<Aabb> receiverBoxes = randomBoxes(rng, 50, glm::dvec3(-3, 0, -3), glm::dvec3(3, 0, 3), 0.3);
+    const SourceTree sources = buildSourceTree(sourceBoxes, std::vector<double>(sourceBoxes.size(), 1.0));
+    const ReceiverOctree receivers = buildReceiverOctree(receiverBoxes);
+    // A light cut so finely that no patch passes on its own, though every pair of them does.
+    const auto inner = [&](int32_t s, int32_t) { return !sources.nodes[s].leaf(); };
+    const ShaftHierarchy shafts = buildShaftHierarchy(sources, receivers, inner);
+    const ShaftHierarchy all = buildShaftHierarchy(sources, receivers, [](int32_t, int32_t) { return true; });
+    REQUIRE(!shafts.nodes.empty());
+    CHECK(std::none_of(shafts.nodes.begin(), shafts.nodes.end(),
+                       [&](const ShaftNode& n) { return sources.nodes[n.source].leaf(); }));
+    CHECK(shafts.leafCount() > 0);
+    const Aabb everywhere{{-10, -1, -10}, {10, 10, 10}};
+    const ShaftHits hits = traverseShafts(shafts, sources, receivers, everywhere);
+    CHECK(hits.sourcePatches.size() == sourceBoxes.size());
+    CHECK(hits.receiverPatches.size() == receiverBoxes.size());
+    // Nothing is lost against the hierarchy that keeps every shaft: each box lists at least
+    // the sources and receivers that one lists (a leaf's shaft holds its pairs' shafts).
+    for (int trial = 0; trial < 100; ++trial) {
+        const Aabb object = randomBoxes(rng, 1, glm::dvec3(-3, 0, -3), glm::dvec3(3, 4, 3), 0.5)[0];
+        const ShaftHits coarse = traverseShafts(shafts, sources, receivers, object);
+        const ShaftHits fine = traverseShafts(all, sources, receivers, object);
+        const std::set<uint32_t> coarseSources(coarse.sourcePatches.begin(), coarse.sourcePatches.end());
+        const std::set<uint32_t> coarseReceivers(coarse.receiverPatches.begin(), coarse.receiverPatches.end());
+        REQUIRE(coarseSources.size() == coarse.sourcePatches.size());   // each once
+        for (const uint32_t s : fine.sourcePatches) REQUIRE(coarseSources.contains(s));
+        for (const uint32_t r : fine.receiverPatches) REQUIRE(coarseReceivers.contains(r));
+    }
 }

@@ -1,6 +1,6 @@
 // The source set (compositing/differential/source_set.h, Gibson et al. 2003 section 4): the
-// shortest run of the brightest patches whose power reaches the share, nothing that emits
-// nothing, bad input refused.
+// shortest run of the brightest patches whose power reaches the share, a light of one
+// radiance whole however finely it is cut, nothing that emits nothing, bad input refused.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -58,4 +58,21 @@ TEST_CASE("source set: a share of the power that is not above 0 and at most 1, a
     CHECK_THROWS_AS(selectSources(std::vector<EmittingPatch>{{1.0, std::nan("")}}, 0.7), std::invalid_argument);
     CHECK_THROWS_AS(selectSources(std::vector<EmittingPatch>{{std::numeric_limits<double>::infinity(), 1.0}}, 0.7),
                     std::invalid_argument);
+}
+
+TEST_CASE("source set: a light of one radiance is in the set whole, however finely it is cut") {
+    // A window of radiance 7 and 1.68 m^2 beside a panel of 9 and 0.6 m^2 and dim walls of
+    // 0.1 and 30 m^2: the panel holds 5.4 of 20.16, so 70% needs part of the window.
+    for (const int pieces : {1, 4, 16, 64}) {
+        std::vector<EmittingPatch> patches{{9.0, 0.6}};
+        for (int k = 0; k < pieces; ++k) patches.push_back({7.0, 1.68 / pieces});
+        for (int k = 0; k < 30; ++k) patches.push_back({0.1, 1.0});
+        const std::vector<uint32_t> set = selectSources(patches, 0.7);
+        const auto inWindow = [&](uint32_t p) { return p >= 1 && int(p) <= pieces; };
+        const auto window = std::count_if(set.begin(), set.end(), inWindow);
+        INFO(pieces << " pieces");
+        CHECK(set.front() == 0);
+        CHECK(window == pieces);
+        CHECK(set.size() == size_t(pieces) + 1);   // the walls are not needed
+    }
 }
