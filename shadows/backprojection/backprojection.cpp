@@ -32,12 +32,12 @@ struct Settings {
     int resolution = 512;
     int lightSamples = 16;      // per axis of the light's bitmask grid
     int maxNodes = 32;          // texels (or nodes) per side of a search region
-    double continuity = 0.05;   // relative distance across which neighbouring patches join
+    double edgeRatio = 8.0;     // a depth step more than this many times the steps beside it is an edge
     bool minMaxHierarchy = true;
 };
 
 Settings readSettings(const TechniqueParams& p) {
-    return {p.integer("resolution"), p.integer("light-samples"), p.integer("max-nodes"), p.real("continuity"),
+    return {p.integer("resolution"), p.integer("light-samples"), p.integer("max-nodes"), p.real("edge-ratio"),
             p.flag("min-max-hierarchy")};
 }
 
@@ -90,12 +90,11 @@ PixelResult shadePixel(const Frame& f, const glm::dvec3& P, const glm::dvec3& N,
         out.proved = f.settings.minMaxHierarchy && f.hierarchy.provedLit(r, x0, y0, x1, y1);
         if (!out.proved) {
             // 3. The occluders' patches onto the light.
-            gatherPatches(f.soft, f.hierarchy, {r, dr, f.samples.perAxis()}, x0, y0, x1, y1, f.settings.maxNodes,
-                          grid);
+            gatherPatches(f.soft, f.hierarchy, {r, dr, f.samples.perAxis()}, x0, y0, x1, y1,
+                          {f.settings.maxNodes, f.settings.edgeRatio}, grid);
             out.level = grid.level;
             if (grid.occluders > 0) {
-                out.patches = backProjectPatches(grid, f.soft, P, f.plane, f.samples, f.settings.continuity, hidden,
-                                                 scratch, drawn);
+                out.patches = backProjectPatches(grid, f.soft, P, f.plane, f.samples, hidden, scratch, drawn);
             }
         }
     }
@@ -189,8 +188,9 @@ Technique backprojectionTechnique() {
                      "samples per axis of the light's bitmask grid (n x n bits)"),
         integerParam("max-nodes", 32, 4, 1024,
                      "texels per side of a search region before the hierarchy's nodes stand in"),
-        realParam("continuity", 0.05, 0.0, 1.0,
-                  "relative distance from the light across which neighbouring patches join"),
+        realParam("edge-ratio", 8.0, 1.0, 1e6,
+                  "a depth step between neighbouring patches more than this many times the steps beside it is an "
+                  "edge between two surfaces (else they join: gap closing)"),
         flagParam("min-max-hierarchy", true, "skip the pixels whose search region the hierarchy proves lit (same V)")};
     for (const ParamSpec& p : plotPixelParams("patches are drawn on the light")) params.push_back(p);
     return {.name = kBackprojectionName,
