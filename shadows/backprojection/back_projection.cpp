@@ -1,6 +1,7 @@
 #include "shadows/backprojection/back_projection.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 
@@ -24,22 +25,51 @@ bool projectOntoLight(const SoftShadowMap& soft, const glm::dvec3& P, const Area
 }
 
 // The patches around a corner of the grid by quadrant: 0 above left, 1 above right, 2 below
-// left, 3 below right. The group of quadrant q: the patches joined to it (joinSurfaces)
-// through the four edges that meet at corner (ci, cj), as a mask of quadrants. Two joined
-// patches are in one group at both ends of their shared edge, so they give it the same
-// depth at each end: no gap along it.
-unsigned cornerGroup(const PatchGrid& grid, int ci, int cj, int q) {
+// left, 3 below right; the edges that meet there: bit 0 joins quadrants 0 and 1, bit 1 2
+// and 3, bit 2 0 and 2, bit 3 1 and 3. kGroups[edges][q]: the quadrants joined to q, as a
+// mask (the far one is two edges away). Two joined patches are in one group at both ends
+// of their shared edge, so they give it the same depth at each end: no gap along it.
+constexpr auto kGroups = [] {
     constexpr int kEnds[4][2] = {{0, 1}, {2, 3}, {0, 2}, {1, 3}};
-    const bool joined[4] = {grid.joinedRight(ci - 1, cj - 1), grid.joinedRight(ci - 1, cj),
-                            grid.joinedDown(ci - 1, cj - 1), grid.joinedDown(ci, cj - 1)};
-    unsigned group = 1u << q;
-    for (int pass = 0; pass < 2; ++pass) {   // the far quadrant is two edges away
-        for (int e = 0; e < 4; ++e) {
-            const unsigned ends = (1u << kEnds[e][0]) | (1u << kEnds[e][1]);
-            if (joined[e] && (group & ends)) group |= ends;
+    std::array<std::array<uint8_t, 4>, 16> groups{};
+    for (int edges = 0; edges < 16; ++edges) {
+        for (int q = 0; q < 4; ++q) {
+            unsigned group = 1u << q;
+            for (int pass = 0; pass < 2; ++pass) {
+                for (int e = 0; e < 4; ++e) {
+                    const unsigned ends = (1u << kEnds[e][0]) | (1u << kEnds[e][1]);
+                    if ((edges >> e & 1) && (group & ends)) group |= ends;
+                }
+            }
+            groups[size_t(edges)][size_t(q)] = uint8_t(group);
         }
     }
-    return group;
+    return groups;
+}();
+
+// Per grid node, bit 0: joined to the node on its right, bit 1: to the one below, where both
+// occlude and the map shows them on one surface (surface_joins.h).
+void joinGridPatches(const PatchGrid& grid, const SurfaceJoins& joins, std::vector<uint8_t>& out) {
+    out.assign(size_t(grid.width) * size_t(grid.height), 0);
+    for (int j = 0; j < grid.height; ++j) {
+        for (int i = 0; i < grid.width; ++i) {
+            if (grid.at(i, j) >= 1.0f) continue;
+            const int x = grid.x0 + i, y = grid.y0 + j;
+            uint8_t& bits = out[size_t(j) * size_t(grid.width) + size_t(i)];
+            if (i + 1 < grid.width && grid.at(i + 1, j) < 1.0f && joins.right(grid.level, x, y)) bits |= 1u;
+            if (j + 1 < grid.height && grid.at(i, j + 1) < 1.0f && joins.down(grid.level, x, y)) bits |= 2u;
+        }
+    }
+}
+
+// The edges that meet at corner (ci, cj), as kGroups reads them.
+unsigned cornerEdges(const PatchGrid& grid, const std::vector<uint8_t>& joined, int ci, int cj) {
+    const auto bits = [&](int i, int j) -> unsigned {
+        const bool inside = i >= 0 && j >= 0 && i < grid.width && j < grid.height;
+        return inside ? joined[size_t(j) * size_t(grid.width) + size_t(i)] : 0u;
+    };
+    const unsigned aboveLeft = bits(ci - 1, cj - 1), belowLeft = bits(ci - 1, cj), aboveRight = bits(ci, cj - 1);
+    return (aboveLeft & 1u) | (belowLeft & 1u) << 1 | (aboveLeft & 2u) << 1 | (aboveRight & 2u) << 2;
 }
 
 // The least depth of a group's patches: where they meet, the one nearest the light.
@@ -59,7 +89,8 @@ bool gridPatchOnLight(const PatchGrid& grid, const SoftShadowMap& soft, const gl
     const double nodeWidth = double(1 << grid.level);
     for (int c = 0; c < 4; ++c) {
         const int ci = i + kLoop[c][0], cj = j + kLoop[c][1];
-        const unsigned group = cornerGroup(grid, ci, cj, (1 - kLoop[c][0]) + 2 * (1 - kLoop[c][1]));
+        const unsigned group =
+            kGroups[cornerEdges(grid, s.joined, ci, cj)][size_t((1 - kLoop[c][0]) + 2 * (1 - kLoop[c][1]))];
         const size_t k = 4 * (size_t(cj) * size_t(cw) + size_t(ci)) + size_t(std::countr_zero(group));
         if (s.cornerState[k] == 0) {
             const double X = (grid.x0 + ci) * nodeWidth, Y = (grid.y0 + cj) * nodeWidth;
@@ -75,11 +106,12 @@ bool gridPatchOnLight(const PatchGrid& grid, const SoftShadowMap& soft, const gl
 
 }  // namespace
 
-int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P,
-                       const AreaLightPlane& light, const LightGrid& samples, LightBitmask& mask,
+int backProjectPatches(const PatchGrid& grid, const SurfaceJoins& joins, const SoftShadowMap& soft,
+                       const glm::dvec3& P, const AreaLightPlane& light, const LightGrid& samples, LightBitmask& mask,
                        BackProjectionScratch& s, std::vector<glm::vec2>* drawn) {
     const size_t slots = 4 * size_t(grid.width + 1) * size_t(grid.height + 1);   // a corner's four groups at most
     s.cornerState.assign(slots, 0), s.cornerOnLight.resize(slots);
+    joinGridPatches(grid, joins, s.joined);
     int projected = 0;
     for (int j = 0; j < grid.height; ++j) {
         for (int i = 0; i < grid.width; ++i) {

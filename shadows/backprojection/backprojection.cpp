@@ -4,7 +4,8 @@
 //      that can occlude (the PCSS search region at its full size); where the min/max
 //      hierarchy proves every texel there lit (min_max_hierarchy.h), the pixel is done;
 //   3. else its occluder patches (occluder_patches.h), texels or for a wide region the
-//      hierarchy's nodes, are projected onto the light and set the samples they hide
+//      hierarchy's nodes, are projected onto the light, neighbours on one surface joined
+//      (surface_joins.h, once per frame), and set the samples they hide
 //      (back_projection.h); V = 1 - hidden / samples.
 // Pixels are independent and rows run in parallel, so V is the same for any thread count.
 #include "shadows/backprojection/backprojection.h"
@@ -17,6 +18,7 @@
 #include "shading/light_sampling.h"
 #include "shadows/backprojection/back_projection.h"
 #include "shadows/backprojection/light_plot.h"
+#include "shadows/backprojection/surface_joins.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/pcss.h"
@@ -52,6 +54,7 @@ struct PixelResult {
 struct Frame {
     const SoftShadowMap& soft;
     const MinMaxHierarchy& hierarchy;
+    const SurfaceJoins& joins;
     const AreaLightPlane plane;
     const AreaLightFrame light;
     const LightGrid samples;
@@ -90,11 +93,12 @@ PixelResult shadePixel(const Frame& f, const glm::dvec3& P, const glm::dvec3& N,
         out.proved = f.settings.minMaxHierarchy && f.hierarchy.provedLit(r, x0, y0, x1, y1);
         if (!out.proved) {
             // 3. The occluders' patches onto the light.
-            gatherPatches(f.soft, f.hierarchy, {r, dr, f.samples.perAxis()}, x0, y0, x1, y1,
-                          {f.settings.maxNodes, f.settings.edgeRatio}, grid);
+            gatherPatches(f.soft, f.hierarchy, {r, dr, f.samples.perAxis()}, x0, y0, x1, y1, f.settings.maxNodes,
+                          grid);
             out.level = grid.level;
             if (grid.occluders > 0) {
-                out.patches = backProjectPatches(grid, f.soft, P, f.plane, f.samples, hidden, scratch, drawn);
+                out.patches =
+                    backProjectPatches(grid, f.joins, f.soft, P, f.plane, f.samples, hidden, scratch, drawn);
             }
         }
     }
@@ -140,7 +144,9 @@ ShadowOutputs runBackprojection(const ShadowInputs& in) {
     timer.lap("map");
     const MinMaxHierarchy hierarchy(soft.map);
     timer.lap("hierarchy");
-    const Frame f{soft, hierarchy, areaLightPlane(light), light, samples, s};
+    const SurfaceJoins joins(soft.map, hierarchy, s.edgeRatio);
+    timer.lap("surface_joins");
+    const Frame f{soft, hierarchy, joins, areaLightPlane(light), light, samples, s};
     const GBuffer& g = in.gbuffer;
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);

@@ -12,20 +12,8 @@
 // light's width, w(d) the light's cone from the receiver in texels at d (eq. 7.6 in
 // texels), so the refinement stops at 2^l <= w(d) / n for n samples per axis. A thin
 // occluder (a rail under a wide plate) keeps its width to within a sample.
-//
-// Which neighbouring patches of the grid are one surface, so that back_projection closes
-// the gap between them (Guennebaud et al., section 3.3; the rule is this project's): the
-// step between their depths against the steps beside it, in window depth, where a plane's
-// steps are equal (it is affine in texel coordinates). Along a convex or concave profile
-// the steps grow or shrink in turn, so no step exceeds the larger of its neighbours on the
-// same line, however steep the surface is seen from the light (a sphere near its
-// silhouette, which a fixed threshold on relative depth split); an edge between two
-// surfaces stands out from the steps on both sides (a plate over a rail far below: more
-// than 100 times). joinSurfaces in the .cpp says what edgeRatio allows for and what the
-// map cannot tell apart.
 #pragma once
 
-#include <cstdint>
 #include <vector>
 
 #include "shadows/depth_map.h"
@@ -49,24 +37,8 @@ struct PatchGrid {
     std::vector<float> depth;      // window depth of each node's patch; 1: none (no occluder, or refined)
     std::vector<FinePatch> fine;   // the refined mixed nodes' patches
     int occluders = 0;             // patches, the grid's and the fine ones
-    // Which neighbouring patches are one surface (above): per node, bit 0 joined to the
-    // node on its right, bit 1 to the one below.
-    std::vector<uint8_t> joins;
-    // The map's depth at the nodes and a border around them (one node before, two after),
-    // occluding or not: the steps the joins compare.
-    std::vector<float> surface;
 
-    float at(int i, int j) const { return depth[index(i, j)]; }
-    float& surfaceAt(int i, int j) { return surface[surfaceIndex(i, j)]; }
-    float surfaceAt(int i, int j) const { return surface[surfaceIndex(i, j)]; }
-    // False outside the grid.
-    bool joinedRight(int i, int j) const { return inside(i, j) && (joins[index(i, j)] & 1u); }
-    bool joinedDown(int i, int j) const { return inside(i, j) && (joins[index(i, j)] & 2u); }
-
-private:
-    size_t index(int i, int j) const { return size_t(j) * size_t(width) + size_t(i); }
-    size_t surfaceIndex(int i, int j) const { return size_t(j + 1) * size_t(width + 3) + size_t(i + 1); }
-    bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < width && j < height; }
+    float at(int i, int j) const { return depth[size_t(j) * size_t(width) + size_t(i)]; }
 };
 
 // What the patches are gathered for: the receiver (its plane, receiver-plane bias; its
@@ -77,18 +49,12 @@ struct PatchReceiver {
     int samplesPerAxis;
 };
 
-struct PatchSettings {
-    int maxNodes;        // nodes per side of a region at most (the level read)
-    double edgeRatio;    // a step more than this many times the steps beside it is an edge
-};
-
 // The patches of texels [x0, x1] x [y0, y1] (inside the map): a texel occludes where r.litBy
 // says shadowed; a node may occlude unless its plane and residuals prove it lit (so a
 // floor's own nodes, on the receiver's plane, are left out), and occludes whole where it
 // holds no empty texel and its greatest depth is nearer than the receiver's plane anywhere
-// over it; the rest, mixed, is refined. Then the grid's neighbouring patches on one
-// surface are joined (the fine ones keep their own depths).
+// over it; the rest, mixed, is refined.
 void gatherPatches(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const PatchReceiver& receiver,
-                   int x0, int y0, int x1, int y1, const PatchSettings& settings, PatchGrid& out);
+                   int x0, int y0, int x1, int y1, int maxNodes, PatchGrid& out);
 
 }  // namespace shadowlab
