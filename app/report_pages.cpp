@@ -183,6 +183,7 @@ std::string errorsTable(const SweepRow& row) {
                        figureRow("false shadow %", e.percentOfPixels(e.falseShadow), "%.4f") +
                        figureRow("false light %", e.percentOfPixels(e.falseLight), "%.4f") +
                        figureRow("umbra lit %", e.percentOfPixels(e.umbraLit), "%.4f") +
+                       figureRow("umbra lit 0.02 %", e.percentOfPixels(e.fullUmbraLit), "%.4f") +
                        figureRow("umbra over %", e.percentOfPixels(e.umbraOver), "%.4f") +
                        figureRow("lit shadowed %", e.percentOfPixels(e.litShadowed), "%.4f");
     if (e.rmsDisplay) rows += figureRow("RMS as displayed", *e.rmsDisplay, "%.6f");

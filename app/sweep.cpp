@@ -253,16 +253,18 @@ std::string sweepImagesFolder(const SweepResults& results) { return sweepFileSte
 std::string formatSweepText(const SweepResults& results) {
     std::string text = results.scene + (results.shard.count > 1 ? ", shard " + results.shard.name() : "") + "\n";
     char line[512];
-    std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s %14s %10s %10s %11s %12s %13s\n", "technique", "settings",
-                  "threads", "median ms", "min ms", "misclassified%", "RMS", "max", "umbra lit%", "umbra over%",
-                  "lit shadowed%");
+    std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s %14s %10s %10s %11s %16s %12s %13s\n", "technique",
+                  "settings", "threads", "median ms", "min ms", "misclassified%", "RMS", "max", "umbra lit%",
+                  "umbra lit 0.02%", "umbra over%", "lit shadowed%");
     text += line;
     for (const SweepRow& r : results.rows) {
         const ErrorFigures& e = r.errors;
-        std::snprintf(line, sizeof line, "%-16s %-40s %7d %10.3f %10.3f %14.4f %10.5f %10.5f %11.4f %12.4f %13.4f\n",
+        std::snprintf(line, sizeof line,
+                      "%-16s %-40s %7d %10.3f %10.3f %14.4f %10.5f %10.5f %11.4f %16.4f %12.4f %13.4f\n",
                       r.technique.c_str(), r.settingsLabel().c_str(), r.threads, r.medianMs, r.minMs,
                       e.percentOfPixels(e.misclassified()), e.rms, e.maxAbs, e.percentOfPixels(e.umbraLit),
-                      e.percentOfPixels(e.umbraOver), e.percentOfPixels(e.litShadowed));
+                      e.percentOfPixels(e.fullUmbraLit), e.percentOfPixels(e.umbraOver),
+                      e.percentOfPixels(e.litShadowed));
         text += line;
     }
     return text;
@@ -272,7 +274,8 @@ std::string formatSweepCsv(const SweepResults& results) {
     const std::vector<std::string> stats = statNames(results);
     std::vector<std::string> header = {"technique", "settings", "threads", "median_ms", "min_ms", "rms", "rms_display", "mean_abs",
                                        "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
-                                       "umbra_lit_percent", "umbra_over_percent", "lit_shadowed_percent", "reference"};
+                                       "umbra_lit_percent", "full_umbra_lit_percent", "umbra_over_percent",
+                                       "lit_shadowed_percent", "reference"};
     header.insert(header.end(), stats.begin(), stats.end());
     std::string csv = csvLine(header);
     for (const SweepRow& r : results.rows) {
@@ -282,7 +285,9 @@ std::string formatSweepCsv(const SweepResults& results) {
                                            e.rmsDisplay ? csvNumber(*e.rmsDisplay) : "", csvNumber(e.meanAbs),
                                            csvNumber(e.maxAbs), csvNumber(e.percentOfPixels(e.misclassified())),
                                            csvNumber(e.percentOfPixels(e.falseShadow)), csvNumber(e.percentOfPixels(e.falseLight)),
-                                           csvNumber(e.percentOfPixels(e.umbraLit)), csvNumber(e.percentOfPixels(e.umbraOver)),
+                                           csvNumber(e.percentOfPixels(e.umbraLit)),
+                                           csvNumber(e.percentOfPixels(e.fullUmbraLit)),
+                                           csvNumber(e.percentOfPixels(e.umbraOver)),
                                            csvNumber(e.percentOfPixels(e.litShadowed)),
                                            r.reference};
         for (const std::string& name : stats) fields.push_back(statValue(r, name));

@@ -136,9 +136,10 @@ std::string sweepImagesFolder(const SweepResults& results);
 // A table for the terminal: one line per row.
 std::string formatSweepText(const SweepResults& results);
 // One row per SweepRow. CSV columns: technique, settings, threads, median_ms, min_ms, rms,
-// mean_abs, max_abs, misclassified_percent, false_shadow_percent, false_light_percent,
-// umbra_lit_percent, umbra_over_percent, lit_shadowed_percent, reference, then one column per technique stat
-// (empty where a row does not report it).
+// rms_display, mean_abs, max_abs, misclassified_percent, false_shadow_percent,
+// false_light_percent, umbra_lit_percent, full_umbra_lit_percent, umbra_over_percent,
+// lit_shadowed_percent, reference, then one column per technique stat (empty where a row
+// does not report it).
 std::string formatSweepCsv(const SweepResults& results);
 // CSV helpers shared with `shadowlab scaling`: one RFC 4180 line (fields with a comma,
 // quote or line break quoted), and a number with 9 significant digits.

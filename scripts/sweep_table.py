@@ -14,7 +14,8 @@ import sys
 HARD = [("misclassified %", "misclassified_percent", 3), ("false shadow %", "false_shadow_percent", 3),
         ("false light %", "false_light_percent", 3), ("RMS", "rms", 4)]
 SOFT = [("RMS", "rms", 4), ("max", "max_abs", 2), ("umbra lit %", "umbra_lit_percent", 3),
-        ("umbra over %", "umbra_over_percent", 3), ("lit shadowed %", "lit_shadowed_percent", 3)]
+        ("umbra lit 0.02 %", "full_umbra_lit_percent", 3), ("umbra over %", "umbra_over_percent", 3),
+        ("lit shadowed %", "lit_shadowed_percent", 3)]
 RADIANCE = [("RMS", "rms", 4), ("RMS displayed", "rms_display", 4)]
 # Casters that are not opaque: V is a transmittance, so RMS and max, and the bytes a
 # volumetric map keeps per texel (empty for the others).

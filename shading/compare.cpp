@@ -64,6 +64,12 @@ void countUmbraErrors(float ref, float tst, const CompareOptions& options, Error
         ++f.litPixels;
         f.litShadowed += tst < 1.0f - options.umbraTolerance;
     }
+    // The finer figure: where the reference is dark to its last ray, any light the test lets
+    // through above a fiftieth is wrong, and the 0.1 tolerance would hide most of it.
+    if (ref < options.fullUmbraThreshold) {
+        ++f.fullUmbraPixels;
+        f.fullUmbraLit += tst > options.fullUmbraTolerance;
+    }
 }
 
 }  // namespace
@@ -119,6 +125,9 @@ std::string formatText(const ErrorFigures& f) {
                         "  shadowed in the reference, lit here (leaks)");
     text += formatCount("umbra lit", f.umbraLit, f.percentOfPixels(f.umbraLit),
                         ("  of " + std::to_string(f.umbraPixels) + " umbra pixels in the reference, lit here").c_str());
+    text += formatCount("umbra lit 0.02", f.fullUmbraLit, f.percentOfPixels(f.fullUmbraLit),
+                        ("  of " + std::to_string(f.fullUmbraPixels) + " full umbra pixels (V < 0.001), above 0.02 here")
+                            .c_str());
     text += formatCount("umbra over", f.umbraOver, f.percentOfPixels(f.umbraOver),
                         "  umbra here where the reference sees the light (V > 0.1 there)");
     text += formatCount("lit shadowed", f.litShadowed, f.percentOfPixels(f.litShadowed),
@@ -151,6 +160,9 @@ std::string formatJson(const ErrorFigures& f) {
     j["lit_shadowed_percent"] = f.percentOfPixels(f.litShadowed);
     j["umbra_errors"] = f.umbraErrors();
     j["umbra_errors_percent"] = f.percentOfPixels(f.umbraErrors());
+    j["full_umbra_pixels"] = f.fullUmbraPixels;
+    j["full_umbra_lit"] = f.fullUmbraLit;
+    j["full_umbra_lit_percent"] = f.percentOfPixels(f.fullUmbraLit);
     return j.dump(2);
 }
 

@@ -29,6 +29,11 @@ struct CompareOptions {
     // reference's is above umbraTolerance, and shadows full light below 1 - umbraTolerance.
     float umbraThreshold = 0.02f;
     float umbraTolerance = 0.1f;
+    // The finer figure beside it: the full umbra, where no ray of the reference reaches the
+    // light (V < fullUmbraThreshold, below one of reference-soft's 1024 rays), lit by the
+    // test above fullUmbraTolerance, a fiftieth of the light (conventions.md).
+    float fullUmbraThreshold = 0.001f;
+    float fullUmbraTolerance = 0.02f;
 };
 
 struct ErrorFigures {
@@ -56,6 +61,8 @@ struct ErrorFigures {
     uint64_t umbraLit = 0;       // of umbraPixels, test V > umbraTolerance
     uint64_t umbraOver = 0;      // test V < umbraThreshold, reference V > umbraTolerance
     uint64_t litShadowed = 0;    // of litPixels, test V < 1 - umbraTolerance
+    uint64_t fullUmbraPixels = 0;   // reference V < fullUmbraThreshold
+    uint64_t fullUmbraLit = 0;      // of fullUmbraPixels, test V > fullUmbraTolerance ("umbra lit 0.02")
     uint64_t umbraErrors() const { return umbraLit + umbraOver; }
     double percentOfPixels(uint64_t count) const {
         return pixels == 0 ? 0.0 : 100.0 * double(count) / double(pixels);
@@ -75,7 +82,7 @@ ErrorFigures compareFiles(const std::filesystem::path& reference, const std::fil
 //  "misclassified_percent","false_shadow","false_shadow_percent","false_light",
 //  "false_light_percent","umbra_pixels","lit_pixels","umbra_lit","umbra_lit_percent",
 //  "umbra_over","umbra_over_percent","lit_shadowed","lit_shadowed_percent","umbra_errors",
-//  "umbra_errors_percent"}.
+//  "umbra_errors_percent","full_umbra_pixels","full_umbra_lit","full_umbra_lit_percent"}.
 // Every percentage is of `pixels`, the reference's hit pixels.
 std::string formatText(const ErrorFigures& figures);
 std::string formatJson(const ErrorFigures& figures);

@@ -1,6 +1,8 @@
 #include "shadows/backprojection/back_projection.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 
 namespace shadowlab {
@@ -22,48 +24,99 @@ bool projectOntoLight(const SoftShadowMap& soft, const glm::dvec3& P, const Area
     return std::isfinite(onLight.x) && std::isfinite(onLight.y);
 }
 
-}  // namespace
-
-int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P,
-                       const AreaLightPlane& light, const LightGrid& samples, double continuity, LightBitmask& mask,
-                       BackProjectionScratch& s, std::vector<glm::vec2>* drawn) {
-    const int cw = grid.width + 1, ch = grid.height + 1;
-    const size_t corners = size_t(cw) * size_t(ch);
-    s.cornerDepth.assign(corners, 1.0f), s.cornerState.assign(corners, 0), s.cornerOnLight.resize(corners);
-    for (int j = 0; j < grid.height; ++j) {   // a corner takes the least depth of the patches around it
-        for (int i = 0; i < grid.width; ++i) {
-            const float depth = grid.at(i, j);
-            for (int k = 0; k < 4 && depth < 1.0f; ++k) {
-                float& corner = s.cornerDepth[size_t(j + k / 2) * size_t(cw) + size_t(i + k % 2)];
-                corner = std::min(corner, depth);
+// The patches around a corner of the grid by quadrant: 0 above left, 1 above right, 2 below
+// left, 3 below right; the edges that meet there: bit 0 joins quadrants 0 and 1, bit 1 2
+// and 3, bit 2 0 and 2, bit 3 1 and 3. kGroups[edges][q]: the quadrants joined to q, as a
+// mask (the far one is two edges away). Two joined patches are in one group at both ends
+// of their shared edge, so they give it the same depth at each end: no gap along it.
+constexpr auto kGroups = [] {
+    constexpr int kEnds[4][2] = {{0, 1}, {2, 3}, {0, 2}, {1, 3}};
+    std::array<std::array<uint8_t, 4>, 16> groups{};
+    for (int edges = 0; edges < 16; ++edges) {
+        for (int q = 0; q < 4; ++q) {
+            unsigned group = 1u << q;
+            for (int pass = 0; pass < 2; ++pass) {
+                for (int e = 0; e < 4; ++e) {
+                    const unsigned ends = (1u << kEnds[e][0]) | (1u << kEnds[e][1]);
+                    if ((edges >> e & 1) && (group & ends)) group |= ends;
+                }
             }
+            groups[size_t(edges)][size_t(q)] = uint8_t(group);
         }
     }
+    return groups;
+}();
+
+// Per grid node, bit 0: joined to the node on its right, bit 1: to the one below, where both
+// occlude and the map shows them on one surface (surface_joins.h).
+void joinGridPatches(const PatchGrid& grid, const SurfaceJoins& joins, std::vector<uint8_t>& out) {
+    out.assign(size_t(grid.width) * size_t(grid.height), 0);
+    for (int j = 0; j < grid.height; ++j) {
+        for (int i = 0; i < grid.width; ++i) {
+            if (grid.at(i, j) >= 1.0f) continue;
+            const int x = grid.x0 + i, y = grid.y0 + j;
+            uint8_t& bits = out[size_t(j) * size_t(grid.width) + size_t(i)];
+            if (i + 1 < grid.width && grid.at(i + 1, j) < 1.0f && joins.right(grid.level, x, y)) bits |= 1u;
+            if (j + 1 < grid.height && grid.at(i, j + 1) < 1.0f && joins.down(grid.level, x, y)) bits |= 2u;
+        }
+    }
+}
+
+// The edges that meet at corner (ci, cj), as kGroups reads them.
+unsigned cornerEdges(const PatchGrid& grid, const std::vector<uint8_t>& joined, int ci, int cj) {
+    const auto bits = [&](int i, int j) -> unsigned {
+        const bool inside = i >= 0 && j >= 0 && i < grid.width && j < grid.height;
+        return inside ? joined[size_t(j) * size_t(grid.width) + size_t(i)] : 0u;
+    };
+    const unsigned aboveLeft = bits(ci - 1, cj - 1), belowLeft = bits(ci - 1, cj), aboveRight = bits(ci, cj - 1);
+    return (aboveLeft & 1u) | (belowLeft & 1u) << 1 | (aboveLeft & 2u) << 1 | (aboveRight & 2u) << 2;
+}
+
+// The least depth of a group's patches: where they meet, the one nearest the light.
+float groupDepth(const PatchGrid& grid, int ci, int cj, unsigned group) {
+    float least = 1.0f;
+    for (int q = 0; q < 4; ++q) {
+        if (group & (1u << q)) least = std::min(least, grid.at(ci - 1 + (q & 1), cj - 1 + (q >> 1)));
+    }
+    return least;
+}
+
+// The four corners of grid patch (i, j) on the light, each at its group's least depth
+// (projected once per corner and group); false if one does not reach the light's plane.
+bool gridPatchOnLight(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P,
+                      const AreaLightPlane& light, int i, int j, BackProjectionScratch& s, glm::vec2 (&v)[4]) {
+    const int cw = grid.width + 1;
     const double nodeWidth = double(1 << grid.level);
+    for (int c = 0; c < 4; ++c) {
+        const int ci = i + kLoop[c][0], cj = j + kLoop[c][1];
+        const unsigned group =
+            kGroups[cornerEdges(grid, s.joined, ci, cj)][size_t((1 - kLoop[c][0]) + 2 * (1 - kLoop[c][1]))];
+        const size_t k = 4 * (size_t(cj) * size_t(cw) + size_t(ci)) + size_t(std::countr_zero(group));
+        if (s.cornerState[k] == 0) {
+            const double X = (grid.x0 + ci) * nodeWidth, Y = (grid.y0 + cj) * nodeWidth;
+            const bool onPlane =
+                projectOntoLight(soft, P, light, X, Y, groupDepth(grid, ci, cj, group), s.cornerOnLight[k]);
+            s.cornerState[k] = onPlane ? 1 : 2;
+        }
+        if (s.cornerState[k] != 1) return false;
+        v[c] = s.cornerOnLight[k];
+    }
+    return true;
+}
+
+}  // namespace
+
+int backProjectPatches(const PatchGrid& grid, const SurfaceJoins& joins, const SoftShadowMap& soft,
+                       const glm::dvec3& P, const AreaLightPlane& light, const LightGrid& samples, LightBitmask& mask,
+                       BackProjectionScratch& s, std::vector<glm::vec2>* drawn) {
+    const size_t slots = 4 * size_t(grid.width + 1) * size_t(grid.height + 1);   // a corner's four groups at most
+    s.cornerState.assign(slots, 0), s.cornerOnLight.resize(slots);
+    joinGridPatches(grid, joins, s.joined);
     int projected = 0;
     for (int j = 0; j < grid.height; ++j) {
         for (int i = 0; i < grid.width; ++i) {
-            const float depth = grid.at(i, j);
-            if (depth >= 1.0f) continue;
-            const double nearestShared = (1.0 - continuity) * soft.distanceOf(depth);
             glm::vec2 v[4];
-            bool valid = true;
-            for (int c = 0; c < 4 && valid; ++c) {
-                const int ci = i + kLoop[c][0], cj = j + kLoop[c][1];
-                const size_t k = size_t(cj) * size_t(cw) + size_t(ci);
-                const double X = (grid.x0 + ci) * nodeWidth, Y = (grid.y0 + cj) * nodeWidth;
-                if (soft.distanceOf(s.cornerDepth[k]) < nearestShared) {   // an edge: the patch's own depth
-                    valid = projectOntoLight(soft, P, light, X, Y, depth, v[c]);
-                    continue;
-                }
-                if (s.cornerState[k] == 0) {
-                    const bool onPlane = projectOntoLight(soft, P, light, X, Y, s.cornerDepth[k], s.cornerOnLight[k]);
-                    s.cornerState[k] = onPlane ? 1 : 2;
-                }
-                valid = s.cornerState[k] == 1;
-                v[c] = s.cornerOnLight[k];
-            }
-            if (!valid) continue;
+            if (grid.at(i, j) >= 1.0f || !gridPatchOnLight(grid, soft, P, light, i, j, s, v)) continue;
             samples.cover(mask, v, 4);
             ++projected;
             if (drawn) drawn->insert(drawn->end(), v, v + 4);

@@ -6,11 +6,12 @@
 //
 // Gaps. Neighbouring texels at different depths are squares at different distances, and
 // seen from the receiver the light shows between them (Guennebaud et al., section 3.3).
-// Here a patch's corners are shared with its occluding neighbours: the corner takes the
-// least depth of the occluding patches around it, so a continuous occluder surface becomes
-// one closed mesh and its back-projection has no gaps. Where that least depth is nearer the
-// light than (1 - continuity) times the patch's own distance (another surface in front: an
-// edge), the patch keeps its own depth at that corner, so no skirt joins the two.
+// Here a patch's corners are shared with the neighbours it is joined to, those the map
+// shows on one surface with it (surface_joins.h: the step between them against the steps
+// beside it, so a surface steep as seen from the light still joins): at each corner
+// the patches joined through the edges that meet there take the least depth among them,
+// so a continuous occluder surface becomes one closed mesh and its back-projection has no
+// gaps. Across an edge between two surfaces each keeps its own depth: no skirt joins them.
 #pragma once
 
 #include <vector>
@@ -20,22 +21,23 @@
 #include "shading/light_sampling.h"
 #include "shadows/backprojection/light_bitmask.h"
 #include "shadows/backprojection/occluder_patches.h"
+#include "shadows/backprojection/surface_joins.h"
 #include "shadows/filtered/soft_shadow_map.h"
 
 namespace shadowlab {
 
 // Per-task working memory, reused across pixels.
 struct BackProjectionScratch {
-    std::vector<float> cornerDepth;       // (width + 1) x (height + 1)
-    std::vector<glm::vec2> cornerOnLight;
-    std::vector<uint8_t> cornerState;     // 0 not projected yet, 1 on the light's plane, 2 invalid
+    std::vector<uint8_t> joined;            // per grid node: bit 0 joined to the right, bit 1 below
+    std::vector<glm::vec2> cornerOnLight;   // (width + 1) x (height + 1) corners, 4 groups each
+    std::vector<uint8_t> cornerState;       // 0 not projected yet, 1 on the light's plane, 2 invalid
 };
 
 // Sets in `mask` the samples of `samples` that the grid's occluder patches hide from P;
 // returns the number of patches projected. Stops early once every sample is hidden. With
 // `drawn`, appends each projected patch's four corners in (a, b) (the debug view).
-int backProjectPatches(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P,
-                       const AreaLightPlane& light, const LightGrid& samples, double continuity, LightBitmask& mask,
+int backProjectPatches(const PatchGrid& grid, const SurfaceJoins& joins, const SoftShadowMap& soft,
+                       const glm::dvec3& P, const AreaLightPlane& light, const LightGrid& samples, LightBitmask& mask,
                        BackProjectionScratch& scratch, std::vector<glm::vec2>* drawn = nullptr);
 
 }  // namespace shadowlab

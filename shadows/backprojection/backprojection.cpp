@@ -4,7 +4,8 @@
 //      that can occlude (the PCSS search region at its full size); where the min/max
 //      hierarchy proves every texel there lit (min_max_hierarchy.h), the pixel is done;
 //   3. else its occluder patches (occluder_patches.h), texels or for a wide region the
-//      hierarchy's nodes, are projected onto the light and set the samples they hide
+//      hierarchy's nodes, are projected onto the light, neighbours on one surface joined
+//      (surface_joins.h, once per frame), and set the samples they hide
 //      (back_projection.h); V = 1 - hidden / samples.
 // Pixels are independent and rows run in parallel, so V is the same for any thread count.
 #include "shadows/backprojection/backprojection.h"
@@ -17,6 +18,7 @@
 #include "shading/light_sampling.h"
 #include "shadows/backprojection/back_projection.h"
 #include "shadows/backprojection/light_plot.h"
+#include "shadows/backprojection/surface_joins.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/pcss.h"
@@ -32,12 +34,12 @@ struct Settings {
     int resolution = 512;
     int lightSamples = 16;      // per axis of the light's bitmask grid
     int maxNodes = 32;          // texels (or nodes) per side of a search region
-    double continuity = 0.05;   // relative distance across which neighbouring patches join
+    double edgeRatio = 8.0;     // a depth step more than this many times the steps beside it is an edge
     bool minMaxHierarchy = true;
 };
 
 Settings readSettings(const TechniqueParams& p) {
-    return {p.integer("resolution"), p.integer("light-samples"), p.integer("max-nodes"), p.real("continuity"),
+    return {p.integer("resolution"), p.integer("light-samples"), p.integer("max-nodes"), p.real("edge-ratio"),
             p.flag("min-max-hierarchy")};
 }
 
@@ -52,6 +54,7 @@ struct PixelResult {
 struct Frame {
     const SoftShadowMap& soft;
     const MinMaxHierarchy& hierarchy;
+    const SurfaceJoins& joins;
     const AreaLightPlane plane;
     const AreaLightFrame light;
     const LightGrid samples;
@@ -94,8 +97,8 @@ PixelResult shadePixel(const Frame& f, const glm::dvec3& P, const glm::dvec3& N,
                           grid);
             out.level = grid.level;
             if (grid.occluders > 0) {
-                out.patches = backProjectPatches(grid, f.soft, P, f.plane, f.samples, f.settings.continuity, hidden,
-                                                 scratch, drawn);
+                out.patches =
+                    backProjectPatches(grid, f.joins, f.soft, P, f.plane, f.samples, hidden, scratch, drawn);
             }
         }
     }
@@ -141,7 +144,9 @@ ShadowOutputs runBackprojection(const ShadowInputs& in) {
     timer.lap("map");
     const MinMaxHierarchy hierarchy(soft.map);
     timer.lap("hierarchy");
-    const Frame f{soft, hierarchy, areaLightPlane(light), light, samples, s};
+    const SurfaceJoins joins(soft.map, hierarchy, s.edgeRatio);
+    timer.lap("surface_joins");
+    const Frame f{soft, hierarchy, joins, areaLightPlane(light), light, samples, s};
     const GBuffer& g = in.gbuffer;
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
@@ -189,8 +194,9 @@ Technique backprojectionTechnique() {
                      "samples per axis of the light's bitmask grid (n x n bits)"),
         integerParam("max-nodes", 32, 4, 1024,
                      "texels per side of a search region before the hierarchy's nodes stand in"),
-        realParam("continuity", 0.05, 0.0, 1.0,
-                  "relative distance from the light across which neighbouring patches join"),
+        realParam("edge-ratio", 8.0, 1.0, 1e6,
+                  "a depth step between neighbouring patches more than this many times the steps beside it is an "
+                  "edge between two surfaces (else they join: gap closing)"),
         flagParam("min-max-hierarchy", true, "skip the pixels whose search region the hierarchy proves lit (same V)")};
     for (const ParamSpec& p : plotPixelParams("patches are drawn on the light")) params.push_back(p);
     return {.name = kBackprojectionName,

@@ -192,15 +192,16 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
     std::string line;
     std::getline(csv, line);
     const std::vector<std::string> header = splitCsvLine(line);
-    REQUIRE(header.size() == 18);   // 16 columns, then the reference's stage times
+    REQUIRE(header.size() == 19);   // 17 columns, then the reference's stage times
     CHECK(header[0] == "technique");
     CHECK(header[6] == "rms_display");
     CHECK(header[9] == "misclassified_percent");
     CHECK(header[12] == "umbra_lit_percent");
-    CHECK(header[13] == "umbra_over_percent");
-    CHECK(header[15] == "reference");
-    CHECK(header[16] == "bvh_ms");
-    CHECK(header[17] == "rays_ms");
+    CHECK(header[13] == "full_umbra_lit_percent");
+    CHECK(header[14] == "umbra_over_percent");
+    CHECK(header[16] == "reference");
+    CHECK(header[17] == "bvh_ms");
+    CHECK(header[18] == "rays_ms");
     for (const SweepRow& row : results.rows) {
         REQUIRE(std::getline(csv, line));
         const std::vector<std::string> fields = splitCsvLine(line);
@@ -213,7 +214,9 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
         CHECK(fields[6].empty());   // V is not tone mapped
         CHECK(std::stod(fields[9]) == doctest::Approx(row.errors.percentOfPixels(row.errors.misclassified())).epsilon(1e-8));
         CHECK(std::stod(fields[12]) == doctest::Approx(row.errors.percentOfPixels(row.errors.umbraLit)).epsilon(1e-8));
-        CHECK(fields[15] == "reference");
+        CHECK(std::stod(fields[13]) ==
+              doctest::Approx(row.errors.percentOfPixels(row.errors.fullUmbraLit)).epsilon(1e-8));
+        CHECK(fields[16] == "reference");
     }
     CHECK_FALSE(std::getline(csv, line));
 }

@@ -1,7 +1,7 @@
 // The umbra errors of compareImages (conventions.md, "Figures and errors"): the
 // reference's umbra (V < 0.02) lit by the test above 0.1, and the reverse, its fully lit
 // region (V > 0.98) shadowed by the test below 0.9; both strict, and symmetric under
-// V -> 1 - V.
+// V -> 1 - V. Beside them the finer umbra lit 0.02: the full umbra (V < 0.001) lit above 0.02.
 #include <doctest/doctest.h>
 
 #include <vector>
@@ -53,6 +53,25 @@ TEST_CASE("umbra errors: counts at and around the thresholds") {
     CHECK(text.find("of 3 umbra pixels") != std::string::npos);
     CHECK(text.find("lit shadowed") != std::string::npos);
     CHECK(text.find("umbra over") != std::string::npos);
+}
+
+TEST_CASE("umbra lit 0.02: the full umbra (V < 0.001) lit above a fiftieth of the light") {
+    // Reference 0, 0, 0, 0.0009, 0.001, 0.01; test 0.02, 0.021, 0.09, 1, 1, 1: the full
+    // umbra is the first four (0.001 is not in it); of those, 0.021, 0.09 and 1 count (0.02
+    // is not above the tolerance), and only the 1 is above the 0.1 figure's tolerance.
+    const std::vector<float> hit(6, 1.0f);
+    const ErrorFigures f = compareImages(visibilityRow(hit, {0, 0, 0, 0.0009f, 0.001f, 0.01f}),
+                                         visibilityRow(hit, {0.02f, 0.021f, 0.09f, 1, 1, 1}));
+    CHECK(f.fullUmbraPixels == 4);
+    CHECK(f.fullUmbraLit == 3);
+    CHECK(f.umbraPixels == 6);
+    CHECK(f.umbraLit == 3);   // the last three, all above 0.1 in the wider umbra (V < 0.02)
+    CHECK(f.umbraErrors() == f.umbraLit + f.umbraOver);   // not counted again among the umbra errors
+    const nlohmann::json j = nlohmann::json::parse(formatJson(f));
+    CHECK(j["full_umbra_pixels"] == 4);
+    CHECK(j["full_umbra_lit"] == 3);
+    CHECK(j["full_umbra_lit_percent"].get<double>() == doctest::Approx(50.0));
+    CHECK(formatText(f).find("of 4 full umbra pixels") != std::string::npos);
 }
 
 TEST_CASE("umbra over-estimated: the test's umbra where the reference sees more than the tolerance") {
