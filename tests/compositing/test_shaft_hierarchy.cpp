@@ -80,12 +80,24 @@ TEST_CASE("shaft hierarchy: one leaf per source patch and receiver leaf, and the
     CHECK(found > 1000);   // the objects did stand in the way
 }
 
+// 8 unit-power source patches 4 m above 50 receiver patches, placed at random.
+struct SourcesOverReceivers {
+    explicit SourcesOverReceivers(std::mt19937_64& rng)
+        : sourceBoxes(randomBoxes(rng, 8, glm::dvec3(-2, 4, -2), glm::dvec3(2, 4, 2), 0.3)),
+          receiverBoxes(randomBoxes(rng, 50, glm::dvec3(-3, 0, -3), glm::dvec3(3, 0, 3), 0.3)),
+          sources(buildSourceTree(sourceBoxes, std::vector<double>(sourceBoxes.size(), 1.0))),
+          receivers(buildReceiverOctree(receiverBoxes)) {}
+    std::vector<Aabb> sourceBoxes, receiverBoxes;
+    SourceTree sources;
+    ReceiverOctree receivers;
+};
+
 TEST_CASE("shaft hierarchy: insignificant shafts are not kept, and their sources are not found") {
     std::mt19937_64 rng(8);
-    const std::vector<Aabb> sourceBoxes = randomBoxes(rng, 8, glm::dvec3(-2, 4, -2), glm::dvec3(2, 4, 2), 0.3);
-    const std::vector<Aabb> receiverBoxes = randomBoxes(rng, 50, glm::dvec3(-3, 0, -3), glm::dvec3(3, 0, 3), 0.3);
-    const SourceTree sources = buildSourceTree(sourceBoxes, std::vector<double>(sourceBoxes.size(), 1.0));
-    const ReceiverOctree receivers = buildReceiverOctree(receiverBoxes);
+    const SourcesOverReceivers scene(rng);
+    const SourceTree& sources = scene.sources;
+    const ReceiverOctree& receivers = scene.receivers;
+    const std::vector<Aabb>& receiverBoxes = scene.receiverBoxes;
     const int32_t dark = sources.leafOfPatch[3];   // a source whose transfers are all below 2%
     const ShaftHierarchy shafts = buildShaftHierarchy(sources, receivers, [&](int32_t s, int32_t) { return s != dark; });
     const ShaftHierarchy all = buildShaftHierarchy(sources, receivers, [](int32_t, int32_t) { return true; });
@@ -105,10 +117,10 @@ TEST_CASE("shaft hierarchy: insignificant shafts are not kept, and their sources
 TEST_CASE("shaft hierarchy: a kept shaft whose children all fail the rule is a leaf listing every patch below it") {
     std::mt19937_64 rng(9);
     // 8 sources, so every source node splits into two of equal size down to single patches.
-    const std::vector<Aabb> sourceBoxes = randomBoxes(rng, 8, glm::dvec3(-2, 4, -2), glm::dvec3(2, 4, 2), 0.3);
-    const std::vector<Aabb> receiverBoxes = randomBoxes(rng, 50, glm::dvec3(-3, 0, -3), glm::dvec3(3, 0, 3), 0.3);
-    const SourceTree sources = buildSourceTree(sourceBoxes, std::vector<double>(sourceBoxes.size(), 1.0));
-    const ReceiverOctree receivers = buildReceiverOctree(receiverBoxes);
+    const SourcesOverReceivers scene(rng);
+    const SourceTree& sources = scene.sources;
+    const ReceiverOctree& receivers = scene.receivers;
+    const std::vector<Aabb>& receiverBoxes = scene.receiverBoxes;
     // A light cut so finely that no patch passes on its own, though every pair of them does.
     const auto inner = [&](int32_t s, int32_t) { return !sources.nodes[s].leaf(); };
     const ShaftHierarchy shafts = buildShaftHierarchy(sources, receivers, inner);
@@ -119,7 +131,7 @@ TEST_CASE("shaft hierarchy: a kept shaft whose children all fail the rule is a l
     CHECK(shafts.leafCount() > 0);
     const Aabb everywhere{{-10, -1, -10}, {10, 10, 10}};
     const ShaftHits hits = traverseShafts(shafts, sources, receivers, everywhere);
-    CHECK(hits.sourcePatches.size() == sourceBoxes.size());
+    CHECK(hits.sourcePatches.size() == scene.sourceBoxes.size());
     CHECK(hits.receiverPatches.size() == receiverBoxes.size());
     // Nothing is lost against the hierarchy that keeps every shaft: each box lists at least
     // the sources and receivers that one lists (a leaf's shaft holds its pairs' shafts).
