@@ -175,6 +175,11 @@ std::string figureRow(const char* name, double value, const char* format) {
     return std::string("<tr><th scope=\"row\">") + name + "</th>" + html::numberCell(value, format) + "</tr>\n";
 }
 
+// A figure the JSON predates (ErrorFigures::fullUmbraRecorded).
+std::string notRecordedRow(const char* name) {
+    return std::string("<tr><th scope=\"row\">") + name + "</th><td>not recorded</td></tr>\n";
+}
+
 std::string errorsTable(const SweepRow& row) {
     const ErrorFigures& e = row.errors;
     std::string rows = figureRow("pixels scored", double(e.pixels), "%.0f") + figureRow("RMS", e.rms, "%.6f") +
@@ -183,7 +188,8 @@ std::string errorsTable(const SweepRow& row) {
                        figureRow("false shadow %", e.percentOfPixels(e.falseShadow), "%.4f") +
                        figureRow("false light %", e.percentOfPixels(e.falseLight), "%.4f") +
                        figureRow("umbra lit %", e.percentOfPixels(e.umbraLit), "%.4f") +
-                       figureRow("umbra lit 0.02 %", e.percentOfPixels(e.fullUmbraLit), "%.4f") +
+                       (e.fullUmbraRecorded ? figureRow("umbra lit 0.02 %", *e.fullUmbraLitPercent(), "%.4f")
+                                            : notRecordedRow("umbra lit 0.02 %")) +
                        figureRow("umbra over %", e.percentOfPixels(e.umbraOver), "%.4f") +
                        figureRow("lit shadowed %", e.percentOfPixels(e.litShadowed), "%.4f");
     if (e.rmsDisplay) rows += figureRow("RMS as displayed", *e.rmsDisplay, "%.6f");

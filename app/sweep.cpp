@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include <tbb/info.h>
@@ -259,12 +260,14 @@ std::string formatSweepText(const SweepResults& results) {
     text += line;
     for (const SweepRow& r : results.rows) {
         const ErrorFigures& e = r.errors;
+        char fullUmbraLit[32] = "not recorded";
+        if (const std::optional<double> percent = e.fullUmbraLitPercent())
+            std::snprintf(fullUmbraLit, sizeof fullUmbraLit, "%.4f", *percent);
         std::snprintf(line, sizeof line,
-                      "%-16s %-40s %7d %10.3f %10.3f %14.4f %10.5f %10.5f %11.4f %16.4f %12.4f %13.4f\n",
+                      "%-16s %-40s %7d %10.3f %10.3f %14.4f %10.5f %10.5f %11.4f %16s %12.4f %13.4f\n",
                       r.technique.c_str(), r.settingsLabel().c_str(), r.threads, r.medianMs, r.minMs,
                       e.percentOfPixels(e.misclassified()), e.rms, e.maxAbs, e.percentOfPixels(e.umbraLit),
-                      e.percentOfPixels(e.fullUmbraLit), e.percentOfPixels(e.umbraOver),
-                      e.percentOfPixels(e.litShadowed));
+                      fullUmbraLit, e.percentOfPixels(e.umbraOver), e.percentOfPixels(e.litShadowed));
         text += line;
     }
     return text;
@@ -286,7 +289,7 @@ std::string formatSweepCsv(const SweepResults& results) {
                                            csvNumber(e.maxAbs), csvNumber(e.percentOfPixels(e.misclassified())),
                                            csvNumber(e.percentOfPixels(e.falseShadow)), csvNumber(e.percentOfPixels(e.falseLight)),
                                            csvNumber(e.percentOfPixels(e.umbraLit)),
-                                           csvNumber(e.percentOfPixels(e.fullUmbraLit)),
+                                           e.fullUmbraRecorded ? csvNumber(*e.fullUmbraLitPercent()) : "",
                                            csvNumber(e.percentOfPixels(e.umbraOver)),
                                            csvNumber(e.percentOfPixels(e.litShadowed)),
                                            r.reference};

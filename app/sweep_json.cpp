@@ -95,8 +95,12 @@ ErrorFigures readErrors(const Json& j) {
     e.umbraLit = j.at("umbra_lit").get<uint64_t>();
     e.umbraOver = j.at("umbra_over").get<uint64_t>();
     e.litShadowed = j.at("lit_shadowed").get<uint64_t>();
-    e.fullUmbraPixels = j.at("full_umbra_pixels").get<uint64_t>();
-    e.fullUmbraLit = j.at("full_umbra_lit").get<uint64_t>();
+    // Older JSON has no full umbra: read it as not recorded, not as zero.
+    e.fullUmbraRecorded = j.contains("full_umbra_pixels") || j.contains("full_umbra_lit");
+    if (e.fullUmbraRecorded) {
+        e.fullUmbraPixels = j.at("full_umbra_pixels").get<uint64_t>();
+        e.fullUmbraLit = j.at("full_umbra_lit").get<uint64_t>();
+    }
     return e;
 }
 

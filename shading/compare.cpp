@@ -125,9 +125,12 @@ std::string formatText(const ErrorFigures& f) {
                         "  shadowed in the reference, lit here (leaks)");
     text += formatCount("umbra lit", f.umbraLit, f.percentOfPixels(f.umbraLit),
                         ("  of " + std::to_string(f.umbraPixels) + " umbra pixels in the reference, lit here").c_str());
-    text += formatCount("umbra lit 0.02", f.fullUmbraLit, f.percentOfPixels(f.fullUmbraLit),
-                        ("  of " + std::to_string(f.fullUmbraPixels) + " full umbra pixels (V < 0.001), above 0.02 here")
-                            .c_str());
+    if (f.fullUmbraRecorded)
+        text += formatCount("umbra lit 0.02", f.fullUmbraLit, f.percentOfPixels(f.fullUmbraLit),
+                            ("  of " + std::to_string(f.fullUmbraPixels) +
+                             " full umbra pixels (V < 0.001), above 0.02 here").c_str());
+    else
+        text += "  umbra lit 0.02   not recorded\n";
     text += formatCount("umbra over", f.umbraOver, f.percentOfPixels(f.umbraOver),
                         "  umbra here where the reference sees the light (V > 0.1 there)");
     text += formatCount("lit shadowed", f.litShadowed, f.percentOfPixels(f.litShadowed),
@@ -160,9 +163,11 @@ std::string formatJson(const ErrorFigures& f) {
     j["lit_shadowed_percent"] = f.percentOfPixels(f.litShadowed);
     j["umbra_errors"] = f.umbraErrors();
     j["umbra_errors_percent"] = f.percentOfPixels(f.umbraErrors());
-    j["full_umbra_pixels"] = f.fullUmbraPixels;
-    j["full_umbra_lit"] = f.fullUmbraLit;
-    j["full_umbra_lit_percent"] = f.percentOfPixels(f.fullUmbraLit);
+    if (f.fullUmbraRecorded) {
+        j["full_umbra_pixels"] = f.fullUmbraPixels;
+        j["full_umbra_lit"] = f.fullUmbraLit;
+        j["full_umbra_lit_percent"] = f.percentOfPixels(f.fullUmbraLit);
+    }
     return j.dump(2);
 }
 

@@ -63,9 +63,15 @@ struct ErrorFigures {
     uint64_t litShadowed = 0;    // of litPixels, test V < 1 - umbraTolerance
     uint64_t fullUmbraPixels = 0;   // reference V < fullUmbraThreshold
     uint64_t fullUmbraLit = 0;      // of fullUmbraPixels, test V > fullUmbraTolerance ("umbra lit 0.02")
+    // False for figures read from a JSON written before "umbra lit 0.02" existed: the two
+    // counts above are then not recorded, and are shown and written as such.
+    bool fullUmbraRecorded = true;
     uint64_t umbraErrors() const { return umbraLit + umbraOver; }
     double percentOfPixels(uint64_t count) const {
         return pixels == 0 ? 0.0 : 100.0 * double(count) / double(pixels);
+    }
+    std::optional<double> fullUmbraLitPercent() const {
+        return fullUmbraRecorded ? std::optional<double>(percentOfPixels(fullUmbraLit)) : std::nullopt;
     }
 };
 

@@ -176,6 +176,22 @@ TEST_CASE("report: a render's JSON is a page of one row with its pictures") {
     CHECK(countOf(page, "src=\"images/render/pics/error.png\"") == 1);
     CHECK(countOf(page, "shadow-map, resolution=512") >= 1);
     CHECK(std::filesystem::is_regular_file(site / "images/render/pics/debug/map.png"));
+    CHECK(countOf(page, "<th scope=\"row\">umbra lit 0.02 %</th><td") == 1);
+    CHECK(countOf(page, "not recorded") == 0);
+}
+
+TEST_CASE("report: a render's JSON written before umbra lit 0.02 shows it as not recorded") {
+    const test::ScratchDirectory scratch("report_old_render");
+    const SweepRow row = oddSweep(scratch.path).rows[0];
+    std::string json = formatScoreJson("box", "pcss", "reference-soft", {}, Frame{}, row.errors);
+    const size_t from = json.find(",\n", json.find("\"umbra_errors_percent\""));
+    json.erase(from, json.find('}', json.find("\"full_umbra_lit_percent\"")) - from);
+    REQUIRE(json.find("full_umbra") == std::string::npos);
+    writeTextFile(scratch.path / "old.json", json);
+    const std::filesystem::path site = scratch.path / "site";
+    CHECK(writeReportSite({(scratch.path / "old.json").string()}, site, PlotErrorAxis::Auto) == 3);
+    CHECK(countOf(readWholeFile((site / "old-setting-0.html").string()),
+                  "<th scope=\"row\">umbra lit 0.02 %</th><td>not recorded</td>") == 1);
 }
 
 // A render under another view or light is not comparable with one under the scene's own:

@@ -5,8 +5,11 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "app/sweep.h"
 #include "app/sweep_json.h"
@@ -162,6 +165,32 @@ TEST_CASE("sweep JSON: read back, it writes the same bytes (stats in order, NaN 
     CHECK(read.grid.overrides.width == 96);
     CHECK(formatSweepJson(read) == json);
     CHECK(sweepDifference(read, results).empty());
+}
+
+TEST_CASE("sweep JSON: written before umbra lit 0.02, it reads as not recorded, not as zero") {
+    nlohmann::json old = nlohmann::json::parse(formatSweepJson(threeShards()[0]));
+    for (nlohmann::json& row : old.at("rows"))
+        for (const char* key : {"full_umbra_pixels", "full_umbra_lit", "full_umbra_lit_percent"}) row.at("errors").erase(key);
+    const SweepResults read = parseSweepJson(old.dump(), "old.json");
+    CHECK_FALSE(read.rows[0].errors.fullUmbraRecorded);
+    CHECK_FALSE(read.rows[0].errors.fullUmbraLitPercent());
+    // Written again, the figure stays absent; shown, it says so; its CSV cell is empty.
+    CHECK(formatSweepJson(read).find("full_umbra") == std::string::npos);
+    CHECK(formatSweepText(read).find("not recorded") != std::string::npos);
+    std::istringstream csv(formatSweepCsv(read));
+    std::string row;
+    std::getline(csv, row);
+    std::getline(csv, row);
+    size_t field = 0;   // full_umbra_lit_percent is the 14th field (test_sweep.cpp)
+    for (int k = 0; k < 13; ++k) field = row.find(',', field) + 1;
+    CHECK(row.at(field) == ',');
+    // Merged with a shard that has it, each row keeps what its own file recorded.
+    std::vector<SweepShardFile> files = shardFiles(threeShards());
+    files[0].results = read;
+    const SweepResults merged = mergeSweepShards(files);
+    int recorded = 0;
+    for (const SweepRow& row : merged.rows) recorded += row.errors.fullUmbraRecorded;
+    CHECK(recorded == int(merged.rows.size() - read.rows.size()));
 }
 
 TEST_CASE("merge-sweep: a missing shard, a duplicate, another sweep or split, and rows cut short are refused") {
