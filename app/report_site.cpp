@@ -39,7 +39,7 @@ SweepResults renderAsSweep(ScoreRecord record) {
     SweepResults results;
     results.scene = record.scene;
     results.techniques = {record.row.technique};
-    results.grid.overrides = record.overrides;
+    results.grid.overrides = record.overrides.value_or(SceneOverrides{});
     results.rows = {std::move(record.row)};
     return results;
 }
@@ -49,8 +49,11 @@ ReportSource readSource(const std::string& file) {
     ReportSource source;
     source.file = file;
     source.render = std::holds_alternative<ScoreRecord>(parsed);
+    const bool recorded = !source.render || std::get<ScoreRecord>(parsed).overrides.has_value();
     source.results = source.render ? renderAsSweep(std::get<ScoreRecord>(std::move(parsed)))
                                    : std::get<SweepResults>(std::move(parsed));
+    source.conditions = recorded ? describeOverrides(source.results.grid.overrides)
+                                 : "conditions not recorded (a render's JSON from before they were)";
     return source;
 }
 
@@ -180,7 +183,7 @@ std::vector<ReportScene> groupScenes(const std::vector<ReportSource>& sources, s
     std::vector<ReportScene> scenes;
     for (size_t k = 0; k < sources.size(); ++k) {
         const std::string& name = sources[k].results.scene;
-        const std::string conditions = describeOverrides(sources[k].results.grid.overrides);
+        const std::string& conditions = sources[k].conditions;
         auto scene = std::ranges::find_if(scenes, [&](const ReportScene& s) { return s.name == name && s.conditions == conditions; });
         if (scene == scenes.end())
             scene = scenes.insert(scenes.end(),

@@ -28,6 +28,7 @@ struct ReportSource {
     std::string name;                      // its stem, made unique in the site and safe in a URL
     bool render = false;                   // render --error-map --json, not a sweep
     SweepResults results;                  // the rows' pictures relative to the site's directory
+    std::string conditions;                // describeOverrides(), or that they were not recorded
     std::vector<ReportSetting> settings;   // in the order of their first rows
 };
 

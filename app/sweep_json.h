@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -34,7 +35,9 @@ SweepResults parseSweepJson(const std::string& text, const std::string& file);
 struct ScoreRecord {
     std::string scene;
     SweepRow row;
-    SceneOverrides overrides;   // "overrides": {} in a file written before they were recorded
+    // Empty in a file written before render --json recorded them: not the scene's own view
+    // and light, but conditions unknown.
+    std::optional<SceneOverrides> overrides;
 };
 
 // A report's input, parsed once: a sweep's JSON (as parseSweepJson) or a render's, told

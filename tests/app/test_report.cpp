@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "app/report_site.h"
 #include "app/sweep_json.h"
 #include "frame/score.h"
@@ -180,18 +182,24 @@ TEST_CASE("report: a render's JSON is a page of one row with its pictures") {
     CHECK(countOf(page, "not recorded") == 0);
 }
 
-TEST_CASE("report: a render's JSON written before umbra lit 0.02 shows it as not recorded") {
+// What a render's JSON did not yet record is shown as not recorded, not as a default: the
+// scene's own view and light, or no umbra lit above 0.02.
+TEST_CASE("report: a render's JSON from before the overrides and umbra lit 0.02 shows both as not recorded") {
     const test::ScratchDirectory scratch("report_old_render");
     const SweepRow row = oddSweep(scratch.path).rows[0];
-    std::string json = formatScoreJson("box", "pcss", "reference-soft", {}, Frame{}, row.errors);
-    const size_t from = json.find(",\n", json.find("\"umbra_errors_percent\""));
-    json.erase(from, json.find('}', json.find("\"full_umbra_lit_percent\"")) - from);
-    REQUIRE(json.find("full_umbra") == std::string::npos);
-    writeTextFile(scratch.path / "old.json", json);
+    nlohmann::json old = nlohmann::json::parse(formatScoreJson("box", "pcss", "reference-soft", {}, Frame{}, row.errors));
+    old.erase("overrides");
+    for (const char* key : {"full_umbra_pixels", "full_umbra_lit", "full_umbra_lit_percent"}) old.at("errors").erase(key);
+    writeTextFile(scratch.path / "old.json", old.dump(2));
+    writeTextFile(scratch.path / "new.json", formatScoreJson("box", "pcss", "reference-soft", {}, Frame{}, row.errors));
     const std::filesystem::path site = scratch.path / "site";
-    CHECK(writeReportSite({(scratch.path / "old.json").string()}, site, PlotErrorAxis::Auto) == 3);
-    CHECK(countOf(readWholeFile((site / "old-setting-0.html").string()),
-                  "<th scope=\"row\">umbra lit 0.02 %</th><td>not recorded</td>") == 1);
+    writeReportSite({(scratch.path / "old.json").string(), (scratch.path / "new.json").string()}, site,
+                    PlotErrorAxis::Auto);
+    const std::string page = readWholeFile((site / "old-setting-0.html").string());
+    CHECK(countOf(page, "<th scope=\"row\">umbra lit 0.02 %</th><td>not recorded</td>") == 1);
+    CHECK(countOf(page, "Measured under: conditions not recorded") == 1);
+    // Not filed with the render under the scene's own view and light.
+    CHECK(countOf(readWholeFile((site / "index.html").string()), "href=\"scene-box-2.html\"") >= 1);
 }
 
 // A render under another view or light is not comparable with one under the scene's own:
@@ -205,8 +213,9 @@ TEST_CASE("report: results are grouped by the conditions they were measured unde
     writeTextFile(scratch.path / "moved.json",
                   formatScoreJson("box", "pcss", "reference-soft", {}, Frame{}, row.errors, {}, moved));
     const auto record = std::get<ScoreRecord>(parseResultsJson(readWholeFile((scratch.path / "moved.json").string()), "m"));
-    CHECK(record.overrides.lightPosition == moved.lightPosition);
-    CHECK(record.overrides.width == 320);
+    REQUIRE(record.overrides);
+    CHECK(record.overrides->lightPosition == moved.lightPosition);
+    CHECK(record.overrides->width == 320);
     const std::filesystem::path site = scratch.path / "site";
     writeReportSite({(scratch.path / "default.json").string(), (scratch.path / "moved.json").string()}, site,
                     PlotErrorAxis::Auto);
