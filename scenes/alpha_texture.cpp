@@ -1,7 +1,7 @@
 #include "scenes/alpha_texture.h"
 
 #include "scenes/image_file.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 
 namespace shadowlab {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "scenes/camera.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
 

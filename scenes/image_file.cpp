@@ -8,7 +8,7 @@
 #include <stb_image.h>
 
 #include "scenes/read_file.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 
 namespace shadowlab {
 namespace {

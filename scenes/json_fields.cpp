@@ -6,7 +6,7 @@
 
 #include "scenes/error_text.h"
 #include "scenes/float_range.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 #include "scenes/scene_limits.h"
 
 namespace shadowlab {

@@ -11,7 +11,7 @@
 
 #include "scenes/float_range.h"
 #include "scenes/read_file.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 
 namespace shadowlab {
 namespace {

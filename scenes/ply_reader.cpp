@@ -24,7 +24,7 @@
 #include "scenes/error_text.h"
 #include "scenes/float_range.h"
 #include "scenes/read_file.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 
 namespace shadowlab {
 namespace {

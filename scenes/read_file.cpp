@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 #include "scenes/scene_limits.h"
 
 namespace shadowlab {

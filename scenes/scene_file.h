@@ -1,21 +1,13 @@
 // Loading scenes from JSON files (docs/scene-format.md) and naming the built-in ones.
 #pragma once
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "scenes/scene.h"
+#include "scenes/scene_error.h"
 
 namespace shadowlab {
-
-// Any problem with a scene or mesh file. The message always starts with the file and,
-// inside a JSON file, the path of the offending field, so that it can be fixed without
-// a debugger: "scenes/x.json: lights[0].radius: must be > 0, got -1".
-class SceneError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 // nameOrPath is a path when it ends in ".json" or contains a '/', otherwise the stem of a
 // scene file in sceneDir. Throws SceneError for every invalid or unreadable input.

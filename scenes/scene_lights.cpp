@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "scenes/light_cookie.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 #include "scenes/scene_file_parts.h"
 
 namespace shadowlab {

@@ -4,12 +4,12 @@
 #include <cctype>
 #include <filesystem>
 
-#include "scenes/obj_reader.h"
 #include "scenes/error_text.h"
+#include "scenes/obj_reader.h"
 #include "scenes/ply_reader.h"
 #include "scenes/procedural.h"
 #include "scenes/procedural_casters.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
 

@@ -28,7 +28,7 @@
 #include "scenes/error_text.h"
 #include "scenes/image_file.h"
 #include "scenes/read_file.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 #include "scenes/scene_limits.h"
 #include "scenes/write_file.h"
 

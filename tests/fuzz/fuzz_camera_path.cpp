@@ -6,7 +6,7 @@
 
 #include "fuzz_target.h"
 #include "scenes/camera_path.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // compositing_inputs' work, through the EXR and image readers fuzzed on their own).
 #include "fuzz_target.h"
 #include "scenes/compositing_file.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     return shadowlab::fuzz::parseAcceptingDocumentedErrors<shadowlab::SceneError>(

@@ -10,7 +10,7 @@
 
 #include <doctest/doctest.h>
 
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 
 namespace shadowlab::test {
 

@@ -9,7 +9,7 @@
 #include "scenes/obj_reader.h"
 #include "scenes/ply_reader.h"
 #include "scenes/procedural.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_error.h"
 #include "scenes/shading_normals.h"
 
 using namespace shadowlab;

@@ -1,0 +1,17 @@
+// The one error type of every reader below the scene loader (meshes, images, paths, JSON
+// fields, files), at the bottom of scenes/ so that none of them includes the loader for it.
+#pragma once
+
+#include <stdexcept>
+
+namespace shadowlab {
+
+// Any problem with a scene or mesh file. The message always starts with the file and,
+// inside a JSON file, the path of the offending field, so that it can be fixed without
+// a debugger: "scenes/x.json: lights[0].radius: must be > 0, got -1".
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace shadowlab
