@@ -23,3 +23,6 @@ inline simd::F64 expLanes(simd::F64 x) {
 inline void expRunLanes(const double* x, double* out, size_t count) {
     for (size_t k = 0; k < count; k += simd::kWidth64) simd::store(out + k, expLanes(simd::load(x + k)));
 }
+
+// The table the per-ISA unit hands out (cmake/isa_kernels.cmake).
+inline ExpKernel kernels() { return {simd::kWidth64, expRunLanes}; }

@@ -1,6 +1,6 @@
 // Per-tile rasterization: coverage, depth, stencil and the fragment's output for one
 // triangle inside one 64x64 tile. Written once against the SIMD interface of
-// simd/simd_scalar.h and included by tile_raster_{scalar,avx2,avx512}.cpp, each inside
+// simd/simd_scalar.h and included by the per-ISA units (cmake/isa_kernels.cmake), each inside
 // its own namespace with `namespace simd = <that ISA's types>`, so every instruction set
 // runs the same algorithm (Masked Occlusion Culling's "one body, one front file per ISA").
 //

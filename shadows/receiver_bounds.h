@@ -1,7 +1,7 @@
 // The bounds of the receivers a light's view must cover (light_view.cpp), as a vector
 // kernel: over a run of G-buffer points, the componentwise minima and maxima of where they
 // lie, in double precision. Written once (receiver_bounds.inl) against the SIMD types of
-// raster/simd/ and compiled for scalar, AVX2 and AVX-512 (receiver_bounds_*.cpp); each lane
+// raster/simd/ and compiled for scalar, AVX2 and AVX-512 (cmake/isa_kernels.cmake); each lane
 // does the operations of the plain double expression (glm's matrix product, in its order),
 // and minima and maxima are exact in any order, so every level gives the same bounds.
 //

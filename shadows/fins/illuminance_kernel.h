@@ -1,6 +1,6 @@
 // The illuminance buffer's per-pixel arithmetic (illuminance_buffer.h) as two vector
 // kernels, written once (illuminance_kernel.inl) against the SIMD types of raster/simd/ and
-// compiled for scalar, AVX2 and AVX-512 (illuminance_kernel_*.cpp):
+// compiled for scalar, AVX2 and AVX-512 (cmake/isa_kernels.cmake):
 //
 //   place        each pixel's receiver in the layer's maps: its texel, its depth at the
 //                texel's centre and L_r, its distance from the light's plane;

@@ -73,3 +73,6 @@ inline void illuminate(const IlluminateConstants& c, const PlacedColumns& placed
         simd::storeNarrowed(values + k, simd::select(simd::cmpLt(candidate, previous), candidate, previous));
     }
 }
+
+// The table the per-ISA unit hands out (cmake/isa_kernels.cmake).
+inline IlluminanceKernels kernels() { return {simd::kWidth64, placeReceivers, illuminate}; }

@@ -1,7 +1,7 @@
 // The irregular z-buffer's two per-receiver loops as vector kernels: the segments of stage 1
 // (segments.inl) and the exact test of stage 6 (occlusion.inl), each written once against
-// the SIMD types of raster/simd/ and compiled for scalar, AVX2 and AVX-512
-// (kernels_scalar.cpp, kernels_avx2.cpp, kernels_avx512.cpp). Every lane does the
+// the SIMD types of raster/simd/ and compiled for scalar, AVX2 and AVX-512 through
+// kernels.inl (cmake/isa_kernels.cmake). Every lane does the
 // double-precision operations of the scalar code in the same order, so every level gives
 // the same bytes and the scalar build is the plain twin the vector ones are held to.
 //
@@ -61,9 +61,16 @@ struct OccluderTriangle {
 using OcclusionKernel = void (*)(const OccluderTriangle& triangle, const ReceiverColumns& receivers, uint32_t begin,
                                  uint32_t end, uint8_t* blocked);
 
+// One segment, origin + t * towardsLight for t in [0, tFar], against one triangle (its
+// vertices' x, y, z): the occlusion kernel's test on a single receiver, whose scalar build is
+// the twin the tests hold every level to (izb.h, segmentBlocked).
+using SegmentTest = bool (*)(const double (&origin)[3], const double (&towardsLight)[3], double tFar,
+                             const double (&triangle)[9]);
+
 struct Kernels {
     SegmentKernel segments;
     OcclusionKernel occlusion;
+    SegmentTest segmentBlocked;
 };
 Kernels kernelsScalar();
 Kernels kernelsAvx2();

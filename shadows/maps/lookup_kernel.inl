@@ -1,5 +1,5 @@
 // The shadow-map lookup's vector core (lookup_kernel.h), written once against the SIMD value
-// types. Included by lookup_kernel_{scalar,avx2,avx512}.cpp inside a namespace where
+// types. Included by the per-ISA units (cmake/isa_kernels.cmake) inside a namespace where
 // `simd` names one of raster/simd/'s sets; each lane does the same float operations in the
 // same order at every width. Three stages over a run of receivers: whether the light
 // reaches each (reachRun), each projected into the map serving it with the bias
