@@ -9,6 +9,7 @@
 
 #include <tbb/info.h>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"

@@ -8,6 +8,7 @@
 #include <exception>
 #include <string>
 
+#include "frame/registry.h"
 #include "scenes/scene_file.h"
 #include "scenes/write_file.h"
 #include "shading/image_io.h"

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "scenes/scene_file.h"

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frame/registry.h"
 #include "frame/score.h"
 #include "shading/tonemap.h"
 #include "shadows/debug_buffers.h"

@@ -98,8 +98,15 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     const bool lift = !casters.instanceErrorM.empty();
     const GBuffer liftedGBuffer = lift ? liftedReceivers(frame.gbuffer, prepared.world(), casters.instanceErrorM) : GBuffer{};
     const auto start = std::chrono::steady_clock::now();
-    frame.shadow = technique.run({prepared, lift ? liftedGBuffer : frame.gbuffer, light, settings.simd, params,
-                                  settings.debugDir, settings.progress, nullptr, &casters.casters, casters.instanceErrorM});
+    frame.shadow = technique.run({.prepared = prepared,
+                                  .gbuffer = lift ? liftedGBuffer : frame.gbuffer,
+                                  .light = light,
+                                  .simd = settings.simd,
+                                  .params = params,
+                                  .debugDir = settings.debugDir,
+                                  .progress = settings.progress,
+                                  .casterScene = &casters.casters,
+                                  .receiverLiftM = casters.instanceErrorM});
     frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (hasCasterLod(technique)) {
         frame.shadow.stats.push_back({"caster_lod_triangles", double(casters.casters.world().triangles.size())});

@@ -2,9 +2,7 @@
 
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
-
-#include "frame/overrides_json.h"
+#include "frame/registry.h"
 #include "shading/luminance.h"
 #include "shading/tonemap.h"
 
@@ -94,27 +92,6 @@ std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageCh
         std::copy(colour.begin(), colour.end(), rgb.begin() + 3 * k);
     }
     return rgb;
-}
-
-std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
-                            const std::map<std::string, std::string>& settings, const Frame& frame,
-                            const ErrorFigures& figures, const FrameImages& images, const SceneOverrides& overrides) {
-    nlohmann::ordered_json stats = nlohmann::ordered_json::object();
-    for (const TechniqueStat& s : frame.shadow.stats) stats[s.name] = s.value;
-    nlohmann::ordered_json j;
-    j["scene"] = sceneName;
-    j["overrides"] = overridesJson(overrides);
-    j["technique"] = technique;
-    j["reference"] = reference;
-    j["settings"] = settings;
-    j["technique_ms"] = frame.techniqueMs;
-    j["stats"] = stats;
-    nlohmann::ordered_json preparation = nlohmann::ordered_json::object();
-    for (const TechniqueStat& s : frame.preparation) preparation[s.name] = s.value;
-    j["preparation"] = preparation;
-    j["errors"] = nlohmann::ordered_json::parse(formatJson(figures));
-    if (!images.empty()) j["images"] = nlohmann::ordered_json::parse(formatFrameImagesJson(images));
-    return j.dump(2) + "\n";
 }
 
 }  // namespace shadowlab

@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "frame/frame_images.h"
 #include "frame/render.h"
 #include "shading/compare.h"
 #include "shading/image_io.h"
@@ -56,14 +55,5 @@ inline constexpr std::array<uint8_t, 3> kFalseLightColour{0, 160, 255};   // lea
 // or kFalseLightColour.
 std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,
                                    const std::vector<glm::vec3>& shaded, const std::string& scored = channel::V);
-
-// One JSON object: {"scene", "overrides": overridesJson(overrides), "technique", "reference",
-// "settings": {name: value}, "technique_ms", "stats": {name: value}, "preparation": {name: ms},
-// "errors": formatJson(figures)}, and "images": formatFrameImagesJson(images) unless `images`
-// is empty.
-std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,
-                            const std::map<std::string, std::string>& settings, const Frame& frame,
-                            const ErrorFigures& figures, const FrameImages& images = {},
-                            const SceneOverrides& overrides = {});
 
 }  // namespace shadowlab

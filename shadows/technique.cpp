@@ -13,9 +13,13 @@ ShadowOutputs unlitOutputs(const GBuffer& g) {
     return out;
 }
 
-std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene&, const PreparedScene& casters, const TechniqueParams&) {
+std::vector<TechniqueStat> prepareCasterEdgeAdjacency(const PreparedScene& casters) {
     if (const std::optional<double> ms = casters.buildEdgeAdjacency()) return {{"edge_adjacency_ms", *ms}};
     return {};
+}
+
+std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene&, const PreparedScene& casters, const TechniqueParams&) {
+    return prepareCasterEdgeAdjacency(casters);
 }
 
 namespace {

@@ -22,13 +22,15 @@
 
 namespace shadowlab {
 
+// Built by name, the fields left out taking their defaults:
+//   technique.run({.prepared = p, .gbuffer = g, .light = l, .simd = s, .params = params});
 struct ShadowInputs {
     const PreparedScene& prepared;         // the scene the camera sees: receivers, materials, lights
     const GBuffer& gbuffer;
     const Light& light;                    // the selected light
     raster::SimdLevel simd;
     const TechniqueParams& params;         // the technique's level-of-detail settings
-    std::filesystem::path debugDir;        // empty: write no intermediate buffers
+    std::filesystem::path debugDir = {};   // empty: write no intermediate buffers
     Progress* progress = nullptr;          // where a slow technique reports; null: nowhere
     // The camera the G-buffer was built with; null: the scene's. A technique that lights
     // the scene from many lights may run another technique on a smaller G-buffer of the same
@@ -106,7 +108,9 @@ bool hasCasterLod(const Technique& technique);
 // The ratio the settings ask for; 1 for a technique without the parameter.
 double casterLodRatio(const TechniqueParams& params);
 
-// Technique::prepare of the techniques that read the edge adjacency (silhouettes).
+// The casters' edge adjacency (silhouettes), built once: `edge_adjacency_ms` if built now.
+std::vector<TechniqueStat> prepareCasterEdgeAdjacency(const PreparedScene& casters);
+// Technique::prepare of the techniques that read it.
 std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared, const PreparedScene& casters,
                                                 const TechniqueParams& params);
 
@@ -115,11 +119,6 @@ std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared, c
 // light first, so that they fail alike on every view, then returns unlitOutputs().
 bool anySurface(const GBuffer& g);
 ShadowOutputs unlitOutputs(const GBuffer& g);
-
-// Every technique of every family (shadows/registry.cpp).
-const std::vector<Technique>& techniques();
-// Throws std::invalid_argument naming the known techniques.
-const Technique& findTechnique(const std::string& name);
 
 // Hard-shadow techniques see a light as a point: an area light's centre stands in for it.
 // The result is for visibility only (its intensity keeps the area light's units).

@@ -9,9 +9,8 @@ namespace {
 
 constexpr const char* kAuto = "auto";
 
-// The shortest text that reads back as the same double, exponent without padding: "0.05",
-// "8192", "1e-4", "1e6".
-std::string numberText(double value) {
+template <class T>
+std::string shortestText(T value) {
     char buffer[32];
     const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
     std::string text(buffer, end);
@@ -59,7 +58,7 @@ const ParamChoice* findChoice(const ParamSpec& spec, const std::string& text) {
 }
 
 std::string rangeText(const ParamSpec& spec) {
-    return numberText(spec.min) + ".." + numberText(spec.max) + (spec.orAuto ? std::string(" or ") + kAuto : "");
+    return settingText(spec.min) + ".." + settingText(spec.max) + (spec.orAuto ? std::string(" or ") + kAuto : "");
 }
 
 std::string choiceList(const ParamSpec& spec, const std::string& separator, bool withHelp) {
@@ -105,6 +104,10 @@ bool allows(const ParamSpec& spec, const std::string& text) {
 
 }  // namespace
 
+std::string settingText(int value) { return std::to_string(value); }
+std::string settingText(double value) { return shortestText(value); }
+std::string settingText(float value) { return shortestText(value); }
+
 ParamSpec integerParam(std::string name, int defaultValue, int min, int max, std::string help) {
     return {.name = std::move(name), .type = ParamType::Integer, .defaultValue = std::to_string(defaultValue),
             .help = std::move(help), .min = double(min), .max = double(max)};
@@ -116,7 +119,7 @@ ParamSpec integerOrAutoParam(std::string name, int min, int max, std::string hel
 }
 
 ParamSpec realParam(std::string name, double defaultValue, double min, double max, std::string help) {
-    return {.name = std::move(name), .type = ParamType::Real, .defaultValue = numberText(defaultValue),
+    return {.name = std::move(name), .type = ParamType::Real, .defaultValue = settingText(defaultValue),
             .help = std::move(help), .min = min, .max = max};
 }
 

@@ -43,6 +43,13 @@ struct ParamSpec {
     const std::type_info* choiceType = nullptr;   // Choice: the type of the values
 };
 
+// A value as `--param` takes it and `shadowlab techniques` prints it: for a number, the
+// shortest text that reads back as the same float or double, exponent unpadded ("0.05", not
+// the double nearest 0.05f; "8192", "1e-4").
+std::string settingText(int value);
+std::string settingText(double value);
+std::string settingText(float value);
+
 ParamSpec integerParam(std::string name, int defaultValue, int min, int max, std::string help);
 // An integer in [min, max] or "auto" (the default): the technique chooses.
 ParamSpec integerOrAutoParam(std::string name, int min, int max, std::string help);

@@ -1,8 +1,9 @@
-// One technique run as a stage of another: contact-shadows runs `shadow-map` and then
-// marches the camera's depth buffer; izb-pcss runs `izb` for its hard part. The inner
-// technique reads the same scene, G-buffer, light, casters and SIMD level, with
-// parameters of its own, so it is the very technique a user can run alone (the same bytes,
-// the same errors), not a copy of it.
+// One technique run as a stage of another by its parameters' text: izb-pcss runs `izb` for
+// its hard part. The inner technique reads the same scene, G-buffer, light, casters and SIMD
+// level, with parameters of its own, so it is the very technique a user can run alone (the
+// same bytes, the same errors), not a copy of it. A family with typed settings offers its
+// run with them instead (runShadowMap, runShadowVolume), which contact-shadows and the
+// environment techniques call.
 #pragma once
 
 #include <filesystem>
@@ -12,10 +13,6 @@
 #include "shadows/technique.h"
 
 namespace shadowlab {
-
-// The values of the outer technique's parameters that `inner` declares under the same
-// names (contact-shadows declares every parameter of shadow-map).
-std::map<std::string, std::string> sharedParamValues(const Technique& inner, const TechniqueParams& outer);
 
 // Runs `inner` on `in` with `given` for its parameters (checked as on the command line)
 // and its intermediate buffers written to `debugDir` (empty: none).

@@ -79,7 +79,7 @@ ShadowOutputs runAdaptiveVolumetricShadowMaps(const ShadowInputs& in) {
 }  // namespace
 
 Technique adaptiveVolumetricShadowMapsTechnique() {
-    std::vector<ParamSpec> params = volumetricParamSpecs();
+    std::vector<ParamSpec> params = volumetricSettingsTable().specs();
     params.push_back(integerParam("nodes", 8, 2, 64, "(depth, transmittance) nodes per texel; a surface takes two"));
     return {.name = "adaptive-volumetric-shadow-maps",
             .description = "adaptive volumetric shadow maps (Salvi et al. 2010): a fixed number of nodes per texel, "

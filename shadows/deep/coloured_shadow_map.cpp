@@ -60,7 +60,7 @@ Technique colouredShadowMapTechnique() {
     return {.name = "coloured-shadow-map",
             .description = "coloured shadow map (RTR 7.8): the nearest translucent depth and the product of the "
                            "translucent casters' colours over the opaque map",
-            .params = volumetricParamSpecs(),
+            .params = volumetricSettingsTable().specs(),
             .run = runColouredShadowMap,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

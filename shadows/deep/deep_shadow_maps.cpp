@@ -94,7 +94,7 @@ ShadowOutputs runDeepShadowMaps(const ShadowInputs& in) {
 }  // namespace
 
 Technique deepShadowMapsTechnique() {
-    std::vector<ParamSpec> params = volumetricParamSpecs();
+    std::vector<ParamSpec> params = volumetricSettingsTable().specs();
     params.push_back(realParam("tolerance", 0.02, 0.0, 1.0, "largest change of transmittance compression may make"));
     params.push_back(integerParam("max-vertices", 16, 2, 1024, "vertices a texel's curve may keep"));
     return {.name = "deep-shadow-maps",

@@ -75,7 +75,7 @@ ShadowOutputs runOpacityShadowMaps(const ShadowInputs& in) {
 }  // namespace
 
 Technique opacityShadowMapsTechnique() {
-    std::vector<ParamSpec> params = volumetricParamSpecs();
+    std::vector<ParamSpec> params = volumetricSettingsTable().specs();
     params.push_back(integerParam("slices", 16, 1, 256, "opacity maps, uniformly spaced in depth"));
     return {.name = "opacity-shadow-maps",
             .description = "opacity shadow maps (Kim and Neumann 2001): optical depth at uniform depth slices, "

@@ -7,20 +7,13 @@
 
 namespace shadowlab {
 
-std::vector<ParamSpec> volumetricParamSpecs() {
-    std::vector<ParamSpec> specs = shadowMapParamSpecs();
-    for (ParamSpec& spec : specs) {
-        // Each texel holds a list or a curve, not one depth: a smaller map by default.
-        if (spec.name == "resolution")
-            spec = integerParam("resolution", 512, kMinMapResolution, kMaxMapResolution, "texels per side");
-    }
-    specs.push_back(realParam("transmittance-offset", 1.5, 0.0, 100.0,
-                              "texels the receiver moves along its normal before the transmittance lookup"));
-    return specs;
-}
-
-VolumetricSettings readVolumetricSettings(const TechniqueParams& params) {
-    return {readShadowMapSettings(params), {params.real("transmittance-offset")}};
+const SettingsTable<VolumetricSettings>& volumetricSettingsTable() {
+    static const auto table =
+        SettingsTable<VolumetricSettings>()
+            .include(member(&VolumetricSettings::map), shadowMapSettingsTable())
+            .real("transmittance-offset", member(&VolumetricSettings::lookup, &TransmittanceLookup::offsetTexels), 0.0,
+                  100.0, "texels the receiver moves along its normal before the transmittance lookup");
+    return table;
 }
 
 VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const CasterTransmission& transmission,

@@ -22,14 +22,13 @@
 namespace shadowlab {
 
 struct VolumetricSettings {
-    ShadowMapSettings map;
+    // Each texel holds a list or a curve, not one depth: a smaller map by default.
+    ShadowMapSettings map{.resolution = 512};
     TransmittanceLookup lookup;
 };
 
-// The shadow map's parameters at a resolution of 512 (each texel holds a list), and
-// `transmittance-offset`.
-std::vector<ParamSpec> volumetricParamSpecs();
-VolumetricSettings readVolumetricSettings(const TechniqueParams& params);
+// The shadow map's parameters, and `transmittance-offset`.
+const SettingsTable<VolumetricSettings>& volumetricSettingsTable();
 
 // The stages before a technique's own: the light's layers (stage `layers`) and the opaque
 // lookup (stage `opaque_lookup`), for a hard light (an area light's centre stands in).
@@ -56,7 +55,7 @@ void writeVolumetricDebug(const ShadowInputs& in, const std::string& technique, 
 template <class Build>
 ShadowOutputs runVolumetricFrame(const ShadowInputs& in, const std::string& technique, const char* stage,
                                  const Build& build) {
-    const VolumetricSettings settings = readVolumetricSettings(in.params);
+    const VolumetricSettings settings = volumetricSettingsTable().read(in.params);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const CasterTransmission transmission(in.casters().scene(), in.casterWorld());

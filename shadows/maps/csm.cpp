@@ -18,16 +18,36 @@
 namespace shadowlab {
 namespace {
 
-CascadeSettings readCascadeSettings(const TechniqueParams& p, const ShadowMapSettings& s) {
-    CascadeSettings c;
-    c.count = p.integer("cascades");
-    c.scheme = p.choice<SplitScheme>("split");
-    c.lambda = p.real("lambda");
-    c.sampleBounds = p.choice<bool>("bounds");
-    c.snap = p.flag("snap");
-    c.resolution = s.resolution;
-    c.marginTexels = kernelRadiusTexels(s.filter) + 1.5;   // the filter, plus half a texel of snapping
-    return c;
+struct CsmSettings {
+    ShadowMapSettings map;
+    CascadeSettings cascades;   // its resolution and margin follow from the map's (read())
+};
+
+const SettingsTable<CsmSettings>& csmSettingsTable() {
+    using S = CsmSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::map), shadowMapSettingsTable())
+            .integer("cascades", member(&S::cascades, &CascadeSettings::count), 1, 8, "number of cascades")
+            .choice("split", member(&S::cascades, &CascadeSettings::scheme),
+                    {{"log", SplitScheme::Logarithmic, "RTR eq. 7.5"},
+                     {"uniform", SplitScheme::Uniform},
+                     {"practical", SplitScheme::Practical, "lambda log + (1 - lambda) uniform"}})
+            .real("lambda", member(&S::cascades, &CascadeSettings::lambda), 0.0, 1.0,
+                  "practical split: weight of the logarithmic split")
+            .choice("bounds", member(&S::cascades, &CascadeSettings::sampleBounds),
+                    {{"camera", false, "near/far planes"}, {"samples", true, "nearest/farthest receiver, SDSM"}},
+                    "split range")
+            .flag("snap", member(&S::cascades, &CascadeSettings::snap),
+                  "snap each cascade to whole texels so shadows do not shimmer");
+    return table;
+}
+
+CsmSettings readCsmSettings(const TechniqueParams& params) {
+    CsmSettings s = csmSettingsTable().read(params);
+    s.cascades.resolution = s.map.resolution;
+    s.cascades.marginTexels = kernelRadiusTexels(s.map.filter) + 1.5;   // the filter, plus half a texel of snapping
+    return s;
 }
 
 void addStats(ShadowOutputs& out, const CascadedMaps& cm, int resolution, const ShadowLookup& lookup) {
@@ -46,8 +66,9 @@ void addStats(ShadowOutputs& out, const CascadedMaps& cm, int resolution, const 
 }
 
 ShadowOutputs runCsm(const ShadowInputs& in) {
-    const ShadowMapSettings s = readShadowMapSettings(in.params);
-    const CascadeSettings cs = readCascadeSettings(in.params, s);
+    const CsmSettings settings = readCsmSettings(in.params);
+    const ShadowMapSettings& s = settings.map;
+    const CascadeSettings& cs = settings.cascades;
     if (in.light.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
@@ -84,22 +105,10 @@ CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffe
 }
 
 Technique cascadedShadowMapTechnique() {
-    std::vector<ParamSpec> params = shadowMapParamSpecs();
-    params.push_back(integerParam("cascades", 4, 1, 8, "number of cascades"));
-    params.push_back(choiceParam<SplitScheme>("split", "practical",
-                                              {{"log", SplitScheme::Logarithmic, "RTR eq. 7.5"},
-                                               {"uniform", SplitScheme::Uniform},
-                                               {"practical", SplitScheme::Practical, "lambda log + (1 - lambda) uniform"}}));
-    params.push_back(realParam("lambda", 0.75, 0.0, 1.0, "practical split: weight of the logarithmic split"));
-    params.push_back(choiceParam<bool>("bounds", "samples",
-                                       {{"camera", false, "near/far planes"},
-                                        {"samples", true, "nearest/farthest receiver, SDSM"}},
-                                       "split range"));
-    params.push_back(flagParam("snap", true, "snap each cascade to whole texels so shadows do not shimmer"));
     return {.name = "csm",
             .description = "cascaded shadow maps (RTR 7.4.1) for directional lights: split schemes, SDSM "
                            "bounds, texel snapping",
-            .params = params,
+            .params = csmSettingsTable().specs(),
             .run = runCsm,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

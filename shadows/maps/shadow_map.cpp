@@ -137,10 +137,25 @@ void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSett
     if (lm.cube) writeMapColouring(in.debugDir, "shadow-map", "faces", in.gbuffer, lookup);
 }
 
-ShadowOutputs runShadowMap(const ShadowInputs& in) {
-    const ShadowMapSettings s = readShadowMapSettings(in.params);
-    const bool forceCube = in.params.choice<bool>("cube");
-    const bool lispsm = in.params.choice<bool>("warp");
+}  // namespace
+
+const SettingsTable<ShadowMapTechniqueSettings>& shadowMapTechniqueSettingsTable() {
+    using S = ShadowMapTechniqueSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::map), shadowMapSettingsTable())
+            .choice("cube", member(&S::alwaysCube),
+                    {{"auto", false, "six faces when one frustum cannot hold the receivers"}, {"always", true}},
+                    "point lights")
+            .choice("warp", member(&S::lispsm),
+                    {{"none", false}, {"lispsm", true, "light space perspective shadow map"}}, "directional lights");
+    return table;
+}
+
+ShadowOutputs runShadowMap(const ShadowInputs& in, const ShadowMapTechniqueSettings& settings) {
+    const ShadowMapSettings& s = settings.map;
+    const bool forceCube = settings.alwaysCube;
+    const bool lispsm = settings.lispsm;
     const Light light = pointLightFor(in.light);
     if (lispsm && light.type != LightType::Directional) {
         throw std::invalid_argument("shadow-map: warp=lispsm needs a directional light");
@@ -159,22 +174,14 @@ ShadowOutputs runShadowMap(const ShadowInputs& in) {
     return out;
 }
 
-}  // namespace
-
 Technique shadowMapTechnique() {
-    std::vector<ParamSpec> params = shadowMapParamSpecs();
-    params.push_back(choiceParam<bool>("cube", "auto",
-                                       {{"auto", false, "six faces when one frustum cannot hold the receivers"},
-                                        {"always", true}},
-                                       "point lights"));
-    params.push_back(choiceParam<bool>("warp", "none",
-                                       {{"none", false}, {"lispsm", true, "light space perspective shadow map"}},
-                                       "directional lights"));
     return {.name = "shadow-map",
             .description = "shadow map (RTR 7.4): fitted light frustum, cube faces for surrounded point "
                            "lights, bias modes, PCF filters, LiSPSM",
-            .params = params,
-            .run = runShadowMap,
+            .params = shadowMapTechniqueSettingsTable().specs(),
+            .run = [](const ShadowInputs& in) {
+                return runShadowMap(in, shadowMapTechniqueSettingsTable().read(in.params));
+            },
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};
 }

@@ -7,20 +7,19 @@
 #include "shadows/depth_map.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
-#include "shadows/technique_params.h"
+#include "shadows/settings_table.h"
 
 namespace shadowlab {
 
 struct ShadowMapSettings {
     int resolution = 2048;
     DepthLayer layer = DepthLayer::First;
-    BiasSettings bias;
-    FilterSettings filter;
+    BiasSettings bias = {};
+    FilterSettings filter = {};
 };
 
-std::vector<ParamSpec> shadowMapParamSpecs();
-// Throws std::invalid_argument (from TechniqueParams) for a bad value.
-ShadowMapSettings readShadowMapSettings(const TechniqueParams& params);
+// Its parameters (docs/shadow-maps.md), each bound to its member; the defaults above.
+const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable();
 
 DepthMapSettings depthMapSettings(const ShadowMapSettings& settings);
 

@@ -3,9 +3,25 @@
 // (cascaded shadow maps for a directional light). See shadow_map.cpp and csm.cpp.
 #pragma once
 
+#include "shadows/maps/shadow_map_settings.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
+
+// `shadow-map`'s settings: the map's, and how it covers a light.
+struct ShadowMapTechniqueSettings {
+    ShadowMapSettings map;
+    bool alwaysCube = false;   // `cube=always`: six faces for a point light even where one frustum would do
+    bool lispsm = false;       // `warp=lispsm`: LiSPSM for a directional light
+};
+
+// Its parameters: the map's, then `cube` and `warp`.
+const SettingsTable<ShadowMapTechniqueSettings>& shadowMapTechniqueSettingsTable();
+
+// `shadow-map` with typed settings, as another technique runs it per light (the environment
+// techniques' LightVisibility); its `params` are not read. Throws std::invalid_argument for
+// settings the light cannot take (lispsm but not directional, a cube but not a point light).
+ShadowOutputs runShadowMap(const ShadowInputs& in, const ShadowMapTechniqueSettings& settings);
 
 Technique shadowMapTechnique();
 Technique cascadedShadowMapTechnique();

@@ -21,7 +21,6 @@
 #include "shadows/screen/march_plot.h"
 #include "shadows/screen/screen_march.h"
 #include "shadows/stage_timer.h"
-#include "shadows/technique_stage.h"
 
 namespace shadowlab {
 namespace {
@@ -29,8 +28,32 @@ namespace {
 const char* const kContactShadowsName = "contact-shadows";
 const char* const kMapDebugFolder = "contact-shadows-shadow-map";
 
-MarchSettings readMarchSettings(const TechniqueParams& p) {
-    return {float(p.real("march-length")), p.integer("march-steps"), float(p.real("depth-thickness"))};
+struct ContactShadowSettings {
+    ShadowMapTechniqueSettings map;
+    MarchSettings march;
+    bool withMap = true;   // off: the march alone
+};
+
+const SettingsTable<ContactShadowSettings>& contactShadowSettingsTable() {
+    using S = ContactShadowSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::map), shadowMapTechniqueSettingsTable())
+            .real("march-length", member(&S::march, &MarchSettings::lengthM), 1e-4, 100.0,
+                  "m marched from each pixel towards the light")
+            .integer("march-steps", member(&S::march, &MarchSettings::steps), 1, 1024, "samples along the march")
+            .real("depth-thickness", member(&S::march, &MarchSettings::thicknessM), 0.0, 100.0,
+                  "m behind the depth buffer's surface a sample still counts as inside it")
+            .flag("shadow-map", member(&S::withMap), "off: the march alone (no caster off screen or hidden casts)");
+    return table;
+}
+
+// 1. The shadow map: the shadow-map technique's own checks, V, figures and stage times, and
+// its buffers in a folder of their own.
+ShadowOutputs shadowMapStage(const ShadowInputs& in, const ShadowMapTechniqueSettings& settings) {
+    ShadowInputs mapInputs = in;
+    mapInputs.debugDir = in.debugDir.empty() ? in.debugDir : in.debugDir / kMapDebugFolder;
+    return runShadowMap(mapInputs, settings);
 }
 
 // The pixel whose march the debug view plots: the parameters', or the image's centre.
@@ -72,20 +95,14 @@ ShadowOutputs reachedOutputs(const GBuffer& g, const Light& light) {
 }
 
 ShadowOutputs runContactShadows(const ShadowInputs& in) {
-    const MarchSettings settings = readMarchSettings(in.params);
+    const ContactShadowSettings settings = contactShadowSettingsTable().read(in.params);
     plottedPixel(in);   // settings checked before any work
     const Light light = pointLightFor(in.light);
-    // 1. The shadow map: the shadow-map technique's own checks, V, figures and stage times,
-    // and its buffers in a folder of their own.
-    const Technique map = shadowMapTechnique();
-    const std::filesystem::path mapDebugDir = in.debugDir.empty() ? in.debugDir : in.debugDir / kMapDebugFolder;
-    ShadowOutputs out = in.params.flag("shadow-map")
-                            ? runTechniqueStage(map, in, sharedParamValues(map, in.params), mapDebugDir)
-                            : reachedOutputs(in.gbuffer, light);
+    ShadowOutputs out = settings.withMap ? shadowMapStage(in, settings.map) : reachedOutputs(in.gbuffer, light);
     if (!anySurface(in.gbuffer)) return out;   // V = 0 already
     StageTimer timer;
     // 2. The march.
-    const ScreenMarch march(in.gbuffer, in.camera(), light, settings);
+    const ScreenMarch march(in.gbuffer, in.camera(), light, settings.march);
     const ScreenMarch::Mask mask = march.mask();
     timer.lap("march");
     // 3. Shadowed where either pass found an occluder.
@@ -95,19 +112,14 @@ ShadowOutputs runContactShadows(const ShadowInputs& in) {
     }
     timer.lap("combine");
     timer.appendTo(out.stats);
-    writeDebug(in, march, mask, settings.thicknessM);
+    writeDebug(in, march, mask, settings.march.thicknessM);
     return out;
 }
 
 }  // namespace
 
 Technique contactShadowsTechnique() {
-    std::vector<ParamSpec> params = shadowMapTechnique().params;
-    params.push_back(realParam("march-length", 0.25, 1e-4, 100.0, "m marched from each pixel towards the light"));
-    params.push_back(integerParam("march-steps", 16, 1, 1024, "samples along the march"));
-    params.push_back(realParam("depth-thickness", 0.05, 0.0, 100.0,
-                               "m behind the depth buffer's surface a sample still counts as inside it"));
-    params.push_back(flagParam("shadow-map", true, "off: the march alone (no caster off screen or hidden casts)"));
+    std::vector<ParamSpec> params = contactShadowSettingsTable().specs();
     for (const ParamSpec& p : plotPixelParams("march is plotted")) params.push_back(p);
     return {.name = kContactShadowsName,
             .description = "contact shadows (RTR 7.10, Sousa et al. 2011): a shadow map, and a march over the "

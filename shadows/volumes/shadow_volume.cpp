@@ -99,14 +99,16 @@ void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowO
     debug.write("fill", camera.width, camera.height, fill, 0.0f, 8.0f);
 }
 
-ShadowOutputs runShadowVolume(const ShadowInputs& in) {
+}  // namespace
+
+ShadowOutputs runShadowVolume(const ShadowInputs& in, const StencilPassSettings& settings) {
     const Camera& camera = in.camera();
     const Light light = pointLightFor(in.light);
     StageTimer timer;
     const DebugBuffers debug(in.debugDir, "shadow-volume");
     raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
     raster::Rasterizer rasterizer(in.simd);
-    const StencilPass pass = runStencilPass(rasterizer, fb, in, homogeneousLight(light), timer);
+    const StencilPass pass = runStencilPass(rasterizer, fb, in, settings, homogeneousLight(light), timer);
 
     ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb.stencilImage());
     timer.lap("visibility");
@@ -116,14 +118,12 @@ ShadowOutputs runShadowVolume(const ShadowInputs& in) {
     return out;
 }
 
-}  // namespace
-
 Technique shadowVolumeTechnique() {
     return {.name = "shadow-volume",
             .description = "stencil shadow volumes: silhouettes extruded to infinity, z-pass or z-fail with "
                            "two-sided wrapping stencil",
-            .params = stencilPassParams(),
-            .run = runShadowVolume,
+            .params = stencilPassSettingsTable().specs(),
+            .run = [](const ShadowInputs& in) { return runShadowVolume(in, stencilPassSettingsTable().read(in.params)); },
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};

@@ -3,8 +3,13 @@
 #pragma once
 
 #include "shadows/technique.h"
+#include "shadows/volumes/stencil_pass.h"
 
 namespace shadowlab {
+
+// `shadow-volume` with typed settings, as another technique runs it per light (the
+// environment techniques' LightVisibility); its `params` are not read.
+ShadowOutputs runShadowVolume(const ShadowInputs& in, const StencilPassSettings& settings);
 
 Technique shadowVolumeTechnique();
 

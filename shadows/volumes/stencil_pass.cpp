@@ -11,10 +11,10 @@ using raster::CompareFunc;
 using raster::StencilOp;
 
 // Step 2, taken first: step 1 builds the caps for z-fail only.
-void chooseCounting(const ShadowInputs& in, const glm::dvec4& light, StencilPass& pass) {
+void chooseCounting(const ShadowInputs& in, VolumeMode mode, const glm::dvec4& light, StencilPass& pass) {
     pass.nearPlaneShadowed =
         nearPlaneMayBeShadowed(in.camera(), light, instanceBounds(in.casters().scene(), in.casterWorld()));
-    switch (in.params.choice<VolumeMode>("mode")) {
+    switch (mode) {
         case VolumeMode::ZPass: pass.counting = VolumeCounting::ZPass; return;
         case VolumeMode::ZFail: pass.counting = VolumeCounting::ZFail; return;
         case VolumeMode::Auto: break;
@@ -73,20 +73,25 @@ raster::DrawCall volumeDraw(const StencilPass& pass) {
 
 }  // namespace
 
-std::vector<ParamSpec> stencilPassParams() {
-    return {choiceParam<VolumeMode>("mode", "auto",
-                                    {{"auto", VolumeMode::Auto, "z-fail when a volume may reach the near plane"},
-                                     {"zpass", VolumeMode::ZPass},
-                                     {"zfail", VolumeMode::ZFail}}),
-            realParam("offset", 0.0, 0.0, 64.0,
-                      "polygon offset of the volume faces, in units of the depth buffer's resolution")};
+const SettingsTable<StencilPassSettings>& stencilPassSettingsTable() {
+    using S = StencilPassSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .choice("mode", member(&S::mode),
+                    {{"auto", VolumeMode::Auto, "z-fail when a volume may reach the near plane"},
+                     {"zpass", VolumeMode::ZPass},
+                     {"zfail", VolumeMode::ZFail}})
+            .real("offset", member(&S::offsetUnits), 0.0, 64.0,
+                  "polygon offset of the volume faces, in units of the depth buffer's resolution");
+    return table;
 }
 
 // Steps 1 to 4; the stencil pass's fragments are the fill (step 5).
 StencilPass runStencilPass(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
-                           const glm::dvec4& light, StageTimer& timer) {
+                           const StencilPassSettings& settings, const glm::dvec4& light, StageTimer& timer) {
     StencilPass pass;
-    chooseCounting(in, light, pass);
+    pass.offsetUnits = settings.offsetUnits;
+    chooseCounting(in, settings.mode, light, pass);
     pass.volume = extrudeShadowVolume(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), light,
                                       pass.counting == VolumeCounting::ZFail);
     timer.lap("extrusion");
@@ -95,7 +100,7 @@ StencilPass runStencilPass(raster::Rasterizer& rasterizer, raster::Framebuffer& 
     fb.clearDepth(1.0f), fb.clearStencil(0);
     depthPrepass(rasterizer, fb, in.receiverWorld(), pass.clipFromWorld);
     rasterizer.resetStats();
-    rasterizer.draw(fb, stencilPassState(pass.counting, float(in.params.real("offset"))), volumeDraw(pass));
+    rasterizer.draw(fb, stencilPassState(pass.counting, pass.offsetUnits), volumeDraw(pass));
     pass.fill = rasterizer.stats();
     timer.lap("stencil");
     return pass;
@@ -103,8 +108,8 @@ StencilPass runStencilPass(raster::Rasterizer& rasterizer, raster::Framebuffer& 
 
 // Sides are extruded two triangles per silhouette edge, in silhouette order
 // (volume_extrusion.cpp), so edge k owns side triangles 2k and 2k + 1.
-void listSideFragments(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
-                       const StencilPass& pass, std::span<const uint32_t> edges) {
+void listSideFragments(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const StencilPass& pass,
+                       std::span<const uint32_t> edges) {
     std::vector<glm::uvec3> triangles;
     std::vector<uint32_t> ids;
     const std::span<const glm::uvec3> sides = pass.volume.sides();
@@ -112,7 +117,7 @@ void listSideFragments(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, 
         triangles.insert(triangles.end(), {sides[2 * e], sides[2 * e + 1]});
         ids.insert(ids.end(), {e, e});
     }
-    raster::PipelineState state = stencilPassState(pass.counting, float(in.params.real("offset")));
+    raster::PipelineState state = stencilPassState(pass.counting, pass.offsetUnits);
     state.stencil.enabled = false;
     state.output = raster::FragmentOutput::FragmentList;
     raster::DrawCall call = volumeDraw(pass);

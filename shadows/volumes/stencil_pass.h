@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "raster/rasterizer.h"
+#include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 #include "shadows/technique.h"
 #include "shadows/volumes/volume_extrusion.h"
@@ -19,8 +20,13 @@ namespace shadowlab {
 enum class VolumeCounting { ZPass, ZFail };
 enum class VolumeMode { Auto, ZPass, ZFail };   // the `mode` parameter: a counting, or auto
 
-// The parameters of the pass: `mode` and `offset`, read by runStencilPass.
-std::vector<ParamSpec> stencilPassParams();
+struct StencilPassSettings {
+    VolumeMode mode = VolumeMode::Auto;
+    float offsetUnits = 0.0f;   // polygon offset of the volume faces, in depth buffer steps
+};
+
+// The parameters of the pass: `mode` and `offset`.
+const SettingsTable<StencilPassSettings>& stencilPassSettingsTable();
 
 struct StencilPass {
     VolumeCounting counting = VolumeCounting::ZPass;
@@ -28,6 +34,7 @@ struct StencilPass {
     ShadowVolume volume;
     glm::mat4 clipFromWorld{1.0f};    // the camera's infinite-far projection the pass drew with
     raster::RasterStats fill;         // the stencil pass's figures; fragments are the fill
+    float offsetUnits = 0.0f;         // the settings' offset, which listSideFragments draws with too
 };
 
 // Extrudes the casters' volume for `light` (laps "extrusion" on the timer), then draws the
@@ -35,15 +42,15 @@ struct StencilPass {
 // the volume into the stencil of `fb` (laps "stencil"). `fb` must have a stencil buffer;
 // afterwards it holds that depth and the count per pixel, modulo 256.
 StencilPass runStencilPass(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
-                           const glm::dvec4& light, StageTimer& timer);
+                           const StencilPassSettings& settings, const glm::dvec4& light, StageTimer& timer);
 
 // Lists, per tile, the fragments of the volume sides of the given silhouette edges
 // (indices into pass.volume.silhouette) that pass the stencil pass's own depth test, i.e.
 // the pixels where the pass counted the side as in front of the receiver; each fragment's
 // primitive id is its edge. The same vertices, matrix and offset as the pass, so the same
 // bits decide. `fb` must have a fragment list; it is cleared first.
-void listSideFragments(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
-                       const StencilPass& pass, std::span<const uint32_t> edges);
+void listSideFragments(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const StencilPass& pass,
+                       std::span<const uint32_t> edges);
 
 // The fill per pixel (fragments of the volume faces at each pixel), for debug views; needs
 // a colour buffer and leaves colour plane 0 holding it.

@@ -45,7 +45,7 @@ double eyeSide(const ShadowInputs& in, const StencilPass& pass, uint32_t edge, c
 uint64_t reconcileHardBoundary(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ShadowInputs& in,
                                const StencilPass& pass, WedgeCoverage& coverage) {
     if (coverage.nearCentre.empty()) return 0;
-    listSideFragments(rasterizer, fb, in, pass, edgesOf(coverage.nearCentre));
+    listSideFragments(rasterizer, fb, pass, edgesOf(coverage.nearCentre));
     const std::vector<std::pair<size_t, uint32_t>> listed = listedSides(fb, in.camera().width);
     const glm::dvec3 centre(in.light.position);
     uint64_t flipped = 0;

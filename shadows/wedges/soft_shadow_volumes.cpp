@@ -48,6 +48,24 @@ constexpr const char* kSoftShadowVolumesName = "soft-shadow-volumes";
 
 enum class HardShadow { Count, Binary };   // the `hard-shadow` parameter
 
+struct SoftShadowVolumeSettings {
+    StencilPassSettings pass;
+    HardShadow hardShadow = HardShadow::Count;
+};
+
+const SettingsTable<SoftShadowVolumeSettings>& softShadowVolumeSettingsTable() {
+    using S = SoftShadowVolumeSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::pass), stencilPassSettingsTable())
+            .choice("hard-shadow", member(&S::hardShadow),
+                    {{"count", HardShadow::Count,
+                      "V_hard = 1 - the stencil count: overlaps darken by the doubly hidden share"},
+                     {"binary", HardShadow::Binary, "V_hard = 1 where the count is 0: the shadow-volume's hard shadow"}},
+                    "how the centre's hard shadow enters V");
+    return table;
+}
+
 // Step 4, with the hard shadow of the centre from the stencil (row-major).
 ShadowOutputs finalVisibility(const GBuffer& g, const Light& centre, const std::vector<uint8_t>& stencil,
                               const WedgeCoverage& wedges, HardShadow mode) {
@@ -90,6 +108,7 @@ void writeDebug(const DebugBuffers& debug, const Camera& camera, const ShadowOut
 }
 
 ShadowOutputs runSoftShadowVolumes(const ShadowInputs& in) {
+    const SoftShadowVolumeSettings settings = softShadowVolumeSettingsTable().read(in.params);
     if (in.light.type != LightType::Disk && in.light.type != LightType::Rectangle)
         throw std::invalid_argument(std::string(kSoftShadowVolumesName) + ": needs an area light (disk or rectangle)");
     const AreaLightFrame frame = areaLightFrame(in.light);
@@ -98,7 +117,7 @@ ShadowOutputs runSoftShadowVolumes(const ShadowInputs& in) {
     StageTimer timer;
     raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .fragments = true});
     raster::Rasterizer rasterizer(in.simd);
-    const StencilPass pass = runStencilPass(rasterizer, fb, in, homogeneousLight(centre), timer);
+    const StencilPass pass = runStencilPass(rasterizer, fb, in, settings.pass, homogeneousLight(centre), timer);
 
     const std::vector<SilhouetteEdge>& silhouette = pass.volume.silhouette;
     const WedgeSet wedges = buildWedges(in.casterWorld().positions, silhouette, lightBall(frame));
@@ -110,7 +129,7 @@ ShadowOutputs runSoftShadowVolumes(const ShadowInputs& in) {
     const uint64_t flipped = reconcileHardBoundary(rasterizer, fb, in, pass, coverage);
     timer.lap("hard_boundary");
     ShadowOutputs out =
-        finalVisibility(in.gbuffer, centre, fb.stencilImage(), coverage, in.params.choice<HardShadow>("hard-shadow"));
+        finalVisibility(in.gbuffer, centre, fb.stencilImage(), coverage, settings.hardShadow);
     timer.lap("visibility");
     appendStencilPassStats(in, pass, out.stats);
     addWedgeStats(wedges, coverage, flipped, in.gbuffer.pixelCount(), out.stats);
@@ -120,23 +139,13 @@ ShadowOutputs runSoftShadowVolumes(const ShadowInputs& in) {
     return out;
 }
 
-std::vector<ParamSpec> params() {
-    std::vector<ParamSpec> specs = stencilPassParams();
-    specs.push_back(choiceParam<HardShadow>(
-        "hard-shadow", "count",
-        {{"count", HardShadow::Count, "V_hard = 1 - the stencil count: overlaps darken by the doubly hidden share"},
-         {"binary", HardShadow::Binary, "V_hard = 1 where the count is 0: the shadow-volume's hard shadow"}},
-        "how the centre's hard shadow enters V"));
-    return specs;
-}
-
 }  // namespace
 
 Technique softShadowVolumeTechnique() {
     return {.name = kSoftShadowVolumesName,
             .description = "soft shadow volumes: penumbra wedges on the centre's silhouette edges over its stencil "
                            "hard shadow, the light's covered area per pixel computed exactly",
-            .params = params(),
+            .params = softShadowVolumeSettingsTable().specs(),
             .run = runSoftShadowVolumes,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility,

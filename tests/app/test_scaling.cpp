@@ -10,6 +10,7 @@
 
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
+#include "frame/registry.h"
 #include "scenes/scene_file.h"
 #include "tests/app/text_count.h"
 

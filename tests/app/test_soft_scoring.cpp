@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/sweep.h"
+#include "frame/registry.h"
 #include "frame/score.h"
 #include "scenes/scene_file.h"
 #include "shadows/reference/reference.h"

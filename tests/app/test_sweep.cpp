@@ -15,6 +15,7 @@
 #include "app/sweep.h"
 #include "app/sweep_json.h"
 #include "app/sweep_plot.h"
+#include "frame/registry.h"
 #include "scenes/scene_file.h"
 #include "tests/app/text_count.h"
 

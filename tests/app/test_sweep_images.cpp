@@ -10,6 +10,7 @@
 #include "app/sweep.h"
 #include "app/sweep_json.h"
 #include "frame/frame_images.h"
+#include "frame/registry.h"
 #include "scenes/read_file.h"
 #include "scenes/write_file.h"
 #include "tests/app/text_count.h"

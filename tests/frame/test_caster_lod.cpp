@@ -9,6 +9,7 @@
 
 #include <tbb/global_control.h>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "tests/frame/technique_scenes.h"

@@ -7,7 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frame/registry.h"
 #include "frame/score.h"
+#include "frame/score_json.h"
 #include "scenes/scene_file.h"
 #include "shading/tonemap.h"
 #include "tests/shading/visibility_row.h"

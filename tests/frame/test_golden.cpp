@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"

@@ -6,12 +6,13 @@
 #include <fstream>
 #include <string>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/light_cookie.h"
 #include "scenes/scene_file.h"
 #include "shading/image_io.h"
-#include "tests/scratch_directory.h"
 #include "shading/lights.h"
+#include "tests/scratch_directory.h"
 
 using namespace shadowlab;
 

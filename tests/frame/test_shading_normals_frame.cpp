@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/scene_file.h"
 

@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "scenes/scene_file.h"

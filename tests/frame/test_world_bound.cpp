@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/camera_path.h"
 #include "scenes/scene_limits.h"

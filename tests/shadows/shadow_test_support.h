@@ -13,6 +13,7 @@
 
 #include <doctest/doctest.h>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"
@@ -46,7 +47,11 @@ struct HardScene {
                       raster::SimdLevel simd = raster::bestSimdLevel()) const {
         const Technique& t = findTechnique(technique);
         const TechniqueParams params(t.name, t.params, given);
-        return t.run({prepared, gbuffer, scene.lights[0], simd, params, {}});
+        return t.run({.prepared = prepared,
+                      .gbuffer = gbuffer,
+                      .light = scene.lights[0],
+                      .simd = simd,
+                      .params = params});
     }
 };
 

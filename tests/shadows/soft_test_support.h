@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/scene_file.h"
 #include "shadows/reference/reference.h"
@@ -29,7 +30,11 @@ struct SoftScene {
     ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {}) const {
         const Technique& t = findTechnique(technique);
         const TechniqueParams params(t.name, t.params, given);
-        return t.run({prepared, gbuffer, scene.lights[0], raster::bestSimdLevel(), params, {}});
+        return t.run({.prepared = prepared,
+                      .gbuffer = gbuffer,
+                      .light = scene.lights[0],
+                      .simd = raster::bestSimdLevel(),
+                      .params = params});
     }
 
     double rms(const std::vector<float>& v) const {

@@ -19,6 +19,7 @@
 
 #include <stb/stb_image.h>
 
+#include "frame/registry.h"
 #include "shading/image_io.h"
 #include "shadows/maps/cascades.h"
 #include "shadows/maps/shadow_lookup.h"

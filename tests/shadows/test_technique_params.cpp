@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "frame/registry.h"
 #include "shadows/depth_map.h"
 #include "shadows/technique.h"
 #include "shadows/technique_params.h"

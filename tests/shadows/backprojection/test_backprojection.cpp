@@ -11,6 +11,7 @@
 
 #include <tbb/global_control.h>
 
+#include "frame/registry.h"
 #include "shading/compare.h"
 #include "shadows/backprojection/light_bitmask.h"
 #include "tests/shadows/soft_test_support.h"
@@ -184,7 +185,11 @@ TEST_CASE("backprojection gives the same bits with and without the min-max hiera
     const Technique& t = findTechnique("backprojection");
     const auto run = [&](const std::string& hierarchy, raster::SimdLevel simd) {
         const TechniqueParams params(t.name, t.params, {{"min-max-hierarchy", hierarchy}});
-        return t.run({prepared, g, prepared.scene().lights[0], simd, params, {}}).visibility;
+        return t.run({.prepared = prepared,
+                      .gbuffer = g,
+                      .light = prepared.scene().lights[0],
+                      .simd = simd,
+                      .params = params}).visibility;
     };
     const std::vector<float> plain = run("off", raster::SimdLevel::Scalar);
     for (int threads : {1, 2}) {
@@ -205,7 +210,11 @@ TEST_CASE("backprojection refuses lights without area and bad settings") {
     point.type = LightType::Point;
     const Technique& t = findTechnique("backprojection");
     const TechniqueParams params(t.name, t.params, {});
-    CHECK_THROWS_AS(t.run({s.prepared, s.gbuffer, point, raster::SimdLevel::Scalar, params, {}}),
+    CHECK_THROWS_AS(t.run({.prepared = s.prepared,
+                           .gbuffer = s.gbuffer,
+                           .light = point,
+                           .simd = raster::SimdLevel::Scalar,
+                           .params = params}),
                     std::invalid_argument);
     CHECK_THROWS_AS(TechniqueParams(t.name, t.params, {{"light-samples", "40"}}), std::invalid_argument);
 }

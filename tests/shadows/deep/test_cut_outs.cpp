@@ -5,6 +5,7 @@
 
 #include <map>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "frame/score.h"
 #include "scenes/scene_file.h"
@@ -30,7 +31,11 @@ struct FoliageCase {
     std::vector<float> run(const std::string& technique) const {
         const Technique& t = findTechnique(technique);
         const TechniqueParams params(t.name, t.params, {});
-        return t.run({prepared, gbuffer, prepared.scene().lights[0], raster::bestSimdLevel(), params, {}}).visibility;
+        return t.run({.prepared = prepared,
+                      .gbuffer = gbuffer,
+                      .light = prepared.scene().lights[0],
+                      .simd = raster::bestSimdLevel(),
+                      .params = params}).visibility;
     }
     // The share of hit pixels (in percent) whose V differs from the reference by more than 0.5.
     double misclassifiedPercent(const std::vector<float>& V) const {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <string>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "raster/thread_count.h"
 #include "scenes/procedural.h"
@@ -42,7 +43,11 @@ struct VolumetricCase {
                       raster::SimdLevel simd = raster::bestSimdLevel()) const {
         const Technique& t = findTechnique(technique);
         const TechniqueParams params(t.name, t.params, given);
-        return t.run({prepared, gbuffer, prepared.scene().lights[0], simd, params, {}});
+        return t.run({.prepared = prepared,
+                      .gbuffer = gbuffer,
+                      .light = prepared.scene().lights[0],
+                      .simd = simd,
+                      .params = params});
     }
     double rms(const std::vector<float>& V) const {
         double sum = 0.0;

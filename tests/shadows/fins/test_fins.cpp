@@ -18,6 +18,7 @@
 
 #include "tests/shadows/soft_test_support.h"
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "raster/thread_count.h"
 #include "scenes/edge_adjacency.h"
@@ -46,7 +47,11 @@ ShadowOutputs runTechnique(const PreparedScene& prepared, const GBuffer& g, cons
                            raster::SimdLevel simd = raster::bestSimdLevel()) {
     const Technique& t = findTechnique(name);
     const TechniqueParams params(t.name, t.params, given);
-    return t.run({prepared, g, prepared.scene().lights[0], simd, params, {}});
+    return t.run({.prepared = prepared,
+                  .gbuffer = g,
+                  .light = prepared.scene().lights[0],
+                  .simd = simd,
+                  .params = params});
 }
 
 // ---- one straight edge ------------------------------------------------------------------

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "frame/registry.h"
 #include "raster/thread_count.h"
 #include "shading/lights.h"
 #include "shadows/filtered/pcss.h"
@@ -54,7 +55,11 @@ struct Parts {
     std::vector<float> weight;
     explicit Parts(const SoftScene& s) {
         const TechniqueParams defaults("pcss", pcssParamSpecs(), {});
-        const ShadowInputs in{s.prepared, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), defaults, {}};
+        const ShadowInputs in{.prepared = s.prepared,
+                              .gbuffer = s.gbuffer,
+                              .light = s.scene.lights[0],
+                              .simd = raster::bestSimdLevel(),
+                              .params = defaults};
         const PcssSettings settings = readPcssSettings(defaults);
         const SoftShadowMap soft = renderPcssMap(in, settings.resolution);
         pcss = pcssPerPixel(in, soft, settings, std::nullopt);
@@ -98,7 +103,12 @@ TEST_CASE("izb-pcss: the blend weight follows the occluder distance, and the deb
     const Technique& t = findTechnique("izb-pcss");
     const TechniqueParams params(t.name, t.params, {});
     const ShadowOutputs out =
-        t.run({s.prepared, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), params, dir.path});
+        t.run({.prepared = s.prepared,
+               .gbuffer = s.gbuffer,
+               .light = s.scene.lights[0],
+               .simd = raster::bestSimdLevel(),
+               .params = params,
+               .debugDir = dir.path});
     for (const char* file : {"izb-pcss-blend-weight.exr", "izb-pcss-izb.png", "izb-pcss-pcss.png"}) {
         INFO(file);
         CHECK(std::filesystem::exists(dir.path / file));
@@ -140,7 +150,11 @@ TEST_CASE("izb-pcss: the same bytes for 1 and 2 threads and every SIMD level") {
     const Technique& t = findTechnique("izb-pcss");
     const TechniqueParams params(t.name, t.params, {});
     const auto run = [&](raster::SimdLevel level) {
-        return t.run({prepared, g, prepared.scene().lights[0], level, params, {}}).visibility;
+        return t.run({.prepared = prepared,
+                      .gbuffer = g,
+                      .light = prepared.scene().lights[0],
+                      .simd = level,
+                      .params = params}).visibility;
     };
     const std::vector<float> twin = withThreads(1, [&] { return run(raster::SimdLevel::Scalar); });
     CHECK(std::count_if(twin.begin(), twin.end(), [](float v) { return v > 0.0f && v < 1.0f; }) > 100);
@@ -155,7 +169,11 @@ TEST_CASE("izb-pcss: a point light and crossed blend distances are clear errors"
     const Technique& t = findTechnique("izb-pcss");
     const auto run = [&](const std::map<std::string, std::string>& given) {
         const TechniqueParams params(t.name, t.params, given);
-        return t.run({prepared, g, prepared.scene().lights[0], raster::bestSimdLevel(), params, {}});
+        return t.run({.prepared = prepared,
+                      .gbuffer = g,
+                      .light = prepared.scene().lights[0],
+                      .simd = raster::bestSimdLevel(),
+                      .params = params});
     };
     CHECK_THROWS_WITH_AS(run({}), "izb-pcss: needs an area light (disk or rectangle)", std::invalid_argument);
     CHECK_THROWS_WITH_AS(run({{"hard-below", "0.5"}, {"soft-above", "0.2"}}),

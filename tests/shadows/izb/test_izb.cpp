@@ -9,6 +9,7 @@
 #include <string>
 #include <tuple>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"
@@ -34,7 +35,11 @@ struct Views {
 ShadowOutputs run(const std::string& technique, const Views& v, const std::map<std::string, std::string>& given = {}) {
     const Technique& t = findTechnique(technique);
     const TechniqueParams params(t.name, t.params, given);
-    return t.run({v.prepared, v.gbuffer, v.scene.lights[0], raster::bestSimdLevel(), params, {}});
+    return t.run({.prepared = v.prepared,
+                  .gbuffer = v.gbuffer,
+                  .light = v.scene.lights[0],
+                  .simd = raster::bestSimdLevel(),
+                  .params = params});
 }
 
 // A pixel lies within one pixel of a shadow boundary of the reference when one of its eight

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/scene_file.h"
 #include "shadows/izb/izb.h"
@@ -160,7 +161,11 @@ TEST_CASE("izb gives the same bytes at every SIMD level") {
     const Technique& t = findTechnique("izb");
     const TechniqueParams params(t.name, t.params, {});
     const auto visibility = [&](raster::SimdLevel level) {
-        return t.run({prepared, g, prepared.scene().lights[0], level, params, {}}).visibility;
+        return t.run({.prepared = prepared,
+                      .gbuffer = g,
+                      .light = prepared.scene().lights[0],
+                      .simd = level,
+                      .params = params}).visibility;
     };
     const std::vector<float> scalar = visibility(raster::SimdLevel::Scalar);
     for (raster::SimdLevel level : supportedLevels()) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/scene_file.h"
 #include "shadows/light_view.h"

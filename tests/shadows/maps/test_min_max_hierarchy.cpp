@@ -9,6 +9,7 @@
 
 #include <tbb/global_control.h>
 
+#include "frame/registry.h"
 #include "frame/render.h"
 #include "raster/tile_kernels.h"
 #include "scenes/hash_random.h"
@@ -162,7 +163,11 @@ TEST_CASE("pcss gives the same bits with and without the min-max hierarchy, at e
         const Technique& pcss = findTechnique("pcss");
         const auto run = [&](const std::string& hierarchy, raster::SimdLevel simd) {
             const TechniqueParams params(pcss.name, pcss.params, {{"min-max-hierarchy", hierarchy}});
-            return pcss.run({prepared, g, prepared.scene().lights[0], simd, params, {}});
+            return pcss.run({.prepared = prepared,
+                             .gbuffer = g,
+                             .light = prepared.scene().lights[0],
+                             .simd = simd,
+                             .params = params});
         };
         const ShadowOutputs plain = run("off", raster::SimdLevel::Scalar);
         for (int threads : {1, 2}) {

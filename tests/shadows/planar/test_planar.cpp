@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "frame/registry.h"
 #include "raster/thread_count.h"
 #include "shading/image_io.h"
 #include "shadows/planar/planar.h"
@@ -123,7 +124,12 @@ TEST_CASE("planar: the stencil blends each shadowed pixel once, the same bytes f
     const TechniqueParams params(planar.name, planar.params, {{"opacity", "0.5"}});
     const auto runWith = [&](int threads, const std::filesystem::path& debugDir) {
         return withThreads(threads, [&] {
-            return planar.run({s.prepared, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), params, debugDir});
+            return planar.run({.prepared = s.prepared,
+                               .gbuffer = s.gbuffer,
+                               .light = s.scene.lights[0],
+                               .simd = raster::bestSimdLevel(),
+                               .params = params,
+                               .debugDir = debugDir});
         });
     };
     const ShadowOutputs one = runWith(1, dir), two = runWith(2, {});

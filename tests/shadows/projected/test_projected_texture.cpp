@@ -10,6 +10,7 @@
 #include <utility>
 #include <stdexcept>
 
+#include "frame/registry.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 #include "tests/shadows/shadow_test_support.h"
@@ -169,7 +170,12 @@ TEST_CASE("projected-texture: the same bytes for 1 and 2 threads and every SIMD 
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "shadowlab-test-projected";
     const auto runWith = [&](int threads, raster::SimdLevel level, const std::filesystem::path& debugDir) {
         return withThreads(threads, [&] {
-            return technique.run({s.prepared, s.gbuffer, s.scene.lights[0], level, params, debugDir}).visibility;
+            return technique.run({.prepared = s.prepared,
+                                  .gbuffer = s.gbuffer,
+                                  .light = s.scene.lights[0],
+                                  .simd = level,
+                                  .params = params,
+                                  .debugDir = debugDir}).visibility;
         });
     };
     const std::vector<float> one = runWith(1, raster::SimdLevel::Scalar, dir);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "frame/registry.h"
 #include "raster/thread_count.h"
 #include "shadows/screen/march_plot.h"
 #include "shadows/screen/screen_march.h"
@@ -163,7 +164,12 @@ TEST_CASE("contact-shadows: the debug buffers hold the mask and the chosen pixel
     const ScratchDirectory dir("contact-shadows-debug");
     const Technique& t = findTechnique("contact-shadows");
     const TechniqueParams params(t.name, t.params, {});
-    t.run({s.prepared, s.gbuffer, s.scene.lights[0], raster::bestSimdLevel(), params, dir.path});
+    t.run({.prepared = s.prepared,
+           .gbuffer = s.gbuffer,
+           .light = s.scene.lights[0],
+           .simd = raster::bestSimdLevel(),
+           .params = params,
+           .debugDir = dir.path});
     for (const char* file : {"contact-shadows-march-mask.exr", "contact-shadows-march-mask.png",
                              "contact-shadows-march-path.png", "contact-shadows-march.csv",
                              "contact-shadows-march.svg", "contact-shadows-shadow-map/shadow-map-depth.png"}) {

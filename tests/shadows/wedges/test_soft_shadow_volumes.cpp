@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "frame/registry.h"
 #include "raster/thread_count.h"
 #include "tests/shadows/shadow_test_support.h"
 #include "tests/shadows/soft_test_support.h"
@@ -30,7 +31,11 @@ ShadowOutputs runAt(const test::SoftScene& s, raster::SimdLevel level,
                     const std::map<std::string, std::string>& given = {}) {
     const Technique& t = findTechnique(kTechnique);
     const TechniqueParams params(t.name, t.params, given);
-    return t.run({s.prepared, s.gbuffer, s.scene.lights[0], level, params, {}});
+    return t.run({.prepared = s.prepared,
+                  .gbuffer = s.gbuffer,
+                  .light = s.scene.lights[0],
+                  .simd = level,
+                  .params = params});
 }
 
 // 1D overlap of [a0, a1] and [b0, b1].
@@ -282,7 +287,11 @@ TEST_CASE("soft-shadow-volumes: a point, spot or directional light is an invalid
         light.type = type;
         const Technique& t = findTechnique(kTechnique);
         const TechniqueParams params(t.name, t.params, {});
-        const ShadowInputs in{s.prepared, s.gbuffer, light, raster::bestSimdLevel(), params, {}};
+        const ShadowInputs in{.prepared = s.prepared,
+                              .gbuffer = s.gbuffer,
+                              .light = light,
+                              .simd = raster::bestSimdLevel(),
+                              .params = params};
         CHECK_THROWS_AS(t.run(in), std::invalid_argument);
     }
 }

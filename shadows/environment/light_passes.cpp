@@ -1,8 +1,28 @@
-#include "compositing/light_passes.h"
+#include "shadows/environment/light_passes.h"
 
-#include "compositing/environment_lights.h"
+#include "shadows/environment/environment_lights.h"
 
 namespace shadowlab {
+
+const SettingsTable<SampledLightSettings>& sampledLightSettingsTable() {
+    using S = SampledLightSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::sampling), lightSamplingSettingsTable())
+            .choice("light-lobes", member(&S::lobes),
+                    {{"point", LightLobes::Point, "each light a point, as the paper"},
+                     {"region", LightLobes::Region, "each light's lobe widened by its region's solid angle (ours)"}},
+                    "how a sampled light's specular highlight is shaded")
+            .include(member(&S::visibility), lightVisibilitySettingsTable());
+    return table;
+}
+
+std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const PreparedScene& casters,
+                                                const SampledLightSettings& settings) {
+    std::vector<TechniqueStat> stats = prepareLightSampling(prepared, settings.sampling);
+    for (TechniqueStat& s : prepareLightVisibility(casters, settings.visibility)) stats.push_back(std::move(s));
+    return stats;
+}
 
 uint64_t addSampledLights(const ShadowInputs& in, LightVisibility& visibility, const std::vector<EnvironmentLight>& lights,
                           LightLobes lobes, const GBuffer& g, const Camera& camera, LightPart part,

@@ -25,13 +25,10 @@
 
 #include "scenes/scene.h"
 #include "shading/environment/median_cut.h"
-#include "shadows/technique_params.h"
 
 namespace shadowlab {
 
-enum class LightLobes { Point, Region };
-
-ParamSpec lightLobesParam();
+enum class LightLobes { Point, Region };   // the `light-lobes` parameter (light_passes.h)
 
 // The materials with their specular lobes widened for a light whose region has that solid angle.
 std::vector<Material> widenedForRegion(std::vector<Material> materials, double solidAngle);

@@ -4,13 +4,15 @@
 // 1/4, 1/16, ..., 1/1024 (k = 1, 2, 4, ..., 32).
 #pragma once
 
+#include <vector>
+
 #include "scenes/scene.h"
 #include "shadows/technique_params.h"
 
 namespace shadowlab {
 
-// The `sampling-detail` parameter: "1", "1/4", ..., "1/1024", read as k.
-ParamSpec samplingDetailParam();
+// The choices of the `sampling-detail` parameter: "1", "1/4", ..., "1/1024", read as k.
+std::vector<Choice<int>> samplingDetailChoices();
 
 // The camera of the same view with max(1, round(W / k)) x max(1, round(H / k)) pixels: the
 // same eye, target, up and vertical field of view, so where k does not divide the size the

@@ -13,15 +13,14 @@
 //      error (counted as `clamped_pixels`). The scene's own lights are added on top.
 #include <algorithm>
 
-#include "compositing/bilateral_upsample.h"
-#include "compositing/environment_lights.h"
-#include "compositing/environment_source.h"
-#include "compositing/environment_techniques.h"
-#include "compositing/light_passes.h"
-#include "compositing/sampling_detail.h"
-#include "compositing/subtractive_debug.h"
-#include "compositing/unshadowed_light.h"
 #include "shadows/camera_pass.h"
+#include "shadows/environment/bilateral_upsample.h"
+#include "shadows/environment/environment_source.h"
+#include "shadows/environment/environment_techniques.h"
+#include "shadows/environment/light_passes.h"
+#include "shadows/environment/sampling_detail.h"
+#include "shadows/environment/subtractive_debug.h"
+#include "shadows/environment/unshadowed_light.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
@@ -45,26 +44,52 @@ uint64_t subtract(const std::vector<glm::vec3>& C, const std::vector<glm::vec3>&
     return clamped;
 }
 
+struct SubtractiveSettings {
+    SampledLightSettings lights;
+    int samplingDetail = 1;   // k: S at 1/k^2 of the pixels
+    UnshadowedSettings unshadowed;
+};
+
+const SettingsTable<SubtractiveSettings>& subtractiveSettingsTable() {
+    using S = SubtractiveSettings;
+    static const auto table = SettingsTable<S>()
+                                  .include(member(&S::lights), sampledLightSettingsTable())
+                                  .choice("sampling-detail", member(&S::samplingDetail), samplingDetailChoices(),
+                                          "share of the pixels the shadow buffer S is computed at")
+                                  .include(member(&S::unshadowed), unshadowedSettingsTable());
+    return table;
+}
+
+std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const PreparedScene& casters,
+                                              const TechniqueParams& params) {
+    const SubtractiveSettings settings = subtractiveSettingsTable().read(params);
+    std::vector<TechniqueStat> stats = prepareSampledLights(prepared, casters, settings.lights);
+    for (TechniqueStat& s : prepareUnshadowedLight(prepared, settings.unshadowed)) stats.push_back(std::move(s));
+    return stats;
+}
+
 ShadowOutputs runSubtractive(const ShadowInputs& in) {
-    refuseUnservedMaterials(in);
+    const SubtractiveSettings settings = subtractiveSettingsTable().read(in.params);
+    refuseUnservedMaterials(in, settings.unshadowed);
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     std::vector<uint32_t> regions;
-    const std::vector<EnvironmentLight> lights = sampleLights(in.prepared, in.params, in.debugDir.empty() ? nullptr : &regions);
-    const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
+    const std::vector<EnvironmentLight> lights =
+        sampleLights(in.prepared, settings.lights.sampling, in.debugDir.empty() ? nullptr : &regions);
+    const LightLobes lobes = settings.lights.lobes;
     timer.lap("sampling");
 
-    const int k = in.params.choice<int>("sampling-detail");
+    const int k = settings.samplingDetail;
     const Camera camera = sampledCamera(in.camera(), k);
     const GBuffer sampledGBuffer = k == 1 ? GBuffer{} : sampledReceivers(in, camera);
     const GBuffer& sampled = k == 1 ? in.gbuffer : sampledGBuffer;
     timer.lap("sampled_gbuffer");
-    LightVisibility visibility(in);
+    LightVisibility visibility(in, settings.lights.visibility);
     std::vector<glm::vec3> S(sampled.pixelCount(), glm::vec3(0.0f));
     const uint64_t fragments = addSampledLights(in, visibility, lights, lobes, sampled, camera, LightPart::Occluded, S, timer);
 
     std::vector<TechniqueStat> cStats;
-    const std::vector<glm::vec3> C = unshadowedLight(in, cStats);
+    const std::vector<glm::vec3> C = unshadowedLight(in, settings.unshadowed, cStats);
     timer.lap("unshadowed_light");
     UpsampleCounts counts;
     const std::vector<glm::vec3> resampled = upsampleShadowBuffer(in.gbuffer, in.camera(), sampled, S, &counts);
@@ -92,13 +117,10 @@ ShadowOutputs runSubtractive(const ShadowInputs& in) {
 }  // namespace
 
 Technique environmentSubtractiveTechnique() {
-    std::vector<ParamSpec> params = {environmentLightsParam(40), lightSamplerParam(), samplingDetailParam(), lightLobesParam()};
-    for (ParamSpec& p : unshadowedParams()) params.push_back(std::move(p));
-    for (ParamSpec& p : visibilityParams("shadow-map")) params.push_back(std::move(p));
     return {.name = "env-subtractive",
             .description = "environment light, subtractive shadows (DeCoro and Rusinkiewicz 2008): fast local "
                            "illumination C less the occluded light of N lights, S, at a sampling detail",
-            .params = std::move(params),
+            .params = subtractiveSettingsTable().specs(),
             .run = runSubtractive,
             .referenceName = "reference-env",
             .output = TechniqueOutput::Radiance,

@@ -1,4 +1,4 @@
-#include "compositing/light_lobes.h"
+#include "shadows/environment/light_lobes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,14 +7,6 @@
 #include "raster/portable_math.h"
 
 namespace shadowlab {
-
-ParamSpec lightLobesParam() {
-    return choiceParam<LightLobes>(
-        "light-lobes", "point",
-        {{"point", LightLobes::Point, "each light a point, as the paper"},
-         {"region", LightLobes::Region, "each light's lobe widened by its region's solid angle (ours)"}},
-        "how a sampled light's specular highlight is shaded");
-}
 
 std::vector<Material> widenedForRegion(std::vector<Material> materials, double solidAngle) {
     const double cosRho = std::clamp(1.0 - solidAngle / (2.0 * std::numbers::pi), -1.0, 1.0);

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tests/compositing/environment_scenes.h"
+#include "tests/environment/environment_scenes.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;

@@ -12,23 +12,33 @@
 
 #include <glm/glm.hpp>
 
+#include "shadows/settings_table.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
 
 enum class UnshadowedMethod { Tables, RadianceCache };
 
-// The `unshadowed` and `cache-size` parameters.
-std::vector<ParamSpec> unshadowedParams();
+struct UnshadowedSettings {
+    UnshadowedMethod method = UnshadowedMethod::Tables;
+    int cacheSize = 128;   // radiance-cache: texels a side of each material's table (the paper's 128^2)
+};
+
+// The parameters `unshadowed` and `cache-size`.
+const SettingsTable<UnshadowedSettings>& unshadowedSettingsTable();
+
+// Technique::prepare's part: with the tables, the scene's (`local_illumination_ms`).
+std::vector<TechniqueStat> prepareUnshadowedLight(const PreparedScene& prepared, const UnshadowedSettings& settings);
 
 // Throws std::invalid_argument naming a visible material the tables cannot serve
-// (Blinn-Phong, a lobe too sharp for the map) when `unshadowed` is `tables`: a technique
-// calls it before any other work.
-void refuseUnservedMaterials(const ShadowInputs& in);
+// (Blinn-Phong, a lobe too sharp for the map) with the tables: a technique calls it before
+// any other work.
+void refuseUnservedMaterials(const ShadowInputs& in, const UnshadowedSettings& settings);
 
 // C at every hit pixel of in.gbuffer, about its shading normal. Call refuseUnservedMaterials
 // first: a material the tables do not serve otherwise throws here, mid-frame
 // (unshadowedRadiance). Adds `radiance_caches_count` with the radiance cache.
-std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats);
+std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, const UnshadowedSettings& settings,
+                                       std::vector<TechniqueStat>& stats);
 
 }  // namespace shadowlab

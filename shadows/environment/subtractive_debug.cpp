@@ -1,4 +1,4 @@
-#include "compositing/subtractive_debug.h"
+#include "shadows/environment/subtractive_debug.h"
 
 #include <numbers>
 

@@ -1,11 +1,8 @@
-#include "compositing/environment_source.h"
+#include "shadows/environment/environment_source.h"
 
 #include <numbers>
 #include <stdexcept>
 
-#include "compositing/environment_lights.h"
-#include "compositing/light_visibility.h"
-#include "compositing/unshadowed_light.h"
 #include "shading/environment/environment_file.h"
 #include "shading/environment/prefiltered_lobe.h"
 
@@ -17,10 +14,6 @@ namespace {
 struct SceneEnvironmentMap {
     EnvironmentMap map;
 };
-
-void appendBuilt(std::vector<TechniqueStat>& stats, const char* name, const std::optional<double>& ms) {
-    if (ms) stats.push_back({name, *ms});
-}
 
 }  // namespace
 
@@ -81,37 +74,11 @@ const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared, std::optio
     return prepared.derived<ScenePyramid>([&] { return ScenePyramid{buildPyramid(map)}; }, builtMs).pyramid;
 }
 
-std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const PreparedScene&, const TechniqueParams&) {
+std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared) {
     std::optional<double> ms;
     sceneEnvironment(prepared, &ms);
-    std::vector<TechniqueStat> stats;
-    appendBuilt(stats, "environment_ms", ms);
-    return stats;
-}
-
-std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const PreparedScene& casters,
-                                               const TechniqueParams& params) {
-    std::vector<TechniqueStat> stats = prepareEnvironment(prepared, casters, params);
-    if (params.choice<LightSampler>("sampler") == LightSampler::Structured) {
-        std::optional<double> ms;
-        scenePyramid(prepared, &ms);
-        appendBuilt(stats, "environment_pyramid_ms", ms);
-    }
-    if (params.choice<VisibilityMethod>("visibility") == VisibilityMethod::ShadowVolume) {
-        for (TechniqueStat& s : prepareEdgeAdjacency(prepared, casters, params)) stats.push_back(std::move(s));
-    }
-    return stats;
-}
-
-std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const PreparedScene& casters,
-                                             const TechniqueParams& params) {
-    std::vector<TechniqueStat> stats = prepareSampledLights(prepared, casters, params);
-    if (params.choice<UnshadowedMethod>("unshadowed") == UnshadowedMethod::Tables) {
-        std::optional<double> ms;
-        sceneLocalIllumination(prepared, &ms);
-        appendBuilt(stats, "local_illumination_ms", ms);
-    }
-    return stats;
+    if (ms) return {{"environment_ms", *ms}};
+    return {};
 }
 
 }  // namespace shadowlab

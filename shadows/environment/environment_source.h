@@ -29,15 +29,9 @@ bool tablesServe(const Material& material, const EnvironmentMap& map);
 // stratifies its cells), built once.
 const EnvironmentPyramid& scenePyramid(const PreparedScene& prepared, std::optional<double>* builtMs = nullptr);
 
-// Technique::prepare of the techniques that read the map (`environment_ms`); of those that
-// light it by sampled lights (and `environment_pyramid_ms` with sampler=structured,
-// `edge_adjacency_ms` with visibility=shadow-volume); and of subtractive shadows (and
-// `local_illumination_ms` with unshadowed=tables).
-std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared, const PreparedScene& casters,
-                                              const TechniqueParams& params);
-std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const PreparedScene& casters,
-                                                const TechniqueParams& params);
-std::vector<TechniqueStat> prepareSubtractive(const PreparedScene& prepared, const PreparedScene& casters,
-                                              const TechniqueParams& params);
+// Technique::prepare's part for every technique that reads the map: the map
+// (`environment_ms`), read once per scene. The stages that build more from it prepare their
+// own part (prepareLightSampling, prepareUnshadowedLight).
+std::vector<TechniqueStat> prepareEnvironment(const PreparedScene& prepared);
 
 }  // namespace shadowlab

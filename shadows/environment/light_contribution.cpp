@@ -1,4 +1,4 @@
-#include "compositing/light_contribution.h"
+#include "shadows/environment/light_contribution.h"
 
 #include <atomic>
 #include <stdexcept>

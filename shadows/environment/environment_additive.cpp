@@ -1,20 +1,19 @@
 // env-additive and reference-env-lights: the additive sum over sampled lights (DeCoro and
 // Rusinkiewicz 2008, section 1, "additive" shadowing), sum_l f E_l max(0, Ns . w_l) V_l.
-#include "compositing/environment_lights.h"
-#include "compositing/environment_source.h"
-#include "compositing/environment_techniques.h"
-#include "compositing/light_passes.h"
+#include "shadows/environment/environment_techniques.h"
+#include "shadows/environment/light_passes.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
 
 ShadowOutputs runAdditive(const ShadowInputs& in) {
+    const SampledLightSettings settings = sampledLightSettingsTable().read(in.params);
     StageTimer timer;
-    const std::vector<EnvironmentLight> lights = sampleLights(in.prepared, in.params);
-    const LightLobes lobes = in.params.choice<LightLobes>("light-lobes");
+    const std::vector<EnvironmentLight> lights = sampleLights(in.prepared, settings.sampling);
+    const LightLobes lobes = settings.lobes;
     timer.lap("sampling");
-    LightVisibility visibility(in);
+    LightVisibility visibility(in, settings.visibility);
     const GBuffer& g = in.gbuffer;
     ShadowOutputs out;
     out.radiance.assign(g.pixelCount(), glm::vec3(0.0f));
@@ -27,30 +26,30 @@ ShadowOutputs runAdditive(const ShadowInputs& in) {
     return out;
 }
 
-Technique additive(std::string name, std::string description, int lights, const char* visibility) {
-    std::vector<ParamSpec> params = {environmentLightsParam(lights), lightSamplerParam(), lightLobesParam()};
-    for (ParamSpec& p : visibilityParams(visibility)) params.push_back(std::move(p));
+Technique additive(std::string name, std::string description, const SampledLightSettings& defaults) {
     return {.name = std::move(name),
             .description = std::move(description),
-            .params = std::move(params),
+            .params = sampledLightSettingsTable().specs(defaults),
             .run = runAdditive,
             .referenceName = "reference-env",
             .output = TechniqueOutput::Radiance,
-            .prepare = prepareSampledLights};
+            .prepare = [](const PreparedScene& prepared, const PreparedScene& casters, const TechniqueParams& params) {
+                return prepareSampledLights(prepared, casters, sampledLightSettingsTable().read(params));
+            }};
 }
 
 }  // namespace
 
 Technique environmentAdditiveTechnique() {
     return additive("env-additive",
-                    "environment light, additive: N lights sampled from the map, each shaded where it is visible", 40,
-                    "shadow-map");
+                    "environment light, additive: N lights sampled from the map, each shaded where it is visible",
+                    {.sampling = {.count = 40}, .visibility = {.method = VisibilityMethod::ShadowMap}});
 }
 
 Technique environmentLightsReferenceTechnique() {
     return additive("reference-env-lights",
-                    "environment light by 1000 lights sampled from the map, with exact visibility (the paper's reference)", 1000,
-                    "exact");
+                    "environment light by 1000 lights sampled from the map, with exact visibility (the paper's reference)",
+                    {.sampling = {.count = 1000}, .visibility = {.method = VisibilityMethod::Exact}});
 }
 
 }  // namespace shadowlab

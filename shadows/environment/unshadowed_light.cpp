@@ -1,4 +1,4 @@
-#include "compositing/unshadowed_light.h"
+#include "shadows/environment/unshadowed_light.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -6,19 +6,31 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "compositing/environment_source.h"
 #include "scenes/error_text.h"
 #include "shading/environment/radiance_cache.h"
+#include "shadows/environment/environment_source.h"
 
 namespace shadowlab {
 
-std::vector<ParamSpec> unshadowedParams() {
-    return {choiceParam<UnshadowedMethod>(
-                "unshadowed", "tables",
-                {{"tables", UnshadowedMethod::Tables, "SH irradiance and prefiltered lobes (Lambert, Phong, GGX)"},
-                 {"radiance-cache", UnshadowedMethod::RadianceCache, "a table over normals per material and frame, any BRDF"}},
-                "how C, the unshadowed light, is computed"),
-            integerParam("cache-size", 128, 2, 1024, "radiance-cache: texels a side of each material's table")};
+const SettingsTable<UnshadowedSettings>& unshadowedSettingsTable() {
+    using S = UnshadowedSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .choice("unshadowed", member(&S::method),
+                    {{"tables", UnshadowedMethod::Tables, "SH irradiance and prefiltered lobes (Lambert, Phong, GGX)"},
+                     {"radiance-cache", UnshadowedMethod::RadianceCache,
+                      "a table over normals per material and frame, any BRDF"}},
+                    "how C, the unshadowed light, is computed")
+            .integer("cache-size", member(&S::cacheSize), 2, 1024, "radiance-cache: texels a side of each material's table");
+    return table;
+}
+
+std::vector<TechniqueStat> prepareUnshadowedLight(const PreparedScene& prepared, const UnshadowedSettings& settings) {
+    if (settings.method != UnshadowedMethod::Tables) return {};
+    std::optional<double> ms;
+    sceneLocalIllumination(prepared, &ms);
+    if (ms) return {{"local_illumination_ms", *ms}};
+    return {};
 }
 
 namespace {
@@ -49,8 +61,8 @@ std::vector<glm::vec3> perPixel(const ShadowInputs& in, const Lookup& at) {
 
 }  // namespace
 
-void refuseUnservedMaterials(const ShadowInputs& in) {
-    if (in.params.choice<UnshadowedMethod>("unshadowed") != UnshadowedMethod::Tables) return;
+void refuseUnservedMaterials(const ShadowInputs& in, const UnshadowedSettings& settings) {
+    if (settings.method != UnshadowedMethod::Tables) return;
     const std::vector<Material>& materials = in.scene().materials;
     const std::vector<bool> visible = visibleMaterials(in.gbuffer, materials.size());
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
@@ -62,9 +74,10 @@ void refuseUnservedMaterials(const ShadowInputs& in) {
     }
 }
 
-std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<TechniqueStat>& stats) {
+std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, const UnshadowedSettings& settings,
+                                       std::vector<TechniqueStat>& stats) {
     const std::vector<Material>& materials = in.scene().materials;
-    if (in.params.choice<UnshadowedMethod>("unshadowed") == UnshadowedMethod::Tables) {
+    if (settings.method == UnshadowedMethod::Tables) {
         const LocalIllumination& local = sceneLocalIllumination(in.prepared);
         return perPixel(in, [&](uint32_t m, const glm::dvec3& N, const glm::dvec3& wo) {
             return unshadowedRadiance(local, materials[m], N, wo);
@@ -76,7 +89,7 @@ std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, std::vector<Techn
     const glm::dvec3 toViewer = glm::normalize(glm::dvec3(camera.eye) - glm::dvec3(camera.target));
     std::vector<RadianceCache> caches(materials.size());
     for (size_t m = 0; m < materials.size(); ++m) {
-        if (visible[m]) caches[m] = buildRadianceCache(map, scenePyramid(in.prepared), materials[m], toViewer, in.params.integer("cache-size"));
+        if (visible[m]) caches[m] = buildRadianceCache(map, scenePyramid(in.prepared), materials[m], toViewer, settings.cacheSize);
     }
     stats.push_back({"radiance_caches_count", double(std::count(visible.begin(), visible.end(), true))});
     return perPixel(in, [&](uint32_t m, const glm::dvec3& N, const glm::dvec3&) { return lookupRadianceCache(caches[m], N); });

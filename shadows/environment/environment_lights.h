@@ -12,21 +12,30 @@
 #include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
 #include "shading/environment/median_cut.h"
-#include "shadows/technique_params.h"
+#include "shadows/settings_table.h"
+#include "shadows/technique.h"
 
 namespace shadowlab {
 
 enum class LightSampler { MedianCut, Structured };
 
-// The `lights` parameter, N, with its default, and the `sampler` parameter.
-ParamSpec environmentLightsParam(int defaultCount);
-ParamSpec lightSamplerParam();
+struct LightSamplingSettings {
+    int count = 40;   // N
+    LightSampler sampler = LightSampler::MedianCut;
+};
 
-// The N lights of the `lights` and `sampler` parameters from the scene's map (structured
-// sampling works on its pyramid, built once per scene). `regionOfTexel`, if given,
-// receives each map texel's light (drawing the regions, environment_debug.h).
-std::vector<EnvironmentLight> sampleLights(const PreparedScene& prepared, const TechniqueParams& params,
+// The parameters `lights` (N) and `sampler`.
+const SettingsTable<LightSamplingSettings>& lightSamplingSettingsTable();
+
+// The N lights from the scene's map (structured sampling works on its pyramid, built once
+// per scene). `regionOfTexel`, if given, receives each map texel's light (drawing the
+// regions, environment_debug.h).
+std::vector<EnvironmentLight> sampleLights(const PreparedScene& prepared, const LightSamplingSettings& settings,
                                            std::vector<uint32_t>* regionOfTexel = nullptr);
+
+// Technique::prepare's part for the sampling: the map (`environment_ms`) and, for
+// structured sampling, its pyramid (`environment_pyramid_ms`), each built once per scene.
+std::vector<TechniqueStat> prepareLightSampling(const PreparedScene& prepared, const LightSamplingSettings& settings);
 
 // The light as the shadow techniques see it: directional, towards the region's centroid,
 // its irradiance at normal incidence the region's power.

@@ -1,10 +1,12 @@
 // The registry: every technique of every family, in the order `shadowlab techniques` lists
-// them. The one core file that includes the families (docs/architecture.md).
+// them. The one file that includes every family (docs/architecture.md).
+#include "frame/registry.h"
+
 #include <stdexcept>
 
-#include "compositing/environment_techniques.h"
 #include "shadows/backprojection/backprojection.h"
 #include "shadows/deep/deep_techniques.h"
+#include "shadows/environment/environment_techniques.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/fins/fins.h"
 #include "shadows/hybrid/izb_pcss.h"
@@ -14,7 +16,6 @@
 #include "shadows/projected/projected_texture.h"
 #include "shadows/reference/reference_techniques.h"
 #include "shadows/screen/contact_shadows.h"
-#include "shadows/technique.h"
 #include "shadows/volumes/shadow_volume.h"
 #include "shadows/wedges/soft_shadow_volumes.h"
 

@@ -14,9 +14,10 @@
 
 #include <tbb/global_control.h>
 
-#include "compositing/bilateral_upsample.h"
+#include "frame/registry.h"
 #include "frame/score.h"
-#include "tests/compositing/environment_scenes.h"
+#include "shadows/environment/bilateral_upsample.h"
+#include "tests/environment/environment_scenes.h"
 #include "tests/same_bits.h"
 
 using namespace shadowlab;

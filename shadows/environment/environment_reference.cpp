@@ -26,14 +26,15 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "compositing/environment_source.h"
-#include "compositing/environment_techniques.h"
-#include "compositing/light_contribution.h"
 #include "shading/brdf_sampling.h"
 #include "shading/environment/environment_distribution.h"
 #include "shading/light_sampling.h"
 #include "shading/shade.h"
+#include "shadows/environment/environment_source.h"
+#include "shadows/environment/environment_techniques.h"
+#include "shadows/environment/light_contribution.h"
 #include "shadows/reference/reference.h"
+#include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
@@ -80,8 +81,19 @@ glm::dvec3 estimate(const Integrand& integrand, int rounds, Pcg32 rng) {
     return sum / double(rounds);
 }
 
+struct ExactIntegralSettings {
+    int samples = 1024;   // per pixel and strategy, environment and BRDF (even: two halves)
+};
+
+const SettingsTable<ExactIntegralSettings>& exactIntegralSettingsTable() {
+    static const auto table = SettingsTable<ExactIntegralSettings>().integer(
+        "samples", member(&ExactIntegralSettings::samples), 2, 1 << 20,
+        "samples per pixel of each strategy, environment and BRDF (even: two halves)");
+    return table;
+}
+
 ShadowOutputs runExactIntegral(const ShadowInputs& in) {
-    const int samples = in.params.integer("samples");
+    const int samples = exactIntegralSettingsTable().read(in.params).samples;
     if (samples % 2 != 0) throw std::invalid_argument("reference-env: samples must be even (two halves)");
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
@@ -137,12 +149,13 @@ Technique environmentReferenceTechnique() {
     return {.name = "reference-env",
             .description = "exact environment light: the integral of BRDF, environment and Embree visibility by "
                            "multiple importance sampling, in two independent halves",
-            .params = {integerParam("samples", 1024, 2, 1 << 20,
-                                    "samples per pixel of each strategy, environment and BRDF (even: two halves)")},
+            .params = exactIntegralSettingsTable().specs(),
             .run = runExactIntegral,
             .referenceName = "reference-env",
             .output = TechniqueOutput::Radiance,
-            .prepare = prepareEnvironment};
+            .prepare = [](const PreparedScene& prepared, const PreparedScene&, const TechniqueParams&) {
+                return prepareEnvironment(prepared);
+            }};
 }
 
 }  // namespace shadowlab

@@ -15,14 +15,29 @@
 
 #include <glm/glm.hpp>
 
-#include "compositing/light_contribution.h"
-#include "compositing/light_lobes.h"
-#include "compositing/light_visibility.h"
 #include "shading/environment/median_cut.h"
+#include "shadows/environment/environment_lights.h"
+#include "shadows/environment/light_contribution.h"
+#include "shadows/environment/light_lobes.h"
+#include "shadows/environment/light_visibility.h"
+#include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
+
+// The settings of the sampled lights' passes, which the additive and subtractive techniques share.
+struct SampledLightSettings {
+    LightSamplingSettings sampling;           // `lights`, `sampler`
+    LightLobes lobes = LightLobes::Point;     // `light-lobes`
+    LightVisibilitySettings visibility;       // `visibility`, `resolution`
+};
+
+const SettingsTable<SampledLightSettings>& sampledLightSettingsTable();
+
+// Technique::prepare's part: the sampling's and the visibility's.
+std::vector<TechniqueStat> prepareSampledLights(const PreparedScene& prepared, const PreparedScene& casters,
+                                                const SampledLightSettings& settings);
 
 // Adds every sampled light's `part` to `sum` (one entry per pixel of g, the view seen by
 // `camera`); returns the pixels shaded. Times the stages `visibility` and, for the lit part,

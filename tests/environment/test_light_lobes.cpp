@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "compositing/light_lobes.h"
-#include "tests/compositing/environment_scenes.h"
+#include "shadows/environment/light_lobes.h"
+#include "tests/environment/environment_scenes.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;

@@ -1,4 +1,4 @@
-#include "compositing/bilateral_upsample.h"
+#include "shadows/environment/bilateral_upsample.h"
 
 #include <algorithm>
 #include <atomic>
