@@ -1,4 +1,4 @@
-// The report's pages as HTML (report_site.h collects what they show). Each stands without
+// The report's pages as HTML (report_collect.h collects what they show). Each stands without
 // JavaScript: pictures side by side, plain tables, plots whose points are links;
 // report.js adds the before/after slider and sorting by any column. The zoom (whole
 // pixels, `image-rendering: pixelated`) is CSS alone.
@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "app/report_site.h"
+#include "app/report_collect.h"
 
 namespace shadowlab {
 

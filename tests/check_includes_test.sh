@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The include check must fail where a family includes another the rule does not name,
-# and pass where the include is allowed: a planted violation in a scratch tree.
+# The include check must fail where a family includes another the rule does not name, where
+# files include each other, and where the rule lets two folders include each other;
+# and pass where the include is allowed: planted violations in a scratch tree.
 set -euo pipefail
 source_dir=$1 scratch=$2
 rm -rf "$scratch" && mkdir -p "$scratch/docs" "$scratch/shadows/izb" "$scratch/shadows/volumes"
@@ -14,3 +15,23 @@ fi
 grep -q '^shadows/izb/planted.cpp:1: includes shadows/reference/reference.h' <<<"$output" ||
     { echo "FAIL: the violation was not named: $output"; exit 1; }
 echo "the check names the planted violation: $output"
+# Files that include each other, even in one folder, are a cycle the rule cannot see.
+rm "$scratch/shadows/izb/planted.cpp"
+printf '#include "shadows/izb/b.h"\n' > "$scratch/shadows/izb/a.h"
+printf '#include "shadows/izb/a.h"\n' > "$scratch/shadows/izb/b.cpp"
+if output=$(python3 "$source_dir/scripts/check_includes.py" "$scratch"); then
+    echo "FAIL: two files including each other passed the check"; exit 1
+fi
+grep -q '^include cycle: shadows/izb/a -> shadows/izb/b -> shadows/izb/a$' <<<"$output" ||
+    { echo "FAIL: the cycle was not named: $output"; exit 1; }
+echo "the check names the planted cycle: $output"
+# A rule that lets two folders include each other is refused.
+rm "$scratch/shadows/izb/a.h" "$scratch/shadows/izb/b.cpp"
+sed -i 's#^shadows/izb: shadows$#shadows/izb: shadows shadows/maps#; s#^shadows/maps: shadows$#shadows/maps: shadows shadows/izb#' \
+    "$scratch/docs/architecture.md"
+if output=$(python3 "$source_dir/scripts/check_includes.py" "$scratch"); then
+    echo "FAIL: a rule letting two folders include each other passed the check"; exit 1
+fi
+grep -q 'the rule lets shadows/izb and shadows/maps include each other' <<<"$output" ||
+    { echo "FAIL: the mutual rule was not named: $output"; exit 1; }
+echo "the check names the mutual rule: $output"

@@ -10,9 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/report_collect.h"
 #include "app/report_site.h"
 #include "app/sweep_json.h"
 #include "frame/score.h"
+#include "frame/score_json.h"
 #include "scenes/read_file.h"
 #include "scenes/write_file.h"
 #include "shading/image_io.h"
