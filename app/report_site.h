@@ -1,5 +1,5 @@
 // `shadowlab report`: a static HTML site of sweep and render results, readable from
-// file:// with nothing fetched from elsewhere (README, "Report"). Its stages: the inputs
+// file:// with nothing fetched from elsewhere (docs/report.md). Its stages: the inputs
 // read (sweep JSONs, and render --error-map --json files, each a sweep of one row), every
 // setting given a page and its pictures copied into the site (this file); then the pages
 // (report_pages.h), with the stylesheet and script the program carries (report_assets.h).
