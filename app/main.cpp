@@ -1,4 +1,4 @@
-// shadowlab: renders, compares and benchmarks shadow techniques (README, "Commands").
+// shadowlab: renders, compares and benchmarks shadow techniques (docs/commands.md).
 // Every command exits non-zero with a one-line error on bad input, and writes its output
 // files whole or not at all.
 #include <cmath>

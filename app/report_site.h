@@ -1,5 +1,5 @@
 // `shadowlab report`: a static HTML site of sweep and render results, readable from
-// file:// with nothing fetched from elsewhere (README, "Report"). Its stages: the inputs
+// file:// with nothing fetched from elsewhere (docs/report.md). Its stages: the inputs
 // collected (report_collect.h), the pages drawn (report_pages.h), and the site written
 // whole with the stylesheet and script the program carries (report_assets.h).
 #pragma once

@@ -1,7 +1,8 @@
 // `shadowlab scaling`: a technique's time against the polygon count over a series of
 // scenes, fitted as t = a + b n by least squares. Cai et al. (2006), "Rendering soft
 // shadows using multi-layered shadow fins", section 7.4, eq. 8, fit their fins' time this
-// way (n: polygons of the model, 16 layers); the README compares their fit with ours.
+// way (n: polygons of the model, 16 layers); docs/performance.md ("Scaling with the polygon
+// count") compares their fit with ours.
 //
 // n is every triangle of the scene (flatten()); the scenes of scenes/scaling/ stand their
 // models on a two-triangle ground, so n is the model's count plus 2. Times are measured as

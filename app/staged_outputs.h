@@ -1,4 +1,4 @@
-// A command's output files, whole or not at all (README, "Reliability"). The command writes
+// A command's output files, whole or not at all (docs/reliability.md, "Reliability"). The command writes
 // every file into a staging folder inside its destination folder (so on the same file
 // system); commit() checks every destination first (no folder where a file goes, no file
 // where a folder must be), then moves each file into place with rename(), which is atomic.

@@ -9,7 +9,7 @@
 // setting's visibility is scored against its technique's (conventions.md, "Figures and
 // errors").
 //
-// A sweep may run as shards on many machines (--shard i/n, README "Commands"): shard i
+// A sweep may run as shards on many machines (--shard i/n, docs/commands.md, "A sweep on a cluster"): shard i
 // runs the settings whose index k in the sweep's fixed order has k mod n == i - 1, each at
 // every thread count, and renders the references itself; app/sweep_merge.h joins the
 // shards' JSON into the results of the unsharded run.

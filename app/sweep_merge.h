@@ -1,8 +1,8 @@
 // `shadowlab merge-sweep`: the JSON files of a sweep's shards (`sweep --shard i/n`) joined
 // into the results of the unsharded run, rows in its order. They equal that run's in
 // everything but the measured times (median_ms, min_ms and the stats' *_ms): the error
-// figures, stats and references are the same bytes on every machine (README,
-// "Determinism"), the times are each machine's own.
+// figures, stats and references are the same bytes on every machine (docs/determinism.md),
+// the times are each machine's own.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Elementary functions that give the same bits on every x86-64 CPU (README, "Determinism").
+// Elementary functions that give the same bits on every x86-64 CPU (docs/determinism.md).
 //
 // glibc picks among several builds of exp, log, pow, sin, cos, tan and acos at run time
 // (with or without FMA, AVX2) and they differ in the last bit for some arguments: set

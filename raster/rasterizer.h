@@ -2,7 +2,7 @@
 //   vertex stage -> clipping -> setup -> binning   (front end, parallel over triangle chunks)
 //   per-tile rasterization                          (back end, parallel over tiles)
 // and returns when the framebuffer holds the result. Output is byte-identical for any
-// thread count and any SIMD level (README, "Determinism").
+// thread count and any SIMD level (docs/determinism.md).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Text in error messages. Every error is one line (README, "Reliability"): a name or a
+// Text in error messages. Every error is one line (docs/reliability.md, "Reliability"): a name or a
 // path the user wrote is quoted with its control characters escaped, so that a newline in
 // a JSON key or a file name cannot split the message, and the printer escapes whatever
 // control character is left.

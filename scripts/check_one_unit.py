@@ -3,7 +3,7 @@
 
     scripts/check_one_unit.py SOURCE_DIR SCRATCH_DIR [CXX_COMPILER]
 
-The build compiles each target's files in batches of eight (CMake's unity build, README
+The build compiles each target's files in batches of eight (CMake's unity build, docs/building.md,
 "Build time"), so the names a file keeps to itself, in its unnamed namespace, share a unit
 with the rest of its batch. Two files that define the same such name compile only while
 they fall in different batches, and a file added elsewhere may put them together. This

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The build's CPU time, per translation unit and link (README, "Build time").
+"""The build's CPU time, per translation unit and link (docs/building.md, "Build time").
 
     scripts/compile_times.py [--build DIR] [--target T ...] [--top N] [-- cmake options]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints the README's and docs/differential-rendering.md's tables from the composite.json
+"""Prints docs/performance.md's and docs/differential-rendering.md's tables from the composite.json
 files `scripts/figures.sh differential` writes (shadowlab composite): per case and number
 of passes n, the mean over the frames of the median ms per frame at 1 and 2 threads and of
 the RMS against the reference; the preprocessing figures; the deepest shadow along a path.

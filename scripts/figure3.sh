@@ -8,7 +8,7 @@
 # luminance), one untimed frame each at 2 threads; then the times, median ms at 1 and 2
 # threads, in a pass scored against the paper's own reference (reference-env-lights: 1000
 # lights, exact visibility), whose RMS it also gives. Errors are the same bytes on any
-# machine and thread count (README, "Determinism"); only the timed pass needs a quiet
+# machine and thread count (docs/determinism.md); only the timed pass needs a quiet
 # machine. Prints the markdown table of docs/subtractive-shadows.md.
 # Usage: scripts/figure3.sh [OUT_DIR] [SCENE ...]   (all four scenes: about two hours on 2
 # cores, most of it the exact references; PASSES=errors or PASSES=times for one pass

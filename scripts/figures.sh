@@ -1,11 +1,11 @@
 #!/bin/sh
-# Reproduces every speed and error figure in the README: the hard- and soft-shadow sweeps,
+# Reproduces every speed and error figure in docs/performance.md: the hard- and soft-shadow sweeps,
 # every hard case, the shadow map's bias-by-resolution grid, Figure 7's torus and the eq. 8
 # scaling fit, the environment techniques' images and buffers, and speed against error by
 # caster level of detail, and differential rendering into photographs (the Figure 3 table is
 # scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
-# docs show into docs/images, and prints the README's tables. Takes about 10 minutes on 2
-# cores, more for the sweeps' pictures (README, "Report"), and ten minutes for the
+# docs show into docs/images, and prints docs/performance.md's tables. Takes about 10 minutes on 2
+# cores, more for the sweeps' pictures (docs/report.md), and ten minutes for the
 # fly-throughs; run nothing else meanwhile (times are medians, but a busy machine still
 # moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
@@ -113,7 +113,7 @@ for part in $parts; do
     done
     ;;
   bench)
-    # Depth-only passes and reference rays on the built-in scenes (README, "Performance").
+    # Depth-only passes and reference rays on the built-in scenes (docs/performance.md, "Performance").
     $app bench --runs 21 --json $out/bench.json
     build/bench/bench_stages --benchmark_filter=BM_RasterTiles --benchmark_repetitions=5 \
       --benchmark_report_aggregates_only=true
@@ -138,9 +138,10 @@ for part in $parts; do
     done
     ;;
   lod)
-    # Caster level of detail (README, "Caster level of detail"): the casters simplified to
-    # a share of their triangles, the receivers whole; speed against error per ratio, for
-    # hard, soft and environment shadows, and the bunny's shadow at three ratios.
+    # Caster level of detail (docs/performance.md, "Shadow level of detail: simplified
+    # casters"): the casters simplified to a share of their triangles, the receivers whole;
+    # speed against error per ratio, for hard, soft and environment shadows, and the bunny's
+    # shadow at three ratios.
     ratios=1,0.5,0.25,0.1,0.05,0.02,0.01
     $app sweep bunny --images --technique shadow-map,izb,shadow-volume --caster-lod $ratios --threads 2 --runs 11 --out $out/lod
     python3 $table $out/lod/bunny-shadow-map+izb+shadow-volume.csv hard
@@ -277,7 +278,8 @@ for part in $parts; do
     ;;
   flythrough)
     # Shadows in motion (docs/flythrough.md): per-frame time, error and flicker along the
-    # built-in paths, at 640 x 400 and 2 threads; the README's flicker table.
+    # built-in paths, at 640 x 400 and 2 threads; the flicker table of
+    # docs/performance.md and docs/flythrough.md.
     f=$out/flythrough
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
     for move in dolly slide; do

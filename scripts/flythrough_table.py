@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints the README's flicker table (Markdown) from `shadowlab flythrough` JSON files:
+"""Prints the flicker table of docs/performance.md and docs/flythrough.md (Markdown) from `shadowlab flythrough` JSON files:
 one row per series with its path's median time, mean RMS and misclassified share, and
 its flicker mean and 99th percentile (docs/conventions.md, "Flicker").
 usage: scripts/flythrough_table.py FLYTHROUGH.json [...]"""

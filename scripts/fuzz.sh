@@ -10,7 +10,7 @@
 #
 #   scripts/fuzz.sh [build-dir] [seconds per target] [targets...]
 #
-# .ci/run gives each target 20 s from its seeds; README "Reliability" says how to run them
+# .ci/run gives each target 20 s from its seeds; docs/reliability.md ("Reliability") says how to run them
 # for hours.
 # SHADOWLAB_FUZZ_FLAGS adds libFuzzer flags after the defaults (a later flag wins): on a
 # busy machine, -timeout=60, since the timeout is wall-clock time.

@@ -13,7 +13,7 @@
 # Left out here, each checked in the ordinary build: the golden runs with 1 and 8 threads
 # (with 2 threads every SIMD level's kernels still run under both sanitizers) and the golden
 # runs again with glibc's non-FMA math (the same code, only glibc's choice of its own
-# routines differs); SHADOWLAB_SANITIZE_ALL=1 runs them too (README, "Reliability"). The
+# routines differs); SHADOWLAB_SANITIZE_ALL=1 runs them too (docs/reliability.md, "Reliability"). The
 # peer benchmark's check is always left out: it drives Mesa's uninstrumented llvmpipe.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Turns the CSV rows of `shadowlab sweep` into the README's markdown table: one row per
+"""Turns the CSV rows of `shadowlab sweep` into docs/performance.md's markdown table: one row per
 technique and settings, the median ms at each thread count side by side, and the error
 figures (the same at every thread count; the first row's are shown).
 

@@ -2,7 +2,7 @@
 // (shadow_bias.cpp) and the float one (lookup_kernel.inl). Plain constants only: the
 // per-instruction-set kernels include it.
 //
-// The rasterizer snaps vertices to 1/256 texel (README, "Setup"), so a stored depth is the
+// The rasterizer snaps vertices to 1/256 texel (docs/rasterizer.md, "Setup"), so a stored depth is the
 // depth of a plane through vertices moved by up to 1/512 texel in x and y: at most
 // (|dz/dx| + |dz/dy|) / 512 away from the true plane there. The float transform of the
 // vertices adds well under 1e-3 texel at 8192 texels. Twice the snapping bound covers both.

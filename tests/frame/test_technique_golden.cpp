@@ -1,6 +1,6 @@
 // Golden hashes of every technique's output: V and the stencil image of each case below,
 // hashed byte for byte and compared with tests/golden/techniques.hash, at every SIMD level
-// and with 1, 2 and 8 threads (README, "Determinism": one set of bytes for all of them).
+// and with 1, 2 and 8 threads (docs/determinism.md: one set of bytes for all of them).
 // A change of structure must leave them all alone; a change that means to alter bits (a
 // new precision, a fixed bug) records new ones with SHADOWLAB_UPDATE_GOLDEN=1 (scalar, one
 // thread) and says why in its commit.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The determinism contract (README, "Determinism"): no fused multiply-add and no approximate
+# The determinism contract (docs/determinism.md): no fused multiply-add and no approximate
 # reciprocal or reciprocal square root anywhere in the libraries' machine code, in any of the
 # per-ISA units (the AVX-512 ones could fuse if contraction were ever allowed), whatever the
 # compiler chose. Usage: no_fused_instructions.sh LIBRARY.a ...

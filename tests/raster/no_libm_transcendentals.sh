@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Determinism across CPUs (README, "Determinism"): glibc picks FMA or plain builds of its
+# Determinism across CPUs (docs/determinism.md): glibc picks FMA or plain builds of its
 # transcendental functions at run time and their last bits differ, so no library calls
 # them; output paths use raster/portable_math.h. The check reads the libraries' undefined
 # symbols (sqrt, floor, fmod, ldexp and frexp are exact and allowed). Before the portable

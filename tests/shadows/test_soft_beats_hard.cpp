@@ -53,7 +53,7 @@ struct Score {
     double rmsRatio, penumbraRatio;   // of the hard shadow's RMS, of the reference's penumbra pixels
 };
 
-// Runs a technique, scores it and prints the score (the README's table: test_shadows
+// Runs a technique, scores it and prints the score (docs/performance.md's table: test_shadows
 // -tc="soft techniques against the hard shadow*" -s | grep MESSAGE).
 Score score(const HardAndSoft& h, const std::string& scene, const Run& run) {
     Score result{h.s.run(run.technique, run.params).visibility, 0.0, 0.0};
@@ -145,7 +145,7 @@ TEST_CASE("soft techniques against the hard shadow: sharp-corner") { checkScene(
 // Where the penumbra is widest, only some keep the promise: under the large light PCSS's
 // blocker search misses far blockers (RMS 0.77 of the hard shadow's), fins reach 0.86, the
 // width=pcss moment maps 0.79 to 1.07; on the tilted receiver fins reach 0.71 and the
-// width=pcss VSM's penumbra is 0.67 of the reference's (README, "Soft shadows").
+// width=pcss VSM's penumbra is 0.67 of the reference's (docs/performance.md, "Soft shadows").
 TEST_CASE("soft techniques against the hard shadow: large-light") {
     checkScene("large-light", onlyPrinted(kWidthEstimating, {"pcss", "fins", "vsm", "msm", "evsm"}));
 }

@@ -434,7 +434,7 @@ TEST_CASE("fins: 16 layers keep the light out of the green plane's umbra, one la
     const UmbraErrors sixteen = umbraErrors(s, s.run("fins").visibility);
     INFO("light in the umbra: " << one.lightInUmbra << " (1 layer), " << sixteen.lightInUmbra << " (16 layers); RMS "
                                 << one.rms << ", " << sixteen.rms);
-    // The README's Figure 7 reports 0.55% and 0.003% of the hit pixels lit in the umbra (640 x
+    // docs/performance.md's Figure 7 reports 0.55% and 0.003% of the hit pixels lit in the umbra (640 x
     // 400); here, at 320 x 200, 213 and 2 of 39296. One layer must leak about as much, 16
     // layers must keep the umbra within a hundredth of a percent.
     const double hit = double(std::count(s.gbuffer.hit.begin(), s.gbuffer.hit.end(), uint8_t(1)));
