@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <utility>
@@ -43,15 +44,17 @@ struct HardScene {
 
     Light light() const { return pointLightFor(scene.lights[0]); }
 
+    // With `debugDir`, the technique's intermediate buffers are written there.
     ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {},
-                      raster::SimdLevel simd = raster::bestSimdLevel()) const {
+                      raster::SimdLevel simd = raster::bestSimdLevel(), const std::filesystem::path& debugDir = {}) const {
         const Technique& t = findTechnique(technique);
         const TechniqueParams params(t.name, t.params, given);
         return t.run({.prepared = prepared,
                       .gbuffer = gbuffer,
                       .light = scene.lights[0],
                       .simd = simd,
-                      .params = params});
+                      .params = params,
+                      .debugDir = debugDir});
     }
 };
 

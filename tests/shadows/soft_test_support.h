@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -27,14 +28,17 @@ struct SoftScene {
         : prepared(std::move(s)), scene(prepared.scene()), world(prepared.world()), gbuffer(renderGBuffer(world, scene.camera, raster::bestSimdLevel())),
           reference(ReferenceVisibility(world).visibility(gbuffer, scene.lights[0], {.areaSamplesPerAxis = samplesPerAxis})) {}
 
-    ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {}) const {
+    // With `debugDir`, the technique's intermediate buffers are written there.
+    ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {},
+                      const std::filesystem::path& debugDir = {}) const {
         const Technique& t = findTechnique(technique);
         const TechniqueParams params(t.name, t.params, given);
         return t.run({.prepared = prepared,
                       .gbuffer = gbuffer,
                       .light = scene.lights[0],
                       .simd = raster::bestSimdLevel(),
-                      .params = params});
+                      .params = params,
+                      .debugDir = debugDir});
     }
 
     double rms(const std::vector<float>& v) const {

@@ -100,15 +100,7 @@ TEST_CASE("izb-pcss on branch-over-crate: within its bound, better than PCSS, ex
 TEST_CASE("izb-pcss: the blend weight follows the occluder distance, and the debug buffers show the parts") {
     const SoftScene& s = scene();
     const ScratchDirectory dir("izb-pcss-debug");
-    const Technique& t = findTechnique("izb-pcss");
-    const TechniqueParams params(t.name, t.params, {});
-    const ShadowOutputs out =
-        t.run({.prepared = s.prepared,
-               .gbuffer = s.gbuffer,
-               .light = s.scene.lights[0],
-               .simd = raster::bestSimdLevel(),
-               .params = params,
-               .debugDir = dir.path});
+    const ShadowOutputs out = s.run("izb-pcss", {}, dir.path);
     for (const char* file : {"izb-pcss-blend-weight.exr", "izb-pcss-izb.png", "izb-pcss-pcss.png"}) {
         INFO(file);
         CHECK(std::filesystem::exists(dir.path / file));

@@ -162,14 +162,7 @@ TEST_CASE("contact-shadows: the debug buffers hold the mask and the chosen pixel
     scene.camera.width = 160, scene.camera.height = 100;
     const HardScene s(std::move(scene));
     const ScratchDirectory dir("contact-shadows-debug");
-    const Technique& t = findTechnique("contact-shadows");
-    const TechniqueParams params(t.name, t.params, {});
-    t.run({.prepared = s.prepared,
-           .gbuffer = s.gbuffer,
-           .light = s.scene.lights[0],
-           .simd = raster::bestSimdLevel(),
-           .params = params,
-           .debugDir = dir.path});
+    s.run("contact-shadows", {}, raster::bestSimdLevel(), dir.path);
     for (const char* file : {"contact-shadows-march-mask.exr", "contact-shadows-march-mask.png",
                              "contact-shadows-march-path.png", "contact-shadows-march.csv",
                              "contact-shadows-march.svg", "contact-shadows-shadow-map/shadow-map-depth.png"}) {
