@@ -294,7 +294,7 @@ nlohmann::ordered_json runFrame(Run& run, int k, std::span<const glm::mat4> plac
     for (size_t i = 0; i < a.passes.size(); ++i) {
         const int n = a.passes[i];
         CompositeSettings settings;
-        settings.passes = n, settings.mapSize = a.mapSize, settings.ldr = a.ldr, settings.keepMasks = a.masks;
+        settings.passes = n, settings.resolution = a.resolution, settings.ldr = a.ldr, settings.keepMasks = a.masks;
         double ms = 0.0;
         const CompositeFrame frame = timedFrame(m, run.object, placement, settings, a, ms);
         const std::string name = frameName(k, n);
@@ -344,7 +344,7 @@ void run(const CompositeArgs& a) {
     writeImage(dir, "background", m, m.background, false);
     nlohmann::ordered_json json = {{"case", scene.name}, {"width", m.camera.width}, {"height", m.camera.height},
                                    {"source_share", a.sourceShare}, {"significance", a.significance},
-                                   {"reference_strata", a.referenceStrata}, {"map_texels", a.mapSize},
+                                   {"reference_strata", a.referenceStrata}, {"map_texels", a.resolution},
                                    {"runs", a.runs}, {"warmup_runs", a.warmupRuns},
                                    {"threads", a.threads}, {"preprocess_ms", preprocessMs},
                                    {"preprocess", statsJson(m.stats)}, {"frames", nlohmann::ordered_json::array()}};

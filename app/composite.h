@@ -17,7 +17,7 @@ struct CompositeArgs {
     std::string scene = "room";                 // room, room-lift, outdoor, chessboard
     std::vector<int> passes{10, 20, 50, 0};      // 0: one per occluded source ("all")
     std::vector<int> frames;                     // of the path; empty: every frame
-    int width = 640, height = 400, mapSize = 256, shadowTriangles = 300;
+    int width = 640, height = 400, resolution = 256, shadowTriangles = 300;
     int runs = 1, warmupRuns = 0, threads = 0;
     double sourceShare = 0.7, significance = 0.02;
     std::vector<int> referenceStrata{8, 2};   // per side of an emitting and of a reflecting patch

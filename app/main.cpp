@@ -575,7 +575,7 @@ void addCompositeCommand(CLI::App& app, CompositeArgs& a) {
     c->add_option("--frames", a.frames, "frames of the path (default: all)")->delimiter(',');
     c->add_option("--width", a.width, "image width")->capture_default_str()->check(CLI::Range(16, 4096));
     c->add_option("--height", a.height, "image height")->capture_default_str()->check(CLI::Range(16, 4096));
-    c->add_option("--map-size", a.mapSize, "texels per side of each cluster's shadow map")->capture_default_str()->check(CLI::Range(kMinMapResolution, kMaxMapResolution));
+    c->add_option("--resolution", a.resolution, "texels per side of each cluster's shadow map")->capture_default_str()->check(CLI::Range(kMinMapResolution, kMaxMapResolution));
     c->add_option("--shadow-triangles", a.shadowTriangles, "triangles of the object the maps draw")->capture_default_str()->check(CLI::Range(4, 1 << 24));
     c->add_option("--source-share", a.sourceShare, "share of the radiant power the source set holds")->capture_default_str()->check(CLI::Range(1e-6, 1.0));
     c->add_option("--significance", a.significance, "the shaft hierarchy leaves out less than this share of any vertex's light (the paper's 2% rule)")->capture_default_str()->check(CLI::Range(1e-6, 1.0));

@@ -137,7 +137,7 @@ std::vector<ClusterMap> clusterMaps(const DifferentialModel& m, const PreparedOb
     std::vector<ClusterMap> maps;
     for (const SourceCluster& cluster : out.clusters) {
         out.lights.push_back(clusterLight(m, cluster));
-        maps.push_back(clusterShadowMap(out.lights.back(), bound.centre, bound.radius, casters, settings.mapSize, settings.simd));
+        maps.push_back(clusterShadowMap(out.lights.back(), bound.centre, bound.radius, casters, settings.resolution, settings.simd));
     }
     return maps;
 }
@@ -209,8 +209,8 @@ PreparedObject prepareObject(const DifferentialModel& model, std::span<const Syn
 CompositeFrame compositeFrame(const DifferentialModel& m, const PreparedObject& object,
                               std::span<const glm::mat4> placements, const CompositeSettings& settings) {
     if (settings.passes < 0) throw std::invalid_argument("differential composite: passes must be 0 (all) or more");
-    if (settings.mapSize < kMinMapResolution || settings.mapSize > kMaxMapResolution) {
-        throw std::invalid_argument("differential composite: the map size is out of range");
+    if (settings.resolution < kMinMapResolution || settings.resolution > kMaxMapResolution) {
+        throw std::invalid_argument("differential composite: the maps' resolution is out of range");
     }
     requireFinitePlacements(placements, "differential composite");
     StageTimer timer;

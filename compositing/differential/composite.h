@@ -45,7 +45,7 @@ PreparedObject prepareObject(const DifferentialModel& model, std::span<const Syn
 
 struct CompositeSettings {
     int passes = 20;        // n, the shadow maps per frame; 0: one per occluded source ("all")
-    int mapSize = 256;      // texels per side of each map (the frustum holds only the object)
+    int resolution = 256;   // texels per side of each map (the frustum holds only the object)
     bool ldr = false;       // composite 8-bit intensities (section 7.1) instead of radiance
     bool keepMasks = false; // keep each cluster's mask for the debug views
     raster::SimdLevel simd = raster::bestSimdLevel();

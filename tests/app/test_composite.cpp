@@ -21,7 +21,7 @@ CompositeArgs tinyRoom(const test::ScratchDirectory& scratch) {
     a.passes = {10};
     a.width = 48;
     a.height = 30;
-    a.mapSize = 32;
+    a.resolution = 32;
     a.reference = false;
     a.threads = 1;
     a.outDir = scratch.path.string();

@@ -163,9 +163,9 @@ TEST_CASE("differential frame: bad settings and placements are refused") {
     const std::vector<glm::mat4> placement = placementsAt(room.scene.objects, 0);
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, passes(-1)), std::invalid_argument);
     CompositeSettings settings;
-    settings.mapSize = 8;
+    settings.resolution = 8;
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, settings), std::invalid_argument);
-    settings.mapSize = 1 << 20;
+    settings.resolution = 1 << 20;
     CHECK_THROWS_AS(compositeFrame(room.model, room.object, placement, settings), std::invalid_argument);
     std::vector<glm::mat4> notFinite = placement;
     notFinite[0][3].y = std::numeric_limits<float>::infinity();
