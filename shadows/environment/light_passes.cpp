@@ -1,7 +1,5 @@
 #include "shadows/environment/light_passes.h"
 
-#include "shadows/environment/environment_lights.h"
-
 namespace shadowlab {
 
 const SettingsTable<SampledLightSettings>& sampledLightSettingsTable() {
