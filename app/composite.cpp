@@ -10,22 +10,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compositing/differential/composite.h"
-#include "compositing/differential/compositing_inputs.h"
 #include "app/composite_plan.h"
-#include "app/staged_outputs.h"
 #include "app/line_plot.h"
-#include "compositing/differential/differential_reference.h"
-#include "compositing/differential/intensity_error.h"
-#include "compositing/differential/outdoor_case.h"
-#include "compositing/differential/photo_case.h"
+#include "app/staged_outputs.h"
+#include "differential/builtin_cases.h"
+#include "differential/composite.h"
+#include "differential/compositing_inputs.h"
+#include "differential/differential_reference.h"
+#include "differential/intensity_error.h"
+#include "differential/scene/compositing_file.h"
 #include "raster/thread_count.h"
-#include "scenes/compositing_cases.h"
-#include "scenes/compositing_file.h"
-#include "scenes/obj_reader.h"
 #include "scenes/scene_file.h"
 #include "scenes/write_file.h"
-#include "shading/environment/environment_file.h"
 #include "shading/image_io.h"
 #include "shading/luminance.h"
 
@@ -34,30 +30,15 @@ namespace {
 
 CompositingScene compositingCase(const CompositeArgs& a) {
     if (a.scene.ends_with(".json")) return readCompositingInputs(loadCompositingFile(a.scene));
-    const Mesh bunny = readObj(builtinSceneDir() + "/meshes/bunny_low.obj");
-    if (a.scene == "room") return compositingRoom(bunny, RoomPath::UnderDesk, a.width, a.height);
-    if (a.scene == "room-lift") return compositingRoom(bunny, RoomPath::Lift, a.width, a.height);
-    if (a.scene == "outdoor") {
-        OutdoorSettings settings;
-        settings.width = a.width, settings.height = a.height;
-        return compositingOutdoor(readEnvironmentMap(builtinSceneDir() + "/environments/blender_forest.exr"), bunny,
-                                  settings);
+    const std::vector<std::string>& names = builtinCompositingCaseNames();
+    if (std::ranges::find(names, a.scene) == names.end()) {
+        std::string known;
+        for (const std::string& name : names) known += name + ", ";
+        throw std::invalid_argument("composite: unknown case '" + a.scene + "' (" + known + "or a .json file)");
     }
-    if (a.scene == "chessboard") {
-        const std::string dir = builtinSceneDir() + "/photos/";
-        const PhotoCase c = compositingChessboard(
-            readImage8(dir + "chessboard_left05_undistorted.png"),
-            readPhotoCalibration(dir + "chessboard_left05_camera.txt"),
-            readEnvironmentMap(builtinSceneDir() + "/environments/blender_interior.exr"), bunny);
-        std::printf(
-            "chessboard: the photograph's window %d x %d from (%d, %d), principal point %.2f px off its centre; "
-            "the response's exposure fitted to the white squares: %.6g\n",
-            c.scene.camera.width, c.scene.camera.height, c.crop.x, c.crop.y, c.offAxisPixels,
-            c.scene.response.exposure);
-        return c.scene;
-    }
-    throw std::invalid_argument(
-        "composite: unknown case '" + a.scene + "' (room, room-lift, outdoor, chessboard, or a .json file)");
+    const BuiltinCompositingCase c = builtinCompositingCase(a.scene, a.width, a.height, builtinSceneDir());
+    if (!c.note.empty()) std::printf("%s\n", c.note.c_str());
+    return c.scene;
 }
 
 // What a PNG shows: the camera's 8-bit response to radiance (the LDR path's images are

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "compositing/differential/composite.h"
+#include "differential/composite.h"
 
 namespace shadowlab {
 

@@ -8,6 +8,7 @@
 include(CMakePackageConfigHelpers)
 
 install(TARGETS shadowlab_raster shadowlab_scenes shadowlab_shading shadowlab_shadows shadowlab_frame
+  shadowlab_differential_scene shadowlab_differential
   EXPORT shadowlabTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   FILE_SET HEADERS DESTINATION ${SHADOWLAB_INSTALL_INCLUDEDIR})

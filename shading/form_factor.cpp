@@ -38,7 +38,7 @@ double pointToPolygonFormFactor(const glm::dvec3& x, const glm::dvec3& n, std::s
     if (polygon.size() < 3) return 0.0;
     // A one-sided emitter: x must be in front of the polygon's plane.
     if (glm::dot(polygonNormal(polygon), x - polygon[0]) <= 0.0) return 0.0;
-    // Small polygons (the patches of compositing/differential) clip on the stack.
+    // Small polygons (the patches of differential/) clip on the stack.
     constexpr size_t kStackCorners = 8;
     glm::dvec3 stack[2 * kStackCorners];
     std::vector<glm::dvec3> heap(polygon.size() > kStackCorners ? 2 * polygon.size() : 0);

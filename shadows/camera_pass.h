@@ -15,7 +15,7 @@ namespace shadowlab {
 GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd);
 // The same drawn in full, built only where a triangle from `firstKept` on is the nearest;
 // elsewhere hit = 0 as for the background. For a frame that moves a few triangles in front
-// of a static scene whose own G-buffer it keeps (compositing/differential/composite.h).
+// of a static scene whose own G-buffer it keeps (differential/composite.h).
 GBuffer renderGBuffer(const WorldGeometry& world, const Camera& camera, raster::SimdLevel simd, uint32_t firstKept);
 
 // The G-buffer with every surface point moved along its geometric normal, to the camera's

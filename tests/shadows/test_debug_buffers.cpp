@@ -115,7 +115,7 @@ bool sameStats(const ShadowOutputs& a, const ShadowOutputs& b) {
 TEST_CASE("debug buffers of every technique: exr with a png, camera or light-space size, finite, V and stats unchanged") {
     for (const Technique& t : techniques()) {
         if (t.name == "none" || t.name == "reference" || t.name == "reference-soft") continue;
-        // Radiance techniques write colour buffers, checked in tests/compositing.
+        // Radiance techniques write colour buffers, checked in tests/environment.
         if (t.output == TechniqueOutput::Radiance) continue;
         INFO(t.name);
         const SmallScene s = sceneFor(t.name);
