@@ -36,7 +36,7 @@ CompositingScene compositingCase(const CompositeArgs& a) {
         for (const std::string& name : names) known += name + ", ";
         throw std::invalid_argument("composite: unknown case '" + a.scene + "' (" + known + "or a .json file)");
     }
-    const BuiltinCompositingCase c = builtinCompositingCase(a.scene, a.width, a.height, builtinSceneDir());
+    const BuiltinCompositingCase c = builtinCompositingCase(a.scene, a.width, a.height, builtinDataDir());
     if (!c.note.empty()) std::printf("%s\n", c.note.c_str());
     return c.scene;
 }

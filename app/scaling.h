@@ -4,7 +4,7 @@
 // way (n: polygons of the model, 16 layers); docs/performance.md ("Scaling with the polygon
 // count") compares their fit with ours.
 //
-// n is every triangle of the scene (flatten()); the scenes of scenes/scaling/ stand their
+// n is every triangle of the scene (flatten()); the scenes of assets/scenes/scaling/ stand their
 // models on a two-triangle ground, so n is the model's count plus 2. Times are measured as
 // in `sweep` (warm-up frames, then the median of `runs` frames of the technique alone), at
 // one thread count.

@@ -1,5 +1,5 @@
 # `cmake --install build --prefix P`: the libraries, their headers, the shadowlab command,
-# the built-in scenes (scenes/CMakeLists.txt) and a CMake package, so that another project
+# the data folder assets/ with the built-in scenes (scenes/CMakeLists.txt) and a CMake package, so that another project
 # can write
 #   find_package(shadowlab CONFIG REQUIRED)
 #   target_link_libraries(my_program PRIVATE shadowlab::frame)
@@ -13,6 +13,9 @@ install(TARGETS shadowlab_raster shadowlab_scenes shadowlab_shading shadowlab_sh
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   FILE_SET HEADERS DESTINATION ${SHADOWLAB_INSTALL_INCLUDEDIR})
 install(TARGETS shadowlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The data folder as it is in the tree, licences included: scene files name their meshes,
+# maps and textures by paths relative to themselves.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/ DESTINATION ${SHADOWLAB_INSTALL_DATADIR})
 
 install(EXPORT shadowlabTargets
   NAMESPACE shadowlab::
@@ -22,7 +25,7 @@ install(EXPORT shadowlabTargets
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/shadowlabConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/shadowlabConfig.cmake
   INSTALL_DESTINATION ${SHADOWLAB_INSTALL_CMAKEDIR}
-  PATH_VARS SHADOWLAB_INSTALL_SCENEDIR)
+  PATH_VARS SHADOWLAB_INSTALL_DATADIR SHADOWLAB_INSTALL_SCENEDIR)
 # 0.x: a new minor version may change the API, so only the same major.minor is compatible.
 write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/shadowlabConfigVersion.cmake
   VERSION ${PROJECT_VERSION}

@@ -1,5 +1,5 @@
 // The demonstration on a real photograph: OpenCV's sample photograph of a printed
-// checkerboard (scenes/photos/), its calibration, and the board's plane as the local model,
+// checkerboard (assets/photos/), its calibration, and the board's plane as the local model,
 // one patch per printed square with the square's reflectance (white or black: the parity
 // of squares the photograph shows brighter is white). The office's real light is unknown
 // (no light probe was taken), so the light is an environment map we choose and state, as

@@ -218,18 +218,22 @@ void checkViewFrame(const JsonObject& object, const Camera& camera) {
     }
 }
 
-std::string findBuiltinSceneDir(const std::string& compiledDir) {
-    const char* override = std::getenv("SHADOWLAB_SCENE_DIR");
-    if (override && *override) return override;
-    // SHADOWLAB_SCENE_DIR_FROM_BIN: the installed scene directory relative to the installed
-    // executables (scenes/CMakeLists.txt), "../share/shadowlab/scenes" by default.
+std::string findBuiltinDataDir(const std::string& compiledDir) {
+    // SHADOWLAB_DATA_DIR_FROM_BIN: the installed data folder relative to the installed
+    // executables (scenes/CMakeLists.txt), "../share/shadowlab" by default.
     std::error_code error;
     const fs::path executable = fs::read_symlink("/proc/self/exe", error);
     if (!error) {
-        const fs::path installed = (executable.parent_path() / SHADOWLAB_SCENE_DIR_FROM_BIN).lexically_normal();
-        if (fs::is_directory(installed, error)) return installed.string();
+        const fs::path installed = (executable.parent_path() / SHADOWLAB_DATA_DIR_FROM_BIN).lexically_normal();
+        if (fs::is_directory(installed / "scenes", error)) return installed.string();
     }
     return compiledDir;
+}
+
+std::string findBuiltinSceneDir(const std::string& compiledDataDir) {
+    const char* override = std::getenv("SHADOWLAB_SCENE_DIR");
+    if (override && *override) return override;
+    return (fs::path(findBuiltinDataDir(compiledDataDir)) / "scenes").string();
 }
 
 std::vector<std::string> sceneNamesIn(const std::string& sceneDir) {

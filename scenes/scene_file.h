@@ -20,21 +20,26 @@ Scene parseScene(const std::string& text, const std::string& path);
 // Stems of the *.json files in sceneDir, sorted (none if it cannot be read).
 std::vector<std::string> sceneNamesIn(const std::string& sceneDir);
 
-// The built-in scene directory of a program compiled with `compiledDir`, the first of
-// (docs/scene-format.md, "Finding scenes"):
-//   $SHADOWLAB_SCENE_DIR, if set and not empty;
-//   the installed data beside the running executable, <its dir>/../share/shadowlab/scenes,
-//     if that directory exists (an installed `shadowlab`, wherever its prefix is moved);
-//   compiledDir.
-std::string findBuiltinSceneDir(const std::string& compiledDir);
+// The data folder (scene files in scenes/, and meshes/, environments/, photos/, textures/)
+// of a program compiled with `compiledDir`: the installed data beside the running
+// executable, <its dir>/../share/shadowlab, if that directory exists (an installed
+// `shadowlab`, wherever its prefix is moved); otherwise compiledDir.
+std::string findBuiltinDataDir(const std::string& compiledDir);
 
-// The same for the calling program. SHADOWLAB_SCENE_DIR is a compile definition of the
+// The built-in scene directory, the first of (docs/scene-format.md, "Finding scenes"):
+//   $SHADOWLAB_SCENE_DIR, if set and not empty;
+//   scenes/ in findBuiltinDataDir(compiledDataDir).
+std::string findBuiltinSceneDir(const std::string& compiledDataDir);
+
+// The same for the calling program. SHADOWLAB_DATA_DIR is a compile definition of the
 // CMake target shadowlab::scenes for the programs that link it (not for the library's own
-// sources): the source tree's scenes/ in the build tree, <prefix>/share/shadowlab/scenes
-// against an installed package. These are static so that each translation unit expands
-// the definition it was compiled with; no installed library calls them.
-#ifdef SHADOWLAB_SCENE_DIR
-static inline std::string builtinSceneDir() { return findBuiltinSceneDir(SHADOWLAB_SCENE_DIR); }
+// sources): the source tree's assets/ in the build tree, <prefix>/share/shadowlab against
+// an installed package. These are static so that each translation unit expands the
+// definition it was compiled with; no installed library calls them.
+#ifdef SHADOWLAB_DATA_DIR
+static inline std::string builtinDataDir() { return findBuiltinDataDir(SHADOWLAB_DATA_DIR); }
+
+static inline std::string builtinSceneDir() { return findBuiltinSceneDir(SHADOWLAB_DATA_DIR); }
 
 // Stems of the *.json files in the built-in scene directory, sorted.
 static inline std::vector<std::string> builtinSceneNames() { return sceneNamesIn(builtinSceneDir()); }

@@ -24,11 +24,11 @@ scenes=("${@:2}")
 passes=" ${PASSES:-errors times} "
 for scene in "${scenes[@]}"; do
     if [[ $passes == *" errors "* ]]; then
-        $app sweep scenes/environment/$scene.json "${grid[@]}" --threads 2 --runs 1 --warmup 0 --plot-y rms \
+        $app sweep assets/scenes/environment/$scene.json "${grid[@]}" --threads 2 --runs 1 --warmup 0 --plot-y rms \
             --out "$out/exact" > /dev/null
     fi
     if [[ $passes == *" times "* ]]; then
-        $app sweep scenes/environment/$scene.json "${grid[@]}" --threads "${THREADS:-1,2}" --runs "${RUNS:-3}" \
+        $app sweep assets/scenes/environment/$scene.json "${grid[@]}" --threads "${THREADS:-1,2}" --runs "${RUNS:-3}" \
             --warmup 1 --plot-y rms --reference reference-env-lights --out "$out/lights" > /dev/null
     fi
 done

@@ -29,16 +29,16 @@ for part in $parts; do
       cp $out/hard/$scene-none+reference+shadow-map+izb+shadow-volume+planar.svg docs/images/hard-$scene.svg
     done
     # Cascades need a directional light: the sun over sphere-box.
-    $app sweep scenes/hard/sun.json --images --technique shadow-map,csm --threads 1,2 --runs 5 --out $out/hard
+    $app sweep assets/scenes/hard/sun.json --images --technique shadow-map,csm --threads 1,2 --runs 5 --out $out/hard
     python3 $table $out/hard/sun-shadow-map+csm.csv hard
     ;;
   cases)
     # Misclassified % of each hard-shadow technique on every hard case, at its defaults.
-    for scene in scenes/hard/*.json; do
+    for scene in assets/scenes/hard/*.json; do
       $app sweep $scene --images --technique shadow-map,izb,shadow-volume,planar --threads 2 --runs 1 --out $out/cases > /dev/null
     done
-    $app sweep scenes/hard/sun.json --images --technique shadow-map --param warp=lispsm --threads 2 --runs 1 --out $out/cases/lispsm > /dev/null
-    $app sweep scenes/hard/sun.json --images --technique csm --threads 2 --runs 1 --out $out/cases/csm > /dev/null
+    $app sweep assets/scenes/hard/sun.json --images --technique shadow-map --param warp=lispsm --threads 2 --runs 1 --out $out/cases/lispsm > /dev/null
+    $app sweep assets/scenes/hard/sun.json --images --technique csm --threads 2 --runs 1 --out $out/cases/csm > /dev/null
     python3 $table --matrix $out/cases/*.csv
     python3 $table $out/cases/lispsm/sun-shadow-map.csv hard
     python3 $table $out/cases/csm/sun-csm.csv hard
@@ -66,15 +66,15 @@ for part in $parts; do
     # et al. and two occluders at very different heights; then the min/max hierarchy's
     # speed-up (the same V) for pcss and backprojection on three of them.
     soft=none,reference,pcss,chs,vsm,esm,evsm,msm,multi-sample,backprojection,soft-shadow-volumes,fins,smoothies,penumbra-maps
-    for scene in sphere-box bunny scenes/soft/large-light.json scenes/soft/tilted-receiver.json \
-                 scenes/soft/two-boxes.json scenes/soft/sharp-corner.json scenes/soft/torus-over-plane.json \
-                 scenes/soft/two-heights.json; do
+    for scene in sphere-box bunny assets/scenes/soft/large-light.json assets/scenes/soft/tilted-receiver.json \
+                 assets/scenes/soft/two-boxes.json assets/scenes/soft/sharp-corner.json assets/scenes/soft/torus-over-plane.json \
+                 assets/scenes/soft/two-heights.json; do
       $app sweep $scene --images --technique $soft --reference reference-soft --threads 1,2 --runs 5 --out $out/soft --plot-y rms
       name=$(basename $scene .json)
       python3 $table $out/soft/$name-$(echo $soft | tr , +).csv soft
       cp $out/soft/$name-$(echo $soft | tr , +).svg docs/images/soft-$name.svg
     done
-    for scene in sphere-box bunny scenes/soft/two-heights.json; do
+    for scene in sphere-box bunny assets/scenes/soft/two-heights.json; do
       $app sweep $scene --images --technique pcss,backprojection --param min-max-hierarchy=off,on --reference reference-soft \
         --threads 1,2 --runs 5 --out $out/hierarchy --plot-y rms
       python3 $table $out/hierarchy/$(basename $scene .json)-pcss+backprojection.csv soft
@@ -83,7 +83,7 @@ for part in $parts; do
   torus)
     # Figure 7 of Cai et al.: single-layer against 16-layer fins on the two-holed torus over
     # a slab, each with the diff heat map against the soft reference.
-    torus=scenes/soft/torus-over-plane.json
+    torus=assets/scenes/soft/torus-over-plane.json
     $app render $torus --technique reference-soft --width 640 --height 400 -o docs/images/torus-reference-soft.png --aov $out/torus-reference-soft.exr
     for layers in 1 16; do
       $app render $torus --technique fins --param layers=$layers --width 640 --height 400 \
@@ -93,7 +93,7 @@ for part in $parts; do
     ;;
   scaling)
     for technique in fins smoothies pcss; do
-      $app scaling scenes/scaling/*.json --technique $technique --threads 1 --runs 11 --warmup 2 --out $out/scaling
+      $app scaling assets/scenes/scaling/*.json --technique $technique --threads 1 --runs 11 --warmup 2 --out $out/scaling
     done
     cp $out/scaling/scaling-fins.svg docs/images/scaling-fins.svg
     ;;
@@ -105,7 +105,7 @@ for part in $parts; do
     $app render sphere-box --technique shadow-map $small --param resolution=256 --param bias=constant \
       --param constant-bias=0.02 --error-map docs/images/view-error-map.png
     $app render sphere-box --technique shadow-map $small --param resolution=512 --debug-buffers $out/views
-    $app render scenes/hard/sun.json --technique csm $small --debug-buffers $out/views
+    $app render assets/scenes/hard/sun.json --technique csm $small --debug-buffers $out/views
     $app render bunny --technique shadow-volume $small --debug-buffers $out/views
     $app render sphere-box --technique izb $small --debug-buffers $out/views
     for view in shadow-map-texel-density csm-cascades shadow-volume-stencil shadow-volume-fill izb-list-length; do
@@ -122,7 +122,7 @@ for part in $parts; do
     # docs/subtractive-shadows.md: the glossy bunny under the interior map, the exact
     # reference beside additive and subtractive shadows at N = 40, subtractive at lower
     # sampling detail and with region lobes, and the buffers of the subtractive frame.
-    bunny=scenes/environment/bunny-interior.json
+    bunny=assets/scenes/environment/bunny-interior.json
     small="--width 480 --height 300"
     $app render $bunny --technique reference-env $small -o docs/images/env-reference.png --aov $out/env-reference.exr
     $app render $bunny --technique env-additive $small -o docs/images/env-additive-40.png
@@ -149,7 +149,7 @@ for part in $parts; do
     $app sweep bunny --images --technique pcss,fins --caster-lod $ratios --threads 2 --runs 11 --out $out/lod
     python3 $table $out/lod/bunny-pcss+fins.csv soft
     cp $out/lod/bunny-pcss+fins.svg docs/images/lod-bunny-soft.svg
-    $app sweep scenes/environment/bunny-interior.json --images --technique env-additive,env-subtractive --param lights=20,40 \
+    $app sweep assets/scenes/environment/bunny-interior.json --images --technique env-additive,env-subtractive --param lights=20,40 \
       --caster-lod 1,0.25,0.05,0.01 --reference reference-env-lights --threads 2 --runs 3 --plot-y rms-display \
       --out $out/lod
     python3 $table $out/lod/bunny-interior-env-additive+env-subtractive.csv radiance
@@ -203,14 +203,14 @@ for part in $parts; do
     stem=shadow-map+coloured-shadow-map+opacity-shadow-maps+deep-shadow-maps+adaptive-volumetric-shadow-maps
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
     for scene in hair-over-plane stacked-sheets tinted-glass smoke-over-plane foliage-cards; do
-      $app sweep scenes/volumetric/$scene.json --images --technique $maps --threads 1,2 --runs 5 --out $v --plot-y rms > /dev/null
+      $app sweep assets/scenes/volumetric/$scene.json --images --technique $maps --threads 1,2 --runs 5 --out $v --plot-y rms > /dev/null
       echo "$scene:"
       python3 $table $v/$scene-$stem.csv volumetric
     done
     # The sweeps on the staircase of sheets, whose receivers sit inside the medium.
-    glass=scenes/volumetric/tinted-glass.json
-    hair=scenes/volumetric/hair-over-plane.json
-    sheets=scenes/volumetric/stacked-sheets.json
+    glass=assets/scenes/volumetric/tinted-glass.json
+    hair=assets/scenes/volumetric/hair-over-plane.json
+    sheets=assets/scenes/volumetric/stacked-sheets.json
     $app sweep $sheets --images --technique opacity-shadow-maps --param slices=2,4,8,16,32,64,128 --threads 2 --runs 3 \
       --out $v/slices --plot-y rms > /dev/null
     python3 $table $v/slices/stacked-sheets-opacity-shadow-maps.csv volumetric
@@ -224,9 +224,9 @@ for part in $parts; do
     cp $v/tolerance/stacked-sheets-deep-shadow-maps.svg docs/images/volumetric-tolerance.svg
     cp $v/nodes/stacked-sheets-adaptive-volumetric-shadow-maps.svg docs/images/volumetric-nodes.svg
     for scene in hair-over-plane stacked-sheets tinted-glass smoke-over-plane foliage-cards; do
-      $app render scenes/volumetric/$scene.json --technique reference -o docs/images/volumetric-$scene-reference.png \
+      $app render assets/scenes/volumetric/$scene.json --technique reference -o docs/images/volumetric-$scene-reference.png \
         > /dev/null
-      $app render scenes/volumetric/$scene.json --technique deep-shadow-maps -o docs/images/volumetric-$scene-deep.png \
+      $app render assets/scenes/volumetric/$scene.json --technique deep-shadow-maps -o docs/images/volumetric-$scene-deep.png \
         > /dev/null
     done
     $app render $glass --technique coloured-shadow-map -o docs/images/volumetric-tinted-glass-coloured.png \
@@ -251,13 +251,13 @@ for part in $parts; do
     # (hard: the map alone beside it; soft: PCSS and IZB alone), and the stages' buffers.
     s=$out/screen
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
-    $app sweep scenes/hard/box-contact.json --images --technique shadow-map,contact-shadows --threads 1,2 --runs 5 --out $s
+    $app sweep assets/scenes/hard/box-contact.json --images --technique shadow-map,contact-shadows --threads 1,2 --runs 5 --out $s
     python3 $table $s/box-contact-shadow-map+contact-shadows.csv hard+max
-    $app sweep scenes/soft/branch-over-crate.json --images --technique pcss,izb,izb-pcss --reference reference-soft \
+    $app sweep assets/scenes/soft/branch-over-crate.json --images --technique pcss,izb,izb-pcss --reference reference-soft \
       --threads 1,2 --runs 5 --out $s
     python3 $table $s/branch-over-crate-pcss+izb+izb-pcss.csv soft
-    box=scenes/hard/box-contact.json
-    branch=scenes/soft/branch-over-crate.json
+    box=assets/scenes/hard/box-contact.json
+    branch=assets/scenes/soft/branch-over-crate.json
     $app render $box --technique reference -o docs/images/screen-box-contact-reference.png > /dev/null
     for technique in shadow-map contact-shadows; do
       $app render $box --technique $technique -o $s/render.png \
@@ -283,11 +283,11 @@ for part in $parts; do
     f=$out/flythrough
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
     for move in dolly slide; do
-      $app flythrough scenes/hard/sun.json --path scenes/flythrough/sun-$move.csv --frames 48 --technique csm \
+      $app flythrough assets/scenes/hard/sun.json --path assets/scenes/flythrough/sun-$move.csv --frames 48 --technique csm \
         --param snap=off,on --threads 2 --out $f/$move > /dev/null
     done
-    $app flythrough scenes/flythrough/avenue.json --technique csm --param snap=off,on --threads 2 --out $f > /dev/null
-    $app flythrough scenes/hard/sun.json --technique shadow-map,csm --threads 2 --out $f > /dev/null
+    $app flythrough assets/scenes/flythrough/avenue.json --technique csm --param snap=off,on --threads 2 --out $f > /dev/null
+    $app flythrough assets/scenes/hard/sun.json --technique shadow-map,csm --threads 2 --out $f > /dev/null
     $app flythrough sphere-box --technique shadow-map --param resolution=512,1024,2048,4096 --width 640 --height 400 \
       --threads 2 --out $f > /dev/null
     soft=pcss,chs,vsm,esm,evsm,msm,multi-sample,backprojection,soft-shadow-volumes,fins,smoothies,penumbra-maps

@@ -23,14 +23,14 @@ targets=("$@")
 [[ ${#targets[@]} -gt 0 ]] || targets=(scene_file compositing_file camera_path obj_reader ply_reader exr_reader environment_file)
 
 # Extra seeds beside tests/fuzz/corpus/<target>: the built-in scene files (copied, since
-# libFuzzer reads folders recursively and scenes/ also holds sources and large meshes) and
+# libFuzzer reads folders recursively and assets/scenes/ also holds fly-through paths) and
 # the tiny meshes.
 rm -rf "$build/fuzz/seeds/scene_file" && mkdir -p "$build/fuzz/seeds/scene_file"
-for file in scenes/*.json scenes/*/*.json; do cp "$file" "$build/fuzz/seeds/scene_file/${file//\//_}"; done
+for file in assets/scenes/*.json assets/scenes/*/*.json; do cp "$file" "$build/fuzz/seeds/scene_file/${file//\//_}"; done
 declare -A more_seeds=(
   [scene_file]="$build/fuzz/seeds/scene_file"
-  [compositing_file]="scenes/compositing"
-  [camera_path]="scenes/flythrough"
+  [compositing_file]="assets/scenes/compositing"
+  [camera_path]="assets/scenes/flythrough"
   [obj_reader]="tests/fuzz/meshes"
   [ply_reader]="tests/fuzz/meshes"
   [exr_reader]=""

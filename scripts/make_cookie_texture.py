@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes scenes/cookies/textures/blinds.png: a light cookie (gobo map, RTR 7.2) of venetian
+"""Writes assets/textures/blinds.png: a light cookie (gobo map, RTR 7.2) of venetian
 blinds for the spot-cookie case, 128 x 128 grey: eight slats, each 16 rows of which the
 lower 6 are closed (0) and the upper 10 open (255), under a closed pelmet 12 rows deep at
 the top, so that up and down differ in the image. Our own drawing, MIT like the code;
@@ -26,6 +26,6 @@ def png(width, height, rows):
 
 
 rows = [bytes([255 if open_at(j) else 0]) * SIZE for j in range(SIZE)]
-path = sys.argv[1] if len(sys.argv) > 1 else "scenes/cookies/textures/blinds.png"
+path = sys.argv[1] if len(sys.argv) > 1 else "assets/textures/blinds.png"
 with open(path, "wb") as f:
     f.write(png(SIZE, SIZE, rows))

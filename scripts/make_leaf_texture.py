@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes scenes/volumetric/textures/leaf.png: the alpha texture of the foliage case's cards,
+"""Writes assets/textures/leaf.png: the alpha texture of the foliage case's cards,
 three leaves on a twig in a 128 x 128 RGBA image (green, alpha 255 on a leaf, 0 elsewhere).
 Our own drawing, MIT like the code; plain Python (zlib), so that it regenerates anywhere."""
 import math
@@ -41,6 +41,6 @@ for j in range(SIZE):
         a = 255 if alpha_at((i + 0.5) / SIZE, (j + 0.5) / SIZE) else 0
         row += bytes((60, 120, 40, a))
     rows.append(bytes(row))
-out = sys.argv[1] if len(sys.argv) > 1 else "scenes/volumetric/textures/leaf.png"
+out = sys.argv[1] if len(sys.argv) > 1 else "assets/textures/leaf.png"
 with open(out, "wb") as f:
     f.write(png(SIZE, SIZE, rows))

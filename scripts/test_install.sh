@@ -17,8 +17,8 @@ fail() { echo "test_install: $*" >&2; exit 1; }
 cmake --install build --prefix "$prefix" > "$scratch/install.log"
 for f in bin/shadowlab include/shadowlab/frame/render.h include/shadowlab/raster/simd/simd_avx2.h \
          lib/cmake/shadowlab/shadowlabConfig.cmake lib/cmake/shadowlab/FindStb.cmake \
-         share/shadowlab/scenes/sphere-box.json share/shadowlab/scenes/meshes/LICENSE.md \
-         share/shadowlab/scenes/hard/sun.json; do
+         share/shadowlab/scenes/sphere-box.json share/shadowlab/meshes/LICENSE.md \
+         share/shadowlab/scenes/hard/sun.json share/shadowlab/textures/leaf.png share/shadowlab/photos/LICENSE.md; do
     [ -e "$prefix/$f" ] || fail "$f is not installed"
 done
 ! grep -rq "$source_dir" "$prefix/lib/cmake/shadowlab" || fail "the CMake package names the source tree"

@@ -1,5 +1,5 @@
 // A photograph's pinhole calibration as OpenCV gives it (the format of
-// scenes/photos/chessboard_left05_camera.txt: "key value..." lines, '#' comments): the image
+// assets/photos/chessboard_left05_camera.txt: "key value..." lines, '#' comments): the image
 // size, the intrinsics K and the pose of a planar target, X_camera = R X_target + t, in the
 // OpenCV camera frame (x right, y down, z forward; pixel centres at whole coordinates).
 #pragma once

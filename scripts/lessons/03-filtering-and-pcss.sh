@@ -15,7 +15,7 @@ close="--eye -0.5,3.2,3.8 --target -0.4,0.4,-0.6 --fovy 40"
 reference=""
 shot() {
   name=$1; technique=$2; shift 2
-  "$app" render scenes/sphere-box.json --technique "$technique" $close "$@" --width 480 --height 300 --threads 2 \
+  "$app" render assets/scenes/sphere-box.json --technique "$technique" $close "$@" --width 480 --height 300 --threads 2 \
     -o "$scratch/$name.png" --aov "$scratch/$name.exr" --error-map "$scratch/$name-error.png" \
     --json "$scratch/$name.json" --debug-buffers "$scratch/$name-buffers" > "$scratch/$name.log"
   if [ -n "$reference" ]; then
@@ -36,7 +36,7 @@ $figures "nearest=$scratch/pcf-nearest.json" "bilinear=$scratch/pcf-bilinear.jso
 # $scratch/NAME.exr, which the next shots compare against.
 soft_reference() {
   name=$1; shift
-  "$app" render scenes/sphere-box.json --technique reference-soft $close "$@" --width 480 --height 300 --threads 2 \
+  "$app" render assets/scenes/sphere-box.json --technique reference-soft $close "$@" --width 480 --height 300 --threads 2 \
     -o "$scratch/$name.png" --aov "$scratch/$name.exr" > "$scratch/$name.log"
   reference="$scratch/$name.exr"
 }

@@ -7,7 +7,7 @@
 set -eu
 . scripts/lessons/common.sh
 need_convert
-scene=scenes/soft/torus-over-plane.json
+scene=assets/scenes/soft/torus-over-plane.json
 size="--width 480 --height 300 --threads 2"
 # The enlarged part of the image where the torus's shadow leaves the green plane's umbra.
 crop="-crop 240x150+100+100 +repage -scale 200%"

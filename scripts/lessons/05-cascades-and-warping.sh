@@ -1,12 +1,12 @@
 #!/bin/sh
 # Pictures and figures of docs/lessons/05-cascades-and-warping.md: perspective aliasing of
-# one sun shadow map on scenes/hard/sun.json seen low and close (480 x 300, 2 threads), then
+# one sun shadow map on assets/scenes/hard/sun.json seen low and close (480 x 300, 2 threads), then
 # cascaded shadow maps (splits, the cascades' maps, texel density) against the number of
 # cascades and the split scheme, then LiSPSM's warp and its dueling-frusta limit.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch.
 set -eu
 . scripts/lessons/common.sh
-scene=scenes/hard/sun.json
+scene=assets/scenes/hard/sun.json
 view="--eye -3.2,1.1,1.8 --target 0,0.2,-1 --fovy 55"
 
 # shot NAME SCENE TECHNIQUE [RENDER ARGS...]: image, error map, figures and buffers into $scratch/NAME*

@@ -13,7 +13,7 @@ size="--width 480 --height 300 --threads 2"
 # shot NAME [RENDER ARGS...]: sphere-box's image, error map, figures and buffers into $scratch/NAME*
 shot() {
   name=$1; shift
-  render "$name" scenes/sphere-box.json shadow-volume "$@" --debug-buffers "$scratch/$name-buffers"
+  render "$name" assets/scenes/sphere-box.json shadow-volume "$@" --debug-buffers "$scratch/$name-buffers"
 }
 
 # The stages from the scene's camera (auto: z-pass here), and z-fail's fill with its caps.

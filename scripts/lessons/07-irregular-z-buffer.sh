@@ -22,7 +22,7 @@ print(min(100.0, 800.0 / json.load(open(sys.argv[1]))["stats"]["list_max_receive
 # shot NAME [RENDER ARGS...]: sphere-box's image, error map, figures and buffers into $scratch/NAME*
 shot() {
   name=$1; shift
-  "$app" render scenes/sphere-box.json --technique izb "$@" --width 480 --height 300 --threads 2 \
+  "$app" render assets/scenes/sphere-box.json --technique izb "$@" --width 480 --height 300 --threads 2 \
     -o "$scratch/$name.png" --error-map "$scratch/$name-error.png" --json "$scratch/$name.json" \
     --debug-buffers "$scratch/$name-buffers" > "$scratch/$name.log"
 }
@@ -56,7 +56,7 @@ $figures --stats "$work" "grazing light=$scratch/grazing.json"
 
 # The figures of the page's "Try this" list.
 shot try-16 --param resolution=16
-"$app" render scenes/hard/point-light-inside.json --technique izb --width 480 --height 300 --threads 2 \
+"$app" render assets/scenes/hard/point-light-inside.json --technique izb --width 480 --height 300 --threads 2 \
   -o "$scratch/try-point-inside.png" --error-map "$scratch/try-point-inside-error.png" \
   --json "$scratch/try-point-inside.json" > "$scratch/try-point-inside.log"
 echo "Try this:"

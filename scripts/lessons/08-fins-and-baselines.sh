@@ -9,7 +9,7 @@ view="--eye -3,5,4.5 --target -0.3,0.3,-0.6 --light-radius 1"
 # The stages of `fins`, as buffers: the light's maps of the layer that holds the sphere and
 # the box, and the camera's illuminance buffer.
 rm -rf "$scratch/debug"
-render_shown fins scenes/sphere-box.json fins $view --debug-buffers "$scratch/debug"
+render_shown fins assets/scenes/sphere-box.json fins $view --debug-buffers "$scratch/debug"
 layer=$(ls "$scratch/debug" | sed -n 's/^fins-layer-\([0-9]*\)-shadow-map\.png$/\1/p' | head -n 1)
 for buffer in shadow-map outer-weight inner-weight outer-depth illuminance; do
   cp "$scratch/debug/fins-layer-$layer-$buffer.png" "$images/fins-occluder-layer-$buffer.png"
@@ -19,13 +19,13 @@ cp "$scratch/debug/fins-layers.png" "$images/fins-layers.png"
 echo "the occluders' layer: $layer of $(ls "$scratch/debug" | grep -c 'shadow-map\.png$') drawn"
 
 # The baselines: outer fins only.
-render_shown penumbra-maps scenes/sphere-box.json penumbra-maps $view
-render_shown smoothies-0.06 scenes/sphere-box.json smoothies $view --param size=0.06
-render_shown smoothies-0.2 scenes/sphere-box.json smoothies $view --param size=0.2
+render_shown penumbra-maps assets/scenes/sphere-box.json penumbra-maps $view
+render_shown smoothies-0.06 assets/scenes/sphere-box.json smoothies $view --param size=0.06
+render_shown smoothies-0.2 assets/scenes/sphere-box.json smoothies $view --param size=0.2
 
 # Figure 7 of the paper: one layer against sixteen on the torus over the green plane.
-render_shown torus-layers-1 scenes/soft/torus-over-plane.json fins --param layers=1
-render_shown torus-layers-16 scenes/soft/torus-over-plane.json fins --param layers=16
+render_shown torus-layers-1 assets/scenes/soft/torus-over-plane.json fins --param layers=1
+render_shown torus-layers-16 assets/scenes/soft/torus-over-plane.json fins --param layers=16
 
 python3 - "$scratch" <<'PY'
 import json, sys

@@ -9,7 +9,7 @@ view="--eye -3,5,4.5 --target -0.3,0.3,-0.6 --light-radius 1"
 render_view() {
   name=$1 technique=$2
   shift 2
-  render_shown "$name" scenes/sphere-box.json "$technique" $view "$@"
+  render_shown "$name" assets/scenes/sphere-box.json "$technique" $view "$@"
 }
 
 # The stages at N = 16: the first point's shadow map, the per-pixel count of lit points.

@@ -1,12 +1,12 @@
 # Lesson 11: natural light, the glossy bunny under an environment map, lit by N lights sampled
 # from the map: additive shadows against subtractive shadows (DeCoro and Rusinkiewicz 2008),
-# scenes/environment/bunny-interior.json at 480 x 300.
+# assets/scenes/environment/bunny-interior.json at 480 x 300.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch. Every run is scored
 # against the exact integral (reference-env, 2 x 1024 samples a pixel), which each run
 # renders again: 3 to 4 minutes a run on 2 shared cores, 23 minutes for the lesson.
 set -eu
 . scripts/lessons/common.sh
-scene=scenes/environment/bunny-interior.json
+scene=assets/scenes/environment/bunny-interior.json
 size="--width 480 --height 300 --threads 2"
 
 nice -n 10 "$app" render "$scene" --technique reference-env $size -o "$images/reference.png" \

@@ -1,13 +1,13 @@
 # Lesson 13: volumetric shadows, casters that let some light through: the coloured shadow map,
 # opacity shadow maps, deep shadow maps and adaptive volumetric shadow maps, on
-# scenes/volumetric/stacked-sheets.json (twelve sheets passing 70% each), and the coloured map
-# on scenes/volumetric/tinted-glass.json.
+# assets/scenes/volumetric/stacked-sheets.json (twelve sheets passing 70% each), and the coloured map
+# on assets/scenes/volumetric/tinted-glass.json.
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch. Needs rsvg-convert
 # (librsvg) to turn the transmittance curve plots into PNGs.
 set -eu
 . scripts/lessons/common.sh
 size="--width 480 --height 300 --threads 2"
-sheets=scenes/volumetric/stacked-sheets.json
+sheets=assets/scenes/volumetric/stacked-sheets.json
 
 # curve TECHNIQUE SHOWN_NAME: the plot of the busiest texel's curve, exact against kept.
 curve() {
@@ -46,9 +46,9 @@ render sheets-avsm-16 "$sheets" adaptive-volumetric-shadow-maps --param nodes=16
 
 # Colour: the coloured shadow map on the tinted panes, its colour map, and the reference.
 rm -rf "$scratch/debug"
-render glass-coloured scenes/volumetric/tinted-glass.json coloured-shadow-map --debug-buffers "$scratch/debug"
+render glass-coloured assets/scenes/volumetric/tinted-glass.json coloured-shadow-map --debug-buffers "$scratch/debug"
 keep coloured-shadow-map-colour glass-colour-map
-nice -n 10 "$app" render scenes/volumetric/tinted-glass.json --technique reference $size \
+nice -n 10 "$app" render assets/scenes/volumetric/tinted-glass.json --technique reference $size \
   -o "$images/glass-reference.png" > "$scratch/glass-reference.log"
 show sheets-shadow-map sheets-coloured sheets-opacity-4 sheets-opacity-64 sheets-deep sheets-avsm-2 \
   glass-coloured glass-coloured-error

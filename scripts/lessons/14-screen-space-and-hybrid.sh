@@ -1,12 +1,12 @@
-# Lesson 14: screen-space contact shadows on scenes/hard/box-contact.json (at its own 640 x 400)
-# and the izb-pcss hybrid on scenes/soft/branch-over-crate.json (480 x 300).
+# Lesson 14: screen-space contact shadows on assets/scenes/hard/box-contact.json (at its own 640 x 400)
+# and the izb-pcss hybrid on assets/scenes/soft/branch-over-crate.json (480 x 300).
 # Run by scripts/lessons.sh, which sets $app, $images and $scratch. Needs rsvg-convert
 # (librsvg) to turn the march plot into a PNG.
 set -eu
 . scripts/lessons/common.sh
 size="--threads 2"   # each scene at its own size
-box=scenes/hard/box-contact.json
-branch=scenes/soft/branch-over-crate.json
+box=assets/scenes/hard/box-contact.json
+branch=assets/scenes/soft/branch-over-crate.json
 
 rm -rf "$scratch/debug"
 # 1. Contact shadows: the map alone, then the map and the march at three lengths, and the

@@ -97,7 +97,7 @@ tiny=(--width 64 --height 40)
 # NaN and infinities by name before any work; each command gets what it requires besides.
 declare -A required=([render]="sphere-box" [sweep]="sphere-box --technique none" [flythrough]="sphere-box --technique none"
                      [scaling]="sphere-box bunny --technique none" [composite]="room"
-                     [environment]="$(dirname "${BASH_SOURCE[0]}")/../../scenes/environments/pmndrs_sky.hdr")
+                     [environment]="$(dirname "${BASH_SOURCE[0]}")/../../assets/environments/pmndrs_sky.hdr")
 float_options=0
 for command in render sweep merge-sweep report compare bench scaling flythrough export-obj techniques environment \
                composite; do
@@ -141,11 +141,11 @@ expect_error "render without output" render sphere-box "${tiny[@]}"
 expect_error "render without scene" render -o "$scratch/x.png"
 expect_error "bad --width" render sphere-box --width 0 -o "$scratch/x.png"
 expect_error "csm without a sun" render sphere-box --technique csm "${tiny[@]}" -o "$scratch/x.png"
-expect_error "--light-pos of a sun" render "$(dirname "${BASH_SOURCE[0]}")/../../scenes/hard/sun.json" --light-pos 1,2,3 "${tiny[@]}" -o "$scratch/x.png"
+expect_error "--light-pos of a sun" render "$(dirname "${BASH_SOURCE[0]}")/../../assets/scenes/hard/sun.json" --light-pos 1,2,3 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "--light-pos beyond the world's bound (Embree aborted)" render sphere-box --technique reference --light-pos 1.9e18,5,0 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "--eye beyond the world's bound" render sphere-box --eye 0,2e6,0 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
-maps=$(dirname "${BASH_SOURCE[0]}")/../../scenes/environments
+maps=$(dirname "${BASH_SOURCE[0]}")/../../assets/environments
 expect_error "environment of a missing map" environment "$scratch/none.hdr"
 expect_error "environment with no lights" environment "$maps/pmndrs_sky.hdr" --lights 0 --out "$scratch/env"
 expect_error "environment with a bad SH window" environment "$maps/pmndrs_sky.hdr" --sh-window 1 --out "$scratch/env"
@@ -156,7 +156,7 @@ if grep -q "neither OpenEXR nor Radiance HDR" "$err"; then pass; else fail "the 
 run environment "$maps/pmndrs_sky.hdr" --lights 8 --rotation 30 --phong 8 --ggx 0.5 --out "$scratch/env"
 if [ "$rc" -eq 0 ] && grep -q "8 median-cut and structured lights" "$out"; then pass; else fail "environment exited $rc: $(cat "$err")"; fi
 for image in environment sh-radiance sh-irradiance lights structured-lights prefiltered-phong-8 prefiltered-ggx-0.5 split-sum; do expect_png "$scratch/env/$image.png"; done
-expect_error "flythrough of a scene without a path" flythrough "$maps/../hard/spot.json" --technique shadow-map \
+expect_error "flythrough of a scene without a path" flythrough "$maps/../scenes/hard/spot.json" --technique shadow-map \
     --out "$scratch/fly"
 if grep -q 'has no "flythrough" path' "$err"; then pass; else fail "the missing path is not named: $(cat "$err")"; fi
 printf 'time,eye_x,eye_y,eye_z,target_x,target_y,target_z\n1,0,4,9,0,0,0\n0,0,4,8,0,0,0\n' >"$scratch/back.csv"
@@ -224,7 +224,7 @@ if [ "$leftovers" -eq 0 ]; then pass; else fail "$leftovers temporary file(s) le
 # A sweep of 7 settings at 2 thread counts on a 96 x 60 view of the sun case, run whole and
 # as 3 shards into one directory, then merged: the same CSV, JSON and SVG but for the times.
 tools=$(dirname "${BASH_SOURCE[0]}")
-sed 's/"width": 640, "height": 400/"width": 96, "height": 60/' "$tools/../../scenes/hard/sun.json" >"$scratch/tiny-sun.json"
+sed 's/"width": 640, "height": 400/"width": 96, "height": 60/' "$tools/../../assets/scenes/hard/sun.json" >"$scratch/tiny-sun.json"
 if grep -q '"width": 96, "height": 60' "$scratch/tiny-sun.json"; then pass; else fail "could not shrink sun.json's camera"; fi
 grid=(sweep "$scratch/tiny-sun.json" --technique none,shadow-map --param resolution=64,256,1024
       --param slope-factor=0.5,1.5 --threads 1,2 --runs 1 --warmup 0)

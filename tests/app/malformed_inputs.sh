@@ -180,17 +180,17 @@ mkfifo "$dir/fifo"
 printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 64 +X 64\n\x02\x02\x00\x40\x80' >"$dir/short.hdr"
 printf '\x00\x00\x02\x00\x00\x00\x00\x00\x00\x00\x00\x00\x40\x00\x40\x00\x18\x00\x80\x80' >"$dir/short.tga"
 printf 'P6\n64 64\n255\n\x80\x80' >"$dir/short.ppm"
-blinds=$src/scenes/cookies/textures/blinds.png
+blinds=$src/assets/textures/blinds.png
 head -c "$(($(stat -c %s "$blinds") / 2))" "$blinds" >"$dir/half.png"
 for image in short.hdr short.tga short.ppm half.png fifo; do
-    sed "s|textures/blinds.png|$dir/$image|" "$src/scenes/cookies/spot-cookie.json" >"$dir/cookie-$image.json"
+    sed "s|../../textures/blinds.png|$dir/$image|" "$src/assets/scenes/cookies/spot-cookie.json" >"$dir/cookie-$image.json"
 done
 expect "a truncated run-length HDR as a cookie" "short.hdr: is a Radiance HDR image; here only PNG is read" render "$dir/cookie-short.hdr.json" "${tiny[@]}" -o "$out"
 expect "a short TGA as a cookie" "short.tga: is not an image this program reads" render "$dir/cookie-short.tga.json" "${tiny[@]}" -o "$out"
 expect "a short PPM as a cookie" "short.ppm: is a PNM image; here only PNG is read" render "$dir/cookie-short.ppm.json" "${tiny[@]}" -o "$out"
 expect "half a PNG as a cookie" "half.png: is truncated: a PNG file ends with its IEND chunk" render "$dir/cookie-half.png.json" "${tiny[@]}" -o "$out"
 expect "a FIFO as a cookie" "fifo: is a FIFO (named pipe), not a file" render "$dir/cookie-fifo.json" "${tiny[@]}" -o "$out"
-sed "s|../environments/pmndrs_sky.exr|$dir/fifo|" "$src/scenes/environment/sphere-sky.json" >"$dir/sky-fifo.json"
+sed "s|../../environments/pmndrs_sky.exr|$dir/fifo|" "$src/assets/scenes/environment/sphere-sky.json" >"$dir/sky-fifo.json"
 expect "a FIFO as a scene's environment map" "environment.map: $dir/fifo: is a FIFO (named pipe), not a file" render "$dir/sky-fifo.json" "${tiny[@]}" -o "$out"
 expect "a FIFO as an environment map" "fifo: is a FIFO (named pipe), not a file" environment "$dir/fifo" --out "$dir/env"
 # A path of 10^7 rows (300 MB) was read whole, twice, before row 65,538 was refused.
@@ -201,11 +201,11 @@ expect "a FIFO as a sweep's shard" "fifo: is a FIFO (named pipe), not a file" me
 expect "a FIFO as a report's input" "fifo: is a FIFO (named pipe), not a file" report "$dir/fifo" --out "$dir/report"
 expect "a FIFO as an EXR to compare" "fifo: is a FIFO (named pipe), not a file" compare "$dir/fifo" "$dir/ok.exr" --heatmap "$out"
 compositing() {   # compositing NAME FROM TO: the shipped chessboard file with FROM replaced by TO
-    sed -e "s|\"\.\./|\"$src/scenes/|g" -e "s|$2|$3|" "$src/scenes/compositing/chessboard.json" >"$dir/$1.json"
+    sed -e "s|\"\.\./\.\./|\"$src/assets/|g" -e "s|$2|$3|" "$src/assets/scenes/compositing/chessboard.json" >"$dir/$1.json"
 }
-compositing photo-fifo "$src/scenes/photos/chessboard_left05_undistorted.png" "$dir/fifo"
-compositing calibration-zero "$src/scenes/photos/chessboard_left05_camera.txt" /dev/zero
-compositing photo-half "$src/scenes/photos/chessboard_left05_undistorted.png" "$dir/half.png"
+compositing photo-fifo "$src/assets/photos/chessboard_left05_undistorted.png" "$dir/fifo"
+compositing calibration-zero "$src/assets/photos/chessboard_left05_camera.txt" /dev/zero
+compositing photo-half "$src/assets/photos/chessboard_left05_undistorted.png" "$dir/half.png"
 expect "a FIFO as a compositing file's photograph" "fifo: is a FIFO (named pipe), not a file" composite "$dir/photo-fifo.json" --no-reference --frames 0
 expect "/dev/zero as a calibration" "/dev/zero: is a character device, not a file" composite "$dir/calibration-zero.json" --no-reference --frames 0
 expect "half a PNG as a photograph" "half.png: is truncated" composite "$dir/photo-half.json" --no-reference --frames 0

@@ -12,7 +12,7 @@
 namespace shadowlab::test {
 
 inline CompositingScene smallRoomScene(RoomPath path = RoomPath::UnderDesk, int width = 128, int height = 80) {
-    return compositingRoom(readObj(builtinSceneDir() + "/meshes/bunny_low.obj"), path, width, height);
+    return compositingRoom(readObj(builtinDataDir() + "/meshes/bunny_low.obj"), path, width, height);
 }
 
 struct RoomCase {

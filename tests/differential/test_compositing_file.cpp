@@ -29,23 +29,23 @@ std::filesystem::path scratch() {
 // The shipped file's calibration, replaced by a camera in some variants.
 constexpr const char* kCalibrationBlock =
     "\"calibration\": {\n"
-    "    \"file\": \"../photos/chessboard_left05_camera.txt\",\n"
+    "    \"file\": \"../../photos/chessboard_left05_camera.txt\",\n"
     "    \"world_from_target\": [1, 0, 0, 0,\n"
     "                          0, 0, -1, 0,\n"
     "                          0, 1, 0, 0,\n"
     "                          0, 0, 0, 1]\n"
     "  }";
 
-// The shipped file with one text replaced, in a scratch folder, its "../" paths made to
-// point at the built-in scenes.
+// The shipped file with one text replaced, in a scratch folder, its "../../" paths made to
+// point at the data folder.
 std::string variant(const std::string& name, const std::string& from, const std::string& to) {
     std::ifstream in(kFile);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const size_t at = text.find(from);
     REQUIRE(at != std::string::npos);
     text.replace(at, from.size(), to);
-    for (size_t up = text.find("\"../"); up != std::string::npos; up = text.find("\"../", up)) {
-        text.replace(up + 1, 3, builtinSceneDir() + "/");
+    for (size_t up = text.find("\"../../"); up != std::string::npos; up = text.find("\"../../", up)) {
+        text.replace(up + 1, 6, builtinDataDir() + "/");
     }
     const std::filesystem::path path = scratch() / (name + ".json");
     std::ofstream(path) << text;
@@ -134,6 +134,6 @@ TEST_CASE("compositing file: malformed files are refused, naming the file and th
     std::string quoted = "\"";   // appended, not chained: GCC 12 warns wrongly of a chain of string +
     quoted += small.string();
     quoted += "\"";
-    CHECK(errorOf(variant("window", "\"../photos/chessboard_left05_undistorted.png\"", quoted)).find("window") != std::string::npos);
+    CHECK(errorOf(variant("window", "\"../../photos/chessboard_left05_undistorted.png\"", quoted)).find("window") != std::string::npos);
     std::filesystem::remove(small);
 }

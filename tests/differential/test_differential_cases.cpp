@@ -24,9 +24,9 @@ using namespace shadowlab;
 
 namespace {
 
-const std::string kPhotos = builtinSceneDir() + "/photos/";
+const std::string kPhotos = builtinDataDir() + "/photos/";
 
-Mesh bunny() { return readObj(builtinSceneDir() + "/meshes/bunny_low.obj"); }
+Mesh bunny() { return readObj(builtinDataDir() + "/meshes/bunny_low.obj"); }
 
 std::string scratchFile(const std::string& name, const std::string& text) {
     const std::filesystem::path path = std::filesystem::temp_directory_path() / ("shadowlab-cases-" + name);
@@ -37,7 +37,7 @@ std::string scratchFile(const std::string& name, const std::string& text) {
 }  // namespace
 
 TEST_CASE("environment dome: the upper hemisphere's solid angle, every patch facing the centre with its block's light") {
-    const EnvironmentMap map = readEnvironmentMap(builtinSceneDir() + "/environments/blender_forest.exr");
+    const EnvironmentMap map = readEnvironmentMap(builtinDataDir() + "/environments/blender_forest.exr");
     const double R = 200.0;
     const std::vector<PatchSurface> dome = environmentDome(map, 32, 8, R);
     REQUIRE(dome.size() == 256);
@@ -79,7 +79,7 @@ TEST_CASE("environment dome: the patches hold the map's light above the horizon 
 }
 
 TEST_CASE("outdoor case: the photograph is the panorama through the pinhole, over a ground the camera stands on") {
-    const EnvironmentMap map = readEnvironmentMap(builtinSceneDir() + "/environments/blender_forest.exr");
+    const EnvironmentMap map = readEnvironmentMap(builtinDataDir() + "/environments/blender_forest.exr");
     OutdoorSettings settings;
     settings.width = 64, settings.height = 40;
     const CompositingScene scene = compositingOutdoor(map, bunny(), settings);
@@ -142,7 +142,7 @@ TEST_CASE("chessboard case: the white squares are the bright ones of the photogr
     CHECK(photo.width == 640);
     CHECK(photo.height == 480);
     const PhotoCalibration calibration = readPhotoCalibration(kPhotos + "chessboard_left05_camera.txt");
-    const EnvironmentMap light = readEnvironmentMap(builtinSceneDir() + "/environments/blender_interior.exr");
+    const EnvironmentMap light = readEnvironmentMap(builtinDataDir() + "/environments/blender_interior.exr");
     const PhotoCase c = compositingChessboard(photo, calibration, light, bunny());
     // Where the model's squares land in the photograph, the white ones are bright: at least
     // 66 of the 70 centres (a corner square lies in the board's shade) against the median.

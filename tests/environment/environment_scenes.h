@@ -56,7 +56,7 @@ inline Scene furnaceScene(const std::string& map, bool ceiling, int width = 48, 
 }
 
 inline Scene skyScene(int width, int height) {
-    Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/environment/sphere-sky.json");
+    Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/environment/sphere-sky.json");
     scene.camera.width = width, scene.camera.height = height;
     return scene;
 }

@@ -35,7 +35,7 @@ TEST_CASE("region lobes: each model's lobe widens by the cap's variance, the dif
 }
 
 TEST_CASE("region lobes: subtractive shadows clamp fewer pixels on the glossy bunny, and the furnace stays exact") {
-    Scene bunny = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/environment/bunny-interior.json");
+    Scene bunny = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/environment/bunny-interior.json");
     bunny.camera.width = 128, bunny.camera.height = 80;
     const PreparedScene prepared(bunny);
     double clamped[2] = {0.0, 0.0};

@@ -1,5 +1,5 @@
 // Subtractive shadows against their baseline and the exact reference: the claims of
-// DeCoro and Rusinkiewicz 2008 that should hold, on the glossy bunny (scenes/environment/
+// DeCoro and Rusinkiewicz 2008 that should hold, on the glossy bunny (assets/scenes/environment/
 // bunny-interior.json) and the glossy sphere under a sky (sphere-sky.json) at small sizes:
 // subtractive beats additive at equal N on a glossy model; the additive image converges to
 // the exact one as N grows; C matches the exact light where nothing is occluded; S' = S at
@@ -33,7 +33,7 @@ namespace {
 // what subtraction gains, which docs/subtractive-shadows.md shows.
 struct BunnyCase {
     PreparedScene prepared{[] {
-        Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/environment/bunny-interior.json");
+        Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/environment/bunny-interior.json");
         scene.camera.width = 96, scene.camera.height = 60;
         return scene;
     }()};
@@ -75,7 +75,7 @@ TEST_CASE("subtractive shadows: C, the unshadowed light, matches the exact refer
                         .specular = glm::vec3(0.4f), .shininess = 40.0f}};
     scene.instances = {{.name = "sphere", .mesh = 0, .material = 0}};
     scene.camera.eye = {0.0f, 0.5f, 3.2f}, scene.camera.target = {0.0f, 0.0f, 0.0f}, scene.camera.fovyDeg = 45.0f;
-    scene.environment.map = std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/environments/blender_interior.exr";
+    scene.environment.map = std::string(SHADOWLAB_SOURCE_DIR) + "/assets/environments/blender_interior.exr";
     const PreparedScene sphere(scene);
     const Frame exact = frameOf(sphere, "reference-env", {{"samples", "1024"}});
     const Frame C = frameOf(sphere, "env-subtractive", {{"lights", "40"}});

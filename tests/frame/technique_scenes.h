@@ -18,8 +18,8 @@ inline Scene smallScene(const std::string& nameOrPath, int width = 96, int heigh
     return scene;
 }
 
-inline std::string sunScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/hard/sun.json"; }
-inline std::string skyScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/environment/sphere-sky.json"; }
+inline std::string sunScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/hard/sun.json"; }
+inline std::string skyScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/environment/sphere-sky.json"; }
 
 inline bool needsDirectionalLight(const Technique& t) { return t.name == "csm"; }
 

@@ -1,4 +1,4 @@
-// Light cookies in whole frames (scenes/cookies/spot-cookie.json): the cookie scales the
+// Light cookies in whole frames (assets/scenes/cookies/spot-cookie.json): the cookie scales the
 // light every technique's image shows, not V, and the scene file refuses bad cookies.
 #include <doctest/doctest.h>
 
@@ -18,7 +18,7 @@ using namespace shadowlab;
 
 namespace {
 
-const std::string kCookieScene = std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/cookies/spot-cookie.json";
+const std::string kCookieScene = std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/cookies/spot-cookie.json";
 
 // The spot-cookie case as it is and without its cookie.
 struct CookiePair {
@@ -73,7 +73,7 @@ TEST_CASE("light cookie: every technique's image is the uncookied one where the 
 }
 
 TEST_CASE("light cookie: the scene file refuses a missing cookie and a cookie on a light that is not a spot") {
-    const std::string blinds = std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/cookies/textures/blinds.png";
+    const std::string blinds = std::string(SHADOWLAB_SOURCE_DIR) + "/assets/textures/blinds.png";
     const std::string spot = R"({"type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0], "coneAngle": 30,
         "power": 10, "cookie": ")";
     const Scene good = parseScene(sceneWithLight(spot + blinds + "\"}"), "/tmp/cookie-scene.json");

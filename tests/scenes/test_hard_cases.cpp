@@ -1,4 +1,4 @@
-// The hard-case scenes (scenes/hard/*.json, docs/hard-cases.md) load, and each one really
+// The hard-case scenes (assets/scenes/hard/*.json, docs/hard-cases.md) load, and each one really
 // contains the situation it is named after: the geometry is checked here, not the images.
 #include <algorithm>
 #include <cmath>

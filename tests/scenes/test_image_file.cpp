@@ -18,7 +18,7 @@ using test::sceneErrorOf;
 
 namespace {
 
-const std::string kBlinds = std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/cookies/textures/blinds.png";
+const std::string kBlinds = std::string(SHADOWLAB_SOURCE_DIR) + "/assets/textures/blinds.png";
 
 std::string bytesOf(const std::string& path) { return readWholeFile(path); }
 

@@ -1,4 +1,4 @@
-// The soft-shadow cases of Cai et al. 2006 (scenes/soft/*.json, docs/hard-cases.md, "Soft
+// The soft-shadow cases of Cai et al. 2006 (assets/scenes/soft/*.json, docs/hard-cases.md, "Soft
 // shadows") load under a disk light, and each contains its situation; the geometry is
 // checked here, the images by eye.
 #include <algorithm>

@@ -24,7 +24,7 @@
 namespace shadowlab::test {
 
 inline std::string hardCase(const std::string& name) {
-    return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/hard/" + name + ".json";
+    return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/hard/" + name + ".json";
 }
 
 struct HardScene {

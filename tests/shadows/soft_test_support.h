@@ -53,9 +53,9 @@ struct SoftScene {
     }
 };
 
-// A case of scenes/soft by name, as a path from the source tree (ctest runs in the build tree).
+// A case of assets/scenes/soft by name, as a path from the source tree (ctest runs in the build tree).
 inline std::string softCase(const std::string& name) {
-    return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft/" + name + ".json";
+    return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/soft/" + name + ".json";
 }
 
 inline Scene smallScene(const std::string& name, int width, int height) {

@@ -1,7 +1,7 @@
 // Soft techniques against the hard shadow: RMS below 0.05
 // against the soft reference, which the hard shadow itself meets on sphere-box, says
 // nothing. Here each soft technique is held to what its design promises, on the soft cases
-// of scenes/soft (penumbrae of 1,000 to 5,000 pixels at 320 x 200), against the hard
+// of assets/scenes/soft (penumbrae of 1,000 to 5,000 pixels at 320 x 200), against the hard
 // reference (the disk's centre as a point light) and the soft one:
 //   - width-estimating techniques (PCSS, the filtered maps with width=pcss, fins,
 //     multi-sample) beat the hard shadow clearly: RMS at most 0.7 of the hard shadow's, and
@@ -36,7 +36,7 @@ struct HardAndSoft {
     test::SoftScene s;
     std::vector<float> hard;   // V of the disk's centre as a point light
     explicit HardAndSoft(const std::string& file)
-        : s(test::smallScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft/" + file, 320, 200)) {
+        : s(test::smallScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/soft/" + file, 320, 200)) {
         Light centre = s.scene.lights[0];
         centre.type = LightType::Point;
         hard = ReferenceVisibility(s.world).visibility(s.gbuffer, centre);

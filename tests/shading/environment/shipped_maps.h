@@ -1,6 +1,6 @@
-// Where the environment tests find the shipped maps (scenes/environments, MANIFEST there).
+// Where the environment tests find the shipped maps (assets/environments, LICENSE.md there).
 #pragma once
 
 #include <filesystem>
 
-inline const std::filesystem::path kMaps = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "environments";
+inline const std::filesystem::path kMaps = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "assets" / "environments";

@@ -100,7 +100,7 @@ TEST_CASE("environment files: the shipped EXR (DWAB) and Radiance HDR of one map
     REQUIRE(exr.height == 256);
     REQUIRE(hdr.width == exr.width);
     REQUIRE(hdr.height == exr.height);
-    // The HDR was made from the EXR with negatives clamped (scenes/environments/LICENSE.md);
+    // The HDR was made from the EXR with negatives clamped (assets/environments/LICENSE.md);
     // RGBE keeps 8 bits of mantissa per channel against the texel's largest, so a channel
     // above a tenth of its texel's largest agrees within 2^-7 relative. Equal rows also say
     // both files are read zenith first.

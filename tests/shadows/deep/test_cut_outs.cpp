@@ -24,7 +24,7 @@ struct FoliageCase {
         reference = run("reference");
     }
     static Scene smaller() {
-        Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/volumetric/foliage-cards.json");
+        Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/volumetric/foliage-cards.json");
         scene.camera.width = 320, scene.camera.height = 200;
         return scene;
     }

@@ -1,5 +1,5 @@
 // The volumetric shadow maps against the exact reference on the volumetric cases
-// (scenes/volumetric/), their stages against closed forms, their known failures, and
+// (assets/scenes/volumetric/), their stages against closed forms, their known failures, and
 // determinism across threads and SIMD levels.
 #include <doctest/doctest.h>
 
@@ -35,7 +35,7 @@ struct VolumetricCase {
         reference = run("reference").visibility;
     }
     static Scene smaller(const std::string& name) {
-        Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/volumetric/" + name + ".json");
+        Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/volumetric/" + name + ".json");
         scene.camera.width = 320, scene.camera.height = 200;
         return scene;
     }

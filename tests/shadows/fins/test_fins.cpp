@@ -388,14 +388,14 @@ UmbraErrors umbraErrors(const test::SoftScene& s, const std::vector<float>& V) {
 }
 
 std::string softScenePath(const std::string& name) {
-    return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft/" + name + ".json";
+    return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/soft/" + name + ".json";
 }
 
-// sphere-box, bunny, and the paper's cases in scenes/soft (Figure 7's torus, and whatever
+// sphere-box, bunny, and the paper's cases in assets/scenes/soft (Figure 7's torus, and whatever
 // else is there) that have a disk light.
 std::vector<std::string> umbraScenes() {
     std::vector<std::string> soft;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft")) {
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/soft")) {
         if (entry.path().extension() == ".json") soft.push_back(entry.path().string());
     }
     std::sort(soft.begin(), soft.end());

@@ -28,7 +28,7 @@ using namespace shadowlab::test;
 
 namespace {
 
-std::string branchOverCrate() { return std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft/branch-over-crate.json"; }
+std::string branchOverCrate() { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/soft/branch-over-crate.json"; }
 
 // RMS against the reference over the hit pixels `pick` chooses.
 template <class Pick>

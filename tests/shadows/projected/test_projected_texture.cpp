@@ -44,10 +44,10 @@ std::vector<bool> groundOnly(const Scene& scene) {
     return chosen;
 }
 
-// scenes/projected/backward-cast.json: a card under a point light, a receiving screen between
+// assets/scenes/projected/backward-cast.json: a card under a point light, a receiving screen between
 // them and the ground below, at a quarter of its pixels.
 Scene backwardCast() {
-    Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/projected/backward-cast.json");
+    Scene scene = loadScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/projected/backward-cast.json");
     scene.camera.width /= 3, scene.camera.height /= 3;
     return scene;
 }

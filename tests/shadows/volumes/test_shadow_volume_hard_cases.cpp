@@ -1,4 +1,4 @@
-// shadow-volume on the hard cases of scenes/hard/ (docs/hard-cases.md): each case either
+// shadow-volume on the hard cases of assets/scenes/hard/ (docs/hard-cases.md): each case either
 // meets the exact techniques' bound (0.01% misclassified, each next to a reference shadow
 // boundary; test::requireBound)
 // or has its failure mode asserted here, with the reason.

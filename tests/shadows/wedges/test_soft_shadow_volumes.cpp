@@ -24,7 +24,7 @@ namespace {
 constexpr const char* kTechnique = "soft-shadow-volumes";
 
 Scene softScene(const std::string& file, int width = 320, int height = 200) {
-    return test::smallScene(std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/soft/" + file, width, height);
+    return test::smallScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/soft/" + file, width, height);
 }
 
 ShadowOutputs runAt(const test::SoftScene& s, raster::SimdLevel level,
