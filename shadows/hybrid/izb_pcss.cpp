@@ -55,7 +55,7 @@ void addStats(ShadowOutputs& out, const GBuffer& g, const std::vector<float>& we
 }
 
 ShadowOutputs runIzbPcss(const ShadowInputs& in) {
-    const PcssSettings pcss = readPcssSettings(in.params);
+    const PcssSettings pcss = pcssSettingsTable().read(in.params);
     const BlendDistances distances = readBlendDistances(in.params);
     requireAreaLight(in.light, kIzbPcssName);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
@@ -86,7 +86,7 @@ ShadowOutputs runIzbPcss(const ShadowInputs& in) {
 }  // namespace
 
 Technique izbPcssTechnique() {
-    std::vector<ParamSpec> params = pcssParamSpecs();
+    std::vector<ParamSpec> params = pcssSettingsTable().specs();
     params.push_back(integerOrAutoParam("izb-resolution", kMinMapResolution, kMaxMapResolution,
                                         "irregular z-buffer grid texels per side; auto: about 2 receivers per list"));
     params.push_back(realParam("hard-below", 0.1, 0.0, 1000.0, "m from receiver to occluder up to which the "
