@@ -44,8 +44,7 @@ const SettingsTable<Settings>& settingsTable() {
     using S = Settings;
     static const auto table =
         SettingsTable<S>()
-            .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                     "texels per side of the map")
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the map"))
             .integer("light-samples", member(&S::lightSamples), 2, kMaxLightSamplesPerAxis,
                      "samples per axis of the light's bitmask grid (n x n bits)")
             .integer("max-nodes", member(&S::maxNodes), 4, 1024,

@@ -43,8 +43,7 @@ const SettingsTable<ChsSettings>& chsSettingsTable() {
     using S = ChsSettings;
     static const auto table =
         SettingsTable<S>()
-            .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                     "texels per side of the map")
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the map"))
             .integer("search-nodes", member(&S::searchNodes), 2, 64,
                      "blocker search: nodes per side of the region's level")
             .integer("filter-nodes", member(&S::filterNodes), 2, 64,

@@ -53,8 +53,7 @@ struct FilteredSettings {
 SettingsTable<FilteredSettings> filteredSettingsTable(MomentKind kind) {
     using S = FilteredSettings;
     return SettingsTable<S>()
-        .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                 "texels per side of the map")
+        .include(member(&S::resolution), mapResolutionTable("texels per side of the map"))
         .choice("filter", member(&S::summedAreaTable),
                 {{"blur", false, "separable, fixed width"}, {"sat", true, "summed-area table, any width per pixel"}})
         .choice("blur", member(&S::blur),

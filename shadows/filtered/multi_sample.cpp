@@ -54,8 +54,7 @@ const SettingsTable<MultiSampleSettings>& multiSampleSettingsTable() {
     using S = MultiSampleSettings;
     static const auto table =
         SettingsTable<S>()
-            .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                     "texels per side of each map")
+            .include(member(&S::resolution), mapResolutionTable("texels per side of each map"))
             .integer("samples", member(&S::samples), 1, kMaxSamples, "N light points, a square: the level of detail");
     return table;
 }

@@ -90,8 +90,7 @@ const SettingsTable<PcssSettings>& pcssSettingsTable() {
     using S = PcssSettings;
     static const auto table =
         SettingsTable<S>()
-            .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                     "texels per side of the map")
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the map"))
             .include(member(&S::search), blockerSearchSettingsTable())
             .integer("filter-taps", member(&S::filterTaps), 1, 128, "PCF: Poisson taps over the eq. 7.6 width")
             .flag("min-max-hierarchy", member(&S::minMaxHierarchy),

@@ -153,10 +153,10 @@ const SettingsTable<FinMapSettings>& finMapSettingsTable() {
     using S = FinMapSettings;
     static const auto table =
         SettingsTable<S>()
-            .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                     "texels per side of the hard shadow and penumbra maps")
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the hard shadow and penumbra maps"))
             .choice("falloff", member(&S::falloff),
-                    {{"linear", Falloff::Linear, "eq. 1"}, {"bernstein", Falloff::Bernstein, "3u^2 - 2u^3, Haines 2001"}},
+                    {{"linear", Falloff::Linear, "eq. 1"},
+                     {"bernstein", Falloff::Bernstein, "3u^2 - 2u^3, Haines 2001"}},
                     "penumbra fall-off");
     return table;
 }

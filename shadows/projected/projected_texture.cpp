@@ -30,8 +30,7 @@ const SettingsTable<ProjectedTextureSettings>& projectedTextureSettingsTable() {
                    "instances drawn into the texture; auto: every one not a receiver")
             .names("receivers", member(&S::receivers),
                    "instances the texture is projected onto; auto: those named ground, else the largest by area")
-            .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                     "texels per side of the occluders' texture");
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the occluders' texture"));
     return table;
 }
 
