@@ -6,6 +6,10 @@
 #include "shadows/world_draw.h"
 
 namespace shadowlab {
+
+SettingsTable<int> mapResolutionTable(const std::string& help) {
+    return SettingsTable<int>().integer("resolution", itself<int>(), kMinMapResolution, kMaxMapResolution, help);
+}
 namespace {
 
 // One depth-only pass, `draw(rasterizer, framebuffer, state)` drawing the casters. Without

@@ -20,6 +20,7 @@
 #include "raster/tile_kernels.h"
 #include "scenes/scene.h"
 #include "shadows/light_view.h"
+#include "shadows/settings_table.h"
 
 namespace shadowlab {
 
@@ -28,6 +29,10 @@ enum class DepthLayer { First, Second, Midpoint };
 // The texels per side a technique's maps may have. A map is drawn as one viewport, so the
 // rasterizer's limit (fixed_point.h) is the upper one.
 inline constexpr int kMinMapResolution = 16, kMaxMapResolution = raster::kMaxViewport;
+
+// The `resolution` row of a technique's table, for a member of its settings (whose default
+// it keeps); `help` says which map.
+SettingsTable<int> mapResolutionTable(const std::string& help);
 
 struct DepthMap {
     int size = 0;                           // texels per side (square map)

@@ -43,6 +43,13 @@ Member<S, T> member(Sub S::*outer, T Sub::*inner) {
     return {[outer, inner](S& s) -> T& { return (s.*outer).*inner; }};
 }
 
+// The value itself: the row of a one-value table that several structs include for a
+// member of their own (a map's `resolution`, depth_map.h).
+template <class T>
+Member<T, T> itself() {
+    return {[](T& t) -> T& { return t; }};
+}
+
 template <class S>
 class SettingsTable {
 public:

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <optional>
 
+#include "shadows/settings_table.h"
+
 namespace shadowlab {
 
 bool anySurface(const GBuffer& g) { return std::find(g.hit.begin(), g.hit.end(), 1) != g.hit.end(); }
@@ -23,12 +25,24 @@ std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene&, const Prep
 }
 
 namespace {
+
 const char* const kCasterLod = "caster-lod";
+
+struct CasterLodSettings {
+    double ratio = 1.0;   // whole casters
+};
+
+const SettingsTable<CasterLodSettings>& casterLodSettingsTable() {
+    static const auto table = SettingsTable<CasterLodSettings>().real(
+        kCasterLod, member(&CasterLodSettings::ratio), 0.001, 1.0,
+        "share of the casters' triangles kept (meshoptimizer; receivers stay whole)");
+    return table;
 }
 
+}  // namespace
+
 Technique withCasterLod(Technique technique) {
-    technique.params.push_back(realParam(kCasterLod, 1.0, 0.001, 1.0,
-                                         "share of the casters' triangles kept (meshoptimizer; receivers stay whole)"));
+    for (const ParamSpec& spec : casterLodSettingsTable().specs()) technique.params.push_back(spec);
     return technique;
 }
 
@@ -37,7 +51,7 @@ bool hasCasterLod(const Technique& technique) {
 }
 
 double casterLodRatio(const TechniqueParams& params) {
-    return params.values().contains(kCasterLod) ? params.real(kCasterLod) : 1.0;
+    return params.values().contains(kCasterLod) ? casterLodSettingsTable().read(params).ratio : 1.0;
 }
 
 Light pointLightFor(const Light& light) {

@@ -224,18 +224,4 @@ void parseParamAssignment(const std::string& text, std::map<std::string, std::st
     into[text.substr(0, equals)] = text.substr(equals + 1);
 }
 
-std::vector<ParamSpec> plotPixelParams(const std::string& what) {
-    return {integerParam("plot-x", -1, -1, 8191, "debug buffers: column of the pixel whose " + what +
-                                                     "; -1: the image's centre"),
-            integerParam("plot-y", -1, -1, 8191, "debug buffers: its row; -1: the image's centre")};
-}
-
-std::pair<int, int> plotPixel(const TechniqueParams& params, int width, int height, const std::string& technique) {
-    const int i = params.integer("plot-x"), j = params.integer("plot-y");
-    if (i >= width || j >= height) {
-        throw std::invalid_argument(technique + ": plot-x, plot-y must name a pixel of the image");
-    }
-    return {i < 0 ? width / 2 : i, j < 0 ? height / 2 : j};
-}
-
 }  // namespace shadowlab

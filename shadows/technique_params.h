@@ -62,10 +62,6 @@ ParamSpec choiceParam(std::string name, std::string defaultChoice, std::vector<P
 // "auto" (the default): the technique chooses. Scene instance names, for example.
 ParamSpec namesParam(std::string name, std::string help);
 
-// `plot-x`, `plot-y`: the pixel whose work a technique's debug view draws (-1: the image's
-// centre); `what` says what is drawn.
-std::vector<ParamSpec> plotPixelParams(const std::string& what);
-
 template <class E>
 ParamSpec choiceParam(std::string name, std::string defaultChoice, const std::vector<Choice<E>>& choices,
                       std::string help = "") {
@@ -114,9 +110,5 @@ private:
 
 // Parses "name=value" into the map; throws std::invalid_argument without '=' or a name.
 void parseParamAssignment(const std::string& text, std::map<std::string, std::string>& into);
-
-// The pixel plot-x, plot-y name in a width x height image; std::invalid_argument naming
-// the technique where it lies outside.
-std::pair<int, int> plotPixel(const TechniqueParams& params, int width, int height, const std::string& technique);
 
 }  // namespace shadowlab

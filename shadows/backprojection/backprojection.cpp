@@ -23,6 +23,7 @@
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/pcss.h"
 #include "shadows/maps/shadow_map_debug.h"
+#include "shadows/plot_pixel.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
@@ -36,11 +37,25 @@ struct Settings {
     int maxNodes = 32;          // texels (or nodes) per side of a search region
     double edgeRatio = 8.0;     // a depth step more than this many times the steps beside it is an edge
     bool minMaxHierarchy = true;
+    PlotPixelSettings plot;
 };
 
-Settings readSettings(const TechniqueParams& p) {
-    return {p.integer("resolution"), p.integer("light-samples"), p.integer("max-nodes"), p.real("edge-ratio"),
-            p.flag("min-max-hierarchy")};
+const SettingsTable<Settings>& settingsTable() {
+    using S = Settings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the map"))
+            .integer("light-samples", member(&S::lightSamples), 2, kMaxLightSamplesPerAxis,
+                     "samples per axis of the light's bitmask grid (n x n bits)")
+            .integer("max-nodes", member(&S::maxNodes), 4, 1024,
+                     "texels per side of a search region before the hierarchy's nodes stand in")
+            .real("edge-ratio", member(&S::edgeRatio), 1.0, 1e6,
+                  "a depth step between neighbouring patches more than this many times the steps beside it is an "
+                  "edge between two surfaces (else they join: gap closing)")
+            .flag("min-max-hierarchy", member(&S::minMaxHierarchy),
+                  "skip the pixels whose search region the hierarchy proves lit (same V)")
+            .include(member(&S::plot), plotPixelSettingsTable("patches are drawn on the light"));
+    return table;
 }
 
 // What one pixel's shading found, beside its V (the debug views and stats).
@@ -119,7 +134,7 @@ void writeDebug(const ShadowInputs& in, const Frame& f, const std::vector<int8_t
     const float most = float(*std::max_element(patches.begin(), patches.end()));
     debug.write("patches", g.width, g.height, std::vector<float>(patches.begin(), patches.end()), 0.0f,
                 std::max(most, 1.0f));
-    const auto [i, j] = plotPixel(in.params, g.width, g.height, kBackprojectionName);
+    const auto [i, j] = plotPixel(f.settings.plot, g.width, g.height, kBackprojectionName);
     const size_t k = g.index(i, j);
     if (!g.hit[k]) return;
     PatchGrid grid;
@@ -133,9 +148,9 @@ void writeDebug(const ShadowInputs& in, const Frame& f, const std::vector<int8_t
 }
 
 ShadowOutputs runBackprojection(const ShadowInputs& in) {
-    const Settings s = readSettings(in.params);
+    const Settings s = settingsTable().read(in.params);
     requireAreaLight(in.light, kBackprojectionName);
-    plotPixel(in.params, in.gbuffer.width, in.gbuffer.height, kBackprojectionName);   // settings checked before any work
+    plotPixel(s.plot, in.gbuffer.width, in.gbuffer.height, kBackprojectionName);   // settings checked before any work
     const AreaLightFrame light = areaLightFrame(in.light);
     const LightGrid samples(s.lightSamples, light.disk);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
@@ -188,21 +203,10 @@ ShadowOutputs runBackprojection(const ShadowInputs& in) {
 }  // namespace
 
 Technique backprojectionTechnique() {
-    std::vector<ParamSpec> params = {
-        integerParam("resolution", 512, kMinMapResolution, kMaxMapResolution, "texels per side of the map"),
-        integerParam("light-samples", 16, 2, kMaxLightSamplesPerAxis,
-                     "samples per axis of the light's bitmask grid (n x n bits)"),
-        integerParam("max-nodes", 32, 4, 1024,
-                     "texels per side of a search region before the hierarchy's nodes stand in"),
-        realParam("edge-ratio", 8.0, 1.0, 1e6,
-                  "a depth step between neighbouring patches more than this many times the steps beside it is an "
-                  "edge between two surfaces (else they join: gap closing)"),
-        flagParam("min-max-hierarchy", true, "skip the pixels whose search region the hierarchy proves lit (same V)")};
-    for (const ParamSpec& p : plotPixelParams("patches are drawn on the light")) params.push_back(p);
     return {.name = kBackprojectionName,
             .description = "shadow-map texels back-projected onto the area light, hidden light samples in a "
                            "bitmask (Guennebaud et al. 2006, Schwarz and Stamminger 2007)",
-            .params = params,
+            .params = settingsTable().specs(),
             .run = runBackprojection,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};

@@ -70,21 +70,33 @@ AdaptiveMap buildAdaptiveMap(const VolumetricLayers& layers, int capacity) {
     return map;
 }
 
+struct AdaptiveSettings {
+    VolumetricSettings volumetric;
+    int nodes = 8;   // per texel
+};
+
+const SettingsTable<AdaptiveSettings>& adaptiveSettingsTable() {
+    using S = AdaptiveSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::volumetric), volumetricSettingsTable())
+            .integer("nodes", member(&S::nodes), 2, 64, "(depth, transmittance) nodes per texel; a surface takes two");
+    return table;
+}
+
 ShadowOutputs runAdaptiveVolumetricShadowMaps(const ShadowInputs& in) {
-    const int capacity = in.params.integer("nodes");
-    return runVolumetricFrame(in, "adaptive-volumetric-shadow-maps", "nodes",
-                              [&](const VolumetricLayers& layers) { return buildAdaptiveMap(layers, capacity); });
+    const AdaptiveSettings s = adaptiveSettingsTable().read(in.params);
+    return runVolumetricFrame(in, s.volumetric, "adaptive-volumetric-shadow-maps", "nodes",
+                              [&](const VolumetricLayers& layers) { return buildAdaptiveMap(layers, s.nodes); });
 }
 
 }  // namespace
 
 Technique adaptiveVolumetricShadowMapsTechnique() {
-    std::vector<ParamSpec> params = volumetricSettingsTable().specs();
-    params.push_back(integerParam("nodes", 8, 2, 64, "(depth, transmittance) nodes per texel; a surface takes two"));
     return {.name = "adaptive-volumetric-shadow-maps",
             .description = "adaptive volumetric shadow maps (Salvi et al. 2010): a fixed number of nodes per texel, "
                            "compressed as fragments arrive",
-            .params = params,
+            .params = adaptiveSettingsTable().specs(),
             .run = runAdaptiveVolumetricShadowMaps,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

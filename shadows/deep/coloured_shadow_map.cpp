@@ -51,7 +51,8 @@ ColouredMap buildColouredMap(const VolumetricLayers& layers) {
 }
 
 ShadowOutputs runColouredShadowMap(const ShadowInputs& in) {
-    return runVolumetricFrame(in, "coloured-shadow-map", "colour_map", buildColouredMap);
+    return runVolumetricFrame(in, volumetricSettingsTable().read(in.params), "coloured-shadow-map", "colour_map",
+                              buildColouredMap);
 }
 
 }  // namespace

@@ -82,25 +82,36 @@ DeepMap buildDeepMap(const VolumetricLayers& layers, float tolerance, int maxVer
     return map;
 }
 
+struct DeepSettings {
+    VolumetricSettings volumetric;
+    float tolerance = 0.02f;   // of the curve's compression
+    int maxVertices = 16;      // per texel's curve
+};
+
+const SettingsTable<DeepSettings>& deepSettingsTable() {
+    using S = DeepSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::volumetric), volumetricSettingsTable())
+            .real("tolerance", member(&S::tolerance), 0.0, 1.0, "largest change of transmittance compression may make")
+            .integer("max-vertices", member(&S::maxVertices), 2, 1024, "vertices a texel's curve may keep");
+    return table;
+}
+
 ShadowOutputs runDeepShadowMaps(const ShadowInputs& in) {
-    const float tolerance = float(in.params.real("tolerance"));
-    const int maxVertices = in.params.integer("max-vertices");
-    return runVolumetricFrame(in, "deep-shadow-maps", "curves",
-                              [&](const VolumetricLayers& layers) {
-                                  return buildDeepMap(layers, tolerance, maxVertices);
-                              });
+    const DeepSettings s = deepSettingsTable().read(in.params);
+    return runVolumetricFrame(in, s.volumetric, "deep-shadow-maps", "curves", [&](const VolumetricLayers& layers) {
+        return buildDeepMap(layers, s.tolerance, s.maxVertices);
+    });
 }
 
 }  // namespace
 
 Technique deepShadowMapsTechnique() {
-    std::vector<ParamSpec> params = volumetricSettingsTable().specs();
-    params.push_back(realParam("tolerance", 0.02, 0.0, 1.0, "largest change of transmittance compression may make"));
-    params.push_back(integerParam("max-vertices", 16, 2, 1024, "vertices a texel's curve may keep"));
     return {.name = "deep-shadow-maps",
             .description = "deep shadow maps (Lokovic and Veach 2000): each texel's transmittance curve from all "
                            "fragments, compressed within a tolerance, filtered lookups",
-            .params = params,
+            .params = deepSettingsTable().specs(),
             .run = runDeepShadowMaps,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

@@ -66,21 +66,32 @@ void OpacitySlices::writeDebug(const DebugBuffers& debug, const VolumetricLayers
     }
 }
 
+struct OpacitySettings {
+    VolumetricSettings volumetric;
+    int slices = 16;
+};
+
+const SettingsTable<OpacitySettings>& opacitySettingsTable() {
+    using S = OpacitySettings;
+    static const auto table = SettingsTable<S>()
+                                  .include(member(&S::volumetric), volumetricSettingsTable())
+                                  .integer("slices", member(&S::slices), 1, 256, "opacity maps, uniformly spaced in depth");
+    return table;
+}
+
 ShadowOutputs runOpacityShadowMaps(const ShadowInputs& in) {
-    const int count = in.params.integer("slices");
-    return runVolumetricFrame(in, "opacity-shadow-maps", "slices",
-                              [&](const VolumetricLayers& layers) { return buildSlices(layers, count); });
+    const OpacitySettings s = opacitySettingsTable().read(in.params);
+    return runVolumetricFrame(in, s.volumetric, "opacity-shadow-maps", "slices",
+                              [&](const VolumetricLayers& layers) { return buildSlices(layers, s.slices); });
 }
 
 }  // namespace
 
 Technique opacityShadowMapsTechnique() {
-    std::vector<ParamSpec> params = volumetricSettingsTable().specs();
-    params.push_back(integerParam("slices", 16, 1, 256, "opacity maps, uniformly spaced in depth"));
     return {.name = "opacity-shadow-maps",
             .description = "opacity shadow maps (Kim and Neumann 2001): optical depth at uniform depth slices, "
                            "interpolated between them",
-            .params = params,
+            .params = opacitySettingsTable().specs(),
             .run = runOpacityShadowMaps,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

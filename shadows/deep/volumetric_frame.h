@@ -47,15 +47,15 @@ void addVolumetricStats(const VolumetricFrame& frame, double bytesPerTexel, std:
 // Debug buffers every technique writes: the opaque map and the number of events per texel.
 void writeVolumetricDebug(const ShadowInputs& in, const std::string& technique, const VolumetricFrame& frame);
 
-// One frame of a volumetric technique: the shared stages (beginVolumetricFrame), what the
-// technique keeps per texel, `build(layers)` (timed as `stage`), the lookup of its
-// `at(texel, depth)` at every receiver (a transmittance, or one per channel, which the frame
-// shades with and whose luminance is V), and the figures and buffers every technique reports
-// with the storage's own (`bytesPerTexel()`, `addStats(stats)`, `writeDebug(debug, layers)`).
+// One frame of a volumetric technique with its settings as read: the shared stages
+// (beginVolumetricFrame), what the technique keeps per texel, `build(layers)` (timed as
+// `stage`), the lookup of its `at(texel, depth)` at every receiver (a transmittance, or one
+// per channel, which the frame shades with and whose luminance is V), and the figures and
+// buffers every technique reports with the storage's own (`bytesPerTexel()`,
+// `addStats(stats)`, `writeDebug(debug, layers)`).
 template <class Build>
-ShadowOutputs runVolumetricFrame(const ShadowInputs& in, const std::string& technique, const char* stage,
-                                 const Build& build) {
-    const VolumetricSettings settings = volumetricSettingsTable().read(in.params);
+ShadowOutputs runVolumetricFrame(const ShadowInputs& in, const VolumetricSettings& settings, const std::string& technique,
+                                 const char* stage, const Build& build) {
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const CasterTransmission transmission(in.casters().scene(), in.casterWorld());

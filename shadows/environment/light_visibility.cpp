@@ -21,8 +21,7 @@ const SettingsTable<LightVisibilitySettings>& lightVisibilitySettingsTable() {
                      {"shadow-volume", VisibilityMethod::ShadowVolume, "a `shadow-volume` per light (the paper's)"},
                      {"exact", VisibilityMethod::Exact, "Embree rays, one BVH for the frame"}},
                     "how each light's V is found")
-            .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                     "shadow-map: texels per side of each light's map");
+            .include(member(&S::resolution), mapResolutionTable("shadow-map: texels per side of each light's map"));
     return table;
 }
 

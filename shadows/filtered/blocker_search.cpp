@@ -8,18 +8,14 @@
 
 namespace shadowlab {
 
-std::vector<ParamSpec> blockerSearchParamSpecs() {
-    return {
-        integerParam("search-taps", 16, 1, 64, "blocker search: Poisson taps"),
-        realParam("search-region", 1.0, 1e-3, 1.0, "blocker search: fraction of the light's cone cut at the near plane"),
-    };
-}
-
-BlockerSearchSettings readBlockerSearch(const TechniqueParams& p) {
-    BlockerSearchSettings s;
-    s.taps = p.integer("search-taps");
-    s.region = p.real("search-region");
-    return s;
+const SettingsTable<BlockerSearchSettings>& blockerSearchSettingsTable() {
+    using S = BlockerSearchSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .integer("search-taps", member(&S::taps), 1, 64, "blocker search: Poisson taps")
+            .real("search-region", member(&S::region), 1e-3, 1.0,
+                  "blocker search: fraction of the light's cone cut at the near plane");
+    return table;
 }
 
 MapReceiver planeReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N) {

@@ -20,7 +20,7 @@
 
 #include "shadows/filtered/soft_shadow_map.h"
 #include "shadows/maps/shadow_bias.h"
-#include "shadows/technique_params.h"
+#include "shadows/settings_table.h"
 
 namespace shadowlab {
 
@@ -35,9 +35,8 @@ struct PenumbraEstimate {
     glm::dvec2 widthTexels{0.0};    // eq. 7.6 per map axis (0 without blockers)
 };
 
-// search-taps, search-region.
-std::vector<ParamSpec> blockerSearchParamSpecs();
-BlockerSearchSettings readBlockerSearch(const TechniqueParams& params);
+// search-taps, search-region: rows the techniques with a blocker search include.
+const SettingsTable<BlockerSearchSettings>& blockerSearchSettingsTable();
 
 // The receiver as the blocker search and PCF compare it: on its own plane.
 MapReceiver planeReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N);

@@ -25,12 +25,31 @@
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/min_max_hierarchy.h"
 #include "shadows/maps/shadow_map_debug.h"
+#include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
 
 const char* const kChsName = "chs";
+
+struct ChsSettings {
+    int resolution = kSoftMapResolution;
+    int searchNodes = 8;   // per side of the search region's level
+    int filterNodes = 8;   // N of the N x N filter grid
+};
+
+const SettingsTable<ChsSettings>& chsSettingsTable() {
+    using S = ChsSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the map"))
+            .integer("search-nodes", member(&S::searchNodes), 2, 64,
+                     "blocker search: nodes per side of the region's level")
+            .integer("filter-nodes", member(&S::filterNodes), 2, 64,
+                     "filter: N x N taps, read at the level that fits them");
+    return table;
+}
 
 struct Estimate {
     double blockerDistance = 0.0;   // 0: no blocker
@@ -88,12 +107,11 @@ double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const Map
 }
 
 ShadowOutputs runChs(const ShadowInputs& in) {
-    const int resolution = in.params.integer("resolution");
-    const int searchNodes = in.params.integer("search-nodes"), filterNodes = in.params.integer("filter-nodes");
+    const ChsSettings s = chsSettingsTable().read(in.params);
     requireAreaLight(in.light, kChsName);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
-    const SoftShadowMap soft = renderPcssMap(in, resolution);
+    const SoftShadowMap soft = renderPcssMap(in, s.resolution);
     timer.lap("map");
     const MinMaxHierarchy h(soft.map);
     timer.lap("hierarchy");
@@ -106,12 +124,12 @@ ShadowOutputs runChs(const ShadowInputs& in) {
         g, soft,
         [&](Row&, size_t k, const glm::dvec3& P, const glm::dvec3& N, const SoftReceiver& receiver) {
             const MapReceiver r = planeReceiver(soft, P, N);
-            const Estimate e = searchBlockers(soft, h, r, receiver.distance, searchNodes);
+            const Estimate e = searchBlockers(soft, h, r, receiver.distance, s.searchNodes);
             out.visibility[k] = 1.0f;
             if (e.blockerDistance <= 0.0) return;
             const glm::dvec2 radius = 0.5 * sampleWidthTexels(soft, receiver.distance, e.blockerDistance);
             int level = 0;
-            out.visibility[k] = float(filterGrid(soft, h, r, radius, filterNodes, level));
+            out.visibility[k] = float(filterGrid(soft, h, r, radius, s.filterNodes, level));
             filterLevel[k] = float(level);
         },
         [](Row&) {});
@@ -124,7 +142,7 @@ ShadowOutputs runChs(const ShadowInputs& in) {
     }
     size_t filtered = 0, coarse = 0;   // in pixel order: the same for any thread count
     for (float l : filterLevel) filtered += l >= 0.0f, coarse += l > 0.0f;
-    out.stats = {{"resolution_texels", double(resolution)},
+    out.stats = {{"resolution_texels", double(s.resolution)},
                  {"filtered_pixels", double(filtered)},
                  {"coarse_filter_percent", filtered ? 100.0 * double(coarse) / double(filtered) : 0.0}};
     timer.appendTo(out.stats);
@@ -137,9 +155,7 @@ Technique contactHardeningTechnique() {
     return {.name = kChsName,
             .description = "contact-hardening soft shadows: PCSS read on the levels of a min/max mip chain (RTR 7.6, "
                            "Sikachev et al.)",
-            .params = {softResolutionParam("texels per side of the map"),
-                       integerParam("search-nodes", 8, 2, 64, "blocker search: nodes per side of the region's level"),
-                       integerParam("filter-nodes", 8, 2, 64, "filter: N x N taps, read at the level that fits them")},
+            .params = chsSettingsTable().specs(),
             .run = runChs,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};

@@ -14,11 +14,11 @@ namespace {
 
 // c <= 700 keeps the moment and its dynamic range e^c finite in double (the largest double
 // is about e^709).
-std::vector<ParamSpec> exponentialParams() {
-    return {realParam("exponent", 80.0, 0.1, 700.0, "c of e^{c z}, z the normalised linear depth")};
+const SettingsTable<MomentSettings>& exponentialSettings() {
+    static const auto table = SettingsTable<MomentSettings>().real(
+        "exponent", member(&MomentSettings::exponent), 0.1, 700.0, "c of e^{c z}, z the normalised linear depth");
+    return table;
 }
-
-void readExponential(const TechniqueParams& p, MomentSettings& s) { s.exponent = p.real("exponent"); }
 
 // e^{c z}, the exponentials a vector at a time.
 void exponentialMoments(const MomentSettings& s, const double* z, size_t count, double* out, raster::SimdLevel simd) {
@@ -39,7 +39,7 @@ double exponentialRange(const MomentSettings& s) { return portable::exp(s.expone
 }  // namespace
 
 const MomentModel kExponentialMoments = {"esm", "exponential shadow map (RTR 7.7, Annen et al. 2008): filtered e^{cz}", 1,
-                                         exponentialParams, readExponential, exponentialMoments, exponentialVisibility,
+                                         exponentialSettings, exponentialMoments, exponentialVisibility,
                                          exponentialRange};
 
 }  // namespace shadowlab

@@ -17,14 +17,13 @@ namespace {
 
 // c+, c- <= 170 keep the moments' dynamic range e^{4 c} (e^680 at most) finite in double
 // (the largest double is about e^709).
-std::vector<ParamSpec> exponentialVarianceParams() {
-    return {realParam("positive-exponent", 40.0, 0.1, 170.0, "c+ of e^{c+ (2z - 1)}"),
-            realParam("negative-exponent", 5.0, 0.1, 170.0, "c- of -e^{-c- (2z - 1)}")};
-}
-
-void readExponentialVariance(const TechniqueParams& p, MomentSettings& s) {
-    s.positiveExponent = p.real("positive-exponent");
-    s.negativeExponent = p.real("negative-exponent");
+const SettingsTable<MomentSettings>& exponentialVarianceSettings() {
+    using S = MomentSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .real("positive-exponent", member(&S::positiveExponent), 0.1, 170.0, "c+ of e^{c+ (2z - 1)}")
+            .real("negative-exponent", member(&S::negativeExponent), 0.1, 170.0, "c- of -e^{-c- (2z - 1)}");
+    return table;
 }
 
 constexpr size_t kWarpChunk = 256;   // depths warped together, on the stack
@@ -86,7 +85,7 @@ double exponentialVarianceRange(const MomentSettings& s) {
 
 const MomentModel kExponentialVarianceMoments = {
     "evsm", "exponential variance shadow map (Lauritzen and McCool 2008): positive and negative warps", 4,
-    exponentialVarianceParams, readExponentialVariance, exponentialVarianceMoments, exponentialVarianceVisibility,
+    exponentialVarianceSettings, exponentialVarianceMoments, exponentialVarianceVisibility,
     exponentialVarianceRange};
 
 }  // namespace shadowlab

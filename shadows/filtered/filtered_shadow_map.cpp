@@ -40,7 +40,7 @@ constexpr double kSatRelativeErrorLimit = 0x1p-10;
 constexpr double kFitMarginTexels = 1.5;
 
 struct FilteredSettings {
-    int resolution = 1024;
+    int resolution = kSoftMapResolution;
     bool summedAreaTable = false;
     BlurKind blur = BlurKind::Box;
     int widthTexels = 7;
@@ -49,20 +49,30 @@ struct FilteredSettings {
     MomentSettings moments;
 };
 
-FilteredSettings readSettings(MomentKind kind, const TechniqueParams& p) {
+// The family's rows, then the kind's own.
+SettingsTable<FilteredSettings> filteredSettingsTable(MomentKind kind) {
+    using S = FilteredSettings;
+    return SettingsTable<S>()
+        .include(member(&S::resolution), mapResolutionTable("texels per side of the map"))
+        .choice("filter", member(&S::summedAreaTable),
+                {{"blur", false, "separable, fixed width"}, {"sat", true, "summed-area table, any width per pixel"}})
+        .choice("blur", member(&S::blur),
+                {{"box", BlurKind::Box}, {"gaussian", BlurKind::Gaussian, "sigma = width / 6"}}, "filter=blur")
+        .integer("filter-width", member(&S::widthTexels), 1, int(kMaxBlurTaps), "fixed width: taps per side, odd")
+        .choice("width", member(&S::pcssWidth),
+                {{"fixed", false}, {"pcss", true, "blocker search and eq. 7.6 per pixel; needs filter=sat"}})
+        .include(member(&S::search), blockerSearchSettingsTable())
+        .include(member(&S::moments), momentSettingsTable(kind));
+}
+
+// The settings as read, of this kind, checked where the table's ranges cannot.
+FilteredSettings checked(MomentKind kind, FilteredSettings s) {
     const std::string name = momentKindName(kind);
-    FilteredSettings s;
-    s.resolution = p.integer("resolution");
-    s.summedAreaTable = p.choice<bool>("filter");
-    s.blur = p.choice<BlurKind>("blur");
-    s.widthTexels = p.integer("filter-width");
+    s.moments.kind = kind;
     if (s.widthTexels % 2 == 0) throw std::invalid_argument(name + ": filter-width must be odd (taps centred on a texel)");
-    s.pcssWidth = p.choice<bool>("width");
     if (s.pcssWidth && !s.summedAreaTable) {
         throw std::invalid_argument(name + ": width=pcss needs filter=sat (a box of a different width at every pixel)");
     }
-    s.search = readBlockerSearch(p);
-    s.moments = readMomentSettings(kind, p);
     return s;
 }
 
@@ -162,9 +172,8 @@ void writeDebug(const ShadowInputs& in, const FilteredSettings& s, const SoftSha
     debug.write("filter-width", in.gbuffer.width, in.gbuffer.height, px.widthTexels, 0.0f, std::max(widest, 1.0f));
 }
 
-ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
-    const FilteredSettings s = readSettings(kind, in.params);
-    requireAreaLight(in.light, momentKindName(kind));
+ShadowOutputs runFiltered(const ShadowInputs& in, const FilteredSettings& s) {
+    requireAreaLight(in.light, momentKindName(s.moments.kind));
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const SoftShadowMap soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),
@@ -198,22 +207,13 @@ ShadowOutputs runFiltered(MomentKind kind, const ShadowInputs& in) {
 }  // namespace
 
 Technique filteredShadowMapTechnique(MomentKind kind) {
-    std::vector<ParamSpec> params = {
-        softResolutionParam("texels per side of the map"),
-        choiceParam<bool>("filter", "blur",
-                          {{"blur", false, "separable, fixed width"}, {"sat", true, "summed-area table, any width per pixel"}}),
-        choiceParam<BlurKind>("blur", "box", {{"box", BlurKind::Box}, {"gaussian", BlurKind::Gaussian, "sigma = width / 6"}},
-                              "filter=blur"),
-        integerParam("filter-width", 7, 1, int(kMaxBlurTaps), "fixed width: taps per side, odd"),
-        choiceParam<bool>("width", "fixed",
-                          {{"fixed", false}, {"pcss", true, "blocker search and eq. 7.6 per pixel; needs filter=sat"}}),
-    };
-    for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
-    for (const ParamSpec& p : momentParamSpecs(kind)) params.push_back(p);
+    const SettingsTable<FilteredSettings> table = filteredSettingsTable(kind);
     return {.name = momentKindName(kind),
             .description = momentKindDescription(kind),
-            .params = params,
-            .run = [kind](const ShadowInputs& in) { return runFiltered(kind, in); },
+            .params = table.specs(),
+            .run = [kind, table](const ShadowInputs& in) {
+                return runFiltered(in, checked(kind, table.read(in.params)));
+            },
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};
 }

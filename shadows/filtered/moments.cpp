@@ -23,14 +23,7 @@ const char* momentKindDescription(MomentKind kind) { return model(kind).descript
 
 int momentCount(MomentKind kind) { return model(kind).count; }
 
-std::vector<ParamSpec> momentParamSpecs(MomentKind kind) { return model(kind).params(); }
-
-MomentSettings readMomentSettings(MomentKind kind, const TechniqueParams& p) {
-    MomentSettings s;
-    s.kind = kind;
-    model(kind).read(p, s);
-    return s;
-}
+const SettingsTable<MomentSettings>& momentSettingsTable(MomentKind kind) { return model(kind).settings(); }
 
 void momentsOf(const MomentSettings& s, double z, double* out) { momentsOfRun(s, &z, 1, out, raster::SimdLevel::Scalar); }
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "raster/tile_kernels.h"
-#include "shadows/technique_params.h"
+#include "shadows/settings_table.h"
 
 namespace shadowlab {
 
@@ -41,9 +41,8 @@ const char* momentKindName(MomentKind kind);          // "vsm", "esm", "evsm", "
 const char* momentKindDescription(MomentKind kind);   // the technique's, for `shadowlab techniques`
 int momentCount(MomentKind kind);
 
-// The kind's own parameters (added to the family's) and their reading.
-std::vector<ParamSpec> momentParamSpecs(MomentKind kind);
-MomentSettings readMomentSettings(MomentKind kind, const TechniqueParams& params);
+// The kind's own parameters, which the family's table includes; `kind` is no parameter.
+const SettingsTable<MomentSettings>& momentSettingsTable(MomentKind kind);
 
 // The moments of depth z, written to out[0 .. momentCount - 1].
 void momentsOf(const MomentSettings& s, double z, double* out);
@@ -68,8 +67,7 @@ struct MomentModel {
     const char* technique;
     const char* description;
     int count;   // moments per texel, at most kMaxMoments
-    std::vector<ParamSpec> (*params)();
-    void (*read)(const TechniqueParams& params, MomentSettings& into);
+    const SettingsTable<MomentSettings>& (*settings)();
     void (*moments)(const MomentSettings& s, const double* z, size_t count, double* out, raster::SimdLevel simd);
     void (*visibility)(const MomentSettings& s, const double* filtered, const double* t, size_t count, double* out,
                        raster::SimdLevel simd);

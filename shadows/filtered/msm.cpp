@@ -15,9 +15,10 @@ namespace {
 // of the moments positive definite against rounding (their value for 4MSM).
 constexpr double kHamburgerMomentBias = 3e-5;
 
-std::vector<ParamSpec> hamburgerParams() { return {}; }
-
-void readHamburger(const TechniqueParams&, MomentSettings&) {}
+const SettingsTable<MomentSettings>& hamburgerSettings() {
+    static const SettingsTable<MomentSettings> none;   // no parameter of its own
+    return none;
+}
 
 void hamburgerMoments(const MomentSettings&, const double* z, size_t count, double* out, raster::SimdLevel) {
     for (size_t k = 0; k < count; ++k) {
@@ -60,7 +61,7 @@ double hamburgerRange(const MomentSettings&) { return 1.0; }   // moments in [0,
 
 const MomentModel kHamburgerMoments = {"msm",
                                        "moment shadow map (Peters and Klein 2015): four moments, Hamburger reconstruction",
-                                       4, hamburgerParams, readHamburger, hamburgerMoments, hamburgerVisibility,
+                                       4, hamburgerSettings, hamburgerMoments, hamburgerVisibility,
                                        hamburgerRange};
 
 }  // namespace shadowlab

@@ -28,6 +28,7 @@
 #include "shadows/depth_map.h"
 #include "shadows/filtered/soft_shadow_map.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
+#include "shadows/settings_table.h"
 #include "shadows/light_view.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
@@ -44,6 +45,20 @@ constexpr int kMaxSamples = 4096;                        // counts fit uint16_t
 // texel, and the receiver's texel may differ by another from where the fit put it.
 constexpr double kNearestFitMarginTexels = 1.5;
 
+struct MultiSampleSettings {
+    int resolution = kSoftMapResolution;
+    int samples = 64;   // N, a square
+};
+
+const SettingsTable<MultiSampleSettings>& multiSampleSettingsTable() {
+    using S = MultiSampleSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::resolution), mapResolutionTable("texels per side of each map"))
+            .integer("samples", member(&S::samples), 1, kMaxSamples, "N light points, a square: the level of detail");
+    return table;
+}
+
 // Adds the hard shadow of the point light `point` from `map` to every pixel's count: the
 // shadow map's nearest lookup (shadow_lookup.h), in float through its vector kernel, with
 // V = 0 where the point is behind the surface. `v` is working memory, one float a pixel.
@@ -58,8 +73,7 @@ void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const Light& po
 }
 
 ShadowOutputs runMultiSample(const ShadowInputs& in) {
-    const int resolution = in.params.integer("resolution");
-    const int samples = in.params.integer("samples");
+    const auto [resolution, samples] = multiSampleSettingsTable().read(in.params);
     const int perAxis = int(std::lround(std::sqrt(double(samples))));
     if (perAxis * perAxis != samples) {
         throw std::invalid_argument("multi-sample: samples must be a square (n x n strata), not " + std::to_string(samples));
@@ -111,8 +125,7 @@ Technique multiSampleTechnique() {
     return {.name = "multi-sample",
             .description = "average of N hard shadow maps from stratified points on the area light (Heckbert "
                            "and Herf 1997)",
-            .params = {softResolutionParam("texels per side of each map"),
-                       integerParam("samples", 64, 1, kMaxSamples, "N light points, a square: the level of detail")},
+            .params = multiSampleSettingsTable().specs(),
             .run = runMultiSample,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};

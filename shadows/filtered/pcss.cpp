@@ -54,7 +54,7 @@ void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuf
 }
 
 ShadowOutputs runPcss(const ShadowInputs& in) {
-    const PcssSettings settings = readPcssSettings(in.params);
+    const PcssSettings settings = pcssSettingsTable().read(in.params);
     requireAreaLight(in.light, "pcss");
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
@@ -86,18 +86,16 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
 
 }  // namespace
 
-std::vector<ParamSpec> pcssParamSpecs() {
-    std::vector<ParamSpec> params = {softResolutionParam("texels per side of the map")};
-    for (const ParamSpec& p : blockerSearchParamSpecs()) params.push_back(p);
-    params.push_back(integerParam("filter-taps", 32, 1, 128, "PCF: Poisson taps over the eq. 7.6 width"));
-    params.push_back(flagParam("min-max-hierarchy", false,
-                               "skip the taps the map's min/max depth hierarchy proves lit or shadowed (same V)"));
-    return params;
-}
-
-PcssSettings readPcssSettings(const TechniqueParams& params) {
-    return {params.integer("resolution"), readBlockerSearch(params), params.integer("filter-taps"),
-            params.flag("min-max-hierarchy")};
+const SettingsTable<PcssSettings>& pcssSettingsTable() {
+    using S = PcssSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the map"))
+            .include(member(&S::search), blockerSearchSettingsTable())
+            .integer("filter-taps", member(&S::filterTaps), 1, 128, "PCF: Poisson taps over the eq. 7.6 width")
+            .flag("min-max-hierarchy", member(&S::minMaxHierarchy),
+                  "skip the taps the map's min/max depth hierarchy proves lit or shadowed (same V)");
+    return table;
 }
 
 SoftShadowMap renderPcssMap(const ShadowInputs& in, int resolution) {
@@ -133,7 +131,7 @@ Technique pcssTechnique() {
     return {.name = "pcss",
             .description = "percentage-closer soft shadows (RTR 7.6, Fernando 2005): blocker search, eq. 7.6 "
                            "width, Poisson PCF",
-            .params = pcssParamSpecs(),
+            .params = pcssSettingsTable().specs(),
             .run = runPcss,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};

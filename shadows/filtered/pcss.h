@@ -14,15 +14,14 @@
 namespace shadowlab {
 
 struct PcssSettings {
-    int resolution = 1024;          // texels per side of the map
+    int resolution = kSoftMapResolution;   // texels per side of the map
     BlockerSearchSettings search;
     int filterTaps = 32;            // Poisson taps of the PCF over the eq. 7.6 width
     bool minMaxHierarchy = false;   // skip the taps the map's min/max hierarchy proves (same bits)
 };
 
 // resolution, search-taps, search-region, filter-taps, min-max-hierarchy.
-std::vector<ParamSpec> pcssParamSpecs();
-PcssSettings readPcssSettings(const TechniqueParams& params);
+const SettingsTable<PcssSettings>& pcssSettingsTable();
 
 // The map of the light's centre, its view wide enough for every receiver's blocker search.
 SoftShadowMap renderPcssMap(const ShadowInputs& in, int resolution);

@@ -6,9 +6,6 @@
 // multi_sample.cpp; docs/soft-shadows.md.
 #pragma once
 
-#include <string>
-
-#include "shadows/depth_map.h"
 #include "shadows/filtered/moments.h"
 #include "shadows/technique.h"
 
@@ -19,12 +16,5 @@ Technique pcssTechnique();
 Technique contactHardeningTechnique();
 Technique filteredShadowMapTechnique(MomentKind kind);
 Technique multiSampleTechnique();
-
-// The `resolution` parameter of these techniques, 1024 texels per side by default. A disk
-// light of radius 0.5 m over the built-in scenes casts penumbrae 5 to 40 texels wide at this
-// size, so the filters, not the texels, set the shadow's softness.
-inline ParamSpec softResolutionParam(const std::string& help) {
-    return integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution, help);
-}
 
 }  // namespace shadowlab

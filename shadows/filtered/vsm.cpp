@@ -12,12 +12,12 @@
 namespace shadowlab {
 namespace {
 
-std::vector<ParamSpec> varianceParams() {
-    return {realParam("bleeding-reduction", 0.2, 0.0, 0.99,
-                      "Chebyshev bounds below this are shadow, the rest stretched to [0, 1]")};
+const SettingsTable<MomentSettings>& varianceSettings() {
+    static const auto table = SettingsTable<MomentSettings>().real(
+        "bleeding-reduction", member(&MomentSettings::bleedingReduction), 0.0, 0.99,
+        "Chebyshev bounds below this are shadow, the rest stretched to [0, 1]");
+    return table;
 }
-
-void readVariance(const TechniqueParams& p, MomentSettings& s) { s.bleedingReduction = p.real("bleeding-reduction"); }
 
 void varianceMoments(const MomentSettings&, const double* z, size_t count, double* out, raster::SimdLevel) {
     for (size_t k = 0; k < count; ++k) out[2 * k] = z[k], out[2 * k + 1] = z[k] * z[k];
@@ -39,6 +39,6 @@ double varianceRange(const MomentSettings&) { return 1.0; }   // moments in [0, 
 
 const MomentModel kVarianceMoments = {
     "vsm", "variance shadow map (RTR 7.7, Donnelly and Lauritzen 2006): Chebyshev bound, light-bleeding reduction", 2,
-    varianceParams, readVariance, varianceMoments, varianceVisibility, varianceRange};
+    varianceSettings, varianceMoments, varianceVisibility, varianceRange};
 
 }  // namespace shadowlab

@@ -53,7 +53,7 @@ uint32_t instanceOfVertex(const std::vector<InstanceRange>& ranges, uint32_t ver
 // parallel to the light's plane.
 LightView fitFinView(const ShadowInputs& in, const FinSettings& s) {
     LightFitOptions fit;
-    fit.resolution = s.resolution;
+    fit.resolution = s.maps.resolution;
     fit.axis = s.light.normal;
     fit.simd = in.simd;
     return fitLightView(pointLightFor(in.light), in.gbuffer, in.casterWorld(), fit);
@@ -109,9 +109,9 @@ std::vector<uint8_t> facingLight(const GBuffer& g, const Light& light) {
 // Returns the number of layers drawn.
 int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings& s, const FinDebug& debug,
                IlluminanceBuffer& buffer, StageTimer& timer) {
-    const IlluminanceSettings settings{s.light, scene.view, scene.L0, s.style.edgeWeight, s.falloff, in.simd};
+    const IlluminanceSettings settings{s.light, scene.view, scene.L0, s.style.edgeWeight, s.maps.falloff, in.simd};
     // Slope-scaled, the shadow map's default: the illuminance compares receivers where they are.
-    const DepthMapSettings hardSettings{s.resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
+    const DepthMapSettings hardSettings{s.maps.resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
     int drawn = 0;
     for (int layer = 0; layer < scene.layering.layers.count(); ++layer) {
         const LayerContents& c = scene.layering.contents[layer];
@@ -121,10 +121,11 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
         timer.lap("hard_maps");
         PenumbraMap inner;
         if (s.style.innerFins) {
-            inner = renderPenumbraMap(scene.fins.inner, c.innerFins, scene.view, s.resolution, FinKind::Inner, in.simd);
+            inner = renderPenumbraMap(scene.fins.inner, c.innerFins, scene.view, s.maps.resolution, FinKind::Inner,
+                                      in.simd);
         }
         const PenumbraMap outer =
-            renderPenumbraMap(scene.fins.outer, c.outerFins, scene.view, s.resolution, FinKind::Outer, in.simd);
+            renderPenumbraMap(scene.fins.outer, c.outerFins, scene.view, s.maps.resolution, FinKind::Outer, in.simd);
         const PenumbraMap* innerOrNone = s.style.innerFins ? &inner : nullptr;
         timer.lap("penumbra_maps");
         buffer.combineLayer({hard, innerOrNone, outer}, settings);
@@ -141,34 +142,36 @@ void addFinStats(const FinScene& scene, const FinSettings& s, int layersDrawn, s
                                {"outer_fin_triangles", double(scene.fins.outer.triangles.size())},
                                {"layers_count", double(scene.layering.layers.count())},
                                {"layers_drawn_count", double(layersDrawn)},
-                               {"resolution_texels", double(s.resolution)},
+                               {"resolution_texels", double(s.maps.resolution)},
                                {"light_near_m", scene.view.zNear},
                                {"reference_plane_l0_m", scene.L0}});
 }
 
 }  // namespace
 
-std::vector<ParamSpec> finShadowParams() {
-    return {integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution,
-                         "texels per side of the hard shadow and penumbra maps"),
-            choiceParam<Falloff>("falloff", "linear",
-                                 {{"linear", Falloff::Linear, "eq. 1"},
-                                  {"bernstein", Falloff::Bernstein, "3u^2 - 2u^3, Haines 2001"}},
-                                 "penumbra fall-off")};
+const SettingsTable<FinMapSettings>& finMapSettingsTable() {
+    using S = FinMapSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the hard shadow and penumbra maps"))
+            .choice("falloff", member(&S::falloff),
+                    {{"linear", Falloff::Linear, "eq. 1"},
+                     {"bernstein", Falloff::Bernstein, "3u^2 - 2u^3, Haines 2001"}},
+                    "penumbra fall-off");
+    return table;
 }
 
-FinSettings readFinSettings(const ShadowInputs& in, const std::string& technique) {
+FinSettings finSettings(const ShadowInputs& in, const std::string& technique, const FinMapSettings& maps) {
     if (in.light.type != LightType::Disk) throw std::invalid_argument(technique + ": needs a disk light");
     FinSettings s;
     s.technique = technique;
     s.light = lightPlaneOf(in.light);
-    s.resolution = in.params.integer("resolution");
-    s.falloff = in.params.choice<Falloff>("falloff");
+    s.maps = maps;
     return s;
 }
 
 ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked by readFinSettings
+    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked by finSettings
     StageTimer timer;
     const FinScene scene = buildFinScene(in, s);
     timer.lap("silhouette_and_fins");
@@ -177,7 +180,7 @@ ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
     timer.lap("facing");
     const FinDebug debug(in.debugDir, s.technique, scene.view);
     const int layersDrawn = drawLayers(in, scene, s, debug, buffer, timer);
-    debug.writeFinCoverage(scene.fins, s.resolution, in.simd);
+    debug.writeFinCoverage(scene.fins, s.maps.resolution, in.simd);
     debug.writePixelLayers(in.gbuffer, in.receiverWorld(), scene.layering.instanceLayer, scene.layering.layers.count());
 
     ShadowOutputs out;

@@ -28,25 +28,30 @@
 
 #include "shadows/fins/fin_geometry.h"
 #include "shadows/fins/illuminance_buffer.h"
+#include "shadows/settings_table.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
+
+// `resolution` and `falloff`, which every fin technique has: rows each one's table includes.
+struct FinMapSettings {
+    int resolution = 1024;   // texels per side of the hard shadow and penumbra maps
+    Falloff falloff = Falloff::Linear;
+};
+
+const SettingsTable<FinMapSettings>& finMapSettingsTable();
 
 struct FinSettings {
     std::string technique;
     LightPlane light;
     FinStyle style;
     int layers = 1;
-    int resolution = 1024;
-    Falloff falloff = Falloff::Linear;
+    FinMapSettings maps;
 };
 
-// `resolution` and `falloff`, which every fin technique has.
-std::vector<ParamSpec> finShadowParams();
-
-// The disk light and the settings every fin technique reads; the technique adds its style
-// and layers. Throws std::invalid_argument unless the light is a disk.
-FinSettings readFinSettings(const ShadowInputs& in, const std::string& technique);
+// The disk light and the maps' settings; the technique adds its style and layers. Throws
+// std::invalid_argument unless the light is a disk.
+FinSettings finSettings(const ShadowInputs& in, const std::string& technique, const FinMapSettings& maps);
 
 ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& settings);
 

@@ -14,25 +14,38 @@ namespace {
 // (section 6); past 64 a layer would hold a handful of edges even on the bunny.
 constexpr int kMaxLayers = 64;
 
+struct FinsSettings {
+    FinMapSettings maps;
+    int layers = 16;   // the paper's
+};
+
+const SettingsTable<FinsSettings>& finsSettingsTable() {
+    using S = FinsSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::maps), finMapSettingsTable())
+            .integer("layers", member(&S::layers), 1, kMaxLayers,
+                     "light-space layers of about equal numbers of silhouette edges, section 4.1; "
+                     "1 is the single-layer algorithm of section 3");
+    return table;
+}
+
 ShadowOutputs runFins(const ShadowInputs& in) {
-    FinSettings s = readFinSettings(in, "fins");
+    const FinsSettings settings = finsSettingsTable().read(in.params);
+    FinSettings s = finSettings(in, "fins", settings.maps);
     s.style = {.innerFins = true, .edgeWeight = 0.5f, .sizing = {FinSizing::Kind::LightRadius, s.light.radius}};
-    s.layers = in.params.integer("layers");
+    s.layers = settings.layers;
     return renderFinShadows(in, s);
 }
 
 }  // namespace
 
 Technique finsTechnique() {
-    std::vector<ParamSpec> params = finShadowParams();
-    params.push_back(integerParam("layers", 16, 1, kMaxLayers,
-                                  "light-space layers of about equal numbers of silhouette edges, section 4.1; "
-                                  "1 is the single-layer algorithm of section 3"));
     return {.name = "fins",
             .description = "multi-layered shadow fins (Cai et al. 2006): inner and outer fins, penumbra maps "
                            "per layer, refined "
             "illuminance buffer; disk lights",
-            .params = params,
+            .params = finsSettingsTable().specs(),
             .run = runFins,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility,

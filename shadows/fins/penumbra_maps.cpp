@@ -11,7 +11,7 @@ namespace shadowlab {
 namespace {
 
 ShadowOutputs runPenumbraMaps(const ShadowInputs& in) {
-    FinSettings s = readFinSettings(in, "penumbra-maps");
+    FinSettings s = finSettings(in, "penumbra-maps", finMapSettingsTable().read(in.params));
     s.style = {.innerFins = false, .edgeWeight = 1.0f, .sizing = {FinSizing::Kind::LightRadius, s.light.radius}};
     return renderFinShadows(in, s);
 }
@@ -22,7 +22,7 @@ Technique penumbraMapsTechnique() {
     return {.name = "penumbra-maps",
             .description = "penumbra maps (Wyman and Hansen 2003): hard shadow plus outer fins sized by the "
                            "light; disk lights",
-            .params = finShadowParams(),
+            .params = finMapSettingsTable().specs(),
             .run = runPenumbraMaps,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility,

@@ -10,23 +10,36 @@
 namespace shadowlab {
 namespace {
 
+struct SmoothiesSettings {
+    FinMapSettings maps;
+    double size = 0.06;   // t_s
+};
+
+const SettingsTable<SmoothiesSettings>& smoothiesSettingsTable() {
+    using S = SmoothiesSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::maps), finMapSettingsTable())
+            .real("size", member(&S::size), 1e-4, 1.0,
+                  "smoothie width as seen from the light's centre, tangent of the angle; "
+                  "0.06 is about the built-in disk (radius 0.5 m) seen from 8 m");
+    return table;
+}
+
 ShadowOutputs runSmoothies(const ShadowInputs& in) {
-    FinSettings s = readFinSettings(in, "smoothies");
-    s.style = {.innerFins = false, .edgeWeight = 1.0f, .sizing = {FinSizing::Kind::AngularWidth, in.params.real("size")}};
+    const SmoothiesSettings settings = smoothiesSettingsTable().read(in.params);
+    FinSettings s = finSettings(in, "smoothies", settings.maps);
+    s.style = {.innerFins = false, .edgeWeight = 1.0f, .sizing = {FinSizing::Kind::AngularWidth, settings.size}};
     return renderFinShadows(in, s);
 }
 
 }  // namespace
 
 Technique smoothiesTechnique() {
-    std::vector<ParamSpec> params = finShadowParams();
-    params.push_back(realParam("size", 0.06, 1e-4, 1.0,
-                               "smoothie width as seen from the light's centre, tangent of the angle; "
-                               "0.06 is about the built-in disk (radius 0.5 m) seen from 8 m"));
     return {.name = "smoothies",
             .description = "smoothies (Chan and Durand 2003): hard shadow plus outer fins of one global size; "
                            "disk lights",
-            .params = params,
+            .params = smoothiesSettingsTable().specs(),
             .run = runSmoothies,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility,

@@ -8,25 +8,48 @@
 #include "shadows/hybrid/izb_pcss.h"
 #include "shadows/izb/izb.h"
 #include "shadows/stage_timer.h"
-#include "shadows/technique_stage.h"
 
 namespace shadowlab {
 namespace {
 
 const char* const kIzbPcssName = "izb-pcss";
 
-BlendDistances readBlendDistances(const TechniqueParams& p) {
-    const BlendDistances d{float(p.real("hard-below")), float(p.real("soft-above"))};
-    if (!(d.hardBelowM < d.softAboveM)) {
-        throw std::invalid_argument(std::string(kIzbPcssName) + ": hard-below must be less than soft-above");
-    }
-    return d;
+struct IzbPcssSettings {
+    PcssSettings pcss;
+    IzbSettings izb;
+    BlendDistances blend;
+};
+
+// The irregular z-buffer's resolution is its own parameter, `izb-resolution`: `resolution`
+// is the PCSS map's.
+const SettingsTable<IzbPcssSettings>& izbPcssSettingsTable() {
+    using S = IzbPcssSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .include(member(&S::pcss), pcssSettingsTable())
+            .integerOrAuto("izb-resolution", member(&S::izb, &IzbSettings::resolution), kMinMapResolution,
+                           kMaxMapResolution,
+                           "irregular z-buffer grid texels per side; auto: about 2 receivers per list")
+            .real("hard-below", member(&S::blend, &BlendDistances::hardBelowM), 0.0, 1000.0,
+                  "m from receiver to occluder up to which the exact hard shadow is kept")
+            .real("soft-above", member(&S::blend, &BlendDistances::softAboveM), 0.0, 1000.0,
+                  "m from receiver to occluder from which PCSS is kept; blended between");
+    return table;
 }
 
-// The irregular z-buffer's resolution is its own parameter: `resolution` is the PCSS map's.
-ShadowOutputs hardShadows(const ShadowInputs& in) {
-    return runTechniqueStage(irregularZBufferTechnique(), in, {{"resolution", in.params.values().at("izb-resolution")}},
-                             {});
+IzbPcssSettings readSettings(const TechniqueParams& params) {
+    const IzbPcssSettings s = izbPcssSettingsTable().read(params);
+    if (!(s.blend.hardBelowM < s.blend.softAboveM)) {
+        throw std::invalid_argument(std::string(kIzbPcssName) + ": hard-below must be less than soft-above");
+    }
+    return s;
+}
+
+// The `izb` technique itself, its buffers not written.
+ShadowOutputs hardShadows(const ShadowInputs& in, const IzbSettings& settings) {
+    ShadowInputs stage = in;
+    stage.debugDir.clear();
+    return runIrregularZBuffer(stage, settings);
 }
 
 void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const std::vector<float>& weight,
@@ -55,8 +78,8 @@ void addStats(ShadowOutputs& out, const GBuffer& g, const std::vector<float>& we
 }
 
 ShadowOutputs runIzbPcss(const ShadowInputs& in) {
-    const PcssSettings pcss = readPcssSettings(in.params);
-    const BlendDistances distances = readBlendDistances(in.params);
+    const IzbPcssSettings settings = readSettings(in.params);
+    const PcssSettings& pcss = settings.pcss;
     requireAreaLight(in.light, kIzbPcssName);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
@@ -66,10 +89,10 @@ ShadowOutputs runIzbPcss(const ShadowInputs& in) {
     const PcssBuffers softPart = pcssPerPixel(in, soft, pcss, pcssHierarchy(soft, pcss));
     timer.lap("pcss");
     // 2. The irregular z-buffer: the exact hard V.
-    const ShadowOutputs hardPart = hardShadows(in);
+    const ShadowOutputs hardPart = hardShadows(in, settings.izb);
     timer.lap("izb");
     // 3 and 4. The weight from the occluder distance, and the blend (exactly one part at w = 0 or 1).
-    const std::vector<float> weight = blendWeights(in.gbuffer, soft, softPart.blockerDistance, distances);
+    const std::vector<float> weight = blendWeights(in.gbuffer, soft, softPart.blockerDistance, settings.blend);
     ShadowOutputs out;
     out.visibility.resize(weight.size());
     for (size_t k = 0; k < weight.size(); ++k) {
@@ -86,17 +109,10 @@ ShadowOutputs runIzbPcss(const ShadowInputs& in) {
 }  // namespace
 
 Technique izbPcssTechnique() {
-    std::vector<ParamSpec> params = pcssParamSpecs();
-    params.push_back(integerOrAutoParam("izb-resolution", kMinMapResolution, kMaxMapResolution,
-                                        "irregular z-buffer grid texels per side; auto: about 2 receivers per list"));
-    params.push_back(realParam("hard-below", 0.1, 0.0, 1000.0, "m from receiver to occluder up to which the "
-                                                               "exact hard shadow is kept"));
-    params.push_back(realParam("soft-above", 0.4, 0.0, 1000.0, "m from receiver to occluder from which PCSS is "
-                                                               "kept; blended between"));
     return {.name = kIzbPcssName,
             .description = "hybrid of The Division (RTR 7.9, Story and Wyman 2016): irregular z-buffer shadows "
                            "near their occluders, PCSS far from them, blended by the occluder distance",
-            .params = params,
+            .params = izbPcssSettingsTable().specs(),
             .run = runIzbPcss,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};

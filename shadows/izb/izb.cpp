@@ -71,8 +71,16 @@ void writeDebugBuffers(const ShadowInputs& in, const izb::LightGrid& grid, const
     debug.write("occluders", width, height, occluders, 0.0f, most);
 }
 
-ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
-    const std::optional<int> requested = in.params.integerOrAuto("resolution");
+}  // namespace
+
+const SettingsTable<IzbSettings>& izbSettingsTable() {
+    static const auto table = SettingsTable<IzbSettings>().integerOrAuto(
+        "resolution", member(&IzbSettings::resolution), kMinMapResolution, kMaxMapResolution,
+        "light grid texels per side; auto: a mean of about 2 receivers per non-empty texel");
+    return table;
+}
+
+ShadowOutputs runIrregularZBuffer(const ShadowInputs& in, const IzbSettings& settings) {
     const Light light = pointLightFor(in.light);
     const double diagonal = sceneDiagonal(in.receiverWorld());
     ShadowOutputs out;
@@ -87,7 +95,8 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
 
     std::vector<LightView> views = izb::fitViews(light, in.gbuffer, in.casterWorld(), in.simd);
     const izb::ReceiverPlaces places = izb::placeReceivers(views, receivers);
-    const int resolution = requested ? *requested : izb::chooseResolution(views.size(), places, kTargetListLength);
+    const int resolution =
+        settings.resolution ? *settings.resolution : izb::chooseResolution(views.size(), places, kTargetListLength);
     const izb::LightGrid grid = izb::makeLightGrid(std::move(views), resolution, diagonal);
     out.stats.push_back({"resolution_texels", double(grid.resolution)});
     out.stats.push_back({"views_count", double(grid.views.size())});
@@ -116,14 +125,11 @@ ShadowOutputs irregularZBuffer(const ShadowInputs& in) {
     return out;
 }
 
-}  // namespace
-
 Technique irregularZBufferTechnique() {
     return {.name = "izb",
             .description = "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows",
-            .params = {integerOrAutoParam("resolution", kMinMapResolution, kMaxMapResolution,
-                                "light grid texels per side; auto: a mean of about 2 receivers per non-empty texel")},
-            .run = irregularZBuffer,
+            .params = izbSettingsTable().specs(),
+            .run = [](const ShadowInputs& in) { return runIrregularZBuffer(in, izbSettingsTable().read(in.params)); },
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};
 }

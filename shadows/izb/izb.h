@@ -35,6 +35,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -46,12 +47,23 @@
 #include "shadows/depth_map.h"
 #include "shadows/izb/kernels.h"
 #include "shadows/light_view.h"
+#include "shadows/settings_table.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
 
 // The technique's entry in techniques().
 Technique irregularZBufferTechnique();
+
+struct IzbSettings {
+    std::optional<int> resolution;   // light grid texels per side; empty: chosen from the receivers
+};
+
+const SettingsTable<IzbSettings>& izbSettingsTable();
+
+// The technique with typed settings, for a technique that runs it as a stage (izb-pcss);
+// `in.params` are not read.
+ShadowOutputs runIrregularZBuffer(const ShadowInputs& in, const IzbSettings& settings);
 
 namespace izb {
 

@@ -6,8 +6,7 @@ const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable() {
     using S = ShadowMapSettings;
     static const auto table =
         SettingsTable<S>()
-            .integer("resolution", member(&S::resolution), kMinMapResolution, kMaxMapResolution,
-                     "texels per side of each map")
+            .include(member(&S::resolution), mapResolutionTable("texels per side of each map"))
             .choice("bias", member(&S::bias, &BiasSettings::mode),
                     {{"constant", BiasMode::Constant},
                      {"slope-scaled", BiasMode::SlopeScaled, "polygon offset"},

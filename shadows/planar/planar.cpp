@@ -38,11 +38,27 @@
 #include "scenes/camera.h"
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/settings_table.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
+
+struct PlanarSettings {
+    double planeY = 0.0;    // the receiver plane y = planeY, m
+    float opacity = 0.6f;   // the debug image's shadow alpha
+};
+
+const SettingsTable<PlanarSettings>& planarSettingsTable() {
+    using S = PlanarSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .real("plane-y", member(&S::planeY), -1e6, 1e6, "height of the receiver plane y = plane-y, in metres")
+            .real("opacity", member(&S::opacity), 0.0, 1.0,
+                  "alpha of the dark translucent shadow in the debug image; V does not depend on it");
+    return table;
+}
 
 using raster::CompareFunc;
 using raster::StencilOp;
@@ -128,9 +144,9 @@ raster::PipelineState shadowState() {
 }
 
 ShadowOutputs runPlanar(const ShadowInputs& in) {
+    const PlanarSettings settings = planarSettingsTable().read(in.params);
     const Camera& camera = in.camera();
-    const glm::dvec4 plane(0.0, 1.0, 0.0, -in.params.real("plane-y"));
-    const float opacity = float(in.params.real("opacity"));
+    const glm::dvec4 plane(0.0, 1.0, 0.0, -settings.planeY);
     const glm::dvec4 light = homogeneousLight(pointLightFor(in.light));
     StageTimer timer;
     const std::vector<uint8_t> receiving = receivingInstances(in.scene(), in.receiverWorld(), plane);
@@ -148,7 +164,7 @@ ShadowOutputs runPlanar(const ShadowInputs& in) {
     raster::Rasterizer rasterizer(in.simd);
     draw(rasterizer, fb, prepassState(), in.receiverWorld(), in.receiverWorld().triangles, clipFromWorld);
     draw(rasterizer, fb, receiverState(), in.receiverWorld(), receivers, clipFromWorld);
-    draw(rasterizer, fb, shadowState(), in.casterWorld(), casters, clipFromShadow, glm::vec4(0.0f, 0.0f, 0.0f, opacity));
+    draw(rasterizer, fb, shadowState(), in.casterWorld(), casters, clipFromShadow, glm::vec4(0.0f, 0.0f, 0.0f, settings.opacity));
     timer.lap("stencil");
 
     const std::vector<uint8_t> stencil = fb.stencilImage();
@@ -203,9 +219,7 @@ Technique planarTechnique() {
     return {.name = "planar",
             .description = "planar projected shadows on the plane y = plane-y, stencil against double "
                            "blending (no self-shadows)",
-            .params = {realParam("plane-y", 0.0, -1e6, 1e6, "height of the receiver plane y = plane-y, in metres"),
-                       realParam("opacity", 0.6, 0.0, 1.0,
-                                 "alpha of the dark translucent shadow in the debug image; V does not depend on it")},
+            .params = planarSettingsTable().specs(),
             .run = runPlanar,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

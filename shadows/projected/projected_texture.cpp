@@ -1,24 +1,46 @@
 #include "shadows/projected/projected_texture.h"
 
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/projected/instance_roles.h"
 #include "shadows/projected/occluder_texture.h"
 #include "shadows/projected/texture_projection.h"
+#include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
 namespace {
 
+struct ProjectedTextureSettings {
+    std::optional<std::vector<std::string>> occluders;   // auto: every instance not a receiver
+    std::optional<std::vector<std::string>> receivers;   // auto: chooseRoles decides
+    int resolution = 1024;
+};
+
+const SettingsTable<ProjectedTextureSettings>& projectedTextureSettingsTable() {
+    using S = ProjectedTextureSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .names("occluders", member(&S::occluders),
+                   "instances drawn into the texture; auto: every one not a receiver")
+            .names("receivers", member(&S::receivers),
+                   "instances the texture is projected onto; auto: those named ground, else the largest by area")
+            .include(member(&S::resolution), mapResolutionTable("texels per side of the occluders' texture"));
+    return table;
+}
+
 ShadowOutputs runProjectedTexture(const ShadowInputs& in) {
+    const ProjectedTextureSettings settings = projectedTextureSettingsTable().read(in.params);
     const Light light = pointLightFor(in.light);
-    const int resolution = in.params.integer("resolution");
+    const int resolution = settings.resolution;
     // Both roles are chosen on the scene the camera sees; the casters' copy (a caster level
     // of detail) has the same instances, so its triangles take the same roles.
-    const InstanceRoles roles =
-        chooseRoles(in.scene(), in.receiverWorld(), in.params.names("occluders"), in.params.names("receivers"));
+    const InstanceRoles roles = chooseRoles(in.scene(), in.receiverWorld(), settings.occluders, settings.receivers);
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const std::vector<uint32_t> occluders = trianglesWithRole(in.casterWorld(), roles.occluder);
@@ -49,11 +71,7 @@ Technique projectedTextureTechnique() {
     return {.name = "projected-texture",
             .description = "projected shadow texture (RTR 7.2): the occluders' image from the light projected onto "
                            "chosen receivers (no self-shadows, shadows cast backward)",
-            .params = {namesParam("occluders", "instances drawn into the texture; auto: every one not a receiver"),
-                       namesParam("receivers", "instances the texture is projected onto; auto: those named ground, "
-                                               "else the largest by area"),
-                       integerParam("resolution", 1024, kMinMapResolution, kMaxMapResolution,
-                                    "texels per side of the occluders' texture")},
+            .params = projectedTextureSettingsTable().specs(),
             .run = runProjectedTexture,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "shadows/reference/reference.h"
+#include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
@@ -33,10 +34,21 @@ ShadowOutputs referenceVisibility(const ShadowInputs& in, const Light& light, Re
 
 ShadowOutputs exactReference(const ShadowInputs& in) { return referenceVisibility(in, pointLightFor(in.light), {}); }
 
+struct SoftReferenceSettings {
+    int samplesPerAxis = 32;
+};
+
+const SettingsTable<SoftReferenceSettings>& softReferenceSettingsTable() {
+    static const auto table = SettingsTable<SoftReferenceSettings>().integer(
+        "samples-per-axis", member(&SoftReferenceSettings::samplesPerAxis), 1, 256, "n: n x n samples on the light");
+    return table;
+}
+
 // The soft shadows' reference: the visible fraction of the area light itself, from n x n
 // stratified samples (reference.h); point and directional lights give hard shadows.
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
-    return referenceVisibility(in, in.light, {.areaSamplesPerAxis = in.params.integer("samples-per-axis")});
+    const SoftReferenceSettings settings = softReferenceSettingsTable().read(in.params);
+    return referenceVisibility(in, in.light, {.areaSamplesPerAxis = settings.samplesPerAxis});
 }
 
 }  // namespace
@@ -63,7 +75,7 @@ Technique softReferenceTechnique() {
     return {.name = "reference-soft",
             .description = "exact soft shadows: the visible fraction of the area light, n x n stratified "
                            "Embree rays per pixel",
-            .params = {integerParam("samples-per-axis", 32, 1, 256, "n: n x n samples on the light")},
+            .params = softReferenceSettingsTable().specs(),
             .run = exactSoftReference,
             .referenceName = "reference-soft",
             .output = TechniqueOutput::Visibility};

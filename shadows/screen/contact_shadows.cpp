@@ -18,6 +18,7 @@
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/maps/shadow_map_techniques.h"
+#include "shadows/plot_pixel.h"
 #include "shadows/screen/march_plot.h"
 #include "shadows/screen/screen_march.h"
 #include "shadows/stage_timer.h"
@@ -32,6 +33,7 @@ struct ContactShadowSettings {
     ShadowMapTechniqueSettings map;
     MarchSettings march;
     bool withMap = true;   // off: the march alone
+    PlotPixelSettings plot;
 };
 
 const SettingsTable<ContactShadowSettings>& contactShadowSettingsTable() {
@@ -44,7 +46,8 @@ const SettingsTable<ContactShadowSettings>& contactShadowSettingsTable() {
             .integer("march-steps", member(&S::march, &MarchSettings::steps), 1, 1024, "samples along the march")
             .real("depth-thickness", member(&S::march, &MarchSettings::thicknessM), 0.0, 100.0,
                   "m behind the depth buffer's surface a sample still counts as inside it")
-            .flag("shadow-map", member(&S::withMap), "off: the march alone (no caster off screen or hidden casts)");
+            .flag("shadow-map", member(&S::withMap), "off: the march alone (no caster off screen or hidden casts)")
+            .include(member(&S::plot), plotPixelSettingsTable("march is plotted"));
     return table;
 }
 
@@ -57,20 +60,21 @@ ShadowOutputs shadowMapStage(const ShadowInputs& in, const ShadowMapTechniqueSet
 }
 
 // The pixel whose march the debug view plots: the parameters', or the image's centre.
-glm::ivec2 plottedPixel(const ShadowInputs& in) {
-    const auto [i, j] = plotPixel(in.params, in.gbuffer.width, in.gbuffer.height, kContactShadowsName);
+glm::ivec2 plottedPixel(const ShadowInputs& in, const PlotPixelSettings& plot) {
+    const auto [i, j] = plotPixel(plot, in.gbuffer.width, in.gbuffer.height, kContactShadowsName);
     return {i, j};
 }
 
-void writeDebug(const ShadowInputs& in, const ScreenMarch& march, const ScreenMarch::Mask& mask, float thicknessM) {
+void writeDebug(const ShadowInputs& in, const ContactShadowSettings& settings, const ScreenMarch& march,
+                const ScreenMarch::Mask& mask) {
     const DebugBuffers debug(in.debugDir, kContactShadowsName);
     if (!debug.enabled()) return;
     const GBuffer& g = in.gbuffer;
     debug.write("march-mask", g.width, g.height, mask.visibility, 0.0f, 1.0f);
-    const glm::ivec2 p = plottedPixel(in);
+    const glm::ivec2 p = plottedPixel(in, settings.plot);
     const std::vector<MarchSample> samples =
         g.hit[g.index(p.x, p.y)] ? marchSamples(march, g, p.x, p.y) : std::vector<MarchSample>{};
-    writeMarchPlot(in.debugDir, g, mask.visibility, p.x, p.y, samples, thicknessM);
+    writeMarchPlot(in.debugDir, g, mask.visibility, p.x, p.y, samples, settings.march.thicknessM);
 }
 
 // Figures in pixel order (one thread): the same for any thread count.
@@ -96,7 +100,7 @@ ShadowOutputs reachedOutputs(const GBuffer& g, const Light& light) {
 
 ShadowOutputs runContactShadows(const ShadowInputs& in) {
     const ContactShadowSettings settings = contactShadowSettingsTable().read(in.params);
-    plottedPixel(in);   // settings checked before any work
+    plottedPixel(in, settings.plot);   // settings checked before any work
     const Light light = pointLightFor(in.light);
     ShadowOutputs out = settings.withMap ? shadowMapStage(in, settings.map) : reachedOutputs(in.gbuffer, light);
     if (!anySurface(in.gbuffer)) return out;   // V = 0 already
@@ -112,19 +116,17 @@ ShadowOutputs runContactShadows(const ShadowInputs& in) {
     }
     timer.lap("combine");
     timer.appendTo(out.stats);
-    writeDebug(in, march, mask, settings.march.thicknessM);
+    writeDebug(in, settings, march, mask);
     return out;
 }
 
 }  // namespace
 
 Technique contactShadowsTechnique() {
-    std::vector<ParamSpec> params = contactShadowSettingsTable().specs();
-    for (const ParamSpec& p : plotPixelParams("march is plotted")) params.push_back(p);
     return {.name = kContactShadowsName,
             .description = "contact shadows (RTR 7.10, Sousa et al. 2011): a shadow map, and a march over the "
                            "camera's depth buffer that restores the shadows its bias loses at contacts",
-            .params = params,
+            .params = contactShadowSettingsTable().specs(),
             .run = runContactShadows,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

@@ -123,3 +123,20 @@ TEST_CASE("settings table: a default outside the spec is a bug, found when the s
     const auto noChoice = SettingsTable<Odd>().choice("filter", member(&Odd::filter), {{"nearest", TapFilter::Nearest}});
     CHECK_THROWS_AS(noChoice.specs(), std::logic_error);
 }
+
+TEST_CASE("settings table: a one-value table, included for a member, takes the including struct's default") {
+    struct Soft {
+        int resolution = 1024;
+        double size = 0.5;
+    };
+    const auto resolution = SettingsTable<int>().integer("resolution", itself<int>(), 16, 8192, "texels per side");
+    const auto table = SettingsTable<Soft>()
+                           .include(member(&Soft::resolution), resolution)
+                           .real("size", member(&Soft::size), 0.0, 4.0, "m");
+    const std::vector<ParamSpec> specs = table.specs();
+    REQUIRE(specs.size() == 2);
+    CHECK(defaultOf(specs, "resolution") == "1024");
+    const Soft s = table.read(TechniqueParams("soft", specs, {{"resolution", "256"}}));
+    CHECK(s.resolution == 256);
+    CHECK(s.size == 0.5);
+}

@@ -54,13 +54,13 @@ struct Parts {
     PcssBuffers pcss;
     std::vector<float> weight;
     explicit Parts(const SoftScene& s) {
-        const TechniqueParams defaults("pcss", pcssParamSpecs(), {});
+        const TechniqueParams defaults("pcss", pcssSettingsTable().specs(), {});
         const ShadowInputs in{.prepared = s.prepared,
                               .gbuffer = s.gbuffer,
                               .light = s.scene.lights[0],
                               .simd = raster::bestSimdLevel(),
                               .params = defaults};
-        const PcssSettings settings = readPcssSettings(defaults);
+        const PcssSettings settings = pcssSettingsTable().read(defaults);
         const SoftShadowMap soft = renderPcssMap(in, settings.resolution);
         pcss = pcssPerPixel(in, soft, settings, std::nullopt);
         weight = blendWeights(s.gbuffer, soft, pcss.blockerDistance, BlendDistances{});
