@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <tbb/parallel_for.h>
 
-#include "app/timing.h"
+#include "app/common/timing.h"
 #include "frame/render.h"
 #include "raster/rasterizer.h"
 #include "raster/thread_count.h"

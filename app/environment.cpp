@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/staged_outputs.h"
+#include "app/common/staged_outputs.h"
 #include "raster/portable_constants.h"
 #include "scenes/write_file.h"
 #include "shading/environment/environment_debug.h"

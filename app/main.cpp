@@ -25,7 +25,7 @@
 #include "app/report_site.h"
 #include "app/scaling.h"
 #include "app/scaling_plot.h"
-#include "app/staged_outputs.h"
+#include "app/common/staged_outputs.h"
 #include "app/sweep.h"
 #include "app/sweep_json.h"
 #include "app/sweep_merge.h"

@@ -3,9 +3,9 @@
 #include <set>
 #include <sstream>
 
+#include "app/common/staged_outputs.h"
 #include "app/report_assets.h"
 #include "app/report_pages.h"
-#include "app/staged_outputs.h"
 #include "scenes/read_file.h"
 #include "scenes/write_file.h"
 

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "app/common/timing.h"
 #include "app/sweep_plan.h"
-#include "app/timing.h"
 #include "frame/frame_images.h"
 #include "frame/render.h"
 #include "raster/rasterizer.h"

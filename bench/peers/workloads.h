@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/bench_passes.h"
-#include "app/timing.h"
+#include "app/common/timing.h"
 #include "bench/peers/gl_resources.h"
 #include "bench/peers/gl_shaders.h"
 #include "frame/render.h"

@@ -323,7 +323,7 @@ done
 # ---- Whole or nothing, for every command that writes a folder ----------------------------------
 # A folder in the way of one of a command's later files fails the command, which leaves
 # nothing else in its --out folder (it stages every file and moves them in at the end,
-# app/staged_outputs.h): environment, composite, flythrough, merge-sweep and report each left
+# app/common/staged_outputs.h): environment, composite, flythrough, merge-sweep and report each left
 # the files written before the one that failed.
 blocked() {   # blocked WHAT NAME COMMAND...: NAME a folder in --out $scratch/blocked-WHAT
     local what=$1 name=$2

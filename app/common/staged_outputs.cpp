@@ -1,4 +1,4 @@
-#include "app/staged_outputs.h"
+#include "app/common/staged_outputs.h"
 
 #include <algorithm>
 #include <cerrno>
