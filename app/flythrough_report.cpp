@@ -5,9 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/common/csv.h"
 #include "app/line_plot.h"
 #include "app/svg.h"
-#include "app/sweep.h"
 #include "app/sweep_json.h"
 
 namespace shadowlab {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <tbb/info.h>
 
+#include "app/common/csv.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 

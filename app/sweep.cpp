@@ -9,6 +9,7 @@
 
 #include <tbb/info.h>
 
+#include "app/common/csv.h"
 #include "frame/registry.h"
 #include "frame/render.h"
 #include "frame/score.h"
@@ -58,14 +59,6 @@ SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference, 
     row.errors = scoreFrame(reference, timed.last);
     row.stats = timed.last.shadow.stats;
     return row;
-}
-
-// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
 }
 
 // Every stat name any row reports, in the order first seen.
@@ -133,21 +126,6 @@ SweepGrid describeGrid(const std::vector<SweepPlan>& plans, const std::vector<in
 }
 
 }  // namespace
-
-std::string csvLine(const std::vector<std::string>& fields) {
-    std::string line;
-    for (const std::string& field : fields) {
-        if (!line.empty()) line += ',';
-        line += csvField(field);
-    }
-    return line + "\n";
-}
-
-std::string csvNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", value);
-    return text;
-}
 
 TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
                        int warmupRuns, int runs, const ProgressStage& frames) {

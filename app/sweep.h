@@ -141,9 +141,5 @@ std::string formatSweepText(const SweepResults& results);
 // lit_shadowed_percent, reference, then one column per technique stat (empty where a row
 // does not report it).
 std::string formatSweepCsv(const SweepResults& results);
-// CSV helpers shared with `shadowlab scaling`: one RFC 4180 line (fields with a comma,
-// quote or line break quoted), and a number with 9 significant digits.
-std::string csvLine(const std::vector<std::string>& fields);
-std::string csvNumber(double value);
 
 }  // namespace shadowlab
