@@ -9,6 +9,7 @@
 #include <tbb/info.h>
 
 #include "app/common/csv.h"
+#include "app/common/timing.h"
 #include "raster/thread_count.h"
 #include "scenes/scene_file.h"
 

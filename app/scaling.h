@@ -15,7 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "app/sweep.h"
+#include "raster/rasterizer.h"
+#include "shadows/progress.h"
+#include "shadows/technique.h"
 
 namespace shadowlab {
 

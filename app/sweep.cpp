@@ -10,6 +10,7 @@
 #include <tbb/info.h>
 
 #include "app/common/csv.h"
+#include "app/common/timing.h"
 #include "frame/registry.h"
 #include "frame/render.h"
 #include "frame/score.h"
@@ -126,23 +127,6 @@ SweepGrid describeGrid(const std::vector<SweepPlan>& plans, const std::vector<in
 }
 
 }  // namespace
-
-TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
-                       int warmupRuns, int runs, const ProgressStage& frames) {
-    if (runs < 1) throw std::invalid_argument("the number of measured runs must be >= 1");
-    for (int k = 0; k < warmupRuns; ++k) {
-        renderFrame(prepared, technique, settings);
-        frames.advance();
-    }
-    std::vector<double> ms;
-    Frame frame;
-    for (int k = 0; k < runs; ++k) {
-        frame = renderFrame(prepared, technique, settings);
-        ms.push_back(frame.techniqueMs);
-        frames.advance();
-    }
-    return {summarizeTimes(std::move(ms)), std::move(frame)};
-}
 
 std::string SweepRow::settingsLabel() const { return shadowlab::settingsLabel(settings); }
 

@@ -21,7 +21,6 @@
 #include <string>
 #include <vector>
 
-#include "app/common/timing.h"
 #include "app/sweep_plan.h"
 #include "frame/frame_images.h"
 #include "frame/render.h"
@@ -104,16 +103,6 @@ struct SweepResults {
     SweepShard shard;             // the settings the rows cover
     std::vector<SweepRow> rows;   // per technique, settings in axis order (last axis fastest), threads
 };
-
-// The measurement protocol shared with `shadowlab scaling`: warm-up frames, then `runs`
-// measured frames; the median and minimum of Frame::techniqueMs, and the last frame. Every
-// frame, warm-up ones included, is counted in `frames`.
-struct TimedFrames {
-    Timing timing;
-    Frame last;
-};
-TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
-                       int warmupRuns, int runs, const ProgressStage& frames);
 
 // Checks the technique names, that every axis belongs to one of them and that the shard
 // holds a setting, then renders one frame per setting of the shard (a value a technique
