@@ -14,7 +14,7 @@
 #include "compositing/differential/compositing_inputs.h"
 #include "app/composite_plan.h"
 #include "app/common/staged_outputs.h"
-#include "app/line_plot.h"
+#include "app/plots/line_plot.h"
 #include "compositing/differential/differential_reference.h"
 #include "compositing/differential/intensity_error.h"
 #include "compositing/differential/outdoor_case.h"

@@ -8,7 +8,7 @@
 #include <tbb/info.h>
 
 #include "app/common/timing.h"
-#include "app/svg.h"
+#include "app/plots/svg.h"
 #include "frame/frame_images.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/common/csv.h"
-#include "app/line_plot.h"
-#include "app/svg.h"
+#include "app/plots/line_plot.h"
+#include "app/plots/svg.h"
 #include "app/sweep_json.h"
 
 namespace shadowlab {

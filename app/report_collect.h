@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "app/plots/sweep_plot.h"
 #include "app/sweep.h"
-#include "app/sweep_plot.h"
 
 namespace shadowlab {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/svg.h"
+#include "app/plots/svg.h"
 
 namespace shadowlab::html {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "app/plots/sweep_plot.h"
 #include "app/report_html.h"
-#include "app/sweep_plot.h"
 #include "frame/overrides_json.h"
 
 namespace shadowlab {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/sweep_plot.h"
+#include "app/plots/sweep_plot.h"
 
 namespace shadowlab {
 

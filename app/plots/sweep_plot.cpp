@@ -1,4 +1,4 @@
-#include "app/sweep_plot.h"
+#include "app/plots/sweep_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "app/svg.h"
+#include "app/plots/svg.h"
 
 namespace shadowlab {
 namespace {

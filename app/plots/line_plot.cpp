@@ -1,4 +1,4 @@
-#include "app/line_plot.h"
+#include "app/plots/line_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "app/svg.h"
+#include "app/plots/svg.h"
 
 namespace shadowlab {
 namespace {

@@ -1,11 +1,11 @@
-#include "app/scaling_plot.h"
+#include "app/plots/scaling_plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-#include "app/svg.h"
+#include "app/plots/svg.h"
 
 namespace shadowlab {
 namespace {

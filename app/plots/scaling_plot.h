@@ -1,6 +1,6 @@
 // The plot of `shadowlab scaling`: median time against triangle count on linear axes, one
 // labelled point per scene and the least-squares line t = a + b n, as a small SVG drawn
-// with the helpers of the sweep plot (app/svg.h).
+// with the helpers of the sweep plot (app/plots/svg.h).
 #pragma once
 
 #include <string>
