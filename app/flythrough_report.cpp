@@ -1,12 +1,9 @@
 #include "app/flythrough_report.h"
 
-#include <algorithm>
-#include <cmath>
 
 #include <nlohmann/json.hpp>
 
 #include "app/common/csv.h"
-#include "app/plots/line_plot.h"
 #include "app/plots/svg.h"
 #include "app/sweep_json.h"
 
@@ -41,16 +38,6 @@ Json seriesJson(const FlythroughSeries& s) {
                               {"mean_misclassified_percent", p.meanMisclassifiedPercent},
                               {"flicker_mean", p.flickerMean}, {"flicker_p99", p.flickerP99}}},
             {"frames", frames}};
-}
-
-// The plotted value of a frame, or nullopt where it has none (flicker on frame 0).
-std::optional<double> plotted(const FlythroughFrame& frame, FlythroughPlot plot) {
-    switch (plot) {
-        case FlythroughPlot::Time: return frame.medianMs;
-        case FlythroughPlot::Error: return frame.errors.rms;
-        case FlythroughPlot::Flicker: return frame.flicker ? std::optional(frame.flicker->mean) : std::nullopt;
-    }
-    return std::nullopt;
 }
 
 }  // namespace
@@ -104,23 +91,6 @@ std::string formatFlythroughJson(const FlythroughResults& results) {
                        {"threads", results.threads}, {"warmup", results.warmupRuns}, {"runs", results.runs},
                        {"stable_tolerance", results.stableTolerance}, {"series", series}};
     return json.dump(1) + "\n";
-}
-
-std::string formatFlythroughSvg(const FlythroughResults& results, FlythroughPlot plot) {
-    static constexpr const char* kTitles[] = {"technique time (median ms)", "RMS of V against the reference",
-                                              "flicker: mean |V_t - V_t-1| where the reference is unchanged"};
-    const char* yTitle = kTitles[int(plot)];
-    LinePlot linePlot{results.scene + ": " + yTitle + " along the path", "frame", yTitle, {}};
-    for (const FlythroughSeries& s : results.series) {
-        PlotSeries& line = linePlot.series.emplace_back(PlotSeries{s.label(), {}, {}, {}});
-        for (const FlythroughFrame& f : s.frames) {
-            const std::optional<double> y = plotted(f, plot);
-            if (!y || !std::isfinite(*y)) continue;
-            line.x.push_back(f.frame);
-            line.y.push_back(*y);
-        }
-    }
-    return formatLinePlotSvg(linePlot);
 }
 
 }  // namespace shadowlab

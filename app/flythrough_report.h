@@ -1,5 +1,5 @@
-// A fly-through's files (docs/flythrough.md): the per-frame table as CSV and JSON, the plots
-// of time, error and flicker over the path (SVG), and the summary for the terminal.
+// A fly-through's files (docs/flythrough.md): the per-frame table as CSV and JSON, and the
+// summary for the terminal; its plots are app/plots/flythrough_plot.h.
 #pragma once
 
 #include <string>
@@ -25,11 +25,5 @@ std::string formatFlythroughCsv(const FlythroughResults& results);
 //  formatJson(...), "flicker": {"mean", "p99", "pixels", "stable_pixels"} or null}]}]}.
 // NaN is written as null.
 std::string formatFlythroughJson(const FlythroughResults& results);
-
-// The plots over the path, one line per series: the technique's median time (ms), its RMS
-// against the reference, and its flicker mean (from frame 1). A non-finite value (a NaN
-// image) leaves its point out; the CSV and JSON keep it.
-enum class FlythroughPlot { Time, Error, Flicker };
-std::string formatFlythroughSvg(const FlythroughResults& results, FlythroughPlot plot);
 
 }  // namespace shadowlab

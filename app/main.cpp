@@ -23,6 +23,7 @@
 #include "app/environment.h"
 #include "app/flythrough.h"
 #include "app/flythrough_report.h"
+#include "app/plots/flythrough_plot.h"
 #include "app/plots/scaling_plot.h"
 #include "app/plots/sweep_plot.h"
 #include "app/report_site.h"

@@ -12,6 +12,7 @@
 
 #include "app/flythrough.h"
 #include "app/flythrough_report.h"
+#include "app/plots/flythrough_plot.h"
 #include "frame/registry.h"
 #include "scenes/scene_file.h"
 #include "tests/scratch_directory.h"
