@@ -26,7 +26,7 @@
 #include "app/plots/flythrough_plot.h"
 #include "app/plots/scaling_plot.h"
 #include "app/plots/sweep_plot.h"
-#include "app/report_site.h"
+#include "app/report/report_site.h"
 #include "app/scaling.h"
 #include "app/sweep.h"
 #include "app/sweep_json.h"

@@ -1,10 +1,10 @@
-#include "app/report_pages.h"
+#include "app/report/report_pages.h"
 
 #include <algorithm>
 #include <limits>
 
 #include "app/plots/sweep_plot.h"
-#include "app/report_html.h"
+#include "app/report/report_html.h"
 #include "frame/overrides_json.h"
 
 namespace shadowlab {

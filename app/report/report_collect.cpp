@@ -1,4 +1,4 @@
-#include "app/report_collect.h"
+#include "app/report/report_collect.h"
 
 #include <algorithm>
 #include <fstream>

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "app/report_collect.h"
+#include "app/report/report_collect.h"
 
 namespace shadowlab {
 

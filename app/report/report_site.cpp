@@ -1,11 +1,11 @@
-#include "app/report_site.h"
+#include "app/report/report_site.h"
 
 #include <set>
 #include <sstream>
 
 #include "app/common/staged_outputs.h"
-#include "app/report_assets.h"
-#include "app/report_pages.h"
+#include "app/report/report_assets.h"
+#include "app/report/report_pages.h"
 #include "scenes/read_file.h"
 #include "scenes/write_file.h"
 
