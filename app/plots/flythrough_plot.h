@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "app/flythrough.h"
+#include "app/measure/flythrough.h"
 
 namespace shadowlab {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "app/scaling.h"
+#include "app/measure/scaling.h"
 
 namespace shadowlab {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/sweep.h"
+#include "app/measure/sweep.h"
 
 namespace shadowlab {
 

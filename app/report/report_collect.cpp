@@ -9,7 +9,7 @@
 #include <utility>
 #include <variant>
 
-#include "app/sweep_json.h"
+#include "app/measure/sweep_json.h"
 #include "frame/registry.h"
 #include "scenes/read_file.h"
 #include "shading/image_io.h"

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "app/measure/sweep.h"
 #include "app/plots/sweep_plot.h"
-#include "app/sweep.h"
 
 namespace shadowlab {
 

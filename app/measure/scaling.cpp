@@ -1,4 +1,4 @@
-#include "app/scaling.h"
+#include "app/measure/scaling.h"
 
 #include <cstdio>
 #include <memory>

@@ -1,4 +1,4 @@
-#include "app/sweep_json.h"
+#include "app/measure/sweep_json.h"
 
 #include <algorithm>
 #include <array>

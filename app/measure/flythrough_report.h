@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "app/flythrough.h"
+#include "app/measure/flythrough.h"
 
 namespace shadowlab {
 

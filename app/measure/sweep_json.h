@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "app/sweep.h"
+#include "app/measure/sweep.h"
 #include "frame/overrides_json.h"
 
 namespace shadowlab {

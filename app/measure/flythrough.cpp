@@ -1,4 +1,4 @@
-#include "app/flythrough.h"
+#include "app/measure/flythrough.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,11 +1,11 @@
-#include "app/flythrough_report.h"
+#include "app/measure/flythrough_report.h"
 
 
 #include <nlohmann/json.hpp>
 
 #include "app/common/csv.h"
+#include "app/measure/sweep_json.h"
 #include "app/plots/svg.h"
-#include "app/sweep_json.h"
 
 namespace shadowlab {
 namespace {

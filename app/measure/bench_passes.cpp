@@ -1,4 +1,4 @@
-#include "app/bench_passes.h"
+#include "app/measure/bench_passes.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "app/sweep.h"
+#include "app/measure/sweep.h"
 
 #include <algorithm>
 #include <charconv>

@@ -11,7 +11,7 @@
 //
 // A sweep may run as shards on many machines (--shard i/n, docs/commands.md, "A sweep on a cluster"): shard i
 // runs the settings whose index k in the sweep's fixed order has k mod n == i - 1, each at
-// every thread count, and renders the references itself; app/sweep_merge.h joins the
+// every thread count, and renders the references itself; sweep_merge.h joins the
 // shards' JSON into the results of the unsharded run.
 #pragma once
 
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "app/sweep_plan.h"
+#include "app/measure/sweep_plan.h"
 #include "frame/frame_images.h"
 #include "frame/render.h"
 #include "raster/rasterizer.h"

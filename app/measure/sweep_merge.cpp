@@ -1,10 +1,10 @@
-#include "app/sweep_merge.h"
+#include "app/measure/sweep_merge.h"
 
 #include <algorithm>
 #include <map>
 #include <stdexcept>
 
-#include "app/sweep_json.h"
+#include "app/measure/sweep_json.h"
 
 namespace shadowlab {
 namespace {

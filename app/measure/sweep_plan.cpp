@@ -1,4 +1,4 @@
-#include "app/sweep_plan.h"
+#include "app/measure/sweep_plan.h"
 
 #include <algorithm>
 #include <iterator>

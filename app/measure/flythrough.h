@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "app/sweep_plan.h"
+#include "app/measure/sweep_plan.h"
 #include "frame/render.h"
 #include "raster/rasterizer.h"
 #include "shading/compare.h"
