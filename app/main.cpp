@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <initializer_list>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -17,7 +16,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/common/staged_outputs.h"
+#include "app/common/output_files.h"
 #include "app/composite.h"
 #include "app/environment.h"
 #include "app/measure/bench_passes.h"
@@ -89,19 +88,6 @@ void addSizeOptions(CLI::App* cmd, SceneOverrides& overrides) {
 void addLightOptions(CLI::App* cmd, SceneOverrides& overrides) {
     addVec3Option(cmd, "--light-pos", overrides.lightPosition, "position (centre) of the scene's first light");
     cmd->add_option("--light-radius", overrides.lightRadius, "radius of the scene's first light, which must be a disk (m, > 0)");
-}
-
-// A command's output files are written one after another, each whole or not at all; so
-// that a later one cannot fail after the earlier ones were written, every destination's
-// directory is checked before any work is done (a path naming a directory fails too).
-void requireOutputDirectories(std::initializer_list<const std::string*> paths) {
-    for (const std::string* path : paths) {
-        if (path->empty()) continue;
-        const std::filesystem::path directory = std::filesystem::path(*path).parent_path();
-        if (!std::filesystem::is_directory(directory.empty() ? "." : directory))
-            throw std::runtime_error("cannot write '" + *path + "': no directory '" + directory.string() + "'");
-        if (std::filesystem::is_directory(*path)) throw std::runtime_error("cannot write '" + *path + "': it is a directory");
-    }
 }
 
 // The progress line is for a person watching: it goes to stderr (tools read stdout), and
@@ -226,19 +212,6 @@ void runRender(const RenderArgs& a) {
     if (!a.errorMap.empty()) writeErrorMap(a, prepared, technique, settings, frame);
 }
 
-// The three files of a sweep or scaling report: STEM.csv, STEM.json and STEM.svg.
-void writeReport(const std::filesystem::path& stem, const std::string& csv, const std::string& json, const std::string& svg) {
-    for (const auto& [extension, text] : {std::pair{".csv", &csv}, {".json", &json}, {".svg", &svg}})
-        writeTextFile(stem.string() + extension, *text);
-}
-
-// Moves a command's staged files into place and names those at the top of its folder (the
-// pictures of --images, in subfolders, are not listed one by one).
-void commitAndList(StagedOutputs& outputs) {
-    for (const std::filesystem::path& file : outputs.commit())
-        if (file.parent_path() == outputs.destination()) std::cout << "wrote " << file.string() << "\n";
-}
-
 struct SweepArgs {
     SweepOptions options;
     std::vector<std::string> techniques, params;
@@ -251,8 +224,8 @@ struct SweepArgs {
 void writeSweepReport(const SweepResults& results, const std::filesystem::path& outDir, PlotErrorAxis plotY) {
     requirePlottable(results.rows, plotY);
     std::cout << formatSweepText(results);
-    writeReport(outDir / sweepFileStem(results), formatSweepCsv(results), formatSweepJson(results),
-                formatSweepSvg(results, plotY));
+    writeCsvJsonSvg(outDir / sweepFileStem(results), formatSweepCsv(results), formatSweepJson(results),
+                    formatSweepSvg(results, plotY));
 }
 
 void runSweepCommand(SweepArgs a) {
@@ -313,8 +286,8 @@ void runFlythroughCommand(FlythroughArgs a) {
     const FlythroughResults results = runFlythrough(a.options);
     std::cout << formatFlythroughText(results);
     const std::filesystem::path stem = outputs.folder() / flythroughFileStem(results.scene, a.options.techniques);
-    writeReport(stem, formatFlythroughCsv(results), formatFlythroughJson(results),
-                formatFlythroughSvg(results, FlythroughPlot::Flicker));
+    writeCsvJsonSvg(stem, formatFlythroughCsv(results), formatFlythroughJson(results),
+                    formatFlythroughSvg(results, FlythroughPlot::Flicker));
     for (const auto& [suffix, plot] :
          {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error}})
         writeTextFile(stem.string() + suffix, formatFlythroughSvg(results, plot));
@@ -348,8 +321,8 @@ void runScalingCommand(ScalingArgs a) {
     StagedOutputs outputs(a.outDir);   // before the long part, so that it fails early
     const ScalingResults results = runScaling(a.options);
     std::cout << formatScalingText(results);
-    writeReport(outputs.folder() / scalingFileStem(results), formatScalingCsv(results), formatScalingJson(results),
-                formatScalingSvg(results));
+    writeCsvJsonSvg(outputs.folder() / scalingFileStem(results), formatScalingCsv(results),
+                    formatScalingJson(results), formatScalingSvg(results));
     commitAndList(outputs);
 }
 
