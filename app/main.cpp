@@ -1,21 +1,18 @@
 // shadowlab: renders, compares and benchmarks shadow techniques (docs/commands.md).
 // Every command exits non-zero with a one-line error on bad input, and writes its output
 // files whole or not at all.
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include <malloc.h>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
+#include "app/commands/options.h"
 #include "app/common/output_files.h"
 #include "app/composite.h"
 #include "app/environment.h"
@@ -52,69 +49,6 @@
 using namespace shadowlab;
 
 namespace {
-
-// "x,y,z" -> vec3; CLI11 reports the message on failure.
-std::string parseVec3(const std::string& text, glm::vec3& out) {
-    std::istringstream in(text);
-    char comma1 = 0, comma2 = 0;
-    if (!(in >> out.x >> comma1 >> out.y >> comma2 >> out.z) || comma1 != ',' || comma2 != ',' || !in.eof()) {
-        return "expected three numbers as x,y,z, got '" + text + "'";
-    }
-    if (!std::isfinite(out.x) || !std::isfinite(out.y) || !std::isfinite(out.z)) return "values must be finite";
-    return {};
-}
-
-void addVec3Option(CLI::App* cmd, const std::string& name, std::optional<glm::vec3>& target, const std::string& help) {
-    cmd->add_option_function<std::string>(name, [&target, name](const std::string& text) {
-        glm::vec3 v;
-        if (const std::string error = parseVec3(text, v); !error.empty()) throw CLI::ValidationError(name, error);
-        target = v;
-    }, help)->type_name("X,Y,Z");
-}
-
-// An option whose text is checked by what reads it: given, even as '', or not given, so that
-// an empty value reaches the check instead of being taken for a missing one.
-void addOptionalText(CLI::App* cmd, const std::string& name, std::optional<std::string>& target, const std::string& help) {
-    cmd->add_option_function<std::string>(name, [&target](const std::string& text) { target = text; }, help)->type_name("TEXT");
-}
-
-// --width and --height of render, sweep and flythrough; applyOverrides() applies them.
-void addSizeOptions(CLI::App* cmd, SceneOverrides& overrides) {
-    cmd->add_option("--width", overrides.width, "image width in pixels")->check(CLI::Range(1, raster::kMaxViewport));
-    cmd->add_option("--height", overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
-}
-
-// --light-pos and --light-radius, shared by render and sweep; applyOverrides() checks them.
-void addLightOptions(CLI::App* cmd, SceneOverrides& overrides) {
-    addVec3Option(cmd, "--light-pos", overrides.lightPosition, "position (centre) of the scene's first light");
-    cmd->add_option("--light-radius", overrides.lightRadius, "radius of the scene's first light, which must be a disk (m, > 0)");
-}
-
-// The progress line is for a person watching: it goes to stderr (tools read stdout), and
-// only if stderr is a terminal or --progress asks for it.
-Progress* progressIfWanted(Progress& progress, bool asked) {
-    return asked || isatty(fileno(stderr)) ? &progress : nullptr;
-}
-
-// Every floating-point option of every command must be a finite number: CLI11's Range lets
-// NaN through (it compares false both ways) and an infinity past a one-sided bound, and a NaN
-// exposure or rotation became a black image or a crash. The check goes on each option CLI11
-// reads as FLOAT (one value or a list, each value checked), so a new option cannot miss it.
-void requireFiniteFloats(CLI::App& app) {
-    const CLI::Validator finite(
-        [](std::string& text) -> std::string {
-            char* end = nullptr;
-            const double value = std::strtod(text.c_str(), &end);
-            if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) return "must be a finite number, got '" + text + "'";
-            return {};
-        },
-        "", "FINITE");
-    for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
-        for (CLI::Option* option : command->get_options()) {
-            if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite);
-        }
-    }
-}
 
 // CLI11 answers a mistyped command with "A subcommand is required"; name it instead.
 void requireKnownCommand(const CLI::App& app, int argc, char** argv) {
@@ -370,27 +304,6 @@ void printTechniques() {
 struct ExportArgs {
     std::string scene, path;
 };
-
-// ---- The commands' options ------------------------------------------------------------
-
-void addSimdOption(CLI::App* cmd, std::string& simd) {
-    cmd->add_option("--simd", simd, "scalar, avx2, avx512 or auto")->capture_default_str();
-}
-
-// On every command whose work can take long: render (the exact references), sweep,
-// scaling and bench.
-void addProgressFlag(CLI::App* cmd, bool& progress) {
-    cmd->add_flag("--progress", progress,
-                  "draw the progress line on stderr even if it is not a terminal (on a terminal it is drawn anyway, for work over 2 s)");
-}
-
-// --runs, --warmup and --simd of the timing commands (sweep, scaling, bench); `unit` says
-// what is repeated, e.g. "frames per row". Their --threads differ (a list, or one count).
-void addTimingOptions(CLI::App* cmd, const std::string& unit, int& runs, int& warmupRuns, std::string& simd) {
-    cmd->add_option("--runs", runs, "measured " + unit)->capture_default_str()->check(CLI::Range(1, kMaxRuns));
-    cmd->add_option("--warmup", warmupRuns, "warm-up " + unit)->capture_default_str()->check(CLI::Range(0, kMaxWarmupRuns));
-    addSimdOption(cmd, simd);
-}
 
 void addRenderCommand(CLI::App& app, RenderArgs& a) {
     CLI::App* r = app.add_subcommand("render", "render a scene with a shadow technique");
