@@ -163,12 +163,10 @@ void writeSweepReport(const SweepResults& results, const std::filesystem::path& 
 }
 
 void runSweepCommand(SweepArgs a) {
-    Progress progress(std::cerr);
-    a.options.progress = progressIfWanted(progress, a.progress);
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
     if (a.casterLod) a.options.axes.push_back(parseSweepAxis("caster-lod=" + *a.casterLod));
-    a.options.simd = raster::parseSimdLevel(a.simd);
+    const MeasuringRun run(a.options, a.simd, a.progress);
     if (!a.shard.empty()) a.options.shard = parseSweepShard(a.shard);
     const PlotErrorAxis plotY = parsePlotErrorAxis(a.plotY);
     for (const Technique* t : a.options.techniques) {   // before the long part, as below
@@ -210,11 +208,9 @@ struct FlythroughArgs {
 };
 
 void runFlythroughCommand(FlythroughArgs a) {
-    Progress progress(std::cerr);
-    a.options.progress = progressIfWanted(progress, a.progress);
     for (const std::string& name : a.techniques) a.options.techniques.push_back(&findTechnique(name));
     for (const std::string& p : a.params) a.options.axes.push_back(parseSweepAxis(p));
-    a.options.simd = raster::parseSimdLevel(a.simd);
+    const MeasuringRun run(a.options, a.simd, a.progress);
     StagedOutputs outputs(a.outDir);   // before the long part, so that it fails early
     if (a.images) a.options.imagesOutDir = outputs.folder();
     const FlythroughResults results = runFlythrough(a.options);
@@ -247,11 +243,9 @@ struct ScalingArgs {
 };
 
 void runScalingCommand(ScalingArgs a) {
-    Progress progress(std::cerr);
-    a.options.progress = progressIfWanted(progress, a.progress);
     a.options.technique = &findTechnique(a.technique);
     for (const std::string& p : a.params) parseParamAssignment(p, a.options.params);
-    a.options.simd = raster::parseSimdLevel(a.simd);
+    const MeasuringRun run(a.options, a.simd, a.progress);
     StagedOutputs outputs(a.outDir);   // before the long part, so that it fails early
     const ScalingResults results = runScaling(a.options);
     std::cout << formatScalingText(results);
@@ -284,9 +278,7 @@ struct BenchArgs {
 };
 
 void runBenchCommand(BenchArgs a) {
-    Progress progress(std::cerr);
-    a.options.progress = progressIfWanted(progress, a.progress);
-    a.options.simd = raster::parseSimdLevel(a.simd);
+    const MeasuringRun run(a.options, a.simd, a.progress);
     requireOutputDirectories({&a.json});   // before the runs, not after them
     const BenchResults results = runBench(a.options);
     std::cout << formatBenchText(results);

@@ -1,9 +1,10 @@
 // The options several commands share, written once so that they read alike everywhere:
 // vectors as X,Y,Z, the image size and the first light, --simd, --progress, the timing
 // protocol's --runs and --warmup, and the finite-number check on every floating-point
-// option.
+// option; and how a measuring command turns --progress and --simd into its settings.
 #pragma once
 
+#include <iostream>
 #include <optional>
 #include <string>
 
@@ -11,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "frame/render.h"
+#include "raster/tile_kernels.h"
 #include "shadows/progress.h"
 
 namespace shadowlab {
@@ -46,5 +48,21 @@ void requireFiniteFloats(CLI::App& app);
 // The progress line is for a person watching: it goes to stderr (tools read stdout), and
 // only if stderr is a terminal or --progress asks for it.
 Progress* progressIfWanted(Progress& progress, bool asked);
+
+// What every measuring command (sweep, flythrough, scaling, bench) sets alike on its
+// options, for as long as this lives: the progress line, if wanted, and the SIMD level.
+// Made after the techniques are looked up, so that a wrong name is reported before a
+// wrong --simd.
+class MeasuringRun {
+public:
+    template <class Options>
+    MeasuringRun(Options& options, const std::string& simd, bool progressAsked) : progress_(std::cerr) {
+        options.progress = progressIfWanted(progress_, progressAsked);
+        options.simd = raster::parseSimdLevel(simd);
+    }
+
+private:
+    Progress progress_;
+};
 
 }  // namespace shadowlab
