@@ -1,11 +1,19 @@
-#include "app/environment.h"
-
+// `shadowlab environment MAP`: reads an environment map as the techniques would, and writes
+// its intermediate buffers (docs/environment-lighting.md): the map, its nine-coefficient
+// spherical-harmonic reconstruction, the irradiance of a white Lambert surface facing each
+// direction, the median-cut and structured-importance lights drawn on the map and, on request, prefiltered maps for
+// Phong and GGX lobes (with GGX, the split-sum scale and bias table), with the figures printed.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <sstream>
+#include <string>
+#include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/commands/commands.h"
 #include "app/common/staged_outputs.h"
 #include "raster/portable_constants.h"
 #include "scenes/write_file.h"
@@ -18,6 +26,14 @@
 
 namespace shadowlab {
 namespace {
+
+struct EnvironmentArgs {
+    std::string map, outDir = "out/environment";
+    double rotationDegrees = 0.0, shWindow = 0.0;
+    int lights = 16;
+    std::vector<double> phongShininess, ggxRoughness;   // a prefiltered map for each
+    float exposure = 0.0f;
+};
 
 void writeImage(const std::filesystem::path& dir, const std::string& name, int width, int height,
                 const std::vector<glm::vec3>& radiance, const ToneMapOptions& tone) {
@@ -65,8 +81,6 @@ void writePrefiltered(const std::filesystem::path& dir, const EnvironmentMap& ma
     }
 }
 
-}  // namespace
-
 void runEnvironmentCommand(const EnvironmentArgs& a) {
     checkShWindow(a.shWindow);   // before the work of reading the map
     const EnvironmentMap map = readEnvironmentMap(a.map, a.rotationDegrees * kPi / 180.0);
@@ -105,6 +119,23 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
                 power.r, power.g, power.b);
     std::printf("L_00 (%.6g, %.6g, %.6g); %d median-cut and structured lights; buffers in %s\n", radiance.c[0].r, radiance.c[0].g,
                 radiance.c[0].b, a.lights, outputs.destination().c_str());
+}
+
+}  // namespace
+
+void addEnvironmentCommand(CLI::App& command) {
+    const auto args = std::make_shared<EnvironmentArgs>();
+    EnvironmentArgs& a = *args;
+    CLI::App* e = command.description("an environment map's buffers: SH reconstruction and irradiance, median-cut lights, prefiltered lobes");
+    e->add_option("map", a.map, "latitude-longitude map (.exr or .hdr)")->required()->check(CLI::ExistingFile);
+    e->add_option("--rotation", a.rotationDegrees, "turn about +Y, degrees (right-handed)")->capture_default_str()->check(CLI::Range(-3600.0, 3600.0));
+    e->add_option("--lights", a.lights, "median-cut lights to draw")->capture_default_str()->check(CLI::Range(1, 1 << 20));
+    e->add_option("--phong", a.phongShininess, "write the map prefiltered for normalised Phong of this shininess (repeatable)");
+    e->add_option("--ggx", a.ggxRoughness, "write the map prefiltered for GGX of this roughness (repeatable), and the split-sum table");
+    e->add_option("--sh-window", a.shWindow, "sinc^4 window width against ringing (0: off, else > 2)")->capture_default_str();
+    e->add_option("--exposure", a.exposure, "stops for the PNGs")->capture_default_str()->check(CLI::Range(-30.0f, 30.0f));
+    e->add_option("--out", a.outDir, "directory for the EXR, PNG and JSON files")->capture_default_str();
+    e->callback([args] { runEnvironmentCommand(*args); });
 }
 
 }  // namespace shadowlab

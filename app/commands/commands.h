@@ -1,0 +1,26 @@
+// The commands of `shadowlab`, one file each in app/commands/: each file holds its
+// command's arguments, options and run, and one function that gives the subcommand main()
+// made for it (app/main.cpp, the table of commands) its description, options and run. The
+// run is the subcommand's callback; the arguments it reads live as long as the subcommand.
+#pragma once
+
+namespace CLI {
+class App;
+}
+
+namespace shadowlab {
+
+void addRenderCommand(CLI::App& command);
+void addSweepCommand(CLI::App& command);
+void addMergeSweepCommand(CLI::App& command);
+void addReportCommand(CLI::App& command);
+void addScalingCommand(CLI::App& command);
+void addFlythroughCommand(CLI::App& command);
+void addCompareCommand(CLI::App& command);
+void addBenchCommand(CLI::App& command);
+void addTechniquesCommand(CLI::App& command);
+void addExportObjCommand(CLI::App& command);
+void addEnvironmentCommand(CLI::App& command);
+void addCompositeCommand(CLI::App& command);
+
+}  // namespace shadowlab
