@@ -7,8 +7,8 @@
 
 #include <tbb/info.h>
 
+#include "app/common/text_format.h"
 #include "app/common/timing.h"
-#include "app/plots/svg.h"
 #include "frame/frame_images.h"
 #include "frame/score.h"
 #include "raster/thread_count.h"
@@ -68,7 +68,7 @@ FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels&
     ImageChannels scored = scoredImage(timed.last);
     frame.errors = scoreImage(reference, scored, timed.last.output);
     if (!state.picturesDir.empty()) {
-        const std::string number = svg::format("%04d", int(state.series.frames.size()));
+        const std::string number = text::format("%04d", int(state.series.frames.size()));
         writeFramePictures(state.picturesDir, state.picturesDir, number, timed.last, &reference);
     }
     if (previousReference)

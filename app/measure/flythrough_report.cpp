@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/common/csv.h"
+#include "app/common/text_format.h"
 #include "app/measure/sweep_json.h"
-#include "app/plots/svg.h"
 
 namespace shadowlab {
 namespace {
@@ -43,7 +43,7 @@ Json seriesJson(const FlythroughSeries& s) {
 }  // namespace
 
 std::string formatFlythroughText(const FlythroughResults& results) {
-    using svg::format;
+    using text::format;
     std::string text = format("%s: %d frames of path %s, %d threads, median of %d runs after %d warm-up\n",
                               results.scene.c_str(), results.frames, results.path.c_str(), results.threads,
                               results.runs, results.warmupRuns);

@@ -1,27 +1,23 @@
 // Helpers shared by the hand-written SVG plots (sweep_plot.cpp, scaling_plot.cpp,
-// line_plot.cpp): text formatting and escaping, tick steps and axes, the canvas and the
-// colour palette.
+// line_plot.cpp): text formatting (text::format, as svg::format) and escaping, tick steps
+// and axes, the canvas and the colour palette.
 #pragma once
 
-#include <cmath>
-#include <cstdio>
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "app/common/text_format.h"
+
 namespace shadowlab::svg {
+
+using text::format;   // printf into a std::string
 
 // Okabe and Ito's colour-blind-safe palette (without its yellow, faint on white), then
 // five of Paul Tol's muted colours, so that a dozen techniques get a colour each.
 inline constexpr const char* kPalette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9",
                                            "#000000", "#882255", "#44AA99", "#999933", "#332288", "#AA4499"};
-
-// printf into a std::string.
-std::string format(const char* pattern, auto... values) {
-    std::string text(size_t(std::snprintf(nullptr, 0, pattern, values...)), '\0');
-    std::snprintf(text.data(), text.size() + 1, pattern, values...);
-    return text;
-}
 
 inline std::string escape(const std::string& text) {
     std::string escaped;
