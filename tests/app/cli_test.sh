@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# End-to-end tests of the shadowlab command line (app/main.cpp): every command's help,
-# one-line errors for bad input, output files written whole or not at all, and the
-# progress line on stderr only.
+# End-to-end tests of the shadowlab command line (app/main.cpp, app/commands/): every
+# command's help, one-line errors for bad input, output files written whole or not at all,
+# and the progress line on stderr only.
 # Usage: cli_test.sh PATH/TO/shadowlab SCRATCH_DIR
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/one_line_error.sh"
