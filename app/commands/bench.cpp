@@ -1,7 +1,6 @@
 // `shadowlab bench`: the depth-only passes and the reference's rays timed on the built-in
 // scenes (app/measure/bench_passes.h).
 #include <iostream>
-#include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -33,15 +32,13 @@ void runBenchCommand(BenchArgs a) {
 }  // namespace
 
 void addBenchCommand(CLI::App& command) {
-    const auto args = std::make_shared<BenchArgs>();
-    BenchArgs& a = *args;
+    BenchArgs& a = argumentsRunBy<BenchArgs>(command, runBenchCommand);
     CLI::App* b = command.description("time depth-only passes and reference rays on the built-in scenes");
     b->add_option("--scenes", a.options.scenes, "scenes to measure")->delimiter(',')->capture_default_str();
     b->add_option("--threads", a.options.threads, "thread counts")->delimiter(',')->capture_default_str()->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(b, "runs per row", a.options.runs, a.options.warmupRuns, a.simd);
     b->add_option("--json", a.json, "also write the rows as JSON");
     addProgressFlag(b, a.progress);
-    b->callback([args] { runBenchCommand(*args); });
 }
 
 }  // namespace shadowlab

@@ -1,14 +1,22 @@
 // The commands of `shadowlab`, one file each in app/commands/: each file holds its
 // command's arguments, options and run, and one function that gives the subcommand main()
-// made for it (app/main.cpp, the table of commands) its description, options and run. The
-// run is the subcommand's callback; the arguments it reads live as long as the subcommand.
+// made for it (app/main.cpp, the table of commands) its description, options and run.
 #pragma once
 
-namespace CLI {
-class App;
-}
+#include <memory>
+
+#include <CLI/CLI.hpp>
 
 namespace shadowlab {
+
+// The arguments a command's options fill in, owned by the command's callback, which runs
+// `run` on them: they live as long as the subcommand, and no longer.
+template <class Args, class Run>
+Args& argumentsRunBy(CLI::App& command, Run run) {
+    const auto args = std::make_shared<Args>();
+    command.callback([args, run] { run(*args); });
+    return *args;
+}
 
 void addRenderCommand(CLI::App& command);
 void addSweepCommand(CLI::App& command);

@@ -2,7 +2,6 @@
 // (docs/conventions.md), and a heat map of their difference.
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -36,15 +35,13 @@ void runCompare(const CompareArgs& a) {
 }  // namespace
 
 void addCompareCommand(CLI::App& command) {
-    const auto args = std::make_shared<CompareArgs>();
-    CompareArgs& a = *args;
+    CompareArgs& a = argumentsRunBy<CompareArgs>(command, runCompare);
     CLI::App* c = command.description("error figures of a test image against a reference (conventions.md)");
     c->add_option("reference", a.reference, "reference EXR (its hit channel selects the pixels)")->required()->check(CLI::ExistingFile);
     c->add_option("test", a.test, "EXR to score")->required()->check(CLI::ExistingFile);
     c->add_option("--channel", a.channel, "channel to compare")->capture_default_str();
     c->add_option("--heatmap", a.heatmap, "diff heat-map PNG (default: TEST-diff.png)");
     c->add_option("--json", a.json, "also write the figures as JSON");
-    c->callback([args] { runCompare(*args); });
 }
 
 }  // namespace shadowlab

@@ -1,6 +1,5 @@
 // `shadowlab composite`: the options of differential rendering into a photograph; its run
 // is app/composite.h.
-#include <memory>
 
 #include <CLI/CLI.hpp>
 
@@ -12,8 +11,7 @@
 namespace shadowlab {
 
 void addCompositeCommand(CLI::App& command) {
-    const auto args = std::make_shared<CompositeArgs>();
-    CompositeArgs& a = *args;
+    CompositeArgs& a = argumentsRunBy<CompositeArgs>(command, runCompositeCommand);
     CLI::App* c = command.description("a synthetic object's shadows composited into a photograph (Gibson et al. 2003) and the exact differential reference");
     c->add_option("case", a.scene, "room (slid under the desk), room-lift (raised off the floor), outdoor (the forest panorama) chessboard (a real photograph), or a compositing scene file (.json, docs/scene-format.md); --width and --height apply to the room and outdoor cases")->capture_default_str();
     c->add_option("--passes", a.passes, "shadow passes n per frame; 0: one per occluded source")->delimiter(',')->capture_default_str()->check(CLI::Range(0, 100000));
@@ -34,7 +32,6 @@ void addCompositeCommand(CLI::App& command) {
     c->add_option("--warmup", a.warmupRuns, "untimed runs first")->capture_default_str()->check(CLI::Range(0, 1000));
     c->add_option("--threads", a.threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, kMaxThreads));
     c->add_option("--out", a.outDir, "directory for the images and composite.json")->capture_default_str();
-    c->callback([args] { runCompositeCommand(*args); });
 }
 
 }  // namespace shadowlab

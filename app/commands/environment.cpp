@@ -5,7 +5,6 @@
 // Phong and GGX lobes (with GGX, the split-sum scale and bias table), with the figures printed.
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -124,8 +123,7 @@ void runEnvironmentCommand(const EnvironmentArgs& a) {
 }  // namespace
 
 void addEnvironmentCommand(CLI::App& command) {
-    const auto args = std::make_shared<EnvironmentArgs>();
-    EnvironmentArgs& a = *args;
+    EnvironmentArgs& a = argumentsRunBy<EnvironmentArgs>(command, runEnvironmentCommand);
     CLI::App* e = command.description("an environment map's buffers: SH reconstruction and irradiance, median-cut lights, prefiltered lobes");
     e->add_option("map", a.map, "latitude-longitude map (.exr or .hdr)")->required()->check(CLI::ExistingFile);
     e->add_option("--rotation", a.rotationDegrees, "turn about +Y, degrees (right-handed)")->capture_default_str()->check(CLI::Range(-3600.0, 3600.0));
@@ -135,7 +133,6 @@ void addEnvironmentCommand(CLI::App& command) {
     e->add_option("--sh-window", a.shWindow, "sinc^4 window width against ringing (0: off, else > 2)")->capture_default_str();
     e->add_option("--exposure", a.exposure, "stops for the PNGs")->capture_default_str()->check(CLI::Range(-30.0f, 30.0f));
     e->add_option("--out", a.outDir, "directory for the EXR, PNG and JSON files")->capture_default_str();
-    e->callback([args] { runEnvironmentCommand(*args); });
 }
 
 }  // namespace shadowlab

@@ -1,5 +1,4 @@
 // `shadowlab export-obj`: every triangle of a scene in world space as OBJ.
-#include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -15,15 +14,15 @@ struct ExportArgs {
     std::string scene, path;
 };
 
+void runExportObj(const ExportArgs& a) { writeObj(flatten(loadScene(a.scene)), a.path); }
+
 }  // namespace
 
 void addExportObjCommand(CLI::App& command) {
-    const auto args = std::make_shared<ExportArgs>();
-    ExportArgs& a = *args;
+    ExportArgs& a = argumentsRunBy<ExportArgs>(command, runExportObj);
     CLI::App* e = command.description("write every triangle of a scene in world space as OBJ");
     e->add_option("scene", a.scene, "built-in scene name or scene file")->required();
     e->add_option("out", a.path, "OBJ file to write")->required();
-    e->callback([args] { writeObj(flatten(loadScene(args->scene)), args->path); });
 }
 
 }  // namespace shadowlab

@@ -2,7 +2,6 @@
 // (app/measure/flythrough.h), written as the table, CSV, JSON and three plots.
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,8 +49,7 @@ void runFlythroughCommand(FlythroughArgs a) {
 }  // namespace
 
 void addFlythroughCommand(CLI::App& command) {
-    const auto args = std::make_shared<FlythroughArgs>();
-    FlythroughArgs& a = *args;
+    FlythroughArgs& a = argumentsRunBy<FlythroughArgs>(command, runFlythroughCommand);
     CLI::App* f = command.description("shadows in motion: time, error and flicker of techniques along a "
                                       "camera (and light) path (CSV, JSON, SVG plots)");
     f->add_option("scene", a.options.scene, "built-in scene name or scene file (.json)")->required();
@@ -76,7 +74,6 @@ void addFlythroughCommand(CLI::App& command) {
                 "also write every frame's image, error map and V, "
                 "OUT/SCENE-flythrough-TECHNIQUES-frames/SETTING/NNNN-image.png, -error-map.png, -visibility.png");
     addProgressFlag(f, a.progress);
-    f->callback([args] { runFlythroughCommand(*args); });
 }
 
 }  // namespace shadowlab

@@ -1,7 +1,6 @@
 // `shadowlab merge-sweep`: the JSON files of a sweep's shards (sweep --shard) joined into
 // the files of the whole sweep (app/measure/sweep_merge.h).
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,12 +42,10 @@ void runMergeSweepCommand(const MergeSweepArgs& a) {
 }  // namespace
 
 void addMergeSweepCommand(CLI::App& command) {
-    const auto args = std::make_shared<MergeSweepArgs>();
-    MergeSweepArgs& a = *args;
+    MergeSweepArgs& a = argumentsRunBy<MergeSweepArgs>(command, runMergeSweepCommand);
     CLI::App* m = command.description("join the JSON files of a sweep's shards (sweep --shard) into the sweep's CSV, JSON and SVG plot");
     m->add_option("shards", a.shards, "the JSON file of every shard, SCENE-TECHNIQUES-shard-I-of-N.json")->required();
     addSweepFileOptions(m, a.outDir, a.plotY);
-    m->callback([args] { runMergeSweepCommand(*args); });
 }
 
 }  // namespace shadowlab

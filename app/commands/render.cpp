@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -119,8 +118,9 @@ void runRender(const RenderArgs& a) {
 }  // namespace
 
 void addRenderCommand(CLI::App& command) {
-    const auto args = std::make_shared<RenderArgs>();
-    RenderArgs& a = *args;
+    RenderArgs& a = argumentsRunBy<RenderArgs>(command, [](const RenderArgs& args) {
+        withThreads(args.threads, [&args] { runRender(args); });
+    });
     CLI::App* r = command.description("render a scene with a shadow technique");
     r->add_option("scene", a.scene, "built-in scene name or scene file (.json)")->required();
     r->add_option("--technique", a.technique, "shadow technique (see `shadowlab techniques`)")->capture_default_str();
@@ -145,7 +145,6 @@ void addRenderCommand(CLI::App& command) {
         ->needs(errorMap);
     r->add_option("--reference", a.reference, "with --error-map: the technique to score against (default: the one the technique names, reference or reference-soft)")->needs(errorMap);
     addProgressFlag(r, a.progress);
-    r->callback([args] { withThreads(args->threads, [args] { runRender(*args); }); });
 }
 
 }  // namespace shadowlab

@@ -1,7 +1,6 @@
 // `shadowlab report`: the static HTML site of sweep and render results (app/report/).
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,15 +27,13 @@ void runReportCommand(const ReportArgs& a) {
 }  // namespace
 
 void addReportCommand(CLI::App& command) {
-    const auto args = std::make_shared<ReportArgs>();
-    ReportArgs& a = *args;
+    ReportArgs& a = argumentsRunBy<ReportArgs>(command, runReportCommand);
     CLI::App* r = command.description("a static HTML site of sweep and render --error-map --json results, "
                                       "read from file:// (index, a page per scene and per setting)");
     r->add_option("files", a.files, "JSON files of sweep (with --images for pictures) or of render --error-map --json")
         ->required();
     r->add_option("--out", a.outDir, "directory for index.html and the rest of the site")->capture_default_str();
     r->add_option("--plot-y", a.plotY, "the plots' error axis, as sweep's --plot-y")->capture_default_str();
-    r->callback([args] { runReportCommand(*args); });
 }
 
 }  // namespace shadowlab

@@ -1,7 +1,6 @@
 // `shadowlab scaling`: a technique's time against the triangle count over a series of
 // scenes, fitted as t = a + b n (app/measure/scaling.h).
 #include <iostream>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,8 +40,7 @@ void runScalingCommand(ScalingArgs a) {
 }  // namespace
 
 void addScalingCommand(CLI::App& command) {
-    const auto args = std::make_shared<ScalingArgs>();
-    ScalingArgs& a = *args;
+    ScalingArgs& a = argumentsRunBy<ScalingArgs>(command, runScalingCommand);
     CLI::App* s = command.description("time against triangle count over a series of scenes, fitted as t = a + b n (CSV, JSON, SVG)");
     s->add_option("scenes", a.options.scenes, "two or more built-in scene names or scene files (e.g. scenes/scaling/*.json)")->required();
     s->add_option("--technique", a.technique, "the technique to time")->required();
@@ -51,7 +49,6 @@ void addScalingCommand(CLI::App& command) {
     addTimingOptions(s, "frames per scene", a.options.runs, a.options.warmupRuns, a.simd);
     s->add_option("--out", a.outDir, "directory for scaling-TECHNIQUE.csv, .json and .svg")->capture_default_str();
     addProgressFlag(s, a.progress);
-    s->callback([args] { runScalingCommand(*args); });
 }
 
 }  // namespace shadowlab

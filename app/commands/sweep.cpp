@@ -1,6 +1,5 @@
 // `shadowlab sweep`: speed against error over a grid of technique settings
 // (app/measure/sweep.h), whole or as one shard of it.
-#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -48,8 +47,7 @@ void runSweepCommand(SweepArgs a) {
 }  // namespace
 
 void addSweepCommand(CLI::App& command) {
-    const auto args = std::make_shared<SweepArgs>();
-    SweepArgs& a = *args;
+    SweepArgs& a = argumentsRunBy<SweepArgs>(command, runSweepCommand);
     CLI::App* s = command.description("speed against error over a grid of technique settings (CSV, JSON, SVG plot)");
     s->add_option("scene", a.options.scene, "built-in scene name or scene file (.json)")->required();
     s->add_option("--technique", a.techniques, "techniques to compare, comma-separated")->delimiter(',')->required();
@@ -69,7 +67,6 @@ void addSweepCommand(CLI::App& command) {
                 "also write each setting's image, error map, V and debug buffers and each reference's image and V "
                 "as PNG into OUT/SCENE-TECHNIQUES-images (for `shadowlab report`)");
     addProgressFlag(s, a.progress);
-    s->callback([args] { runSweepCommand(*args); });
 }
 
 }  // namespace shadowlab
