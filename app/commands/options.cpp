@@ -9,7 +9,6 @@
 
 #include "app/measure/sweep.h"
 #include "raster/fixed_point.h"
-#include "raster/thread_count.h"
 
 namespace shadowlab {
 namespace {
