@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/composite_plan.h"
-#include "app/line_plot.h"
-#include "app/staged_outputs.h"
+#include "app/common/staged_outputs.h"
+#include "app/plots/line_plot.h"
 #include "differential/builtin_cases.h"
 #include "differential/composite.h"
 #include "differential/compositing_inputs.h"

@@ -4,7 +4,7 @@
 #include <array>
 #include <vector>
 
-#include "app/svg.h"
+#include "app/plots/svg.h"
 #include "scenes/bounds.h"
 
 namespace shadowlab {

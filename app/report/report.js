@@ -1,4 +1,4 @@
-// The report's script (app/report_pages.h): the before/after slider and sorting tables by
+// The report's script (report_pages.h): the before/after slider and sorting tables by
 // any column. Every page reads the same without it.
 "use strict";
 

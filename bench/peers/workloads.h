@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_passes.h"
-#include "app/timing.h"
+#include "app/common/timing.h"
+#include "app/measure/bench_passes.h"
 #include "bench/peers/gl_resources.h"
 #include "bench/peers/gl_shaders.h"
 #include "frame/render.h"

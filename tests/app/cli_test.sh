@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# End-to-end tests of the shadowlab command line (app/main.cpp): every command's help,
-# one-line errors for bad input, output files written whole or not at all, and the
-# progress line on stderr only.
+# End-to-end tests of the shadowlab command line (app/main.cpp, app/commands/): every
+# command's help, one-line errors for bad input, output files written whole or not at all,
+# and the progress line on stderr only.
 # Usage: cli_test.sh PATH/TO/shadowlab SCRATCH_DIR
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/one_line_error.sh"
@@ -323,7 +323,7 @@ done
 # ---- Whole or nothing, for every command that writes a folder ----------------------------------
 # A folder in the way of one of a command's later files fails the command, which leaves
 # nothing else in its --out folder (it stages every file and moves them in at the end,
-# app/staged_outputs.h): environment, composite, flythrough, merge-sweep and report each left
+# app/common/staged_outputs.h): environment, composite, flythrough, merge-sweep and report each left
 # the files written before the one that failed.
 blocked() {   # blocked WHAT NAME COMMAND...: NAME a folder in --out $scratch/blocked-WHAT
     local what=$1 name=$2

@@ -10,8 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/flythrough.h"
-#include "app/flythrough_report.h"
+#include "app/measure/flythrough.h"
+#include "app/measure/flythrough_report.h"
+#include "app/plots/flythrough_plot.h"
 #include "frame/registry.h"
 #include "scenes/scene_file.h"
 #include "tests/scratch_directory.h"

@@ -1,4 +1,4 @@
-// The line plot of the differential-rendering figures (app/line_plot.h): one polyline and
+// The line plot of the differential-rendering figures (app/plots/line_plot.h): one polyline and
 // one circle per point of each series, labels where given, every point inside the plot
 // area, and bad series refused.
 #include <doctest/doctest.h>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/line_plot.h"
+#include "app/plots/line_plot.h"
 #include "tests/app/text_count.h"
 
 using namespace shadowlab;

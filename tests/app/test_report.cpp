@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/report_collect.h"
-#include "app/report_site.h"
-#include "app/sweep_json.h"
+#include "app/measure/sweep_json.h"
+#include "app/report/report_collect.h"
+#include "app/report/report_site.h"
 #include "frame/score.h"
 #include "frame/score_json.h"
 #include "scenes/read_file.h"

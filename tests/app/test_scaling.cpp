@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/scaling.h"
-#include "app/scaling_plot.h"
+#include "app/measure/scaling.h"
+#include "app/plots/scaling_plot.h"
 #include "frame/registry.h"
 #include "scenes/scene_file.h"
 #include "tests/app/text_count.h"

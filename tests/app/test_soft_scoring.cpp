@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "app/sweep.h"
+#include "app/measure/sweep.h"
 #include "frame/registry.h"
 #include "frame/score.h"
 #include "scenes/scene_file.h"

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/sweep.h"
-#include "app/sweep_json.h"
+#include "app/measure/sweep.h"
+#include "app/measure/sweep_json.h"
 #include "frame/frame_images.h"
 #include "frame/registry.h"
 #include "scenes/read_file.h"

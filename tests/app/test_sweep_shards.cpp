@@ -11,10 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/sweep.h"
-#include "app/sweep_json.h"
-#include "app/sweep_merge.h"
-#include "app/sweep_plot.h"
+#include "app/measure/sweep.h"
+#include "app/measure/sweep_json.h"
+#include "app/measure/sweep_merge.h"
+#include "app/plots/sweep_plot.h"
 #include "frame/registry.h"
 #include "scenes/scene_file.h"
 

@@ -1,0 +1,35 @@
+// Summary of repeated time measurements, as every benchmark here reports them
+// (style.md, "benchmarks are repeatable protocols"): the median and the minimum; and the
+// protocol by which sweep, scaling and flythrough time a technique's frames.
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "frame/render.h"
+#include "shadows/progress.h"
+
+namespace shadowlab {
+
+struct Timing {
+    double medianMs = 0.0, minMs = 0.0;
+};
+
+// ms must not be empty; an even count takes the mean of the two middle values.
+inline Timing summarizeTimes(std::vector<double> ms) {
+    std::sort(ms.begin(), ms.end());
+    const size_t n = ms.size();
+    return {n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]), ms.front()};
+}
+
+// Warm-up frames, then `runs` measured frames; the median and minimum of
+// Frame::techniqueMs, and the last frame. Every frame, warm-up ones included, is counted
+// in `frames`.
+struct TimedFrames {
+    Timing timing;
+    Frame last;
+};
+TimedFrames timeFrames(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings,
+                       int warmupRuns, int runs, const ProgressStage& frames);
+
+}  // namespace shadowlab

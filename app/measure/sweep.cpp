@@ -1,0 +1,265 @@
+#include "app/measure/sweep.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include <tbb/info.h>
+
+#include "app/common/csv.h"
+#include "app/common/timing.h"
+#include "frame/registry.h"
+#include "frame/render.h"
+#include "frame/score.h"
+#include "raster/thread_count.h"
+#include "scenes/scene_file.h"
+
+namespace shadowlab {
+namespace {
+
+const char* const kShardRule = "expected I/N with 1 <= I <= N (I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N)";
+
+// The plans with only the shard's settings. N may not exceed the sweep's settings: a shard
+// without any is a mistake in N, and merge-sweep would wait for N files.
+std::vector<SweepPlan> shardOf(std::vector<SweepPlan> plans, const SweepShard& shard) {
+    if (!shard.valid()) throw std::invalid_argument("shard " + shard.name() + ": " + kShardRule);
+    const uint64_t all = settingCount(plans);
+    if (uint64_t(shard.count) > all)
+        throw std::invalid_argument("--shard " + shard.name() + ": the sweep has only " + std::to_string(all) +
+                                    " settings, so some shards would have none (use at most " + std::to_string(all) +
+                                    " shards)");
+    for (SweepPlan& plan : plans) std::erase_if(plan.settings, [&](const PlannedSetting& s) { return !shard.holds(s.index); });
+    return plans;
+}
+
+std::vector<int> threadCounts(const SweepOptions& options) {
+    if (options.threads.empty()) return {tbb::info::default_concurrency()};
+    for (int n : options.threads)
+        if (n < 1) throw std::invalid_argument("thread counts must be at least 1, got " + std::to_string(n));
+    return options.threads;
+}
+
+// The reference a technique is scored against: the sweep's, or the one it names.
+const std::string& referenceFor(const Technique& technique, const SweepOptions& options) {
+    return options.reference.empty() ? technique.referenceName : options.reference;
+}
+
+// Errors and stats come from the last measured frame.
+SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference, const Technique& technique,
+                 const FrameSettings& settings, const SweepOptions& options, const ProgressStage& frames) {
+    const TimedFrames timed = timeFrames(prepared, technique, settings, options.warmupRuns, options.runs, frames);
+    SweepRow row;
+    row.technique = technique.name;
+    row.reference = referenceFor(technique, options);
+    row.settings = settings.params;
+    row.medianMs = timed.timing.medianMs;
+    row.minMs = timed.timing.minMs;
+    row.errors = scoreFrame(reference, timed.last);
+    row.stats = timed.last.shadow.stats;
+    return row;
+}
+
+// Every stat name any row reports, in the order first seen.
+std::vector<std::string> statNames(const SweepResults& results) {
+    std::vector<std::string> names;
+    for (const SweepRow& row : results.rows)
+        for (const TechniqueStat& s : row.stats)
+            if (std::ranges::find(names, s.name) == names.end()) names.push_back(s.name);
+    return names;
+}
+
+std::string statValue(const SweepRow& row, const std::string& name) {
+    const auto stat = std::ranges::find(row.stats, name, &TechniqueStat::name);
+    return stat == row.stats.end() ? "" : csvNumber(stat->value);
+}
+
+// A reference as the settings are scored against it, and its pictures (with imagesOutDir).
+struct RenderedReference {
+    ImageChannels scored;
+    FrameImages images;
+};
+
+// Each reference the techniques are scored against, rendered once.
+// With a pictures folder (else empty), each reference's pictures are written into it.
+std::map<std::string, RenderedReference> renderReferences(const PreparedScene& prepared,
+                                                          const std::vector<SweepPlan>& plans,
+                                                          const SweepOptions& options,
+                                                          const std::filesystem::path& folder) {
+    std::map<std::string, RenderedReference> references;
+    for (const SweepPlan& plan : plans) {
+        const std::string& name = referenceFor(*plan.technique, options);
+        if (references.contains(name)) continue;
+        const Frame frame = renderReferenceFrame(prepared, options.simd, name, options.progress);
+        FrameImages images;
+        if (!folder.empty()) images = writeFramePictures(options.imagesOutDir, folder, name, frame, nullptr);
+        references.emplace(name, RenderedReference{scoredImage(frame), std::move(images)});
+    }
+    return references;
+}
+
+// A setting's pictures, from one more untimed frame that also writes its debug buffers:
+// the frames are deterministic, so they are those of the timed frames.
+FrameImages writeSettingPictures(const PreparedScene& prepared, const Technique& technique,
+                                 const PlannedSetting& setting, const RenderedReference& reference,
+                                 const SweepOptions& options, const std::filesystem::path& folder) {
+    const std::string name = "setting-" + std::to_string(setting.index);
+    const std::filesystem::path& base = options.imagesOutDir;
+    const std::filesystem::path debugDir = folder / (name + "-debug");
+    const Frame frame = renderFrame(prepared, technique, {options.simd, setting.params, debugDir});
+    FrameImages images = writeFramePictures(base, folder, name, frame, &reference.scored);
+    images.referenceImage = reference.images.image;
+    images.referenceVisibility = reference.images.visibility;
+    images.debugBuffers = debugPictures(base, debugDir, technique.name);
+    return images;
+}
+
+// The grid the whole sweep covers, as every shard of it describes it.
+SweepGrid describeGrid(const std::vector<SweepPlan>& plans, const std::vector<int>& threads,
+                       const std::map<std::string, RenderedReference>& references, const SweepOptions& options) {
+    SweepGrid grid{options.axes, options.overrides, options.reference, {}, threads, options.warmupRuns, options.runs,
+                   settingCount(plans)};
+    for (const auto& [name, reference] : references)
+        grid.referenceFingerprints[name] = referenceFingerprint(reference.scored);
+    return grid;
+}
+
+}  // namespace
+
+std::string SweepRow::settingsLabel() const { return shadowlab::settingsLabel(settings); }
+
+SweepShard parseSweepShard(const std::string& text) {
+    // Digits only: from_chars alone would take "1/3x" or a sign.
+    const size_t slash = text.find('/');
+    const auto number = [&](size_t from, size_t to, int& value) {
+        const char* first = text.data() + from;
+        const char* last = text.data() + to;
+        return first != last && std::all_of(first, last, [](char c) { return c >= '0' && c <= '9'; }) &&
+               std::from_chars(first, last, value).ec == std::errc{};
+    };
+    SweepShard shard{0, 0};
+    if (slash == std::string::npos || !number(0, slash, shard.index) || !number(slash + 1, text.size(), shard.count) ||
+        !shard.valid())
+        throw std::invalid_argument("--shard " + text + ": " + kShardRule);
+    return shard;
+}
+
+SweepResults runSweep(const SweepOptions& options) {
+    if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
+    if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
+    if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
+    const std::vector<SweepPlan> grid = planSweep(options.techniques, options.axes);
+    const std::vector<SweepPlan> plans = shardOf(grid, options.shard);
+    const std::vector<int> threads = threadCounts(options);
+    Scene scene = loadScene(options.scene);
+    applyOverrides(scene, options.overrides);
+    const PreparedScene prepared(std::move(scene));
+    checkSettings(prepared, plans, options.simd, options.progress, "sweep");
+    SweepResults results{prepared.scene().name, {}, {}, options.shard, {}};
+    for (const SweepPlan& plan : grid) results.techniques.push_back(plan.technique->name);
+    const std::filesystem::path folder =
+        options.imagesOutDir.empty() ? std::filesystem::path() : options.imagesOutDir / sweepImagesFolder(results);
+    // Every reference of the grid, not only the shard's: the shards' fingerprints must agree.
+    const std::map<std::string, RenderedReference> references = renderReferences(prepared, grid, options, folder);
+    results.grid = describeGrid(grid, threads, references, options);
+    const ProgressStage frames(options.progress, "sweep: frame",
+                               settingCount(plans) * threads.size() * uint64_t(options.warmupRuns + options.runs));
+    for (const SweepPlan& plan : plans) {
+        const RenderedReference& reference = references.at(referenceFor(*plan.technique, options));
+        for (const PlannedSetting& setting : plan.settings) {
+            const size_t first = results.rows.size();
+            for (int n : threads) {
+                SweepRow row = withThreads(n, [&] {
+                    return measure(prepared, reference.scored, *plan.technique, {options.simd, setting.params, {}},
+                                   options, frames);
+                });
+                row.setting = setting.index;
+                row.threads = n;
+                results.rows.push_back(std::move(row));
+            }
+            if (folder.empty()) continue;
+            const FrameImages images =
+                writeSettingPictures(prepared, *plan.technique, setting, reference, options, folder);
+            for (size_t k = first; k < results.rows.size(); ++k) results.rows[k].images = images;
+        }
+    }
+    return results;
+}
+
+std::string referenceFingerprint(const ImageChannels& reference) {
+    uint64_t hash = 0xcbf29ce484222325ull;
+    const auto mix = [&hash](const void* data, size_t bytes) {
+        for (size_t k = 0; k < bytes; ++k) hash = (hash ^ static_cast<const uint8_t*>(data)[k]) * 0x100000001b3ull;
+    };
+    const int size[2] = {reference.width, reference.height};
+    mix(size, sizeof size);
+    for (size_t c = 0; c < reference.names.size(); ++c) {
+        mix(reference.names[c].c_str(), reference.names[c].size() + 1);   // with its NUL: a name ends before the data
+        mix(reference.data[c].data(), reference.data[c].size() * sizeof(float));
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
+}
+
+std::string sweepFileStem(const SweepResults& results) {
+    std::string techniques;
+    for (const std::string& technique : results.techniques) techniques += (techniques.empty() ? "" : "+") + technique;
+    const SweepShard& shard = results.shard;
+    return results.scene + "-" + techniques +
+           (shard.count > 1 ? "-shard-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) : "");
+}
+
+std::string sweepImagesFolder(const SweepResults& results) { return sweepFileStem(results) + "-images"; }
+
+std::string formatSweepText(const SweepResults& results) {
+    std::string text = results.scene + (results.shard.count > 1 ? ", shard " + results.shard.name() : "") + "\n";
+    char line[512];
+    std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s %14s %10s %10s %11s %16s %12s %13s\n", "technique",
+                  "settings", "threads", "median ms", "min ms", "misclassified%", "RMS", "max", "umbra lit%",
+                  "umbra lit 0.02%", "umbra over%", "lit shadowed%");
+    text += line;
+    for (const SweepRow& r : results.rows) {
+        const ErrorFigures& e = r.errors;
+        char fullUmbraLit[32] = "not recorded";
+        if (const std::optional<double> percent = e.fullUmbraLitPercent())
+            std::snprintf(fullUmbraLit, sizeof fullUmbraLit, "%.4f", *percent);
+        std::snprintf(line, sizeof line,
+                      "%-16s %-40s %7d %10.3f %10.3f %14.4f %10.5f %10.5f %11.4f %16s %12.4f %13.4f\n",
+                      r.technique.c_str(), r.settingsLabel().c_str(), r.threads, r.medianMs, r.minMs,
+                      e.percentOfPixels(e.misclassified()), e.rms, e.maxAbs, e.percentOfPixels(e.umbraLit),
+                      fullUmbraLit, e.percentOfPixels(e.umbraOver), e.percentOfPixels(e.litShadowed));
+        text += line;
+    }
+    return text;
+}
+
+std::string formatSweepCsv(const SweepResults& results) {
+    const std::vector<std::string> stats = statNames(results);
+    std::vector<std::string> header = {"technique", "settings", "threads", "median_ms", "min_ms", "rms", "rms_display", "mean_abs",
+                                       "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
+                                       "umbra_lit_percent", "full_umbra_lit_percent", "umbra_over_percent",
+                                       "lit_shadowed_percent", "reference"};
+    header.insert(header.end(), stats.begin(), stats.end());
+    std::string csv = csvLine(header);
+    for (const SweepRow& r : results.rows) {
+        const ErrorFigures& e = r.errors;
+        std::vector<std::string> fields = {r.technique, r.settingsLabel(), std::to_string(r.threads),
+                                           csvNumber(r.medianMs), csvNumber(r.minMs), csvNumber(e.rms),
+                                           e.rmsDisplay ? csvNumber(*e.rmsDisplay) : "", csvNumber(e.meanAbs),
+                                           csvNumber(e.maxAbs), csvNumber(e.percentOfPixels(e.misclassified())),
+                                           csvNumber(e.percentOfPixels(e.falseShadow)), csvNumber(e.percentOfPixels(e.falseLight)),
+                                           csvNumber(e.percentOfPixels(e.umbraLit)),
+                                           e.fullUmbraRecorded ? csvNumber(*e.fullUmbraLitPercent()) : "",
+                                           csvNumber(e.percentOfPixels(e.umbraOver)),
+                                           csvNumber(e.percentOfPixels(e.litShadowed)),
+                                           r.reference};
+        for (const std::string& name : stats) fields.push_back(statValue(r, name));
+        csv += csvLine(fields);
+    }
+    return csv;
+}
+
+}  // namespace shadowlab
