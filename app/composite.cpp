@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/composite_plan.h"
 #include "app/common/staged_outputs.h"
+#include "app/composite_plan.h"
 #include "app/plots/line_plot.h"
 #include "differential/builtin_cases.h"
 #include "differential/composite.h"

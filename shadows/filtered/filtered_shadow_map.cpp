@@ -21,8 +21,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "shadows/debug_buffers.h"
 #include "raster/portable_math.h"
+#include "shadows/debug_buffers.h"
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/moment_filter.h"
 #include "shadows/filtered/soft_shadow_techniques.h"

@@ -28,12 +28,12 @@
 #include "shadows/depth_map.h"
 #include "shadows/filtered/soft_shadow_map.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
-#include "shadows/settings_table.h"
 #include "shadows/light_view.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
 #include "shadows/maps/shadow_lookup.h"
 #include "shadows/maps/shadow_map_debug.h"
+#include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
