@@ -208,8 +208,7 @@ Technique backprojectionTechnique() {
                            "bitmask (Guennebaud et al. 2006, Schwarz and Stamminger 2007)",
             .params = settingsTable().specs(),
             .run = runBackprojection,
-            .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility};
+            .referenceName = "reference-soft"};
 }
 
 }  // namespace shadowlab

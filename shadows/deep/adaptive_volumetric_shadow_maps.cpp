@@ -97,9 +97,7 @@ Technique adaptiveVolumetricShadowMapsTechnique() {
             .description = "adaptive volumetric shadow maps (Salvi et al. 2010): a fixed number of nodes per texel, "
                            "compressed as fragments arrive",
             .params = adaptiveSettingsTable().specs(),
-            .run = runAdaptiveVolumetricShadowMaps,
-            .referenceName = "reference",
-            .output = TechniqueOutput::Visibility};
+            .run = runAdaptiveVolumetricShadowMaps};
 }
 
 }  // namespace shadowlab

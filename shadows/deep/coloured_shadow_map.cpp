@@ -62,9 +62,7 @@ Technique colouredShadowMapTechnique() {
             .description = "coloured shadow map (RTR 7.8): the nearest translucent depth and the product of the "
                            "translucent casters' colours over the opaque map",
             .params = volumetricSettingsTable().specs(),
-            .run = runColouredShadowMap,
-            .referenceName = "reference",
-            .output = TechniqueOutput::Visibility};
+            .run = runColouredShadowMap};
 }
 
 }  // namespace shadowlab

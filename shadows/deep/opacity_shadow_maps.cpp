@@ -92,9 +92,7 @@ Technique opacityShadowMapsTechnique() {
             .description = "opacity shadow maps (Kim and Neumann 2001): optical depth at uniform depth slices, "
                            "interpolated between them",
             .params = opacitySettingsTable().specs(),
-            .run = runOpacityShadowMaps,
-            .referenceName = "reference",
-            .output = TechniqueOutput::Visibility};
+            .run = runOpacityShadowMaps};
 }
 
 }  // namespace shadowlab

@@ -157,8 +157,7 @@ Technique contactHardeningTechnique() {
                            "Sikachev et al.)",
             .params = chsSettingsTable().specs(),
             .run = runChs,
-            .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility};
+            .referenceName = "reference-soft"};
 }
 
 }  // namespace shadowlab

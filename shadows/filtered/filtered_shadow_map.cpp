@@ -214,8 +214,7 @@ Technique filteredShadowMapTechnique(MomentKind kind) {
             .run = [kind, table](const ShadowInputs& in) {
                 return runFiltered(in, checked(kind, table.read(in.params)));
             },
-            .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility};
+            .referenceName = "reference-soft"};
 }
 
 }  // namespace shadowlab

@@ -127,8 +127,7 @@ Technique multiSampleTechnique() {
                            "and Herf 1997)",
             .params = multiSampleSettingsTable().specs(),
             .run = runMultiSample,
-            .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility};
+            .referenceName = "reference-soft"};
 }
 
 }  // namespace shadowlab

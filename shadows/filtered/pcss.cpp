@@ -133,8 +133,7 @@ Technique pcssTechnique() {
                            "width, Poisson PCF",
             .params = pcssSettingsTable().specs(),
             .run = runPcss,
-            .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility};
+            .referenceName = "reference-soft"};
 }
 
 }  // namespace shadowlab

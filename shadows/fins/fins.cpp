@@ -48,7 +48,6 @@ Technique finsTechnique() {
             .params = finsSettingsTable().specs(),
             .run = runFins,
             .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 

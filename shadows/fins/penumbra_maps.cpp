@@ -25,7 +25,6 @@ Technique penumbraMapsTechnique() {
             .params = finMapSettingsTable().specs(),
             .run = runPenumbraMaps,
             .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 

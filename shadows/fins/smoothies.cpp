@@ -42,7 +42,6 @@ Technique smoothiesTechnique() {
             .params = smoothiesSettingsTable().specs(),
             .run = runSmoothies,
             .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 

@@ -114,8 +114,7 @@ Technique izbPcssTechnique() {
                            "near their occluders, PCSS far from them, blended by the occluder distance",
             .params = izbPcssSettingsTable().specs(),
             .run = runIzbPcss,
-            .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility};
+            .referenceName = "reference-soft"};
 }
 
 }  // namespace shadowlab

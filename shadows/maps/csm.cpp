@@ -109,9 +109,7 @@ Technique cascadedShadowMapTechnique() {
             .description = "cascaded shadow maps (RTR 7.4.1) for directional lights: split schemes, SDSM "
                            "bounds, texel snapping",
             .params = csmSettingsTable().specs(),
-            .run = runCsm,
-            .referenceName = "reference",
-            .output = TechniqueOutput::Visibility};
+            .run = runCsm};
 }
 
 }  // namespace shadowlab

@@ -220,9 +220,7 @@ Technique planarTechnique() {
             .description = "planar projected shadows on the plane y = plane-y, stencil against double "
                            "blending (no self-shadows)",
             .params = planarSettingsTable().specs(),
-            .run = runPlanar,
-            .referenceName = "reference",
-            .output = TechniqueOutput::Visibility};
+            .run = runPlanar};
 }
 
 }  // namespace shadowlab

@@ -72,9 +72,7 @@ Technique projectedTextureTechnique() {
             .description = "projected shadow texture (RTR 7.2): the occluders' image from the light projected onto "
                            "chosen receivers (no self-shadows, shadows cast backward)",
             .params = projectedTextureSettingsTable().specs(),
-            .run = runProjectedTexture,
-            .referenceName = "reference",
-            .output = TechniqueOutput::Visibility};
+            .run = runProjectedTexture};
 }
 
 }  // namespace shadowlab

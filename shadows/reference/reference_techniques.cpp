@@ -57,18 +57,14 @@ Technique unshadowedTechnique() {
     return {.name = "none",
             .description = "no shadows: V = 1 on every surface",
             .params = {},
-            .run = unshadowed,
-            .referenceName = "reference",
-            .output = TechniqueOutput::Visibility};
+            .run = unshadowed};
 }
 
 Technique referenceTechnique() {
     return {.name = "reference",
             .description = "exact hard shadows: one Embree shadow ray per pixel to the light's centre",
             .params = {},
-            .run = exactReference,
-            .referenceName = "reference",
-            .output = TechniqueOutput::Visibility};
+            .run = exactReference};
 }
 
 Technique softReferenceTechnique() {
@@ -77,8 +73,7 @@ Technique softReferenceTechnique() {
                            "Embree rays per pixel",
             .params = softReferenceSettingsTable().specs(),
             .run = exactSoftReference,
-            .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility};
+            .referenceName = "reference-soft"};
 }
 
 }  // namespace shadowlab

@@ -148,7 +148,6 @@ Technique softShadowVolumeTechnique() {
             .params = softShadowVolumeSettingsTable().specs(),
             .run = runSoftShadowVolumes,
             .referenceName = "reference-soft",
-            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 
