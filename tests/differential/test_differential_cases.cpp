@@ -2,7 +2,8 @@
 // photo_case.h, environment_dome.h, differential/scene/photo_calibration.h): the dome holds the upper
 // hemisphere's solid angle and faces its centre; the outdoor photograph is the panorama
 // through the pinhole; the calibrated camera projects the board's corners where OpenCV does;
-// the squares read from the real photograph alternate like a checkerboard; bad files refused.
+// the squares read from the real photograph alternate like a checkerboard; bad files refused;
+// the cases `composite` names (differential/builtin_cases.h) build from the data folder.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "differential/builtin_cases.h"
 #include "differential/environment_dome.h"
 #include "differential/outdoor_case.h"
 #include "differential/photo_case.h"
@@ -169,4 +171,30 @@ TEST_CASE("chessboard case: the white squares are the bright ones of the photogr
     CHECK_THROWS_AS(compositingChessboard(wrong, calibration, light, bunny()), std::invalid_argument);
     CHECK_THROWS_AS(readImage8(kPhotos + "no-such-photo.png"), std::runtime_error);
     CHECK_THROWS_AS(readImage8(kPhotos + "chessboard_left05_camera.txt"), std::runtime_error);
+}
+
+TEST_CASE("built-in compositing cases: every listed name builds from the data folder, others are refused") {
+    for (const std::string& name : builtinCompositingCaseNames()) {
+        CAPTURE(name);
+        const BuiltinCompositingCase c = builtinCompositingCase(name, 64, 40, builtinDataDir());
+        REQUIRE(!c.scene.objects.empty());
+        CHECK(c.scene.objects[0].mesh.positions.size() == bunny().positions.size());
+        if (name == "chessboard") {
+            // The photograph's window, not the size asked for; the fit is reported.
+            CHECK(c.scene.camera.width != 64);
+            CHECK(c.note.find("exposure fitted") != std::string::npos);
+            CHECK(!c.scene.background.empty());
+        } else {
+            CHECK(c.scene.camera.width == 64);
+            CHECK(c.scene.camera.height == 40);
+            CHECK(c.note.empty());
+        }
+    }
+    const BuiltinCompositingCase slid = builtinCompositingCase("room", 64, 40, builtinDataDir());
+    const BuiltinCompositingCase lifted = builtinCompositingCase("room-lift", 64, 40, builtinDataDir());
+    CHECK(slid.scene.objects[0].path != lifted.scene.objects[0].path);
+    CHECK_THROWS_AS(builtinCompositingCase("rooms", 64, 40, builtinDataDir()), std::invalid_argument);
+    // A data folder without the mesh: the reader's error names the file.
+    CHECK_THROWS_WITH_AS(builtinCompositingCase("room", 64, 40, "/nonexistent"),
+                         doctest::Contains("/nonexistent/meshes/bunny_low.obj"), std::exception);
 }

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -127,4 +128,15 @@ TEST_CASE("SHADOWLAB_SCENE_DIR overrides the built-in scene directory") {
     CHECK(loadScene("copy-of-sphere-box").instances.size() == 3);
     test::checkMessage(test::sceneErrorOf([] { loadScene("no-such-scene"); }),
                        {"unknown scene \"no-such-scene\"", "copy-of-sphere-box"});
+}
+
+TEST_CASE("the built-in scenes are scenes/ of the data folder, which SHADOWLAB_SCENE_DIR does not move") {
+    // The test program is not installed, so the folder is the one it was compiled with.
+    CHECK(builtinDataDir() == std::string(SHADOWLAB_DATA_DIR));
+    CHECK(builtinSceneDir() == builtinDataDir() + "/scenes");
+    CHECK(std::filesystem::is_regular_file(builtinDataDir() + "/meshes/bunny.obj"));
+    const test::TempDir dir;
+    const ScopedEnv env("SHADOWLAB_SCENE_DIR", dir.path(""));
+    CHECK(builtinSceneDir() == dir.path(""));
+    CHECK(builtinDataDir() == std::string(SHADOWLAB_DATA_DIR));
 }
