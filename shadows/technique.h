@@ -84,9 +84,8 @@ struct Technique {
     std::vector<ParamSpec> params;
     std::function<ShadowOutputs(const ShadowInputs&)> run;
     // The technique this one is scored against (`render --error-map`, `sweep`), of the same
-    // output: `reference` (the default), the hard shadow of the light's centre, for
-    // hard-shadow techniques; `reference-soft`, the visible fraction of an area light, for
-    // soft ones. A technique names only what differs from these defaults.
+    // output: `reference`, the hard shadow of the light's centre, for hard-shadow
+    // techniques; `reference-soft`, the visible fraction of an area light, for soft ones.
     std::string referenceName = "reference";
     TechniqueOutput output = TechniqueOutput::Visibility;
     // Scene preparation the technique reads with these settings (the casters' edge

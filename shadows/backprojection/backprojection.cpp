@@ -208,7 +208,8 @@ Technique backprojectionTechnique() {
                            "bitmask (Guennebaud et al. 2006, Schwarz and Stamminger 2007)",
             .params = settingsTable().specs(),
             .run = runBackprojection,
-            .referenceName = "reference-soft"};
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

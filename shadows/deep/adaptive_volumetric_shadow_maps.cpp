@@ -97,7 +97,9 @@ Technique adaptiveVolumetricShadowMapsTechnique() {
             .description = "adaptive volumetric shadow maps (Salvi et al. 2010): a fixed number of nodes per texel, "
                            "compressed as fragments arrive",
             .params = adaptiveSettingsTable().specs(),
-            .run = runAdaptiveVolumetricShadowMaps};
+            .run = runAdaptiveVolumetricShadowMaps,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

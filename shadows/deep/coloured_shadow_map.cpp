@@ -62,7 +62,9 @@ Technique colouredShadowMapTechnique() {
             .description = "coloured shadow map (RTR 7.8): the nearest translucent depth and the product of the "
                            "translucent casters' colours over the opaque map",
             .params = volumetricSettingsTable().specs(),
-            .run = runColouredShadowMap};
+            .run = runColouredShadowMap,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

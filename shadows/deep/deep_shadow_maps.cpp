@@ -112,7 +112,9 @@ Technique deepShadowMapsTechnique() {
             .description = "deep shadow maps (Lokovic and Veach 2000): each texel's transmittance curve from all "
                            "fragments, compressed within a tolerance, filtered lookups",
             .params = deepSettingsTable().specs(),
-            .run = runDeepShadowMaps};
+            .run = runDeepShadowMaps,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -92,7 +92,9 @@ Technique opacityShadowMapsTechnique() {
             .description = "opacity shadow maps (Kim and Neumann 2001): optical depth at uniform depth slices, "
                            "interpolated between them",
             .params = opacitySettingsTable().specs(),
-            .run = runOpacityShadowMaps};
+            .run = runOpacityShadowMaps,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -157,7 +157,8 @@ Technique contactHardeningTechnique() {
                            "Sikachev et al.)",
             .params = chsSettingsTable().specs(),
             .run = runChs,
-            .referenceName = "reference-soft"};
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

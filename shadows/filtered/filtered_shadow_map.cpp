@@ -214,7 +214,8 @@ Technique filteredShadowMapTechnique(MomentKind kind) {
             .run = [kind, table](const ShadowInputs& in) {
                 return runFiltered(in, checked(kind, table.read(in.params)));
             },
-            .referenceName = "reference-soft"};
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

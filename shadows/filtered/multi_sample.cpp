@@ -127,7 +127,8 @@ Technique multiSampleTechnique() {
                            "and Herf 1997)",
             .params = multiSampleSettingsTable().specs(),
             .run = runMultiSample,
-            .referenceName = "reference-soft"};
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -133,7 +133,8 @@ Technique pcssTechnique() {
                            "width, Poisson PCF",
             .params = pcssSettingsTable().specs(),
             .run = runPcss,
-            .referenceName = "reference-soft"};
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

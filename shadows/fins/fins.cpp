@@ -48,6 +48,7 @@ Technique finsTechnique() {
             .params = finsSettingsTable().specs(),
             .run = runFins,
             .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 

@@ -25,6 +25,7 @@ Technique penumbraMapsTechnique() {
             .params = finMapSettingsTable().specs(),
             .run = runPenumbraMaps,
             .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 

@@ -42,6 +42,7 @@ Technique smoothiesTechnique() {
             .params = smoothiesSettingsTable().specs(),
             .run = runSmoothies,
             .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 

@@ -114,7 +114,8 @@ Technique izbPcssTechnique() {
                            "near their occluders, PCSS far from them, blended by the occluder distance",
             .params = izbPcssSettingsTable().specs(),
             .run = runIzbPcss,
-            .referenceName = "reference-soft"};
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

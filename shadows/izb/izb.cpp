@@ -129,7 +129,9 @@ Technique irregularZBufferTechnique() {
     return {.name = "izb",
             .description = "irregular z-buffer: occluders rasterized at the camera's samples, exact hard shadows",
             .params = izbSettingsTable().specs(),
-            .run = [](const ShadowInputs& in) { return runIrregularZBuffer(in, izbSettingsTable().read(in.params)); }};
+            .run = [](const ShadowInputs& in) { return runIrregularZBuffer(in, izbSettingsTable().read(in.params)); },
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

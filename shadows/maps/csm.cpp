@@ -109,7 +109,9 @@ Technique cascadedShadowMapTechnique() {
             .description = "cascaded shadow maps (RTR 7.4.1) for directional lights: split schemes, SDSM "
                            "bounds, texel snapping",
             .params = csmSettingsTable().specs(),
-            .run = runCsm};
+            .run = runCsm,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -181,7 +181,9 @@ Technique shadowMapTechnique() {
             .params = shadowMapTechniqueSettingsTable().specs(),
             .run = [](const ShadowInputs& in) {
                 return runShadowMap(in, shadowMapTechniqueSettingsTable().read(in.params));
-            }};
+            },
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

@@ -220,7 +220,9 @@ Technique planarTechnique() {
             .description = "planar projected shadows on the plane y = plane-y, stencil against double "
                            "blending (no self-shadows)",
             .params = planarSettingsTable().specs(),
-            .run = runPlanar};
+            .run = runPlanar,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

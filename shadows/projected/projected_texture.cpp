@@ -72,7 +72,9 @@ Technique projectedTextureTechnique() {
             .description = "projected shadow texture (RTR 7.2): the occluders' image from the light projected onto "
                            "chosen receivers (no self-shadows, shadows cast backward)",
             .params = projectedTextureSettingsTable().specs(),
-            .run = runProjectedTexture};
+            .run = runProjectedTexture,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

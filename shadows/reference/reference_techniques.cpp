@@ -57,14 +57,18 @@ Technique unshadowedTechnique() {
     return {.name = "none",
             .description = "no shadows: V = 1 on every surface",
             .params = {},
-            .run = unshadowed};
+            .run = unshadowed,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 Technique referenceTechnique() {
     return {.name = "reference",
             .description = "exact hard shadows: one Embree shadow ray per pixel to the light's centre",
             .params = {},
-            .run = exactReference};
+            .run = exactReference,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 Technique softReferenceTechnique() {
@@ -73,7 +77,8 @@ Technique softReferenceTechnique() {
                            "Embree rays per pixel",
             .params = softReferenceSettingsTable().specs(),
             .run = exactSoftReference,
-            .referenceName = "reference-soft"};
+            .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

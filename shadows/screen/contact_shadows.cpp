@@ -127,7 +127,9 @@ Technique contactShadowsTechnique() {
             .description = "contact shadows (RTR 7.10, Sousa et al. 2011): a shadow map, and a march over the "
                            "camera's depth buffer that restores the shadows its bias loses at contacts",
             .params = contactShadowSettingsTable().specs(),
-            .run = runContactShadows};
+            .run = runContactShadows,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
 }
 
 }  // namespace shadowlab

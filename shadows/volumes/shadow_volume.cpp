@@ -124,6 +124,8 @@ Technique shadowVolumeTechnique() {
                            "two-sided wrapping stencil",
             .params = stencilPassSettingsTable().specs(),
             .run = [](const ShadowInputs& in) { return runShadowVolume(in, stencilPassSettingsTable().read(in.params)); },
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 

@@ -148,6 +148,7 @@ Technique softShadowVolumeTechnique() {
             .params = softShadowVolumeSettingsTable().specs(),
             .run = runSoftShadowVolumes,
             .referenceName = "reference-soft",
+            .output = TechniqueOutput::Visibility,
             .prepare = prepareEdgeAdjacency};
 }
 
