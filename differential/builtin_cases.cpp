@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 
 #include "differential/outdoor_case.h"
@@ -12,12 +13,14 @@
 
 namespace shadowlab {
 
-const std::vector<std::string>& builtinCompositingCaseNames() {
-    static const std::vector<std::string> names = {"room", "room-lift", "outdoor", "chessboard"};
-    return names;
-}
-
 namespace {
+
+// What every case is made from: the object, the image size asked for, the data folder.
+struct CaseRequest {
+    const Mesh& object;
+    int width, height;
+    const std::string& dataDir;
+};
 
 // What the chessboard's fit found: the window of the photograph and the exposure.
 std::string chessboardNote(const PhotoCase& c) {
@@ -30,29 +33,52 @@ std::string chessboardNote(const PhotoCase& c) {
     return text;
 }
 
+BuiltinCompositingCase chessboard(const CaseRequest& r) {
+    const std::string photos = r.dataDir + "/photos/";
+    const PhotoCase c = compositingChessboard(readImage8(photos + "chessboard_left05_undistorted.png"),
+                                              readPhotoCalibration(photos + "chessboard_left05_camera.txt"),
+                                              readEnvironmentMap(r.dataDir + "/environments/blender_interior.exr"),
+                                              r.object);
+    return {c.scene, chessboardNote(c)};
+}
+
+struct CaseEntry {
+    const char* name;
+    BuiltinCompositingCase (*build)(const CaseRequest&);
+};
+
+// The one list of the cases, in the order the command's help gives them.
+constexpr CaseEntry kCases[] = {
+    {"room", [](const CaseRequest& r) -> BuiltinCompositingCase {
+         return {compositingRoom(r.object, RoomPath::UnderDesk, r.width, r.height), ""};
+     }},
+    {"room-lift", [](const CaseRequest& r) -> BuiltinCompositingCase {
+         return {compositingRoom(r.object, RoomPath::Lift, r.width, r.height), ""};
+     }},
+    {"outdoor", [](const CaseRequest& r) -> BuiltinCompositingCase {
+         const EnvironmentMap map = readEnvironmentMap(r.dataDir + "/environments/blender_forest.exr");
+         return {compositingOutdoor(map, r.object, {.width = r.width, .height = r.height}), ""};
+     }},
+    {"chessboard", chessboard},
+};
+
 }  // namespace
+
+const std::vector<std::string>& builtinCompositingCaseNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> list;
+        for (const CaseEntry& entry : kCases) list.push_back(entry.name);
+        return list;
+    }();
+    return names;
+}
 
 BuiltinCompositingCase builtinCompositingCase(const std::string& name, int width, int height,
                                               const std::string& dataDir) {
-    if (std::ranges::find(builtinCompositingCaseNames(), name) == builtinCompositingCaseNames().end())
-        throw std::invalid_argument("unknown built-in compositing case '" + name + "'");
+    const auto entry = std::ranges::find_if(kCases, [&](const CaseEntry& e) { return name == e.name; });
+    if (entry == std::end(kCases)) throw std::invalid_argument("unknown built-in compositing case '" + name + "'");
     const Mesh bunny = readObj(dataDir + "/meshes/bunny_low.obj");
-    if (name == "room") return {compositingRoom(bunny, RoomPath::UnderDesk, width, height), ""};
-    if (name == "room-lift") return {compositingRoom(bunny, RoomPath::Lift, width, height), ""};
-    if (name == "outdoor") {
-        const OutdoorSettings settings{.width = width, .height = height};
-        return {compositingOutdoor(readEnvironmentMap(dataDir + "/environments/blender_forest.exr"), bunny, settings),
-                ""};
-    }
-    if (name == "chessboard") {
-        const std::string photos = dataDir + "/photos/";
-        const PhotoCase c = compositingChessboard(readImage8(photos + "chessboard_left05_undistorted.png"),
-                                                  readPhotoCalibration(photos + "chessboard_left05_camera.txt"),
-                                                  readEnvironmentMap(dataDir + "/environments/blender_interior.exr"),
-                                                  bunny);
-        return {c.scene, chessboardNote(c)};
-    }
-    throw std::logic_error("builtinCompositingCase: '" + name + "' is listed but not built");
+    return entry->build({bunny, width, height, dataDir});
 }
 
 }  // namespace shadowlab
