@@ -264,7 +264,7 @@ void BM_IrregularZBuffer(benchmark::State& state) {
             benchmark::DoNotOptimize(izb::listReceivers(receivers, texelLists));
         }
         if (stage == 4) benchmark::DoNotOptimize(izb::binOccluders(grid, lists, izb::projectOccluders(grid, world)));
-        if (stage == 5) benchmark::DoNotOptimize(izb::traverseOccluders(grid, homogeneousLight(light), listed, lists, bins, occluders, bestSimdLevel()));
+        if (stage == 5) benchmark::DoNotOptimize(izb::traverseOccluders(grid, homogeneousLight(light), listed, lists, bins, occluders, nullptr, bestSimdLevel()));
     }
     static const char* const names[] = {"", "receivers", "light grid", "lists", "binning", "traversal"};
     state.SetLabel(names[stage]);

@@ -112,13 +112,17 @@ ShadowOutputs runIrregularZBuffer(const ShadowInputs& in, const IzbSettings& set
     out.stats.push_back({"tile_triangle_pairs_count", double(bins.triangles.entry.size())});
     timer.lap("binning");
 
-    const izb::Occlusion occlusion =
-        izb::traverseOccluders(grid, homogeneousLight(light), listed, lists, bins, occluders, in.simd);
+    // Cut-outs are alpha-tested where a segment meets them; a world without any skips the test.
+    std::optional<CasterTransmission> cutOuts;
+    if (!in.casterWorld().cutOuts.empty()) cutOuts.emplace(in.casters().scene(), in.casterWorld());
+    const izb::Occlusion occlusion = izb::traverseOccluders(grid, homogeneousLight(light), listed, lists, bins, occluders,
+                                                            cutOuts ? &*cutOuts : nullptr, in.simd);
     for (size_t e = 0; e < listed.size(); ++e) {
         if (occlusion.blocked[e]) out.visibility[listed.pixel[e]] = 0.0f;
     }
     out.stats.push_back({"texel_triangle_pairs_count", double(occlusion.texelPairs)});
     out.stats.push_back({"segment_tests_count", double(occlusion.segmentTests)});
+    if (cutOuts) out.stats.push_back({"cut_out_hits_count", double(occlusion.cutOutHits)});
     timer.lap("traversal");
     timer.appendTo(out.stats);
     writeDebugBuffers(in, grid, lists, occlusion);

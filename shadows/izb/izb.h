@@ -22,7 +22,9 @@
 //   5. binning    (binning.cpp): occluders sorted into tiles of the grid;
 //   6. occlusion  (occlusion.inl): the exact test of receivers against one triangle
 //      (is the triangle on the segment from the receiver to the light?), a run of
-//      consecutive receivers at once in SIMD lanes;
+//      consecutive receivers at once in SIMD lanes; a cut-out's triangle (a foliage card)
+//      blocks only where its alpha texture is solid at the point the segment meets it,
+//      the reference's own rule (caster_transmission.h);
 //   7. traversal  (traversal.cpp): tiles in parallel, each testing its texels' receivers
 //      against the occluders binned to it, one row of covered texels per kernel call.
 // The result equals a ray tracer's up to floating-point ties, since it asks the same
@@ -44,6 +46,7 @@
 #include "raster/tile_kernels.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shadows/caster_transmission.h"
 #include "shadows/depth_map.h"
 #include "shadows/izb/kernels.h"
 #include "shadows/light_view.h"
@@ -241,11 +244,14 @@ struct Occlusion {
     std::vector<uint32_t> occluders;       // per texel: triangles tested against its receivers
     uint64_t texelPairs = 0;               // (texel with receivers, triangle) pairs visited
     uint64_t segmentTests = 0;             // (receiver, triangle) pairs tested
+    uint64_t cutOutHits = 0;               // segments meeting a cut-out triangle, then alpha-tested
 };
-// `simd` picks the occlusion kernel; every level gives the same bytes.
+// `cutOuts`: the casters' materials, whose cut-out triangles (WorldGeometry::triangleCutOut)
+// block only where CasterTransmission::solidAt is; null, or a world without cut-outs: every
+// triangle is solid. `simd` picks the kernels; every level gives the same bytes.
 Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const ListedReceivers& receivers,
                             const TexelLists& lists, const TileBins& bins, const ProjectedOccluders& occluders,
-                            raster::SimdLevel simd);
+                            const CasterTransmission* cutOuts, raster::SimdLevel simd);
 
 }  // namespace izb
 }  // namespace shadowlab

@@ -61,6 +61,18 @@ struct OccluderTriangle {
 using OcclusionKernel = void (*)(const OccluderTriangle& triangle, const ReceiverColumns& receivers, uint32_t begin,
                                  uint32_t end, uint8_t* blocked);
 
+// A receiver whose segment meets a cut-out triangle, and where: the point
+// (1 - u - v) A + u B + v C of the triangle's plane, u and v rounded to float as the
+// reference's Embree hit reports them (shadows/caster_transmission.h, solidAt).
+struct SegmentHit {
+    uint32_t receiver;
+    float u, v;
+};
+// Writes to hits[0], hits[1], ... every receiver k in [begin, end) whose segment the
+// triangle meets, in increasing k, and returns their number (at most end - begin).
+using CrossingKernel = uint32_t (*)(const OccluderTriangle& triangle, const ReceiverColumns& receivers, uint32_t begin,
+                                    uint32_t end, SegmentHit* hits);
+
 // One segment, origin + t * towardsLight for t in [0, tFar], against one triangle (its
 // vertices' x, y, z): the occlusion kernel's test on a single receiver, whose scalar build is
 // the twin the tests hold every level to (izb.h, segmentBlocked).
@@ -70,6 +82,7 @@ using SegmentTest = bool (*)(const double (&origin)[3], const double (&towardsLi
 struct Kernels {
     SegmentKernel segments;
     OcclusionKernel occlusion;
+    CrossingKernel crossings;
     SegmentTest segmentBlocked;
 };
 Kernels kernelsScalar();

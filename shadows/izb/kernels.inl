@@ -14,4 +14,4 @@ inline bool oneSegmentBlocked(const double (&origin)[3], const double (&towardsL
     return (simd::laneBits(hit) & 1u) != 0;   // every lane holds the same segment
 }
 
-inline Kernels kernels() { return {computeSegments, blockRun, oneSegmentBlocked}; }
+inline Kernels kernels() { return {computeSegments, blockRun, crossRun, oneSegmentBlocked}; }

@@ -8,6 +8,12 @@
 // each, from its corners projected once (ProjectedOccluders), rather than stored. Receivers
 // are in list order (ListedReceivers), so the covered texels of one row of a tile hold one
 // run of receivers, which the occlusion kernel tests a vector at a time.
+//
+// A cut-out triangle blocks a receiver where its segment meets the triangle at a solid
+// texel: the crossing kernel lists the run's hits with their barycentric coordinates, and
+// each is held to the reference's own rule, CasterTransmission::solidAt (the nearest texel
+// of the interpolated texture coordinate against the cutoff). Solid triangles never take
+// that path, so a scene without cut-outs runs as before.
 #include <algorithm>
 
 #include <tbb/parallel_for.h>
@@ -19,21 +25,23 @@ namespace shadowlab::izb {
 namespace {
 
 struct TileWork {
-    uint64_t texelPairs = 0, segmentTests = 0;
+    uint64_t texelPairs = 0, segmentTests = 0, cutOutHits = 0;
 };
 
 struct Traversal {
     const LightGrid& grid;
     const TexelLists& lists;
     const ProjectedOccluders& occluders;
-    OcclusionKernel kernel;
+    const Kernels& kernels;
+    const CasterTransmission* cutOuts;
     ReceiverColumns receivers;
     OccluderTriangle occluder;   // the light filled in once; the vertices per triangle
     Occlusion& out;
+    std::vector<SegmentHit> hits;   // a cut-out's crossings in one run
 
     // One triangle over the texels [begin, end) of one row of a tile (consecutive numbers):
     // their receivers are one run.
-    void testRow(size_t begin, size_t end, TileWork& work) {
+    void testRow(uint32_t t, size_t begin, size_t end, TileWork& work) {
         const uint32_t first = lists.first[begin], last = lists.first[end];
         if (first == last) return;
         for (size_t texel = begin; texel < end; ++texel) {
@@ -42,7 +50,21 @@ struct Traversal {
             ++work.texelPairs;
         }
         work.segmentTests += last - first;
-        kernel(occluder, receivers, first, last, out.blocked.data());
+        if (cutOuts && occluders.world.triangleCutOut[t] >= 0) {
+            testCutOutRun(t, first, last, work);
+        } else {
+            kernels.occlusion(occluder, receivers, first, last, out.blocked.data());
+        }
+    }
+
+    void testCutOutRun(uint32_t t, uint32_t first, uint32_t last, TileWork& work) {
+        if (hits.size() < last - first) hits.resize(last - first);
+        const uint32_t count = kernels.crossings(occluder, receivers, first, last, hits.data());
+        work.cutOutHits += count;
+        for (uint32_t h = 0; h < count; ++h) {
+            uint8_t& blocked = out.blocked[hits[h].receiver];
+            if (!blocked && cutOuts->solidAt(t, hits[h].u, hits[h].v)) blocked = 1;
+        }
     }
 
     // One triangle over the texels of tile (view, tx, ty) its footprint touches.
@@ -60,7 +82,7 @@ struct Traversal {
             const int begin = std::max(columns.begin, tx * kTileSize), end = std::min(columns.end, (tx + 1) * kTileSize);
             if (begin >= end) continue;
             const size_t first = grid.texelIndex(view, begin, j);
-            testRow(first, first + size_t(end - begin), work);
+            testRow(t, first, first + size_t(end - begin), work);
         }
     }
 };
@@ -69,7 +91,7 @@ struct Traversal {
 
 Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light, const ListedReceivers& receivers,
                             const TexelLists& lists, const TileBins& bins, const ProjectedOccluders& occluders,
-                            raster::SimdLevel simd) {
+                            const CasterTransmission* cutOuts, raster::SimdLevel simd) {
     Occlusion out;
     out.blocked.assign(receivers.size(), 0);
     out.occluders.assign(grid.texelCount(), 0);
@@ -77,16 +99,18 @@ Occlusion traverseOccluders(const LightGrid& grid, const HomogeneousLight& light
     std::vector<TileWork> work(tiles);
     const ReceiverColumns columns{receivers.x.data(), receivers.y.data(), receivers.z.data(), receivers.tFar.data()};
     const OccluderTriangle lightOnly{{}, {light.x, light.y, light.z, light.w}};
-    const OcclusionKernel kernel = kernels(simd).occlusion;
+    const Kernels kernelTable = kernels(simd);
     const int side = bins.tilesPerSide;
     tbb::parallel_for(size_t(0), tiles, [&](size_t tile) {
         const int view = int(tile / (size_t(side) * side)), ty = int(tile / side % side), tx = int(tile % side);
-        Traversal traversal{grid, lists, occluders, kernel, columns, lightOnly, out};
+        Traversal traversal{grid, lists, occluders, kernelTable, cutOuts, columns, lightOnly, out, {}};
         for (uint32_t e = bins.triangles.first[tile]; e < bins.triangles.first[tile + 1]; ++e) {
             traversal.testTriangle(view, tx, ty, bins.triangles.entry[e], work[tile]);
         }
     });
-    for (const TileWork& w : work) out.texelPairs += w.texelPairs, out.segmentTests += w.segmentTests;
+    for (const TileWork& w : work) {
+        out.texelPairs += w.texelPairs, out.segmentTests += w.segmentTests, out.cutOutHits += w.cutOutHits;
+    }
     return out;
 }
 
