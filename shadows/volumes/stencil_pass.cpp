@@ -1,8 +1,11 @@
 #include "shadows/volumes/stencil_pass.h"
 
+#include <algorithm>
+
 #include "scenes/edge_adjacency.h"
 #include "shadows/volumes/counting_mode.h"
 #include "shadows/volumes/infinite_projection.h"
+#include "shadows/world_draw.h"
 
 namespace shadowlab {
 namespace {
@@ -22,14 +25,14 @@ void chooseCounting(const ShadowInputs& in, VolumeMode mode, const glm::dvec4& l
     pass.counting = pass.nearPlaneShadowed ? VolumeCounting::ZFail : VolumeCounting::ZPass;
 }
 
-// The camera's depth, as the G-buffer's camera pass (no culling), but with the far plane
-// at infinity.
+// The camera's depth, as the G-buffer's camera pass (no culling, cut-outs with their holes),
+// but with the far plane at infinity.
 void depthPrepass(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const WorldGeometry& world,
                   const glm::mat4& clipFromWorld) {
     raster::PipelineState state;
     state.cull = raster::CullMode::None;
     state.clipFar = false;
-    rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld));
+    drawWorld(rasterizer, fb, state, world, clipFromWorld);
 }
 
 raster::PipelineState stencilPassState(VolumeCounting counting, float offsetUnits) {
@@ -63,6 +66,16 @@ raster::PipelineState fillCountState() {
     return state;
 }
 
+// Per WorldGeometry::cutOuts, whether it casts a volume (CutOutVolumes).
+std::vector<uint8_t> castingCutOuts(const WorldGeometry& world, CutOutVolumes rule) {
+    std::vector<uint8_t> casts;
+    for (const WorldGeometry::CutOut& c : world.cutOuts) {
+        const auto solid = size_t(std::count_if(c.alpha.begin(), c.alpha.end(), [&](float a) { return a >= c.cutoff; }));
+        casts.push_back(rule == CutOutVolumes::Solid || (rule == CutOutVolumes::Coverage && 2 * solid >= c.alpha.size()));
+    }
+    return casts;
+}
+
 raster::DrawCall volumeDraw(const StencilPass& pass) {
     raster::DrawCall call;
     call.vertices.homogeneousPositions = pass.volume.vertices;
@@ -82,7 +95,13 @@ const SettingsTable<StencilPassSettings>& stencilPassSettingsTable() {
                      {"zpass", VolumeMode::ZPass},
                      {"zfail", VolumeMode::ZFail}})
             .real("offset", member(&S::offsetUnits), 0.0, 64.0,
-                  "polygon offset of the volume faces, in units of the depth buffer's resolution");
+                  "polygon offset of the volume faces, in units of the depth buffer's resolution")
+            .choice("cut-outs", member(&S::cutOuts),
+                    {{"coverage", CutOutVolumes::Coverage,
+                      "a cut-out casts its whole triangles if at least half its texels are solid, else nothing"},
+                     {"solid", CutOutVolumes::Solid, "every cut-out casts its whole triangles"},
+                     {"none", CutOutVolumes::None, "cut-outs cast nothing"}},
+                    "what the volume, made of whole triangles, does with an alpha-tested card (docs/cut-outs.md)");
     return table;
 }
 
@@ -93,7 +112,7 @@ StencilPass runStencilPass(raster::Rasterizer& rasterizer, raster::Framebuffer& 
     pass.offsetUnits = settings.offsetUnits;
     chooseCounting(in, settings.mode, light, pass);
     pass.volume = extrudeShadowVolume(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), light,
-                                      pass.counting == VolumeCounting::ZFail);
+                                      pass.counting == VolumeCounting::ZFail, castingCutOuts(in.casterWorld(), settings.cutOuts));
     timer.lap("extrusion");
 
     pass.clipFromWorld = clipFromWorldInfinite(in.camera());

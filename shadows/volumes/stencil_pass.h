@@ -20,12 +20,20 @@ namespace shadowlab {
 enum class VolumeCounting { ZPass, ZFail };
 enum class VolumeMode { Auto, ZPass, ZFail };   // the `mode` parameter: a counting, or auto
 
+// What the volume does with a cut-out (a foliage card), whose alpha texture a volume of
+// whole triangles cannot follow (the `cut-outs` parameter; docs/cut-outs.md): cast the
+// whole triangles when at least half the texture's texels are solid and nothing otherwise,
+// whichever misclassifies less of its shadow if the texture is mapped once over the mesh;
+// always cast them; never.
+enum class CutOutVolumes { Coverage, Solid, None };
+
 struct StencilPassSettings {
     VolumeMode mode = VolumeMode::Auto;
     float offsetUnits = 0.0f;   // polygon offset of the volume faces, in depth buffer steps
+    CutOutVolumes cutOuts = CutOutVolumes::Coverage;
 };
 
-// The parameters of the pass: `mode` and `offset`.
+// The parameters of the pass: `mode`, `offset` and `cut-outs`.
 const SettingsTable<StencilPassSettings>& stencilPassSettingsTable();
 
 struct StencilPass {

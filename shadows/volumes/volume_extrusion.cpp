@@ -110,7 +110,7 @@ ShadowVolume concatenate(std::vector<InstanceVolume>& parts) {
 
 ShadowVolume extrudeShadowVolume(const Scene& scene, const WorldGeometry& world,
                                  const std::vector<EdgeAdjacency>& adjacency, const glm::dvec4& light,
-                                 bool withCaps) {
+                                 bool withCaps, const std::vector<uint8_t>& cutOutCasts) {
     const std::vector<InstanceRange> ranges = instanceRanges(scene);
     if (!ranges.empty() &&
         ranges.back().firstTriangle + ranges.back().triangleCount != world.triangles.size()) {
@@ -119,6 +119,9 @@ ShadowVolume extrudeShadowVolume(const Scene& scene, const WorldGeometry& world,
     std::vector<InstanceVolume> parts(ranges.size());
     tbb::parallel_for(size_t(0), ranges.size(), [&](size_t i) {
         const InstanceRange& r = ranges[i];
+        // An instance has one material, so its first triangle says whether it is a cut-out.
+        const int32_t cutOut = r.triangleCount == 0 || world.triangleCutOut.empty() ? -1 : world.triangleCutOut[r.firstTriangle];
+        if (cutOut >= 0 && !cutOutCasts.empty() && !cutOutCasts[size_t(cutOut)]) return;
         parts[i] = extrudeInstance(world, scene.meshes[r.mesh], r, adjacency[r.mesh], light, withCaps);
     });
     return concatenate(parts);

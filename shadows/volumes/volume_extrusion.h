@@ -37,9 +37,12 @@ struct ShadowVolume {
 };
 
 // One adjacency per scene mesh (indexed like Scene::meshes; empty for unused meshes).
-// `withCaps` false builds the sides only (z-pass needs no caps).
+// `withCaps` false builds the sides only (z-pass needs no caps). A volume is extruded from
+// whole triangles and cannot follow a cut-out's alpha texture: `cutOutCasts`, one entry per
+// WorldGeometry::cutOuts, says whether the instances of that cut-out cast the volume of
+// their whole triangles (1) or none (0); empty: every cut-out casts.
 ShadowVolume extrudeShadowVolume(const Scene& scene, const WorldGeometry& world,
                                  const std::vector<EdgeAdjacency>& adjacency, const glm::dvec4& light,
-                                 bool withCaps);
+                                 bool withCaps, const std::vector<uint8_t>& cutOutCasts = {});
 
 }  // namespace shadowlab
