@@ -28,9 +28,12 @@ void addCutOutTriangle(const WorldGeometry& world, uint32_t t, Batch& batch) {
 }  // namespace
 
 void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::PipelineState& state,
-               const WorldGeometry& world, const glm::mat4& clipFromWorld, std::span<const uint32_t> only) {
+               const WorldGeometry& world, const glm::mat4& clipFromWorld, std::span<const uint32_t> only,
+               const glm::vec4& constantColor) {
     if (world.cutOuts.empty() && only.empty()) {
-        rasterizer.draw(fb, state, raster::positionsDraw(world.positions, world.triangles, clipFromWorld));
+        raster::DrawCall call = raster::positionsDraw(world.positions, world.triangles, clipFromWorld);
+        call.constantColor = constantColor;
+        rasterizer.draw(fb, state, call);
         return;
     }
     Batch solid;
@@ -50,6 +53,7 @@ void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ra
     }
     raster::DrawCall call = raster::positionsDraw(world.positions, solid.triangles, clipFromWorld);
     call.primitiveIds = solid.ids;
+    call.constantColor = constantColor;
     rasterizer.draw(fb, state, call);
     for (size_t k = 0; k < cutOuts.size(); ++k) {
         const Batch& batch = cutOuts[k];
@@ -61,6 +65,7 @@ void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ra
         cutOutCall.vertices.varyings = batch.uvs;
         cutOutCall.vertices.varyingCount = 2;
         cutOutCall.primitiveIds = batch.ids;
+        cutOutCall.constantColor = constantColor;
         rasterizer.draw(fb, tested, cutOutCall);
     }
 }

@@ -16,8 +16,10 @@
 
 namespace shadowlab {
 
-// The world's triangles, or only those listed (indices into world.triangles, ascending).
+// The world's triangles, or only those listed (indices into world.triangles, ascending);
+// `constantColor` for FragmentOutput::ConstantColor.
 void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::PipelineState& state,
-               const WorldGeometry& world, const glm::mat4& clipFromWorld, std::span<const uint32_t> only = {});
+               const WorldGeometry& world, const glm::mat4& clipFromWorld, std::span<const uint32_t> only = {},
+               const glm::vec4& constantColor = glm::vec4(1.0f));
 
 }  // namespace shadowlab

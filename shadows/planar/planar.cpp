@@ -41,6 +41,7 @@
 #include "shadows/settings_table.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/stage_timer.h"
+#include "shadows/world_draw.h"
 
 namespace shadowlab {
 namespace {
@@ -89,31 +90,26 @@ std::vector<uint8_t> receivingInstances(const Scene& scene, const WorldGeometry&
 
 enum class PlanarRole { Receiver, Caster };
 
-// The triangles of the instances in that role, from that role's scene and world; a caster
-// less its triangles that reach the light's distance from the plane.
-std::vector<glm::uvec3> trianglesOf(PlanarRole role, const Scene& scene, const WorldGeometry& world,
+// The triangles of the instances in that role (indices into the world's triangles, in
+// order), from that role's scene and world; a caster less its triangles that reach the
+// light's distance from the plane.
+std::vector<uint32_t> trianglesOf(PlanarRole role, const Scene& scene, const WorldGeometry& world,
                                     std::span<const uint8_t> receiving, const glm::dvec4& plane, const glm::dvec4& light) {
     const double lightHeight = glm::dot(plane, light);   // for w = 0: > 0 means above, never reached
     auto belowLight = [&](uint32_t v) {
         return light.w == 0.0 || glm::dot(plane, glm::dvec4(glm::dvec3(world.positions[v]), 1.0)) < lightHeight;
     };
     const std::vector<InstanceRange> ranges = instanceRanges(scene);
-    std::vector<glm::uvec3> out;
+    std::vector<uint32_t> out;
     for (size_t i = 0; i < ranges.size(); ++i) {
         if (bool(receiving[i]) != (role == PlanarRole::Receiver)) continue;
-        for (const glm::uvec3& t : std::span(world.triangles).subspan(ranges[i].firstTriangle, ranges[i].triangleCount)) {
-            if (receiving[i] || (belowLight(t.x) && belowLight(t.y) && belowLight(t.z))) out.push_back(t);
+        for (uint32_t k = 0; k < ranges[i].triangleCount; ++k) {
+            const uint32_t index = ranges[i].firstTriangle + k;
+            const glm::uvec3& t = world.triangles[index];
+            if (receiving[i] || (belowLight(t.x) && belowLight(t.y) && belowLight(t.z))) out.push_back(index);
         }
     }
     return out;
-}
-
-void draw(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::PipelineState& state,
-          const WorldGeometry& world, std::span<const glm::uvec3> triangles, const glm::mat4& clipFromWorld,
-          const glm::vec4& color = glm::vec4(1.0f)) {
-    raster::DrawCall call = raster::positionsDraw(world.positions, triangles, clipFromWorld);
-    call.constantColor = color;
-    rasterizer.draw(fb, state, call);
 }
 
 raster::PipelineState prepassState() {
@@ -150,9 +146,9 @@ ShadowOutputs runPlanar(const ShadowInputs& in) {
     const glm::dvec4 light = homogeneousLight(pointLightFor(in.light));
     StageTimer timer;
     const std::vector<uint8_t> receiving = receivingInstances(in.scene(), in.receiverWorld(), plane);
-    const std::vector<glm::uvec3> receivers =
+    const std::vector<uint32_t> receivers =
         trianglesOf(PlanarRole::Receiver, in.scene(), in.receiverWorld(), receiving, plane, light);
-    const std::vector<glm::uvec3> casters =
+    const std::vector<uint32_t> casters =
         trianglesOf(PlanarRole::Caster, in.casters().scene(), in.casterWorld(), receiving, plane, light);
     timer.lap("split");
 
@@ -162,9 +158,16 @@ ShadowOutputs runPlanar(const ShadowInputs& in) {
     raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = true});
     fb.clearDepth(1.0f), fb.clearStencil(kNoReceiver), fb.clearColor(glm::vec4(1.0f));
     raster::Rasterizer rasterizer(in.simd);
-    draw(rasterizer, fb, prepassState(), in.receiverWorld(), in.receiverWorld().triangles, clipFromWorld);
-    draw(rasterizer, fb, receiverState(), in.receiverWorld(), receivers, clipFromWorld);
-    draw(rasterizer, fb, shadowState(), in.casterWorld(), casters, clipFromShadow, glm::vec4(0.0f, 0.0f, 0.0f, settings.opacity));
+    // Cut-outs with their holes in every pass (world_draw.h): the prepass's depth is the
+    // G-buffer's, and a projected card's texture coordinates interpolate as on the card
+    // (M is projective), so its shadow has the shape of its leaves.
+    drawWorld(rasterizer, fb, prepassState(), in.receiverWorld(), clipFromWorld);
+    // (An empty list would draw the whole world.)
+    if (!receivers.empty()) drawWorld(rasterizer, fb, receiverState(), in.receiverWorld(), clipFromWorld, receivers);
+    if (!casters.empty()) {
+        drawWorld(rasterizer, fb, shadowState(), in.casterWorld(), clipFromShadow, casters,
+                  glm::vec4(0.0f, 0.0f, 0.0f, settings.opacity));
+    }
     timer.lap("stencil");
 
     const std::vector<uint8_t> stencil = fb.stencilImage();
