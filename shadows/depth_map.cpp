@@ -86,12 +86,12 @@ DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const
                       });
 }
 
-DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
-                        const LightView& view, const DepthMapSettings& settings, raster::SimdLevel simd) {
+DepthMap renderDepthMap(const WorldGeometry& world, std::span<const uint32_t> triangles, const LightView& view,
+                        const DepthMapSettings& settings, raster::SimdLevel simd) {
     const glm::mat4 clipFromWorld(view.clipFromWorld());
     return depthMapOf(view, settings, simd,
                       [&](raster::Rasterizer& r, raster::Framebuffer& fb, const raster::PipelineState& state) {
-                          r.draw(fb, state, raster::positionsDraw(positions, triangles, clipFromWorld));
+                          if (!triangles.empty()) drawWorld(r, fb, state, world, clipFromWorld, triangles);
                       });
 }
 

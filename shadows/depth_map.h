@@ -79,8 +79,9 @@ struct DepthMapSettings {
 // The world's triangles, cut-outs with their holes (world_draw.h).
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
                         raster::SimdLevel simd);
-// The same for some of the world's triangles (indices into positions), all drawn solid.
-DepthMap renderDepthMap(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles,
-                        const LightView& view, const DepthMapSettings& settings, raster::SimdLevel simd);
+// The same for some of the world's triangles (indices into world.triangles, ascending; none
+// drawn when empty), as the fins' hard maps draw one layer's objects.
+DepthMap renderDepthMap(const WorldGeometry& world, std::span<const uint32_t> triangles, const LightView& view,
+                        const DepthMapSettings& settings, raster::SimdLevel simd);
 
 }  // namespace shadowlab

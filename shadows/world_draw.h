@@ -1,9 +1,8 @@
 // Drawing a world's triangles so that cut-outs have holes in every pass: the solid
 // triangles in one draw, each cut-out's (WorldGeometry::cutOuts) in a draw of its own with
 // the rasterizer's alpha test, its corners carrying their texture coordinates. The camera's
-// G-buffer and every depth map of a world draw through it (renderDepthMap's overload for a
-// list of triangles draws them solid, as the fins' maps of silhouette geometry do), so a
-// foliage card casts and shows the shape of its leaves in every shadow-map technique.
+// G-buffer and every depth map of a world draw through it, so a foliage card casts and
+// shows the shape of its leaves in every shadow-map technique.
 // Primitive ids are world triangle indices.
 #pragma once
 

@@ -25,7 +25,8 @@ namespace {
 // What each layer draws: its objects' triangles into the hard shadow map, their fins into
 // the penumbra maps (fin_layers.h: objects go whole into one layer).
 struct LayerContents {
-    std::vector<glm::uvec3> geometry, innerFins, outerFins;
+    std::vector<uint32_t> geometry;   // world triangle indices, in order
+    std::vector<glm::uvec3> innerFins, outerFins;
     bool empty() const { return geometry.empty() && innerFins.empty() && outerFins.empty(); }
 };
 
@@ -71,9 +72,8 @@ Layering layerScene(const ShadowInputs& in, const Fins& fins, const LightPlane& 
     l.instanceLayer = instanceLayers(l.layers, fins.midpointDistance, edgeInstance, fallback);
     l.contents.resize(l.layers.count());
     for (size_t i = 0; i < ranges.size(); ++i) {
-        const auto first = in.casterWorld().triangles.begin() + ranges[i].firstTriangle;
-        std::vector<glm::uvec3>& geometry = l.contents[l.instanceLayer[i]].geometry;
-        geometry.insert(geometry.end(), first, first + ranges[i].triangleCount);
+        std::vector<uint32_t>& geometry = l.contents[l.instanceLayer[i]].geometry;
+        for (uint32_t k = 0; k < ranges[i].triangleCount; ++k) geometry.push_back(ranges[i].firstTriangle + k);
     }
     auto distribute = [&](const FinPrimitives& kind, std::vector<glm::uvec3> LayerContents::*list) {
         for (size_t t = 0; t < kind.triangles.size(); ++t) {
@@ -85,12 +85,27 @@ Layering layerScene(const ShadowInputs& in, const Fins& fins, const LightPlane& 
     return l;
 }
 
+// The silhouette edges less those of cut-outs: a card's edges are not the outline of its
+// leaves, whose hard shadow the layer's depth map draws with its holes; fins on them would
+// add a band of penumbra around the card's square (docs/cut-outs.md).
+std::vector<SilhouetteEdge> withoutCutOuts(std::vector<SilhouetteEdge> edges, const ShadowInputs& in) {
+    const WorldGeometry& world = in.casterWorld();
+    if (world.cutOuts.empty()) return edges;
+    const std::vector<InstanceRange> ranges = instanceRanges(in.casters().scene());
+    std::erase_if(edges, [&](const SilhouetteEdge& e) {
+        const InstanceRange& r = ranges[instanceOfVertex(ranges, e.from)];
+        return world.triangleCutOut[r.firstTriangle] >= 0;   // an edge's instance has triangles
+    });
+    return edges;
+}
+
 // Steps 1 to 3: the view, the fins of the silhouette edges w.r.t. the light's centre, the layers.
 FinScene buildFinScene(const ShadowInputs& in, const FinSettings& s) {
     const LightView view = fitFinView(in, s);
     const double L0 = view.zFar;
-    const std::vector<SilhouetteEdge> silhouette =
-        sceneSilhouette(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), glm::dvec4(s.light.centre, 1.0));
+    const std::vector<SilhouetteEdge> silhouette = withoutCutOuts(
+        sceneSilhouette(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), glm::dvec4(s.light.centre, 1.0)),
+        in);
     Fins fins = buildFins(in.casterWorld().positions, silhouette, s.light, L0, s.style);
     Layering layering = layerScene(in, fins, s.light, view, s.layers);
     return {view, L0, std::move(fins), std::move(layering)};
@@ -117,7 +132,7 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
         const LayerContents& c = scene.layering.contents[layer];
         if (c.empty()) continue;
         ++drawn;
-        const DepthMap hard = renderDepthMap(in.casterWorld().positions, c.geometry, scene.view, hardSettings, in.simd);
+        const DepthMap hard = renderDepthMap(in.casterWorld(), c.geometry, scene.view, hardSettings, in.simd);
         timer.lap("hard_maps");
         PenumbraMap inner;
         if (s.style.innerFins) {
