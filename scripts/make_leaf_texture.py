@@ -34,13 +34,18 @@ def png(width, height, rows):
             chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 
-rows = []
-for j in range(SIZE):
-    row = bytearray()
-    for i in range(SIZE):
-        a = 255 if alpha_at((i + 0.5) / SIZE, (j + 0.5) / SIZE) else 0
-        row += bytes((60, 120, 40, a))
-    rows.append(bytes(row))
-out = sys.argv[1] if len(sys.argv) > 1 else "assets/textures/leaf.png"
-with open(out, "wb") as f:
-    f.write(png(SIZE, SIZE, rows))
+def main():
+    rows = []
+    for j in range(SIZE):
+        row = bytearray()
+        for i in range(SIZE):
+            a = 255 if alpha_at((i + 0.5) / SIZE, (j + 0.5) / SIZE) else 0
+            row += bytes((60, 120, 40, a))
+        rows.append(bytes(row))
+    out = sys.argv[1] if len(sys.argv) > 1 else "assets/textures/leaf.png"
+    with open(out, "wb") as f:
+        f.write(png(SIZE, SIZE, rows))
+
+
+if __name__ == "__main__":
+    main()
