@@ -13,8 +13,11 @@ namespace {
 using raster::CompareFunc;
 using raster::StencilOp;
 
-// Step 2, taken first: step 1 builds the caps for z-fail only.
-void chooseCounting(const ShadowInputs& in, VolumeMode mode, const glm::dvec4& light, StencilPass& pass) {
+// Step 2, taken first: step 1 builds the caps for z-fail only. Auto takes z-fail as well
+// when a cut-out casts: the camera sees through its holes into its own volume, past its
+// light cap, which z-pass does not draw, and z-fail counts behind the receiver instead.
+void chooseCounting(const ShadowInputs& in, VolumeMode mode, const glm::dvec4& light, bool cutOutCasts,
+                    StencilPass& pass) {
     pass.nearPlaneShadowed =
         nearPlaneMayBeShadowed(in.camera(), light, instanceBounds(in.casters().scene(), in.casterWorld()));
     switch (mode) {
@@ -22,7 +25,7 @@ void chooseCounting(const ShadowInputs& in, VolumeMode mode, const glm::dvec4& l
         case VolumeMode::ZFail: pass.counting = VolumeCounting::ZFail; return;
         case VolumeMode::Auto: break;
     }
-    pass.counting = pass.nearPlaneShadowed ? VolumeCounting::ZFail : VolumeCounting::ZPass;
+    pass.counting = pass.nearPlaneShadowed || cutOutCasts ? VolumeCounting::ZFail : VolumeCounting::ZPass;
 }
 
 // The camera's depth, as the G-buffer's camera pass (no culling, cut-outs with their holes),
@@ -110,9 +113,10 @@ StencilPass runStencilPass(raster::Rasterizer& rasterizer, raster::Framebuffer& 
                            const StencilPassSettings& settings, const glm::dvec4& light, StageTimer& timer) {
     StencilPass pass;
     pass.offsetUnits = settings.offsetUnits;
-    chooseCounting(in, settings.mode, light, pass);
+    const std::vector<uint8_t> cutOutCasts = castingCutOuts(in.casterWorld(), settings.cutOuts);
+    chooseCounting(in, settings.mode, light, std::ranges::find(cutOutCasts, 1) != cutOutCasts.end(), pass);
     pass.volume = extrudeShadowVolume(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), light,
-                                      pass.counting == VolumeCounting::ZFail, castingCutOuts(in.casterWorld(), settings.cutOuts));
+                                      pass.counting == VolumeCounting::ZFail, cutOutCasts);
     timer.lap("extrusion");
 
     pass.clipFromWorld = clipFromWorldInfinite(in.camera());
