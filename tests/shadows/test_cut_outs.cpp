@@ -149,7 +149,7 @@ TEST_CASE("shadow volumes cast a cut-out whole or not at all, whichever is less 
 // against the soft reference, where solid cards gave 0.37 to 0.44 and the cards' fins 0.13
 // to 0.20. The same for all three, since without fins they are one hard shadow map.
 TEST_CASE("fins draw the cut-outs' hard shadow with its holes and no fins from the cards") {
-    const CutOutCase soft("soft/foliage-cards.json", 160, 100, "reference-soft", {{"samples-per-axis", "12"}});
+    const CutOutCase soft("volumetric/foliage-cards-disk.json", 160, 100, "reference-soft", {{"samples-per-axis", "12"}});
     const std::vector<float> fins = soft.run("fins");
     CHECK(soft.rms(fins) < 0.15);
     CHECK(fins == soft.run("smoothies"));
