@@ -9,15 +9,15 @@
 # fly-throughs; run nothing else meanwhile (times are medians, but a busy machine still
 # moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|flythrough|report ...]
-#        (default: all sixteen, report last)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|report ...]
+#        (default: all seventeen, report last)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric flythrough report}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough report}
 
 for part in $parts; do
   case $part in
@@ -194,6 +194,48 @@ for part in $parts; do
     for f in background reference-f5 composite-f5-nall error-f5-nall; do cp $d/outdoor-t2/$f.png docs/images/differential/outdoor-$f.png; done
     cp $d/chessboard/background.png docs/images/differential/chessboard-background.png
     cp $d/chessboard/composite-ldr-f2-n20.png docs/images/differential/chessboard-f2.png
+    ;;
+  cutouts)
+    # docs/cut-outs.md: every family on the two cut-out cases against its reference (the hard
+    # ones on foliage-cards and mask-card, the soft ones on the foliage under a disk light),
+    # shadow-volume's three cut-out rules, izb on the foliage with its cards made solid (the
+    # cost of the alpha test), and the images beside the reference's.
+    c=$out/cutouts
+    hard=shadow-map,izb,shadow-volume,planar
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    for scene in foliage-cards mask-card; do
+      $app sweep assets/scenes/volumetric/$scene.json --technique $hard --threads 1,2 --runs 5 --out $c > /dev/null
+      echo "$scene:"
+      python3 $table $c/$scene-shadow-map+izb+shadow-volume+planar.csv hard
+      $app sweep assets/scenes/volumetric/$scene.json --technique shadow-volume --param cut-outs=coverage,solid,none \
+        --threads 2 --runs 5 --out $c/volumes > /dev/null
+      python3 $table $c/volumes/$scene-shadow-volume.csv hard
+    done
+    mkdir -p $c/solid
+    # The same scene without the alpha texture (the cards solid).
+    python3 - assets/scenes/volumetric/foliage-cards.json $c/solid/foliage-cards-solid.json <<'EOF'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+for material in scene["materials"]:
+    for key in ("alpha-texture", "alpha-cutoff"):
+        material.pop(key, None)
+json.dump(scene, open(sys.argv[2], "w"), indent=2)
+EOF
+    $app sweep $c/solid/foliage-cards-solid.json --technique izb --threads 1,2 --runs 5 --out $c/solid > /dev/null
+    echo "foliage-cards, cards solid:"
+    python3 $table $c/solid/foliage-cards-solid-izb.csv hard
+    soft=pcss,izb-pcss,fins,smoothies,penumbra-maps,soft-shadow-volumes
+    $app sweep assets/scenes/volumetric/foliage-cards-disk.json --technique $soft --threads 1,2 --runs 5 --out $c > /dev/null
+    echo "foliage-cards-disk:"
+    python3 $table $c/foliage-cards-disk-pcss+izb-pcss+fins+smoothies+penumbra-maps+soft-shadow-volumes.csv soft
+    for technique in reference izb shadow-volume planar; do
+      $app render assets/scenes/volumetric/foliage-cards.json --technique $technique -o docs/images/cutouts-foliage-$technique.png > /dev/null
+      $app render assets/scenes/volumetric/mask-card.json --technique $technique -o docs/images/cutouts-mask-$technique.png > /dev/null
+    done
+    for technique in reference-soft fins; do
+      $app render assets/scenes/volumetric/foliage-cards-disk.json --technique $technique \
+        -o docs/images/cutouts-foliage-disk-$technique.png > /dev/null
+    done
     ;;
   volumetric)
     # docs/volumetric-shadows.md: every volumetric map beside the plain shadow map on the four
