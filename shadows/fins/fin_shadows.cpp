@@ -42,6 +42,7 @@ struct FinScene {
     double L0 = 0.0;   // the reference receiver plane (section 3.1): the view's far plane
     Fins fins;
     Layering layering;
+    size_t cutOutEdges = 0;   // silhouette edges of cut-outs, left without fins (cut_out_silhouette_edges)
 };
 
 uint32_t instanceOfVertex(const std::vector<InstanceRange>& ranges, uint32_t vertex) {
@@ -85,30 +86,29 @@ Layering layerScene(const ShadowInputs& in, const Fins& fins, const LightPlane& 
     return l;
 }
 
-// The silhouette edges less those of cut-outs: a card's edges are not the outline of its
-// leaves, whose hard shadow the layer's depth map draws with its holes; fins on them would
-// add a band of penumbra around the card's square (docs/cut-outs.md).
-std::vector<SilhouetteEdge> withoutCutOuts(std::vector<SilhouetteEdge> edges, const ShadowInputs& in) {
+// Removes the silhouette edges of cut-outs and returns how many: a card's edges are not the
+// outline of its leaves, whose hard shadow the layer's depth map draws with its holes; fins
+// on them would add a band of penumbra around the card's square (docs/cut-outs.md).
+size_t dropCutOutEdges(std::vector<SilhouetteEdge>& edges, const ShadowInputs& in) {
     const WorldGeometry& world = in.casterWorld();
-    if (world.cutOuts.empty()) return edges;
+    if (world.cutOuts.empty()) return 0;
     const std::vector<InstanceRange> ranges = instanceRanges(in.casters().scene());
-    std::erase_if(edges, [&](const SilhouetteEdge& e) {
+    return std::erase_if(edges, [&](const SilhouetteEdge& e) {
         const InstanceRange& r = ranges[instanceOfVertex(ranges, e.from)];
         return world.triangleCutOut[r.firstTriangle] >= 0;   // an edge's instance has triangles
     });
-    return edges;
 }
 
 // Steps 1 to 3: the view, the fins of the silhouette edges w.r.t. the light's centre, the layers.
 FinScene buildFinScene(const ShadowInputs& in, const FinSettings& s) {
     const LightView view = fitFinView(in, s);
     const double L0 = view.zFar;
-    const std::vector<SilhouetteEdge> silhouette = withoutCutOuts(
-        sceneSilhouette(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), glm::dvec4(s.light.centre, 1.0)),
-        in);
+    std::vector<SilhouetteEdge> silhouette =
+        sceneSilhouette(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), glm::dvec4(s.light.centre, 1.0));
+    const size_t cutOutEdges = dropCutOutEdges(silhouette, in);
     Fins fins = buildFins(in.casterWorld().positions, silhouette, s.light, L0, s.style);
     Layering layering = layerScene(in, fins, s.light, view, s.layers);
-    return {view, L0, std::move(fins), std::move(layering)};
+    return {view, L0, std::move(fins), std::move(layering), cutOutEdges};
 }
 
 // 1 where the light can reach a surface (lightReaches: it faces the disk's centre), else 0.
@@ -160,6 +160,7 @@ void addFinStats(const FinScene& scene, const FinSettings& s, int layersDrawn, s
                                {"resolution_texels", double(s.maps.resolution)},
                                {"light_near_m", scene.view.zNear},
                                {"reference_plane_l0_m", scene.L0}});
+    if (scene.cutOutEdges > 0) stats.push_back({"cut_out_silhouette_edges", double(scene.cutOutEdges)});
 }
 
 }  // namespace
