@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string_view>
 
+#include <nlohmann/json.hpp>
+
 #include "scenes/error_text.h"
 #include "scenes/image_file.h"
 #include "scenes/read_file.h"
@@ -100,12 +102,17 @@ bool decodeGltfImage(tinygltf::Image* image, const int index, std::string*, std:
     return true;
 }
 
-void checkExtensions(const GltfDocument& document) {
-    const std::vector<std::string>& required = document.model.extensionsRequired;
-    for (size_t k = 0; k < required.size(); ++k) {
-        if (std::ranges::find(kReadExtensions, required[k]) == kReadExtensions.end())
-            document.fail("extensionsRequired[" + std::to_string(k) + "]",
-                          inQuotes(required[k]) + " is not read here (read: KHR_lights_punctual)");
+// Checked on the JSON before tinygltf reads the rest, since tinygltf fails on what such an
+// extension changes (a Draco mesh's accessors have no buffer view) before it could be named.
+void checkRequiredExtensions(std::string_view json, const std::string& path) {
+    const nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
+    if (!document.is_object() || !document.contains("extensionsRequired")) return;   // tinygltf says what is wrong
+    const nlohmann::json& required = document["extensionsRequired"];
+    for (size_t k = 0; required.is_array() && k < required.size(); ++k) {
+        const std::string name = required[k].is_string() ? required[k].get<std::string>() : required[k].dump();
+        if (std::ranges::find(kReadExtensions, name) == kReadExtensions.end())
+            throw SceneError(path + ": extensionsRequired[" + std::to_string(k) + "]: " + inQuotes(name) +
+                             " is not read here (read: KHR_lights_punctual)");
     }
 }
 
@@ -125,17 +132,19 @@ GltfDocument parseGltfDocument(const std::string& bytes, const std::string& path
     std::string error, warning;
     const bool binary = bytes.starts_with("glTF");
     if (binary) checkGlbChunks(bytes, path);
+    checkRequiredExtensions(binary ? std::string_view(bytes).substr(20, littleEndian32(bytes, 12)) : std::string_view(bytes),
+                            path);
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const bool read = binary ? loader.LoadBinaryFromMemory(&document.model, &error, &warning, data,
                                                            unsigned(bytes.size()), access.directory)
                              : loader.LoadASCIIFromString(&document.model, &error, &warning, bytes.data(),
                                                           unsigned(bytes.size()), access.directory);
-    if (!read) {
-        // tinygltf's message, one line: what it names (a field, a buffer) is its own words.
-        std::string line = error.empty() ? "cannot read as glTF 2.0" : error.substr(0, error.find('\n'));
+    // tinygltf's message, one line: what it names (a field, a buffer) is its own words. It
+    // reports some errors (a property of the wrong type) and still returns true.
+    if (!read || !error.empty()) {
+        const std::string line = error.empty() ? "cannot read as glTF 2.0" : error.substr(0, error.find('\n'));
         throw SceneError(path + ": " + line);
     }
-    checkExtensions(document);
     return document;
 }
 
