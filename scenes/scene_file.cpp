@@ -161,8 +161,8 @@ void checkSize(const JsonField& root, const Scene& scene) {
 
 Scene readScene(const JsonField& root, const std::string& directory, const std::string& name) {
     const JsonObject object =
-        root.object({"description", "meshes", "materials", "instances", "volumes", "lights", "camera", "environment",
-                     "flythrough"});
+        root.object({"description", "meshes", "materials", "instances", "models", "volumes", "lights", "camera",
+                     "environment", "flythrough"});
     if (const auto description = object.optional("description")) description->string();   // for readers only
     Scene scene;
     scene.name = name;
@@ -171,6 +171,8 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     for (const JsonField& material : object["materials"].elements()) readMaterial(material, directory, scene, names);
     for (const JsonField& instance : object["instances"].elements()) readInstance(instance, names, scene);
     checkCutOutUvs(object["instances"], scene);
+    if (const auto models = object.optional("models"))
+        for (const JsonField& model : models->elements()) readModel(model, directory, names, scene);
     if (const auto volumes = object.optional("volumes")) {
         uint64_t voxels = 0;
         for (const JsonField& volume : volumes->elements()) scene.volumes.push_back(readVolume(volume, voxels));
