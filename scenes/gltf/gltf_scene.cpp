@@ -34,7 +34,7 @@ public:
     std::optional<uint32_t> material(int index) {
         const auto found = materials_.find(index);
         if (found != materials_.end()) return found->second;
-        GltfMaterial read = readMaterial(document_, index);
+        GltfMaterial read = readGltfMaterial(document_, index);
         std::optional<uint32_t> ours;
         if (!read.invisible) {
             if (read.alphaTexture) {
@@ -103,7 +103,7 @@ void addNodeMesh(const GltfDocument& document, const PlacedNode& placed, ModelBu
 }
 
 // A sphere around every vertex the instances place (centre of their box).
-std::pair<glm::dvec3, double> boundingSphere(const Scene& scene) {
+std::pair<glm::dvec3, double> sceneSphere(const Scene& scene) {
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
     for (const MeshInstance& instance : scene.instances)
         for (const glm::vec3& p : scene.meshes[instance.mesh].positions) {
@@ -184,7 +184,7 @@ Scene gltfScene(GltfModel model, const std::string& path) {
     Scene scene;
     scene.name = std::filesystem::path(path).stem().string();
     appendGltfModel(model, glm::mat4(1.0f), std::nullopt, path, scene);
-    const auto [centre, radius] = boundingSphere(scene);
+    const auto [centre, radius] = sceneSphere(scene);
     if (model.camera) {
         scene.camera = *model.camera;
         if (scene.camera.zFar == 0.0f)
