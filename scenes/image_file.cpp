@@ -53,8 +53,12 @@ ImageFormat formatOf(std::string_view bytes, const std::string& path, std::initi
 }  // namespace
 
 DecodedImage readImage(const std::string& path, int channels, std::initializer_list<ImageFormat> accepted) {
+    return decodeImage(readWholeFile(path), path, channels, accepted);
+}
+
+DecodedImage decodeImage(std::string_view bytes, const std::string& path, int channels,
+                         std::initializer_list<ImageFormat> accepted) {
     const auto fail = [&](const std::string& problem) { throw SceneError(path + ": " + problem); };
-    const std::string bytes = readWholeFile(path);
     formatOf(bytes, path, accepted);
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     if (bytes.size() > size_t(std::numeric_limits<int>::max())) fail("more bytes than an image may have (2^31 - 1)");

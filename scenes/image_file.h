@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace shadowlab {
@@ -26,5 +27,10 @@ struct DecodedImage {
 // file for one it cannot read, a format not in `accepted`, a truncated file, or one over
 // 8192 pixels on a side (checked before the pixels are decoded).
 DecodedImage readImage(const std::string& path, int channels, std::initializer_list<ImageFormat> accepted);
+
+// The same for an image already in memory (a glTF file's embedded or data-URI image);
+// `path` names it in errors.
+DecodedImage decodeImage(std::string_view bytes, const std::string& path, int channels,
+                         std::initializer_list<ImageFormat> accepted);
 
 }  // namespace shadowlab

@@ -106,6 +106,12 @@ struct Light {
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // spot: axis it shines along; directional: towards the light;
                                         // disk: unit normal of the emitting side
     float coneAngleDeg = 30.0f;         // spot: half-angle of the cone
+    // spot: where a smooth falloff towards the cone's edge begins (KHR_lights_punctual's
+    // innerConeAngle, conventions.md "Lights"); none: a hard cone, full intensity to its edge.
+    std::optional<float> innerConeAngleDeg = std::nullopt;
+    // point, spot: the distance (m) beyond which no light arrives, with the extension's
+    // smooth window towards it; 0: unbounded, the plain inverse square.
+    float range = 0.0f;
     float radius = 0.0f;                // disk
     glm::vec3 halfEdgeU{0.0f}, halfEdgeV{0.0f};  // rectangle
     glm::vec3 intensity{1.0f};
@@ -154,6 +160,9 @@ struct Scene {
     Camera camera;
     Environment environment;
     CameraPath flythrough;
+    // What the loader supplied that the file did not say (a glTF file's default camera or
+    // sun), one line each, for the program to tell the user.
+    std::vector<std::string> notes;
 };
 
 // Every triangle of every instance in world space, in instance order, then mesh order.

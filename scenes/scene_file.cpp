@@ -13,6 +13,7 @@
 #include "scenes/camera.h"
 #include "scenes/camera_path.h"
 #include "scenes/error_text.h"
+#include "scenes/gltf_scene.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
@@ -160,8 +161,8 @@ void checkSize(const JsonField& root, const Scene& scene) {
 
 Scene readScene(const JsonField& root, const std::string& directory, const std::string& name) {
     const JsonObject object =
-        root.object({"description", "meshes", "materials", "instances", "volumes", "lights", "camera", "environment",
-                     "flythrough"});
+        root.object({"description", "meshes", "materials", "instances", "models", "volumes", "lights", "camera",
+                     "environment", "flythrough"});
     if (const auto description = object.optional("description")) description->string();   // for readers only
     Scene scene;
     scene.name = name;
@@ -170,6 +171,8 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     for (const JsonField& material : object["materials"].elements()) readMaterial(material, directory, scene, names);
     for (const JsonField& instance : object["instances"].elements()) readInstance(instance, names, scene);
     checkCutOutUvs(object["instances"], scene);
+    if (const auto models = object.optional("models"))
+        for (const JsonField& model : models->elements()) readModel(model, directory, names, scene);
     if (const auto volumes = object.optional("volumes")) {
         uint64_t voxels = 0;
         for (const JsonField& volume : volumes->elements()) scene.volumes.push_back(readVolume(volume, voxels));
@@ -188,7 +191,8 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
 }
 
 bool looksLikePath(const std::string& nameOrPath) {
-    return nameOrPath.find('/') != std::string::npos || fs::path(nameOrPath).extension() == ".json";
+    return nameOrPath.find('/') != std::string::npos || fs::path(nameOrPath).extension() == ".json" ||
+           isGltfPath(nameOrPath);
 }
 
 std::string joinedNames(const std::vector<std::string>& names) {
@@ -202,7 +206,7 @@ std::string scenePath(const std::string& nameOrPath, const std::string& sceneDir
     const fs::path path = fs::path(sceneDir) / (nameOrPath + ".json");
     if (!fs::is_regular_file(path))
         throw SceneError("unknown scene " + inQuotes(nameOrPath) + " (built-in scenes: " + joinedNames(sceneNamesIn(sceneDir)) +
-                         "; a scene file path must end in .json or contain a '/')");
+                         "; a scene file path must end in .json, .gltf or .glb or contain a '/')");
     return path.string();
 }
 
@@ -255,6 +259,7 @@ Scene parseScene(const std::string& text, const std::string& path) {
 
 Scene loadScene(const std::string& nameOrPath, const std::string& sceneDir) {
     const std::string path = scenePath(nameOrPath, sceneDir);
+    if (isGltfPath(path)) return loadGltfScene(path);
     return parseScene(readWholeFile(path), path);
 }
 

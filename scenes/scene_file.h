@@ -9,8 +9,9 @@
 
 namespace shadowlab {
 
-// nameOrPath is a path when it ends in ".json" or contains a '/', otherwise the stem of a
-// scene file in sceneDir. Throws SceneError for every invalid or unreadable input.
+// nameOrPath is a path when it ends in ".json", ".gltf" or ".glb" or contains a '/',
+// otherwise the stem of a scene file in sceneDir. A .gltf or .glb file is read as a glTF
+// scene (scenes/gltf_scene.h), anything else as a scene file. Throws SceneError for every invalid or unreadable input.
 Scene loadScene(const std::string& nameOrPath, const std::string& sceneDir);
 
 // A scene file's text already in memory; `path` names it in errors, and the meshes it names

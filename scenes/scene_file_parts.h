@@ -33,8 +33,16 @@ Mesh readMesh(const JsonObject& object, const std::string& directory);
 // Appends every mesh of the "meshes" array; file paths are relative to directory.
 void readMeshes(const JsonField& field, const std::string& directory, Scene& scene, SceneNames& names);
 
+// An instance's or model's transform (docs/scene-format.md, "transform"): translate,
+// rotate and scale, or a matrix.
+glm::mat4 readTransform(const JsonObject& object);
+
 // Appends the instances one entry describes: one, or a lattice of copies with "repeat".
 void readInstance(const JsonField& field, const SceneNames& names, Scene& scene);
+
+// One entry of "models": a glTF file's meshes, materials and node transforms, placed
+// (scene_models.cpp); its file is relative to directory.
+void readModel(const JsonField& field, const std::string& directory, const SceneNames& names, Scene& scene);
 
 // A spot light's cookie file is relative to directory.
 Light readLight(const JsonField& field, const std::string& directory);

@@ -88,13 +88,6 @@ glm::mat4 readTranslateRotateScale(const JsonObject& object) {
     return glm::scale(m, scale);
 }
 
-glm::mat4 readTransform(const JsonObject& object) {
-    if (!object.has("matrix")) return readTranslateRotateScale(object);
-    if (object.has("translate") || object.has("rotate") || object.has("scale"))
-        object["matrix"].fail("cannot be combined with translate, rotate or scale");
-    return readMatrix(object["matrix"]);
-}
-
 // Copy (i, j, k) of the lattice is shifted by (i, j, k) * offset in world space; copies
 // are listed with i varying fastest.
 // The copies are counted before they are made (1024^3 of them would exhaust memory).
@@ -126,6 +119,13 @@ void checkInWorld(const JsonField& field, const MeshInstance& instance, const Me
 }
 
 }  // namespace
+
+glm::mat4 readTransform(const JsonObject& object) {
+    if (!object.has("matrix")) return readTranslateRotateScale(object);
+    if (object.has("translate") || object.has("rotate") || object.has("scale"))
+        object["matrix"].fail("cannot be combined with translate, rotate or scale");
+    return readMatrix(object["matrix"]);
+}
 
 void readInstance(const JsonField& field, const SceneNames& names, Scene& scene) {
     const JsonObject object = field.object(

@@ -13,7 +13,8 @@ mode=${1:-all}
 
 packages=(g++ cmake make
           libglm-dev libstb-dev libopenexr-dev libimath-dev libtbb-dev libembree-dev
-          nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libmeshoptimizer-dev)
+          nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libmeshoptimizer-dev
+          libtinygltf-dev)
 if [[ $mode == all ]]; then
   packages+=(python3                          # the layout checks and the figures' scripts
              doctest-dev libbenchmark-dev     # the tests and the stage benchmarks
@@ -21,7 +22,8 @@ if [[ $mode == all ]]; then
              libegl-dev libgl-dev libopengl-dev libgl1-mesa-dri   # the llvmpipe peer (bench/peers)
              clang-14 libclang-rt-14-dev      # the sanitizer builds (scripts/sanitize.sh, tsan.sh)
              chromium                         # the report's browser test (tests/report)
-             imagemagick librsvg2-bin)        # the lessons' crops, contrast stretches and plots (scripts/lessons/)
+             imagemagick librsvg2-bin         # the lessons' crops, contrast stretches and plots (scripts/lessons/)
+             assimp-testmodels)               # the Khronos glTF sample models the glTF reader's tests load (tests/scenes)
   # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
   command -v node > /dev/null || packages+=(nodejs npm)
 fi

@@ -3,6 +3,7 @@
 // documented in lights.h. Geometry is evaluated in double and the result rounded once.
 #include "shading/lights.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -30,6 +31,28 @@ glm::dvec3 intensityTowards(const Light& light, const glm::dvec3& fromLight) {
             break;
     }
     return glm::dvec3(0.0);
+}
+
+// KHR_lights_punctual's recommended smooth spot falloff ("Inner and Outer Cone Angles"):
+// s = 1 / max(0.001, cos(inner) - cos(outer)), the square of
+// clamp((cos(angle to the axis) - cos(outer)) s, 0, 1). 1 for a hard cone (no inner angle).
+double spotFalloff(const Light& light, const glm::dvec3& fromLight) {
+    if (light.type != LightType::Spot || !light.innerConeAngleDeg) return 1.0;
+    const double toRadians = std::numbers::pi / 180.0;
+    const double cosOuter = portable::cos(double(light.coneAngleDeg) * toRadians);
+    const double cosInner = portable::cos(double(*light.innerConeAngleDeg) * toRadians);
+    const double scale = 1.0 / std::max(0.001, cosInner - cosOuter);
+    const double cd = glm::dot(glm::normalize(glm::dvec3(light.direction)), fromLight / glm::length(fromLight));
+    const double t = std::clamp((cd - cosOuter) * scale, 0.0, 1.0);
+    return t * t;
+}
+
+// The extension's recommended range window ("Range Property"), the factor of the inverse
+// square: clamp(1 - (d / range)^4, 0, 1). 1 for an unbounded light (range 0).
+double rangeWindow(const Light& light, double distanceSquared) {
+    if (light.range <= 0.0f) return 1.0;
+    const double ratioSquared = distanceSquared / (double(light.range) * double(light.range));
+    return std::clamp(1.0 - ratioSquared * ratioSquared, 0.0, 1.0);
 }
 
 }  // namespace
@@ -93,7 +116,9 @@ LightArrival lightArrival(const Light& light, const glm::vec3& point) {
     if (distanceSquared == 0.0 || (light.type == LightType::Spot && !insideSpotCone(light, point))) {
         return {};
     }
-    const glm::dvec3 irradiance = intensityTowards(light, fromLight) / distanceSquared;
+    // x * 1.0 is x exactly, so a light without falloff or range keeps the plain rule's bits.
+    const double window = spotFalloff(light, fromLight) * rangeWindow(light, distanceSquared);
+    const glm::dvec3 irradiance = intensityTowards(light, fromLight) / distanceSquared * window;
     const glm::vec3 toLight(-fromLight / std::sqrt(distanceSquared));
     return {toLight, glm::vec3(irradiance) * cookieTransmission(light, point)};
 }

@@ -25,6 +25,9 @@ struct LightArrival {
 // Point: I / d^2. Spot: the same inside the cone, 0 outside (a hard cone, no falloff, so
 // that the lit region is exactly the cone the shadow techniques are tested on), times its
 // cookie's texel there if it has one (cookieTransmission).
+// A glTF spot (innerConeAngleDeg set) falls off smoothly from its inner angle to its cone's
+// edge, and a light with a range fades to 0 at it, by KHR_lights_punctual's recommended
+// formulas (conventions.md, "Lights"); without them the bits are those of the plain rules.
 // Directional: the light's irradiance. Disk, rectangle: the far-field point light above.
 LightArrival lightArrival(const Light& light, const glm::vec3& point);
 

@@ -88,6 +88,7 @@ void runRender(const RenderArgs& a) {
         throw std::invalid_argument("render: give -o OUT.png, --aov OUT.exr and/or --error-map OUT.png");
     requireOutputDirectories({&a.png, &a.aov, &a.errorMap, &a.json});
     Scene loaded = loadScene(a.scene);
+    for (const std::string& note : loaded.notes) std::cerr << note << "\n";
     applyOverrides(loaded, a.overrides);
     const PreparedScene prepared(std::move(loaded));
     const Technique& technique = findTechnique(a.technique);

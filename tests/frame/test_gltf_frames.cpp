@@ -1,0 +1,133 @@
+// A glTF scene renders to the same bytes as the same scene written as scene JSON with OBJ
+// meshes and a PNG cut-out, and as scene JSON placing the glTF file as a model: the glTF
+// reader maps nodes, UVs, MASK materials, the camera and a point light exactly as
+// docs/scene-format.md ("glTF files") says.
+#include <cstring>
+#include <fstream>
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+#include <stb_image_write.h>
+
+#include "frame/registry.h"
+#include "frame/render.h"
+#include "scenes/scene_file.h"
+#include "tests/scenes/gltf_test_files.h"
+#include "tests/scenes/scene_test_files.h"
+#include "tests/same_bits.h"
+
+using namespace shadowlab;
+using nlohmann::json;
+
+namespace {
+
+// A 20 m ground and, above it, a 2 m x 2 m card in the z = 0 plane cut out by a 4 x 4
+// checker of alphas 0 and 255 with one texel at 128 (above the 0.5 cutoff).
+const std::vector<glm::vec3> kGround = {{-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}};
+const std::vector<glm::vec3> kCard = {{-1, 0.5, 0}, {1, 0.5, 0}, {1, 2.5, 0}, {-1, 2.5, 0}};
+const std::vector<glm::vec2> kCardUvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};   // glTF's: v down from the top
+const std::vector<uint32_t> kQuad = {0, 1, 2, 0, 2, 3};
+constexpr double kYfov = 0.8;
+
+void writeLeaf(const test::TempDir& dir) {
+    unsigned char rgba[64];
+    for (int k = 0; k < 16; ++k) {
+        rgba[4 * k] = rgba[4 * k + 1] = rgba[4 * k + 2] = 200;
+        rgba[4 * k + 3] = ((k % 4 + k / 4) % 2) ? 255 : 0;
+    }
+    rgba[4 * 5 + 3] = 128;
+    REQUIRE(stbi_write_png(dir.path("leaf.png").c_str(), 4, 4, 4, rgba, 16) != 0);
+}
+
+std::string gltfText() {
+    test::GltfFile file;
+    file.json["images"] = {{{"uri", "leaf.png"}}};
+    file.json["textures"] = {{{"source", 0}}};
+    file.json["materials"] = {
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1}}}}},
+        {{"alphaMode", "MASK"}, {"alphaCutoff", 0.5},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1}}, {"baseColorTexture", {{"index", 0}}}}}}};
+    const int ground = file.mesh({{"material", 0}, {"indices", file.indices(kQuad)}, {"attributes", {{"POSITION", file.vec3s(kGround)}}}});
+    const int card = file.mesh({{"material", 1}, {"indices", file.indices(kQuad)},
+                                {"attributes", {{"POSITION", file.vec3s(kCard)}, {"TEXCOORD_0", file.vec2s(kCardUvs)}}}});
+    file.node({{"mesh", ground}});
+    file.node({{"mesh", card}});
+    file.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", kYfov}, {"aspectRatio", 1.5}, {"znear", 0.1}, {"zfar", 100}}}}};
+    file.node({{"camera", 0}, {"translation", {0, 2, 6}}});
+    file.json["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 40}}};
+    file.node({{"translation", {1, 5, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    return file.gltf();
+}
+
+// The scene JSON's camera and light, as the glTF file has them.
+json cameraAndLights() {
+    return {{"camera", {{"eye", {0, 2, 6}}, {"target", {0, 2, 5}}, {"fovy", kYfov * 180.0 / M_PI}, {"width", 1200},
+                        {"height", 800}, {"near", 0.1}, {"far", 100}}},
+            {"lights", {{{"type", "point"}, {"position", {1, 5, 3}}, {"power", 40}}}}};
+}
+
+std::string objText(const std::vector<glm::vec3>& positions, const std::vector<glm::vec2>& gltfUvs) {
+    std::string text;
+    for (const glm::vec3& p : positions) text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+    for (const glm::vec2& uv : gltfUvs) text += "vt " + std::to_string(uv.x) + " " + std::to_string(1.0f - uv.y) + "\n";
+    const bool uvs = !gltfUvs.empty();
+    for (size_t t = 0; t < kQuad.size(); t += 3) {
+        text += "f";
+        for (int c = 0; c < 3; ++c) {
+            const std::string index = std::to_string(kQuad[t + size_t(c)] + 1);
+            text += " " + index + (uvs ? "/" + index : "");
+        }
+        text += "\n";
+    }
+    return text;
+}
+
+std::string jsonWithObjText() {
+    json scene = cameraAndLights();
+    scene["meshes"] = {{{"name", "ground"}, {"file", "ground.obj"}}, {{"name", "card"}, {"file", "card.obj"}}};
+    scene["materials"] = {{{"name", "ground"}, {"albedo", {0.8, 0.8, 0.8}}},
+                          {{"name", "leaf"}, {"albedo", {0.8, 0.8, 0.8}}, {"alpha-texture", "leaf.png"}, {"alpha-cutoff", 0.5}}};
+    scene["instances"] = {{{"mesh", "ground"}, {"material", "ground"}}, {{"mesh", "card"}, {"material", "leaf"}}};
+    return scene.dump();
+}
+
+std::string jsonWithModelText() {
+    json scene = cameraAndLights();
+    scene["meshes"] = json::array();
+    scene["materials"] = json::array();
+    scene["instances"] = json::array();
+    scene["models"] = {{{"name", "model"}, {"file", "scene.gltf"}}};
+    return scene.dump();
+}
+
+Frame render(Scene scene) {
+    SceneOverrides overrides;
+    overrides.width = 96;
+    overrides.height = 64;
+    applyOverrides(scene, overrides);
+    const PreparedScene prepared(std::move(scene));
+    FrameSettings settings;
+    return renderFrame(prepared, findTechnique("shadow-map"), settings);
+}
+
+}  // namespace
+
+TEST_CASE("a glTF scene, the same scene as JSON with OBJ meshes, and JSON placing the glTF file render the same bytes") {
+    test::TempDir dir;
+    writeLeaf(dir);
+    dir.write("ground.obj", objText(kGround, {}));
+    dir.write("card.obj", objText(kCard, kCardUvs));
+    const Frame gltf = render(loadScene(dir.write("scene.gltf", gltfText()), ""));
+    const Frame objs = render(loadScene(dir.write("objs.json", jsonWithObjText()), ""));
+    const Frame model = render(loadScene(dir.write("model.json", jsonWithModelText()), ""));
+    // Something is cut out and shadowed: the card's holes let the ground be seen and lit.
+    size_t shadowed = 0, lit = 0;
+    for (size_t k = 0; k < gltf.shadow.visibility.size(); ++k)
+        if (gltf.gbuffer.hit[k]) (gltf.shadow.visibility[k] == 0.0f ? shadowed : lit) += 1;
+    CHECK(shadowed > 0);
+    CHECK(lit > 0);
+    CHECK(test::sameBytes(gltf.shadow.visibility, objs.shadow.visibility));
+    CHECK(test::sameBytes(gltf.radiance, objs.radiance));
+    CHECK(test::sameBytes(gltf.shadow.visibility, model.shadow.visibility));
+    CHECK(test::sameBytes(gltf.radiance, model.radiance));
+}
