@@ -46,20 +46,28 @@ CasterLevel prepareCasters(const PreparedScene& prepared, const TechniqueParams&
 // `--light N`: the scene keeps that light alone.
 void selectLight(Scene& scene, int index) {
     const int count = int(scene.lights.size());
-    if (index < 0 || index >= count) {
-        throw std::invalid_argument("--light " + std::to_string(index) + ": the scene has " + std::to_string(count) +
-                                    (count == 1 ? " light (index 0)" : count == 0 ? " lights"
-                                                                                  : " lights (indices 0.." + std::to_string(count - 1) + ")"));
+    if (index >= 0 && index < count) {
+        scene.lights = {scene.lights[size_t(index)]};
+        return;
     }
-    scene.lights = {scene.lights[size_t(index)]};
+    std::string lights = std::to_string(count) + (count == 1 ? " light (index 0)" : " lights");
+    if (count > 1) lights += " (indices 0.." + std::to_string(count - 1) + ")";
+    throw std::invalid_argument("--light " + std::to_string(index) + ": the scene has " + lights);
 }
 
-// Runs the technique for one light, timed alone (the time a frame reports).
-LightPass runPass(const Technique& technique, const ShadowInputs& inputs, size_t lightIndex) {
+// Runs the technique for one light, timed alone (the time a frame reports). Among several
+// lights, a light the technique cannot take is named ("light 1: csm: needs a directional
+// light"), so that the user knows which to leave out with --light.
+LightPass runPass(const Technique& technique, const ShadowInputs& inputs, size_t lightIndex, size_t passCount) {
     LightPass pass;
     pass.light = lightIndex;
     const auto start = std::chrono::steady_clock::now();
-    pass.shadow = technique.run(inputs);
+    try {
+        pass.shadow = technique.run(inputs);
+    } catch (const std::invalid_argument& e) {
+        if (passCount == 1) throw;
+        throw std::invalid_argument("light " + std::to_string(lightIndex) + ": " + e.what());
+    }
     pass.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return pass;
 }
@@ -160,7 +168,7 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
                                         .progress = settings.progress,
                                         .casterScene = &casters.casters,
                                         .receiverLiftM = casters.instanceErrorM},
-                                       k));
+                                       k, passCount));
         frame.techniqueMs += frame.passes.back().techniqueMs;
     }
     frame.shadow = framedOutputs(frame.passes);
