@@ -38,6 +38,16 @@ std::string relativePath(const std::filesystem::path& path, const std::filesyste
     return normal(path).lexically_relative(normal(base)).generic_string();
 }
 
+std::vector<float> meanVisibility(const Frame& frame) {
+    if (frame.passes.size() <= 1) return frame.shadow.visibility;
+    std::vector<float> mean(frame.gbuffer.pixelCount(), 0.0f);
+    for (const LightPass& pass : frame.passes) {
+        for (size_t k = 0; k < mean.size(); ++k) mean[k] += pass.shadow.visibility[k];
+    }
+    for (float& v : mean) v /= float(frame.passes.size());
+    return mean;
+}
+
 FrameImages writeFramePictures(const std::filesystem::path& base, const std::filesystem::path& folder,
                                const std::string& name, const Frame& frame, const ImageChannels* reference,
                                const ToneMapOptions& tone) {
@@ -54,7 +64,7 @@ FrameImages writeFramePictures(const std::filesystem::path& base, const std::fil
         images.errorMap = write("error-map", errorMapImage(*reference, scoredImage(frame), frame.radiance,
                                                           scoredChannel(frame.output)));
     if (frame.output == TechniqueOutput::Visibility)
-        images.visibility = write("visibility", greyImage(frame.shadow.visibility, 0.0f, 1.0f));
+        images.visibility = write("visibility", greyImage(meanVisibility(frame), 0.0f, 1.0f));
     return images;
 }
 

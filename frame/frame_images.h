@@ -18,11 +18,15 @@ namespace shadowlab {
 struct FrameImages {
     std::string image;                       // tone-mapped sRGB PNG (writeFramePictures' tone)
     std::string errorMap;                    // errorMapImage() against the reference
-    std::string visibility;                  // V, 0 black to 1 white (visibility techniques)
+    std::string visibility;                  // V, 0 black to 1 white (visibility techniques; meanVisibility())
     std::string referenceImage, referenceVisibility;   // the same of the reference
     std::vector<std::string> debugBuffers;   // the PNG and SVG pictures, by name
     bool empty() const;
 };
+
+// The V a picture shows: the light's, or with several lights their mean, in the order of
+// the lights (each light's V is in the frame's EXR, conventions.md).
+std::vector<float> meanVisibility(const Frame& frame);
 
 // Writes FOLDER/NAME-image.png (tone mapped with `tone`), FOLDER/NAME-error-map.png if
 // `reference` is given (the frame's scoredImage() against it) and, for a visibility frame,

@@ -29,6 +29,7 @@ std::string point(const glm::vec3& v) {
 
 Json overridesJson(const SceneOverrides& o) {
     Json j = Json::object();
+    if (o.light) j["light"] = *o.light;
     if (o.width) j["width"] = *o.width;
     if (o.height) j["height"] = *o.height;
     if (o.eye) j["eye"] = xyz(*o.eye);
@@ -41,6 +42,7 @@ Json overridesJson(const SceneOverrides& o) {
 
 SceneOverrides readOverrides(const Json& j) {
     SceneOverrides o;
+    readOptional(j, "light", o.light);
     readOptional(j, "width", o.width);
     readOptional(j, "height", o.height);
     readOptional(j, "eye", o.eye);
@@ -54,6 +56,7 @@ SceneOverrides readOverrides(const Json& j) {
 std::string describeOverrides(const SceneOverrides& o) {
     std::ostringstream text;
     const auto add = [&](const std::string& part) { text << (text.tellp() > 0 ? ", " : "") << part; };
+    if (o.light) add("light " + std::to_string(*o.light) + " alone");
     if (o.width || o.height)
         add((o.width ? std::to_string(*o.width) : "its") + " x " + (o.height ? std::to_string(*o.height) : "its") + " pixels");
     if (o.eye) add("eye at " + point(*o.eye));

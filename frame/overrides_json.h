@@ -16,7 +16,7 @@ namespace shadowlab {
 // A position as its JSON array [x, y, z], as the overrides and a fly-through's frames write it.
 inline std::array<float, 3> xyz(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
-// Only the overrides given, so that none writes {}: "width", "height", "eye", "target",
+// Only the overrides given, so that none writes {}: "light", "width", "height", "eye", "target",
 // "fovy", "light_position", "light_radius".
 nlohmann::ordered_json overridesJson(const SceneOverrides& overrides);
 // Throws nlohmann's exceptions for a field of the wrong type.

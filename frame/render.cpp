@@ -43,9 +43,66 @@ CasterLevel prepareCasters(const PreparedScene& prepared, const TechniqueParams&
     return level;
 }
 
+// `--light N`: the scene keeps that light alone.
+void selectLight(Scene& scene, int index) {
+    const int count = int(scene.lights.size());
+    if (index >= 0 && index < count) {
+        scene.lights = {scene.lights[size_t(index)]};
+        return;
+    }
+    std::string lights = std::to_string(count) + (count == 1 ? " light (index 0)" : " lights");
+    if (count > 1) lights += " (indices 0.." + std::to_string(count - 1) + ")";
+    throw std::invalid_argument("--light " + std::to_string(index) + ": the scene has " + lights);
+}
+
+// Runs the technique for one light, timed alone (the time a frame reports). Among several
+// lights, a light the technique cannot take is named ("light 1: csm: needs a directional
+// light"), so that the user knows which to leave out with --light.
+LightPass runPass(const Technique& technique, const ShadowInputs& inputs, size_t lightIndex, size_t passCount) {
+    LightPass pass;
+    pass.light = lightIndex;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        pass.shadow = technique.run(inputs);
+    } catch (const std::invalid_argument& e) {
+        if (passCount == 1) throw;
+        throw std::invalid_argument("light " + std::to_string(lightIndex) + ": " + e.what());
+    }
+    pass.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return pass;
+}
+
+// Each light's intermediate buffers in a folder of its own, lightK/, when there are several.
+std::filesystem::path passDebugDir(const std::filesystem::path& debugDir, size_t passCount, size_t k) {
+    if (debugDir.empty() || passCount == 1) return debugDir;
+    return debugDir / ("light" + std::to_string(k));
+}
+
+// A frame of several passes: the first pass's buffers, and every pass's stats as lightK_NAME
+// with lightK_technique_ms its time (render.h, Frame::shadow).
+ShadowOutputs framedOutputs(const std::vector<LightPass>& passes) {
+    if (passes.size() == 1) return passes.front().shadow;
+    ShadowOutputs out = passes.front().shadow;
+    out.stats.clear();
+    for (const LightPass& pass : passes) {
+        const std::string prefix = "light" + std::to_string(pass.light) + "_";
+        out.stats.push_back({prefix + "technique_ms", pass.techniqueMs});
+        for (const TechniqueStat& s : pass.shadow.stats) out.stats.push_back({prefix + s.name, s.value});
+    }
+    return out;
+}
+
+std::vector<glm::vec3> shadePasses(const Scene& scene, const GBuffer& gbuffer, const std::vector<LightPass>& passes) {
+    std::vector<ShadedLight> lights;
+    for (const LightPass& pass : passes)
+        lights.push_back({pass.light, pass.shadow.visibility, pass.shadow.colouredVisibility});
+    return shade(scene, gbuffer, lights);
+}
+
 }  // namespace
 
 void applyOverrides(Scene& scene, const SceneOverrides& o) {
+    if (o.light) selectLight(scene, *o.light);
     Camera& c = scene.camera;
     if (o.width) c.width = *o.width;
     if (o.height) c.height = *o.height;
@@ -78,12 +135,11 @@ void applyOverrides(Scene& scene, const SceneOverrides& o) {
 
 Frame renderFrame(const PreparedScene& prepared, const Technique& technique, const FrameSettings& settings) {
     const Scene& scene = prepared.scene();
-    // A visibility technique shadows the scene's first light; a radiance technique lights the
+    // A visibility technique shadows each light of the scene; a radiance technique lights the
     // scene itself (an environment map, and any lights the scene has), so it needs none.
     if (scene.lights.empty() && technique.output == TechniqueOutput::Visibility)
         throw std::invalid_argument("the scene has no light to cast shadows");
     const Light noLight{.intensity = glm::vec3(0.0f)};
-    const Light& light = scene.lights.empty() ? noLight : scene.lights[0];
     const TechniqueParams params(technique.name, technique.params, settings.params);
     Frame frame;
     frame.output = technique.output;
@@ -97,23 +153,31 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     // simplification error (liftedReceivers); the frame keeps and shades the G-buffer.
     const bool lift = !casters.instanceErrorM.empty();
     const GBuffer liftedGBuffer = lift ? liftedReceivers(frame.gbuffer, prepared.world(), casters.instanceErrorM) : GBuffer{};
-    const auto start = std::chrono::steady_clock::now();
-    frame.shadow = technique.run({.prepared = prepared,
-                                  .gbuffer = lift ? liftedGBuffer : frame.gbuffer,
-                                  .light = light,
-                                  .simd = settings.simd,
-                                  .params = params,
-                                  .debugDir = settings.debugDir,
-                                  .progress = settings.progress,
-                                  .casterScene = &casters.casters,
-                                  .receiverLiftM = casters.instanceErrorM});
-    frame.techniqueMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    // A visibility technique runs once per light, in the scene's order; a radiance
+    // technique once, with the first light (or none).
+    const size_t passCount = technique.output == TechniqueOutput::Visibility ? scene.lights.size() : 1;
+    for (size_t k = 0; k < passCount; ++k) {
+        const Light& light = scene.lights.empty() ? noLight : scene.lights[k];
+        frame.passes.push_back(runPass(technique,
+                                       {.prepared = prepared,
+                                        .gbuffer = lift ? liftedGBuffer : frame.gbuffer,
+                                        .light = light,
+                                        .simd = settings.simd,
+                                        .params = params,
+                                        .debugDir = passDebugDir(settings.debugDir, passCount, k),
+                                        .progress = settings.progress,
+                                        .casterScene = &casters.casters,
+                                        .receiverLiftM = casters.instanceErrorM},
+                                       k, passCount));
+        frame.techniqueMs += frame.passes.back().techniqueMs;
+    }
+    frame.shadow = framedOutputs(frame.passes);
     if (hasCasterLod(technique)) {
         frame.shadow.stats.push_back({"caster_lod_triangles", double(casters.casters.world().triangles.size())});
         frame.shadow.stats.push_back({"caster_lod_error_m", casters.errorM()});
     }
     if (technique.output == TechniqueOutput::Visibility) {
-        frame.radiance = shade(scene, frame.gbuffer, 0, frame.shadow.visibility, frame.shadow.colouredVisibility);
+        frame.radiance = shadePasses(scene, frame.gbuffer, frame.passes);
     } else {
         if (frame.shadow.radiance.size() != frame.gbuffer.pixelCount())
             throw std::logic_error(technique.name + ": a radiance technique returned no radiance image");

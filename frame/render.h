@@ -1,5 +1,6 @@
 // One frame: the camera pass (visibility buffer), the G-buffer, the shadow technique's
-// visibility V, and shading. Used by `shadowlab render`, the golden tests and the bench.
+// visibility V of every light (or of one selected light), and shading that sums them
+// (docs/many-lights.md). Used by `shadowlab render`, the golden tests and the bench.
 #pragma once
 
 #include <filesystem>
@@ -19,27 +20,48 @@
 
 namespace shadowlab {
 
-// Command-line overrides of the scene's camera and first light.
+// Command-line overrides of the scene's camera and lights. The light overrides
+// (lightPosition, lightRadius) act on the first light: the selected one where `light` is
+// given.
 struct SceneOverrides {
+    // `--light N`: the scene keeps scene.lights[N] alone, so that a frame shows that light's
+    // shadow exactly as a scene with one light would; applied first, so the light overrides
+    // below act on it. None: every light (docs/many-lights.md).
+    std::optional<int> light;
     std::optional<int> width, height;
     std::optional<glm::vec3> eye, target, lightPosition;
     std::optional<float> fovyDeg;
     std::optional<float> lightRadius;   // the first light's disk radius, m
 };
 
-// Applies the overrides; throws std::invalid_argument for a size outside 1..8192, a fovy
-// outside (0, 180), a non-finite vector, an eye equal to the target or a viewing direction
+// Applies the overrides; throws std::invalid_argument for a light index outside the
+// scene's lights, a size outside 1..8192, a fovy outside (0, 180), a non-finite vector, an eye equal to the target or a viewing direction
 // parallel to the camera's up (the scene file's rule, viewFrameProblem), or a light radius
 // that is not > 0 (and finite) or whose first light is not a disk, or a light position for
 // a directional first light (which has none).
 void applyOverrides(Scene& scene, const SceneOverrides& overrides);
 
+// One light's pass of a frame: the technique run with ShadowInputs::light that light.
+struct LightPass {
+    size_t light = 0;           // index in scene.lights
+    ShadowOutputs shadow;       // its V (and stencil, coloured V) and its stats
+    double techniqueMs = 0.0;   // wall time of the technique for this light
+};
+
 struct Frame {
     GBuffer gbuffer;
+    // With one pass, that pass's outputs (a copy of passes[0].shadow), as a single-light
+    // frame always had them. With several, the first pass's buffers, and as stats every
+    // pass's, named lightK_NAME for scene.lights[K], with lightK_technique_ms its time
+    // (docs/many-lights.md); read passes for the others' V.
     ShadowOutputs shadow;
+    // Every light of the scene, in the order of scene.lights (`--light N` leaves the scene
+    // one, SceneOverrides::light). A radiance technique lights the scene itself and runs
+    // once: one pass, with light 0 (or no light, for a scene without lights).
+    std::vector<LightPass> passes;
     TechniqueOutput output = TechniqueOutput::Visibility;   // the technique's
-    std::vector<glm::vec3> radiance;   // linear, row-major: V shaded, or the technique's own
-    double techniqueMs = 0.0;          // wall time of the technique alone
+    std::vector<glm::vec3> radiance;   // linear, row-major: the passes' V shaded, or the technique's own
+    double techniqueMs = 0.0;          // wall time of the technique alone, the sum over the passes
     // Scene preparation this frame did (Technique::prepare: the edge adjacency or an
     // environment's tables, on the first frame of a technique that reads them), outside
     // techniqueMs.

@@ -9,12 +9,48 @@
 namespace shadowlab {
 namespace {
 
+void requireLights(const ImageChannels& test, const std::vector<std::string>& lights) {
+    for (const std::string& name : lights) {
+        if (!test.find(name))
+            throw std::invalid_argument("the test image has no " + name + " channel: a frame is scored against a reference of the same lights");
+    }
+}
+
 // Half of the sRGB code: marks in full colour stand out over any grey.
 uint8_t dimmedGrey(const glm::vec3& radiance) {
     return uint8_t(toSrgb8(luminance(toneMap(radiance, {}))) / 2);
 }
 
+// One channel of `count` lights' V images stacked top to bottom, with their hit channel
+// repeated: the image scoreImage() scores several lights on.
+ImageChannels stackedLights(const ImageChannels& image, const std::vector<std::string>& channels) {
+    ImageChannels stacked;
+    stacked.width = image.width;
+    stacked.height = image.height * int(channels.size());
+    std::vector<float> hit, V;
+    for (const std::string& name : channels) {
+        const std::vector<float>& h = image.at(channel::hit);
+        const std::vector<float>& v = image.at(name);
+        hit.insert(hit.end(), h.begin(), h.end());
+        V.insert(V.end(), v.begin(), v.end());
+    }
+    stacked.set(channel::hit, std::move(hit));
+    stacked.set(channel::V, std::move(V));
+    return stacked;
+}
+
 }  // namespace
+
+std::string visibilityChannel(size_t light, size_t lightCount) {
+    return lightCount == 1 ? std::string(channel::V) : "light" + std::to_string(light) + "." + channel::V;
+}
+
+std::vector<std::string> visibilityChannels(const ImageChannels& image) {
+    if (image.find(channel::V)) return {channel::V};
+    std::vector<std::string> names;
+    while (image.find(visibilityChannel(names.size(), 2))) names.push_back(visibilityChannel(names.size(), 2));
+    return names;
+}
 
 const char* scoredChannel(TechniqueOutput output) {
     return output == TechniqueOutput::Visibility ? channel::V : channel::Y;
@@ -26,7 +62,8 @@ ImageChannels scoredImage(const Frame& frame) {
     image.height = frame.gbuffer.height;
     image.set(channel::hit, std::vector<float>(frame.gbuffer.hit.begin(), frame.gbuffer.hit.end()));
     if (frame.output == TechniqueOutput::Visibility) {
-        image.set(channel::V, frame.shadow.visibility);
+        for (const LightPass& pass : frame.passes)
+            image.set(visibilityChannel(pass.light, frame.passes.size()), pass.shadow.visibility);
     } else {
         std::vector<float> Y(frame.radiance.size()), display(frame.radiance.size());
         for (size_t k = 0; k < Y.size(); ++k) {
@@ -53,6 +90,13 @@ ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLe
 }
 
 ErrorFigures scoreImage(const ImageChannels& reference, const ImageChannels& test, TechniqueOutput output) {
+    if (output == TechniqueOutput::Visibility) {
+        const std::vector<std::string> lights = visibilityChannels(reference);
+        if (lights.size() > 1) {
+            requireLights(test, lights);
+            return compareImages(stackedLights(reference, lights), stackedLights(test, lights));
+        }
+    }
     CompareOptions options;
     // Assigned from a std::string: GCC 12 warns falsely (-Wrestrict) on assigning the char*.
     options.channel = std::string(scoredChannel(output));
@@ -70,6 +114,19 @@ ErrorFigures scoreImage(const ImageChannels& reference, const ImageChannels& tes
     return figures;
 }
 
+std::vector<ErrorFigures> scoreLights(const ImageChannels& reference, const ImageChannels& test) {
+    const std::vector<std::string> lights = visibilityChannels(reference);
+    if (lights.size() <= 1) return {scoreImage(reference, test, TechniqueOutput::Visibility)};
+    requireLights(test, lights);
+    std::vector<ErrorFigures> figures;
+    for (const std::string& name : lights) {
+        CompareOptions options;
+        options.channel = name;
+        figures.push_back(compareImages(reference, test, options));
+    }
+    return figures;
+}
+
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {
     return scoreImage(reference, scoredImage(frame), frame.output);
 }
@@ -78,17 +135,30 @@ std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageCh
                                    const std::vector<glm::vec3>& shaded, const std::string& scored) {
     const CompareOptions options;
     const std::vector<float>& hit = reference.at(channel::hit);
-    const std::vector<float>& referenceV = reference.at(scored);
-    const std::vector<float>& testV = test.at(scored);
-    if (testV.size() != hit.size() || shaded.size() != hit.size())
+    const std::vector<std::string> channels =
+        scored == channel::V && !reference.find(channel::V) ? visibilityChannels(reference) : std::vector{scored};
+    std::vector<const std::vector<float>*> referenceV, testV;
+    for (const std::string& name : channels) {
+        referenceV.push_back(&reference.at(name));
+        testV.push_back(&test.at(name));
+        if (testV.back()->size() != hit.size())
+            throw std::invalid_argument("error map: the reference, the test and the shaded image differ in size");
+    }
+    if (shaded.size() != hit.size())
         throw std::invalid_argument("error map: the reference, the test and the shaded image differ in size");
     std::vector<uint8_t> rgb(3 * shaded.size());
     for (size_t k = 0; k < shaded.size(); ++k) {
+        bool falseShadow = false, falseLight = false;
+        for (size_t c = 0; c < channels.size(); ++c) {
+            const bool referenceLit = (*referenceV[c])[k] >= options.litThreshold;
+            const bool testLit = (*testV[c])[k] >= options.litThreshold;
+            falseShadow = falseShadow || (referenceLit && !testLit);
+            falseLight = falseLight || (!referenceLit && testLit);
+        }
         std::array<uint8_t, 3> colour;
         colour.fill(dimmedGrey(shaded[k]));
-        const bool referenceLit = referenceV[k] >= options.litThreshold, testLit = testV[k] >= options.litThreshold;
-        if (hit[k] == 1.0f && referenceLit && !testLit) colour = kFalseShadowColour;
-        if (hit[k] == 1.0f && !referenceLit && testLit) colour = kFalseLightColour;
+        if (hit[k] == 1.0f && falseShadow) colour = kFalseShadowColour;
+        if (hit[k] == 1.0f && falseLight) colour = kFalseLightColour;
         std::copy(colour.begin(), colour.end(), rgb.begin() + 3 * k);
     }
     return rgb;

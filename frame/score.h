@@ -20,7 +20,15 @@ namespace shadowlab {
 // The channel a technique's frames are scored on: V, or Y for radiance.
 const char* scoredChannel(TechniqueOutput output);
 
-// The channels a frame is scored on: hit (from its G-buffer) and scoredChannel(): V, or Y,
+// A light's V channel (conventions.md, "Buffers written to disk"): "V" in a frame of one
+// light, "lightK.V" for scene.lights[K] in a frame of several (an EXR layer per light).
+std::string visibilityChannel(size_t light, size_t lightCount);
+// The V channels an image holds, in the order of the lights: {"V"}, or "light0.V",
+// "light1.V", ... as far as they run without a gap; none if it has neither.
+std::vector<std::string> visibilityChannels(const ImageChannels& image);
+
+// The channels a frame is scored on: hit (from its G-buffer) and scoredChannel(): V (each
+// light's visibilityChannel() in a frame of several lights), or Y,
 // the Rec. 709 luminance of the frame's radiance, with kDisplayLuminance beside it, Y of the
 // radiance tone mapped for display (shading/tonemap.h, Reinhard at exposure 0).
 inline constexpr const char* kDisplayLuminance = "Y.display";
@@ -36,10 +44,17 @@ ImageChannels renderReferenceImage(const PreparedScene& prepared, raster::SimdLe
 
 // The scored channel of `test` (the scoredImage() of a frame whose technique gives `output`)
 // against the reference's (compareImages with the default options otherwise); for radiance,
-// also the RMS of the display luminance (ErrorFigures::rmsDisplay). Throws
+// also the RMS of the display luminance (ErrorFigures::rmsDisplay). With several lights the
+// figures are over every (pixel, light) pair: the lights' V images stacked into one, so
+// each light's hit pixels count once per light, and a figure with one light is that
+// light's (docs/many-lights.md; scoreLights() gives each light's own). Throws
 // std::invalid_argument if the reference lacks that channel (a radiance technique scored
 // against a visibility reference, or the other way round).
 ErrorFigures scoreImage(const ImageChannels& reference, const ImageChannels& test, TechniqueOutput output);
+// Each light's figures, V against V, in the order of visibilityChannels(reference); one
+// entry (scoreImage's) for a frame of one light. Throws std::invalid_argument as
+// scoreImage does, or if `test` lacks one of the reference's lights.
+std::vector<ErrorFigures> scoreLights(const ImageChannels& reference, const ImageChannels& test);
 // scoreImage() of the frame's scoredImage(), for a caller that needs no more of it.
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame);
 
@@ -52,7 +67,8 @@ inline constexpr std::array<uint8_t, 3> kFalseLightColour{0, 160, 255};   // lea
 // (the technique's image, linear radiance) encoded as sRGB and halved, so that the
 // scene stays readable behind the marks; over it, pixels the technique misclassifies
 // (CompareOptions::litThreshold, over the reference's hit pixels) in kFalseShadowColour
-// or kFalseLightColour.
+// or kFalseLightColour; with several lights' V (visibilityChannels()), a pixel any light
+// misclassifies, false light drawn over false shadow.
 std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,
                                    const std::vector<glm::vec3>& shaded, const std::string& scored = channel::V);
 

@@ -177,7 +177,11 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
         uint64_t voxels = 0;
         for (const JsonField& volume : volumes->elements()) scene.volumes.push_back(readVolume(volume, voxels));
     }
-    for (const JsonField& light : object["lights"].elements()) scene.lights.push_back(readLight(light, directory));
+    const std::vector<JsonField> lights = object["lights"].elements();
+    if (lights.size() > kMaxSceneLights)
+        object["lights"].fail("has " + std::to_string(lights.size()) + " lights, more than the limit of " +
+                              std::to_string(kMaxSceneLights));
+    for (const JsonField& light : lights) scene.lights.push_back(readLight(light, directory));
     scene.camera = readCamera(object["camera"]);
     if (const auto flythrough = object.optional("flythrough"))
         scene.flythrough = readCameraPath(*flythrough, scene.lights);

@@ -16,7 +16,11 @@ inline constexpr uint64_t kMaxSceneVoxels = uint64_t(1) << 24;
 inline constexpr uint64_t kMaxInstances = uint64_t(1) << 16;        // after "repeat"
 inline constexpr uint64_t kMaxFileBytes = uint64_t(1) << 31;        // any scene, mesh or image file read
 inline constexpr int kMaxJsonDepth = 64;                            // nesting of a scene file
-inline constexpr size_t kMaxImageChannels = 16;                     // channels of an EXR read (compare)
+// Lights of a scene: a frame keeps a visibility buffer per light (docs/many-lights.md).
+inline constexpr size_t kMaxSceneLights = 16;
+// Channels of an EXR read (compare): the most `render --aov` writes, its 15 fixed channels
+// and a V per light.
+inline constexpr size_t kMaxImageChannels = 16 + kMaxSceneLights;
 inline constexpr size_t kMaxPathKeyframes = size_t(1) << 16;         // of a fly-through's camera path
 inline constexpr int kMaxPathFrames = 100000;                        // frames a path is sampled at
 // A path's CSV file: its most keyframes at 10 numbers of 100 characters, comments aside.

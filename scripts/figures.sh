@@ -9,15 +9,15 @@
 # fly-throughs; run nothing else meanwhile (times are medians, but a busy machine still
 # moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|report ...]
-#        (default: all seventeen, report last)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|lights|report ...]
+#        (default: all eighteen, report last)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough report}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough lights report}
 
 for part in $parts; do
   case $part in
@@ -343,6 +343,30 @@ EOF
       cp $f/sphere-box-flythrough-$(echo $soft | tr , +)$plot docs/images/flythrough-sphere-box-soft$plot
     done
     ;;
+  lights)
+    # docs/many-lights.md: a frame of three lights, each light's time; then its point light
+    # alone through six cube faces at four positions, the faces no visible receiver lies in
+    # culled (cube-faces=visible) and drawn (all).
+    scene=assets/scenes/many-lights/three-lights.json
+    l=$out/lights
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    $app sweep $scene --images --technique shadow-map,izb,shadow-volume,reference --threads 2 --runs 9 --warmup 2 --out $l > /dev/null
+    python3 $table $l/three-lights-shadow-map+izb+shadow-volume+reference.csv hard
+    python3 -c 'import csv, sys
+for r in csv.DictReader(open(sys.argv[1])):
+    print(r["technique"], *("light%d %.1f ms" % (k, float(r["light%d_technique_ms" % k])) for k in range(3)))' \
+      $l/three-lights-shadow-map+izb+shadow-volume+reference.csv
+    $app render $scene --technique reference -o docs/images/many-lights-three-lights.png > /dev/null
+    $app render $scene --technique reference --light 0 -o docs/images/many-lights-point-light.png > /dev/null
+    for position in -1.2,0.9,1.4 0.5,3,3.5 0,2,12 0,0.5,-4; do
+      $app sweep $scene --technique shadow-map --light 0 --light-pos $position --param cube=always \
+        --param cube-faces=visible,all --threads 2 --runs 15 --warmup 3 --out $l/cube-$position > /dev/null
+      python3 -c 'import csv, sys
+visible, every = csv.DictReader(open(sys.argv[1]))
+print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all six," % (float(visible["median_ms"]), float(every["median_ms"])),
+      "same V" if visible["rms"] == every["rms"] else "V DIFFERS")' $l/cube-$position/three-lights-shadow-map.csv $position
+    done
+    ;;
   report)
     # Every sweep's JSON under out/figures (the files with a grid of reference fingerprints;
     # bench and composite JSON are not sweeps) as one site: a page per scene and per setting.
@@ -350,6 +374,6 @@ EOF
     $app report $sweeps --out out/report
     ;;
   *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
-       "environment, lod, differential, screen, volumetric, flythrough, report)" >&2; exit 2 ;;
+       "environment, lod, differential, screen, volumetric, flythrough, lights, report)" >&2; exit 2 ;;
   esac
 done

@@ -111,7 +111,7 @@ void checkExrSize(const fs::path& path, int64_t width, int64_t height, size_t ch
 }
 
 // Tiles: more than any writer uses (32 to 256 are usual), and small enough that a tile of
-// 16 float channels stays within 256 MB, the size of one channel of the largest image.
+// 32 float channels stays within 512 MB, two channels of the largest image.
 constexpr int64_t kMaxExrTileSide = 2048;
 
 // Names are at most 31 bytes, or 255 in a file with the long-names flag (version bit 10);

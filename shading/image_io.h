@@ -66,7 +66,7 @@ void setGBuffer(ImageChannels& image, const GBuffer& gbuffer);
 void writeExr(const std::filesystem::path& path, const ImageChannels& image);
 // Every channel of the file, converted to float. Throws std::runtime_error naming the file
 // for a file it cannot read, or one larger than the images shadowlab writes (more than
-// 8192 pixels on a side or 16 channels), before allocating anything.
+// 8192 pixels on a side or kMaxImageChannels, 32, channels), before allocating anything.
 ImageChannels readExr(const std::filesystem::path& path);
 // Only the named channels; throws std::runtime_error if one is missing.
 ImageChannels readExr(const std::filesystem::path& path, const std::vector<std::string>& names);

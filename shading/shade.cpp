@@ -1,4 +1,4 @@
-// Deferred shading: ambient plus one light, with visibility supplied by a shadow technique
+// Deferred shading: ambient plus the frame's lights, with visibility supplied by a shadow technique
 // (or by the exact reference, shadows/reference/reference.h).
 //
 // The ambient term treats Environment::ambient as a constant radiance arriving from every
@@ -62,8 +62,7 @@ glm::vec3 brdf(const Material& material, const glm::vec3& N, const glm::vec3& wi
 
 namespace {
 
-glm::vec3 shadePixel(const Scene& scene, const Light& light, const GBuffer& g, size_t index,
-                     const glm::vec3& visibility) {
+glm::vec3 shadePixel(const Scene& scene, std::span<const ShadedLight> lights, const GBuffer& g, size_t index) {
     if (!g.hit[index]) {
         return glm::vec3(0.0f);
     }
@@ -74,47 +73,55 @@ glm::vec3 shadePixel(const Scene& scene, const Light& light, const GBuffer& g, s
     const Material& material = scene.materials[g.material[index]];
     const glm::vec3 P = g.position[index];
     const glm::vec3 N = g.normal[index];
-    const glm::vec3 ambient = scene.environment.ambient * material.albedo;
-
-    const LightArrival arrival = lightArrival(light, P);
-    const float cosIncidence = glm::dot(N, arrival.toLight);
-    if (cosIncidence <= 0.0f) {
-        return ambient;  // the light is behind the surface
+    glm::vec3 radiance = scene.environment.ambient * material.albedo;
+    for (const ShadedLight& shaded : lights) {
+        const LightArrival arrival = lightArrival(scene.lights[shaded.light], P);
+        const float cosIncidence = glm::dot(N, arrival.toLight);
+        if (cosIncidence <= 0.0f) continue;   // the light is behind the surface
+        const glm::vec3 wo = glm::normalize(scene.camera.eye - P);
+        const glm::vec3 direct = brdf(material, N, arrival.toLight, wo) * arrival.irradiance * cosIncidence;
+        const glm::vec3 visibility = shaded.colouredV.empty() ? glm::vec3(shaded.V[index]) : shaded.colouredV[index];
+        radiance += visibility * direct;
     }
-    const glm::vec3 wo = glm::normalize(scene.camera.eye - P);
-    const glm::vec3 direct = brdf(material, N, arrival.toLight, wo) * arrival.irradiance * cosIncidence;
-    return ambient + visibility * direct;
+    return radiance;
+}
+
+void requireShadeable(const Scene& scene, const GBuffer& gbuffer, const ShadedLight& shaded) {
+    if (shaded.light >= scene.lights.size()) {
+        throw std::out_of_range("shade: light index " + std::to_string(shaded.light) + " but the scene has " +
+                                std::to_string(scene.lights.size()) + " lights");
+    }
+    if (shaded.V.size() != gbuffer.pixelCount()) {
+        throw std::invalid_argument("shade: visibility buffer has " + std::to_string(shaded.V.size()) +
+                                    " entries, G-buffer has " + std::to_string(gbuffer.pixelCount()));
+    }
+    if (!shaded.colouredV.empty() && shaded.colouredV.size() != shaded.V.size()) {
+        throw std::invalid_argument("shade: the coloured visibility has " + std::to_string(shaded.colouredV.size()) +
+                                    " entries, V has " + std::to_string(shaded.V.size()));
+    }
 }
 
 }  // namespace
 
-std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, size_t lightIndex,
-                             const std::vector<float>& V, std::span<const glm::vec3> colouredV) {
+std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, std::span<const ShadedLight> lights) {
     requireConsistent(gbuffer, "shade");
-    if (lightIndex >= scene.lights.size()) {
-        throw std::out_of_range("shade: light index " + std::to_string(lightIndex) + " but the scene has " +
-                                std::to_string(scene.lights.size()) + " lights");
-    }
-    if (V.size() != gbuffer.pixelCount()) {
-        throw std::invalid_argument("shade: visibility buffer has " + std::to_string(V.size()) +
-                                    " entries, G-buffer has " + std::to_string(gbuffer.pixelCount()));
-    }
-    if (!colouredV.empty() && colouredV.size() != V.size()) {
-        throw std::invalid_argument("shade: the coloured visibility has " + std::to_string(colouredV.size()) +
-                                    " entries, V has " + std::to_string(V.size()));
-    }
-    const Light& light = scene.lights[lightIndex];
+    for (const ShadedLight& shaded : lights) requireShadeable(scene, gbuffer, shaded);
     std::vector<glm::vec3> radiance(gbuffer.pixelCount());
     tbb::parallel_for(tbb::blocked_range<int>(0, gbuffer.height), [&](const tbb::blocked_range<int>& rows) {
         for (int j = rows.begin(); j != rows.end(); ++j) {
             for (int i = 0; i < gbuffer.width; ++i) {
                 const size_t index = gbuffer.index(i, j);
-                const glm::vec3 visibility = colouredV.empty() ? glm::vec3(V[index]) : colouredV[index];
-                radiance[index] = shadePixel(scene, light, gbuffer, index, visibility);
+                radiance[index] = shadePixel(scene, lights, gbuffer, index);
             }
         }
     });
     return radiance;
+}
+
+std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, size_t lightIndex,
+                             const std::vector<float>& V, std::span<const glm::vec3> colouredV) {
+    const ShadedLight one{lightIndex, V, colouredV};
+    return shade(scene, gbuffer, std::span(&one, 1));
 }
 
 }  // namespace shadowlab

@@ -1,4 +1,4 @@
-// Deferred shading of a G-buffer with one selected light and its visibility buffer.
+// Deferred shading of a G-buffer with the lights of a frame and their visibility buffers.
 #pragma once
 
 #include <cstddef>
@@ -12,17 +12,28 @@
 
 namespace shadowlab {
 
+// One light of a shading pass: scene.lights[light] and its visibility V per pixel (per
+// channel where the coloured visibility colouredV is given: the light a tinted caster lets
+// through, conventions.md).
+struct ShadedLight {
+    size_t light = 0;
+    std::span<const float> V;
+    std::span<const glm::vec3> colouredV = {};
+};
+
 // Outgoing radiance towards the camera for every pixel (linear, W/(m^2 sr)):
-//   L = ambient * albedo + V * f(wi, wo) * E * max(0, N.wi)
-// with E and wi from lightArrival() for scene.lights[lightIndex] (shading/lights.h), f the
-// material's BRDF (Lambert, or normalised Blinn-Phong) and V[pixel] the visibility of that
-// light (per channel where the coloured visibility colouredV is given: the light a tinted
-// caster lets through, conventions.md); the viewer (for wo) is scene.camera.eye, the camera
-// the G-buffer was built with.
-// Only the selected light is shaded: the other lights of the scene are ignored, so
-// the image shows exactly the shadow being studied. Background pixels (hit = 0) get 0.
-// Throws std::out_of_range for a bad lightIndex or material index and
-// std::invalid_argument if V or a G-buffer array does not have one entry per pixel.
+//   L = ambient * albedo + sum_k V_k * f(wi_k, wo) * E_k * max(0, N.wi_k)
+// with E_k and wi_k from lightArrival() for scene.lights[lights[k].light] (shading/lights.h),
+// f the material's BRDF and V_k that light's visibility; the viewer (for wo) is
+// scene.camera.eye, the camera the G-buffer was built with. The sum runs in the order of
+// `lights`, starting from the ambient term, ((ambient + t_0) + t_1) + ..., a light behind
+// the surface adding nothing, so the bytes are fixed (docs/many-lights.md); one light gives
+// ambient + t_0. Lights not listed are not shaded, so an image can show exactly the shadows
+// being studied. Background pixels (hit = 0) get 0.
+// Throws std::out_of_range for a bad light or material index and std::invalid_argument if a
+// V or a G-buffer array does not have one entry per pixel.
+std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, std::span<const ShadedLight> lights);
+// One light: shade(scene, gbuffer, {{lightIndex, V, colouredV}}).
 std::vector<glm::vec3> shade(const Scene& scene, const GBuffer& gbuffer, size_t lightIndex,
                              const std::vector<float>& V, std::span<const glm::vec3> colouredV = {});
 

@@ -229,6 +229,14 @@ LightView perspectiveView(const Light& light, const glm::dvec3& axis, const GBuf
     return view;
 }
 
+// The distance from `from` to the farthest vertex, which no depth in a view from there
+// exceeds; at least 1 m, so that a frustum has depth.
+double farthestVertex(const WorldGeometry& world, const glm::dvec3& from) {
+    double farthest = 1.0;
+    for (const glm::vec3& p : world.positions) farthest = std::max(farthest, glm::length(glm::dvec3(p) - from));
+    return farthest;
+}
+
 }  // namespace
 
 LightView fitLightView(const Light& light, const GBuffer& receivers, const WorldGeometry& world,
@@ -275,7 +283,10 @@ bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const W
     };
     Bounds b = overServedPixels(light, receivers, Bounds{}, add, merged);   // a point light serves every surface
     b.x0 = b.y0 = -1.0, b.x1 = b.y1 = 1.0;
-    if (!(b.farthest > 0.0)) return false;
+    if (!(b.farthest > 0.0)) {
+        if (options.cullCubeFaces) return false;
+        b.nearest = b.farthest = farthestVertex(world, apex);
+    }
     fitDepthRange(view, b, world, options);
     view.clipFromView = glm::frustumRH_NO(-view.zNear, view.zNear, -view.zNear, view.zNear, view.zNear, view.zFar);
     return true;

@@ -38,6 +38,10 @@ struct LightFitOptions {
     glm::dvec3 axis{0.0};
     // The receivers' bounds kernel (receiver_bounds.h); every level gives the same view.
     raster::SimdLevel simd = raster::bestSimdLevel();
+    // Cube faces (fitCubeFace): true culls a face whose pyramid holds no visible receiver;
+    // false fits it anyway, to the geometry around the light (a comparison for tests and
+    // measurements: no receiver looks such a face up, so V is the same, bit for bit).
+    bool cullCubeFaces = true;
 };
 
 // Throws std::invalid_argument when there are no receivers, the light is an area light
@@ -47,7 +51,9 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
 
 // Face k (0..5: +x, -x, +y, -y, +z, -z) of a cube around a point light: a 90-degree
 // square frustum, with near and far fitted to the receivers and geometry inside it.
-// Returns false when no receiver lies in the face.
+// Returns false when no receiver lies in the face (culled: its map could shadow no pixel
+// the camera sees, since a receiver looks up only the face whose pyramid holds it), unless
+// options.cullCubeFaces is false: such a face then reaches the farthest vertex of `world`.
 bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const WorldGeometry& world,
                  const LightFitOptions& options, LightView& view);
 

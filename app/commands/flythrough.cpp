@@ -60,6 +60,7 @@ void addFlythroughCommand(CLI::App& command) {
     f->add_option("--frames", a.options.frames, "frames sampled along the path (default: the path's, else " +
                   std::to_string(kDefaultPathFrames) + ")")->check(CLI::Range(2, kMaxPathFrames));
     addSizeOptions(f, a.options.overrides);
+    addLightSelection(f, a.options.overrides);
     f->add_option("--threads", a.options.threads, "worker threads (0: all cores)")
         ->capture_default_str()
         ->check(CLI::Range(0, kMaxThreads));

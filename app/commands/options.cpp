@@ -43,9 +43,17 @@ void addSizeOptions(CLI::App* cmd, SceneOverrides& overrides) {
     cmd->add_option("--height", overrides.height, "image height in pixels")->check(CLI::Range(1, raster::kMaxViewport));
 }
 
+void addLightSelection(CLI::App* cmd, SceneOverrides& overrides) {
+    cmd->add_option("--light", overrides.light,
+                    "shadow and shade only the scene's light N (0: the first); default: every light of the scene")
+        ->type_name("N");
+}
+
 void addLightOptions(CLI::App* cmd, SceneOverrides& overrides) {
-    addVec3Option(cmd, "--light-pos", overrides.lightPosition, "position (centre) of the scene's first light");
-    cmd->add_option("--light-radius", overrides.lightRadius, "radius of the scene's first light, which must be a disk (m, > 0)");
+    addLightSelection(cmd, overrides);
+    addVec3Option(cmd, "--light-pos", overrides.lightPosition, "position (centre) of the scene's first light (the --light one)");
+    cmd->add_option("--light-radius", overrides.lightRadius,
+                    "radius of the scene's first light (the --light one), which must be a disk (m, > 0)");
 }
 
 void addSimdOption(CLI::App* cmd, std::string& simd) {

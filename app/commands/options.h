@@ -26,7 +26,11 @@ void addOptionalText(CLI::App* cmd, const std::string& name, std::optional<std::
 // --width and --height of render, sweep and flythrough; applyOverrides() applies them.
 void addSizeOptions(CLI::App* cmd, SceneOverrides& overrides);
 
-// --light-pos and --light-radius, shared by render and sweep; applyOverrides() checks them.
+// --light N, the one light of the scene a frame shadows and shades (render, sweep,
+// flythrough); applyOverrides() checks it.
+void addLightSelection(CLI::App* cmd, SceneOverrides& overrides);
+
+// --light, --light-pos and --light-radius, shared by render and sweep; applyOverrides() checks them.
 void addLightOptions(CLI::App* cmd, SceneOverrides& overrides);
 
 void addSimdOption(CLI::App* cmd, std::string& simd);

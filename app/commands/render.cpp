@@ -55,7 +55,7 @@ FrameImages scoreImages(const RenderArgs& a, const std::string& technique, const
     // The technique's own V beside the reference's, as a sweep's --images shows it.
     if (frame.output == TechniqueOutput::Visibility) {
         const std::filesystem::path visibility = base / (json.stem().string() + "-visibility.png");
-        writePng(visibility, frame.gbuffer.width, frame.gbuffer.height, greyImage(frame.shadow.visibility, 0.0f, 1.0f));
+        writePng(visibility, frame.gbuffer.width, frame.gbuffer.height, greyImage(meanVisibility(frame), 0.0f, 1.0f));
         images.visibility = relativePath(visibility, base);
     }
     images.referenceImage = reference.image;
@@ -75,12 +75,19 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
     const ErrorFigures figures = scoreImage(reference, test, frame.output);
     writePng(a.errorMap, scene.camera.width, scene.camera.height,
              errorMapImage(reference, test, frame.radiance, scoredChannel(frame.output)));
-    std::cout << "against " << referenceName << "\n" << formatText(figures) << "error map: " << a.errorMap
-              << " (red: false shadow, blue: false light)\n";
+    const bool severalLights = frame.passes.size() > 1;
+    const std::vector<ErrorFigures> lightFigures = severalLights ? scoreLights(reference, test) : std::vector<ErrorFigures>{};
+    std::cout << "against " << referenceName << (severalLights ? ", every light" : "") << "\n" << formatText(figures);
+    for (size_t k = 0; k < lightFigures.size(); ++k) {
+        std::printf("light %zu: rms %.6g, misclassified %.4g%%\n", k, lightFigures[k].rms,
+                    lightFigures[k].pixels ? 100.0 * double(lightFigures[k].misclassified()) / double(lightFigures[k].pixels) : 0.0);
+    }
+    std::cout << "error map: " << a.errorMap << " (red: false shadow, blue: false light)\n";
     if (a.json.empty()) return;
     const TechniqueParams params(technique.name, technique.params, settings.params);
     writeTextFile(a.json, formatScoreJson(scene.name, technique.name, referenceName, params.values(), frame, figures,
-                                          scoreImages(a, technique.name, frame, referenceFrame), a.overrides));
+                                          scoreImages(a, technique.name, frame, referenceFrame), a.overrides,
+                                          lightFigures));
 }
 
 void runRender(const RenderArgs& a) {
@@ -109,8 +116,13 @@ void runRender(const RenderArgs& a) {
         aov.width = w, aov.height = h;
         setRadiance(aov, frame.radiance);
         setGBuffer(aov, frame.gbuffer);
-        if (frame.output == TechniqueOutput::Visibility) aov.set(channel::V, frame.shadow.visibility);
-        if (!frame.shadow.stencil.empty()) aov.set(channel::stencil, frame.shadow.stencil);
+        if (frame.output == TechniqueOutput::Visibility) {
+            for (const LightPass& pass : frame.passes)
+                aov.set(visibilityChannel(pass.light, frame.passes.size()), pass.shadow.visibility);
+        }
+        // One light's stencil: a frame of several keeps V per light, within the channels
+        // an EXR reader accepts (conventions.md).
+        if (frame.passes.size() == 1 && !frame.shadow.stencil.empty()) aov.set(channel::stencil, frame.shadow.stencil);
         writeExr(a.aov, aov);
     }
     if (!a.errorMap.empty()) writeErrorMap(a, prepared, technique, settings, frame);

@@ -176,6 +176,10 @@ FlythroughResults runFlythrough(const FlythroughOptions& options) {
     const std::vector<SweepPlan> plans = planSweep(options.techniques, options.axes);
     Scene scene = loadScene(options.scene);
     applyOverrides(scene, options.overrides);
+    // Flicker is measured on one light's V, and a path moves one light.
+    if (scene.lights.size() > 1)
+        throw std::invalid_argument("flythrough: the scene has " + std::to_string(scene.lights.size()) +
+                                    " lights; flicker is measured on one light's V: give --light N");
     const CameraPath path = loadPath(options, scene);
     const int frames = options.frames ? options.frames : path.frames ? path.frames : kDefaultPathFrames;
     if (frames < 2) throw std::invalid_argument("flythrough: a path needs at least 2 frames; flicker compares each "

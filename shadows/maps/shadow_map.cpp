@@ -8,6 +8,8 @@
 // shadow maps") for a point light whose receivers surround it, or on request. A receiver
 // uses the face whose 90-degree pyramid holds it, the same test fitCubeFace fits with;
 // filter taps beyond a face's border read its border texels (no cross-face filtering).
+// A face no visible receiver lies in is not drawn (docs/many-lights.md, cube-face
+// culling); maps_count counts the faces drawn.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -57,8 +59,9 @@ LightMaps cubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSe
 
 // Stages light_view (fitting the frustum) and depth_map (drawing it).
 LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, bool forceCube, bool lispsm,
-                    StageTimer& timer) {
+                    bool cullCubeFaces, StageTimer& timer) {
     LightFitOptions options;
+    options.cullCubeFaces = cullCubeFaces;
     options.resolution = s.resolution;
     options.marginTexels = kernelRadiusTexels(s.filter) + 1.5;
     options.simd = in.simd;
@@ -147,6 +150,10 @@ const SettingsTable<ShadowMapTechniqueSettings>& shadowMapTechniqueSettingsTable
             .choice("cube", member(&S::alwaysCube),
                     {{"auto", false, "six faces when one frustum cannot hold the receivers"}, {"always", true}},
                     "point lights")
+            .choice("cube-faces", member(&S::cullCubeFaces),
+                    {{"visible", true, "only the faces whose pyramid holds a visible receiver"},
+                     {"all", false, "all six (to measure the culling; the same V)"}},
+                    "point lights")
             .choice("warp", member(&S::lispsm),
                     {{"none", false}, {"lispsm", true, "light space perspective shadow map"}}, "directional lights");
     return table;
@@ -164,7 +171,7 @@ ShadowOutputs runShadowMap(const ShadowInputs& in, const ShadowMapTechniqueSetti
     if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     StageTimer timer;
-    const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm, timer);
+    const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm, settings.cullCubeFaces, timer);
     ShadowLookup lookup = lookUp(in, light, lm, s);
     timer.lap("lookup");
     addStats(out, lm, s, lookup);

@@ -12,10 +12,11 @@ namespace shadowlab {
 struct ShadowMapTechniqueSettings {
     ShadowMapSettings map;
     bool alwaysCube = false;   // `cube=always`: six faces for a point light even where one frustum would do
+    bool cullCubeFaces = true; // `cube-faces=all`: false, draw even the faces no visible receiver lies in
     bool lispsm = false;       // `warp=lispsm`: LiSPSM for a directional light
 };
 
-// Its parameters: the map's, then `cube` and `warp`.
+// Its parameters: the map's, then `cube`, `cube-faces` and `warp`.
 const SettingsTable<ShadowMapTechniqueSettings>& shadowMapTechniqueSettingsTable();
 
 // `shadow-map` with typed settings, as another technique runs it per light (the environment

@@ -150,6 +150,22 @@ run render "$gltf/lit_mask.glb" --technique shadow-map --eye 0.3,0.5,3 --target 
 expect_png "$scratch/gltf.png"
 head -c 40 "$gltf/lit_mask.glb" > "$scratch/short.glb"
 expect_error "a .glb whose chunk lengths lie" render "$scratch/short.glb" "${tiny[@]}" -o "$scratch/x.png"
+# Many lights (docs/many-lights.md): --light N past the scene's lights is named; --light 0 of
+# a one-light scene writes the same bytes; a three-light frame writes V per light.
+three=$(dirname "${BASH_SOURCE[0]}")/../../assets/scenes/many-lights/three-lights.json
+expect_error "--light past the lights" render "$three" --light 3 "${tiny[@]}" -o "$scratch/x.png"
+grep -q -- "--light 3: the scene has 3 lights (indices 0..2)" "$err" || fail "--light 3's error does not name the lights: $(cat "$err")"
+expect_error "--light of a one-light scene" sweep sphere-box --technique none --light 1 --out "$scratch/sw"
+expect_error "flythrough of three lights" flythrough "$three" --technique shadow-map --out "$scratch/fly"
+run render sphere-box --technique shadow-map "${tiny[@]}" -o "$scratch/one.png" --aov "$scratch/one.exr"
+run render sphere-box --technique shadow-map --light 0 "${tiny[@]}" -o "$scratch/zero.png" --aov "$scratch/zero.exr"
+if [ "$rc" -eq 0 ] && cmp -s "$scratch/one.exr" "$scratch/zero.exr" && cmp -s "$scratch/one.png" "$scratch/zero.png"; then pass
+else fail "--light 0 of a one-light scene changed its files (rc $rc)"; fi
+run render "$three" --technique shadow-map "${tiny[@]}" --aov "$scratch/three.exr" --error-map "$scratch/three-err.png"
+if [ "$rc" -eq 0 ] && grep -q "light2_technique_ms" "$out" && grep -q "^light 2: rms" "$out"; then pass
+else fail "a three-light render printed no per-light time or figures (rc $rc): $(head -c 300 "$out")"; fi
+run compare "$scratch/three.exr" "$scratch/three.exr" --channel light2.V
+if [ "$rc" -eq 0 ]; then pass; else fail "the three-light EXR has no light2.V: $(cat "$err")"; fi
 expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
 maps=$(dirname "${BASH_SOURCE[0]}")/../../assets/environments
 expect_error "environment of a missing map" environment "$scratch/none.hdr"
