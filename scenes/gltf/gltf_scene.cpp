@@ -148,8 +148,13 @@ GltfModel parseGltfModel(const std::string& bytes, const std::string& path) {
     WorldCounts counts;
     for (const PlacedNode& placed : placeNodes(document)) {
         if (!builder.model.camera) builder.model.camera = readNodeCamera(document, placed.node, placed.worldFromNode);
-        if (const std::optional<Light> light = readNodeLight(document, placed.node, placed.worldFromNode))
+        if (const std::optional<Light> light = readNodeLight(document, placed.node, placed.worldFromNode)) {
+            // A frame keeps a V per light (docs/many-lights.md), so the file's lights are bounded as a scene file's.
+            if (builder.model.lights.size() == kMaxSceneLights)
+                document.fail("nodes[" + std::to_string(placed.node) + "].extensions.KHR_lights_punctual",
+                              "places more lights than a scene may hold (" + std::to_string(kMaxSceneLights) + ")");
             builder.model.lights.push_back(*light);
+        }
         addNodeMesh(document, placed, builder, counts);
     }
     if (counts.triangles == 0) document.fail("scenes", "the file's scene has no triangles to draw");

@@ -15,6 +15,7 @@
 
 #include "scenes/gltf_scene.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_limits.h"
 #include "tests/scenes/gltf_test_files.h"
 #include "tests/scenes/scene_test_files.h"
 
@@ -286,6 +287,12 @@ TEST_CASE("malformed glTF files are refused naming the file and the field") {
             f.json["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "spot"}, {"spot", {{"outerConeAngle", 1.5707963267948966}}}}};
             f.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
         }, {"lights[0].spot.outerConeAngle"});
+    }
+    SUBCASE("more lights than a scene may hold (a frame keeps a V per light)") {
+        refused([](GltfFile& f) {
+            f.json["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}}};
+            for (size_t k = 0; k <= kMaxSceneLights; ++k) f.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+        }, {"bad.gltf", "KHR_lights_punctual", "more lights than a scene may hold (16)"});
     }
     SUBCASE("normals that are not unit vectors; positions that are not finite") {
         refused([](GltfFile& f) { f.json["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = f.vec3s({{0, 0, 1}, {0, 0, 2}, {0, 0, 1}}); },
