@@ -9,15 +9,15 @@
 # fly-throughs; run nothing else meanwhile (times are medians, but a busy machine still
 # moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|flythrough|report ...]
-#        (default: all sixteen, report last)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|flythrough|suite|report ...]
+#        (default: all seventeen, report last; suite needs the packages scripts/suite_models.sh installs)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric flythrough report}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric flythrough suite report}
 
 for part in $parts; do
   case $part in
@@ -301,6 +301,30 @@ for part in $parts; do
       cp $f/sphere-box-flythrough-$(echo $soft | tr , +)$plot docs/images/flythrough-sphere-box-soft$plot
     done
     ;;
+  suite)
+    # Real models (docs/performance.md, "Real models"): the main techniques on the suite's
+    # scenes of models no one here made, read through the glTF path from their Debian
+    # packages (scripts/suite_models.sh installs them and converts the house). Hard
+    # techniques on every scene (csm where the light is the sun), soft ones under the
+    # engine's disk light; medians of 3 at 2 threads. Then each scene's reference and shadow
+    # map as the docs show them.
+    scripts/suite_models.sh
+    s=$out/suite
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    for scene in engine house grove dungeon; do
+      hard=reference,shadow-map,csm,izb,shadow-volume
+      [ $scene = engine ] && hard=reference,shadow-map,izb,shadow-volume
+      $app sweep assets/scenes/suite/$scene.json --images --technique $hard --threads 2 --runs 3 --out $s > /dev/null
+      echo "$scene:"
+      python3 $table $s/$scene-$(echo $hard | tr , +).csv hard
+      $app render assets/scenes/suite/$scene.json --technique reference --width 640 --height 400 -o docs/images/suite-$scene-reference.png > /dev/null
+      $app render assets/scenes/suite/$scene.json --technique shadow-map --width 640 --height 400 -o $s/$scene-shadow-map.png > /dev/null
+    done
+    soft=reference-soft,pcss,backprojection,soft-shadow-volumes,fins
+    $app sweep assets/scenes/suite/engine.json --images --technique $soft --reference reference-soft --threads 2 --runs 3 \
+      --out $s --plot-y rms > /dev/null
+    python3 $table $s/engine-$(echo $soft | tr , +).csv soft
+    ;;
   report)
     # Every sweep's JSON under out/figures (the files with a grid of reference fingerprints;
     # bench and composite JSON are not sweeps) as one site: a page per scene and per setting.
@@ -308,6 +332,6 @@ for part in $parts; do
     $app report $sweeps --out out/report
     ;;
   *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
-       "environment, lod, differential, screen, volumetric, flythrough, report)" >&2; exit 2 ;;
+       "environment, lod, differential, screen, volumetric, flythrough, suite, report)" >&2; exit 2 ;;
   esac
 done
