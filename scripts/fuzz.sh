@@ -20,7 +20,7 @@ build=${1:-build-asan}
 seconds=${2:-60}
 shift $(( $# < 2 ? $# : 2 ))
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(scene_file compositing_file camera_path obj_reader ply_reader exr_reader environment_file)
+[[ ${#targets[@]} -gt 0 ]] || targets=(scene_file compositing_file camera_path obj_reader ply_reader exr_reader environment_file gltf_file)
 
 # Extra seeds beside tests/fuzz/corpus/<target>: the built-in scene files (copied, since
 # libFuzzer reads folders recursively and assets/scenes/ also holds fly-through paths) and
@@ -35,12 +35,13 @@ declare -A more_seeds=(
   [ply_reader]="tests/fuzz/meshes"
   [exr_reader]=""
   [environment_file]=""
+  [gltf_file]=""
 )
 # The largest single allocation an input within the limits may ask for: an EXR channel of
 # 8192 x 8192 floats or a tile of 16 (256 MB); a scene's vectors of 2^25 triangles (400 MB,
 # twice that while growing); an environment map of 8192^2 RGB floats (805 MB). A larger one
 # is a finding (the EXR headers that asked for 2 GB).
-declare -A malloc_limit_mb=([scene_file]=2048 [compositing_file]=2048 [camera_path]=1024 [obj_reader]=2048 [ply_reader]=2048 [exr_reader]=1024 [environment_file]=1024)
+declare -A malloc_limit_mb=([scene_file]=2048 [compositing_file]=2048 [camera_path]=1024 [obj_reader]=2048 [ply_reader]=2048 [exr_reader]=1024 [environment_file]=1024 [gltf_file]=2048)
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p "$build/fuzz/artifacts"
 for target in "${targets[@]}"; do

@@ -29,7 +29,7 @@ glm::vec3 unitOrFail(const GltfDocument& document, const glm::dvec3& v, const st
     return glm::vec3(v / length);
 }
 
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+double toDegrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 
 void readSpot(const GltfDocument& document, const tinygltf::SpotLight& spot, const std::string& field, Light& light) {
     const double inner = spot.innerConeAngle, outer = spot.outerConeAngle;
@@ -39,8 +39,8 @@ void readSpot(const GltfDocument& document, const tinygltf::SpotLight& spot, con
         document.fail(field + ".spot.outerConeAngle", "must be in (0, pi/2) here, got " + std::to_string(outer));
     if (!(inner >= 0.0 && inner < outer))
         document.fail(field + ".spot.innerConeAngle", "must be in [0, outerConeAngle), got " + std::to_string(inner));
-    light.coneAngleDeg = float(degrees(outer));
-    light.innerConeAngleDeg = float(degrees(inner));
+    light.coneAngleDeg = float(toDegrees(outer));
+    light.innerConeAngleDeg = float(toDegrees(inner));
 }
 
 }  // namespace

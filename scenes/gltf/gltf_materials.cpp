@@ -41,7 +41,7 @@ AlphaTexture maskAlpha(const GltfDocument& document, const tinygltf::TextureInfo
 
 }  // namespace
 
-GltfMaterial readMaterial(const GltfDocument& document, int index) {
+GltfMaterial readGltfMaterial(const GltfDocument& document, int index) {
     GltfMaterial result;
     if (index < 0) {
         result.material.name = "glTF default";

@@ -24,6 +24,6 @@ struct GltfMaterial {
 };
 
 // Material `index` of the file, or glTF's default material (section 3.9.6) for -1.
-GltfMaterial readMaterial(const GltfDocument& document, int index);
+GltfMaterial readGltfMaterial(const GltfDocument& document, int index);
 
 }  // namespace shadowlab

@@ -9,7 +9,7 @@ namespace {
 
 std::string nodeField(size_t node) { return "nodes[" + std::to_string(node) + "]"; }
 
-bool allFinite(const std::vector<double>& values) {
+bool finiteNumbers(const std::vector<double>& values) {
     for (const double v : values)
         if (!std::isfinite(v)) return false;
     return true;
@@ -28,7 +28,7 @@ glm::dmat4 localTransform(const GltfDocument& document, size_t index) {
     const tinygltf::Node& node = document.model.nodes[index];
     const std::string field = nodeField(index);
     if (!node.matrix.empty()) {
-        if (node.matrix.size() != 16 || !allFinite(node.matrix))
+        if (node.matrix.size() != 16 || !finiteNumbers(node.matrix))
             document.fail(field + ".matrix", "must be 16 finite numbers");
         if (!node.translation.empty() || !node.rotation.empty() || !node.scale.empty())
             document.fail(field + ".matrix", "cannot be combined with translation, rotation or scale");
@@ -40,12 +40,12 @@ glm::dmat4 localTransform(const GltfDocument& document, size_t index) {
     }
     glm::dmat4 m(1.0);
     if (!node.translation.empty()) {
-        if (node.translation.size() != 3 || !allFinite(node.translation))
+        if (node.translation.size() != 3 || !finiteNumbers(node.translation))
             document.fail(field + ".translation", "must be 3 finite numbers");
         m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
     }
     if (!node.rotation.empty()) {
-        if (node.rotation.size() != 4 || !allFinite(node.rotation))
+        if (node.rotation.size() != 4 || !finiteNumbers(node.rotation))
             document.fail(field + ".rotation", "must be 4 finite numbers (a quaternion x, y, z, w)");
         const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
         const double length = glm::length(q);
@@ -53,7 +53,7 @@ glm::dmat4 localTransform(const GltfDocument& document, size_t index) {
         m = m * glm::mat4_cast(q / length);
     }
     if (!node.scale.empty()) {
-        if (node.scale.size() != 3 || !allFinite(node.scale)) document.fail(field + ".scale", "must be 3 finite numbers");
+        if (node.scale.size() != 3 || !finiteNumbers(node.scale)) document.fail(field + ".scale", "must be 3 finite numbers");
         m = m * glm::dmat4(glm::dvec4(node.scale[0], 0, 0, 0), glm::dvec4(0, node.scale[1], 0, 0),
                            glm::dvec4(0, 0, node.scale[2], 0), glm::dvec4(0, 0, 0, 1));
     }

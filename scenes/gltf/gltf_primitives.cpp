@@ -93,6 +93,9 @@ std::optional<Mesh> readPrimitive(const GltfDocument& document, size_t meshIndex
 }
 
 Mesh mirrored(Mesh mesh) {
+    // flatten() turns normals by the cofactor matrix (scenes/shading_normals.h), which a
+    // mirror's negative determinant negates: the file's normals are negated here to match.
+    for (glm::vec3& n : mesh.cornerNormals) n = -n;
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
         if (!mesh.cornerNormals.empty()) std::swap(mesh.cornerNormals[3 * t + 1], mesh.cornerNormals[3 * t + 2]);

@@ -17,7 +17,8 @@ namespace shadowlab {
 std::optional<Mesh> readPrimitive(const GltfDocument& document, size_t mesh, size_t primitive);
 
 // The same mesh seen through a mirroring transform (a negative determinant, section
-// 3.7.4): each triangle's corners in reverse order, so that its front stays counter-clockwise.
+// 3.7.4): each triangle's corners in reverse order, so that its front stays counter-clockwise,
+// and its normals negated, which the mirror's transform turns back.
 Mesh mirrored(Mesh mesh);
 
 }  // namespace shadowlab

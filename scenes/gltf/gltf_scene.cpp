@@ -34,7 +34,7 @@ public:
     std::optional<uint32_t> material(int index) {
         const auto found = materials_.find(index);
         if (found != materials_.end()) return found->second;
-        GltfMaterial read = readMaterial(document_, index);
+        GltfMaterial read = readGltfMaterial(document_, index);
         std::optional<uint32_t> ours;
         if (!read.invisible) {
             if (read.alphaTexture) {
@@ -72,7 +72,11 @@ private:
 
 // One instance per drawn primitive of the node's mesh. A node whose transform flattens it
 // (determinant 0) draws nothing; skins are ignored: the mesh in its node's static pose.
-void addNodeMesh(const GltfDocument& document, const PlacedNode& placed, ModelBuilder& builder, uint64_t& triangles) {
+struct WorldCounts {
+    uint64_t triangles = 0, vertices = 0;
+};
+
+void addNodeMesh(const GltfDocument& document, const PlacedNode& placed, ModelBuilder& builder, WorldCounts& counts) {
     const tinygltf::Node& node = document.model.nodes[placed.node];
     const std::string field = "nodes[" + std::to_string(placed.node) + "]";
     if (node.mesh < 0) return;
@@ -92,10 +96,13 @@ void addNodeMesh(const GltfDocument& document, const PlacedNode& placed, ModelBu
         GltfModel& model = builder.model;
         if (model.materials[*material].cutOut() && model.meshes[*ours].cornerUvs.empty())
             document.fail(primitiveField + ".attributes", "a MASK material's texture needs TEXCOORD_0");
-        triangles += model.meshes[*ours].triangles.size();
-        if (triangles > kMaxSceneTriangles || model.instances.size() >= kMaxInstances)
+        counts.triangles += model.meshes[*ours].triangles.size();
+        counts.vertices += model.meshes[*ours].positions.size();
+        if (counts.triangles > kMaxSceneTriangles || counts.vertices > kMaxSceneVertices ||
+            model.instances.size() >= kMaxInstances)
             document.fail(field, "the scene's instances pass a limit (" + std::to_string(kMaxSceneTriangles) +
-                                     " triangles, " + std::to_string(kMaxInstances) + " instances)");
+                                     " triangles, " + std::to_string(kMaxSceneVertices) + " vertices, " +
+                                     std::to_string(kMaxInstances) + " instances)");
         std::string name = node.name.empty() ? field : node.name;
         if (mesh.primitives.size() > 1) name += "/primitive " + std::to_string(p);
         model.instances.push_back({name, *ours, *material, glm::mat4(placed.worldFromNode)});
@@ -103,7 +110,7 @@ void addNodeMesh(const GltfDocument& document, const PlacedNode& placed, ModelBu
 }
 
 // A sphere around every vertex the instances place (centre of their box).
-std::pair<glm::dvec3, double> boundingSphere(const Scene& scene) {
+std::pair<glm::dvec3, double> sceneSphere(const Scene& scene) {
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
     for (const MeshInstance& instance : scene.instances)
         for (const glm::vec3& p : scene.meshes[instance.mesh].positions) {
@@ -137,14 +144,14 @@ bool isGltfPath(const std::string& path) {
 GltfModel parseGltfModel(const std::string& bytes, const std::string& path) {
     const GltfDocument document = parseGltfDocument(bytes, path);
     ModelBuilder builder(document);
-    uint64_t triangles = 0;
+    WorldCounts counts;
     for (const PlacedNode& placed : placeNodes(document)) {
         if (!builder.model.camera) builder.model.camera = readNodeCamera(document, placed.node, placed.worldFromNode);
         if (const std::optional<Light> light = readNodeLight(document, placed.node, placed.worldFromNode))
             builder.model.lights.push_back(*light);
-        addNodeMesh(document, placed, builder, triangles);
+        addNodeMesh(document, placed, builder, counts);
     }
-    if (triangles == 0) document.fail("scenes", "the file's scene has no triangles to draw");
+    if (counts.triangles == 0) document.fail("scenes", "the file's scene has no triangles to draw");
     return std::move(builder.model);
 }
 
@@ -184,7 +191,7 @@ Scene gltfScene(GltfModel model, const std::string& path) {
     Scene scene;
     scene.name = std::filesystem::path(path).stem().string();
     appendGltfModel(model, glm::mat4(1.0f), std::nullopt, path, scene);
-    const auto [centre, radius] = boundingSphere(scene);
+    const auto [centre, radius] = sceneSphere(scene);
     if (model.camera) {
         scene.camera = *model.camera;
         if (scene.camera.zFar == 0.0f)

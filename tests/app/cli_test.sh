@@ -144,6 +144,12 @@ expect_error "csm without a sun" render sphere-box --technique csm "${tiny[@]}" 
 expect_error "--light-pos of a sun" render "$(dirname "${BASH_SOURCE[0]}")/../../assets/scenes/hard/sun.json" --light-pos 1,2,3 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "--light-pos beyond the world's bound (Embree aborted)" render sphere-box --technique reference --light-pos 1.9e18,5,0 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "--eye beyond the world's bound" render sphere-box --eye 0,2e6,0 "${tiny[@]}" -o "$scratch/x.png"
+# A glTF file is a scene (docs/scene-format.md, "glTF files"), overrides and all; a broken one is one line.
+gltf=$(dirname "${BASH_SOURCE[0]}")/../fuzz/corpus/gltf_file
+run render "$gltf/lit_mask.glb" --technique shadow-map --eye 0.3,0.5,3 --target 0,0.5,0 "${tiny[@]}" -o "$scratch/gltf.png"
+expect_png "$scratch/gltf.png"
+head -c 40 "$gltf/lit_mask.glb" > "$scratch/short.glb"
+expect_error "a .glb whose chunk lengths lie" render "$scratch/short.glb" "${tiny[@]}" -o "$scratch/x.png"
 expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
 maps=$(dirname "${BASH_SOURCE[0]}")/../../assets/environments
 expect_error "environment of a missing map" environment "$scratch/none.hdr"

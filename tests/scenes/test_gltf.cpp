@@ -68,9 +68,11 @@ TEST_CASE("a glTF node hierarchy places a mesh where T R S of each node, parent 
     }
 }
 
-TEST_CASE("a glTF matrix node and a mirroring node: placed by the matrix, the mirrored triangle still faces its front") {
+TEST_CASE("a glTF matrix node and a mirroring node: placed by the matrix, the mirrored triangle and its normals still face its front") {
     GltfFile file;
-    const int mesh = triangleMesh(file);
+    const int positions = file.vec3s({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const int normals = file.vec3s({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+    const int mesh = file.mesh({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}});
     // Column-major: translation (0, 0, 5) in elements 12..14.
     file.node({{"mesh", mesh}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1}}});
     file.node({{"mesh", mesh}, {"scale", {-1, 1, 1}}});
@@ -83,6 +85,7 @@ TEST_CASE("a glTF matrix node and a mirroring node: placed by the matrix, the mi
     CHECK(glm::length(faceNormal(world, 0) - glm::vec3(0, 0, 1)) < 1e-6f);
     CHECK(glm::length(faceNormal(world, 1) - glm::vec3(0, 0, 1)) < 1e-6f);
     CHECK(scene.meshes.size() == 2);   // the primitive, and its mirrored winding
+    for (int c = 0; c < 6; ++c) CHECK(world.cornerNormals[size_t(c)] == glm::vec3(0, 0, 1));
 }
 
 TEST_CASE("glTF triangle strips and fans become triangles with counter-clockwise fronts") {
