@@ -320,6 +320,10 @@ for part in $parts; do
       $app render assets/scenes/suite/$scene.json --technique reference --width 640 --height 400 -o docs/images/suite-$scene-reference.png > /dev/null
       $app render assets/scenes/suite/$scene.json --technique shadow-map --width 640 --height 400 -o $s/$scene-shadow-map.png > /dev/null
     done
+    # The grove's cut-outs as the irregular z-buffer sees them today: solid leaves, false
+    # shadow (red) where the reference's light passes through their holes.
+    $app render assets/scenes/suite/grove.json --technique izb --width 640 --height 400 -o $s/render.png \
+      --error-map docs/images/suite-grove-izb-error.png > /dev/null
     soft=reference-soft,pcss,backprojection,soft-shadow-volumes,fins
     $app sweep assets/scenes/suite/engine.json --images --technique $soft --reference reference-soft --threads 2 --runs 3 \
       --out $s --plot-y rms > /dev/null
