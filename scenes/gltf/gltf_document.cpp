@@ -67,7 +67,10 @@ bool noWrite(std::string*, const std::string&, const std::vector<unsigned char>&
 
 bool readExternalFile(std::vector<unsigned char>* out, std::string*, const std::string& joined, void* user) {
     const FileAccess& access = *static_cast<const FileAccess*>(user);
-    const std::string uri = access.directory.empty() ? joined : joined.substr(access.directory.size() + 1);
+    // tinygltf joins directory and uri with a '/' unless the directory ends with one ("/").
+    const std::string& directory = access.directory;
+    const size_t prefix = directory.empty() ? 0 : directory.size() + (directory.ends_with('/') ? 0 : 1);
+    const std::string uri = joined.substr(std::min(prefix, joined.size()));
     const fs::path normal = fs::path(uri).lexically_normal();
     const auto fail = [&](const std::string& problem) {
         throw SceneError(access.gltfPath + ": uri " + inQuotes(uri) + ": " + problem);

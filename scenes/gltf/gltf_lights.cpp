@@ -72,7 +72,8 @@ std::optional<Light> readNodeLight(const GltfDocument& document, size_t node, co
     if (!(std::abs(light.position.x) <= kMaxCoordinate && std::abs(light.position.y) <= kMaxCoordinate &&
           std::abs(light.position.z) <= kMaxCoordinate))
         document.fail(nodeField, "places its light outside the world (coordinates within 1e6 m)");
-    if (!(source.range >= 0.0 && source.range < 1e30)) document.fail(field + ".range", "must be a finite number > 0");
+    if (!(source.range >= 0.0 && source.range < 1e30))
+        document.fail(field + ".range", "must be a finite number > 0 (absent: unbounded)");
     light.range = float(source.range);   // 0: tinygltf's "absent", unbounded
     if (source.type == "point") {
         light.type = LightType::Point;

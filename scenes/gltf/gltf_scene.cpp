@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <tuple>
 
 #include "scenes/error_text.h"
 #include "scenes/gltf/gltf_camera.h"

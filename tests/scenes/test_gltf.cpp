@@ -90,8 +90,10 @@ TEST_CASE("a glTF matrix node and a mirroring node: placed by the matrix, the mi
 
 TEST_CASE("glTF triangle strips and fans become triangles with counter-clockwise fronts") {
     // A unit quad facing +Z: strip order 0 1 2 3 = (0,0) (1,0) (0,1) (1,1); fan around (0,0).
-    for (const auto& [mode, order] : {std::pair{5, std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 2, 0}}},
-                                      std::pair{6, std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 1, 0}}}}) {
+    for (const auto& modeAndOrder : {std::pair{5, std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 2, 0}}},
+                                     std::pair{6, std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 1, 0}}}}) {
+        const int mode = modeAndOrder.first;   // a plain variable: clang 14's INFO cannot capture a binding
+        const std::vector<glm::vec3>& order = modeAndOrder.second;
         GltfFile file;
         file.node({{"mesh", file.mesh({{"mode", mode}, {"attributes", {{"POSITION", file.vec3s(order)}}}})}});
         test::TempDir dir;
@@ -393,7 +395,7 @@ TEST_CASE("the Khronos sample models load with the triangles, vertices, instance
 }
 
 TEST_CASE("the malformed Khronos samples are refused naming the file and the field") {
-    for (const auto& [name, pieces] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+    for (const auto& [sample, pieces] : std::vector<std::pair<std::string, std::vector<std::string>>>{
              {"BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", {"accessors[", "not finite", "POSITION"}},
              {"BoxBadNormals-glTF-Binary/BoxBadNormals.glb", {"attributes.NORMAL", "not 1"}},
              {"IncorrectVertexArrays/Cube.gltf", {"meshes[1].primitives[0].attributes.POSITION", "whole triangles"}},
@@ -403,6 +405,7 @@ TEST_CASE("the malformed Khronos samples are refused naming the file and the fie
              {"RecursiveNodes/RecursiveNodes.gltf", {"nodes[0]", "reached twice"}},
              {"draco/2CylinderEngine.gltf", {"extensionsRequired[0]", "KHR_draco_mesh_compression"}},
              {"TestNoRootNode/NoScene.gltf", {"scenes", "no scene"}}}) {
+        const std::string name = sample;   // a plain variable: clang 14's INFO cannot capture a binding
         INFO(name);
         const std::string path = kSamples + "/" + name;
         test::checkMessage(test::sceneErrorOf([&] { loadScene(path, ""); }), pieces);
