@@ -9,15 +9,15 @@
 # fly-throughs; run nothing else meanwhile (times are medians, but a busy machine still
 # moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|lights|report ...]
-#        (default: all eighteen, report last)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|lights|suite|report ...]
+#        (default: all nineteen, report last; suite needs the packages scripts/suite_models.sh installs)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough lights report}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough lights suite report}
 
 for part in $parts; do
   case $part in
@@ -366,6 +366,34 @@ visible, every = csv.DictReader(open(sys.argv[1]))
 print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all six," % (float(visible["median_ms"]), float(every["median_ms"])),
       "same V" if visible["rms"] == every["rms"] else "V DIFFERS")' $l/cube-$position/three-lights-shadow-map.csv $position
     done
+      ;;
+  suite)
+    # Real models (docs/performance.md, "Real models"): the main techniques on the suite's
+    # scenes of models no one here made, read through the glTF path from their Debian
+    # packages (scripts/suite_models.sh installs them and converts the house). Hard
+    # techniques on every scene (csm where the light is the sun), soft ones under the
+    # engine's disk light; medians of 3 at 2 threads. Then each scene's reference and shadow
+    # map as the docs show them.
+    scripts/suite_models.sh
+    s=$out/suite
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    for scene in engine house grove dungeon; do
+      hard=reference,shadow-map,csm,izb,shadow-volume
+      [ $scene = engine ] && hard=reference,shadow-map,izb,shadow-volume
+      $app sweep assets/scenes/suite/$scene.json --images --technique $hard --threads 2 --runs 3 --out $s > /dev/null
+      echo "$scene:"
+      python3 $table $s/$scene-$(echo $hard | tr , +).csv hard
+      $app render assets/scenes/suite/$scene.json --technique reference --width 640 --height 400 -o docs/images/suite-$scene-reference.png > /dev/null
+      $app render assets/scenes/suite/$scene.json --technique shadow-map --width 640 --height 400 -o $s/$scene-shadow-map.png > /dev/null
+    done
+    # The grove's cut-outs as the irregular z-buffer sees them today: solid leaves, false
+    # shadow (red) where the reference's light passes through their holes.
+    $app render assets/scenes/suite/grove.json --technique izb --width 640 --height 400 -o $s/render.png \
+      --error-map docs/images/suite-grove-izb-error.png > /dev/null
+    soft=reference-soft,pcss,backprojection,soft-shadow-volumes,fins
+    $app sweep assets/scenes/suite/engine.json --images --technique $soft --reference reference-soft --threads 2 --runs 3 \
+      --out $s --plot-y rms > /dev/null
+    python3 $table $s/engine-$(echo $soft | tr , +).csv soft
     ;;
   report)
     # Every sweep's JSON under out/figures (the files with a grid of reference fingerprints;
@@ -374,6 +402,6 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     $app report $sweeps --out out/report
     ;;
   *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
-       "environment, lod, differential, screen, volumetric, flythrough, lights, report)" >&2; exit 2 ;;
+       "environment, lod, differential, screen, volumetric, cutouts, flythrough, lights, suite, report)" >&2; exit 2 ;;
   esac
 done

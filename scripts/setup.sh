@@ -23,21 +23,12 @@ if [[ $mode == all ]]; then
              clang-14 libclang-rt-14-dev      # the sanitizer builds (scripts/sanitize.sh, tsan.sh)
              chromium                         # the report's browser test (tests/report)
              imagemagick librsvg2-bin         # the lessons' crops, contrast stretches and plots (scripts/lessons/)
-             assimp-testmodels)               # the Khronos glTF sample models the glTF reader's tests load (tests/scenes)
+             assimp-testmodels                # the Khronos glTF sample models the glTF reader's tests load (tests/scenes)
+             assimp-utils)                    # `assimp export`: the suite's house from IFC to glTF (scripts/suite_models.sh)
   # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
   command -v node > /dev/null || packages+=(nodejs npm)
 fi
-install_missing() {
-  local missing=() p sudo=""
-  for p in "$@"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-  done
-  [ ${#missing[@]} -gt 0 ] || return 0
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  echo "installing: ${missing[*]}"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
-}
+source scripts/install_missing.sh
 source scripts/steps.sh
 step "packages (apt)" install_missing "${packages[@]}"
 
