@@ -366,7 +366,7 @@ visible, every = csv.DictReader(open(sys.argv[1]))
 print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all six," % (float(visible["median_ms"]), float(every["median_ms"])),
       "same V" if visible["rms"] == every["rms"] else "V DIFFERS")' $l/cube-$position/three-lights-shadow-map.csv $position
     done
-      ;;
+    ;;
   suite)
     # Real models (docs/performance.md, "Real models"): the main techniques on the suite's
     # scenes of models no one here made, read through the glTF path from their Debian
