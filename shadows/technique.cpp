@@ -3,11 +3,20 @@
 #include <algorithm>
 #include <optional>
 
+#include "shading/lights.h"
 #include "shadows/settings_table.h"
 
 namespace shadowlab {
 
 bool anySurface(const GBuffer& g) { return std::find(g.hit.begin(), g.hit.end(), 1) != g.hit.end(); }
+
+bool anyReachable(const GBuffer& g, const Light& light) {
+    const LightReach reaches(light);
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (g.hit[k] && reaches(g.position[k], g.normal[k])) return true;
+    }
+    return false;
+}
 
 ShadowOutputs unlitOutputs(const GBuffer& g) {
     ShadowOutputs out;

@@ -114,10 +114,15 @@ std::vector<TechniqueStat> prepareCasterEdgeAdjacency(const PreparedScene& caste
 std::vector<TechniqueStat> prepareEdgeAdjacency(const PreparedScene& prepared, const PreparedScene& casters,
                                                 const TechniqueParams& params);
 
-// A view that sees no surface has one answer, V = 0 everywhere. A technique that fits a
-// light's view to its receivers (an error with none, light_view.h) checks its settings and
-// light first, so that they fail alike on every view, then returns unlitOutputs().
+// A view in which the light reaches no surface (none seen, or every one it sees behind the
+// light, facing away or outside a spot's cone: lightReaches, shading/lights.h) has one
+// answer, V = 0 everywhere (conventions.md, the V channel). A technique that fits a light's
+// view to its receivers (an error with none, light_view.h) checks its settings and light
+// first, so that they fail alike on every view, then returns unlitOutputs(): so a frame of
+// many lights (docs/many-lights.md) takes a spot that lights nothing in view.
+// anySurface: whether the view sees any surface at all.
 bool anySurface(const GBuffer& g);
+bool anyReachable(const GBuffer& g, const Light& light);
 ShadowOutputs unlitOutputs(const GBuffer& g);
 
 // Hard-shadow techniques see a light as a point: an area light's centre stands in for it.

@@ -153,7 +153,7 @@ ShadowOutputs runBackprojection(const ShadowInputs& in) {
     plotPixel(s.plot, in.gbuffer.width, in.gbuffer.height, kBackprojectionName);   // settings checked before any work
     const AreaLightFrame light = areaLightFrame(in.light);
     const LightGrid samples(s.lightSamples, light.disk);
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const SoftShadowMap soft = renderPcssMap(in, s.resolution);
     timer.lap("map");

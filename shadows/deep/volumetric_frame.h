@@ -56,7 +56,7 @@ void writeVolumetricDebug(const ShadowInputs& in, const std::string& technique, 
 template <class Build>
 ShadowOutputs runVolumetricFrame(const ShadowInputs& in, const VolumetricSettings& settings, const std::string& technique,
                                  const char* stage, const Build& build) {
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
     const VolumetricFrame frame = beginVolumetricFrame(in, transmission, settings, timer);

@@ -109,7 +109,7 @@ double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const Map
 ShadowOutputs runChs(const ShadowInputs& in) {
     const ChsSettings s = chsSettingsTable().read(in.params);
     requireAreaLight(in.light, kChsName);
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const SoftShadowMap soft = renderPcssMap(in, s.resolution);
     timer.lap("map");

@@ -174,7 +174,7 @@ void writeDebug(const ShadowInputs& in, const FilteredSettings& s, const SoftSha
 
 ShadowOutputs runFiltered(const ShadowInputs& in, const FilteredSettings& s) {
     requireAreaLight(in.light, momentKindName(s.moments.kind));
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const SoftShadowMap soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),
                                                    kFitMarginTexels + 0.5 * s.widthTexels, s.pcssWidth);

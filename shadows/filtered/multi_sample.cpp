@@ -80,7 +80,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     }
     requireAreaLight(in.light, "multi-sample");
     const AreaLightFrame frame = areaLightFrame(in.light);
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     const DebugBuffers debug(in.debugDir, "multi-sample");
     LightFitOptions fit;
     fit.resolution = resolution;

@@ -56,7 +56,7 @@ void writeDebug(const ShadowInputs& in, const SoftShadowMap& soft, const PcssBuf
 ShadowOutputs runPcss(const ShadowInputs& in) {
     const PcssSettings settings = pcssSettingsTable().read(in.params);
     requireAreaLight(in.light, "pcss");
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const SoftShadowMap soft = renderPcssMap(in, settings.resolution);
     timer.lap("map");

@@ -187,7 +187,7 @@ FinSettings finSettings(const ShadowInputs& in, const std::string& technique, co
 }
 
 ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked by finSettings
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked by finSettings
     StageTimer timer;
     const FinScene scene = buildFinScene(in, s);
     timer.lap("silhouette_and_fins");

@@ -81,7 +81,7 @@ ShadowOutputs runIzbPcss(const ShadowInputs& in) {
     const IzbPcssSettings settings = readSettings(in.params);
     const PcssSettings& pcss = settings.pcss;
     requireAreaLight(in.light, kIzbPcssName);
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     // 1. PCSS: the soft V and the blocker distances.
     const SoftShadowMap soft = renderPcssMap(in, pcss.resolution);

@@ -70,7 +70,7 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     const ShadowMapSettings& s = settings.map;
     const CascadeSettings& cs = settings.cascades;
     if (in.light.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     StageTimer timer;
     const CascadedMaps cm = renderCascades(in.light, in.camera(), in.gbuffer, in.casterWorld(), cs, depthMapSettings(s), in.simd);

@@ -168,7 +168,7 @@ ShadowOutputs runShadowMap(const ShadowInputs& in, const ShadowMapTechniqueSetti
         throw std::invalid_argument("shadow-map: warp=lispsm needs a directional light");
     }
     if (forceCube && light.type != LightType::Point) throw std::invalid_argument("shadow-map: cube=always needs a point light");
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     StageTimer timer;
     const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm, settings.cullCubeFaces, timer);

@@ -41,7 +41,7 @@ ShadowOutputs runProjectedTexture(const ShadowInputs& in) {
     // Both roles are chosen on the scene the camera sees; the casters' copy (a caster level
     // of detail) has the same instances, so its triangles take the same roles.
     const InstanceRoles roles = chooseRoles(in.scene(), in.receiverWorld(), settings.occluders, settings.receivers);
-    if (!anySurface(in.gbuffer)) return unlitOutputs(in.gbuffer);   // settings checked first
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     const std::vector<uint32_t> occluders = trianglesWithRole(in.casterWorld(), roles.occluder);
     timer.lap("roles");

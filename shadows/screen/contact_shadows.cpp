@@ -103,7 +103,7 @@ ShadowOutputs runContactShadows(const ShadowInputs& in) {
     plottedPixel(in, settings.plot);   // settings checked before any work
     const Light light = pointLightFor(in.light);
     ShadowOutputs out = settings.withMap ? shadowMapStage(in, settings.map) : reachedOutputs(in.gbuffer, light);
-    if (!anySurface(in.gbuffer)) return out;   // V = 0 already
+    if (!anyReachable(in.gbuffer, in.light)) return out;   // V = 0 already
     StageTimer timer;
     // 2. The march.
     const ScreenMarch march(in.gbuffer, in.camera(), light, settings.march);

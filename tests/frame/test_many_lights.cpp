@@ -4,6 +4,7 @@
 // over several lights stacks their V.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -87,6 +88,34 @@ TEST_CASE("many lights: for every visibility technique two lights shade the sum 
         ++ran;
     }
     CHECK(ran >= 27);   // every visibility technique
+}
+
+// A light that reaches no surface in view (below the ground, shining down, so every surface
+// seen faces away from it) gives V = 0 everywhere for every visibility technique, rather than
+// the error of a light view fitted to no receivers: one such light among many must not stop
+// the frame (a glTF file's spot aimed away from the camera's view).
+TEST_CASE("many lights: a light that reaches nothing in view gives V = 0 for every visibility technique, and its frame the others' image") {
+    Scene base = smallScene("sphere-box", 80, 50);
+    base.instances.erase(base.instances.begin() + 1);   // the ground and the box, no sphere
+    const Light spot{.type = LightType::Spot, .position = {2.0f, -5.0f, -1.0f}, .direction = {0.0f, -1.0f, 0.0f}};
+    const Light disk{.type = LightType::Disk, .position = spot.position, .direction = spot.direction, .radius = 0.5f};
+    const Light sun{.type = LightType::Directional, .direction = {0.0f, -1.0f, 0.0f}};
+    int ran = 0;
+    for (const Technique& technique : techniques()) {
+        // `none` is the unshadowed baseline, V = 1 on every surface (shading's cosine darkens them).
+        if (technique.output != TechniqueOutput::Visibility || technique.name == "none") continue;
+        CAPTURE(technique.name);
+        const Light& away = test::needsDirectionalLight(technique) ? sun : technique.referenceName == "reference-soft" ? disk : spot;
+        const PreparedScene prepared(withLights(base, {away}));
+        const Frame frame = renderFrame(prepared, technique, quick(technique));
+        REQUIRE(!anyReachable(frame.gbuffer, away));
+        CHECK(std::ranges::count(frame.shadow.visibility, 0.0f) == ptrdiff_t(frame.gbuffer.pixelCount()));
+        ++ran;
+    }
+    CHECK(ran >= 26);
+    const Technique& shadowMap = findTechnique("shadow-map");
+    const PreparedScene lit(base), withAway(withLights(base, {base.lights[0], spot}));
+    CHECK(sameRadiance(renderFrame(withAway, shadowMap).radiance, renderFrame(lit, shadowMap).radiance));
 }
 
 TEST_CASE("many lights: each light's stats are in the frame as lightK_NAME and their times sum to the total") {
