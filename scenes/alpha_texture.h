@@ -4,8 +4,6 @@
 
 #include <string>
 
-#include <glm/glm.hpp>
-
 #include "scenes/scene.h"
 
 namespace shadowlab {
@@ -13,16 +11,5 @@ namespace shadowlab {
 // Throws SceneError naming the file when it cannot be read, has no alpha channel (grey or
 // RGB images have none), or is larger than 8192 texels on a side.
 AlphaTexture readAlphaTexture(const std::string& path);
-
-// The texel a texture coordinate falls in, nearest, the coordinates clamped to the texture
-// (u right, v up, as in OBJ): the rule the rasterizer's alpha test (tile_raster.inl) and the
-// reference's (shadows/caster_transmission.h) both follow, in float.
-inline int alphaTexelIndex(const AlphaTexture& texture, glm::vec2 uv) {
-    const float u = uv.x > 0.0f ? (uv.x < 1.0f ? uv.x : 1.0f) : 0.0f;
-    const float v = uv.y > 0.0f ? (uv.y < 1.0f ? uv.y : 1.0f) : 0.0f;
-    const int column = int(u * float(texture.width)), row = int((1.0f - v) * float(texture.height));
-    return (row < texture.height ? row : texture.height - 1) * texture.width +
-           (column < texture.width ? column : texture.width - 1);
-}
 
 }  // namespace shadowlab

@@ -28,11 +28,12 @@ const Material* materialOf(const Scene& scene, const MeshInstance& instance) {
     return instance.material < scene.materials.size() ? &scene.materials[instance.material] : nullptr;
 }
 
-// Texture coordinates are kept only for what reads them, the alpha of cut-outs.
-bool anyCutOut(const Scene& scene) {
+// Whether any instance's material passes `test`.
+template <class Test>
+bool anyMaterial(const Scene& scene, const Test& test) {
     for (const MeshInstance& instance : scene.instances) {
         const Material* material = materialOf(scene, instance);
-        if (material && material->cutOut()) return true;
+        if (material && test(*material)) return true;
     }
     return false;
 }
@@ -66,16 +67,18 @@ WorldGeometry flatten(const Scene& scene) {
     reserveFor(scene, world);
     // Each mesh's corner normals once, however many instances use it.
     std::vector<std::optional<std::vector<glm::vec3>>> meshNormals(scene.meshes.size());
-    const bool uvs = anyCutOut(scene);
+    const bool cutOuts = anyMaterial(scene, [](const Material& m) { return m.cutOut(); });
+    // Texture coordinates are kept only for what reads them: cut-outs' alpha, surfaces' albedo.
+    const bool uvs = cutOuts || anyMaterial(scene, [](const Material& m) { return m.textured(); });
     std::vector<int32_t> materialCutOut(scene.materials.size(), -1);
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[instance.mesh];
         const uint32_t base = uint32_t(world.positions.size());
         for (const glm::vec3& p : mesh.positions) world.positions.push_back(worldPosition(instance, p));
-        const int32_t cutOut = uvs ? cutOutOf(scene, instance.material, materialCutOut, world) : -1;
+        const int32_t cutOut = cutOuts ? cutOutOf(scene, instance.material, materialCutOut, world) : -1;
         for (const glm::uvec3& t : mesh.triangles) {
-            if (uvs) world.triangleCutOut.push_back(cutOut);
+            if (cutOuts) world.triangleCutOut.push_back(cutOut);
             world.triangles.push_back(t + base);
             world.triangleMaterial.push_back(instance.material);
             world.triangleInstance.push_back(i);

@@ -14,12 +14,14 @@ namespace shadowlab {
 
 // What a glTF file holds, as our scene's parts: one mesh per (primitive, mirrored or not),
 // one instance per (node, primitive) placed by the node's world transform, materials with
-// their cut-outs' alpha textures (Material::alphaTexture indexes alphaTextures here), the
+// their cut-outs' alpha textures and their albedo textures (Material::alphaTexture and
+// Material::albedoTexture index alphaTextures and albedoTextures here), the
 // lights of KHR_lights_punctual and the first camera, in the scene's node order.
 struct GltfModel {
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<AlphaTexture> alphaTextures;
+    std::vector<AlbedoTexture> albedoTextures;
     std::vector<MeshInstance> instances;
     std::vector<Light> lights;
     std::optional<Camera> camera;   // zFar 0: the file gave none (gltf/gltf_camera.h)
@@ -30,7 +32,7 @@ GltfModel readGltfModel(const std::string& path);
 // The same from bytes in memory (the fuzzer); external files are found beside `path`.
 GltfModel parseGltfModel(const std::string& bytes, const std::string& path);
 
-// Appends the model's meshes, materials, alpha textures and instances to the scene, each
+// Appends the model's meshes, materials, their textures and instances to the scene, each
 // instance placed by `placement` * its node's transform, with `material` (an index into
 // the scene's materials) in place of the file's when given. Refuses, naming `name`, a
 // vertex outside the world (scene_limits.h).

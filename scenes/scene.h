@@ -23,8 +23,8 @@ struct Mesh {
     // A zero vector marks a corner the file left without one. scenes/shading_normals.h
     // fills the gaps with angle-weighted vertex normals.
     std::vector<glm::vec3> cornerNormals;
-    // Texture coordinates, three per triangle in corner order (OBJ's "vt"), for the alpha
-    // texture of a cut-out material; empty when the mesh has none. (0, 0) is the texture's
+    // Texture coordinates, three per triangle in corner order (OBJ's "vt"), for a material's
+    // alpha and albedo textures; empty when the mesh has none. (0, 0) is the texture's
     // bottom-left corner, as in OBJ files.
     std::vector<glm::vec2> cornerUvs;
 };
@@ -37,6 +37,15 @@ struct AlphaTexture {
     std::vector<float> alpha;
 };
 
+// An albedo texture (glTF's base colour texture): linear RGB reflectance per texel in
+// [0, 1], row-major, row 0 at the top, decoded once at load from the file's sRGB 8-bit
+// texels (scenes/albedo_texture.h).
+struct AlbedoTexture {
+    std::string source;
+    int width = 0, height = 0;
+    std::vector<glm::vec3> albedo;
+};
+
 // Every model is a Lambert diffuse term plus, except for Lambert, a specular lobe
 // (shading/shade.h, brdf()): Blinn-Phong and normalised Phong lobes of a shininess, or the
 // GGX microfacet lobe of a roughness (Torrance-Sparrow).
@@ -45,7 +54,9 @@ enum class MaterialModel { Lambert, BlinnPhong, Phong, Ggx };
 struct Material {
     std::string name;
     MaterialModel model = MaterialModel::Lambert;
-    glm::vec3 albedo{0.8f};    // diffuse reflectance in [0,1]
+    // Diffuse reflectance in [0,1]; with an albedo texture, the surface's albedo at a point is
+    // this times the texture's texel there (glTF 2.0, section 3.9.2; shading/surface_albedo.h).
+    glm::vec3 albedo{0.8f};
     glm::vec3 specular{0.0f};  // specular reflectance in [0,1]; GGX: Schlick's F0
     float shininess = 32.0f;   // Blinn-Phong and Phong exponent, > 0
     float roughness = 0.5f;    // GGX alpha, in (0, 1]
@@ -58,9 +69,12 @@ struct Material {
     // below alphaCutoff. Index into Scene::alphaTextures, -1 for none.
     int alphaTexture = -1;
     float alphaCutoff = 0.5f;
+    // Index into Scene::albedoTextures, -1 for none.
+    int albedoTexture = -1;
 
     bool translucent() const { return opacity < 1.0f; }
     bool cutOut() const { return alphaTexture >= 0; }
+    bool textured() const { return albedoTexture >= 0; }
     glm::vec3 passed() const { return (1.0f - opacity) * transmittance; }
 };
 
@@ -155,6 +169,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<MeshInstance> instances;
     std::vector<AlphaTexture> alphaTextures;
+    std::vector<AlbedoTexture> albedoTextures;
     std::vector<DensityVolume> volumes;
     std::vector<Light> lights;
     Camera camera;
@@ -176,8 +191,8 @@ struct WorldGeometry {
     // neighbour (scenes/shading_normals.h). Only shading reads them: shadow bias and the
     // references use the geometric normal of the triangle's plane.
     std::vector<glm::vec3> cornerNormals;
-    // Texture coordinates, three per triangle like cornerNormals; empty when no mesh has any,
-    // (0, 0) at the corners of a mesh without them.
+    // Texture coordinates, three per triangle like cornerNormals; empty when no material
+    // reads a texture (cut-out or albedo), (0, 0) at the corners of a mesh without them.
     std::vector<glm::vec2> cornerUvs;
     // Cut-outs: per triangle the index into cutOuts of its material's alpha test, or -1;
     // empty when the scene has none. Each keeps a copy of its texture, so that whatever draws

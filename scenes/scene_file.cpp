@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "raster/fixed_point.h"
+#include "scenes/albedo_texture.h"
 #include "scenes/alpha_texture.h"
 #include "scenes/camera.h"
 #include "scenes/camera_path.h"
@@ -48,6 +49,20 @@ int alphaTextureIndex(const JsonField& field, const std::string& directory, Scen
     return int(scene.alphaTextures.size()) - 1;
 }
 
+// The index of the albedo texture at `path` in scene.albedoTextures, read on first use.
+int albedoTextureIndex(const JsonField& field, const std::string& directory, Scene& scene) {
+    const std::string path = (fs::path(directory) / field.string()).string();
+    for (size_t k = 0; k < scene.albedoTextures.size(); ++k) {
+        if (scene.albedoTextures[k].source == path) return int(k);
+    }
+    try {
+        scene.albedoTextures.push_back(readAlbedoTexture(path));
+    } catch (const SceneError& error) {
+        field.fail(error.what());
+    }
+    return int(scene.albedoTextures.size()) - 1;
+}
+
 // What passes through a material (scene.h, Material): opacity, its tint and a cut-out.
 void readTransmission(const JsonObject& object, const std::string& directory, Scene& scene, Material& material) {
     if (const auto opacity = object.optional("opacity")) material.opacity = opacity->number(kUnitInterval);
@@ -74,8 +89,8 @@ void readMaterial(const JsonField& field, const std::string& directory, Scene& s
     if (std::ranges::find(names.materials, material.name) != names.materials.end())
         nameField.fail("another material is already named " + inQuotes(material.name));
     if (const auto model = object.optional("model")) material.model = model->choice(kMaterialModels);
-    std::vector<std::string_view> allowed = {"name", "model", "albedo", "opacity", "transmittance", "alpha-texture",
-                                             "alpha-cutoff"};
+    std::vector<std::string_view> allowed = {"name", "model", "albedo", "albedo-texture", "opacity", "transmittance",
+                                             "alpha-texture", "alpha-cutoff"};
     switch (material.model) {
         case MaterialModel::Lambert: break;
         case MaterialModel::BlinnPhong:
@@ -84,6 +99,8 @@ void readMaterial(const JsonField& field, const std::string& directory, Scene& s
     }
     object.allowOnly(allowed);
     if (const auto albedo = object.optional("albedo")) material.albedo = albedo->vec3(kUnitInterval);
+    if (const auto texture = object.optional("albedo-texture"))
+        material.albedoTexture = albedoTextureIndex(*texture, directory, scene);
     if (const auto specular = object.optional("specular")) material.specular = specular->vec3(kUnitInterval);
     if (const auto shininess = object.optional("shininess")) material.shininess = shininess->number(kPositive);
     if (const auto roughness = object.optional("roughness")) material.roughness = roughness->number(kRoughness);
@@ -132,13 +149,18 @@ Environment readEnvironment(const JsonField& field, const std::string& directory
     return environment;
 }
 
-// A cut-out needs texture coordinates to find its alpha.
-void checkCutOutUvs(const JsonField& instances, const Scene& scene) {
+// A cut-out needs texture coordinates to find its alpha, a textured material its albedo.
+void checkTextureUvs(const JsonField& instances, const Scene& scene) {
     for (size_t k = 0; k < scene.instances.size(); ++k) {
         const MeshInstance& instance = scene.instances[k];
-        if (scene.materials[instance.material].cutOut() && scene.meshes[instance.mesh].cornerUvs.empty())
+        if (!scene.meshes[instance.mesh].cornerUvs.empty()) continue;
+        const Material& material = scene.materials[instance.material];
+        if (material.cutOut())
             instances.fail("instance " + inQuotes(instance.name) + " has a cut-out material (alpha-texture) on a mesh without "
                            "texture coordinates");
+        if (material.textured())
+            instances.fail("instance " + inQuotes(instance.name) + " has a material with an albedo-texture on a mesh "
+                           "without texture coordinates");
     }
 }
 
@@ -170,7 +192,7 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     readMeshes(object["meshes"], directory, scene, names);
     for (const JsonField& material : object["materials"].elements()) readMaterial(material, directory, scene, names);
     for (const JsonField& instance : object["instances"].elements()) readInstance(instance, names, scene);
-    checkCutOutUvs(object["instances"], scene);
+    checkTextureUvs(object["instances"], scene);
     if (const auto models = object.optional("models"))
         for (const JsonField& model : models->elements()) readModel(model, directory, names, scene);
     if (const auto volumes = object.optional("volumes")) {

@@ -5,6 +5,9 @@
 //
 //     p_diffuse = Y(albedo) / (Y(albedo) + Y(specular))   (1 for Lambert or no specular)
 //
+// with the material's albedo, not the texture's at the point (shading/surface_albedo.h): the
+// choice is part of the density only, stated exactly below, so one per material will do.
+//
 //   diffuse      cosine-weighted about N, p = max(0, N . wi) / pi;
 //   Phong        about the mirror direction R of wo, p = (n + 1) / (2 pi) max(0, R . wi)^n;
 //   Blinn-Phong  the half vector h about N with (s + 1) / (2 pi) (N . h)^s, and

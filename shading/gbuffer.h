@@ -21,6 +21,9 @@ struct GBuffer {
     std::vector<glm::vec3> shadingNormal;  // smooth normal for shading, on the side of `normal`
     std::vector<uint32_t> material;      // index into Scene::materials
     std::vector<uint32_t> triangle;      // index into WorldGeometry::triangles, or kNoTriangle
+    // Texture coordinates at P, where the surface's textures are read (shading/surface_albedo.h);
+    // empty when the world has none (WorldGeometry::cornerUvs), 0 where hit = 0.
+    std::vector<glm::vec2> uv;
     std::vector<float> depth;            // window depth as in the depth buffer (1 = background)
 
     size_t pixelCount() const { return size_t(width) * size_t(height); }

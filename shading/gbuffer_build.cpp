@@ -65,6 +65,13 @@ glm::vec3 shadingNormal(const WorldGeometry& world, uint32_t t, const SurfacePoi
     return glm::vec3(glm::dot(unit, s.normal) < 0.0 ? -unit : unit);
 }
 
+// The corner UVs of triangle t weighted by `barycentric`: at the exact P, so perspective-correct.
+glm::vec2 textureCoordinate(const WorldGeometry& world, uint32_t t, const SurfacePoint& s) {
+    const glm::vec2* uv = &world.cornerUvs[3 * size_t(t)];
+    return glm::vec2(s.barycentric.x * glm::dvec2(uv[0]) + s.barycentric.y * glm::dvec2(uv[1]) +
+                     s.barycentric.z * glm::dvec2(uv[2]));
+}
+
 void writeBackground(GBuffer& g, size_t index) {
     g.hit[index] = 0;
     g.position[index] = glm::vec3(0.0f);
@@ -72,6 +79,7 @@ void writeBackground(GBuffer& g, size_t index) {
     g.shadingNormal[index] = glm::vec3(0.0f);
     g.material[index] = 0;
     g.triangle[index] = kNoTriangle;
+    if (!g.uv.empty()) g.uv[index] = glm::vec2(0.0f);
     g.depth[index] = 1.0f;
 }
 
@@ -99,6 +107,7 @@ void writeSurface(GBuffer& g, size_t index, const WorldGeometry& world, const Pi
     g.shadingNormal[index] = shadingNormal(world, triangle, *s);
     g.material[index] = world.triangleMaterial[triangle];
     g.triangle[index] = triangle;
+    if (!g.uv.empty()) g.uv[index] = textureCoordinate(world, triangle, *s);
     g.depth[index] = depth;
 }
 
@@ -108,7 +117,7 @@ void requireConsistent(const GBuffer& g, const char* who) {
     const size_t n = g.pixelCount();
     const bool consistent = g.width >= 0 && g.height >= 0 && g.hit.size() == n && g.position.size() == n &&
                             g.normal.size() == n && g.shadingNormal.size() == n && g.material.size() == n && g.triangle.size() == n &&
-                            g.depth.size() == n;
+                            (g.uv.empty() || g.uv.size() == n) && g.depth.size() == n;
     if (!consistent) {
         throw std::invalid_argument(std::string(who) + ": G-buffer arrays do not all have " +
                                     std::to_string(g.width) + " x " + std::to_string(g.height) + " entries");
@@ -135,12 +144,17 @@ GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
         throw std::invalid_argument("buildGBuffer: " + std::to_string(world.cornerNormals.size()) +
                                     " corner normals for " + std::to_string(world.triangles.size()) + " triangles");
     }
+    if (!world.cornerUvs.empty() && world.cornerUvs.size() != 3 * world.triangles.size()) {
+        throw std::invalid_argument("buildGBuffer: " + std::to_string(world.cornerUvs.size()) +
+                                    " corner UVs for " + std::to_string(world.triangles.size()) + " triangles");
+    }
     g.hit.resize(n);
     g.position.resize(n);
     g.normal.resize(n);
     g.shadingNormal.resize(n);
     g.material.resize(n);
     g.triangle.resize(n);
+    if (!world.cornerUvs.empty()) g.uv.resize(n);
     g.depth.resize(n);
 
     const PixelRays rays(camera);

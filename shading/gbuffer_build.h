@@ -19,9 +19,14 @@ namespace shadowlab {
 // P is the exact surface point, so this is the perspective-correct interpolation without
 // dividing by w. Ns is turned to the side of N (it is only ever far from N on a badly
 // tessellated mesh), and is N itself where the corner normals cancel or the world has none.
-// Background pixels get hit = 0, P = N = Ns = 0, material 0, triangle kNoTriangle and
+// The texture coordinate uv is the corner UVs (WorldGeometry::cornerUvs) weighted the same
+// way, when the world has them. The G-buffer keeps uv rather than the albedo the textures
+// give there: it is the surface's geometry, found where P's exact barycentric weights are,
+// while the albedo is the scene's material data, which the world geometry does not carry
+// (shading/surface_albedo.h reads it at uv).
+// Background pixels get hit = 0, P = N = Ns = uv = 0, material 0, triangle kNoTriangle and
 // depth 1. Throws std::invalid_argument if the buffer sizes do not match the camera, the
-// world has corner normals but not three per triangle, a triangle index is out of range,
+// world has corner normals or UVs but not three per triangle, a triangle index is out of range,
 // or a pixel ray is parallel to its triangle's plane (a rasterizer never covers a pixel
 // centre with an edge-on triangle).
 GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
@@ -29,8 +34,8 @@ GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
                      const std::vector<float>& depth);
 
 // Throws std::invalid_argument (starting with `who`) unless every per-pixel array of the
-// G-buffer has width * height entries; stages that read a G-buffer they did not build
-// call it first.
+// G-buffer has width * height entries (uv: or none); stages that read a G-buffer they did
+// not build call it first.
 void requireConsistent(const GBuffer& gbuffer, const char* who);
 
 }  // namespace shadowlab

@@ -20,6 +20,7 @@
 #include "shading/gbuffer_build.h"
 #include "shading/lights.h"
 #include "shading/microfacet_ggx.h"
+#include "shading/surface_albedo.h"
 
 namespace shadowlab {
 
@@ -48,9 +49,9 @@ glm::vec3 ggxLobe(const Material& material, const glm::vec3& N, const glm::vec3&
 
 }  // namespace
 
-glm::vec3 brdf(const Material& material, const glm::vec3& N, const glm::vec3& wi,
+glm::vec3 brdf(const Material& material, const glm::vec3& albedo, const glm::vec3& N, const glm::vec3& wi,
                const glm::vec3& wo) {
-    const glm::vec3 diffuse = material.albedo * std::numbers::inv_pi_v<float>;
+    const glm::vec3 diffuse = albedo * std::numbers::inv_pi_v<float>;
     switch (material.model) {
         case MaterialModel::Lambert: return diffuse;
         case MaterialModel::BlinnPhong: return diffuse + material.specular * blinnPhongLobe(material.shininess, N, wi, wo);
@@ -73,13 +74,14 @@ glm::vec3 shadePixel(const Scene& scene, std::span<const ShadedLight> lights, co
     const Material& material = scene.materials[g.material[index]];
     const glm::vec3 P = g.position[index];
     const glm::vec3 N = g.normal[index];
-    glm::vec3 radiance = scene.environment.ambient * material.albedo;
+    const glm::vec3 albedo = surfaceAlbedo(material, scene.albedoTextures, g, index);
+    glm::vec3 radiance = scene.environment.ambient * albedo;
     for (const ShadedLight& shaded : lights) {
         const LightArrival arrival = lightArrival(scene.lights[shaded.light], P);
         const float cosIncidence = glm::dot(N, arrival.toLight);
         if (cosIncidence <= 0.0f) continue;   // the light is behind the surface
         const glm::vec3 wo = glm::normalize(scene.camera.eye - P);
-        const glm::vec3 direct = brdf(material, N, arrival.toLight, wo) * arrival.irradiance * cosIncidence;
+        const glm::vec3 direct = brdf(material, albedo, N, arrival.toLight, wo) * arrival.irradiance * cosIncidence;
         const glm::vec3 visibility = shaded.colouredV.empty() ? glm::vec3(shaded.V[index]) : shaded.colouredV[index];
         radiance += visibility * direct;
     }

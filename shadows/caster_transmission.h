@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scenes/alpha_texture.h"
+#include "scenes/nearest_texel.h"
 #include "scenes/scene.h"
 
 namespace shadowlab {
@@ -39,7 +39,7 @@ public:
     // material's passed() where translucent.
     glm::vec3 passedAt(uint32_t triangle, float u, float v) const;
     // Whether a cut-out triangle is solid at (u, v): its texture's alpha at the texel the
-    // interpolated texture coordinate falls in (alphaTexelIndex) is at least the cutoff.
+    // interpolated texture coordinate falls in (nearestTexelIndex) is at least the cutoff.
     bool solidAt(uint32_t triangle, float u, float v) const;
 
     std::span<const DensityVolume> volumes() const { return scene_.volumes; }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scenes/albedo_texture.h"
+
 namespace shadowlab {
 namespace {
 
@@ -16,10 +18,10 @@ glm::vec4 baseColorFactor(const GltfDocument& document, const tinygltf::Material
     return factor;
 }
 
-// The base colour texture's alpha times the factor's, per texel (row 0 at the top, as
-// glTF's images and our AlphaTexture store them).
-AlphaTexture maskAlpha(const GltfDocument& document, const tinygltf::TextureInfo& info, float factorAlpha,
-                       const std::string& field) {
+// The decoded image of the base colour texture (RGBA, row 0 at the top, as glTF's images
+// and our textures store them).
+const tinygltf::Image& baseColorImage(const GltfDocument& document, const tinygltf::TextureInfo& info,
+                                      const std::string& field) {
     if (info.texCoord != 0) document.fail(field + ".texCoord", "only TEXCOORD_0 is read");
     const auto& textures = document.model.textures;
     if (size_t(info.index) >= textures.size())
@@ -32,11 +34,29 @@ AlphaTexture maskAlpha(const GltfDocument& document, const tinygltf::TextureInfo
     const tinygltf::Image& image = document.model.images[size_t(source)];
     if (image.component != 4 || image.image.size() != 4 * size_t(image.width) * size_t(image.height))
         document.fail("images[" + std::to_string(source) + "]", "was not decoded");
-    AlphaTexture texture{document.path + ": images[" + std::to_string(source) + "]", image.width, image.height, {}};
+    return image;
+}
+
+std::string imageName(const GltfDocument& document, const tinygltf::TextureInfo& info) {
+    return document.path + ": images[" + std::to_string(document.model.textures[size_t(info.index)].source) + "]";
+}
+
+// The base colour texture's alpha times the factor's, per texel.
+AlphaTexture maskAlpha(const GltfDocument& document, const tinygltf::TextureInfo& info, float factorAlpha,
+                       const std::string& field) {
+    const tinygltf::Image& image = baseColorImage(document, info, field);
+    AlphaTexture texture{imageName(document, info), image.width, image.height, {}};
     texture.alpha.resize(size_t(image.width) * size_t(image.height));
     for (size_t k = 0; k < texture.alpha.size(); ++k)
         texture.alpha[k] = float(image.image[4 * k + 3]) / 255.0f * factorAlpha;
     return texture;
+}
+
+// The base colour texture's colour, linear (section 3.9.2: sRGB-encoded, then multiplied by
+// the factor, which the material's albedo keeps).
+AlbedoTexture baseColorAlbedo(const GltfDocument& document, const tinygltf::TextureInfo& info, const std::string& field) {
+    const tinygltf::Image& image = baseColorImage(document, info, field);
+    return decodeAlbedoTexture(imageName(document, info), image.width, image.height, image.image, 4);
 }
 
 }  // namespace
@@ -56,16 +76,18 @@ GltfMaterial readGltfMaterial(const GltfDocument& document, int index) {
     ours.name = material.name.empty() ? field : material.name;
     const glm::vec4 factor = baseColorFactor(document, material, field + ".pbrMetallicRoughness.baseColorFactor");
     ours.albedo = glm::vec3(factor);
+    const tinygltf::TextureInfo& texture = material.pbrMetallicRoughness.baseColorTexture;
+    const std::string textureField = field + ".pbrMetallicRoughness.baseColorTexture";
+    if (texture.index >= 0) result.albedoTexture = baseColorAlbedo(document, texture, textureField);
     if (material.alphaMode == "MASK") {
         const double cutoff = material.alphaCutoff;
         if (!(cutoff >= 0.0 && cutoff <= 1e30)) document.fail(field + ".alphaCutoff", "must be a number >= 0");
         // Alpha >= 0 always passes a cutoff of 0 (opaque), and never one over 1.
-        const tinygltf::TextureInfo& texture = material.pbrMetallicRoughness.baseColorTexture;
         if (cutoff > 1.0) {
             result.invisible = true;
         } else if (texture.index >= 0 && cutoff > 0.0) {
             ours.alphaCutoff = float(cutoff);
-            result.alphaTexture = maskAlpha(document, texture, factor.a, field + ".pbrMetallicRoughness.baseColorTexture");
+            result.alphaTexture = maskAlpha(document, texture, factor.a, textureField);
         } else {
             result.invisible = factor.a < float(cutoff);
         }

@@ -1,13 +1,15 @@
 // Stage 5 of the glTF reader: a material (glTF 2.0, section 3.9) as ours (scenes/scene.h,
 // Material; docs/scene-format.md, "glTF files"):
 //   baseColorFactor rgb -> albedo (Lambert; metallic and roughness are not read);
+//   baseColorTexture rgb -> the albedo texture, decoded from sRGB to linear (section 3.9.2:
+//   the surface's albedo is the factor times the texture), nearest texel, clamped (the
+//   texture's sampler is not read: every texture here is read as the cut-outs' alpha is);
 //   alphaMode OPAQUE -> opaque; MASK -> a cut-out whose alpha is the base colour texture's
 //   alpha times the factor's alpha, with alphaCutoff (without a texture the factor's alpha
 //   alone decides: at or above the cutoff opaque, below it the surface is not drawn);
 //   BLEND -> translucency, opacity = the factor's alpha (the texture's alpha not read);
 //   doubleSided is read and has no effect: every surface here is drawn and casts from both
 //   sides (the camera pass does not cull).
-// The base colour texture's colour is not read (our materials have one albedo).
 #pragma once
 
 #include <optional>
@@ -20,6 +22,7 @@ namespace shadowlab {
 struct GltfMaterial {
     Material material;
     std::optional<AlphaTexture> alphaTexture;   // for a MASK with a texture; its index is set by the caller
+    std::optional<AlbedoTexture> albedoTexture; // for a base colour texture; its index is set by the caller
     bool invisible = false;                     // a MASK whose constant alpha is below the cutoff
 };
 

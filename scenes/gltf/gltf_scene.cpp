@@ -42,6 +42,10 @@ public:
                 read.material.alphaTexture = int(model.alphaTextures.size());
                 model.alphaTextures.push_back(std::move(*read.alphaTexture));
             }
+            if (read.albedoTexture) {
+                read.material.albedoTexture = int(model.albedoTextures.size());
+                model.albedoTextures.push_back(std::move(*read.albedoTexture));
+            }
             ours = uint32_t(model.materials.size());
             model.materials.push_back(read.material);
         }
@@ -95,8 +99,9 @@ void addNodeMesh(const GltfDocument& document, const PlacedNode& placed, ModelBu
         const std::optional<uint32_t> material = builder.material(mesh.primitives[p].material);
         if (!material) continue;
         GltfModel& model = builder.model;
-        if (model.materials[*material].cutOut() && model.meshes[*ours].cornerUvs.empty())
-            document.fail(primitiveField + ".attributes", "a MASK material's texture needs TEXCOORD_0");
+        if ((model.materials[*material].cutOut() || model.materials[*material].textured()) &&
+            model.meshes[*ours].cornerUvs.empty())
+            document.fail(primitiveField + ".attributes", "its material's base colour texture needs TEXCOORD_0");
         counts.triangles += model.meshes[*ours].triangles.size();
         counts.vertices += model.meshes[*ours].positions.size();
         if (counts.triangles > kMaxSceneTriangles || counts.vertices > kMaxSceneVertices ||
@@ -166,12 +171,14 @@ GltfModel readGltfModel(const std::string& path) { return parseGltfModel(readWho
 void appendGltfModel(const GltfModel& model, const glm::mat4& placement, std::optional<uint32_t> material,
                      const std::string& name, Scene& scene) {
     const uint32_t meshBase = uint32_t(scene.meshes.size()), materialBase = uint32_t(scene.materials.size());
-    const int textureBase = int(scene.alphaTextures.size());
+    const int alphaBase = int(scene.alphaTextures.size()), albedoBase = int(scene.albedoTextures.size());
     scene.meshes.insert(scene.meshes.end(), model.meshes.begin(), model.meshes.end());
     scene.alphaTextures.insert(scene.alphaTextures.end(), model.alphaTextures.begin(), model.alphaTextures.end());
+    scene.albedoTextures.insert(scene.albedoTextures.end(), model.albedoTextures.begin(), model.albedoTextures.end());
     if (!material) {
         for (Material m : model.materials) {
-            if (m.cutOut()) m.alphaTexture += textureBase;
+            if (m.cutOut()) m.alphaTexture += alphaBase;
+            if (m.textured()) m.albedoTexture += albedoBase;
             m.name = name + "/" + m.name;
             scene.materials.push_back(m);
         }

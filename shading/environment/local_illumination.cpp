@@ -52,10 +52,10 @@ LocalIllumination buildLocalIllumination(const EnvironmentMap& map, const std::v
     return light;
 }
 
-glm::dvec3 unshadowedRadiance(const LocalIllumination& light, const Material& material, const glm::dvec3& N,
-                              const glm::dvec3& wo) {
+glm::dvec3 unshadowedRadiance(const LocalIllumination& light, const Material& material, const glm::vec3& albedo,
+                              const glm::dvec3& N, const glm::dvec3& wo) {
     refuseBlinnPhong(material);
-    const glm::dvec3 diffuse = glm::dvec3(material.albedo) / kPi * evaluateSh(light.irradiance, N);
+    const glm::dvec3 diffuse = glm::dvec3(albedo) / kPi * evaluateSh(light.irradiance, N);
     if (material.model == MaterialModel::Lambert) return diffuse;
     const double cosV = glm::dot(N, wo);
     if (cosV <= 0.0) return diffuse;   // seen from below its shading normal: no lobe above

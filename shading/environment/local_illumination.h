@@ -39,9 +39,9 @@ struct LocalIllumination {
 LocalIllumination buildLocalIllumination(const EnvironmentMap& map, const std::vector<Material>& materials);
 
 // C at a surface point: outgoing radiance towards wo (unit, to the viewer) for the unit
-// shading normal N. Throws std::invalid_argument for a Blinn-Phong material, or for a Phong
+// shading normal N, `albedo` the surface's there (shading/surface_albedo.h). Throws std::invalid_argument for a Blinn-Phong material, or for a Phong
 // or GGX material when its table is empty.
-glm::dvec3 unshadowedRadiance(const LocalIllumination& light, const Material& material, const glm::dvec3& N,
-                              const glm::dvec3& wo);
+glm::dvec3 unshadowedRadiance(const LocalIllumination& light, const Material& material, const glm::vec3& albedo,
+                              const glm::dvec3& N, const glm::dvec3& wo);
 
 }  // namespace shadowlab

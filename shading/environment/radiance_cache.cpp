@@ -33,7 +33,7 @@ struct Reflection {
 
     glm::dvec3 weight(const glm::dvec3& l) const {
         const double cosine = glm::dot(N, l);
-        return cosine > 0.0 ? glm::dvec3(brdf(material, glm::vec3(N), glm::vec3(l), glm::vec3(v))) * cosine : glm::dvec3(0.0);
+        return cosine > 0.0 ? glm::dvec3(brdf(material, material.albedo, glm::vec3(N), glm::vec3(l), glm::vec3(v))) * cosine : glm::dvec3(0.0);
     }
 
     bool split(size_t level, int i, int j, double wCentre, double solidAngle, double brightest) const {

@@ -4,7 +4,9 @@
 //
 //     C(N) = integral over the sphere of f(l, v; N) L(l) max(0, N . l) dl,
 //
-// so C is tabulated once per frame and material over the sphere of normals, for any BRDF
+// so C is tabulated once per frame and material over the sphere of normals (with the
+// material's one albedo: a textured material, whose albedo varies over the surface, has no
+// table; shadows/environment/unshadowed_light.h refuses it), for any BRDF
 // shading/shade.h's brdf() evaluates (Blinn-Phong, which prefiltered maps cannot serve,
 // included), and looked up per pixel. v is one direction for the whole frame (the camera's
 // axis, towards the eye): the distant-viewer approximation, exact for an orthographic view,

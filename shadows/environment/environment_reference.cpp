@@ -30,6 +30,7 @@
 #include "shading/environment/environment_distribution.h"
 #include "shading/light_sampling.h"
 #include "shading/shade.h"
+#include "shading/surface_albedo.h"
 #include "shadows/environment/environment_source.h"
 #include "shadows/environment/environment_techniques.h"
 #include "shadows/environment/light_contribution.h"
@@ -47,6 +48,7 @@ struct Integrand {
     const EnvironmentDistribution& environment;
     const ReferenceVisibility& rays;
     const Material& material;
+    glm::vec3 albedo;   // the surface's at the pixel (shading/surface_albedo.h)
     glm::vec3 P, Ng, Ns, wo;
 
     // f L V cos / (p_env + p_brdf) in direction wi; 0 below either normal's plane.
@@ -55,7 +57,7 @@ struct Integrand {
         if (!(cosine > 0.0)) return glm::dvec3(0.0);
         const glm::ivec2 t = map.texelToward(wi);
         const glm::dvec3 L(map.at(t.x, t.y));
-        const glm::dvec3 f(brdf(material, Ns, glm::vec3(wi), wo));
+        const glm::dvec3 f(brdf(material, albedo, Ns, glm::vec3(wi), wo));
         if (glm::dot(f * L, glm::dvec3(1.0)) == 0.0) return glm::dvec3(0.0);
         const double pdf = (environment.empty() ? 0.0 : environment.pdf(wi)) +
                            brdfPdf(material, glm::dvec3(Ns), glm::dvec3(wo), wi);
@@ -111,8 +113,9 @@ ShadowOutputs runExactIntegral(const ShadowInputs& in) {
             for (int i = 0; i < g.width; ++i) {
                 const size_t k = g.index(i, j);
                 if (!g.hit[k]) continue;
-                const Integrand integrand{map, environment, rays, in.scene().materials.at(g.material[k]),
-                                          g.position[k], g.normal[k], g.shadingNormal[k],
+                const Material& material = in.scene().materials.at(g.material[k]);
+                const Integrand integrand{map, environment, rays, material,
+                                          surfaceAlbedo(material, in.scene().albedoTextures, g, k), g.position[k], g.normal[k], g.shadingNormal[k],
                                           glm::normalize(eye - g.position[k])};
                 const glm::dvec3 a = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[0], k));
                 const glm::dvec3 b = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[1], k));
@@ -124,7 +127,7 @@ ShadowOutputs runExactIntegral(const ShadowInputs& in) {
     });
     timer.lap("integration");
     for (const Light& light : in.scene().lights) {
-        addSceneLight(g, in.scene().materials, eye, light, rays.visibility(g, light), LightPart::Lit, out.radiance);
+        addSceneLight(g, in.scene().materials, in.scene().albedoTextures, eye, light, rays.visibility(g, light), LightPart::Lit, out.radiance);
     }
     timer.lap("scene_lights");
 

@@ -8,6 +8,7 @@
 
 #include "shading/lights.h"
 #include "shading/shade.h"
+#include "shading/surface_albedo.h"
 
 namespace shadowlab {
 namespace {
@@ -24,7 +25,8 @@ struct SceneArrival {
 
 // The one loop both kinds of light share; Arrival is compiled in, not called through a pointer.
 template <class Arrival>
-uint64_t addLight(const GBuffer& g, const std::vector<Material>& materials, const glm::vec3& eye, const Arrival& arrivalAt,
+uint64_t addLight(const GBuffer& g, const std::vector<Material>& materials, const std::vector<AlbedoTexture>& albedoTextures,
+                  const glm::vec3& eye, const Arrival& arrivalAt,
                   const std::vector<float>& V, LightPart part, std::vector<glm::vec3>& sum) {
     if (V.size() != g.pixelCount() || sum.size() != g.pixelCount())
         throw std::invalid_argument("light contribution: V and the sum need one entry per pixel");
@@ -42,7 +44,9 @@ uint64_t addLight(const GBuffer& g, const std::vector<Material>& materials, cons
                 ++count;
                 if (!(cosine > 0.0f)) continue;
                 const glm::vec3 wo = glm::normalize(eye - g.position[k]);
-                sum[k] += weight * brdf(materials.at(g.material[k]), N, a.toLight, wo) * a.irradiance * cosine;
+                const Material& material = materials.at(g.material[k]);
+                const glm::vec3 albedo = surfaceAlbedo(material, albedoTextures, g, k);
+                sum[k] += weight * brdf(material, albedo, N, a.toLight, wo) * a.irradiance * cosine;
             }
         }
         shaded += count;   // an integer sum: the same in any order
@@ -52,15 +56,17 @@ uint64_t addLight(const GBuffer& g, const std::vector<Material>& materials, cons
 
 }  // namespace
 
-uint64_t addDistantLight(const GBuffer& g, const std::vector<Material>& materials, const glm::vec3& eye,
+uint64_t addDistantLight(const GBuffer& g, const std::vector<Material>& materials,
+                         const std::vector<AlbedoTexture>& albedoTextures, const glm::vec3& eye,
                          const glm::vec3& toLight, const glm::vec3& irradiance, const std::vector<float>& V,
                          LightPart part, std::vector<glm::vec3>& sum) {
-    return addLight(g, materials, eye, DistantArrival{{toLight, irradiance}}, V, part, sum);
+    return addLight(g, materials, albedoTextures, eye, DistantArrival{{toLight, irradiance}}, V, part, sum);
 }
 
-uint64_t addSceneLight(const GBuffer& g, const std::vector<Material>& materials, const glm::vec3& eye, const Light& light,
+uint64_t addSceneLight(const GBuffer& g, const std::vector<Material>& materials,
+                       const std::vector<AlbedoTexture>& albedoTextures, const glm::vec3& eye, const Light& light,
                        const std::vector<float>& V, LightPart part, std::vector<glm::vec3>& sum) {
-    return addLight(g, materials, eye, SceneArrival{light}, V, part, sum);
+    return addLight(g, materials, albedoTextures, eye, SceneArrival{light}, V, part, sum);
 }
 
 }  // namespace shadowlab

@@ -25,13 +25,16 @@ enum class LightPart { Lit, Occluded };   // weight V, or 1 - V
 
 // Adds the light's weighted share to `sum` (one entry per pixel of g) and returns how many
 // pixels had a weight other than 0. `materials` are indexed by the G-buffer's material (the
-// scene's, or their lobes widened for this light: light_lobes.h); `eye` is the camera the
+// scene's, or their lobes widened for this light: light_lobes.h), their albedo textures in
+// `albedoTextures` (the scene's; shading/surface_albedo.h); `eye` is the camera the
 // G-buffer was built with; `V` has one entry per pixel. The sum is the same bytes for any
 // number of threads (each pixel is one task's).
-uint64_t addDistantLight(const GBuffer& g, const std::vector<Material>& materials, const glm::vec3& eye,
+uint64_t addDistantLight(const GBuffer& g, const std::vector<Material>& materials,
+                         const std::vector<AlbedoTexture>& albedoTextures, const glm::vec3& eye,
                          const glm::vec3& toLight, const glm::vec3& irradiance, const std::vector<float>& V,
                          LightPart part, std::vector<glm::vec3>& sum);
-uint64_t addSceneLight(const GBuffer& g, const std::vector<Material>& materials, const glm::vec3& eye, const Light& light,
+uint64_t addSceneLight(const GBuffer& g, const std::vector<Material>& materials,
+                       const std::vector<AlbedoTexture>& albedoTextures, const glm::vec3& eye, const Light& light,
                        const std::vector<float>& V, LightPart part, std::vector<glm::vec3>& sum);
 
 }  // namespace shadowlab

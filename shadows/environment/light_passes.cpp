@@ -30,7 +30,7 @@ uint64_t addSampledLights(const ShadowInputs& in, LightVisibility& visibility, c
         const Light light = directionalLight(environmentLight);
         const std::vector<float> V = visibility.of(light, g, camera);
         timer.lap("visibility");
-        shaded += addDistantLight(g, lightMaterials(in.scene(), environmentLight, lobes), camera.eye, light.direction,
+        shaded += addDistantLight(g, lightMaterials(in.scene(), environmentLight, lobes), in.scene().albedoTextures, camera.eye, light.direction,
                                   light.intensity, V, part, sum);
         timer.lap(part == LightPart::Lit ? "shading" : "shadow_buffer");
     }
@@ -41,7 +41,7 @@ uint64_t addSceneLights(const ShadowInputs& in, LightVisibility& visibility, std
     uint64_t shaded = 0;
     for (const Light& light : in.scene().lights) {
         const std::vector<float> V = visibility.of(light, in.gbuffer, in.camera());
-        shaded += addSceneLight(in.gbuffer, in.scene().materials, in.camera().eye, light, V, LightPart::Lit, radiance);
+        shaded += addSceneLight(in.gbuffer, in.scene().materials, in.scene().albedoTextures, in.camera().eye, light, V, LightPart::Lit, radiance);
     }
     return shaded;
 }

@@ -8,6 +8,7 @@
 
 #include "scenes/error_text.h"
 #include "shading/environment/radiance_cache.h"
+#include "shading/surface_albedo.h"
 #include "shadows/environment/environment_source.h"
 
 namespace shadowlab {
@@ -43,7 +44,7 @@ std::vector<bool> visibleMaterials(const GBuffer& g, size_t count) {
     return visible;
 }
 
-// Per pixel, C from `at(material, N, wo)`; Lookup is compiled in.
+// Per pixel, C from `at(pixel, N, wo)`; Lookup is compiled in.
 template <class Lookup>
 std::vector<glm::vec3> perPixel(const ShadowInputs& in, const Lookup& at) {
     const GBuffer& g = in.gbuffer;
@@ -53,7 +54,7 @@ std::vector<glm::vec3> perPixel(const ShadowInputs& in, const Lookup& at) {
         for (size_t k = pixels.begin(); k != pixels.end(); ++k) {
             if (!g.hit[k]) continue;
             const glm::dvec3 wo = glm::normalize(eye - glm::dvec3(g.position[k]));
-            C[k] = glm::vec3(at(g.material[k], glm::dvec3(g.shadingNormal[k]), wo));
+            C[k] = glm::vec3(at(k, glm::dvec3(g.shadingNormal[k]), wo));
         }
     });
     return C;
@@ -62,9 +63,17 @@ std::vector<glm::vec3> perPixel(const ShadowInputs& in, const Lookup& at) {
 }  // namespace
 
 void refuseUnservedMaterials(const ShadowInputs& in, const UnshadowedSettings& settings) {
-    if (settings.method != UnshadowedMethod::Tables) return;
     const std::vector<Material>& materials = in.scene().materials;
     const std::vector<bool> visible = visibleMaterials(in.gbuffer, materials.size());
+    if (settings.method == UnshadowedMethod::RadianceCache) {
+        for (size_t m = 0; m < materials.size(); ++m) {
+            if (visible[m] && materials[m].textured())
+                throw std::invalid_argument("material " + inQuotes(materials[m].name) +
+                                            ": the radiance cache holds one albedo per material, and this one has an "
+                                            "albedo texture; use --param unshadowed=tables");
+        }
+        return;
+    }
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     for (size_t m = 0; m < materials.size(); ++m) {
         if (visible[m] && !tablesServe(materials[m], map))
@@ -77,10 +86,13 @@ void refuseUnservedMaterials(const ShadowInputs& in, const UnshadowedSettings& s
 std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, const UnshadowedSettings& settings,
                                        std::vector<TechniqueStat>& stats) {
     const std::vector<Material>& materials = in.scene().materials;
+    const GBuffer& g = in.gbuffer;
     if (settings.method == UnshadowedMethod::Tables) {
         const LocalIllumination& local = sceneLocalIllumination(in.prepared);
-        return perPixel(in, [&](uint32_t m, const glm::dvec3& N, const glm::dvec3& wo) {
-            return unshadowedRadiance(local, materials[m], N, wo);
+        const std::vector<AlbedoTexture>& textures = in.scene().albedoTextures;
+        return perPixel(in, [&](size_t k, const glm::dvec3& N, const glm::dvec3& wo) {
+            const Material& material = materials[g.material[k]];
+            return unshadowedRadiance(local, material, surfaceAlbedo(material, textures, g, k), N, wo);
         });
     }
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
@@ -92,7 +104,7 @@ std::vector<glm::vec3> unshadowedLight(const ShadowInputs& in, const UnshadowedS
         if (visible[m]) caches[m] = buildRadianceCache(map, scenePyramid(in.prepared), materials[m], toViewer, settings.cacheSize);
     }
     stats.push_back({"radiance_caches_count", double(std::count(visible.begin(), visible.end(), true))});
-    return perPixel(in, [&](uint32_t m, const glm::dvec3& N, const glm::dvec3&) { return lookupRadianceCache(caches[m], N); });
+    return perPixel(in, [&](size_t k, const glm::dvec3& N, const glm::dvec3&) { return lookupRadianceCache(caches[g.material[k]], N); });
 }
 
 }  // namespace shadowlab

@@ -30,8 +30,9 @@ const SettingsTable<UnshadowedSettings>& unshadowedSettingsTable();
 // Technique::prepare's part: with the tables, the scene's (`local_illumination_ms`).
 std::vector<TechniqueStat> prepareUnshadowedLight(const PreparedScene& prepared, const UnshadowedSettings& settings);
 
-// Throws std::invalid_argument naming a visible material the tables cannot serve
-// (Blinn-Phong, a lobe too sharp for the map) with the tables: a technique calls it before
+// Throws std::invalid_argument naming a visible material the method cannot serve: with the
+// tables, Blinn-Phong or a lobe too sharp for the map; with the radiance cache, an albedo
+// texture (a table over normals holds one albedo per material). A technique calls it before
 // any other work.
 void refuseUnservedMaterials(const ShadowInputs& in, const UnshadowedSettings& settings);
 

@@ -102,3 +102,28 @@ TEST_CASE("furnace: a floor under a ceiling that hides the whole sky reflects no
         CHECK(stat(f, "clamped_pixels") == double(hits(f)));
     }
 }
+
+// The floor's albedo from an albedo texture (shading/surface_albedo.h): a white material
+// whose one texel is kFloorAlbedo reflects kFloorAlbedo L, as the plain floor does; a
+// stage that read the material's albedo alone would reflect L. The radiance cache, one
+// albedo per material, refuses it by name.
+TEST_CASE("furnace: a floor whose albedo is its texture's reflects the texel's albedo times L") {
+    const ScratchDirectory dir("furnace-textured");
+    Scene scene = furnaceScene(writeConstantMap(dir, kFurnaceRadiance), false);
+    scene.materials[0].albedo = glm::vec3(1.0f);
+    scene.materials[0].albedoTexture = 0;
+    scene.albedoTextures.push_back({.source = "one texel", .width = 1, .height = 1, .albedo = {kFloorAlbedo}});
+    const PreparedScene textured(std::move(scene));
+    const Frame subtractive = frameOf(textured, "env-subtractive", {{"lights", "16"}});
+    REQUIRE(hits(subtractive) > 100);
+    CHECK(worstRelativeError(subtractive) < 1e-5);
+    const Frame additive = frameOf(textured, "env-additive", {{"lights", "64"}, {"visibility", "exact"}});
+    CHECK(worstRelativeError(additive) < 0.04);
+    const Frame reference = frameOf(textured, "reference-env", {{"samples", "16"}});
+    const double noise = stat(reference, "halves_rms_percent") / 100.0;
+    CHECK(std::abs(meanRelativeError(reference)) < 4.0 * noise / std::sqrt(double(hits(reference))));
+    CHECK_THROWS_WITH_AS(frameOf(textured, "env-subtractive", {{"unshadowed", "radiance-cache"}}),
+                         "material \"floor\": the radiance cache holds one albedo per material, and this one has an "
+                         "albedo texture; use --param unshadowed=tables",
+                         std::invalid_argument);
+}

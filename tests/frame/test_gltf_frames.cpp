@@ -1,7 +1,9 @@
 // A glTF scene renders to the same bytes as the same scene written as scene JSON with OBJ
-// meshes and a PNG cut-out, and as scene JSON placing the glTF file as a model: the glTF
-// reader maps nodes, UVs, MASK materials, the camera and a point light exactly as
-// docs/scene-format.md ("glTF files") says.
+// meshes and a PNG cut-out and albedo, and as scene JSON placing the glTF file as a model:
+// the glTF reader maps nodes, UVs, MASK materials, base colour textures, the camera and a
+// point light exactly as docs/scene-format.md ("glTF files") says. A base colour texture
+// gives the albedo glTF 2.0's section 3.9.2 says.
+#include <cmath>
 #include <cstring>
 #include <fstream>
 
@@ -22,7 +24,8 @@ using nlohmann::json;
 namespace {
 
 // A 20 m ground and, above it, a 2 m x 2 m card in the z = 0 plane cut out by a 4 x 4
-// checker of alphas 0 and 255 with one texel at 128 (above the 0.5 cutoff).
+// checker of alphas 0 and 255 with one texel at 128 (above the 0.5 cutoff), its colour a
+// different grey-green per texel.
 const std::vector<glm::vec3> kGround = {{-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}};
 const std::vector<glm::vec3> kCard = {{-1, 0.5, 0}, {1, 0.5, 0}, {1, 2.5, 0}, {-1, 2.5, 0}};
 const std::vector<glm::vec2> kCardUvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};   // glTF's: v down from the top
@@ -32,7 +35,7 @@ constexpr double kYfov = 0.8;
 void writeLeaf(const test::TempDir& dir) {
     unsigned char rgba[64];
     for (int k = 0; k < 16; ++k) {
-        rgba[4 * k] = rgba[4 * k + 1] = rgba[4 * k + 2] = 200;
+        rgba[4 * k] = uint8_t(40 + 12 * k), rgba[4 * k + 1] = 200, rgba[4 * k + 2] = uint8_t(220 - 9 * k);
         rgba[4 * k + 3] = ((k % 4 + k / 4) % 2) ? 255 : 0;
     }
     rgba[4 * 5 + 3] = 128;
@@ -86,7 +89,11 @@ std::string jsonWithObjText() {
     json scene = cameraAndLights();
     scene["meshes"] = {{{"name", "ground"}, {"file", "ground.obj"}}, {{"name", "card"}, {"file", "card.obj"}}};
     scene["materials"] = {{{"name", "ground"}, {"albedo", {0.8, 0.8, 0.8}}},
-                          {{"name", "leaf"}, {"albedo", {0.8, 0.8, 0.8}}, {"alpha-texture", "leaf.png"}, {"alpha-cutoff", 0.5}}};
+                          {{"name", "leaf"},
+                           {"albedo", {0.8, 0.8, 0.8}},
+                           {"albedo-texture", "leaf.png"},
+                           {"alpha-texture", "leaf.png"},
+                           {"alpha-cutoff", 0.5}}};
     scene["instances"] = {{{"mesh", "ground"}, {"material", "ground"}}, {{"mesh", "card"}, {"material", "leaf"}}};
     return scene.dump();
 }
@@ -130,4 +137,68 @@ TEST_CASE("a glTF scene, the same scene as JSON with OBJ meshes, and JSON placin
     CHECK(test::sameBytes(gltf.radiance, objs.radiance));
     CHECK(test::sameBytes(gltf.shadow.visibility, model.shadow.visibility));
     CHECK(test::sameBytes(gltf.radiance, model.radiance));
+}
+
+namespace {
+
+// The sRGB decoding as IEC 61966-2-1 defines it, in double.
+double srgbDecoded(int c) {
+    const double x = c / 255.0;
+    return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+}
+
+// A 2 m square facing +Z, its 2 x 2 texture's top row at y > 0 (glTF's v runs down the image).
+std::string texturedPlaneText(const glm::dvec3& factor) {
+    const std::vector<glm::vec3> plane = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    const std::vector<glm::vec2> uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    test::GltfFile file;
+    file.json["images"] = {{{"uri", "colours.png"}}};
+    file.json["textures"] = {{{"source", 0}}};
+    file.json["materials"] = {{{"pbrMetallicRoughness",
+                                {{"baseColorFactor", {factor.x, factor.y, factor.z, 1}}, {"baseColorTexture", {{"index", 0}}}}}}};
+    const int mesh = file.mesh({{"material", 0}, {"indices", file.indices(kQuad)},
+                                {"attributes", {{"POSITION", file.vec3s(plane)}, {"TEXCOORD_0", file.vec2s(uvs)}}}});
+    file.node({{"mesh", mesh}});
+    file.json["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"aspectRatio", 1.0}, {"znear", 0.1}, {"zfar", 10}}}}};
+    file.node({{"camera", 0}, {"translation", {0, 0, 3}}});
+    // A directional light shines along its node's -Z: straight onto the plane.
+    file.json["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "directional"}, {"intensity", 2}}};
+    file.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    return file.gltf();
+}
+
+}  // namespace
+
+TEST_CASE("a glTF base colour texture times its factor is the albedo each texel's part of a plane reflects") {
+    test::TempDir dir;
+    const unsigned char rgb[12] = {255, 0, 0, 30, 140, 250,    // top row: left, right
+                                   128, 128, 128, 10, 200, 60};   // bottom row
+    REQUIRE(stbi_write_png(dir.path("colours.png").c_str(), 2, 2, 3, rgb, 6) != 0);
+    const glm::dvec3 factor(0.5, 0.75, 1.0);
+    Scene scene = loadScene(dir.write("plane.gltf", texturedPlaneText(factor)), "");
+    REQUIRE(scene.lights.size() == 1);
+    REQUIRE(scene.lights[0].type == LightType::Directional);
+    REQUIRE(scene.lights[0].direction == glm::vec3(0, 0, 1));   // towards the light: along the plane's normal
+    REQUIRE(scene.environment.ambient == glm::vec3(0.0f));
+    const glm::dvec3 E(scene.lights[0].intensity);
+    SceneOverrides overrides;
+    overrides.width = overrides.height = 48;
+    applyOverrides(scene, overrides);
+    const PreparedScene prepared(std::move(scene));
+    const Frame frame = renderFrame(prepared, findTechnique("none"), FrameSettings{});
+    // L = albedo / pi * E * cos, cos = 1, albedo = factor * decoded texel (glTF 2.0, 3.9.2),
+    // at pixels inside each texel's quarter (clear of the seams, where either texel is right).
+    int checked[4] = {0, 0, 0, 0};
+    for (size_t k = 0; k < frame.gbuffer.pixelCount(); ++k) {
+        if (!frame.gbuffer.hit[k]) continue;
+        const glm::vec3 P = frame.gbuffer.position[k];
+        if (std::abs(P.x) < 0.05f || std::abs(P.y) < 0.05f) continue;
+        const int texel = (P.y > 0.0f ? 0 : 2) + (P.x > 0.0f ? 1 : 0);
+        for (int c = 0; c < 3; ++c) {
+            const double expected = factor[c] * srgbDecoded(rgb[3 * texel + c]) * E[c] / M_PI;
+            CHECK(double(frame.radiance[k][c]) == doctest::Approx(expected).epsilon(1e-5));
+        }
+        ++checked[texel];
+    }
+    for (int texel = 0; texel < 4; ++texel) CHECK(checked[texel] > 100);
 }

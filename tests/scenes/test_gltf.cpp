@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>
 
+#include "scenes/albedo_texture.h"
 #include "scenes/gltf_scene.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_limits.h"
@@ -140,12 +141,54 @@ TEST_CASE("a glTF MASK material is a cut-out: alpha = texel alpha x factor alpha
     for (int k = 0; k < 4; ++k) CHECK(texture.alpha[size_t(k)] == float(rgba[4 * k + 3]) / 255.0f * 1.0f);
     // Our test cuts where alpha < cutoff (scene.h), glTF's where alpha < alphaCutoff: the
     // texel at 128 stays, 127 is a hole, bit for bit the same decision.
+    // Its colour is the albedo texture, each texel sRGB 9 decoded (9/255 / 12.92).
+    REQUIRE(material.textured());
+    CHECK(scene.albedoTextures[size_t(material.albedoTexture)].albedo == std::vector<glm::vec3>(4, glm::vec3(float(9.0 / 255.0 / 12.92))));
     CHECK(texture.alpha[0] < material.alphaCutoff);
     CHECK_FALSE(texture.alpha[1] < material.alphaCutoff);
     // glTF's v runs down from the image's top; ours up from its bottom.
     const WorldGeometry world = flatten(scene);
     CHECK(world.cornerUvs[0] == glm::vec2(0, 1));
     CHECK(world.cornerUvs[2] == glm::vec2(0, 0));
+}
+
+TEST_CASE("sRGB texels decode to linear albedo by IEC 61966-2-1's two pieces") {
+    for (int c = 0; c < 256; ++c) {
+        const double x = c / 255.0;
+        const double expected = x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+        CHECK(double(srgbToLinear(uint8_t(c))) == doctest::Approx(expected).epsilon(1e-6));
+    }
+    CHECK(srgbToLinear(0) == 0.0f);
+    CHECK(srgbToLinear(255) == 1.0f);
+}
+
+TEST_CASE("an OPAQUE glTF material's base colour texture is its albedo texture; without TEXCOORD_0 it is refused") {
+    test::TempDir dir;
+    const unsigned char rgb[6] = {0, 128, 255, 64, 32, 16};
+    REQUIRE(stbi_write_png(dir.path("colours.png").c_str(), 2, 1, 3, rgb, 6) != 0);
+    GltfFile file;
+    file.json["images"] = {{{"uri", "colours.png"}}};
+    file.json["textures"] = {{{"source", 0}}};
+    file.json["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.25, 1, 1}}, {"baseColorTexture", {{"index", 0}}}}}}};
+    const int positions = file.vec3s({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    GltfFile withUvs = file;
+    const int uvs = withUvs.vec2s({{0, 0}, {1, 0}, {0, 1}});
+    withUvs.node({{"mesh", withUvs.mesh({{"material", 0}, {"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}})}});
+    const Scene scene = loadWritten(dir, "colours.gltf", withUvs.gltf());
+    REQUIRE(scene.materials.size() == 1);
+    const Material& material = scene.materials[0];
+    CHECK(material.albedo == glm::vec3(0.5f, 0.25f, 1.0f));   // the factor; the texture multiplies it where it is read
+    CHECK_FALSE(material.cutOut());
+    REQUIRE(material.textured());
+    const AlbedoTexture& texture = scene.albedoTextures[size_t(material.albedoTexture)];
+    CHECK(texture.width == 2);
+    CHECK(texture.height == 1);
+    CHECK(texture.albedo == std::vector<glm::vec3>{{srgbToLinear(0), srgbToLinear(128), srgbToLinear(255)},
+                                                   {srgbToLinear(64), srgbToLinear(32), srgbToLinear(16)}});
+    file.node({{"mesh", file.mesh({{"material", 0}, {"attributes", {{"POSITION", positions}}}})}});
+    const std::string path = dir.write("bare.gltf", file.gltf());
+    test::checkMessage(test::sceneErrorOf([&] { loadScene(path, ""); }),
+                       {"bare.gltf", "meshes[0].primitives[0].attributes", "its material's base colour texture needs TEXCOORD_0"});
 }
 
 TEST_CASE("glTF BLEND is translucency (opacity = the factor's alpha) and MASK without a texture is all or nothing") {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>
 
+#include "scenes/albedo_texture.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
@@ -373,7 +374,7 @@ TEST_CASE("casters that are not opaque load: translucent and cut-out materials, 
     s["meshes"].push_back({{"name", "hair"}, {"procedural", "hair"}, {"size", {1, 0.2, 0.5}}, {"strands", 50},
                            {"width", 0.004}, {"segments", 4}, {"seed", 3}});
     s["materials"].push_back({{"name", "glass"}, {"opacity", 0.25}, {"transmittance", {0.2, 0.8, 0.3}}});
-    s["materials"].push_back({{"name", "leaf"}, {"alpha-texture", "leaf.png"}, {"alpha-cutoff", 0.4}});
+    s["materials"].push_back({{"name", "leaf"}, {"alpha-texture", "leaf.png"}, {"alpha-cutoff", 0.4}, {"albedo-texture", "leaf.png"}});
     s["instances"].push_back({{"mesh", "hair"}, {"material", "glass"}});
     s["instances"].push_back({{"mesh", "ground"}, {"material", "leaf"}, {"translate", {0, 2, 0}}});
     s["volumes"] = {{{"name", "puff"}, {"procedural", "smoke-puff"}, {"min", {-1, 0, -1}}, {"max", {1, 2, 1}},
@@ -385,6 +386,10 @@ TEST_CASE("casters that are not opaque load: translucent and cut-out materials, 
     REQUIRE(scene.alphaTextures.size() == 1);
     CHECK(scene.materials[3].alphaTexture == 0);
     CHECK(scene.alphaTextures[0].alpha == std::vector<float>{0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 1.0f, 1.0f});
+    // The same file's colour as the albedo texture: sRGB 200 decoded, its alpha not read.
+    REQUIRE(scene.albedoTextures.size() == 1);
+    CHECK(scene.materials[3].albedoTexture == 0);
+    CHECK(scene.albedoTextures[0].albedo == std::vector<glm::vec3>(8, glm::vec3(srgbToLinear(200))));
     CHECK(scene.meshes[4].triangles.size() == 2 * 50 * 4);
     REQUIRE(scene.volumes.size() == 2);
     CHECK(scene.volumes[0].sigma.size() == 8 * 8 * 8);
@@ -418,6 +423,11 @@ TEST_CASE("mistakes in casters that are not opaque") {
              {"cut-out mesh without uvs",
               [](json& s) { s["materials"][1]["alpha-texture"] = "leaf.png"; },
               {"instances: instance", "has a cut-out material (alpha-texture) on a mesh without texture coordinates"}},
+             {"missing albedo texture", withMaterial({{"albedo-texture", "none.png"}}),
+              {"materials[0].albedo-texture: ", "none.png: cannot open"}},
+             {"albedo texture on a mesh without uvs",
+              [](json& s) { s["materials"][1]["albedo-texture"] = "leaf.png"; },
+              {"instances: instance", "has a material with an albedo-texture on a mesh without texture coordinates"}},
              {"flat volume", withVolume({{"max", {1, 0, 1}}}), {"volumes[0].max: must be greater than min in x, y and z"}},
              {"huge volume", withVolume({{"resolution", 1000}}), {"volumes[0].resolution: must be in [1, 256]"}},
              {"negative density", withVolume({{"density", -1}}), {"volumes[0].density: must be >= 0"}},

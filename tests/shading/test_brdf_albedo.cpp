@@ -28,7 +28,7 @@ glm::dvec3 directionalAlbedo(const Material& material, double cosV) {
             const double t = (b + 0.5) / kPhi, phi = kPi * (1.0 - (1.0 - t) * (1.0 - t)), dPhi = 2.0 * kPi * (1.0 - t);
             const glm::vec3 wi(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
                                float(std::cos(theta)));
-            sum += glm::dvec3(brdf(material, N, wi, wo)) * (std::cos(theta) * std::sin(theta) * dPhi);
+            sum += glm::dvec3(brdf(material, material.albedo, N, wi, wo)) * (std::cos(theta) * std::sin(theta) * dPhi);
         }
     }
     return sum * (kPi / (double(kTheta) * kPhi));

@@ -136,3 +136,31 @@ TEST_CASE("buildGBuffer interpolates corner normals at P by its barycentric coor
     world.cornerNormals.pop_back();
     CHECK_THROWS_AS(buildGBuffer(world, camera, visible, std::vector<float>(n, 0.5f)), std::invalid_argument);
 }
+
+// Corner UVs that are an affine function of the world position, uv = (x + 0.1 z, y - 0.2 z),
+// so the perspective-correct uv at P is that function of P (interpolating in screen space
+// would miss it on these slanted triangles); the world without UVs gives no uv at all.
+TEST_CASE("buildGBuffer gives the texture coordinate at P, perspective-correct, and none without corner UVs") {
+    const Camera camera = smallCamera();
+    WorldGeometry world = twoTriangles();
+    const size_t n = size_t(camera.width) * size_t(camera.height);
+    std::vector<uint32_t> visible(n);
+    for (size_t k = 0; k < n; ++k) visible[k] = k % 5 == 0 ? kNoTriangle : uint32_t(k % 2);
+    const std::vector<float> depth(n, 0.5f);
+    CHECK(buildGBuffer(world, camera, visible, depth).uv.empty());
+    const auto uvOf = [](const glm::dvec3& p) { return glm::dvec2(p.x + 0.1 * p.z, p.y - 0.2 * p.z); };
+    for (uint32_t t = 0; t < 2; ++t)
+        for (int c = 0; c < 3; ++c) world.cornerUvs.push_back(glm::vec2(uvOf(vertex(world, t, c))));
+    const GBuffer g = buildGBuffer(world, camera, visible, depth);
+    REQUIRE(g.uv.size() == n);
+    for (size_t k = 0; k < n; ++k) {
+        CAPTURE(k);
+        if (visible[k] == kNoTriangle) {
+            CHECK(g.uv[k] == glm::vec2(0.0f));
+            continue;
+        }
+        CHECK(glm::length(glm::dvec2(g.uv[k]) - uvOf(glm::dvec3(g.position[k]))) < 1e-5);
+    }
+    world.cornerUvs.pop_back();
+    CHECK_THROWS_AS(buildGBuffer(world, camera, visible, depth), std::invalid_argument);
+}

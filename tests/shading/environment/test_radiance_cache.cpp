@@ -22,7 +22,7 @@ glm::dvec3 bruteForceAtTexelCentres(const EnvironmentMap& map, const Material& m
         for (int i = 0; i < map.width; ++i) {
             const glm::dvec3 l = map.direction((i + 0.5) / map.width, (j + 0.5) / map.height);
             const double c = glm::dot(N, l);
-            if (c > 0.0) sum += glm::dvec3(brdf(m, glm::vec3(N), glm::vec3(l), glm::vec3(v))) * glm::dvec3(map.at(i, j)) * c * map.texelSolidAngle(j);
+            if (c > 0.0) sum += glm::dvec3(brdf(m, m.albedo, glm::vec3(N), glm::vec3(l), glm::vec3(v))) * glm::dvec3(map.at(i, j)) * c * map.texelSolidAngle(j);
         }
     }
     return sum;
