@@ -25,6 +25,10 @@ struct GltfModel {
     std::vector<MeshInstance> instances;
     std::vector<Light> lights;
     std::optional<Camera> camera;   // zFar 0: the file gave none (gltf/gltf_camera.h)
+    // What the file holds that is not read (docs/scene-format.md, "Ignored, by name"): its
+    // skins, animations, morph targets, cameras after the first, extensions used but not
+    // read; appendGltfModel tells them in scene.notes.
+    std::vector<std::string> ignored;
 };
 
 // Throws SceneError naming the file and the field for anything it cannot read.
@@ -34,8 +38,8 @@ GltfModel parseGltfModel(const std::string& bytes, const std::string& path);
 
 // Appends the model's meshes, materials, their textures and instances to the scene, each
 // instance placed by `placement` * its node's transform, with `material` (an index into
-// the scene's materials) in place of the file's when given. Refuses, naming `name`, a
-// vertex outside the world (scene_limits.h).
+// the scene's materials) in place of the file's when given, and what it ignores to
+// scene.notes. Refuses, naming `name`, a vertex outside the world (scene_limits.h).
 void appendGltfModel(const GltfModel& model, const glm::mat4& placement, std::optional<uint32_t> material,
                      const std::string& name, Scene& scene);
 

@@ -147,6 +147,27 @@ bool isGltfPath(const std::string& path) {
     return extension == ".gltf" || extension == ".glb";
 }
 
+// What the file holds that we do not read, by name and count, so that a user is told that a
+// character stands in its bind pose rather than left to wonder.
+std::vector<std::string> ignoredParts(const tinygltf::Model& file) {
+    std::vector<std::string> ignored;
+    const auto count = [&](size_t n, const std::string& what) {
+        if (n > 0) ignored.push_back(std::to_string(n) + " " + what);
+    };
+    size_t morphed = 0;
+    for (const tinygltf::Mesh& mesh : file.meshes) {
+        for (const tinygltf::Primitive& primitive : mesh.primitives) morphed += !primitive.targets.empty();
+    }
+    count(file.skins.size(), "skin(s) (the meshes in their nodes' static pose)");
+    count(file.animations.size(), "animation(s)");
+    count(morphed, "primitive(s) with morph targets (their base shape)");
+    count(file.cameras.size() > 1 ? file.cameras.size() - 1 : 0, "camera(s) after the first");
+    for (const std::string& extension : file.extensionsUsed) {
+        if (extension != "KHR_lights_punctual") ignored.push_back("extension " + extension);
+    }
+    return ignored;
+}
+
 GltfModel parseGltfModel(const std::string& bytes, const std::string& path) {
     const GltfDocument document = parseGltfDocument(bytes, path);
     ModelBuilder builder(document);
@@ -163,6 +184,7 @@ GltfModel parseGltfModel(const std::string& bytes, const std::string& path) {
         addNodeMesh(document, placed, builder, counts);
     }
     if (counts.triangles == 0) document.fail("scenes", "the file's scene has no triangles to draw");
+    builder.model.ignored = ignoredParts(document.model);
     return std::move(builder.model);
 }
 
@@ -197,6 +219,11 @@ void appendGltfModel(const GltfModel& model, const glm::mat4& placement, std::op
                                  " places a vertex outside the world (coordinates within 1e6 m)");
         }
         scene.instances.push_back(instance);
+    }
+    if (!model.ignored.empty()) {
+        std::string note = name + ": not read:";
+        for (size_t k = 0; k < model.ignored.size(); ++k) note += (k ? ", " : " ") + model.ignored[k];
+        scene.notes.push_back(note);
     }
 }
 

@@ -162,7 +162,7 @@ TEST_CASE("sRGB texels decode to linear albedo by IEC 61966-2-1's two pieces") {
     CHECK(srgbToLinear(255) == 1.0f);
 }
 
-TEST_CASE("an OPAQUE glTF material's base colour texture is its albedo texture; without TEXCOORD_0 it is refused") {
+TEST_CASE("an OPAQUE glTF material's base colour texture is its albedo texture, and without TEXCOORD_0 it is refused") {
     test::TempDir dir;
     const unsigned char rgb[6] = {0, 128, 255, 64, 32, 16};
     REQUIRE(stbi_write_png(dir.path("colours.png").c_str(), 2, 1, 3, rgb, 6) != 0);
@@ -442,6 +442,25 @@ TEST_CASE("the Khronos sample models load with the triangles, vertices, instance
         CHECK(scene.instances.size() == declared.instances);
         CHECK(scene.materials.size() == declared.materials.size());
     }
+}
+
+// What a file holds and we do not read is told by name and count (Scene::notes, which
+// `render` prints): a skinned character stands in its static pose, a morphed cube in its
+// base shape, and the user is told so.
+TEST_CASE("glTF skins, animations and morph targets are ignored by name: the scene loads and its notes say what was not read") {
+    const auto notRead = [](const Scene& scene) {
+        std::string found;
+        for (const std::string& note : scene.notes) {
+            if (note.find("not read") != std::string::npos) found += note;
+        }
+        return found;
+    };
+    const Scene skinned = loadScene(kSamples + "/simple_skin/simple_skin.gltf", "");
+    test::checkMessage(notRead(skinned), {"simple_skin.gltf: not read:", "1 skin(s)", "static pose", "1 animation(s)"});
+    const Scene morphed = loadScene(kSamples + "/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", "");
+    test::checkMessage(notRead(morphed), {"AnimatedMorphCube.gltf: not read:", "1 primitive(s) with morph targets", "1 animation(s)"});
+    CHECK(notRead(morphed).find("skin") == std::string::npos);
+    CHECK(notRead(loadScene(kSamples + "/BoxTextured-glTF-Binary/BoxTextured.glb", "")).empty());
 }
 
 TEST_CASE("the malformed Khronos samples are refused naming the file and the field") {
