@@ -176,7 +176,8 @@ struct Scene {
     Environment environment;
     CameraPath flythrough;
     // What the loader supplied that the file did not say (a glTF file's default camera or
-    // sun), one line each, for the program to tell the user.
+    // sun) and what a glTF file holds that is not read (its skins, animations...), one line
+    // each, for the program to tell the user.
     std::vector<std::string> notes;
 };
 

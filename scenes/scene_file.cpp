@@ -35,32 +35,21 @@ constexpr Interval kImageSize{1.0, double(raster::kMaxViewport), false, false};
 
 constexpr Interval kCutoff{0.0, 1.0, true, false};
 
-// The index of the texture at `path` in scene.alphaTextures, read on first use.
-int alphaTextureIndex(const JsonField& field, const std::string& directory, Scene& scene) {
+// The index in `textures` (the scene's alpha or albedo textures) of the texture the field
+// names, relative to the scene file's folder, read by `read` on first use.
+template <class Texture>
+int textureIndex(const JsonField& field, const std::string& directory, std::vector<Texture>& textures,
+                 Texture (*read)(const std::string&)) {
     const std::string path = (fs::path(directory) / field.string()).string();
-    for (size_t k = 0; k < scene.alphaTextures.size(); ++k) {
-        if (scene.alphaTextures[k].source == path) return int(k);
+    for (size_t k = 0; k < textures.size(); ++k) {
+        if (textures[k].source == path) return int(k);
     }
     try {
-        scene.alphaTextures.push_back(readAlphaTexture(path));
+        textures.push_back(read(path));
     } catch (const SceneError& error) {
         field.fail(error.what());
     }
-    return int(scene.alphaTextures.size()) - 1;
-}
-
-// The index of the albedo texture at `path` in scene.albedoTextures, read on first use.
-int albedoTextureIndex(const JsonField& field, const std::string& directory, Scene& scene) {
-    const std::string path = (fs::path(directory) / field.string()).string();
-    for (size_t k = 0; k < scene.albedoTextures.size(); ++k) {
-        if (scene.albedoTextures[k].source == path) return int(k);
-    }
-    try {
-        scene.albedoTextures.push_back(readAlbedoTexture(path));
-    } catch (const SceneError& error) {
-        field.fail(error.what());
-    }
-    return int(scene.albedoTextures.size()) - 1;
+    return int(textures.size()) - 1;
 }
 
 // What passes through a material (scene.h, Material): opacity, its tint and a cut-out.
@@ -72,7 +61,7 @@ void readTransmission(const JsonObject& object, const std::string& directory, Sc
         material.transmittance = tint->vec3(kUnitInterval);
     }
     if (const auto texture = object.optional("alpha-texture"))
-        material.alphaTexture = alphaTextureIndex(*texture, directory, scene);
+        material.alphaTexture = textureIndex(*texture, directory, scene.alphaTextures, readAlphaTexture);
     if (const auto cutoff = object.optional("alpha-cutoff")) {
         if (!material.cutOut()) cutoff->fail("is the cut-out's threshold, so needs \"alpha-texture\"");
         material.alphaCutoff = cutoff->number(kCutoff);
@@ -100,7 +89,7 @@ void readMaterial(const JsonField& field, const std::string& directory, Scene& s
     object.allowOnly(allowed);
     if (const auto albedo = object.optional("albedo")) material.albedo = albedo->vec3(kUnitInterval);
     if (const auto texture = object.optional("albedo-texture"))
-        material.albedoTexture = albedoTextureIndex(*texture, directory, scene);
+        material.albedoTexture = textureIndex(*texture, directory, scene.albedoTextures, readAlbedoTexture);
     if (const auto specular = object.optional("specular")) material.specular = specular->vec3(kUnitInterval);
     if (const auto shininess = object.optional("shininess")) material.shininess = shininess->number(kPositive);
     if (const auto roughness = object.optional("roughness")) material.roughness = roughness->number(kRoughness);
