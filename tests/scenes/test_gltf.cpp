@@ -162,7 +162,7 @@ TEST_CASE("sRGB texels decode to linear albedo by IEC 61966-2-1's two pieces") {
     CHECK(srgbToLinear(255) == 1.0f);
 }
 
-TEST_CASE("an OPAQUE glTF material's base colour texture is its albedo texture; without TEXCOORD_0 it is refused") {
+TEST_CASE("an OPAQUE glTF material's base colour texture is its albedo texture, and without TEXCOORD_0 it is refused") {
     test::TempDir dir;
     const unsigned char rgb[6] = {0, 128, 255, 64, 32, 16};
     REQUIRE(stbi_write_png(dir.path("colours.png").c_str(), 2, 1, 3, rgb, 6) != 0);
