@@ -1,18 +1,23 @@
-// The texel a texture coordinate falls in: nearest, the coordinates clamped to the texture
-// (u right, v up, as in OBJ; row 0 at the top). The one rule every texture here is read
-// by: the rasterizer's alpha test (tile_raster.inl), the reference's (shadows/
-// caster_transmission.h) and the surface's albedo (shading/surface_albedo.h), in float.
+// The texel a texture coordinate reads (raster/nearest_texel.inl, the one rule), for code
+// outside the rasterizer's kernels: the rule compiled with the scalar SIMD types, the twin
+// of the alpha test's vector lanes, so a texel is a hole to the references exactly where it
+// is one to the camera pass and the depth maps.
 #pragma once
 
 #include <glm/glm.hpp>
 
+#include "raster/simd/simd_scalar.h"
+#include "raster/texture_wrap.h"
+
 namespace shadowlab {
 
-inline int nearestTexelIndex(int width, int height, glm::vec2 uv) {
-    const float u = uv.x > 0.0f ? (uv.x < 1.0f ? uv.x : 1.0f) : 0.0f;
-    const float v = uv.y > 0.0f ? (uv.y < 1.0f ? uv.y : 1.0f) : 0.0f;
-    const int column = int(u * float(width)), row = int((1.0f - v) * float(height));
-    return (row < height ? row : height - 1) * width + (column < width ? column : width - 1);
+namespace nearest_texel_scalar {
+namespace simd = shadowlab::simd_scalar;
+#include "raster/nearest_texel.inl"
+}  // namespace nearest_texel_scalar
+
+inline int nearestTexelIndex(int width, int height, UvWrap wrap, glm::vec2 uv) {
+    return nearest_texel_scalar::nearestTexelIndex(width, height, wrap, {uv.x}, {uv.y}).v;
 }
 
 }  // namespace shadowlab
