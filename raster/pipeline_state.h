@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include "raster/texture_wrap.h"
+
 namespace shadowlab::raster {
 
 enum class CullMode : uint8_t { None, Back, Front };
@@ -72,13 +74,14 @@ enum class FragmentOutput : uint8_t {
 
 // The alpha test of a cut-out (foliage cards), before the depth and stencil tests: a
 // fragment whose alpha is below the cutoff is discarded. Alpha is read from a texture at the
-// draw's varyings 0 and 1, interpolated perspective-correctly as (u, v): the nearest texel,
-// the coordinates clamped to [0, 1], u to the right and v up (row 0 of `alpha` is the
-// texture's top, at v = 1). Off while `alpha` is null.
+// draw's varyings 0 and 1, interpolated perspective-correctly as (u, v): the nearest texel of
+// the coordinates wrapped by `wrap` (raster/nearest_texel.inl), u to the right and v up (row
+// 0 of `alpha` is the texture's top, at v = 1). Off while `alpha` is null.
 struct AlphaTest {
     const float* alpha = nullptr;   // width * height values, row-major
     int width = 0, height = 0;
     float cutoff = 0.5f;
+    UvWrap wrap;
 };
 
 struct PipelineState {

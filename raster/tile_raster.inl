@@ -167,17 +167,12 @@ inline void appendFragments(const TriangleSetup& tri, const FramebufferView& fb,
 }
 
 // The lanes whose alpha reaches the cutoff (pipeline_state.h, AlphaTest): u and v
-// perspective-correct from varyings 0 and 1, clamped, to the nearest texel.
+// perspective-correct from varyings 0 and 1, read by the one texel rule (nearest_texel.inl).
 inline Mask alphaTestPasses(const TriangleSetup& tri, const AlphaTest& test, F32 dx, F32 dy) {
     const F32 inverseW = evaluatePlane(tri.varyings[0], dx, dy);
-    const F32 zero = simd::splat(0.0f), one = simd::splat(1.0f);
-    const F32 u = simd::min(simd::max(evaluatePlane(tri.varyings[1], dx, dy) / inverseW, zero), one);
-    const F32 v = simd::min(simd::max(evaluatePlane(tri.varyings[2], dx, dy) / inverseW, zero), one);
-    const I32 column =
-        simd::min(simd::truncateToInt(u * simd::splat(float(test.width))), simd::splat(int32_t(test.width - 1)));
-    const I32 row = simd::min(simd::truncateToInt((one - v) * simd::splat(float(test.height))),
-                              simd::splat(int32_t(test.height - 1)));
-    const F32 alpha = simd::gather(test.alpha, row * simd::splat(int32_t(test.width)) + column);
+    const F32 u = evaluatePlane(tri.varyings[1], dx, dy) / inverseW;
+    const F32 v = evaluatePlane(tri.varyings[2], dx, dy) / inverseW;
+    const F32 alpha = simd::gather(test.alpha, nearestTexelIndex(test.width, test.height, test.wrap, u, v));
     return !simd::cmpLt(alpha, simd::splat(test.cutoff));
 }
 

@@ -21,7 +21,7 @@ AlbedoTexture decodeAlbedoTexture(std::string source, int width, int height, std
     // 256 values, so each is computed once however large the texture.
     std::array<float, 256> linear;
     for (int c = 0; c < 256; ++c) linear[size_t(c)] = srgbToLinear(uint8_t(c));
-    AlbedoTexture texture{std::move(source), width, height, {}};
+    AlbedoTexture texture{std::move(source), width, height, {}, {}};
     texture.albedo.resize(texels);
     for (size_t k = 0; k < texels; ++k) {
         const uint8_t* t = &bytes[size_t(channels) * k];

@@ -46,7 +46,7 @@ int32_t cutOutOf(const Scene& scene, uint32_t material, std::vector<int32_t>& ma
     if (materialCutOut[material] < 0) {
         const AlphaTexture& texture = scene.alphaTextures[size_t(m.alphaTexture)];
         materialCutOut[material] = int32_t(world.cutOuts.size());
-        world.cutOuts.push_back({texture.alpha, texture.width, texture.height, m.alphaCutoff});
+        world.cutOuts.push_back({texture.alpha, texture.width, texture.height, m.alphaCutoff, texture.wrap});
     }
     return materialCutOut[material];
 }

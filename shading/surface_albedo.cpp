@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "scenes/error_text.h"
-#include "scenes/nearest_texel.h"
+#include "raster/nearest_texel.h"
 
 namespace shadowlab {
 
@@ -14,7 +14,7 @@ glm::vec3 surfaceAlbedo(const Material& material, const std::vector<AlbedoTextur
         throw std::invalid_argument("material " + inQuotes(material.name) +
                                     " has an albedo texture, but the G-buffer has no texture coordinates");
     const AlbedoTexture& texture = textures.at(size_t(material.albedoTexture));
-    return material.albedo * texture.albedo[size_t(nearestTexelIndex(texture.width, texture.height, g.uv[pixel]))];
+    return material.albedo * texture.albedo[size_t(nearestTexelIndex(texture.width, texture.height, texture.wrap, g.uv[pixel]))];
 }
 
 }  // namespace shadowlab

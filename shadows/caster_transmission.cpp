@@ -18,7 +18,7 @@ bool CasterTransmission::solidAt(uint32_t triangle, float u, float v) const {
     const glm::vec2* uv = &world_.cornerUvs[3 * size_t(triangle)];
     const glm::vec2 at = (1.0f - u - v) * uv[0] + u * uv[1] + v * uv[2];
     const AlphaTexture& texture = scene_.alphaTextures[size_t(material.alphaTexture)];
-    return texture.alpha[size_t(nearestTexelIndex(texture.width, texture.height, at))] >= material.alphaCutoff;
+    return texture.alpha[size_t(nearestTexelIndex(texture.width, texture.height, texture.wrap, at))] >= material.alphaCutoff;
 }
 
 glm::vec3 CasterTransmission::passedAt(uint32_t triangle, float u, float v) const {

@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scenes/nearest_texel.h"
+#include "raster/nearest_texel.h"
 #include "scenes/scene.h"
 
 namespace shadowlab {

@@ -60,7 +60,7 @@ void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ra
         if (batch.triangles.empty()) continue;
         const WorldGeometry::CutOut& cutOut = world.cutOuts[k];
         raster::PipelineState tested = state;
-        tested.alphaTest = {cutOut.alpha.data(), cutOut.width, cutOut.height, cutOut.cutoff};
+        tested.alphaTest = {cutOut.alpha.data(), cutOut.width, cutOut.height, cutOut.cutoff, cutOut.wrap};
         raster::DrawCall cutOutCall = raster::positionsDraw(batch.corners, batch.triangles, clipFromWorld);
         cutOutCall.vertices.varyings = batch.uvs;
         cutOutCall.vertices.varyingCount = 2;

@@ -36,6 +36,7 @@ inline F32 operator/(F32 a, F32 b) { return {a.v / b.v}; }
 inline F32 min(F32 a, F32 b) { return {a.v < b.v ? a.v : b.v}; }
 inline F32 max(F32 a, F32 b) { return {a.v > b.v ? a.v : b.v}; }
 inline F32 sqrt(F32 a) { return {__builtin_sqrtf(a.v)}; }
+inline F32 floor(F32 a) { return {__builtin_floorf(a.v)}; }
 inline F32 toFloat(I32 a) { return {float(a.v)}; }
 // Rounds towards zero; lanes must hold values an int32 can (callers saturate first).
 inline I32 truncateToInt(F32 a) { return {int32_t(a.v)}; }

@@ -37,6 +37,31 @@ const tinygltf::Image& baseColorImage(const GltfDocument& document, const tinygl
     return image;
 }
 
+// One axis's wrap mode from a sampler's wrapS or wrapT (section 3.8.4).
+TextureWrap wrapMode(const GltfDocument& document, int mode, const std::string& field) {
+    switch (mode) {
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
+        case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::Repeat;
+    }
+    document.fail(field, "must be 33071 (CLAMP_TO_EDGE), 33648 (MIRRORED_REPEAT) or 10497 (REPEAT), got " +
+                             std::to_string(mode));
+}
+
+// The wrap of the texture's sampler, REPEAT on both axes without one (section 3.8.4). Its
+// filters are not read: every texture here is read at the nearest texel.
+UvWrap samplerWrap(const GltfDocument& document, const tinygltf::TextureInfo& info) {
+    const int sampler = document.model.textures[size_t(info.index)].sampler;
+    if (sampler < 0) return {TextureWrap::Repeat, TextureWrap::Repeat};
+    const auto& samplers = document.model.samplers;
+    if (size_t(sampler) >= samplers.size())
+        document.fail("textures[" + std::to_string(info.index) + "].sampler",
+                      "names sampler " + std::to_string(sampler) + ", but the file has " + std::to_string(samplers.size()));
+    const std::string field = "samplers[" + std::to_string(sampler) + "]";
+    return {wrapMode(document, samplers[size_t(sampler)].wrapS, field + ".wrapS"),
+            wrapMode(document, samplers[size_t(sampler)].wrapT, field + ".wrapT")};
+}
+
 std::string imageName(const GltfDocument& document, const tinygltf::TextureInfo& info) {
     return document.path + ": images[" + std::to_string(document.model.textures[size_t(info.index)].source) + "]";
 }
@@ -45,7 +70,7 @@ std::string imageName(const GltfDocument& document, const tinygltf::TextureInfo&
 AlphaTexture maskAlpha(const GltfDocument& document, const tinygltf::TextureInfo& info, float factorAlpha,
                        const std::string& field) {
     const tinygltf::Image& image = baseColorImage(document, info, field);
-    AlphaTexture texture{imageName(document, info), image.width, image.height, {}};
+    AlphaTexture texture{imageName(document, info), image.width, image.height, {}, samplerWrap(document, info)};
     texture.alpha.resize(size_t(image.width) * size_t(image.height));
     for (size_t k = 0; k < texture.alpha.size(); ++k)
         texture.alpha[k] = float(image.image[4 * k + 3]) / 255.0f * factorAlpha;
@@ -56,7 +81,9 @@ AlphaTexture maskAlpha(const GltfDocument& document, const tinygltf::TextureInfo
 // the factor, which the material's albedo keeps).
 AlbedoTexture baseColorAlbedo(const GltfDocument& document, const tinygltf::TextureInfo& info, const std::string& field) {
     const tinygltf::Image& image = baseColorImage(document, info, field);
-    return decodeAlbedoTexture(imageName(document, info), image.width, image.height, image.image, 4);
+    AlbedoTexture texture = decodeAlbedoTexture(imageName(document, info), image.width, image.height, image.image, 4);
+    texture.wrap = samplerWrap(document, info);
+    return texture;
 }
 
 }  // namespace

@@ -2,8 +2,9 @@
 // Material; docs/scene-format.md, "glTF files"):
 //   baseColorFactor rgb -> albedo (Lambert; metallic and roughness are not read);
 //   baseColorTexture rgb -> the albedo texture, decoded from sRGB to linear (section 3.9.2:
-//   the surface's albedo is the factor times the texture), nearest texel, clamped (the
-//   texture's sampler is not read: every texture here is read as the cut-outs' alpha is);
+//   the surface's albedo is the factor times the texture), at the nearest texel of (u, v)
+//   wrapped by the texture's sampler (wrapS, wrapT: CLAMP_TO_EDGE, MIRRORED_REPEAT or
+//   REPEAT, REPEAT without a sampler; its filters are not read), as the cut-outs' alpha is;
 //   alphaMode OPAQUE -> opaque; MASK -> a cut-out whose alpha is the base colour texture's
 //   alpha times the factor's alpha, with alphaCutoff (without a texture the factor's alpha
 //   alone decides: at or above the cutoff opaque, below it the surface is not drawn);

@@ -3,6 +3,7 @@
 // the glTF reader maps nodes, UVs, MASK materials, base colour textures, the camera and a
 // point light exactly as docs/scene-format.md ("glTF files") says. A base colour texture
 // gives the albedo glTF 2.0's section 3.9.2 says.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/scene_file.h"
+#include "shading/surface_albedo.h"
 #include "tests/scenes/gltf_test_files.h"
 #include "tests/scenes/scene_test_files.h"
 #include "tests/same_bits.h"
@@ -202,3 +204,46 @@ TEST_CASE("a glTF base colour texture times its factor is the albedo each texel'
     }
     for (int texel = 0; texel < 4; ++texel) CHECK(checked[texel] > 100);
 }
+
+#ifdef SHADOWLAB_GLTF_SAMPLES
+// Khronos' BoxTextured: u runs over [0, 6] on its faces with MIRRORED_REPEAT along s and
+// CLAMP_TO_EDGE along t, so the Cesium logo shows forward and mirrored. Each pixel's albedo
+// is its material's factor times the texel a hand computation in double finds (s mirrored,
+// t clamped, glTF's t down from the image's top), clear of the texels' edges; and the logo
+// is there: sky blue, grass green and white pixels all appear.
+TEST_CASE("Khronos' BoxTextured shows its logo: every pixel's albedo is the texel its mirrored coordinates name") {
+    Scene scene = loadScene(std::string(SHADOWLAB_GLTF_SAMPLES) + "/BoxTextured-glTF/BoxTextured.gltf", "");
+    SceneOverrides overrides;
+    overrides.width = overrides.height = 96;
+    applyOverrides(scene, overrides);
+    const PreparedScene prepared(std::move(scene));
+    const GBuffer g = renderGBuffer(prepared.world(), prepared.scene().camera, raster::bestSimdLevel());
+    REQUIRE(prepared.scene().albedoTextures.size() == 1);
+    const AlbedoTexture& texture = prepared.scene().albedoTextures[0];
+    CHECK(texture.wrap.u == TextureWrap::MirroredRepeat);
+    CHECK(texture.wrap.v == TextureWrap::ClampToEdge);
+    const auto edgeClear = [](double c) { return std::abs(c - std::round(c)) > 1e-3; };
+    int checked = 0, sky = 0, grass = 0, white = 0;
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (!g.hit[k]) continue;
+        const Material& material = prepared.scene().materials[g.material[k]];
+        const double s = g.uv[k].x, t = 1.0 - double(g.uv[k].y);
+        const double folded = std::fmod(s, 2.0) <= 1.0 ? std::fmod(s, 2.0) : 2.0 - std::fmod(s, 2.0);
+        const double column = folded * texture.width, row = std::clamp(t, 0.0, 1.0) * texture.height;
+        if (!edgeClear(column) || !edgeClear(row) || s < 0.0 || s > 6.0) continue;
+        const size_t texel = size_t(std::min(int(row), texture.height - 1)) * size_t(texture.width) +
+                             size_t(std::min(int(column), texture.width - 1));
+        const glm::vec3 albedo = surfaceAlbedo(material, prepared.scene().albedoTextures, g, k);
+        INFO("pixel " << k << " at s, t = " << s << ", " << t);
+        CHECK(albedo == material.albedo * texture.albedo[texel]);
+        ++checked;
+        sky += albedo.b > 1.5f * albedo.r && albedo.b > albedo.g;
+        grass += albedo.g > 1.5f * albedo.r && albedo.g > 1.5f * albedo.b;
+        white += albedo.r > 0.5f && albedo.g > 0.5f && albedo.b > 0.5f;
+    }
+    CHECK(checked > 1000);
+    CHECK(sky > 100);
+    CHECK(grass > 100);
+    CHECK(white > 20);
+}
+#endif

@@ -150,6 +150,23 @@ TEST_CASE("a glTF MASK material is a cut-out: alpha = texel alpha x factor alpha
     const WorldGeometry world = flatten(scene);
     CHECK(world.cornerUvs[0] == glm::vec2(0, 1));
     CHECK(world.cornerUvs[2] == glm::vec2(0, 0));
+    // Without a sampler, both textures repeat (section 3.8.4); a sampler's modes are read per
+    // axis, and a mode or a sampler index the file cannot mean is refused by name.
+    CHECK(texture.wrap.u == TextureWrap::Repeat);
+    CHECK(texture.wrap.v == TextureWrap::Repeat);
+    file.json["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9729}}};
+    file.json["textures"][0]["sampler"] = 0;
+    const Scene sampled = loadWritten(dir, "sampled.gltf", file.gltf());
+    for (const UvWrap wrap : {sampled.alphaTextures[0].wrap, sampled.albedoTextures[0].wrap}) {
+        CHECK(wrap.u == TextureWrap::ClampToEdge);
+        CHECK(wrap.v == TextureWrap::MirroredRepeat);
+    }
+    file.json["samplers"][0]["wrapT"] = 10496;
+    test::checkMessage(test::sceneErrorOf([&] { loadWritten(dir, "bad.gltf", file.gltf()); }),
+                       {"bad.gltf", "samplers[0].wrapT", "got 10496"});
+    file.json["textures"][0]["sampler"] = 1;
+    test::checkMessage(test::sceneErrorOf([&] { loadWritten(dir, "bad.gltf", file.gltf()); }),
+                       {"bad.gltf", "textures[0].sampler", "names sampler 1"});
 }
 
 TEST_CASE("sRGB texels decode to linear albedo by IEC 61966-2-1's two pieces") {

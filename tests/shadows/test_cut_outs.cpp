@@ -3,18 +3,26 @@
 // alpha where each shadow ray meets a card, as the reference does; a shadow volume cannot
 // follow a texture and casts the whole card or nothing; fins draw the hard shadow with the
 // holes and make no penumbra from a card's outline. On the foliage case and on mask-card,
-// whose alpha sits at and around its cutoff as a glTF MASK material's would.
+// whose alpha sits at and around its cutoff as a glTF MASK material's would; and on a glTF
+// card whose sampler repeats and mirrors its texture, each path's holes where a hand
+// computation of the wrap puts them.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <stb_image_write.h>
+
 #include "frame/registry.h"
 #include "frame/render.h"
+#include "scenes/gltf_scene.h"
 #include "scenes/scene_file.h"
+#include "tests/scenes/gltf_test_files.h"
+#include "tests/scenes/scene_test_files.h"
 
 using namespace shadowlab;
 
@@ -186,4 +194,97 @@ TEST_CASE("every family gives a glTF MASK material's cards the V of the same car
         CAPTURE(technique);
         CHECK(visibility(fromGltf, technique) == visibility(fromJson, technique));
     }
+}
+
+namespace {
+
+// A 3 m card at y = 1 over a ground at y = 0, as glTF: the card's texture coordinates are
+// its (x, z), in [0, 3]; its 2 x 2 MASK texture is a checker, solid on the diagonal texels;
+// its sampler repeats s and mirrors t.
+Scene wrappedCard() {
+    test::TempDir dir;
+    const unsigned char rgba[16] = {9, 9, 9, 255, 9, 9, 9, 0, 9, 9, 9, 0, 9, 9, 9, 255};
+    REQUIRE(stbi_write_png(dir.path("checker.png").c_str(), 2, 2, 4, rgba, 8) != 0);
+    test::GltfFile file;
+    file.json["images"] = {{{"uri", "checker.png"}}};
+    file.json["samplers"] = {{{"wrapS", 10497}, {"wrapT", 33648}}};
+    file.json["textures"] = {{{"source", 0}, {"sampler", 0}}};
+    file.json["materials"] = {{{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}},
+                              {{"alphaMode", "OPAQUE"}}};
+    const std::vector<uint32_t> quad = {0, 1, 2, 0, 2, 3};
+    const int card = file.vec3s({{0, 1, 0}, {0, 1, 3}, {3, 1, 3}, {3, 1, 0}});
+    const int uvs = file.vec2s({{0, 0}, {0, 3}, {3, 3}, {3, 0}});
+    const int ground = file.vec3s({{-1, 0, -1}, {-1, 0, 4}, {4, 0, 4}, {4, 0, -1}});
+    file.node({{"mesh", file.mesh({{"material", 0}, {"indices", file.indices(quad)},
+                                   {"attributes", {{"POSITION", card}, {"TEXCOORD_0", uvs}}}})}});
+    file.node({{"mesh", file.mesh({{"material", 1}, {"indices", file.indices(quad)}, {"attributes", {{"POSITION", ground}}}})}});
+    Scene scene = loadGltfScene(dir.write("card.gltf", file.gltf()));
+    scene.camera = {.eye = {1.5f, 8.0f, 1.5f}, .target = {1.5f, 0.0f, 1.5f}, .up = {0.0f, 0.0f, -1.0f},
+                    .fovyDeg = 30.0f, .width = 160, .height = 160};
+    scene.lights = {Light{.type = LightType::Directional, .direction = {0.0f, 1.0f, 0.0f}}};
+    return scene;
+}
+
+// By hand, in glTF's coordinates (s right, t down from the image's top): the texel
+// column of s repeated, floor(2 frac(s)), and the row of t mirrored, floor(2 m(t)) with
+// m(t) = t mod 2 folded onto [0, 1]; solid where column == row. Nullopt within 0.02 of a
+// texel's edge (every multiple of 0.5), where rasterization and rays may round apart.
+std::optional<bool> wrappedCardSolidAt(float s, float t) {
+    const auto nearEdge = [](float c) { return std::abs(c * 2.0f - std::round(c * 2.0f)) < 0.04f; };
+    if (nearEdge(s) || nearEdge(t)) return std::nullopt;
+    const int column = int(std::floor(2.0f * (s - std::floor(s))));
+    const float folded = std::fmod(t, 2.0f) <= 1.0f ? std::fmod(t, 2.0f) : 2.0f - std::fmod(t, 2.0f);
+    return column == int(std::floor(2.0f * folded));
+}
+
+bool onCard(float x, float z) { return x > 0.02f && x < 2.98f && z > 0.02f && z < 2.98f; }
+
+}  // namespace
+
+TEST_CASE("a glTF card's REPEAT and MIRRORED_REPEAT sampler puts its holes where a hand computation does, in every path") {
+    const PreparedScene prepared(wrappedCard());
+    const Camera& camera = prepared.scene().camera;
+    const GBuffer g = renderGBuffer(prepared.world(), camera, raster::bestSimdLevel());
+    const WorldGeometry& world = prepared.world();
+    REQUIRE(world.cutOuts.size() == 1);
+    CHECK(world.cutOuts[0].wrap.u == TextureWrap::Repeat);
+    CHECK(world.cutOuts[0].wrap.v == TextureWrap::MirroredRepeat);
+    const auto visibility = [&](const std::string& technique) {
+        const Technique& t = findTechnique(technique);
+        const TechniqueParams params(t.name, t.params, {});
+        return t.run({.prepared = prepared, .gbuffer = g, .light = prepared.scene().lights[0],
+                      .simd = raster::bestSimdLevel(), .params = params}).visibility;
+    };
+    const std::vector<float> reference = visibility("reference");
+    const std::vector<float> shadowMap = visibility("shadow-map");
+    CHECK(visibility("izb") == reference);
+    size_t cardPixels = 0, holePixels = 0, shadowed = 0, lit = 0, mapWrong = 0;
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (!g.hit[k]) continue;
+        const glm::vec3 p = g.position[k];
+        const bool seesCard = world.triangleCutOut[g.triangle[k]] >= 0;
+        // The camera pass: where the eye's ray crosses the card's plane, a solid texel stops it.
+        const glm::vec3 crossing = camera.eye + (p - camera.eye) * ((camera.eye.y - 1.0f) / (camera.eye.y - p.y));
+        if (onCard(crossing.x, crossing.z)) {
+            if (const std::optional<bool> solid = wrappedCardSolidAt(crossing.x, crossing.z)) {
+                INFO("pixel " << k << " at " << crossing.x << ", " << crossing.z);
+                CHECK(seesCard == *solid);
+                (seesCard ? cardPixels : holePixels)++;
+            }
+        }
+        // The sun straight above: a ground point is shadowed where the card above it is solid.
+        if (seesCard || !onCard(p.x, p.z)) continue;
+        if (const std::optional<bool> solid = wrappedCardSolidAt(p.x, p.z)) {
+            INFO("ground pixel " << k << " at " << p.x << ", " << p.z);
+            CHECK(reference[k] == (*solid ? 0.0f : 1.0f));
+            (*solid ? shadowed : lit)++;
+            mapWrong += shadowMap[k] != reference[k];
+        }
+    }
+    // Half the card's texels are solid: both kinds well represented.
+    CHECK(cardPixels > 2000);
+    CHECK(holePixels > 2000);
+    CHECK(shadowed > 500);
+    CHECK(lit > 500);
+    CHECK(mapWrong == 0);
 }

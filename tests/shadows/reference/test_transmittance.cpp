@@ -142,7 +142,7 @@ TEST_CASE("the DDA's optical depth through a smoke puff equals a fine numerical 
 TEST_CASE("a cut-out card shadows only where its alpha reaches the cutoff") {
     // The left half of the texture (u < 0.5) is a hole: alpha 0.2 against the cutoff 0.5.
     Scene scene = sheets({1.0f}, {Material{.name = "leaf", .alphaTexture = 0, .alphaCutoff = 0.5f}});
-    scene.alphaTextures.push_back({.source = "test", .width = 4, .height = 2, .alpha = {0.2f, 0.2f, 0.9f, 0.9f, 0.2f, 0.2f, 0.9f, 0.9f}});
+    scene.alphaTextures.push_back({.source = "test", .width = 4, .height = 2, .alpha = {0.2f, 0.2f, 0.9f, 0.9f, 0.2f, 0.2f, 0.9f, 0.9f}, .wrap = {}});
     const GBuffer g = groundPoints(9, 0.9);
     const ReferenceVisibility::Passed passed = passedThrough(scene, g);
     for (size_t k = 0; k < g.position.size(); ++k) {
