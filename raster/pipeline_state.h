@@ -81,7 +81,7 @@ struct AlphaTest {
     const float* alpha = nullptr;   // width * height values, row-major
     int width = 0, height = 0;
     float cutoff = 0.5f;
-    UvWrap wrap;
+    UvWrap wrap{};
 };
 
 struct PipelineState {

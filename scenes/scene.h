@@ -37,7 +37,7 @@ struct AlphaTexture {
     std::string source;
     int width = 0, height = 0;
     std::vector<float> alpha;
-    UvWrap wrap;  // glTF's sampler; scene files' textures clamp
+    UvWrap wrap{};  // glTF's sampler; scene files' textures clamp
 };
 
 // An albedo texture (glTF's base colour texture): linear RGB reflectance per texel in
@@ -47,7 +47,7 @@ struct AlbedoTexture {
     std::string source;
     int width = 0, height = 0;
     std::vector<glm::vec3> albedo;
-    UvWrap wrap;  // glTF's sampler; scene files' textures clamp
+    UvWrap wrap{};  // glTF's sampler; scene files' textures clamp
 };
 
 // Every model is a Lambert diffuse term plus, except for Lambert, a specular lobe
@@ -206,7 +206,7 @@ struct WorldGeometry {
         std::vector<float> alpha;   // row-major, row 0 at the top
         int width = 0, height = 0;
         float cutoff = 0.5f;
-        UvWrap wrap;
+        UvWrap wrap{};
     };
     std::vector<int32_t> triangleCutOut;
     std::vector<CutOut> cutOuts;
