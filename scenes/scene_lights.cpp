@@ -26,8 +26,9 @@ constexpr double kPerpendicularCosine = 1e-4;
 
 std::vector<std::string_view> keysFor(LightType type) {
     switch (type) {
-        case LightType::Point: return {"type", "position", "color", "power"};
-        case LightType::Spot: return {"type", "position", "direction", "coneAngle", "color", "power", "cookie"};
+        case LightType::Point: return {"type", "position", "color", "power", "range"};
+        case LightType::Spot:
+            return {"type", "position", "direction", "coneAngle", "innerConeAngle", "range", "color", "power", "cookie"};
         case LightType::Directional: return {"type", "direction", "color", "power"};
         case LightType::Disk: return {"type", "position", "normal", "radius", "color", "power"};
         case LightType::Rectangle: return {"type", "position", "halfEdgeU", "halfEdgeV", "color", "power"};
@@ -53,12 +54,22 @@ void readRectangle(const JsonObject& object, Light& light) {
         object["halfEdgeV"].fail("must be perpendicular to halfEdgeU");
 }
 
+// A point or spot light's range and a spot's inner cone, as KHR_lights_punctual's (shading/lights.h,
+// conventions.md "Lights"); absent: unbounded, and a hard cone.
+void readPunctualFalloff(const JsonObject& object, Light& light) {
+    if (const auto range = object.optional("range")) light.range = float(range->number(kPositive));
+    if (light.type != LightType::Spot) return;
+    if (const auto inner = object.optional("innerConeAngle"))
+        light.innerConeAngleDeg = float(inner->number(Interval{0.0, double(light.coneAngleDeg), false, true}));
+}
+
 void readShape(const JsonObject& object, Light& light) {
     switch (light.type) {
-        case LightType::Point: break;
+        case LightType::Point: readPunctualFalloff(object, light); break;
         case LightType::Spot:
             light.direction = unitDirection(object["direction"]);
             light.coneAngleDeg = object["coneAngle"].number(kConeAngleDeg);
+            readPunctualFalloff(object, light);
             break;
         case LightType::Directional: light.direction = unitDirection(object["direction"]); break;
         case LightType::Disk:

@@ -121,6 +121,25 @@ TEST_CASE("the unbroken test scene loads") {
     CHECK(scene.materials[1].albedo == Material{}.albedo);   // default kept
 }
 
+// KHR_lights_punctual's range and inner cone, which a glTF file's lights carry, are a scene
+// file's too (a glTF model placed by "models" brings no lights of its own).
+TEST_CASE("a point's and a spot's range and a spot's inner cone load; without them the light is unbounded and its cone hard") {
+    const test::TempDir dir;
+    writeMeshFiles(dir);
+    json s = validScene();
+    const Scene plain = loadScene(dir.write("plain.json", render(s)));
+    CHECK(plain.lights[1].range == 0.0f);
+    CHECK(!plain.lights[2].innerConeAngleDeg);
+    s["lights"][1]["range"] = 4;
+    s["lights"][2]["range"] = 6.5;
+    s["lights"][2]["innerConeAngle"] = 20;
+    const Scene falloff = loadScene(dir.write("falloff.json", render(s)));
+    CHECK(falloff.lights[1].range == 4.0f);
+    CHECK(falloff.lights[2].range == 6.5f);
+    REQUIRE(falloff.lights[2].innerConeAngleDeg);
+    CHECK(*falloff.lights[2].innerConeAngleDeg == 20.0f);
+}
+
 TEST_CASE("phong and ggx materials load with their own terms") {
     const test::TempDir dir;
     writeMeshFiles(dir);
@@ -218,6 +237,10 @@ TEST_CASE("degenerate lights") {
          {"lights[2].coneAngle: must be in (0, 90], got 0"}},
         {"cone beyond 90", [](json& s) { s["lights"][2]["coneAngle"] = 95; },
          {"lights[2].coneAngle: must be in (0, 90], got 95"}},
+        {"zero range", [](json& s) { s["lights"][1]["range"] = 0; }, {"lights[1].range: must be > 0, got 0"}},
+        {"inner cone at the cone", [](json& s) { s["lights"][2]["innerConeAngle"] = 30; },
+         {"lights[2].innerConeAngle: must be in [0, 30), got 30"}},
+        {"range of a sun", [](json& s) { s["lights"][3]["range"] = 4; }, {"lights[3]: unknown key \"range\""}},
         {"negative power", [](json& s) { s["lights"][1]["power"] = -2; }, {"lights[1].power: must be >= 0, got -2"}},
         {"negative colour", [](json& s) { s["lights"][3]["color"][2] = -0.5; },
          {"lights[3].color[2]: must be >= 0, got -0.5"}},
