@@ -123,7 +123,7 @@ TEST_CASE("the unbroken test scene loads") {
 
 // KHR_lights_punctual's range and inner cone, which a glTF file's lights carry, are a scene
 // file's too (a glTF model placed by "models" brings no lights of its own).
-TEST_CASE("a point's and a spot's range and a spot's inner cone load; without them the light is unbounded and its cone hard") {
+TEST_CASE("a point's and a spot's range and a spot's inner cone load, and without them the light is unbounded and its cone hard") {
     const test::TempDir dir;
     writeMeshFiles(dir);
     json s = validScene();
