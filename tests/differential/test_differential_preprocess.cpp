@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <random>
 #include <set>
@@ -22,6 +21,7 @@
 #include "shading/luminance.h"
 #include "tests/differential/random_boxes.h"
 #include "tests/differential/room_case.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;
@@ -219,9 +219,9 @@ TEST_CASE("differential preprocessing: the same bytes on 1 and 2 threads") {
     const DifferentialModel one = withThreads(1, [&] { return preprocess(scene); });
     const DifferentialModel two = withThreads(2, [&] { return preprocess(scene); });
     REQUIRE(one.background.size() == two.background.size());
-    CHECK(std::memcmp(one.background.data(), two.background.data(), one.background.size() * sizeof(glm::vec3)) == 0);
+    CHECK(test::sameBytes(one.background, two.background));
     REQUIRE(one.transfers.L.size() == two.transfers.L.size());
-    CHECK(std::memcmp(one.transfers.L.data(), two.transfers.L.data(), one.transfers.L.size() * sizeof(glm::vec3)) == 0);
+    CHECK(test::sameBytes(one.transfers.L, two.transfers.L));
     CHECK(one.shafts.nodes.size() == two.shafts.nodes.size());
 }
 

@@ -3,12 +3,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <cstring>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "tests/raster/raster_test_util.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
 using namespace shadowlab::raster;
@@ -64,8 +64,8 @@ TEST_CASE("binning in groups under a tiny entry budget gives the same bytes as o
     CHECK(whole.stats().binEntries == grouped.stats().binEntries);
     const auto ia = a.primitiveIdImage(), ib = b.primitiveIdImage();
     const auto da = a.depthImage(), db = b.depthImage();
-    CHECK(std::memcmp(ia.data(), ib.data(), ia.size() * sizeof(uint32_t)) == 0);
-    CHECK(std::memcmp(da.data(), db.data(), da.size() * sizeof(float)) == 0);
+    CHECK(test::sameBytes(ia, ib));
+    CHECK(test::sameBytes(da, db));
 }
 
 TEST_CASE("a near-clipped triangle gives the same depth bits however its indices are rotated or numbered") {
@@ -96,9 +96,9 @@ TEST_CASE("a near-clipped triangle gives the same depth bits however its indices
             depth[rotation] = fb.depthImage();
         }
         INFO("trial " << trial);
-        CHECK(std::memcmp(depth[0].data(), depth[1].data(), depth[0].size() * sizeof(float)) == 0);
-        CHECK(std::memcmp(depth[0].data(), depth[2].data(), depth[0].size() * sizeof(float)) == 0);
-        CHECK(std::memcmp(depth[0].data(), depth[3].data(), depth[0].size() * sizeof(float)) == 0);
+        CHECK(test::sameBytes(depth[0], depth[1]));
+        CHECK(test::sameBytes(depth[0], depth[2]));
+        CHECK(test::sameBytes(depth[0], depth[3]));
     }
     CHECK(clipped > 30);
 }

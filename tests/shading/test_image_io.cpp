@@ -2,7 +2,6 @@
 // writes and the errors for unreadable files, missing channels and size mismatches.
 #include <doctest/doctest.h>
 
-#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -14,6 +13,7 @@
 #include "scenes/write_file.h"
 #include "shading/image_io.h"
 #include "tests/scratch_directory.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
 namespace fs = std::filesystem;
@@ -41,10 +41,6 @@ ImageChannels testImage() {
     return image;
 }
 
-bool bitEqual(const std::vector<float>& a, const std::vector<float>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
-
 }  // namespace
 
 TEST_CASE("EXR write then read is bit-exact for every conventions.md channel") {
@@ -61,11 +57,11 @@ TEST_CASE("EXR write then read is bit-exact for every conventions.md channel") {
     for (const std::string& name : kAllChannels) {
         CAPTURE(name);
         REQUIRE(all.find(name) != nullptr);
-        CHECK(bitEqual(*all.find(name), *written.find(name)));
+        CHECK(test::sameBytes(*all.find(name), *written.find(name)));
     }
     const ImageChannels some = readExr(file, {"V", "hit"});
     CHECK(some.names == std::vector<std::string>{"V", "hit"});
-    CHECK(bitEqual(some.at("V"), written.at("V")));
+    CHECK(test::sameBytes(some.at("V"), written.at("V")));
 }
 
 TEST_CASE("G-buffer and radiance land in the named channels") {

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -20,6 +19,7 @@
 #include "scenes/scene_file.h"
 #include "shadows/reference/reference.h"
 #include "shadows/technique.h"
+#include "tests/same_bits.h"
 
 namespace shadowlab::test {
 
@@ -164,7 +164,7 @@ void checkSameBytesEverywhere(const std::vector<float>& twin, const Run& run) {
             INFO(raster::simdLevelName(level) << " with " << threads << " thread(s)");
             const std::vector<float> v = withThreads(threads, [&] { return run(level); });
             REQUIRE(v.size() == twin.size());
-            CHECK(std::memcmp(v.data(), twin.data(), v.size() * sizeof(float)) == 0);
+            CHECK(test::sameBytes(v, twin));
         }
     }
 }

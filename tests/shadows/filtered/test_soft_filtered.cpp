@@ -164,7 +164,7 @@ TEST_CASE("blur and bilinear runs: the bits of the plain per-texel sums, borders
         std::vector<double> run(texels.size() * size_t(m.channels)), one(run.size());
         sampleBilinearRun(blurred, texels.data(), texels.size(), run.data());
         for (size_t k = 0; k < texels.size(); ++k) sampleBilinear(blurred, texels[k], &one[k * size_t(m.channels)]);
-        CHECK(std::memcmp(run.data(), one.data(), run.size() * sizeof(double)) == 0);
+        CHECK(test::sameBytes(run, one));
         for (size_t k = 0; k + 10 < texels.size(); ++k) {
             // Bilinear between the four clamped texel centres around the texel, as defined.
             const glm::dvec2 base = texels[k] - 0.5;
@@ -335,7 +335,7 @@ TEST_CASE("soft techniques: the same V bytes with 1 and 2 threads") {
         }
         INFO(name);
         REQUIRE(v[0].size() == v[1].size());
-        CHECK(std::memcmp(v[0].data(), v[1].data(), v[0].size() * sizeof(float)) == 0);
+        CHECK(test::sameBytes(v[0], v[1]));
     }
 }
 

@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <numbers>
 
@@ -30,6 +29,7 @@
 #include "shadows/reference/reference.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/technique.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
 
@@ -457,8 +457,8 @@ TEST_CASE("fins: the same V bytes for 1 and 2 threads and for the scalar and the
         const std::vector<float> scalar = runTechnique(prepared, g, technique, {}, raster::SimdLevel::Scalar).visibility;
         INFO(technique);
         REQUIRE(V[0].size() == V[1].size());
-        CHECK(std::memcmp(V[0].data(), V[1].data(), V[0].size() * sizeof(float)) == 0);
-        CHECK(std::memcmp(V[0].data(), scalar.data(), V[0].size() * sizeof(float)) == 0);
+        CHECK(test::sameBytes(V[0], V[1]));
+        CHECK(test::sameBytes(V[0], scalar));
     }
 }
 

@@ -17,6 +17,7 @@
 #include "shadows/izb/izb.h"
 #include "shadows/ray_offset.h"
 #include "tests/raster/raster_test_util.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
 
@@ -205,7 +206,7 @@ TEST_CASE("izb crossing kernel: every SIMD level lists the scalar twin's hits bi
                     if (h.receiver >= range.first && h.receiver < range.second) want.push_back(h);
                 }
                 REQUIRE(gotCount == want.size());
-                CHECK(std::memcmp(got.data(), want.data(), want.size() * sizeof(izb::SegmentHit)) == 0);
+                CHECK(test::sameBytes(std::vector<izb::SegmentHit>(got.begin(), got.begin() + gotCount), want));
                 CHECK(got[gotCount].receiver == ~0u);   // nothing written past the count
             }
         }
@@ -231,7 +232,7 @@ void checkSameBytesAtEveryLevel(Scene scene) {
     for (raster::SimdLevel level : supportedLevels()) {
         CAPTURE(raster::simdLevelName(level));
         const std::vector<float> other = visibility(level);
-        CHECK(std::memcmp(other.data(), scalar.data(), scalar.size() * sizeof(float)) == 0);
+        CHECK(test::sameBytes(other, scalar));
     }
 }
 

@@ -2,10 +2,10 @@
 // faces around a point light, every bias mode, determinism across threads, bad params.
 #include <doctest/doctest.h>
 
-#include <cstring>
 
 #include "raster/thread_count.h"
 #include "tests/shadows/maps/shadow_map_test_util.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
 using namespace shadowlab::test;
@@ -93,7 +93,7 @@ TEST_CASE("shadow-map and csm: the same V bytes with 1 and 2 threads") {
         }
         INFO(technique);
         REQUIRE(v[0].size() == v[1].size());
-        CHECK(std::memcmp(v[0].data(), v[1].data(), v[0].size() * sizeof(float)) == 0);
+        CHECK(test::sameBytes(v[0], v[1]));
     }
 }
 

@@ -14,13 +14,13 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <numbers>
 #include <sstream>
 
 #include "raster/thread_count.h"
 #include "shading/light_sampling.h"
 #include "shadows/reference/reference.h"
+#include "tests/same_bits.h"
 
 using namespace shadowlab;
 
@@ -348,7 +348,7 @@ TEST_CASE("the reference gives the same bytes for 1 and 2 threads") {
     };
     const std::vector<float> one = run(1), two = run(2);
     REQUIRE(one.size() == two.size());
-    CHECK(std::memcmp(one.data(), two.data(), one.size() * sizeof(float)) == 0);
+    CHECK(test::sameBytes(one, two));
     CHECK(std::count_if(one.begin(), one.end(), [](float v) { return v > 0.0f && v < 1.0f; }) > 50);
 }
 
