@@ -371,7 +371,7 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     # Real models (docs/performance.md, "Real models"): the main techniques on the suite's
     # scenes of models no one here made, read through the glTF path from their Debian
     # packages (scripts/suite_models.sh installs them and converts the house). Hard
-    # techniques on every scene (csm where the light is the sun), soft ones under the
+    # techniques on every scene (csm where a light is a sun), soft ones under the
     # engine's disk light; medians of 3 at 2 threads. Then each scene's reference and shadow
     # map as the docs show them.
     scripts/suite_models.sh
@@ -379,16 +379,11 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
     for scene in engine house grove dungeon; do
       hard=reference,shadow-map,csm,izb,shadow-volume
-      # The engine's light is a disk, the dungeon's three a sun and two points: csm takes a
-      # sun only, so there it shadows the dungeon's sun alone (--light 0).
-      [ $scene = engine ] || [ $scene = dungeon ] && hard=reference,shadow-map,izb,shadow-volume
+      # The engine's light is a disk, which csm shadows as shadow-map does: no csm row.
+      [ $scene = engine ] && hard=reference,shadow-map,izb,shadow-volume
       $app sweep assets/scenes/suite/$scene.json --images --technique $hard --threads 2 --runs 3 --out $s > /dev/null
       echo "$scene:"
       python3 $table $s/$scene-$(echo $hard | tr , +).csv hard
-      if [ $scene = dungeon ]; then
-        $app sweep assets/scenes/suite/dungeon.json --light 0 --technique csm --threads 2 --runs 3 --out $s/sun > /dev/null
-        python3 $table $s/sun/dungeon-csm.csv hard
-      fi
       $app render assets/scenes/suite/$scene.json --technique reference --width 640 --height 400 -o docs/images/suite-$scene-reference.png > /dev/null
       $app render assets/scenes/suite/$scene.json --technique shadow-map --width 640 --height 400 -o $s/$scene-shadow-map.png > /dev/null
     done

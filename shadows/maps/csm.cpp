@@ -2,10 +2,12 @@
 // 4th ed., section 7.4.1; cascades.h has the splits, bounds and texel snapping). Each
 // cascade is an ordinary shadow map with the bias and filter settings of `shadow-map`;
 // a receiver is looked up in the cascade of its slice only (no blending between them).
+// Cascades split the camera's view for a light as far away as the sun. Any other light's
+// frustum is already fitted to the receivers, so, as engines do, it gets the plain shadow map
+// (one frustum or cube faces) with csm's map settings: a scene's every light in one frame.
 #include "shadows/maps/csm.h"
 
 #include <algorithm>
-#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -65,11 +67,19 @@ void addStats(ShadowOutputs& out, const CascadedMaps& cm, int resolution, const 
     }
 }
 
+// A local or area light (its centre): `shadow-map`'s frame with these map settings, its
+// stats and debug buffers, and no cascades.
+ShadowOutputs localLightShadows(const ShadowInputs& in, const ShadowMapSettings& map) {
+    ShadowOutputs out = runShadowMap(in, ShadowMapTechniqueSettings{.map = map});
+    out.stats.insert(out.stats.begin(), {"cascades_count", 0.0});
+    return out;
+}
+
 ShadowOutputs runCsm(const ShadowInputs& in) {
     const CsmSettings settings = readCsmSettings(in.params);
     const ShadowMapSettings& s = settings.map;
     const CascadeSettings& cs = settings.cascades;
-    if (in.light.type != LightType::Directional) throw std::invalid_argument("csm: needs a directional light");
+    if (in.light.type != LightType::Directional) return localLightShadows(in, s);
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     StageTimer timer;
@@ -107,7 +117,7 @@ CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffe
 Technique cascadedShadowMapTechnique() {
     return {.name = "csm",
             .description = "cascaded shadow maps (RTR 7.4.1) for directional lights: split schemes, SDSM "
-                           "bounds, texel snapping",
+                           "bounds, texel snapping; other lights get shadow-map's frame",
             .params = csmSettingsTable().specs(),
             .run = runCsm,
             .referenceName = "reference",

@@ -1,6 +1,7 @@
 // The shadow-map family: `shadow-map` (one map, or six cube faces for a point
 // light among its receivers; optional LiSPSM warp for a directional light) and `csm`
-// (cascaded shadow maps for a directional light). See shadow_map.cpp and csm.cpp.
+// (cascaded shadow maps for a directional light; other lights get shadow-map's frame).
+// See shadow_map.cpp and csm.cpp.
 #pragma once
 
 #include "shadows/maps/shadow_map_settings.h"

@@ -140,7 +140,13 @@ expect_error "bad --simd" render sphere-box --simd bogus "${tiny[@]}" -o "$scrat
 expect_error "render without output" render sphere-box "${tiny[@]}"
 expect_error "render without scene" render -o "$scratch/x.png"
 expect_error "bad --width" render sphere-box --width 0 -o "$scratch/x.png"
-expect_error "csm without a sun" render sphere-box --technique csm "${tiny[@]}" -o "$scratch/x.png"
+expect_error "LiSPSM without a sun" render sphere-box --technique shadow-map --param warp=lispsm "${tiny[@]}" -o "$scratch/x.png"
+# csm cascades a sun only; sphere-box's disk gets shadow-map's frame (docs/shadow-maps.md).
+run render sphere-box --technique csm "${tiny[@]}" -o "$scratch/csm.png"
+csm_rc=$rc
+run render sphere-box --technique shadow-map "${tiny[@]}" -o "$scratch/map.png"
+if [ "$csm_rc" -eq 0 ] && [ "$rc" -eq 0 ] && cmp -s "$scratch/csm.png" "$scratch/map.png"; then pass
+else fail "csm under sphere-box's disk light is not shadow-map's image (rc $csm_rc, $rc)"; fi
 expect_error "--light-pos of a sun" render "$(dirname "${BASH_SOURCE[0]}")/../../assets/scenes/hard/sun.json" --light-pos 1,2,3 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "--light-pos beyond the world's bound (Embree aborted)" render sphere-box --technique reference --light-pos 1.9e18,5,0 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "--eye beyond the world's bound" render sphere-box --eye 0,2e6,0 "${tiny[@]}" -o "$scratch/x.png"

@@ -21,7 +21,8 @@ inline Scene smallScene(const std::string& nameOrPath, int width = 96, int heigh
 inline std::string sunScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/hard/sun.json"; }
 inline std::string skyScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/environment/sphere-sky.json"; }
 
-inline bool needsDirectionalLight(const Technique& t) { return t.name == "csm"; }
+// csm's cascades are for a sun (any other light gets shadow-map's frame): test it on one.
+inline bool runsOnASun(const Technique& t) { return t.name == "csm"; }
 
 // Settings that keep each technique's frame small: few samples and lights.
 inline std::map<std::string, std::string> quickSettings(const Technique& t) {
@@ -39,7 +40,7 @@ struct TechniqueScenes {
           sky(smallScene(skyScene(), width, height)) {}
     const PreparedScene& sceneFor(const Technique& t) const {
         if (t.output == TechniqueOutput::Radiance) return sky;
-        return needsDirectionalLight(t) || t.name == "shadow-map" ? sun : disk;
+        return runsOnASun(t) || t.name == "shadow-map" ? sun : disk;
     }
     PreparedScene disk, sun, sky;
 };

@@ -32,7 +32,7 @@ Scene withLights(Scene scene, std::vector<Light> lights) {
 
 // A scene of two lights of one kind, so that every visibility technique can shadow both:
 // sphere-box's disk (the soft techniques need an area light; the hard ones take its
-// centre) and a second one, or for the techniques of a sun (test::needsDirectionalLight)
+// centre) and a second one, or for the techniques of a sun (test::runsOnASun)
 // the sun case's sun and a second one. No ambient term, so that each light alone shades
 // exactly its own term (0 + t = t).
 struct TwoLights {
@@ -74,7 +74,7 @@ TEST_CASE("many lights: for every visibility technique two lights shade the sum 
     for (const Technique& technique : techniques()) {
         if (technique.output != TechniqueOutput::Visibility) continue;
         CAPTURE(technique.name);
-        const TwoLights s(test::needsDirectionalLight(technique));
+        const TwoLights s(test::runsOnASun(technique));
         const PreparedScene both(s.both), onlyA(withLights(s.both, {s.a})), onlyB(withLights(s.both, {s.b}));
         const FrameSettings settings = quick(technique);
         const Frame a = renderFrame(onlyA, technique, settings), b = renderFrame(onlyB, technique, settings),
@@ -105,7 +105,7 @@ TEST_CASE("many lights: a light that reaches nothing in view gives V = 0 for eve
         // `none` is the unshadowed baseline, V = 1 on every surface (shading's cosine darkens them).
         if (technique.output != TechniqueOutput::Visibility || technique.name == "none") continue;
         CAPTURE(technique.name);
-        const Light& away = test::needsDirectionalLight(technique) ? sun : technique.referenceName == "reference-soft" ? disk : spot;
+        const Light& away = test::runsOnASun(technique) ? sun : technique.referenceName == "reference-soft" ? disk : spot;
         const PreparedScene prepared(withLights(base, {away}));
         const Frame frame = renderFrame(prepared, technique, quick(technique));
         REQUIRE(!anyReachable(frame.gbuffer, away));
@@ -140,6 +140,31 @@ TEST_CASE("many lights: each light's stats are in the frame as lightK_NAME and t
             sum += pass.techniqueMs;
         }
         CHECK(test::sameBits(sum, frame.techniqueMs));
+    }
+}
+
+// csm's cascades are for the sun; its point and spot lights get shadow-map's frame with the
+// same map settings, so a mixed scene renders whole.
+TEST_CASE("many lights: csm cascades the sun of a mixed scene and gives its point and spot lights shadow-map's V") {
+    const PreparedScene prepared(smallScene(kThreeLights));
+    const std::vector<Light>& lights = prepared.scene().lights;
+    REQUIRE(lights.size() == 3);
+    FrameSettings settings;
+    settings.params = {{"resolution", "512"}, {"filter", "grid"}, {"grid-size", "3"}};
+    const Frame csm = renderFrame(prepared, findTechnique("csm"), settings);
+    const Frame map = renderFrame(prepared, findTechnique("shadow-map"), settings);
+    REQUIRE(csm.passes.size() == 3);
+    const auto stat = [](const LightPass& pass, const std::string& name) {
+        for (const TechniqueStat& s : pass.shadow.stats) {
+            if (s.name == name) return s.value;
+        }
+        return -1.0;
+    };
+    for (size_t k = 0; k < lights.size(); ++k) {
+        CAPTURE(k);
+        const bool sun = lights[k].type == LightType::Directional;
+        CHECK(stat(csm.passes[k], "cascades_count") == (sun ? 4.0 : 0.0));
+        CHECK(sameBytes(csm.passes[k].shadow.visibility, map.passes[k].shadow.visibility) == !sun);
     }
 }
 

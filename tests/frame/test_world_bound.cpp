@@ -56,7 +56,7 @@ TEST_CASE("world bound: at the bound every technique renders a finite frame") {
         FrameSettings settings;
         settings.params = test::quickSettings(t);
         const PreparedScene& scene = t.output == TechniqueOutput::Radiance ? preparedSky
-                                     : test::needsDirectionalLight(t) || t.name == "shadow-map" ? preparedSun
+                                     : test::runsOnASun(t) || t.name == "shadow-map" ? preparedSun
                                                                                                    : preparedDisk;
         const Frame frame = renderFrame(scene, t, settings);
         CHECK(allFinite(frame.shadow.visibility));

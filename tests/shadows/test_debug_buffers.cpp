@@ -53,7 +53,7 @@ struct SmallScene {
     }
 };
 
-// csm needs a directional light: sphere-box under a sun; every other technique runs on
+// csm's cascades are for a sun: sphere-box under a sun; every other technique runs on
 // sphere-box with its disk light (hard-shadow techniques use its centre).
 SmallScene sceneFor(const std::string& technique) {
     return SmallScene(technique == "csm" ? test::sunSphereBox(kWidth, kHeight)
