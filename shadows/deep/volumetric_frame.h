@@ -5,6 +5,7 @@
 // per-texel storage and its lookup (runVolumetricFrame).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <type_traits>
 #include <utility>
