@@ -19,8 +19,8 @@ std::vector<uint8_t> greyImage(const std::vector<float>& values, float low, floa
     return rgb;
 }
 
-DebugBuffers::DebugBuffers(std::filesystem::path directory, std::string technique)
-    : directory_(std::move(directory)), technique_(std::move(technique)) {
+DebugBuffers::DebugBuffers(std::filesystem::path directory, std::string technique, std::string suffix)
+    : directory_(std::move(directory)), technique_(std::move(technique)), suffix_(std::move(suffix)) {
     if (enabled()) std::filesystem::create_directories(directory_);
 }
 

@@ -21,8 +21,9 @@ std::vector<uint8_t> greyImage(const std::vector<float>& values, float low, floa
 
 class DebugBuffers {
 public:
-    // An empty directory writes nothing; otherwise it is created if missing.
-    DebugBuffers(std::filesystem::path directory, std::string technique);
+    // An empty directory writes nothing; otherwise it is created if missing. A suffix ends
+    // every name (<technique>-<name><suffix>): one map of several, a cube face's "-face-px".
+    DebugBuffers(std::filesystem::path directory, std::string technique, std::string suffix = "");
 
     bool enabled() const { return !directory_.empty(); }
     void write(const std::string& name, int width, int height, const std::vector<float>& values, float low,
@@ -31,10 +32,12 @@ public:
     void writePicture(const std::string& name, int width, int height, const std::vector<uint8_t>& rgb) const;
 
 private:
-    std::filesystem::path base(const std::string& name) const { return directory_ / (technique_ + "-" + name); }
+    std::filesystem::path base(const std::string& name) const {
+        return directory_ / (technique_ + "-" + name + suffix_);
+    }
 
     std::filesystem::path directory_;
-    std::string technique_;
+    std::string technique_, suffix_;
 };
 
 }  // namespace shadowlab

@@ -239,6 +239,11 @@ double farthestVertex(const WorldGeometry& world, const glm::dvec3& from) {
 
 }  // namespace
 
+bool insideCubeFace(const LightView& face, const glm::dvec3& P) {
+    const glm::dvec3 q(face.viewFromWorld * glm::dvec4(P, 1.0));
+    return -q.z > 0.0 && std::abs(q.x) <= -q.z && std::abs(q.y) <= -q.z;
+}
+
 LightView fitLightView(const Light& light, const GBuffer& receivers, const WorldGeometry& world,
                        const LightFitOptions& options) {
     if (light.type == LightType::Disk || light.type == LightType::Rectangle) {
@@ -276,9 +281,10 @@ bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const W
     view.viewFromWorld = glm::lookAtRH(apex, apex + kAxes[face], kUps[face]);
     // The face's receivers: those inside its 90-degree pyramid.
     const auto add = [&](Bounds& b, size_t k) {
-        const glm::dvec3 q = glm::dvec3(view.viewFromWorld * glm::dvec4(glm::dvec3(receivers.position[k]), 1.0));
-        if (-q.z > 0.0 && std::abs(q.x) <= -q.z && std::abs(q.y) <= -q.z) {
-            b.nearest = std::min(b.nearest, -q.z), b.farthest = std::max(b.farthest, -q.z);
+        const glm::dvec3 P(receivers.position[k]);
+        if (insideCubeFace(view, P)) {
+            const double depth = -(view.viewFromWorld * glm::dvec4(P, 1.0)).z;
+            b.nearest = std::min(b.nearest, depth), b.farthest = std::max(b.farthest, depth);
         }
     };
     Bounds b = overServedPixels(light, receivers, Bounds{}, add, merged);   // a point light serves every surface

@@ -57,4 +57,11 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
 bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const WorldGeometry& world,
                  const LightFitOptions& options, LightView& view);
 
+// The faces' names, as debug buffers suffix them ("-face-px").
+inline constexpr const char* kCubeFaceNames[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+
+// Whether P lies in the 90-degree pyramid of a cube face's view: the test fitCubeFace fits
+// a face's receivers by, and the one a receiver's face is chosen by.
+bool insideCubeFace(const LightView& face, const glm::dvec3& P);
+
 }  // namespace shadowlab

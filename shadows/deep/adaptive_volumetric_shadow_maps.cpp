@@ -29,7 +29,7 @@ struct AdaptiveMap {
         return transmittanceAt({&nodes[texel * (size_t(capacity) + 2)], counts[texel]}, z);
     }
     double bytesPerTexel() const { return double(capacity) * sizeof(CurveVertex); }
-    void addStats(std::vector<TechniqueStat>& stats) const { stats.push_back({"nodes_count", double(capacity)}); }
+    void addStats(VolumetricStats& stats) const { stats.most("nodes_count", double(capacity)); }
     void writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const {
         const std::vector<float> perTexel(counts.begin(), counts.end());
         debug.write("nodes-per-texel", layers.size(), layers.size(), perTexel, 0.0f, float(capacity));

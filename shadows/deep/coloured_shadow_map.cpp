@@ -19,7 +19,7 @@ struct ColouredMap {
 
     glm::vec3 at(size_t texel, float z) const { return z > nearest[texel] ? passed[texel] : glm::vec3(1.0f); }
     double bytesPerTexel() const { return sizeof(float) + sizeof(glm::vec3); }
-    void addStats(std::vector<TechniqueStat>&) const {}
+    void addStats(VolumetricStats&) const {}
     // The colours as a picture (linear, 255 for 1) and their luminance as a buffer, and the
     // nearest translucent depth.
     void writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const {

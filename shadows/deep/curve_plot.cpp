@@ -47,18 +47,18 @@ void writeSvg(const std::filesystem::path& path, const SampledCurve& c, int x, i
 
 }  // namespace
 
-void writeCurvePlots(const std::filesystem::path& directory, const std::string& technique, int mapSize,
-                     const std::vector<SampledCurve>& curves) {
+void writeCurvePlots(const std::filesystem::path& directory, const std::string& technique, const std::string& suffix,
+                     int mapSize, const std::vector<SampledCurve>& curves) {
     std::filesystem::create_directories(directory);
-    std::ofstream csv(directory / (technique + "-curves.csv"));
+    std::ofstream csv(directory / (technique + "-curves" + suffix + ".csv"));
     csv << "texel_x,texel_y,depth,exact,technique\n";
     for (const SampledCurve& c : curves) {
         const int x = int(c.texel % size_t(mapSize)), y = int(c.texel / size_t(mapSize));
         for (size_t s = 0; s < c.depth.size(); ++s) {
             csv << x << ',' << y << ',' << c.depth[s] << ',' << c.exact[s] << ',' << c.technique[s] << '\n';
         }
-        std::string name = technique;
-        name.append("-curve-").append(std::to_string(x)).append("-").append(std::to_string(y)).append(".svg");
+        const std::string name =
+            technique + "-curve-" + std::to_string(x) + "-" + std::to_string(y) + suffix + ".svg";
         writeSvg(directory / name, c, x, y);
     }
 }

@@ -1,8 +1,9 @@
 // The transmittance curves of chosen texels as plots (--debug-buffers): for the three
 // texels with the most events, T(z) of the exact curve (transmittance_curve.h) against the
 // technique's own, sampled at 256 depths across the texel's events, written as
-// <technique>-curves.csv and one SVG per texel, <technique>-curve-<x>-<y>.svg: where a
-// technique's storage departs from the truth, and by how much, at a glance.
+// <technique>-curves.csv and one SVG per texel, <technique>-curve-<x>-<y>.svg, each name
+// ended by the map's suffix (a cube face's "-face-px"): where a technique's storage departs
+// from the truth, and by how much, at a glance.
 #pragma once
 
 #include <filesystem>
@@ -27,14 +28,14 @@ struct SampledCurve {
 // The texels with the most events (at most `count`; the first on a tie), most first.
 std::vector<size_t> busiestTexels(const VolumetricLayers& layers, int count);
 
-void writeCurvePlots(const std::filesystem::path& directory, const std::string& technique, int mapSize,
-                     const std::vector<SampledCurve>& curves);
+void writeCurvePlots(const std::filesystem::path& directory, const std::string& technique, const std::string& suffix,
+                     int mapSize, const std::vector<SampledCurve>& curves);
 
 // Samples the exact and the technique's curve, curve(texel, depth), at the busiest texels
 // and writes them; nothing without a debug directory.
 template <class Curve>
-void plotCurves(const std::filesystem::path& directory, const std::string& technique, const VolumetricLayers& layers,
-                const Curve& curve) {
+void plotCurves(const std::filesystem::path& directory, const std::string& technique, const std::string& suffix,
+                const VolumetricLayers& layers, const Curve& curve) {
     if (directory.empty()) return;
     constexpr int kSamples = 256;
     std::vector<SampledCurve> curves;
@@ -54,7 +55,7 @@ void plotCurves(const std::filesystem::path& directory, const std::string& techn
         }
         curves.push_back(std::move(sampled));
     }
-    writeCurvePlots(directory, technique, layers.size(), curves);
+    writeCurvePlots(directory, technique, suffix, layers.size(), curves);
 }
 
 }  // namespace shadowlab

@@ -27,10 +27,10 @@ struct DeepMap {
     double bytesPerTexel() const {
         return (double(vertices.size()) * sizeof(CurveVertex) + texels() * sizeof(uint32_t)) / texels();
     }
-    void addStats(std::vector<TechniqueStat>& stats) const {
-        stats.push_back({"vertices_per_texel_mean_count", double(vertices.size()) / texels()});
-        stats.push_back({"vertices_per_texel_max_count", double(mostVertices)});
-        stats.push_back({"largest_tolerance_ratio", double(largestTolerance)});
+    void addStats(VolumetricStats& stats) const {
+        stats.mean("vertices_per_texel_mean_count", double(vertices.size()) / texels());
+        stats.most("vertices_per_texel_max_count", double(mostVertices));
+        stats.most("largest_tolerance_ratio", double(largestTolerance));
     }
     void writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const {
         std::vector<float> counts(start.size() - 1);

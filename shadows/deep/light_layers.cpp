@@ -8,7 +8,6 @@
 
 #include "raster/rasterizer.h"
 #include "shading/luminance.h"
-#include "shadows/light_view.h"
 #include "shadows/volume_march.h"
 #include "shadows/world_draw.h"
 
@@ -187,13 +186,9 @@ void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> v
 
 }  // namespace
 
-VolumetricLayers renderVolumetricLayers(const ShadowInputs& in, const Light& light,
+VolumetricLayers renderVolumetricLayers(const ShadowInputs& in, const LightView& view,
                                         const CasterTransmission& transmission,
-                              const VolumetricLayerSettings& settings) {
-    LightFitOptions fit;
-    fit.resolution = settings.resolution;
-    fit.simd = in.simd;
-    const LightView view = fitLightView(light, in.gbuffer, in.casterWorld(), fit);
+                                        const VolumetricLayerSettings& settings) {
     const WorldGeometry& world = in.casterWorld();
     const CasterSplit split = splitCasters(world, transmission);
     const glm::mat4 clipFromWorld(view.clipFromWorld());

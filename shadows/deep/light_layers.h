@@ -1,5 +1,6 @@
-// Stage 1 of every volumetric shadow map: what the light sees through each texel. One view
-// (light_view.h, fitted to the receivers), one rasterizer pass per kind of caster:
+// Stage 1 of every volumetric shadow map: what the light sees through each texel of one view
+// (light_view.h: the frustum fitted to the receivers, or one cube face of a point light they
+// surround; volumetric_frame.h chooses), one rasterizer pass per kind of caster:
 //   - the opaque casters into an ordinary depth map, drawn with the shadow map's bias;
 //   - the translucent casters, depth-tested against it but not writing depth, into
 //     per-tile fragment lists (FragmentOutput::FragmentList): every layer in front of the
@@ -19,6 +20,7 @@
 
 #include "shadows/caster_transmission.h"
 #include "shadows/depth_map.h"
+#include "shadows/light_view.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -52,10 +54,9 @@ struct VolumetricLayerSettings {
     raster::PolygonOffset opaqueOffset;   // the opaque map's bias
 };
 
-// Throws std::invalid_argument as fitLightView does (no receivers, a point light all
-// around them: the volumetric maps have one view, no cube faces).
-VolumetricLayers renderVolumetricLayers(const ShadowInputs& in, const Light& light,
+// The layers seen through `view`, a map of settings.resolution texels per side.
+VolumetricLayers renderVolumetricLayers(const ShadowInputs& in, const LightView& view,
                                         const CasterTransmission& transmission,
-                              const VolumetricLayerSettings& settings);
+                                        const VolumetricLayerSettings& settings);
 
 }  // namespace shadowlab

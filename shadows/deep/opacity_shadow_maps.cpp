@@ -23,7 +23,7 @@ struct OpacitySlices {
 
     float at(size_t texel, float z) const;
     double bytesPerTexel() const { return double(count) * sizeof(float); }
-    void addStats(std::vector<TechniqueStat>& stats) const { stats.push_back({"slices_count", double(count)}); }
+    void addStats(VolumetricStats& stats) const { stats.most("slices_count", double(count)); }
     void writeDebug(const DebugBuffers& debug, const VolumetricLayers& layers) const;
 };
 

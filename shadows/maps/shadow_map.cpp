@@ -18,6 +18,7 @@
 
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
+#include "shadows/light_view.h"
 #include "shadows/maps/lispsm.h"
 #include "shadows/maps/shadow_lookup.h"
 #include "shadows/maps/shadow_map_debug.h"
@@ -28,13 +29,7 @@
 namespace shadowlab {
 namespace {
 
-const char* const kFaceNames[6] = {"px", "nx", "py", "ny", "pz", "nz"};
-
-bool insideFace(const DepthMap& face, const glm::dvec3& P) {
-    if (face.size == 0) return false;
-    const glm::dvec3 q(face.view.viewFromWorld * glm::dvec4(P, 1.0));
-    return -q.z > 0.0 && std::abs(q.x) <= -q.z && std::abs(q.y) <= -q.z;
-}
+bool insideFace(const DepthMap& face, const glm::dvec3& P) { return face.size != 0 && insideCubeFace(face.view, P); }
 
 struct LightMaps {
     std::vector<DepthMap> maps;     // one map, or six cube faces (size 0 where a face has no receiver)
@@ -124,7 +119,7 @@ void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSett
     if (!debug.enabled()) return;
     for (size_t k = 0; k < lm.maps.size(); ++k) {
         if (lm.maps[k].size == 0) continue;
-        const std::string suffix = lm.cube ? std::string("-face-") + kFaceNames[k] : "";
+        const std::string suffix = lm.cube ? std::string("-face-") + kCubeFaceNames[k] : "";
         writeDepthMap(debug, "depth" + suffix, lm.maps[k]);
         if (s.layer == DepthLayer::Midpoint) {
             // The two layers the midpoint averages, drawn again only for this picture.
