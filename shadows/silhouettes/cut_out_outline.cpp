@@ -352,10 +352,7 @@ CutOutOutline cutOutOutline(const Scene& scene, const WorldGeometry& world, cons
     CutOutOutline out;
     if (world.cutOuts.empty()) return out;
     std::vector<TextureOutline> outlines;
-    for (const WorldGeometry::CutOut& t : world.cutOuts) {
-        outlines.push_back(textureOutline(t));
-        out.textureRuns += outlines.back().runs.size();
-    }
+    for (const WorldGeometry::CutOut& t : world.cutOuts) outlines.push_back(textureOutline(t));
     const std::vector<InstanceRange> ranges = instanceRanges(scene);
     std::vector<std::vector<glm::vec3>> positions(ranges.size());
     std::vector<std::vector<SilhouetteEdge>> edges(ranges.size());

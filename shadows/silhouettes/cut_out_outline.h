@@ -60,7 +60,6 @@ struct CutOutOutline {
     std::vector<glm::vec3> positions;       // world space, the outline's own vertices
     std::vector<uint32_t> vertexInstance;   // per position: its instance, index into Scene::instances
     std::vector<SilhouetteEdge> edges;      // indices into positions, opaque on the left as the light sees it
-    size_t textureRuns = 0;                 // runs of the textures' outlines (step 1)
     size_t refusedInstances = 0;            // a clamped axis beyond [0, 1]: no outline
 };
 
