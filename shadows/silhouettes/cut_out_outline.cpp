@@ -13,6 +13,10 @@ namespace {
 // Texel coordinates a clamped axis may pass 0 or its size by (float texture coordinates of
 // 0 and 1 written with rounding): the sliver beyond reads the edge texel, as inside.
 constexpr double kClampTolerance = 1e-3;
+// Runs clipped per instance at most: the texture's runs times the periods its triangles
+// overlap. A texture repeated thousands of times over a ground would otherwise take seconds
+// and millions of fins a frame; such an instance is refused.
+constexpr double kMaxClippedRuns = double(1 << 20);
 
 int64_t floorMod(int64_t i, int64_t n) { return ((i % n) + n) % n; }
 
@@ -96,10 +100,12 @@ public:
         : world_(world), adjacency_(adjacency), range_(range), mesh_(scene.meshes[range.mesh]), outlines_(outlines),
           signs_(instanceCasterSigns(world, range, light, false)) {}
 
-    // False (and nothing kept) when a triangle's clamped axis leaves [0, 1].
+    // False (and nothing kept) when a triangle's texture coordinates are not finite, or a
+    // clamped axis leaves [0, 1], or the instance would clip more than kMaxClippedRuns.
     bool build() {
+        double clippedRuns = 0.0;
         for (uint32_t m = 0; m < range_.triangleCount; ++m) {
-            if (!withinClamp(m)) return false;
+            if (!accepted(m, clippedRuns)) return false;
         }
         for (uint32_t m = 0; m < range_.triangleCount; ++m) triangle(m);
         return true;
@@ -128,17 +134,28 @@ private:
         return {double(uv.x) * t.width, double(uv.y) * t.height};
     }
 
-    bool withinClamp(uint32_t m) const {
+    bool accepted(uint32_t m, double& clippedRuns) const {
         const uint32_t w = range_.firstTriangle + m;
         const int c = world_.triangleCutOut[w];
         if (c < 0) return true;
         const WorldGeometry::CutOut& t = world_.cutOuts[size_t(c)];
+        const TextureOutline& outline = outlines_[size_t(c)];
+        glm::dvec2 lo(INFINITY), hi(-INFINITY);
         for (int k = 0; k < 3; ++k) {
             const glm::dvec2 q = texelCoordinates(w, k, t);
-            if (t.wrap.u == TextureWrap::ClampToEdge && (q.x < -kClampTolerance || q.x > t.width + kClampTolerance)) return false;
-            if (t.wrap.v == TextureWrap::ClampToEdge && (q.y < -kClampTolerance || q.y > t.height + kClampTolerance)) return false;
+            if (!std::isfinite(q.x) || !std::isfinite(q.y)) return false;
+            lo = glm::min(lo, q), hi = glm::max(hi, q);
         }
-        return true;
+        double periods = 1.0;
+        for (int axis = 0; axis < 2; ++axis) {
+            const double size = axis == 0 ? t.width : t.height;
+            if (!outline.periodic[axis] && (lo[axis] < -kClampTolerance || hi[axis] > size + kClampTolerance)) return false;
+            if (outline.periodic[axis]) {
+                periods *= std::max(1.0, std::ceil(hi[axis] / outline.period[axis]) - std::floor(lo[axis] / outline.period[axis]));
+            }
+        }
+        clippedRuns += periods * double(outline.runs.size());
+        return clippedRuns <= kMaxClippedRuns;
     }
 
     int meshEdgeIndex(uint32_t a, uint32_t b) const {

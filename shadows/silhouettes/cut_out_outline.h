@@ -26,9 +26,10 @@
 //      an open mesh (silhouette.h, casterSigns): every triangle casts, turned to face the
 //      light; the runs are turned again where the texel coordinates mirror the triangle.
 //
-// A clamped axis beyond [0, 1] (the edge texel stretched over the rest of the card) is
-// refused: such a triangle's instance keeps no outline, casts the hard shadow of its holes,
-// and is counted (`refusedInstances`).
+// Refused: a clamped axis beyond [0, 1] (the edge texel stretched over the rest of the card),
+// texture coordinates that are not finite, and more than about a million runs to clip for
+// one instance (a texture repeated thousands of times). Such an instance keeps no outline,
+// casts the hard shadow of its holes, and is counted (`refusedInstances`).
 #pragma once
 
 #include <cstdint>
@@ -60,7 +61,7 @@ struct CutOutOutline {
     std::vector<glm::vec3> positions;       // world space, the outline's own vertices
     std::vector<uint32_t> vertexInstance;   // per position: its instance, index into Scene::instances
     std::vector<SilhouetteEdge> edges;      // indices into positions, opaque on the left as the light sees it
-    size_t refusedInstances = 0;            // a clamped axis beyond [0, 1]: no outline
+    size_t refusedInstances = 0;            // no outline (above)
 };
 
 // Steps 1 to 3 for every cut-out instance of the scene (world = flatten(scene), adjacency

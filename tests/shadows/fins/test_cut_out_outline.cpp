@@ -291,7 +291,7 @@ TEST_CASE("cut-out outline: a repeated, mirrored card's outline is the tiled tex
     CHECK(std::ranges::count(balance, 0) == std::ssize(balance));
 }
 
-TEST_CASE("cut-out outline: a clamped texture beyond [0, 1] is refused, the card keeps the hard shadow of its holes") {
+TEST_CASE("cut-out outline: a clamped texture beyond [0, 1], or a texture repeated too often, is refused") {
     Scene scene = repeatedCard(1.5f);
     scene.alphaTextures[0].wrap = {};
     const PreparedScene prepared(scene);
@@ -303,6 +303,10 @@ TEST_CASE("cut-out outline: a clamped texture beyond [0, 1] is refused, the card
     const CutOutOutline kept = outlineOf(PreparedScene(inside));
     CHECK(kept.refusedInstances == 0);
     CHECK(!kept.edges.empty());
+    // 16,000 periods along u times 8,000 along v: far too many runs to clip, refused before any is.
+    const CutOutOutline tooMany = outlineOf(PreparedScene(repeatedCard(16000.0f)));
+    CHECK(tooMany.refusedInstances == 1);
+    CHECK(tooMany.edges.empty());
 }
 
 namespace {
