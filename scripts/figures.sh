@@ -228,6 +228,28 @@ EOF
     $app sweep assets/scenes/volumetric/foliage-cards-disk.json --technique $soft --threads 1,2 --runs 5 --out $c > /dev/null
     echo "foliage-cards-disk:"
     python3 $table $c/foliage-cards-disk-pcss+izb-pcss+fins+smoothies+penumbra-maps+soft-shadow-volumes.csv soft
+    # mask-card under the disk light of the glTF MASK test (tests/shadows/test_cut_outs.cpp):
+    # the fins' families on its outline.
+    mkdir -p $c/disk
+    python3 - assets/scenes/volumetric/mask-card.json $c/disk/mask-card-disk.json <<'EOF'
+import json, math, os, sys
+scene = json.load(open(sys.argv[1]))
+folder = os.path.dirname(os.path.abspath(sys.argv[1]))
+for mesh in scene["meshes"]:
+    if "file" in mesh:
+        mesh["file"] = os.path.join(folder, mesh["file"])
+for material in scene["materials"]:
+    if "alpha-texture" in material:
+        material["alpha-texture"] = os.path.join(folder, material["alpha-texture"])
+towards = [-1.5, -5.0, -2.0]
+length = math.sqrt(sum(x * x for x in towards))
+scene["lights"] = [{"type": "disk", "position": [1.5, 5.0, 2.0], "normal": [x / length for x in towards],
+                    "radius": 0.4, "color": [1, 1, 1], "power": 380}]
+json.dump(scene, open(sys.argv[2], "w"), indent=2)
+EOF
+    $app sweep $c/disk/mask-card-disk.json --technique fins,smoothies,penumbra-maps --threads 1,2 --runs 5 --out $c/disk > /dev/null
+    echo "mask-card under a disk:"
+    python3 $table $c/disk/mask-card-disk-fins+smoothies+penumbra-maps.csv soft
     for technique in reference izb shadow-volume planar; do
       $app render assets/scenes/volumetric/foliage-cards.json --technique $technique -o docs/images/cutouts-foliage-$technique.png > /dev/null
       $app render assets/scenes/volumetric/mask-card.json --technique $technique -o docs/images/cutouts-mask-$technique.png > /dev/null

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "shadows/fins/fin_maps.h"
 #include "shadows/fins/fins_debug.h"
 #include "shadows/maps/shadow_bias.h"
+#include "shadows/silhouettes/cut_out_outline.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/stage_timer.h"
 
@@ -42,10 +44,22 @@ struct FinScene {
     double L0 = 0.0;   // the reference receiver plane (section 3.1): the view's far plane
     Fins fins;
     Layering layering;
-    size_t cutOutEdges = 0;   // silhouette edges of cut-outs, left without fins (cut_out_silhouette_edges)
+    size_t cutOutEdges = 0;   // the cards' own silhouette edges, left without fins (cut_out_silhouette_edges)
+    size_t outlineEdges = 0;  // the cut-outs' outline edges in their place (cut_out_outline_edges)
+    size_t refusedCutOuts = 0;  // cut-out instances with no outline (cut_out_outline_refused_count)
 };
 
-uint32_t instanceOfVertex(const std::vector<InstanceRange>& ranges, uint32_t vertex) {
+// The positions the fins are built from: the world's, then the cut-outs' outline vertices
+// (cut_out_outline.h), each outline vertex with its instance. Copied only for cut-outs.
+struct FinVertices {
+    std::span<const glm::vec3> world;
+    std::vector<glm::vec3> withOutline;   // world, then the outline's; empty without an outline
+    std::vector<uint32_t> outlineInstance;
+    std::span<const glm::vec3> positions() const { return withOutline.empty() ? world : withOutline; }
+};
+
+uint32_t instanceOfVertex(const std::vector<InstanceRange>& ranges, const FinVertices& vertices, uint32_t vertex) {
+    if (vertex >= vertices.world.size()) return vertices.outlineInstance[vertex - vertices.world.size()];
     const auto after = std::upper_bound(ranges.begin(), ranges.end(), vertex,
                                         [](uint32_t v, const InstanceRange& r) { return v < r.firstVertex; });
     return uint32_t(after - ranges.begin() - 1);
@@ -62,11 +76,11 @@ LightView fitFinView(const ShadowInputs& in, const FinSettings& s) {
 }
 
 // Step 3: each instance, with its fins, into the layer of its edges' median midpoint.
-Layering layerScene(const ShadowInputs& in, const Fins& fins, const LightPlane& light, const LightView& view,
-                    int layerCount) {
+Layering layerScene(const ShadowInputs& in, const Fins& fins, const FinVertices& vertices, const LightPlane& light,
+                    const LightView& view, int layerCount) {
     const std::vector<InstanceRange> ranges = instanceRanges(in.casters().scene());
     std::vector<uint32_t> edgeInstance;
-    for (const SilhouetteEdge& e : fins.edges) edgeInstance.push_back(instanceOfVertex(ranges, e.from));
+    for (const SilhouetteEdge& e : fins.edges) edgeInstance.push_back(instanceOfVertex(ranges, vertices, e.from));
     std::vector<double> fallback;   // instances without silhouette edges: their first vertex
     for (const InstanceRange& r : ranges) fallback.push_back(light.distance(glm::dvec3(in.casterWorld().positions[r.firstVertex])));
     Layering l{LightLayers(fins.midpointDistance, view.zNear, view.zFar, layerCount), {}, {}};
@@ -88,27 +102,48 @@ Layering layerScene(const ShadowInputs& in, const Fins& fins, const LightPlane& 
 
 // Removes the silhouette edges of cut-outs and returns how many: a card's edges are not the
 // outline of its leaves, whose hard shadow the layer's depth map draws with its holes; fins
-// on them would add a band of penumbra around the card's square (docs/cut-outs.md).
-size_t dropCutOutEdges(std::vector<SilhouetteEdge>& edges, const ShadowInputs& in) {
+// on them would add a band of penumbra around the card's square (docs/cut-outs.md). The
+// outline takes their place.
+size_t dropCutOutEdges(std::vector<SilhouetteEdge>& edges, const ShadowInputs& in, const FinVertices& vertices) {
     const WorldGeometry& world = in.casterWorld();
     if (world.cutOuts.empty()) return 0;
     const std::vector<InstanceRange> ranges = instanceRanges(in.casters().scene());
     return std::erase_if(edges, [&](const SilhouetteEdge& e) {
-        const InstanceRange& r = ranges[instanceOfVertex(ranges, e.from)];
+        const InstanceRange& r = ranges[instanceOfVertex(ranges, vertices, e.from)];
         return world.triangleCutOut[r.firstTriangle] >= 0;   // an edge's instance has triangles
     });
 }
 
+// Step 2 for cut-outs: their outline's vertices after the world's, its edges after the meshes'.
+void addCutOutOutline(const CutOutOutline& outline, FinVertices& vertices, std::vector<SilhouetteEdge>& silhouette) {
+    if (outline.positions.empty()) return;
+    vertices.withOutline.assign(vertices.world.begin(), vertices.world.end());
+    vertices.withOutline.insert(vertices.withOutline.end(), outline.positions.begin(), outline.positions.end());
+    vertices.outlineInstance = outline.vertexInstance;
+    const uint32_t base = uint32_t(vertices.world.size());
+    for (const SilhouetteEdge& e : outline.edges) silhouette.push_back({base + e.from, base + e.to});
+}
+
 // Steps 1 to 3: the view, the fins of the silhouette edges w.r.t. the light's centre, the layers.
-FinScene buildFinScene(const ShadowInputs& in, const FinSettings& s) {
+FinScene buildFinScene(const ShadowInputs& in, const FinSettings& s, StageTimer& timer) {
     const LightView view = fitFinView(in, s);
     const double L0 = view.zFar;
+    const glm::dvec4 centre(s.light.centre, 1.0);
+    const WorldGeometry& world = in.casterWorld();
     std::vector<SilhouetteEdge> silhouette =
-        sceneSilhouette(in.casters().scene(), in.casterWorld(), in.casters().edgeAdjacency(), glm::dvec4(s.light.centre, 1.0));
-    const size_t cutOutEdges = dropCutOutEdges(silhouette, in);
-    Fins fins = buildFins(in.casterWorld().positions, silhouette, s.light, L0, s.style);
-    Layering layering = layerScene(in, fins, s.light, view, s.layers);
-    return {view, L0, std::move(fins), std::move(layering), cutOutEdges};
+        sceneSilhouette(in.casters().scene(), world, in.casters().edgeAdjacency(), centre);
+    FinVertices vertices{world.positions, {}, {}};
+    const size_t cutOutEdges = dropCutOutEdges(silhouette, in, vertices);
+    CutOutOutline outline;
+    if (!world.cutOuts.empty()) {
+        timer.lap("silhouette_and_fins");   // the rest of the stage adds to it (renderFinShadows)
+        outline = cutOutOutline(in.casters().scene(), world, in.casters().edgeAdjacency(), centre);
+        addCutOutOutline(outline, vertices, silhouette);
+        timer.lap("cut_out_outline");
+    }
+    Fins fins = buildFins(vertices.positions(), silhouette, s.light, L0, s.style);
+    Layering layering = layerScene(in, fins, vertices, s.light, view, s.layers);
+    return {view, L0, std::move(fins), std::move(layering), cutOutEdges, outline.edges.size(), outline.refusedInstances};
 }
 
 // 1 where the light can reach a surface (lightReaches: it faces the disk's centre), else 0.
@@ -161,6 +196,8 @@ void addFinStats(const FinScene& scene, const FinSettings& s, int layersDrawn, s
                                {"light_near_m", scene.view.zNear},
                                {"reference_plane_l0_m", scene.L0}});
     if (scene.cutOutEdges > 0) stats.push_back({"cut_out_silhouette_edges", double(scene.cutOutEdges)});
+    if (scene.outlineEdges > 0) stats.push_back({"cut_out_outline_edges", double(scene.outlineEdges)});
+    if (scene.refusedCutOuts > 0) stats.push_back({"cut_out_outline_refused_count", double(scene.refusedCutOuts)});
 }
 
 }  // namespace
@@ -189,7 +226,7 @@ FinSettings finSettings(const ShadowInputs& in, const std::string& technique, co
 ShadowOutputs renderFinShadows(const ShadowInputs& in, const FinSettings& s) {
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked by finSettings
     StageTimer timer;
-    const FinScene scene = buildFinScene(in, s);
+    const FinScene scene = buildFinScene(in, s, timer);
     timer.lap("silhouette_and_fins");
 
     IlluminanceBuffer buffer(in.gbuffer, facingLight(in.gbuffer, in.light));

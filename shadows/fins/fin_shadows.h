@@ -14,7 +14,9 @@
 // Per frame:
 //   1. the light's view from the disk's centre along its normal, fitted to the receivers
 //      (light_view.h); its far plane is the reference receiver plane L_0 (section 3.1);
-//   2. silhouette edges w.r.t. the centre (silhouette.h), fins (fin_geometry.h);
+//   2. silhouette edges w.r.t. the centre (silhouette.h), for a cut-out the outline of its
+//      texture's opaque texels instead of its own edges (cut_out_outline.h), fins
+//      (fin_geometry.h);
 //   3. layers of about equal numbers of edges (fin_layers.h, section 4.1), each object
 //      with its fins in the layer of its edges' median midpoint;
 //   4. per layer, near to far: the hard shadow map of the layer's objects, the inner and

@@ -1,11 +1,11 @@
 // Cut-outs (foliage cards) in every family (docs/cut-outs.md): the camera sees through their
 // holes; depth maps and planar shadows follow the texture; the irregular z-buffer tests the
 // alpha where each shadow ray meets a card, as the reference does; a shadow volume cannot
-// follow a texture and casts the whole card or nothing; fins draw the hard shadow with the
-// holes and make no penumbra from a card's outline. On the foliage case and on mask-card,
-// whose alpha sits at and around its cutoff as a glTF MASK material's would; and on a glTF
-// card whose sampler repeats and mirrors its texture, each path's holes where a hand
-// computation of the wrap puts them.
+// follow a texture and casts the whole card or nothing (fins, which hang their penumbrae on
+// the texture's outline, are tested in tests/shadows/fins/test_cut_out_outline.cpp). On the
+// foliage case and on mask-card, whose alpha sits at and around its cutoff as a glTF MASK
+// material's would; and on a glTF card whose sampler repeats and mirrors its texture, each
+// path's holes where a hand computation of the wrap puts them.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -153,17 +153,8 @@ TEST_CASE("shadow volumes cast a cut-out whole or not at all, whichever is less 
     CHECK(m.misclassifiedPercent(maskCoverage) < m.misclassifiedPercent(m.run("shadow-volume", {{"cut-outs", "none"}})));
 }
 
-// Fins, smoothies and penumbra maps under a disk light: the hard map draws the leaves, no
-// fins come from the cards' squares, so the leaves' shadows are hard: RMS 0.093 at 640 x 400
-// against the soft reference, where solid cards gave 0.37 to 0.44 and the cards' fins 0.13
-// to 0.20. The same for all three, since without fins they are one hard shadow map.
-TEST_CASE("fins draw the cut-outs' hard shadow with its holes and no fins from the cards") {
-    const CutOutCase soft("volumetric/foliage-cards-disk.json", 160, 100, "reference-soft", {{"samples-per-axis", "12"}});
-    const std::vector<float> fins = soft.run("fins");
-    CHECK(soft.rms(fins) < 0.15);
-    CHECK(fins == soft.run("smoothies"));
-    CHECK(fins == soft.run("penumbra-maps"));
-}
+// Fins, smoothies and penumbra maps hang their fins on the cut-outs' outline:
+// tests/shadows/fins/test_cut_out_outline.cpp.
 
 // The same cards as a glTF MASK material (meshes/mask_card.gltf, placed by "models"): every
 // family sees the cut-out the JSON + OBJ + PNG case gives, bit for bit, under the case's sun
