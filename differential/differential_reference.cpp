@@ -27,7 +27,7 @@ std::vector<glm::vec3> differentialReference(const DifferentialModel& m, const P
                                              std::span<const glm::mat4> placements, const PatchSampling& sampling) {
     requireFinitePlacements(placements, "differential reference");
     const WorldGeometry whole = placed(object.levels.whole, placements);
-    const ReferenceVisibility objectRays(whole);
+    const ReferenceVisibility objectRays(whole, nullptr);   // the object's mesh: opaque
     const Aabb box = boundsOf(whole);
     const Sphere objectSphere = boundingSphere(box);
     const std::vector<uint32_t> radiant = radiantPatches(m.model, m.radiance);

@@ -118,7 +118,7 @@ DifferentialModel preprocess(const CompositingScene& scene, const PreprocessSett
     StageTimer timer;
     m.model = flattenPatches(scene.surfaces);
     m.geometry = patchGeometry(m.model);
-    m.modelRays = std::make_unique<ReferenceVisibility>(m.geometry);
+    m.modelRays = std::make_unique<ReferenceVisibility>(m.geometry, nullptr);   // patches: opaque
     m.radiance = patchRadiance(m.model, *m.modelRays, settings.sampling);
     timer.lap("radiance");
     m.pixels = pixelPatches(m.model, m.geometry, m.camera, settings.simd);

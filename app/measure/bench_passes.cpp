@@ -80,12 +80,13 @@ PassTiming timeDepthPass(const BenchOptions& options, const ProgressStage& runs,
 RayTiming timeReference(const BenchOptions& options, const ProgressStage& runs, const Scene& scene,
                         const WorldGeometry& world, const GBuffer& gbuffer, bool buildEachRun) {
     const Light light = pointLightFor(scene.lights.at(0));
+    const CasterTransmission transmission(scene, world);
     std::optional<ReferenceVisibility> once;
-    if (!buildEachRun) once.emplace(world);
+    if (!buildEachRun) once.emplace(world, &transmission);
     uint64_t raysPerRun = 0;
     const Timing t = timeRuns(options, runs, [&] {
         std::optional<ReferenceVisibility> perRun;
-        const ReferenceVisibility& reference = buildEachRun ? perRun.emplace(world) : *once;
+        const ReferenceVisibility& reference = buildEachRun ? perRun.emplace(world, &transmission) : *once;
         const uint64_t before = reference.raysCast();
         reference.visibility(gbuffer, light);
         raysPerRun = reference.raysCast() - before;

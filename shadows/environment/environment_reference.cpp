@@ -10,7 +10,8 @@
 // p_env the map's luminance (shading/environment/environment_distribution.h), p_brdf the
 // material's lobes (shading/brdf_sampling.h), both stratified over the rounds by shifted
 // (0, 2)-sequences, V an Embree ray to infinity (with the
-// geometric normal's test and offset of every reference, shadows/reference/reference.h).
+// geometric normal's test and offset of every reference, shadows/reference/reference.h),
+// the light per channel the casters let through (a cut-out's holes, translucent surfaces).
 // L_env is the map's piecewise-constant function, the one every other integral here uses.
 //
 // Convergence is measured, not assumed: the samples are two independent halves, A and B
@@ -61,8 +62,10 @@ struct Integrand {
         if (glm::dot(f * L, glm::dvec3(1.0)) == 0.0) return glm::dvec3(0.0);
         const double pdf = (environment.empty() ? 0.0 : environment.pdf(wi)) +
                            brdfPdf(material, glm::dvec3(Ns), glm::dvec3(wo), wi);
-        if (!(pdf > 0.0) || !rays.directionVisible(P, Ng, wi)) return glm::dvec3(0.0);
-        return f * L * cosine / pdf;
+        if (!(pdf > 0.0)) return glm::dvec3(0.0);
+        const glm::dvec3 passed(rays.directionPassed(P, Ng, wi));   // through holes and translucent casters
+        if (passed == glm::dvec3(0.0)) return glm::dvec3(0.0);
+        return f * L * passed * cosine / pdf;
     }
 };
 
@@ -100,7 +103,8 @@ ShadowOutputs runExactIntegral(const ShadowInputs& in) {
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     const EnvironmentDistribution environment(map);
-    const ReferenceVisibility rays(in.casterWorld());
+    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
+    const ReferenceVisibility rays(in.casterWorld(), &transmission);
     timer.lap("bvh");
     const GBuffer& g = in.gbuffer;
     const glm::vec3 eye = in.camera().eye;

@@ -7,8 +7,10 @@
 
 namespace shadowlab {
 
+// The reference's rays, through the cut-outs' holes and translucent casters as it sees them.
 struct LightVisibility::Exact {
-    explicit Exact(const WorldGeometry& world) : rays(world) {}
+    Exact(const Scene& scene, const WorldGeometry& world) : transmission(scene, world), rays(world, &transmission) {}
+    CasterTransmission transmission;
     ReferenceVisibility rays;
 };
 
@@ -51,7 +53,7 @@ LightVisibility::LightVisibility(const ShadowInputs& in, const LightVisibilitySe
     map_.map.resolution = settings.resolution;
     if (method_ == VisibilityMethod::Exact) {
         const auto start = std::chrono::steady_clock::now();
-        exact_ = std::make_unique<Exact>(in.casterWorld());
+        exact_ = std::make_unique<Exact>(in.casters().scene(), in.casterWorld());
         addStat(stats_, "visibility_bvh_ms",
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }

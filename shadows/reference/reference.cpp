@@ -309,9 +309,9 @@ ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world, const Caste
 
 ReferenceVisibility::~ReferenceVisibility() = default;
 
-bool ReferenceVisibility::directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const {
+glm::vec3 ReferenceVisibility::directionPassed(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const {
     ShadowRays rays(embree_->scene, transmission_);
-    return glm::any(glm::greaterThan(directionPassed(rays, receiverAt(P, N, sceneDiagonal_), direction), glm::vec3(0.0f)));
+    return shadowlab::directionPassed(rays, receiverAt(P, N, sceneDiagonal_), direction);
 }
 
 bool ReferenceVisibility::pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const {

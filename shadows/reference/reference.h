@@ -48,9 +48,10 @@ public:
     // whose casters are not all opaque (read in place: it must outlive this), shadow rays
     // pass through translucent surfaces, the holes of cut-outs and the density volumes,
     // taking what each lets through (caster_transmission.h); otherwise every triangle is
-    // opaque. Throws std::invalid_argument for a vertex index out of range,
-    // std::runtime_error if Embree reports an error.
-    explicit ReferenceVisibility(const WorldGeometry& world, const CasterTransmission* transmission = nullptr);
+    // opaque. No default: a scene's reference must pass its transmission, or its cut-outs
+    // would be solid; null is for bare geometry. Throws std::invalid_argument for a vertex
+    // index out of range, std::runtime_error if Embree reports an error.
+    ReferenceVisibility(const WorldGeometry& world, const CasterTransmission* transmission);
     ~ReferenceVisibility();
     ReferenceVisibility(const ReferenceVisibility&) = delete;
     ReferenceVisibility& operator=(const ReferenceVisibility&) = delete;
@@ -68,12 +69,12 @@ public:
     };
     Passed passed(const GBuffer& gbuffer, const Light& light, const ReferenceOptions& options = {}) const;
 
-    // Whether a distant light in `direction` (unit) reaches the surface point P of geometric
-    // normal N: in front of N's plane and nothing in the way of a ray to infinity from the
-    // origin visibility() uses (through casters that are not opaque: any light passes). For
+    // The light per channel a distant source in `direction` (unit) passes to the surface
+    // point P of geometric normal N: 0 behind N's plane, else what the casters on the ray to
+    // infinity from visibility()'s origin let through (1 or 0 with opaque casters). For
     // integrators that choose their own directions (the environment reference); not counted
     // in raysCast().
-    bool directionVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const;
+    glm::vec3 directionPassed(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const;
     // The same for a point `target` (a sample on an area source): in front of N's plane and
     // nothing in the way of the segment, which stops the ray offset short of the target.
     bool pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const;

@@ -69,7 +69,8 @@ TEST_CASE("reference-soft: selectable, and exactly ReferenceVisibility of the di
     const WorldGeometry& world = prepared.world();
     REQUIRE(scene.lights[0].type == LightType::Disk);
     const Frame frame = renderSoftReference(prepared, "32");
-    const std::vector<float> expected = ReferenceVisibility(world).visibility(frame.gbuffer, scene.lights[0]);
+    const CasterTransmission transmission(prepared.scene(), world);
+    const std::vector<float> expected = ReferenceVisibility(world, &transmission).visibility(frame.gbuffer, scene.lights[0]);
     CHECK(frame.shadow.visibility == expected);
     // Soft: some pixels see part of the light, unlike the hard reference.
     size_t fractional = 0;

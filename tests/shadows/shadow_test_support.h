@@ -32,6 +32,7 @@ struct HardScene {
     const Scene& scene;
     const WorldGeometry& world;
     GBuffer gbuffer;
+    CasterTransmission transmission;   // the reference's: cut-outs' holes, translucent casters
     std::vector<float> reference;   // exact V (point light at the light's centre)
 
     explicit HardScene(const std::string& nameOrPath, raster::SimdLevel simd = raster::bestSimdLevel())
@@ -40,7 +41,8 @@ struct HardScene {
     explicit HardScene(Scene s, raster::SimdLevel simd = raster::bestSimdLevel())
         : prepared(std::move(s)), scene(prepared.scene()), world(prepared.world()),
           gbuffer(renderGBuffer(world, scene.camera, simd)),
-          reference(ReferenceVisibility(world).visibility(gbuffer, pointLightFor(scene.lights[0]))) {}
+          transmission(scene, world),
+          reference(ReferenceVisibility(world, &transmission).visibility(gbuffer, pointLightFor(scene.lights[0]))) {}
 
     Light light() const { return pointLightFor(scene.lights[0]); }
 

@@ -22,11 +22,13 @@ struct SoftScene {
     const Scene& scene;
     const WorldGeometry& world;
     GBuffer gbuffer;
+    CasterTransmission transmission;   // the reference's: cut-outs' holes, translucent casters
     std::vector<float> reference;   // soft V of the area light
 
     explicit SoftScene(Scene s, int samplesPerAxis = 32)
         : prepared(std::move(s)), scene(prepared.scene()), world(prepared.world()), gbuffer(renderGBuffer(world, scene.camera, raster::bestSimdLevel())),
-          reference(ReferenceVisibility(world).visibility(gbuffer, scene.lights[0], {.areaSamplesPerAxis = samplesPerAxis})) {}
+          transmission(scene, world),
+          reference(ReferenceVisibility(world, &transmission).visibility(gbuffer, scene.lights[0], {.areaSamplesPerAxis = samplesPerAxis})) {}
 
     // With `debugDir`, the technique's intermediate buffers are written there.
     ShadowOutputs run(const std::string& technique, const std::map<std::string, std::string>& given = {},

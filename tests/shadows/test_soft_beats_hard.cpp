@@ -39,7 +39,7 @@ struct HardAndSoft {
         : s(test::smallScene(std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/soft/" + file, 320, 200)) {
         Light centre = s.scene.lights[0];
         centre.type = LightType::Point;
-        hard = ReferenceVisibility(s.world).visibility(s.gbuffer, centre);
+        hard = ReferenceVisibility(s.world, &s.transmission).visibility(s.gbuffer, centre);
     }
     size_t penumbraPixels(const std::vector<float>& v) const {
         size_t n = 0;

@@ -309,36 +309,6 @@ TEST_CASE("cut-out outline: a clamped texture beyond [0, 1], or a texture repeat
     CHECK(tooMany.edges.empty());
 }
 
-namespace {
-
-// A scene under its disk light with its G-buffer and the soft reference through the
-// technique (test::SoftScene's ReferenceVisibility of the world alone sees no cut-outs).
-struct CutOutSoftCase {
-    PreparedScene prepared;
-    GBuffer gbuffer;
-    std::vector<float> reference;
-
-    explicit CutOutSoftCase(Scene scene)
-        : prepared(std::move(scene)), gbuffer(renderGBuffer(prepared.world(), prepared.scene().camera, raster::bestSimdLevel())),
-          reference(run("reference-soft", {{"samples-per-axis", "12"}})) {}
-    std::vector<float> run(const std::string& technique, std::map<std::string, std::string> given = {}) const {
-        const Technique& t = findTechnique(technique);
-        const TechniqueParams params(t.name, t.params, given);
-        return t.run({.prepared = prepared, .gbuffer = gbuffer, .light = prepared.scene().lights[0],
-                      .simd = raster::bestSimdLevel(), .params = params}).visibility;
-    }
-    double rms(const std::vector<float>& V) const {
-        double sum = 0.0;
-        size_t hit = 0;
-        for (size_t k = 0; k < V.size(); ++k) {
-            if (!gbuffer.hit[k]) continue;
-            sum += double(V[k] - reference[k]) * double(V[k] - reference[k]), ++hit;
-        }
-        return std::sqrt(sum / double(hit));
-    }
-};
-
-}  // namespace
 
 // Under a disk light, at 160 x 100 against the soft reference at 12 x 12 samples. The leaves'
 // hard shadow without fins (before the outline, docs/cut-outs.md) gave RMS 0.094 on the
@@ -346,21 +316,21 @@ struct CutOutSoftCase {
 // the outline: fins 0.070 and 0.103, smoothies 0.122 and 0.130, penumbra maps 0.122 and
 // 0.143: outer fins alone over-estimate the umbra (Cai et al., section 7.1), which on the
 // foliage's small leaves, whose true umbra is small, costs more than the penumbra gains.
-TEST_CASE("cut-out outline: fins, smoothies and penumbra maps from the outline come closer to the soft reference") {
-    const CutOutSoftCase foliage(test::smallScene(assetScene("volumetric/foliage-cards-disk.json"), 160, 100));
+TEST_CASE("cut-out outline: fins from the outline come closer to the soft reference, and all three draw a penumbra") {
+    const test::SoftScene foliage(test::smallScene(assetScene("volumetric/foliage-cards-disk.json"), 160, 100), 12);
     Scene mask = test::smallScene(assetScene("volumetric/mask-card.json"), 160, 100);
     mask.lights = {maskCardDisk()};
-    const CutOutSoftCase maskCard(mask);
+    const test::SoftScene maskCard(mask, 12);
     struct Bound {
         const char* technique;
         double foliage, mask;   // RMS below
     };
     for (const Bound& b : {Bound{"fins", 0.08, 0.12}, Bound{"smoothies", 0.15, 0.138}, Bound{"penumbra-maps", 0.15, 0.15}}) {
         CAPTURE(b.technique);
-        for (const CutOutSoftCase* s : {&foliage, &maskCard}) {
-            CAPTURE(s->prepared.scene().name);
+        for (const test::SoftScene* s : {&foliage, &maskCard}) {
+            CAPTURE(s->scene.name);
             std::vector<float> V[2];
-            for (int threads : {1, 2}) V[threads - 1] = withThreads(threads, [&] { return s->run(b.technique); });
+            for (int threads : {1, 2}) V[threads - 1] = withThreads(threads, [&] { return s->run(b.technique).visibility; });
             CHECK(test::sameBytes(V[0], V[1]));
             CHECK(s->rms(V[0]) < (s == &foliage ? b.foliage : b.mask));
             // A penumbra: more than 1% of the hit pixels between lit and shadowed (the hard shadow: none).

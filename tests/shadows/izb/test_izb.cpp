@@ -167,7 +167,7 @@ TEST_CASE("izb: a light inside a closed room needs all six cube faces, a light a
 TEST_CASE("izb on huge-depth-range against offset-free rays: every difference is the ray offset it shares with the reference") {
     const test::HardScene s(test::hardCase("huge-depth-range"));
     const std::vector<float> izb = s.run("izb").visibility;
-    const ReferenceVisibility reference(s.world);
+    const ReferenceVisibility reference(s.world, &s.transmission);
     const glm::dvec3 L(s.light().position);
     const GBuffer& g = s.gbuffer;
     constexpr int kBand = 8;

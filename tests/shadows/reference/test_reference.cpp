@@ -121,7 +121,7 @@ struct SquareScene {
 };
 
 void checkSquareShadow(const SquareScene& scene, const Light& light) {
-    const ReferenceVisibility reference(scene.world);
+    const ReferenceVisibility reference(scene.world, nullptr);
     const int n = 81;
     const GBuffer g = planeGrid(scene.receiver, n, 2.5);
     const uint64_t raysBefore = reference.raysCast();
@@ -214,7 +214,7 @@ std::vector<Range> strataXRanges(const AreaLightFrame& frame, int n, int sub) {
 // The test uses delta = 1e-6 per point (so it would pass for almost any seed); the ray
 // offset (micrometres) moves the edge by far less than the 1e-4 added for it.
 void checkProfile(const Light& light, double (*exactFraction)(const Light&, double hiddenBelow)) {
-    const ReferenceVisibility reference(halfPlaneGeometry());
+    const ReferenceVisibility reference(halfPlaneGeometry(), nullptr);
     const ReferenceOptions options;  // 32 x 32
     const int n = options.areaSamplesPerAxis, samples = n * n;
     const std::vector<Range> ranges = strataXRanges(areaLightFrame(light), n, 16);
@@ -311,7 +311,7 @@ TEST_CASE("rectangle light over a half-plane edge: the visible fraction is linea
 TEST_CASE("no light from behind the surface, outside a spot cone, or on background pixels") {
     WorldGeometry world;
     addQuad(world, {-5.0, 0.0, -5.0}, {-5.0, 0.0, 5.0}, {5.0, 0.0, 5.0}, {5.0, 0.0, -5.0});
-    const ReferenceVisibility reference(world);
+    const ReferenceVisibility reference(world, nullptr);
     GBuffer g = emptyGBuffer(3, 1);
     setSurface(g, 0, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
     setSurface(g, 1, {1.0, 0.0, 0.0}, {0.0, -1.0, 0.0});  // seen from below: light behind it
@@ -340,7 +340,7 @@ TEST_CASE("no light from behind the surface, outside a spot cone, or on backgrou
 
 TEST_CASE("the reference gives the same bytes for 1 and 2 threads") {
     const SquareScene scene({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
-    const ReferenceVisibility reference(scene.world);
+    const ReferenceVisibility reference(scene.world, nullptr);
     const GBuffer g = planeGrid(scene.receiver, 32, 2.0);
     const Light disk = diskOverSquare();
     auto run = [&](int threads) {
@@ -354,7 +354,7 @@ TEST_CASE("the reference gives the same bytes for 1 and 2 threads") {
 
 TEST_CASE("reporting progress counts every row and does not change V") {
     const SquareScene scene({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
-    const ReferenceVisibility reference(scene.world);
+    const ReferenceVisibility reference(scene.world, nullptr);
     const GBuffer g = planeGrid(scene.receiver, 32, 2.0);
     const Light disk = diskOverSquare();
     // A clock that moves a second per reading, so that the line is drawn at once.

@@ -55,7 +55,7 @@ TEST_CASE("shadow-volume hard case huge-depth-range: the differences are the ref
     const test::Misclassified m = test::misclassified(s.gbuffer, s.reference, s.light(), out.visibility);
     INFO(m.count << " misclassified (" << m.percent() << "%), " << m.awayFromBoundary << " away from a boundary");
     CHECK(m.percent() < 1.0);
-    const ReferenceVisibility reference(s.world);
+    const ReferenceVisibility reference(s.world, &s.transmission);
     const glm::dvec3 L(s.scene.lights[0].position);
     const GBuffer& g = s.gbuffer;
     size_t checked = 0, sidingWithVolumes = 0;
