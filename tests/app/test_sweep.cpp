@@ -242,7 +242,9 @@ TEST_CASE("sweep JSON: rows with settings, times and error figures") {
         CHECK(row["median_ms"].get<double>() == results.rows[k].medianMs);
         CHECK(row["errors"]["false_light"].get<uint64_t>() == results.rows[k].errors.falseLight);
         CHECK(row["stats"].is_object());
+        CHECK_FALSE(row.contains("lights"));   // one light: the row's figures are its own
     }
+    CHECK(countOf(formatSweepText(results), "  light ") == 0);
 }
 
 TEST_CASE("sweep SVG: well-formed, one point per row, the Pareto front ringed") {
