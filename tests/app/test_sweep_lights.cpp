@@ -1,11 +1,13 @@
 // A sweep of a scene of several lights (docs/many-lights.md): each row carries each light's
 // error figures, which are those of the frame scored light by light and sum to the row's;
 // the JSON reads them back byte for byte, shards merge them, an older file without them
-// still reads; the CSV has a column per light and figure, the text a line per light.
+// still reads; the CSV has a column per light and figure, the text a line per light; the
+// report shows them and lists each light's debug buffers under its own heading.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,10 +17,15 @@
 #include "app/measure/sweep.h"
 #include "app/measure/sweep_json.h"
 #include "app/measure/sweep_merge.h"
+#include "app/report/report_site.h"
+#include "frame/frame_images.h"
 #include "frame/registry.h"
 #include "frame/score.h"
+#include "scenes/read_file.h"
 #include "scenes/scene_file.h"
+#include "scenes/write_file.h"
 #include "tests/app/text_count.h"
+#include "tests/scratch_directory.h"
 
 using namespace shadowlab;
 using test::countOf;
@@ -61,6 +68,18 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
         else fields.back() += c;
     }
     return fields;
+}
+
+// The data-value of every number cell of the table row that links to `page`.
+std::vector<double> rowValues(const std::string& html, const std::string& page) {
+    const size_t link = html.find("<tr><td><a href=\"" + page + "\"");
+    REQUIRE(link != std::string::npos);
+    const std::string row = html.substr(link, html.find("</tr>", link) - link);
+    std::vector<double> values;
+    const std::string key = "data-value=\"";
+    for (size_t at = row.find(key); at != std::string::npos; at = row.find(key, at + 1))
+        values.push_back(std::stod(row.substr(at + key.size())));
+    return values;
 }
 
 }  // namespace
@@ -174,4 +193,51 @@ TEST_CASE("sweep CSV and text of several lights: each light's headline figures i
     const size_t at = text.find("\n  light 1 ");
     REQUIRE(at != std::string::npos);
     CHECK(text.find(misclassified, at) == at + 1 + 16 + 1 + 40 + 1 + 7 + 1 + 10 + 1 + 10 + 1);
+}
+
+TEST_CASE("report of a sweep of several lights: each light's figures in the tables, its debug buffers under its name") {
+    const test::ScratchDirectory scratch("report_three_lights");
+    SweepOptions options = threeLightOptions();
+    options.techniques = {&findTechnique("shadow-map")};
+    options.axes = {{"resolution", {"64"}}};
+    options.imagesOutDir = scratch.path / "results";
+    const SweepResults results = runSweep(options);
+    REQUIRE(results.rows.size() == 1);
+    const SweepRow& row = results.rows[0];
+    // Each light's debug buffers, from its own folder, light by light.
+    const std::vector<std::string>& debug = row.images.debugBuffers;
+    REQUIRE(debug.size() > 3);
+    std::vector<size_t> lights;
+    for (const std::string& path : debug) {
+        REQUIRE(debugPictureLight(path));
+        if (lights.empty() || lights.back() != *debugPictureLight(path)) lights.push_back(*debugPictureLight(path));
+    }
+    CHECK(lights == std::vector<size_t>{0, 1, 2});
+    CHECK_FALSE(debugPictureLight("setting-0-debug/shadow-map-depth.png"));
+
+    const std::string file = (scratch.path / "results" / "lights.json").string();
+    writeTextFile(file, formatSweepJson(results));
+    const std::filesystem::path site = scratch.path / "site";
+    writeReportSite({file}, site, PlotErrorAxis::Misclassified);
+    // The scene's table: the row's figures, then each light's misclassified % and RMS.
+    const std::string scene = readWholeFile((site / "scene-three-lights.html").string());
+    for (const char* column : {"light 0 misclassified %", "light 2 RMS"}) CHECK(countOf(scene, column) == 1);
+    const std::vector<double> values = rowValues(scene, "lights-setting-0.html");
+    REQUIRE(values.size() == 3 + 5 + 2 * 3);   // threads, times; five figures; two per light
+    for (size_t light = 0; light < 3; ++light) {
+        const ErrorFigures& e = row.lightErrors[light];
+        CHECK(values[8 + 2 * light] == e.percentOfPixels(e.misclassified()));
+        CHECK(values[9 + 2 * light] == e.rms);
+    }
+    // The setting's page: a column per light in the figures, a heading per light over its buffers.
+    const std::string setting = readWholeFile((site / "lights-setting-0.html").string());
+    CHECK(countOf(setting, "<th scope=\"col\">every light</th>") == 1);
+    for (size_t light = 0; light < 3; ++light) {
+        const std::string name = "light " + std::to_string(light);
+        CHECK(countOf(setting, "<th scope=\"col\">" + name + "</th>") == 1);
+        CHECK(countOf(setting, "<h3>" + name + "</h3>") == 1);
+    }
+    CHECK(setting.find("<h3>light 0</h3>") < setting.find("/light0/"));
+    CHECK(setting.find("/light0/") < setting.find("<h3>light 1</h3>"));
+    CHECK(countOf(setting, "<img class=\"debug\"") == debug.size());
 }
