@@ -24,11 +24,13 @@
 #include "scenes/read_file.h"
 #include "scenes/scene_file.h"
 #include "scenes/write_file.h"
+#include "tests/app/csv_fields.h"
 #include "tests/app/text_count.h"
 #include "tests/scratch_directory.h"
 
 using namespace shadowlab;
 using test::countOf;
+using test::splitCsvLine;
 
 namespace {
 
@@ -59,15 +61,6 @@ std::vector<std::string> jsonOf(const std::vector<ErrorFigures>& figures) {
     std::vector<std::string> texts;
     for (const ErrorFigures& f : figures) texts.push_back(formatJson(f));
     return texts;
-}
-
-std::vector<std::string> splitCsvLine(const std::string& line) {
-    std::vector<std::string> fields(1);
-    for (char c : line) {
-        if (c == ',') fields.emplace_back();
-        else fields.back() += c;
-    }
-    return fields;
 }
 
 // The data-value of every number cell of the table row that links to `page`.
