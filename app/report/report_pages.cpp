@@ -241,7 +241,8 @@ std::string errorsTable(const SweepRow& row) {
         figureRow("umbra lit 0.02 %", columns, "%.4f", [](const ErrorFigures& f) { return f.fullUmbraLitPercent(); }) +
         figureRow("umbra over %", columns, "%.4f", percent(&ErrorFigures::umbraOver)) +
         figureRow("lit shadowed %", columns, "%.4f", percent(&ErrorFigures::litShadowed));
-    if (e.rmsDisplay) rows += figureRow("RMS as displayed", columns, "%.6f", [](const ErrorFigures& f) { return f.rmsDisplay; });
+    if (e.rmsDisplay)
+        rows += figureRow("RMS as displayed", columns, "%.6f", [](const ErrorFigures& f) { return f.rmsDisplay; });
     return "<h2>Error against " + escape(row.reference) + " (on " + escape(e.channel) +
            ")</h2>\n<table class=\"figures-table\">\n" + header + "<tbody>\n" + rows + "</tbody>\n</table>\n";
 }
