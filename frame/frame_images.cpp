@@ -6,6 +6,7 @@
 
 #include "frame/registry.h"
 #include "frame/score.h"
+#include "scenes/scene_limits.h"
 #include "shading/tonemap.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/technique.h"
@@ -20,6 +21,26 @@ void forEachPath(Images& images, Visit visit) {
                        &images.referenceVisibility})
         visit(*path);
     for (auto& path : images.debugBuffers) visit(path);
+}
+
+// debugPictures() of one folder, without its subfolders.
+std::vector<std::string> picturesIn(const std::filesystem::path& base, const std::filesystem::path& directory,
+                                    const std::string& technique) {
+    std::vector<std::string> pictures;
+    if (!std::filesystem::is_directory(directory)) return pictures;
+    const auto ownedByLongerName = [&](const std::string& file) {
+        return std::ranges::any_of(techniques(), [&](const Technique& other) {
+            return other.name.starts_with(technique + "-") && file.starts_with(other.name + "-");
+        });
+    };
+    for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+        const std::string extension = entry.path().extension().string(), file = entry.path().filename().string();
+        if (entry.is_regular_file() && (extension == ".png" || extension == ".svg") &&
+            file.starts_with(technique + "-") && !ownedByLongerName(file))
+            pictures.push_back(relativePath(entry.path(), base));
+    }
+    std::ranges::sort(pictures);
+    return pictures;
 }
 
 }  // namespace
@@ -70,21 +91,19 @@ FrameImages writeFramePictures(const std::filesystem::path& base, const std::fil
 
 std::vector<std::string> debugPictures(const std::filesystem::path& base, const std::filesystem::path& directory,
                                        const std::string& technique) {
-    std::vector<std::string> pictures;
-    if (!std::filesystem::is_directory(directory)) return pictures;
-    const auto ownedByLongerName = [&](const std::string& file) {
-        return std::ranges::any_of(techniques(), [&](const Technique& other) {
-            return other.name.starts_with(technique + "-") && file.starts_with(other.name + "-");
-        });
-    };
-    for (const auto& entry : std::filesystem::directory_iterator(directory)) {
-        const std::string extension = entry.path().extension().string(), file = entry.path().filename().string();
-        if (entry.is_regular_file() && (extension == ".png" || extension == ".svg") &&
-            file.starts_with(technique + "-") && !ownedByLongerName(file))
-            pictures.push_back(relativePath(entry.path(), base));
+    std::vector<std::string> pictures = picturesIn(base, directory, technique);
+    for (size_t light = 0; std::filesystem::is_directory(directory / lightDebugFolder(light)); ++light) {
+        const std::vector<std::string> own = picturesIn(base, directory / lightDebugFolder(light), technique);
+        pictures.insert(pictures.end(), own.begin(), own.end());
     }
-    std::ranges::sort(pictures);
     return pictures;
+}
+
+std::optional<size_t> debugPictureLight(const std::string& path) {
+    const std::string folder = std::filesystem::path(path).parent_path().filename().string();
+    for (size_t light = 0; light < kMaxSceneLights; ++light)
+        if (folder == lightDebugFolder(light)) return light;
+    return std::nullopt;
 }
 
 FrameImages withPaths(const FrameImages& images, const std::function<std::string(const std::string&)>& change) {

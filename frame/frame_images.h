@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,9 +40,14 @@ FrameImages writeFramePictures(const std::filesystem::path& base, const std::fil
 // The pictures of a technique's debug buffers: the PNG and SVG files directly in
 // `directory` whose names start with "TECHNIQUE-" but not with the name of a technique that
 // extends it ("reference-soft-" is not reference's), sorted, relative to `base` (none if the
-// directory does not exist).
+// directory does not exist); then, for a frame of several lights, those of each light's
+// folder (lightDebugFolder(): light0/, light1/, ... as far as they run without a gap).
 std::vector<std::string> debugPictures(const std::filesystem::path& base, const std::filesystem::path& directory,
                                        const std::string& technique);
+
+// The light a debug picture of debugPictures() belongs to: K for one in a folder
+// lightDebugFolder(K), none for one of a frame of one light.
+std::optional<size_t> debugPictureLight(const std::string& path);
 
 // `path` relative to `base`, '/'-separated, without touching the file system.
 std::string relativePath(const std::filesystem::path& path, const std::filesystem::path& base);

@@ -72,10 +72,10 @@ LightPass runPass(const Technique& technique, const ShadowInputs& inputs, size_t
     return pass;
 }
 
-// Each light's intermediate buffers in a folder of its own, lightK/, when there are several.
+// Each light's intermediate buffers in a folder of its own when there are several.
 std::filesystem::path passDebugDir(const std::filesystem::path& debugDir, size_t passCount, size_t k) {
     if (debugDir.empty() || passCount == 1) return debugDir;
-    return debugDir / ("light" + std::to_string(k));
+    return debugDir / lightDebugFolder(k);
 }
 
 // A frame of several passes: the first pass's buffers, and every pass's stats as lightK_NAME
@@ -100,6 +100,8 @@ std::vector<glm::vec3> shadePasses(const Scene& scene, const GBuffer& gbuffer, c
 }
 
 }  // namespace
+
+std::string lightDebugFolder(size_t light) { return "light" + std::to_string(light); }
 
 void applyOverrides(Scene& scene, const SceneOverrides& o) {
     if (o.light) selectLight(scene, *o.light);

@@ -71,9 +71,14 @@ struct Frame {
 struct FrameSettings {
     raster::SimdLevel simd = raster::bestSimdLevel();
     std::map<std::string, std::string> params;   // the technique's --param settings
-    std::filesystem::path debugDir;              // empty: no intermediate buffers
+    std::filesystem::path debugDir;              // empty: no intermediate buffers (lightDebugFolder())
     Progress* progress = nullptr;                // passed to the technique (ShadowInputs)
 };
+
+// In a frame of several lights each light's intermediate buffers go to a folder of its own
+// in FrameSettings::debugDir: "lightK" for scene.lights[K]. A frame of one light writes
+// them into debugDir itself.
+std::string lightDebugFolder(size_t light);
 
 // Throws std::invalid_argument for a parameter the technique does not have, and
 // std::logic_error for a radiance technique that returns no radiance image.

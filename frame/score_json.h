@@ -15,7 +15,7 @@ namespace shadowlab {
 // One JSON object: {"scene", "overrides": overridesJson(overrides), "technique", "reference",
 // "settings": {name: value}, "technique_ms", "stats": {name: value}, "preparation": {name: ms},
 // "errors": formatJson(figures)}, and "images": formatFrameImagesJson(images) unless `images`
-// is empty; for a frame of several lights, "lights": [{"light": K, "type", "technique_ms",
+// is empty; for a frame of several lights, "lights": [{"light": K, "technique_ms",
 // "errors": formatJson(lightFigures[K])}] (scoreLights(); "errors" is then over every light,
 // docs/many-lights.md).
 std::string formatScoreJson(const std::string& sceneName, const std::string& technique, const std::string& reference,

@@ -57,7 +57,9 @@ SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference, 
     row.settings = settings.params;
     row.medianMs = timed.timing.medianMs;
     row.minMs = timed.timing.minMs;
-    row.errors = scoreFrame(reference, timed.last);
+    const ImageChannels scored = scoredImage(timed.last);
+    row.errors = scoreImage(reference, scored, timed.last.output);
+    if (timed.last.passes.size() > 1) row.lightErrors = scoreLights(reference, scored);
     row.stats = timed.last.shadow.stats;
     return row;
 }
@@ -69,6 +71,37 @@ std::vector<std::string> statNames(const SweepResults& results) {
         for (const TechniqueStat& s : row.stats)
             if (std::ranges::find(names, s.name) == names.end()) names.push_back(s.name);
     return names;
+}
+
+// The most lights any row has figures for: the CSV's lightK_ columns.
+size_t lightCount(const SweepResults& results) {
+    size_t count = 0;
+    for (const SweepRow& row : results.rows) count = std::max(count, row.lightErrors.size());
+    return count;
+}
+
+// Each light's headline figures in the CSV: misclassified pixels for hard shadows, the RMS
+// for any, umbra lit for soft ones (docs/soft-shadows.md).
+struct LightCsvFigure {
+    const char* name;
+    double (*value)(const ErrorFigures&);
+};
+constexpr LightCsvFigure kLightCsvFigures[] = {
+    {"misclassified_percent", [](const ErrorFigures& e) { return e.percentOfPixels(e.misclassified()); }},
+    {"rms", [](const ErrorFigures& e) { return e.rms; }},
+    {"umbra_lit_percent", [](const ErrorFigures& e) { return e.percentOfPixels(e.umbraLit); }},
+};
+
+// The error columns of the text table, for a row or one of its lights.
+std::string errorColumns(const ErrorFigures& e) {
+    char fullUmbraLit[32] = "not recorded";
+    if (const std::optional<double> percent = e.fullUmbraLitPercent())
+        std::snprintf(fullUmbraLit, sizeof fullUmbraLit, "%.4f", *percent);
+    char line[256];
+    std::snprintf(line, sizeof line, "%14.4f %10.5f %10.5f %11.4f %16s %12.4f %13.4f\n",
+                  e.percentOfPixels(e.misclassified()), e.rms, e.maxAbs, e.percentOfPixels(e.umbraLit), fullUmbraLit,
+                  e.percentOfPixels(e.umbraOver), e.percentOfPixels(e.litShadowed));
+    return line;
 }
 
 std::string statValue(const SweepRow& row, const std::string& name) {
@@ -222,16 +255,14 @@ std::string formatSweepText(const SweepResults& results) {
                   "umbra lit 0.02%", "umbra over%", "lit shadowed%");
     text += line;
     for (const SweepRow& r : results.rows) {
-        const ErrorFigures& e = r.errors;
-        char fullUmbraLit[32] = "not recorded";
-        if (const std::optional<double> percent = e.fullUmbraLitPercent())
-            std::snprintf(fullUmbraLit, sizeof fullUmbraLit, "%.4f", *percent);
-        std::snprintf(line, sizeof line,
-                      "%-16s %-40s %7d %10.3f %10.3f %14.4f %10.5f %10.5f %11.4f %16s %12.4f %13.4f\n",
-                      r.technique.c_str(), r.settingsLabel().c_str(), r.threads, r.medianMs, r.minMs,
-                      e.percentOfPixels(e.misclassified()), e.rms, e.maxAbs, e.percentOfPixels(e.umbraLit),
-                      fullUmbraLit, e.percentOfPixels(e.umbraOver), e.percentOfPixels(e.litShadowed));
-        text += line;
+        std::snprintf(line, sizeof line, "%-16s %-40s %7d %10.3f %10.3f ", r.technique.c_str(),
+                      r.settingsLabel().c_str(), r.threads, r.medianMs, r.minMs);
+        text += line + errorColumns(r.errors);
+        for (size_t k = 0; k < r.lightErrors.size(); ++k) {
+            std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s ", ("  light " + std::to_string(k)).c_str(),
+                          "", "", "", "");
+            text += line + errorColumns(r.lightErrors[k]);
+        }
     }
     return text;
 }
@@ -242,6 +273,10 @@ std::string formatSweepCsv(const SweepResults& results) {
                                        "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
                                        "umbra_lit_percent", "full_umbra_lit_percent", "umbra_over_percent",
                                        "lit_shadowed_percent", "reference"};
+    const size_t lights = lightCount(results);
+    for (size_t k = 0; k < lights; ++k)
+        for (const LightCsvFigure& figure : kLightCsvFigures)
+            header.push_back("light" + std::to_string(k) + "_" + figure.name);
     header.insert(header.end(), stats.begin(), stats.end());
     std::string csv = csvLine(header);
     for (const SweepRow& r : results.rows) {
@@ -256,6 +291,9 @@ std::string formatSweepCsv(const SweepResults& results) {
                                            csvNumber(e.percentOfPixels(e.umbraOver)),
                                            csvNumber(e.percentOfPixels(e.litShadowed)),
                                            r.reference};
+        for (size_t k = 0; k < lights; ++k)
+            for (const LightCsvFigure& figure : kLightCsvFigures)
+                fields.push_back(k < r.lightErrors.size() ? csvNumber(figure.value(r.lightErrors[k])) : "");
         for (const std::string& name : stats) fields.push_back(statValue(r, name));
         csv += csvLine(fields);
     }

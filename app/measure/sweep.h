@@ -90,7 +90,10 @@ struct SweepRow {
     std::map<std::string, std::string> settings;   // this row's axis values (not defaults)
     int threads = 1;
     double medianMs = 0.0, minMs = 0.0;
-    ErrorFigures errors;
+    ErrorFigures errors;                           // over every light of the scene (frame/score.h)
+    // Each light's own figures (scoreLights(), in the scene's order) for a scene of several
+    // lights; empty for one light, whose figures are `errors`.
+    std::vector<ErrorFigures> lightErrors;
     std::vector<TechniqueStat> stats;              // of the last measured frame
     FrameImages images;                            // with SweepOptions::imagesOutDir: the same at every thread count
     std::string settingsLabel() const;             // "a=1 b=2", or "defaults"
@@ -122,13 +125,16 @@ std::string sweepFileStem(const SweepResults& results);
 // The folder of a sweep's pictures, beside its other files: "<sweepFileStem()>-images".
 std::string sweepImagesFolder(const SweepResults& results);
 
-// A table for the terminal: one line per row.
+// A table for the terminal: one line per row, and under a row of several lights a line per
+// light with its error figures (SweepRow::lightErrors).
 std::string formatSweepText(const SweepResults& results);
 // One row per SweepRow. CSV columns: technique, settings, threads, median_ms, min_ms, rms,
 // rms_display, mean_abs, max_abs, misclassified_percent, false_shadow_percent,
 // false_light_percent, umbra_lit_percent, full_umbra_lit_percent, umbra_over_percent,
-// lit_shadowed_percent, reference, then one column per technique stat (empty where a row
-// does not report it).
+// lit_shadowed_percent, reference; for a sweep of several lights then each light's
+// headline figures, lightK_misclassified_percent, lightK_rms and lightK_umbra_lit_percent
+// for K from 0 (empty where a row has none); then one column per
+// technique stat (empty where a row does not report it).
 std::string formatSweepCsv(const SweepResults& results);
 
 }  // namespace shadowlab

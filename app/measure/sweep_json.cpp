@@ -30,6 +30,15 @@ Json gridJson(const SweepResults& results) {
             {"warmup", g.warmupRuns}, {"runs", g.runs}, {"settings", g.settings}};
 }
 
+// [{"light": K, "errors": formatJson(...)}], the fields of render --json's "lights" that a
+// sweep's row has (each light's time is its stat lightK_technique_ms).
+Json lightsJson(const std::vector<ErrorFigures>& lightErrors) {
+    Json lights = Json::array();
+    for (size_t k = 0; k < lightErrors.size(); ++k)
+        lights.push_back({{"light", k}, {"errors", Json::parse(formatJson(lightErrors[k]))}});
+    return lights;
+}
+
 Json rowJson(const SweepRow& r) {
     Json stats = Json::object();
     for (const TechniqueStat& s : r.stats) stats[s.name] = s.value;
@@ -42,6 +51,9 @@ Json rowJson(const SweepRow& r) {
               {"min_ms", r.minMs},
               {"errors", Json::parse(formatJson(r.errors))},
               {"stats", stats}};
+    // Only for several lights and with pictures: a sweep of one light without them writes
+    // the JSON it always did.
+    if (!r.lightErrors.empty()) j["lights"] = lightsJson(r.lightErrors);
     // Only with pictures (sweep --images): the JSON of a sweep without them stays as it was.
     if (!r.images.empty()) j["images"] = Json::parse(formatFrameImagesJson(r.images));
     return j;
@@ -119,14 +131,32 @@ FrameImages readImages(const Json& j) {
     return images;
 }
 
+// Each light's figures, lights 0, 1, ... in order; a file written before they were has
+// none. One light alone is not written (its figures are the row's).
+std::vector<ErrorFigures> readLightErrors(const Json& j) {
+    std::vector<ErrorFigures> lightErrors;
+    if (!j.contains("lights")) return lightErrors;
+    const Json& lights = j.at("lights");
+    if (!lights.is_array() || lights.size() < 2 || lights.size() > kMaxSceneLights)
+        throw std::runtime_error("lights: expected an array of 2.." + std::to_string(kMaxSceneLights) + " lights");
+    for (const Json& light : lights) {
+        if (light.at("light").get<uint64_t>() != lightErrors.size())
+            throw std::runtime_error("lights[" + std::to_string(lightErrors.size()) + "].light is " +
+                                     light.at("light").dump() + ", expected " + std::to_string(lightErrors.size()));
+        lightErrors.push_back(readErrors(light.at("errors")));
+    }
+    return lightErrors;
+}
+
 // The fields a sweep's row and a render's JSON share: what was run, against what, how
-// well, its stats and its pictures.
+// well (over every light, and each light's), its stats and its pictures.
 SweepRow readScoredRow(const Json& j) {
     SweepRow r;
     r.technique = j.at("technique").get<std::string>();
     r.reference = j.at("reference").get<std::string>();
     r.settings = j.at("settings").get<std::map<std::string, std::string>>();
     r.errors = readErrors(j.at("errors"));
+    r.lightErrors = readLightErrors(j);
     for (const auto& [name, value] : j.at("stats").items()) r.stats.push_back({name, number(value)});
     if (j.contains("images")) r.images = readImages(j.at("images"));
     return r;
@@ -149,7 +179,7 @@ ScoreRecord readScore(const Json& j) {
         record.row.threads = 0;
         record.row.medianMs = record.row.minMs = number(j.at("technique_ms"));
         return record;
-    } catch (const Json::exception& error) {
+    } catch (const std::exception& error) {   // a Json::exception, or readLightErrors'
         throw std::runtime_error(std::string("not the JSON of render --error-map --json: ") + error.what());
     }
 }
@@ -191,7 +221,7 @@ SweepResults readSweep(const Json& j) {
             where = "rows[" + std::to_string(r.rows.size()) + "]: ";
             r.rows.push_back(readRow(row));
         }
-    } catch (const Json::exception& error) {
+    } catch (const std::exception& error) {   // a Json::exception, or readLightErrors'
         throw std::runtime_error("not the JSON of a sweep: " + where + error.what());
     }
     checkCounts(r);

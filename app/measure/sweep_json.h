@@ -19,7 +19,10 @@ namespace shadowlab {
 //  "reference" ("": each technique against its own), "reference_fingerprints": {name:
 //  hex}, "threads", "warmup", "runs", "settings"}, "shard": {"index", "count"},
 //  "rows": [{"setting", "technique", "reference", "settings": {...}, "threads",
-//  "median_ms", "min_ms", "errors": formatJson(...), "stats": {...}}]}
+//  "median_ms", "min_ms", "errors": formatJson(...), "stats": {...}}]}; a row of several
+//  lights also has "lights": [{"light": K, "errors": formatJson(...)}] (SweepRow::
+//  lightErrors, the same fields as render --json's "lights" but for its time, which is the
+//  row's stat lightK_technique_ms), and a row with pictures "images".
 // A NaN (an error figure of a NaN image) is written as null.
 std::string formatSweepJson(const SweepResults& results);
 

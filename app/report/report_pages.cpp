@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "app/plots/sweep_plot.h"
 #include "app/report/report_html.h"
+#include "frame/frame_images.h"
 #include "frame/overrides_json.h"
 
 namespace shadowlab {
@@ -99,7 +101,19 @@ std::string describeSource(const ReportSource& source) {
            std::to_string(g.warmupRuns) + " warm-up frame(s).</p>\n";
 }
 
+// The most lights a row of the source has figures for (SweepRow::lightErrors).
+size_t lightCount(const ReportSource& source) {
+    size_t count = 0;
+    for (const SweepRow& row : source.results.rows) count = std::max(count, row.lightErrors.size());
+    return count;
+}
+
+std::string lightName(size_t light) { return "light " + std::to_string(light); }
+
+// The rows with, for a sweep of several lights, each light's misclassified pixels and RMS
+// in columns of their own, which sort as the others do.
 std::string rowsTable(const ReportSource& source) {
+    const size_t lights = lightCount(source);
     std::string rows;
     for (size_t k = 0; k < source.results.rows.size(); ++k) {
         const SweepRow& r = source.results.rows[k];
@@ -110,10 +124,23 @@ std::string rowsTable(const ReportSource& source) {
                 html::numberCell(e.percentOfPixels(e.misclassified()), "%.4f") +
                 html::numberCell(e.rms, "%.5f") + html::numberCell(e.maxAbs, "%.5f") +
                 html::numberCell(e.percentOfPixels(e.falseShadow), "%.4f") +
-                html::numberCell(e.percentOfPixels(e.falseLight), "%.4f") + "</tr>\n";
+                html::numberCell(e.percentOfPixels(e.falseLight), "%.4f");
+        for (size_t light = 0; light < lights; ++light) {
+            const double nan = std::numeric_limits<double>::quiet_NaN();
+            const ErrorFigures* l = light < r.lightErrors.size() ? &r.lightErrors[light] : nullptr;
+            rows += html::numberCell(l ? l->percentOfPixels(l->misclassified()) : nan, "%.4f") +
+                    html::numberCell(l ? l->rms : nan, "%.5f");
+        }
+        rows += "</tr>\n";
     }
-    return html::sortableTable({"technique", "settings", "threads", "median ms", "min ms", "misclassified %", "RMS",
-                                "max |error|", "false shadow %", "false light %"}, rows);
+    std::vector<std::string> columns = {"technique", "settings", "threads", "median ms", "min ms", "misclassified %",
+                                        "RMS", "max |error|", "false shadow %", "false light %"};
+    for (size_t light = 0; light < lights; ++light) {
+        columns.push_back(lightName(light) + " misclassified %");
+        columns.push_back(lightName(light) + " RMS");
+    }
+    // Wider than the page with several lights' columns: it scrolls, not the page.
+    return "<div class=\"wide-table\">\n" + html::sortableTable(columns, rows) + "</div>\n";
 }
 
 std::string sourceSection(const ReportSite& site, const ReportSource& source) {
@@ -171,30 +198,53 @@ std::string picturesSection(const ReportSetting& setting, const SweepRow& row) {
            pixelFigure(images.referenceVisibility, row.reference + " V", setting) + "</div>\n</section>\n";
 }
 
-std::string figureRow(const char* name, double value, const char* format) {
-    return std::string("<tr><th scope=\"row\">") + name + "</th>" + html::numberCell(value, format) + "</tr>\n";
+// One figure of every column of the errors table; "not recorded" where a column's JSON
+// predates it (ErrorFigures::fullUmbraRecorded).
+template <class Value>
+std::string figureRow(const char* name, const std::vector<const ErrorFigures*>& columns, const char* format,
+                      Value value) {
+    std::string row = std::string("<tr><th scope=\"row\">") + name + "</th>";
+    for (const ErrorFigures* e : columns) {
+        const std::optional<double> figure = value(*e);
+        row += figure ? html::numberCell(*figure, format) : "<td>not recorded</td>";
+    }
+    return row + "</tr>\n";
 }
 
-// A figure the JSON predates (ErrorFigures::fullUmbraRecorded).
-std::string notRecordedRow(const char* name) {
-    return std::string("<tr><th scope=\"row\">") + name + "</th><td>not recorded</td></tr>\n";
-}
-
+// The figures over every light, and for a row of several lights each light's beside them.
 std::string errorsTable(const SweepRow& row) {
     const ErrorFigures& e = row.errors;
-    std::string rows = figureRow("pixels scored", double(e.pixels), "%.0f") + figureRow("RMS", e.rms, "%.6f") +
-                       figureRow("mean |error|", e.meanAbs, "%.6f") + figureRow("max |error|", e.maxAbs, "%.6f") +
-                       figureRow("misclassified %", e.percentOfPixels(e.misclassified()), "%.4f") +
-                       figureRow("false shadow %", e.percentOfPixels(e.falseShadow), "%.4f") +
-                       figureRow("false light %", e.percentOfPixels(e.falseLight), "%.4f") +
-                       figureRow("umbra lit %", e.percentOfPixels(e.umbraLit), "%.4f") +
-                       (e.fullUmbraRecorded ? figureRow("umbra lit 0.02 %", *e.fullUmbraLitPercent(), "%.4f")
-                                            : notRecordedRow("umbra lit 0.02 %")) +
-                       figureRow("umbra over %", e.percentOfPixels(e.umbraOver), "%.4f") +
-                       figureRow("lit shadowed %", e.percentOfPixels(e.litShadowed), "%.4f");
-    if (e.rmsDisplay) rows += figureRow("RMS as displayed", *e.rmsDisplay, "%.6f");
+    std::vector<const ErrorFigures*> columns = {&e};
+    std::string header;
+    if (!row.lightErrors.empty()) {
+        header = "<thead><tr><td></td><th scope=\"col\">every light</th>";
+        for (size_t light = 0; light < row.lightErrors.size(); ++light) {
+            columns.push_back(&row.lightErrors[light]);
+            header += "<th scope=\"col\">" + lightName(light) + "</th>";
+        }
+        header += "</tr></thead>\n";
+    }
+    using Figure = std::optional<double>;
+    const auto percent = [](uint64_t ErrorFigures::*count) {
+        return [count](const ErrorFigures& f) { return Figure(f.percentOfPixels(f.*count)); };
+    };
+    std::string rows =
+        figureRow("pixels scored", columns, "%.0f", [](const ErrorFigures& f) { return Figure(double(f.pixels)); }) +
+        figureRow("RMS", columns, "%.6f", [](const ErrorFigures& f) { return Figure(f.rms); }) +
+        figureRow("mean |error|", columns, "%.6f", [](const ErrorFigures& f) { return Figure(f.meanAbs); }) +
+        figureRow("max |error|", columns, "%.6f", [](const ErrorFigures& f) { return Figure(f.maxAbs); }) +
+        figureRow("misclassified %", columns, "%.4f",
+                  [](const ErrorFigures& f) { return Figure(f.percentOfPixels(f.misclassified())); }) +
+        figureRow("false shadow %", columns, "%.4f", percent(&ErrorFigures::falseShadow)) +
+        figureRow("false light %", columns, "%.4f", percent(&ErrorFigures::falseLight)) +
+        figureRow("umbra lit %", columns, "%.4f", percent(&ErrorFigures::umbraLit)) +
+        figureRow("umbra lit 0.02 %", columns, "%.4f", [](const ErrorFigures& f) { return f.fullUmbraLitPercent(); }) +
+        figureRow("umbra over %", columns, "%.4f", percent(&ErrorFigures::umbraOver)) +
+        figureRow("lit shadowed %", columns, "%.4f", percent(&ErrorFigures::litShadowed));
+    if (e.rmsDisplay)
+        rows += figureRow("RMS as displayed", columns, "%.6f", [](const ErrorFigures& f) { return f.rmsDisplay; });
     return "<h2>Error against " + escape(row.reference) + " (on " + escape(e.channel) +
-           ")</h2>\n<table class=\"figures-table\">\n<tbody>\n" + rows + "</tbody>\n</table>\n";
+           ")</h2>\n<table class=\"figures-table\">\n" + header + "<tbody>\n" + rows + "</tbody>\n</table>\n";
 }
 
 std::string timesTable(const ReportSource& source, const ReportSetting& setting) {
@@ -215,15 +265,35 @@ std::string statsTable(const SweepRow& row) {
                                               : html::sortableTable({"stat", "value"}, rows));
 }
 
-std::string debugSection(const FrameImages& images) {
-    if (images.debugBuffers.empty()) return "";
+std::string debugFigures(const std::vector<std::string>& pictures) {
     std::string figures;
-    for (const std::string& path : images.debugBuffers) {
+    for (const std::string& path : pictures) {
         const std::string name = std::filesystem::path(path).filename().string();
         figures += "<figure><a href=\"" + escape(path) + "\"><img class=\"debug\" src=\"" + escape(path) +
                    "\" alt=\"" + escape(name) + "\"></a><figcaption>" + escape(name) + "</figcaption></figure>\n";
     }
-    return "<section>\n<h2>Debug buffers</h2>\n<div class=\"figures\">\n" + figures + "</div>\n</section>\n";
+    return "<div class=\"figures\">\n" + figures + "</div>\n";
+}
+
+// The debug buffers, those of a frame of several lights under a heading per light
+// (debugPictures() lists them light by light).
+std::string debugSection(const FrameImages& images) {
+    if (images.debugBuffers.empty()) return "";
+    std::string body;
+    std::vector<std::string> group;
+    std::optional<size_t> groupLight = debugPictureLight(images.debugBuffers.front());
+    const auto close = [&] {
+        if (groupLight) body += "<h3>" + escape(lightName(*groupLight)) + "</h3>\n";
+        body += debugFigures(group);
+        group.clear();
+    };
+    for (const std::string& path : images.debugBuffers) {
+        const std::optional<size_t> light = debugPictureLight(path);
+        if (light != groupLight) close(), groupLight = light;
+        group.push_back(path);
+    }
+    close();
+    return "<section>\n<h2>Debug buffers</h2>\n" + body + "</section>\n";
 }
 
 }  // namespace

@@ -17,10 +17,12 @@
 #include "app/plots/sweep_plot.h"
 #include "frame/registry.h"
 #include "scenes/scene_file.h"
+#include "tests/app/csv_fields.h"
 #include "tests/app/text_count.h"
 
 using namespace shadowlab;
 using test::countOf;
+using test::splitCsvLine;
 
 namespace {
 
@@ -55,16 +57,6 @@ const SweepResults& sharedSweep() {
     static const SweepResults results = runSweep(quickOptions(
         {&findTechnique("none"), &reference}, {{"resolution", {"512", "2048"}}, {"bias", {"0", "0.5", "1"}}}));
     return results;
-}
-
-// Fields of an unquoted CSV line; "a,," has three, the last two empty (RFC 4180).
-std::vector<std::string> splitCsvLine(const std::string& line) {
-    std::vector<std::string> fields(1);
-    for (char c : line) {
-        if (c == ',') fields.emplace_back();
-        else fields.back() += c;
-    }
-    return fields;
 }
 
 // Minimal XML well-formedness: every tag closes in order, attribute quotes pair up, and
@@ -242,7 +234,9 @@ TEST_CASE("sweep JSON: rows with settings, times and error figures") {
         CHECK(row["median_ms"].get<double>() == results.rows[k].medianMs);
         CHECK(row["errors"]["false_light"].get<uint64_t>() == results.rows[k].errors.falseLight);
         CHECK(row["stats"].is_object());
+        CHECK_FALSE(row.contains("lights"));   // one light: the row's figures are its own
     }
+    CHECK(countOf(formatSweepText(results), "  light ") == 0);
 }
 
 TEST_CASE("sweep SVG: well-formed, one point per row, the Pareto front ringed") {

@@ -2,13 +2,13 @@
 // --json, makes their report, opens it by file:// URL in Debian's headless Chromium driven
 // by playwright-core, and checks what a reader relies on: every picture and plot loads,
 // a plot point leads to its setting, the slider moves, the zoom scales, the tables sort
-// both ways, nothing fails in the console or the network, and the pages read without
-// JavaScript. Screenshots go to OUT/screenshots for a person to look at.
+// both ways, a sweep of three lights shows each light's figures and debug buffers, nothing
+// fails in the console or the network, and the pages read without JavaScript. Screenshots go to OUT/screenshots for a person to look at.
 //
 // node browser_test.mjs SHADOWLAB OUT    (CHROMIUM overrides /usr/bin/chromium)
 import assert from "node:assert/strict";
 import { execFileSync } from "node:child_process";
-import { existsSync, mkdirSync, readdirSync, rmSync } from "node:fs";
+import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync } from "node:fs";
 import path from "node:path";
 import { pathToFileURL } from "node:url";
 import { chromium } from "playwright-core";
@@ -35,7 +35,13 @@ run("sweep", "sphere-box", "--technique", "shadow-map,pcss", "--param", "resolut
 run("render", "sphere-box", "--technique", "shadow-map", ...size, "--light-radius", "0.5", "-o", path.join(results, "render.png"),
     "--error-map", path.join(results, "render-error.png"), "--json", path.join(results, "render.json"),
     "--debug-buffers", path.join(results, "render-debug"));
-run("report", path.join(results, "sphere-box-shadow-map+pcss.json"), path.join(results, "render.json"), "--out", site);
+// A scene of three lights (a point, a spot and a sun): each light's figures and debug buffers.
+const lightsScene = path.join(path.dirname(new URL(import.meta.url).pathname), "../../assets/scenes/many-lights/three-lights.json");
+run("sweep", lightsScene, "--technique", "shadow-map,shadow-volume", "--param", "resolution=64,512", "--width", "96",
+    "--height", "60", "--threads", "1", "--runs", "1", "--warmup", "0", "--images", "--out", results);
+const lightsJson = path.join(results, "three-lights-shadow-map+shadow-volume.json");
+run("report", path.join(results, "sphere-box-shadow-map+pcss.json"), path.join(results, "render.json"), lightsJson,
+    "--out", site);
 
 const problems = [];   // console errors, page errors and failed requests, on any page
 function watch(page) {
@@ -62,6 +68,51 @@ async function columnValues(page, table, column) {
                       (cells) => cells.map((cell) => Number(cell.dataset.value)));
 }
 
+// The sweep of three lights: its table has each light's misclassified % and RMS, equal to
+// the JSON's, sorts by them, and fits the page; a setting's page has a column of figures per
+// light and each light's debug buffers under its name.
+async function checkLights(page) {
+  const rows = JSON.parse(readFileSync(lightsJson, "utf8")).rows;
+  await page.goto(url("scene-three-lights.html"));
+  const table = await page.$("table.sortable");
+  const headers = (await table.$$eval("thead th", (cells) => cells.map((cell) => cell.textContent.trim())));
+  const first = headers.indexOf("light 0 misclassified %");
+  assert.deepEqual(headers.slice(first), ["light 0 misclassified %", "light 0 RMS", "light 1 misclassified %",
+                                          "light 1 RMS", "light 2 misclassified %", "light 2 RMS"]);
+  for (let light = 0; light < 3; ++light) {
+    const expected = rows.map((row) => [row.lights[light].errors.misclassified_percent, row.lights[light].errors.rms]);
+    const shown = await Promise.all([0, 1].map((k) => columnValues(page, table, first + 2 * light + k)));
+    assert.deepEqual(expected.map(([m]) => m), shown[0], `light ${light}'s misclassified % as in the JSON`);
+    assert.deepEqual(expected.map(([, rms]) => rms), shown[1], `light ${light}'s RMS as in the JSON`);
+  }
+  assert.ok(rows[0].lights.some((light) => light.errors.misclassified > 0), "the coarse map errs on a light");
+  const rmsColumn = first + 3;   // light 1 RMS
+  const header = (await table.$$("thead th"))[rmsColumn];
+  await (await header.$("button")).click();
+  await (await header.$("button")).click();
+  const descending = await columnValues(page, table, rmsColumn);
+  assert.deepEqual(descending, [...descending].sort((a, b) => b - a), "sorted by light 1's RMS, descending");
+  assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth),
+            "the wide table scrolls, not the page");
+  await page.screenshot({ path: path.join(shots, "scene-three-lights.png"), fullPage: true });
+
+  const settingPage = "three-lights-shadow-map+shadow-volume-setting-0.html";
+  await page.goto(url(settingPage));
+  await checkPictures(page);
+  const columns = await page.$$eval(".figures-table thead th", (cells) => cells.map((cell) => cell.textContent));
+  assert.deepEqual(columns, ["every light", "light 0", "light 1", "light 2"]);
+  const misclassified = await page.$$eval(".figures-table tbody tr", (trs) =>
+    trs.filter((tr) => tr.cells[0].textContent === "misclassified %")
+       .map((tr) => Array.from(tr.cells).slice(1).map((cell) => Number(cell.dataset.value)))[0]);
+  assert.deepEqual(misclassified, [rows[0].errors.misclassified_percent,
+                                   ...rows[0].lights.map((light) => light.errors.misclassified_percent)]);
+  const headings = await page.$$eval("h3", (hs) => hs.map((h) => h.textContent));
+  assert.deepEqual(headings, ["light 0", "light 1", "light 2"], "a heading per light over its debug buffers");
+  const underLight2 = await page.$$eval("h3 ~ .figures:last-of-type img.debug", (imgs) => imgs.map((img) => img.getAttribute("src")));
+  assert.ok(underLight2.length > 0 && underLight2.every((src) => src.includes("/light2/")), `light 2's buffers: ${underLight2}`);
+  await page.screenshot({ path: path.join(shots, "setting-three-lights.png"), fullPage: true });
+}
+
 const browser = await chromium.launch({ executablePath });
 try {
   const page = await browser.newPage({ viewport: { width: 1200, height: 900 } });
@@ -69,7 +120,8 @@ try {
 
   // Every page of the site loads its pictures and plots.
   const pages = readdirSync(site).filter((name) => name.endsWith(".html"));
-  assert.equal(pages.length, 1 + 1 + 4 + 1, `index, one scene, four sweep settings and one render: ${pages}`);
+  assert.equal(pages.length, 1 + 2 + 4 + 1 + 3,
+               `index, two scenes, four sweep settings, one render and three settings of three lights: ${pages}`);
   for (const name of pages) {
     await page.goto(url(name));
     await checkPictures(page);
@@ -131,6 +183,8 @@ try {
   assert.ok((await plain.$$(".figures img.pixels")).length >= 3, "image, reference and error map");
   await checkPictures(plain);
   await plain.screenshot({ path: path.join(shots, "setting-without-javascript.png"), fullPage: true });
+
+  await checkLights(page);
 
   assert.deepEqual(problems, [], "no console errors and no failed requests");
   console.log(`report browser test: ${pages.length} pages checked; screenshots in ${shots}`);
