@@ -1,11 +1,13 @@
 #include "scenes/write_file.h"
 
 #include <cerrno>
-#include <cstdlib>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <random>
 #include <stdexcept>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "scenes/error_text.h"
@@ -14,13 +16,23 @@ namespace shadowlab {
 namespace fs = std::filesystem;
 namespace {
 
-// A new empty file beside `path`, with a short name of its own (mkstemp's six letters).
+// A new empty file beside `path`, made as a file written in place would be: mode 0666 less
+// the umask (mkstemp's 0600 would leave every output unreadable to other users), under a
+// short name no other writer holds (O_EXCL; a random suffix drawn again if it is taken).
 fs::path temporaryPathFor(const fs::path& path) {
-    std::string pattern = (path.parent_path() / ".sl-XXXXXX").string();
-    const int descriptor = ::mkstemp(pattern.data());
-    if (descriptor < 0) throw std::runtime_error(std::string("cannot make a temporary file: ") + std::strerror(errno));
-    ::close(descriptor);
-    return pattern;
+    std::random_device random;
+    for (int attempt = 0; attempt < 64; ++attempt) {
+        char name[16];
+        std::snprintf(name, sizeof name, ".sl-%08x", unsigned(random()));
+        const fs::path candidate = path.parent_path() / name;
+        const int descriptor = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (descriptor >= 0) {
+            ::close(descriptor);
+            return candidate;
+        }
+        if (errno != EEXIST) throw std::runtime_error(std::string("cannot make a temporary file: ") + std::strerror(errno));
+    }
+    throw std::runtime_error("cannot make a temporary file: 64 random names were taken");
 }
 
 }  // namespace

@@ -2,8 +2,9 @@
 // temporary file in the same folder and then renamed over the destination (rename() within
 // one file system is atomic in POSIX), so a reader never sees a half-written file and a
 // failed write leaves none behind (a process killed mid-write can leave a hidden temporary
-// ".sl-XXXXXX", never a partial file). The temporary's name is short, so that any name a
-// folder can hold (255 bytes) can be written. Errors are std::runtime_error naming the file.
+// ".sl-XXXXXXXX", never a partial file). The temporary's name is short, so that any name a
+// folder can hold (255 bytes) can be written, and its mode is a new file's (0666 less the
+// umask), which the rename keeps. Errors are std::runtime_error naming the file.
 #pragma once
 
 #include <filesystem>

@@ -54,7 +54,7 @@ expect_error() {
     fi
 }
 
-# expect_no_file PATH: neither PATH nor a hidden temporary beside it (.sl-XXXXXX, image_io.h).
+# expect_no_file PATH: neither PATH nor a hidden temporary beside it (.sl-XXXXXXXX, write_file.h).
 expect_no_file() {
     local path=$1 leftovers
     leftovers=$(find "$(dirname "$path")" -maxdepth 1 -name '.sl-*' | wc -l)

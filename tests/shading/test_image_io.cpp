@@ -130,6 +130,17 @@ TEST_CASE("a failed write leaves neither the file nor a temporary") {
     CHECK_FALSE(fs::exists(dir.path / "missing"));
 }
 
+// The rename keeps the temporary's mode: it must be a new file's, as a file written in
+// place gets (0666 less the umask), not mkstemp's 0600, which hid every output from other users.
+TEST_CASE("a file written whole has the mode of a file written in place") {
+    ScratchDirectory dir("atomic-mode");
+    const fs::path inPlace = dir.path / "in-place.txt", whole = dir.path / "whole.txt";
+    std::ofstream(inPlace) << "x";
+    writeTextFile(whole, "x");
+    CHECK(fs::status(whole).permissions() == fs::status(inPlace).permissions());
+    CHECK((fs::status(whole).permissions() & fs::perms::owner_write) != fs::perms::none);
+}
+
 TEST_CASE("reading errors name the file and the channel") {
     ScratchDirectory dir("read_errors");
     const fs::path garbage = dir.path / "garbage.exr";
