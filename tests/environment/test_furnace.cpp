@@ -126,7 +126,9 @@ TEST_CASE("furnace: the exact environment visibility sees through a cut-out ceil
     const PreparedScene holes = cutOutCeiling(0.0f), solid = cutOutCeiling(1.0f);
     const std::pair<const char*, std::map<std::string, std::string>> runs[] = {
         {"reference-env", {{"samples", "8"}}}, {"env-additive", {{"lights", "16"}, {"visibility", "exact"}}}};
-    for (const auto& [technique, params] : runs) {
+    for (const auto& run : runs) {   // not a structured binding: clang 14 cannot capture one in INFO
+        const char* technique = run.first;
+        const std::map<std::string, std::string>& params = run.second;
         INFO(technique);
         CHECK(sameBytes(frameOf(holes, technique, params).radiance, frameOf(open, technique, params).radiance));
         CHECK(sameBytes(frameOf(solid, technique, params).radiance, frameOf(closed, technique, params).radiance));
