@@ -73,13 +73,6 @@ std::vector<std::string> statNames(const SweepResults& results) {
     return names;
 }
 
-// The most lights any row has figures for: the CSV's lightK_ columns.
-size_t lightCount(const SweepResults& results) {
-    size_t count = 0;
-    for (const SweepRow& row : results.rows) count = std::max(count, row.lightErrors.size());
-    return count;
-}
-
 // Each light's headline figures in the CSV: misclassified pixels for hard shadows, the RMS
 // for any, umbra lit for soft ones (docs/soft-shadows.md).
 struct LightCsvFigure {
@@ -237,6 +230,12 @@ std::string referenceFingerprint(const ImageChannels& reference) {
     return hex;
 }
 
+size_t SweepResults::lightCount() const {
+    size_t count = 0;
+    for (const SweepRow& row : rows) count = std::max(count, row.lightErrors.size());
+    return count;
+}
+
 std::string sweepFileStem(const SweepResults& results) {
     std::string techniques;
     for (const std::string& technique : results.techniques) techniques += (techniques.empty() ? "" : "+") + technique;
@@ -273,7 +272,7 @@ std::string formatSweepCsv(const SweepResults& results) {
                                        "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
                                        "umbra_lit_percent", "full_umbra_lit_percent", "umbra_over_percent",
                                        "lit_shadowed_percent", "reference"};
-    const size_t lights = lightCount(results);
+    const size_t lights = results.lightCount();
     for (size_t k = 0; k < lights; ++k)
         for (const LightCsvFigure& figure : kLightCsvFigures)
             header.push_back("light" + std::to_string(k) + "_" + figure.name);

@@ -105,6 +105,9 @@ struct SweepResults {
     SweepGrid grid;
     SweepShard shard;             // the settings the rows cover
     std::vector<SweepRow> rows;   // per technique, settings in axis order (last axis fastest), threads
+    // The most lights any row has figures for (SweepRow::lightErrors): the CSV's and the
+    // report's per-light columns.
+    size_t lightCount() const;
 };
 
 // Checks the technique names, that every axis belongs to one of them and that the shard

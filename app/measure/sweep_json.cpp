@@ -51,8 +51,7 @@ Json rowJson(const SweepRow& r) {
               {"min_ms", r.minMs},
               {"errors", Json::parse(formatJson(r.errors))},
               {"stats", stats}};
-    // Only for several lights and with pictures: a sweep of one light without them writes
-    // the JSON it always did.
+    // Only for several lights: a sweep of one light writes the JSON it always did.
     if (!r.lightErrors.empty()) j["lights"] = lightsJson(r.lightErrors);
     // Only with pictures (sweep --images): the JSON of a sweep without them stays as it was.
     if (!r.images.empty()) j["images"] = Json::parse(formatFrameImagesJson(r.images));

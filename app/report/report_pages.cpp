@@ -101,19 +101,12 @@ std::string describeSource(const ReportSource& source) {
            std::to_string(g.warmupRuns) + " warm-up frame(s).</p>\n";
 }
 
-// The most lights a row of the source has figures for (SweepRow::lightErrors).
-size_t lightCount(const ReportSource& source) {
-    size_t count = 0;
-    for (const SweepRow& row : source.results.rows) count = std::max(count, row.lightErrors.size());
-    return count;
-}
-
 std::string lightName(size_t light) { return "light " + std::to_string(light); }
 
 // The rows with, for a sweep of several lights, each light's misclassified pixels and RMS
 // in columns of their own, which sort as the others do.
 std::string rowsTable(const ReportSource& source) {
-    const size_t lights = lightCount(source);
+    const size_t lights = source.results.lightCount();
     std::string rows;
     for (size_t k = 0; k < source.results.rows.size(); ++k) {
         const SweepRow& r = source.results.rows[k];
