@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -296,6 +297,28 @@ bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const W
     fitDepthRange(view, b, world, options);
     view.clipFromView = glm::frustumRH_NO(-view.zNear, view.zNear, -view.zNear, view.zNear, view.zNear, view.zFar);
     return true;
+}
+
+std::string LightViews::suffix(size_t v) const {
+    return faces.empty() ? "" : std::string("-face-") + kCubeFaceNames[faces[v]];
+}
+
+LightViews fitLightViews(const Light& light, const GBuffer& receivers, const WorldGeometry& world,
+                         const LightFitOptions& options) {
+    LightViews out;
+    try {
+        out.views.push_back(fitLightView(light, receivers, world, options));
+        return out;
+    } catch (const std::invalid_argument&) {
+        if (light.type != LightType::Point) throw;   // no receivers, or a spot light's cone is too wide
+    }
+    for (int face = 0; face < 6; ++face) {   // receivers all around the light
+        LightView view;
+        if (!fitCubeFace(light, face, receivers, world, options, view)) continue;
+        out.views.push_back(view);
+        out.faces.push_back(face);
+    }
+    return out;
 }
 
 }  // namespace shadowlab

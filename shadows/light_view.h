@@ -10,6 +10,9 @@
 // technique uses six cube faces instead (fitCubeFace).
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "raster/tile_kernels.h"
@@ -63,5 +66,19 @@ inline constexpr const char* kCubeFaceNames[6] = {"px", "nx", "py", "ny", "pz", 
 // Whether P lies in the 90-degree pyramid of a cube face's view: the test fitCubeFace fits
 // a face's receivers by, and the one a receiver's face is chosen by.
 bool insideCubeFace(const LightView& face, const glm::dvec3& P);
+
+// The views a light needs for the visible receivers: the one frustum fitLightView fits, or,
+// for a point light they surround (where it throws), the faces fitCubeFace keeps.
+struct LightViews {
+    std::vector<LightView> views;
+    std::vector<int> faces;   // each view's cube face (0..5, kCubeFaceNames); empty for one frustum
+
+    size_t size() const { return views.size(); }
+    // What ends view v's debug buffers' names: "" for one frustum, "-face-px" for a face.
+    std::string suffix(size_t v) const;
+};
+// Throws as fitLightView does, but for a point light's receivers all around it.
+LightViews fitLightViews(const Light& light, const GBuffer& receivers, const WorldGeometry& world,
+                         const LightFitOptions& options);
 
 }  // namespace shadowlab

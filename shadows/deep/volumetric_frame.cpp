@@ -1,7 +1,6 @@
 #include "shadows/deep/volumetric_frame.h"
 
 #include <algorithm>
-#include <stdexcept>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/maps/shadow_map_debug.h"
@@ -21,28 +20,12 @@ const SettingsTable<VolumetricSettings>& volumetricSettingsTable() {
     return table;
 }
 
-std::string VolumetricViews::suffix(size_t v) const {
-    return faces.empty() ? "" : std::string("-face-") + kCubeFaceNames[faces[v]];
-}
-
-VolumetricViews volumetricViews(const ShadowInputs& in, const Light& light, const VolumetricSettings& settings) {
+LightViews volumetricViews(const ShadowInputs& in, const Light& light, const VolumetricSettings& settings) {
     LightFitOptions fit;
     fit.resolution = settings.map.resolution;
     fit.simd = in.simd;
     fit.cullCubeFaces = settings.cullCubeFaces;
-    VolumetricViews out;
-    try {
-        out.views.push_back(fitLightView(light, in.gbuffer, in.casterWorld(), fit));
-    } catch (const std::invalid_argument&) {
-        if (light.type != LightType::Point) throw;
-        for (int face = 0; face < 6; ++face) {   // receivers all around the light
-            LightView view;
-            if (!fitCubeFace(light, face, in.gbuffer, in.casterWorld(), fit, view)) continue;
-            out.views.push_back(view);
-            out.faces.push_back(face);
-        }
-    }
-    return out;
+    return fitLightViews(light, in.gbuffer, in.casterWorld(), fit);
 }
 
 int ServedBy::operator()(const glm::dvec3& P) const {
@@ -68,7 +51,7 @@ void VolumetricStats::appendTo(std::vector<TechniqueStat>& stats) const {
     }
 }
 
-VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const Light& light, const VolumetricViews& views, size_t v,
+VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const Light& light, const LightViews& views, size_t v,
                                      const CasterTransmission& transmission, const VolumetricSettings& settings,
                                      StageTimer& timer) {
     VolumetricFrame frame;

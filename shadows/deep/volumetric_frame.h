@@ -33,24 +33,16 @@ struct VolumetricSettings {
 // The shadow map's parameters, `transmittance-offset` and `cube-faces`.
 const SettingsTable<VolumetricSettings>& volumetricSettingsTable();
 
-// The views a frame draws: the one frustum fitted to the receivers (light_view.h), or, for a
-// point light they surround, the cube faces that hold one (fitCubeFace; every face with
-// `cube-faces=all`), as shadow-map draws them.
-struct VolumetricViews {
-    std::vector<LightView> views;
-    std::vector<int> faces;   // each view's cube face (0..5, kCubeFaceNames); empty for one frustum
-
-    size_t size() const { return views.size(); }
-    // What ends view v's debug buffers' names: "" for one frustum, "-face-px" for a face.
-    std::string suffix(size_t v) const;
-};
-VolumetricViews volumetricViews(const ShadowInputs& in, const Light& light, const VolumetricSettings& settings);
+// The views a frame draws (fitLightViews, light_view.h): the one frustum fitted to the
+// receivers, or, for a point light they surround, the cube faces that hold one (every face
+// with `cube-faces=all`), as shadow-map draws them.
+LightViews volumetricViews(const ShadowInputs& in, const Light& light, const VolumetricSettings& settings);
 
 // The map selector (shadow_lookup.h) of view v alone: 0 where it serves the receiver at P,
 // else -1. The one frustum serves every receiver; a receiver uses the first face whose
 // pyramid holds it, as in shadow-map, and only that face answers it.
 struct ServedBy {
-    const VolumetricViews& views;
+    const LightViews& views;
     size_t v;
     int operator()(const glm::dvec3& P) const;
 };
@@ -84,7 +76,7 @@ struct VolumetricFrame {
     std::vector<float> opaqueV;   // 0 where the view does not serve the pixel
     std::vector<int8_t> served;   // 0 where it does, -1 elsewhere
 };
-VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const Light& light, const VolumetricViews& views, size_t v,
+VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const Light& light, const LightViews& views, size_t v,
                                      const CasterTransmission& transmission, const VolumetricSettings& settings,
                                      StageTimer& timer);
 
@@ -120,7 +112,7 @@ ShadowOutputs runVolumetricFrame(const ShadowInputs& in, const VolumetricSetting
     StageTimer timer;
     const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
     const Light light = pointLightFor(in.light);
-    const VolumetricViews views = volumetricViews(in, light, settings);
+    const LightViews views = volumetricViews(in, light, settings);
     timer.lap("light_view");
     using Value = decltype(build(std::declval<const VolumetricLayers&>()).at(size_t(0), 0.0f));
     std::vector<Value> passed;

@@ -131,9 +131,9 @@ struct LightGrid {
     size_t texelIndex(int view, int i, int j) const { return izb::texelIndex(resolution, view, i, j); }
 };
 
-// The views that hold every receiver: fitLightView(), or the cube faces (fitCubeFace)
-// when the receivers surround a point light. Throws std::invalid_argument when there are
-// no receivers.
+// The views that hold every receiver: fitLightViews() (light_view.h: one frustum, or the
+// cube faces when the receivers surround a point light) with the largest grid's margin.
+// Throws std::invalid_argument when there are no receivers.
 std::vector<LightView> fitViews(const Light& pointOrDirectional, const GBuffer& gbuffer, const WorldGeometry& world,
                                raster::SimdLevel simd);
 

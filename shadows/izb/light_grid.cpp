@@ -10,7 +10,6 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
-#include <stdexcept>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -88,17 +87,7 @@ std::vector<LightView> fitViews(const Light& light, const GBuffer& gbuffer, cons
     // The sides only need to clear the ray-origin offset (micrometres): a margin of 2 texels
     // of the largest grid is ample for every resolution.
     const LightFitOptions options{.resolution = kMaxMapResolution, .simd = simd};
-    try {
-        return {fitLightView(light, gbuffer, world, options)};
-    } catch (const std::invalid_argument&) {
-        if (light.type != LightType::Point) throw;   // no receivers, or a spot light's cone is too wide
-    }
-    std::vector<LightView> faces;
-    for (int face = 0; face < 6; ++face) {
-        LightView view;
-        if (fitCubeFace(light, face, gbuffer, world, options, view)) faces.push_back(view);
-    }
-    return faces;
+    return fitLightViews(light, gbuffer, world, options).views;
 }
 
 // Refines R twice by R' = R sqrt(mean(R) / target): if the occupied area stayed the same,
