@@ -8,16 +8,19 @@ million camera pixels (the stage's <stage>_ms over width * height / 1e6).
 usage: technique_standard.py [--data FILE] [--threads N] SCENE=SWEEP.json[,SWEEP.json...] ...
 
 Each SCENE=... names a column and the sweep JSON files (`shadowlab sweep SCENE --technique
-LIST --threads N --json ...`, the files under --out) whose rows fill it; several files
-join (say reference-soft swept apart with fewer runs). A technique's first row at the
-thread count (the only one, or --threads) gives its stages. The camera's size is the
-sweep's --width and --height, else the scene file's camera (assets/scenes/SCENE.json).
-A stage a technique reported that the data file does not classify is an error, as is a
-technique it does not list (tests/app/technique_stages_test.py checks both on tiny views).
+LIST --threads N --out DIR`, the .json file in DIR) whose rows fill it. A sweep's stats
+are those of its last frame, so sweep several times: each stage's figure is its median
+over the files that hold the technique (its first row at the thread count, the only one
+or --threads); a technique may be swept apart (reference-soft, with fewer runs). The
+camera's size is the sweep's --width and --height, else the scene file's camera
+(assets/scenes/SCENE.json). A stage a technique reported that the data file does not
+classify is an error, as is a technique it does not list (tests/app/technique_stages_test.py
+checks both on tiny views).
 """
 import argparse
 import json
 import os
+import statistics
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -54,19 +57,23 @@ def camera_pixels(sweep):
 
 
 def scene_column(files, threads):
-    """{technique: {stage: ms per Mpixel}} from the rows of the files at the thread count."""
-    column = {}
+    """{technique: {stage: ms per Mpixel}} from the rows of the files at the thread count: a
+    sweep's stats are its last frame's, so each stage's median over the files that hold the
+    technique (its first setting in each)."""
+    times = {}
     for path in files:
         with open(path) as f:
             sweep = json.load(f)
         mpixels = camera_pixels(sweep) / 1e6
+        seen = set()
         for row in sweep["rows"]:
-            if threads is not None and row["threads"] != threads:
+            if (threads is not None and row["threads"] != threads) or row["technique"] in seen:
                 continue
-            if row["technique"] in column:
-                continue   # the first setting of a technique
-            column[row["technique"]] = {s: ms / mpixels for s, ms in stage_times(row["stats"]).items()}
-    return column
+            seen.add(row["technique"])
+            stages = times.setdefault(row["technique"], {})
+            for stage, ms in stage_times(row["stats"]).items():
+                stages.setdefault(stage, []).append(ms / mpixels)
+    return {t: {stage: statistics.median(v) for stage, v in stages.items()} for t, stages in times.items()}
 
 
 def check_classified(data, columns):
