@@ -2,22 +2,23 @@
 # Reproduces every speed and error figure in docs/performance.md: the hard- and soft-shadow sweeps,
 # every hard case, the shadow map's bias-by-resolution grid, Figure 7's torus and the eq. 8
 # scaling fit, the environment techniques' images and buffers, and speed against error by
-# caster level of detail, and differential rendering into photographs (the Figure 3 table is
-# scripts/figure3.sh, about an hour on its own). Writes CSV, JSON and SVG under out/figures, copies the plots and images the
-# docs show into docs/images, and prints docs/performance.md's tables. Takes about 10 minutes on 2
-# cores, more for the sweeps' pictures (docs/report.md), and ten minutes for the
-# fly-throughs; run nothing else meanwhile (times are medians, but a busy machine still
-# moves them).
+# caster level of detail, differential rendering into photographs, and every technique's
+# stages to one standard (the Figure 3 table is scripts/figure3.sh, about an hour on its own).
+# Writes CSV, JSON and SVG under out/figures, copies the plots and images the docs show into
+# docs/images, and prints docs/performance.md's tables. Takes about 10 minutes on 2 cores,
+# more for the sweeps' pictures (docs/report.md), ten minutes for the fly-throughs and about
+# fifteen for the technique-standard sweeps; run nothing else meanwhile (times are medians,
+# but a busy machine still moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|lights|suite|report ...]
-#        (default: all nineteen, report last; suite needs the packages scripts/suite_models.sh installs)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|lights|suite|standard|report ...]
+#        (default: all twenty, report last; suite needs the packages scripts/suite_models.sh installs)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough lights suite report}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough lights suite standard report}
 
 for part in $parts; do
   case $part in
@@ -418,6 +419,30 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
       --out $s --plot-y rms > /dev/null
     python3 $table $s/engine-$(echo $soft | tr , +).csv soft
     ;;
+  standard)
+    # docs/performance.md, "Every technique to one standard": docs/data/technique_stages.json
+    # joined with every technique's stage times on sphere-box and the bunny at 2 threads. A
+    # sweep's stats are its last frame's, so five sweeps of each group and the median of each
+    # stage; reference-soft's one frame (a minute or more) once. Under out/standard, not
+    # $out: these are no sweeps for the report. The environment techniques need scenes of
+    # their own and are not here.
+    std=out/standard
+    groups="none,reference,shadow-map,csm,izb,contact-shadows,shadow-volume,planar,projected-texture,pcss
+      chs,izb-pcss,vsm,esm,evsm,msm,multi-sample,backprojection,fins,smoothies,penumbra-maps
+      soft-shadow-volumes,coloured-shadow-map,opacity-shadow-maps,deep-shadow-maps,adaptive-volumetric-shadow-maps"
+    columns=""
+    for scene in sphere-box bunny; do
+      for k in 1 2 3 4 5; do
+        for group in $groups; do
+          $app sweep $scene --technique $group --reference reference --threads 2 --runs 1 --out $std/$scene-$k > /dev/null
+        done
+      done
+      $app sweep $scene --technique reference-soft --reference reference --threads 2 --runs 1 --warmup 0 \
+        --out $std/$scene-soft > /dev/null
+      columns="$columns $scene=$(ls $std/$scene-*/*.json | paste -sd, -)"
+    done
+    python3 scripts/technique_standard.py $columns
+    ;;
   report)
     # Every sweep's JSON under out/figures (the files with a grid of reference fingerprints;
     # bench and composite JSON are not sweeps) as one site: a page per scene and per setting.
@@ -425,6 +450,6 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     $app report $sweeps --out out/report
     ;;
   *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
-       "environment, lod, differential, screen, volumetric, cutouts, flythrough, lights, suite, report)" >&2; exit 2 ;;
+       "environment, lod, differential, screen, volumetric, cutouts, flythrough, lights, suite, standard, report)" >&2; exit 2 ;;
   esac
 done
