@@ -3,7 +3,8 @@
 `shadowlab techniques` is listed and no other; each technique, swept on a tiny view of its
 test scene (one frame, one thread), reports exactly the stages the file classifies, but
 for those it marks `when` (reported only in some frames: a directional light, cut-outs,
-debug buffers), whose name must still be a stage some StageTimer laps in shadows/.
+debug buffers), whose name must still be a stage some StageTimer laps in shadows/; and
+every part's source file exists.
 
 usage: technique_stages_test.py SHADOWLAB SCRATCH_DIR
 """
@@ -86,6 +87,10 @@ def main():
         fail(f"technique {name} is not in {DATA}")
     for name in sorted(set(listed) - registered):
         fail(f"{DATA} lists {name}, which is no technique")
+
+    for name, part in data["parts"].items():
+        if not os.path.isfile(os.path.join(ROOT, part["file"])):
+            fail(f"part '{name}' cites {part['file']}, which is no file")
 
     lapped = lapped_stages()
     by_scene = {}
