@@ -44,7 +44,7 @@ def stage_times(stats):
 
 def camera_pixels(sweep):
     """Width * height of the sweep's camera: its overrides, else the scene file's camera."""
-    overrides = sweep.get("overrides", {})
+    overrides = sweep["grid"].get("overrides", {})
     scene = os.path.join(ROOT, "assets", "scenes", sweep["scene"] + ".json")
     camera = {}
     if os.path.exists(scene):
