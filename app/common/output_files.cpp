@@ -1,5 +1,7 @@
 #include "app/common/output_files.h"
 
+#include <cstdint>
+#include <cstdio>
 #include <iostream>
 #include <stdexcept>
 #include <utility>
@@ -27,6 +29,18 @@ void writeCsvJsonSvg(const std::filesystem::path& stem, const std::string& csv, 
 void commitAndList(StagedOutputs& outputs) {
     for (const std::filesystem::path& file : outputs.commit())
         if (file.parent_path() == outputs.destination()) std::cout << "wrote " << file.string() << "\n";
+}
+
+std::string techniqueListStem(const std::vector<std::string>& techniques) {
+    std::string joined;
+    for (const std::string& t : techniques) joined += (joined.empty() ? "" : "+") + t;
+    constexpr size_t kLongest = 96;
+    if (joined.size() <= kLongest) return joined;
+    uint64_t hash = 0xcbf29ce484222325ull;   // FNV-1a, 64 bits: the same name on every machine
+    for (const unsigned char c : joined) hash = (hash ^ c) * 0x100000001b3ull;
+    char tail[40];
+    std::snprintf(tail, sizeof tail, "+%zu-more-%08x", techniques.size() - 1, unsigned(hash >> 32));
+    return techniques.front() + tail;
 }
 
 }  // namespace shadowlab

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "app/common/staged_outputs.h"
 
@@ -19,6 +20,13 @@ void requireOutputDirectories(std::initializer_list<const std::string*> paths);
 // The three files of a sweep, scaling or fly-through: STEM.csv, STEM.json and STEM.svg.
 void writeCsvJsonSvg(const std::filesystem::path& stem, const std::string& csv, const std::string& json,
                      const std::string& svg);
+
+// The techniques of a sweep or fly-through as a part of its files' names: joined with '+'
+// ("shadow-map+izb"), or, when that is longer than 96 characters (a file system refuses a name
+// above 255 bytes, and the images folder and extension are added to it), the first name, how
+// many more, and a hash of the whole list, so different lists keep different files
+// ("none+30-more-1f3a9c07").
+std::string techniqueListStem(const std::vector<std::string>& techniques);
 
 // Moves a command's staged files into place and names those at the top of its folder (the
 // pictures of --images, in subfolders, are not listed one by one).

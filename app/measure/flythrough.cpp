@@ -7,6 +7,7 @@
 
 #include <tbb/info.h>
 
+#include "app/common/output_files.h"
 #include "app/common/text_format.h"
 #include "app/common/timing.h"
 #include "frame/frame_images.h"
@@ -140,9 +141,9 @@ std::map<std::string, ImageChannels> renderPathFrame(const PreparedScene& prepar
 }  // namespace
 
 std::string flythroughFileStem(const std::string& scene, const std::vector<const Technique*>& techniques) {
-    std::string names;
-    for (const Technique* t : techniques) names += (names.empty() ? "" : "+") + t->name;
-    return scene + "-flythrough-" + names;
+    std::vector<std::string> names;
+    for (const Technique* t : techniques) names.push_back(t->name);
+    return scene + "-flythrough-" + techniqueListStem(names);
 }
 
 std::string FlythroughSeries::label() const {

@@ -10,6 +10,7 @@
 #include <tbb/info.h>
 
 #include "app/common/csv.h"
+#include "app/common/output_files.h"
 #include "app/common/timing.h"
 #include "frame/registry.h"
 #include "frame/render.h"
@@ -237,10 +238,8 @@ size_t SweepResults::lightCount() const {
 }
 
 std::string sweepFileStem(const SweepResults& results) {
-    std::string techniques;
-    for (const std::string& technique : results.techniques) techniques += (techniques.empty() ? "" : "+") + technique;
     const SweepShard& shard = results.shard;
-    return results.scene + "-" + techniques +
+    return results.scene + "-" + techniqueListStem(results.techniques) +
            (shard.count > 1 ? "-shard-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) : "");
 }
 

@@ -298,3 +298,19 @@ TEST_CASE("sweep file stem: scene, then the techniques joined by +") {
     results.techniques = {"none", "reference"};
     CHECK(sweepFileStem(results) == "sphere-box-none+reference");
 }
+
+TEST_CASE("sweep file stem: every technique at once stays a short name, one per list") {
+    // All registered techniques joined by + are over 300 characters: more than a file system
+    // takes for one name once "-images" or ".json" is added.
+    SweepResults results;
+    results.scene = "sphere-box";
+    for (const Technique& t : techniques()) results.techniques.push_back(t.name);
+    const std::string all = sweepFileStem(results);
+    CHECK(all.size() <= std::string("sphere-box-").size() + 96);
+    CHECK(all.rfind("sphere-box-none+", 0) == 0);
+    CHECK(all.find("-more-") != std::string::npos);
+    std::swap(results.techniques[1], results.techniques[2]);   // the same names in another order
+    CHECK(sweepFileStem(results) != all);
+    results.techniques.pop_back();
+    CHECK(sweepFileStem(results) != all);
+}
