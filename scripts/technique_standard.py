@@ -8,10 +8,10 @@ million camera pixels (the stage's <stage>_ms over width * height / 1e6).
 usage: technique_standard.py [--data FILE] [--threads N] SCENE=SWEEP.json[,SWEEP.json...] ...
 
 Each SCENE=... names a column and the sweep JSON files (`shadowlab sweep SCENE --technique
-LIST --threads N --out DIR`, the .json file in DIR) whose rows fill it. A sweep's stats
-are those of its last frame, so sweep several times: each stage's figure is its median
-over the files that hold the technique (its first row at the thread count, the only one
-or --threads); a technique may be swept apart (reference-soft, with fewer runs). The
+LIST --threads N --runs R --out DIR`, the .json file in DIR) whose rows fill it. A sweep's
+stage times are medians over its R measured frames; a technique in several files takes the
+median of their figures (its first row at the thread count, the only one or --threads); a
+technique may be swept apart (reference-soft, with fewer runs). The
 camera's size is the sweep's --width and --height, else the scene file's camera
 (assets/scenes/SCENE.json). A stage a technique reported that the data file does not
 classify is an error, as is a technique it does not list (tests/app/technique_stages_test.py
@@ -57,9 +57,8 @@ def camera_pixels(sweep):
 
 
 def scene_column(files, threads):
-    """{technique: {stage: ms per Mpixel}} from the rows of the files at the thread count: a
-    sweep's stats are its last frame's, so each stage's median over the files that hold the
-    technique (its first setting in each)."""
+    """{technique: {stage: ms per Mpixel}} from the rows of the files at the thread count: each
+    stage's median over the files that hold the technique (its first setting in each)."""
     times = {}
     for path in files:
         with open(path) as f:

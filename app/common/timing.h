@@ -22,9 +22,16 @@ inline Timing summarizeTimes(std::vector<double> ms) {
     return {n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]), ms.front()};
 }
 
+// A stage's time (the "<stage>_ms" stats of shadows/stage_timer.h) moves from frame to frame
+// as the frame's does: each of `last`'s becomes its median over `runs` (every measured frame's
+// stats, `last`'s included), as Timing summarizes the whole; the other stats are the same in
+// every frame and stay as they are.
+void takeStageMedians(std::vector<TechniqueStat>& last, const std::vector<std::vector<TechniqueStat>>& runs);
+
 // Warm-up frames, then `runs` measured frames; the median and minimum of
-// Frame::techniqueMs, and the last frame. Every frame, warm-up ones included, is counted
-// in `frames`.
+// Frame::techniqueMs, and the last frame, its stage times ("<stage>_ms" stats) replaced by
+// their medians over the measured frames. Every frame, warm-up ones included, is counted in
+// `frames`.
 struct TimedFrames {
     Timing timing;
     Frame last;

@@ -48,7 +48,7 @@ const std::string& referenceFor(const Technique& technique, const SweepOptions& 
     return options.reference.empty() ? technique.referenceName : options.reference;
 }
 
-// Errors and stats come from the last measured frame.
+// Errors and stats come from the last measured frame, its stage times medians (timeFrames).
 SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference, const Technique& technique,
                  const FrameSettings& settings, const SweepOptions& options, const ProgressStage& frames) {
     const TimedFrames timed = timeFrames(prepared, technique, settings, options.warmupRuns, options.runs, frames);

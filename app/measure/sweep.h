@@ -94,7 +94,7 @@ struct SweepRow {
     // Each light's own figures (scoreLights(), in the scene's order) for a scene of several
     // lights; empty for one light, whose figures are `errors`.
     std::vector<ErrorFigures> lightErrors;
-    std::vector<TechniqueStat> stats;              // of the last measured frame
+    std::vector<TechniqueStat> stats;              // of the last measured frame, stage times medians
     FrameImages images;                            // with SweepOptions::imagesOutDir: the same at every thread count
     std::string settingsLabel() const;             // "a=1 b=2", or "defaults"
 };

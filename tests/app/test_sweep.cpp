@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/common/timing.h"
 #include "app/measure/sweep.h"
 #include "app/measure/sweep_json.h"
 #include "app/plots/sweep_plot.h"
@@ -313,4 +314,23 @@ TEST_CASE("sweep file stem: every technique at once stays a short name, one per 
     CHECK(sweepFileStem(results) != all);
     results.techniques.pop_back();
     CHECK(sweepFileStem(results) != all);
+}
+
+TEST_CASE("timing: the median and minimum of the runs, and each stage's median over them") {
+    const Timing odd = summarizeTimes({5.0, 1.0, 3.0});
+    CHECK(odd.medianMs == 3.0);
+    CHECK(odd.minMs == 1.0);
+    CHECK(summarizeTimes({4.0, 1.0, 3.0, 2.0}).medianMs == 2.5);
+    // Three frames: a stage's time is its median; a count stays the last frame's.
+    const std::vector<std::vector<TechniqueStat>> runs = {
+        {{"map_ms", 9.0}, {"texels", 64.0}, {"lookup_ms", 1.0}},
+        {{"map_ms", 2.0}, {"texels", 64.0}, {"lookup_ms", 7.0}},
+        {{"map_ms", 4.0}, {"texels", 64.0}, {"lookup_ms", 3.0}},
+    };
+    std::vector<TechniqueStat> last = runs.back();
+    takeStageMedians(last, runs);
+    REQUIRE(last.size() == 3);
+    CHECK(last[0].value == 4.0);
+    CHECK(last[1].value == 64.0);
+    CHECK(last[2].value == 3.0);
 }
