@@ -7,7 +7,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "raster/clip.h"
 #include "raster/setup.h"
@@ -70,6 +72,20 @@ void clipAndSetup(SetupQueue& queue, const TransformedVertices& v, const VertexS
     for (int k = 1; k + 1 < n; ++k) queue.push({window[0], window[k], window[k + 1]}, primitive);
 }
 
+// The largest vertex index of the draw, in parallel: a pass over every index that would
+// otherwise be the draw's longest serial part.
+uint32_t largestIndex(std::span<const glm::uvec3> triangles) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, triangles.size(), Rasterizer::kChunkTriangles), uint32_t(0),
+        [&](const tbb::blocked_range<size_t>& range, uint32_t largest) {
+            for (size_t i = range.begin(); i != range.end(); ++i) {
+                largest = std::max({largest, triangles[i].x, triangles[i].y, triangles[i].z});
+            }
+            return largest;
+        },
+        [](uint32_t a, uint32_t b) { return std::max(a, b); });
+}
+
 Viewport viewportFor(const Framebuffer& fb, const PipelineState& state) {
     return {fb.width(), fb.height(), clipVolumeFor(fb.width(), fb.height(), state.clipFar)};
 }
@@ -102,10 +118,8 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
     if (uint64_t(call.firstPrimitiveId) + call.triangles.size() > uint64_t(UINT32_MAX) + 1) {
         throw std::invalid_argument("draw: primitive ids would pass 2^32 - 1");
     }
-    for (const glm::uvec3& t : call.triangles) {
-        if (t.x >= vertexCount || t.y >= vertexCount || t.z >= vertexCount) {
-            throw std::invalid_argument("draw: vertex index out of range (" + std::to_string(vertexCount) + " vertices)");
-        }
+    if (!call.triangles.empty() && largestIndex(call.triangles) >= vertexCount) {
+        throw std::invalid_argument("draw: vertex index out of range (" + std::to_string(vertexCount) + " vertices)");
     }
     const Attachments& has = framebuffer.attachments();
     if (state.stencil.enabled && !has.stencil) throw std::invalid_argument("draw: stencil test on a framebuffer without stencil");
