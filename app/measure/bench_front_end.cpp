@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <ctime>
+#include <utility>
 
 #include <tbb/parallel_for.h>
 
@@ -42,6 +44,25 @@ void runFloor(const WorldGeometry& world, const raster::TransformedVertices& v, 
     }
 }
 
+double cpuMsNow() {
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+// Wall and CPU time of one piece: `time`'s median, and the median CPU time of its runs
+// (warm-up runs included).
+std::pair<double, double> wallAndCpuMs(const std::function<Timing(const std::function<void()>&)>& time,
+                                       const std::function<void()>& run) {
+    std::vector<double> cpu;
+    const double wall = time([&] {
+                            const double start = cpuMsNow();
+                            run();
+                            cpu.push_back(cpuMsNow() - start);
+                        }).medianMs;
+    return {wall, summarizeTimes(std::move(cpu)).medianMs};
+}
+
 }  // namespace
 
 std::vector<FrontEndTiming> timeFrontEnd(const WorldGeometry& world, const glm::mat4& clipFromWorld, int size,
@@ -51,27 +72,29 @@ std::vector<FrontEndTiming> timeFrontEnd(const WorldGeometry& world, const glm::
     raster::TransformedVertices vertices;
     raster::transformVertices(std::span<const glm::vec3>(world.positions), clipFromWorld, viewport, vertices);
     std::vector<uint64_t> entries(Rasterizer::kChunkTriangles * Rasterizer::kChunksPerBatch);
-    const double floor = time([&] { runFloor(world, vertices, entries); }).medianMs;
+    const auto floor = wallAndCpuMs(time, [&] { runFloor(world, vertices, entries); });
 
     raster::Framebuffer fb(size, size);
     Rasterizer rasterizer(simd);
     const raster::DrawCall call = raster::positionsDraw(world.positions, world.triangles, clipFromWorld);
-    double through[4];   // median ms of the draw through each DrawStage
+    std::pair<double, double> through[4];   // wall and CPU ms of the draw through each DrawStage
     for (raster::DrawStage stage : {raster::DrawStage::Vertices, raster::DrawStage::Setup, raster::DrawStage::Binning,
                                     raster::DrawStage::Tiles}) {
-        through[int(stage)] = time([&] {
-                                  if (stage == raster::DrawStage::Tiles) fb.clearDepth(1.0f);
-                                  rasterizer.draw(fb, state, call, stage);
-                              }).medianMs;
+        through[int(stage)] = wallAndCpuMs(time, [&] {
+            if (stage == raster::DrawStage::Tiles) fb.clearDepth(1.0f);
+            rasterizer.draw(fb, state, call, stage);
+        });
     }
     std::vector<FrontEndTiming> rows;
-    const auto row = [&](const char* stage, double ms) { rows.push_back({"", stage, 1, world.triangles.size(), ms}); };
-    row("floor", floor);
-    row("vertex stage", through[0]);
-    row("set-up", through[1] - through[0]);
-    row("binning", through[2] - through[1]);
-    row("set-up + binning", through[2] - through[0]);
-    row("light pass", through[3]);
+    const auto row = [&](const char* stage, std::pair<double, double> to, std::pair<double, double> from) {
+        rows.push_back({"", stage, 1, world.triangles.size(), to.first - from.first, to.second - from.second});
+    };
+    row("floor", floor, {});
+    row("vertex stage", through[0], {});
+    row("set-up", through[1], through[0]);
+    row("binning", through[2], through[1]);
+    row("set-up + binning", through[2], through[0]);
+    row("light pass", through[3], {});
     return rows;
 }
 

@@ -7,8 +7,11 @@
 // (Rasterizer::kChunkTriangles, kChunksPerBatch). The stages are the rasterizer's own draw
 // stopped after a stage (DrawStage), so they run the same chunks on the same threads; a
 // stage's time is the difference of two such draws' medians (set-up: through set-up minus
-// through the vertex stage), and the light pass is the whole draw. Per core: triangles /
-// (median seconds x threads), so perfect scaling keeps the figure.
+// through the vertex stage), and the light pass is the whole draw. Per core, two ways:
+// triangles / (median seconds x threads), so perfect scaling keeps the figure; and
+// triangles / the process's median CPU seconds per run (CLOCK_PROCESS_CPUTIME_ID), which a
+// machine shared with other work does not inflate by the time the scheduler gave away
+// (idle TBB workers spinning between a draw's parallel loops count as CPU).
 #pragma once
 
 #include <functional>
@@ -29,7 +32,9 @@ struct FrontEndTiming {
     int threads = 1;
     size_t triangles = 0;
     double medianMs = 0.0;
+    double cpuMs = 0.0;   // median process CPU time of a run, every thread's summed
     double mtrisPerSecondPerCore() const { return double(triangles) / (medianMs * 1e3 * threads); }
+    double mtrisPerCpuSecond() const { return double(triangles) / (cpuMs * 1e3); }
 };
 
 // Times the time-able pieces with `time` (warm-up and measured runs, the caller's protocol)
