@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <ctime>
-#include <utility>
 
 #include <tbb/parallel_for.h>
 
@@ -50,10 +49,14 @@ double cpuMsNow() {
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
-// Wall and CPU time of one piece: `time`'s median, and the median CPU time of its runs
+// What one piece costs: `time`'s median wall time, and the median CPU time of its runs
 // (warm-up runs included).
-std::pair<double, double> wallAndCpuMs(const std::function<Timing(const std::function<void()>&)>& time,
-                                       const std::function<void()>& run) {
+struct Cost {
+    double wallMs = 0.0, cpuMs = 0.0;
+};
+
+Cost costOf(const std::function<Timing(const std::function<void()>&)>& time,
+           const std::function<void()>& run) {
     std::vector<double> cpu;
     const double wall = time([&] {
                             const double start = cpuMsNow();
@@ -72,22 +75,23 @@ std::vector<FrontEndTiming> timeFrontEnd(const WorldGeometry& world, const glm::
     raster::TransformedVertices vertices;
     raster::transformVertices(std::span<const glm::vec3>(world.positions), clipFromWorld, viewport, vertices);
     std::vector<uint64_t> entries(Rasterizer::kChunkTriangles * Rasterizer::kChunksPerBatch);
-    const auto floor = wallAndCpuMs(time, [&] { runFloor(world, vertices, entries); });
+    const Cost floor = costOf(time, [&] { runFloor(world, vertices, entries); });
 
     raster::Framebuffer fb(size, size);
     Rasterizer rasterizer(simd);
     const raster::DrawCall call = raster::positionsDraw(world.positions, world.triangles, clipFromWorld);
-    std::pair<double, double> through[4];   // wall and CPU ms of the draw through each DrawStage
+    Cost through[4];   // of the draw through each DrawStage
     for (raster::DrawStage stage : {raster::DrawStage::Vertices, raster::DrawStage::Setup, raster::DrawStage::Binning,
                                     raster::DrawStage::Tiles}) {
-        through[int(stage)] = wallAndCpuMs(time, [&] {
+        through[int(stage)] = costOf(time, [&] {
             if (stage == raster::DrawStage::Tiles) fb.clearDepth(1.0f);
             rasterizer.draw(fb, state, call, stage);
         });
     }
     std::vector<FrontEndTiming> rows;
-    const auto row = [&](const char* stage, std::pair<double, double> to, std::pair<double, double> from) {
-        rows.push_back({"", stage, 1, world.triangles.size(), to.first - from.first, to.second - from.second});
+    // A stage costs the draw through it less the draw through the stage before.
+    const auto row = [&](const char* stage, const Cost& to, const Cost& from) {
+        rows.push_back({"", stage, 1, world.triangles.size(), to.wallMs - from.wallMs, to.cpuMs - from.cpuMs});
     };
     row("floor", floor, {});
     row("vertex stage", through[0], {});
