@@ -48,9 +48,12 @@ void fillBins(std::vector<SetupChunk>& chunks, size_t first, size_t last, int ti
     tbb::parallel_for(first, last, [&](size_t c) {
         SetupChunk& chunk = chunks[c];
         size_t* next = cursor.data() + (c - first) * tileCount;
+        // Setup left every `varyings` null: a draw without planes writes no triangle here,
+        // which would otherwise dirty every cache line of the chunk a second time.
+        const bool planes = !chunk.planes.empty();
         for (size_t i = 0; i < chunk.triangles.size(); ++i) {
             TriangleSetup& t = chunk.triangles[i];
-            t.varyings = chunk.planes.empty() ? nullptr : chunk.planes.data() + chunk.planeStart[i];
+            if (planes) t.varyings = chunk.planes.data() + chunk.planeStart[i];
             const TileRange r = tilesTouched(t);
             for (int ty = r.y0; ty <= r.y1; ++ty) {
                 for (int tx = r.x0; tx <= r.x1; ++tx) bins.entries[next[size_t(ty) * size_t(tilesX) + size_t(tx)]++] = &t;

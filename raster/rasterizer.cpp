@@ -7,18 +7,15 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "raster/clip.h"
 #include "raster/setup.h"
 
 namespace shadowlab::raster {
 namespace {
-
-// Triangles per front-end chunk, and chunks per batch: a batch is set up, binned and
-// rasterized before the next, which bounds the memory a huge draw needs.
-constexpr size_t kChunkTriangles = 4096;
-constexpr size_t kChunksPerBatch = 64;
 
 const float* varyingsOf(const VertexStream& stream, uint32_t index) {
     return stream.varyingCount == 0 ? nullptr : stream.varyings.data() + size_t(index) * size_t(stream.varyingCount);
@@ -75,6 +72,20 @@ void clipAndSetup(SetupQueue& queue, const TransformedVertices& v, const VertexS
     for (int k = 1; k + 1 < n; ++k) queue.push({window[0], window[k], window[k + 1]}, primitive);
 }
 
+// The largest vertex index of the draw, in parallel: a pass over every index that would
+// otherwise be the draw's longest serial part.
+uint32_t largestIndex(std::span<const glm::uvec3> triangles) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, triangles.size(), Rasterizer::kChunkTriangles), uint32_t(0),
+        [&](const tbb::blocked_range<size_t>& range, uint32_t largest) {
+            for (size_t i = range.begin(); i != range.end(); ++i) {
+                largest = std::max({largest, triangles[i].x, triangles[i].y, triangles[i].z});
+            }
+            return largest;
+        },
+        [](uint32_t a, uint32_t b) { return std::max(a, b); });
+}
+
 Viewport viewportFor(const Framebuffer& fb, const PipelineState& state) {
     return {fb.width(), fb.height(), clipVolumeFor(fb.width(), fb.height(), state.clipFar)};
 }
@@ -107,10 +118,8 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
     if (uint64_t(call.firstPrimitiveId) + call.triangles.size() > uint64_t(UINT32_MAX) + 1) {
         throw std::invalid_argument("draw: primitive ids would pass 2^32 - 1");
     }
-    for (const glm::uvec3& t : call.triangles) {
-        if (t.x >= vertexCount || t.y >= vertexCount || t.z >= vertexCount) {
-            throw std::invalid_argument("draw: vertex index out of range (" + std::to_string(vertexCount) + " vertices)");
-        }
+    if (!call.triangles.empty() && largestIndex(call.triangles) >= vertexCount) {
+        throw std::invalid_argument("draw: vertex index out of range (" + std::to_string(vertexCount) + " vertices)");
     }
     const Attachments& has = framebuffer.attachments();
     if (state.stencil.enabled && !has.stencil) throw std::invalid_argument("draw: stencil test on a framebuffer without stencil");
@@ -125,7 +134,8 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
 }
 
 void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& viewport, const PipelineState& state,
-                             const DrawCall& call, size_t firstTriangle, size_t triangleCount, size_t chunkCount) {
+                             const DrawCall& call, size_t firstTriangle, size_t triangleCount, size_t chunkCount,
+                             bool binning) {
     const SetupConstants constants = setupConstants(framebuffer.width(), framebuffer.height(), state, call.vertices.varyingCount);
     tbb::parallel_for(size_t(0), chunkCount, [&](size_t c) {
         SetupChunk& chunk = chunks_[c];
@@ -151,7 +161,7 @@ void Rasterizer::runFrontEnd(const Framebuffer& framebuffer, const Viewport& vie
             }
         }
         queue.flush();
-        countTiles(chunk, framebuffer.tilesX(), framebuffer.tilesY());
+        if (binning) countTiles(chunk, framebuffer.tilesX(), framebuffer.tilesY());
     });
 }
 
@@ -175,7 +185,7 @@ uint64_t Rasterizer::runBackEnd(Framebuffer& framebuffer, const DrawConstants& c
     return std::accumulate(tileFragments_.begin(), tileFragments_.end(), uint64_t(0));
 }
 
-void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) {
+void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call, DrawStage through) {
     validate(framebuffer, state, call);
     const Viewport viewport = viewportFor(framebuffer, state);
     if (call.vertices.positions.empty()) {
@@ -183,6 +193,7 @@ void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, cons
     } else {
         transformVertices(call.vertices.positions, call.clipFromObject, viewport, vertices_);
     }
+    if (through == DrawStage::Vertices) return;
     DrawConstants constants = {state, {call.constantColor.r, call.constantColor.g, call.constantColor.b, call.constantColor.a},
                                call.vertices.varyingCount};
     const TileKernel kernel =
@@ -194,12 +205,12 @@ void Rasterizer::draw(Framebuffer& framebuffer, const PipelineState& state, cons
     for (size_t first = 0; first < call.triangles.size(); first += batchTriangles) {
         const size_t count = std::min(batchTriangles, call.triangles.size() - first);
         const size_t chunkCount = (count + kChunkTriangles - 1) / kChunkTriangles;
-        runFrontEnd(framebuffer, viewport, state, call, first, count, chunkCount);
-        for (size_t group = 0; group < chunkCount;) {
+        runFrontEnd(framebuffer, viewport, state, call, first, count, chunkCount, through >= DrawStage::Binning);
+        for (size_t group = 0; group < chunkCount && through >= DrawStage::Binning;) {
             size_t end = group + 1, entries = chunks_[group].entryCount;
             while (end < chunkCount && entries + chunks_[end].entryCount <= binEntryBudget_) entries += chunks_[end++].entryCount;
             fillBins(chunks_, group, end, framebuffer.tilesX(), framebuffer.tilesY(), bins_);
-            stats_.fragments += runBackEnd(framebuffer, constants, kernel);
+            if (through == DrawStage::Tiles) stats_.fragments += runBackEnd(framebuffer, constants, kernel);
             stats_.binEntries += entries;
             group = end;
         }

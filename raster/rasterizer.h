@@ -58,8 +58,18 @@ struct RasterStats {
     uint64_t fragments = 0;                    // covered pixels, before any test (the fill)
 };
 
+// How far a draw runs: every stage, or only up to the end of one, which the front end's
+// benchmark (app/measure/bench_front_end.h) uses to time the stages on the draw's own chunks
+// and threads. A draw that stops before the tiles leaves the framebuffer as it was.
+enum class DrawStage { Vertices, Setup, Binning, Tiles };
+
 class Rasterizer {
 public:
+    // Triangles per front-end chunk, and chunks per batch: a batch is set up, binned and
+    // rasterized before the next, which bounds the memory a huge draw needs. Chunks run in
+    // parallel (bin.h).
+    static constexpr size_t kChunkTriangles = 4096;
+    static constexpr size_t kChunksPerBatch = 64;
     // Bin entries (8 bytes each) held at once: a batch's chunks of triangles are binned and
     // rasterized in consecutive groups under this budget, so each tile still sees its
     // triangles in order. A group holds at least one chunk (4096 triangles), which bounds
@@ -72,7 +82,8 @@ public:
     // Throws std::invalid_argument for an index out of range, too many varyings, primitive
     // ids past 2^32 - 1, or an output, stencil or colour state the framebuffer has no
     // buffer for.
-    void draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call);
+    void draw(Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call,
+              DrawStage through = DrawStage::Tiles);
 
     const RasterStats& stats() const { return stats_; }
     void resetStats() { stats_ = {}; }
@@ -80,7 +91,7 @@ public:
 private:
     void validate(const Framebuffer& framebuffer, const PipelineState& state, const DrawCall& call) const;
     void runFrontEnd(const Framebuffer& framebuffer, const Viewport& viewport, const PipelineState& state,
-                     const DrawCall& call, size_t firstTriangle, size_t triangleCount, size_t chunkCount);
+                     const DrawCall& call, size_t firstTriangle, size_t triangleCount, size_t chunkCount, bool binning);
     uint64_t runBackEnd(Framebuffer& framebuffer, const DrawConstants& constants, TileKernel kernel);
 
     SimdLevel level_;

@@ -61,12 +61,18 @@ inline Mask64 precedes(const SetupCorner& a, const SetupCorner& b) {
     return simd::cmpLt(a.y, b.y) | (simd::cmpEq(a.y, b.y) & simd::cmpLt(a.x, b.x));
 }
 
-inline SetupCorner selectCorner(Mask64 m, const SetupCorner& a, const SetupCorner& b, int varyingCount) {
-    SetupCorner c;
-    c.x = simd::select(m, a.x, b.x), c.y = simd::select(m, a.y, b.y);
-    c.z = simd::select(m, a.z, b.z), c.inverseW = simd::select(m, a.inverseW, b.inverseW);
-    for (int v = 0; v < varyingCount; ++v) c.varyings[v] = simd::select(m, a.varyings[v], b.varyings[v]);
-    return c;
+// out = m ? a : b lane by lane, and below a copy, for what setup reads of a corner: the
+// coordinates and the draw's varyings. (Whole SetupCorner copies, kMaxVaryings varyings
+// each, 768 bytes on AVX-512, were a third of setup's time.) `out` may be `b`.
+inline void selectCorner(Mask64 m, const SetupCorner& a, const SetupCorner& b, int varyingCount, SetupCorner& out) {
+    out.x = simd::select(m, a.x, b.x), out.y = simd::select(m, a.y, b.y);
+    out.z = simd::select(m, a.z, b.z), out.inverseW = simd::select(m, a.inverseW, b.inverseW);
+    for (int v = 0; v < varyingCount; ++v) out.varyings[v] = simd::select(m, a.varyings[v], b.varyings[v]);
+}
+
+inline void copyCorner(SetupCorner& to, const SetupCorner& from, int varyingCount) {
+    to.x = from.x, to.y = from.y, to.z = from.z, to.inverseW = from.inverseW;
+    for (int v = 0; v < varyingCount; ++v) to.varyings[v] = from.varyings[v];
 }
 
 // Rotates each lane's corners (winding kept) so the one with the smallest (y, x) comes
@@ -74,12 +80,15 @@ inline SetupCorner selectCorner(Mask64 m, const SetupCorner& a, const SetupCorne
 // submitted (llvmpipe warns that the same primitive rotated otherwise gives different z).
 inline void canonicalRotation(SetupCorner (&c)[3], int varyingCount) {
     const Mask64 second = precedes(c[1], c[0]);
-    const Mask64 third = precedes(c[2], selectCorner(second, c[1], c[0], varyingCount));
+    SetupCorner lower;   // the first of corners 0 and 1; precedes reads its x and y
+    selectCorner(second, c[1], c[0], 0, lower);
+    const Mask64 third = precedes(c[2], lower);
     SetupCorner r[3];
     for (int k = 0; k < 3; ++k) {
-        r[k] = selectCorner(third, c[(k + 2) % 3], selectCorner(second, c[(k + 1) % 3], c[k], varyingCount), varyingCount);
+        selectCorner(second, c[(k + 1) % 3], c[k], varyingCount, r[k]);
+        selectCorner(third, c[(k + 2) % 3], r[k], varyingCount, r[k]);
     }
-    for (int k = 0; k < 3; ++k) c[k] = r[k];
+    for (int k = 0; k < 3; ++k) copyCorner(c[k], r[k], varyingCount);
 }
 
 inline F64 ceil(F64 a) { return simd::splat64(0.0) - simd::floor(simd::splat64(0.0) - a); }

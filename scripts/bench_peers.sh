@@ -41,7 +41,7 @@ trap 'rm -rf "$work"' EXIT
 echo "llvmpipe peer ($threads threads) ..." >&2
 "$peers" --scenes "$scenes" --threads "$threads" --runs "$runs" --json "$work/peers.json" > /dev/null
 echo "shadowlab bench ($threads threads) ..." >&2
-"$shadowlab" bench --scenes "$scenes" --threads "$threads" --runs "$runs" --json "$work/bench.json" > /dev/null
+"$shadowlab" bench --scenes "$scenes" --threads "$threads" --runs "$runs" --parts passes,rays --json "$work/bench.json" > /dev/null
 IFS=',' read -r -a scene_list <<< "$scenes"
 for scene in "${scene_list[@]}"; do
     echo "shadowlab sweep $scene ($threads threads) ..." >&2

@@ -35,6 +35,10 @@ void addBenchCommand(CLI::App& command) {
     BenchArgs& a = argumentsRunBy<BenchArgs>(command, runBenchCommand);
     CLI::App* b = command.description("time depth-only passes and reference rays on the built-in scenes");
     b->add_option("--scenes", a.options.scenes, "scenes to measure")->delimiter(',')->capture_default_str();
+    b->add_option("--parts", a.options.parts, "tables to measure")
+        ->delimiter(',')
+        ->capture_default_str()
+        ->check(CLI::IsMember({"passes", "front-end", "rays"}));
     b->add_option("--threads", a.options.threads, "thread counts")->delimiter(',')->capture_default_str()->check(CLI::Range(1, kMaxThreads));
     addTimingOptions(b, "runs per row", a.options.runs, a.options.warmupRuns, a.simd);
     b->add_option("--json", a.json, "also write the rows as JSON");

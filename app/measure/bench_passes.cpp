@@ -22,9 +22,16 @@
 namespace shadowlab {
 namespace {
 
-// Five rows per scene and thread count: the light's pass culled and with both facings, the
-// camera's pass, the rays with the BVH built once and built in every run.
-constexpr int kRowsPerSceneAndThreads = 5;
+bool measures(const BenchOptions& options, const char* part) {
+    return std::find(options.parts.begin(), options.parts.end(), part) != options.parts.end();
+}
+
+// Timed rows per scene and thread count: the light's pass culled and with both facings and
+// the camera's pass; the front end's floor and four draws; the rays with the BVH built once
+// and built in every run.
+uint64_t rowsPerSceneAndThreads(const BenchOptions& options) {
+    return (measures(options, "passes") ? 3 : 0) + (measures(options, "front-end") ? 5 : 0) + (measures(options, "rays") ? 2 : 0);
+}
 
 Timing timeRuns(const BenchOptions& options, const ProgressStage& runs, const std::function<void()>& run) {
     for (int k = 0; k < options.warmupRuns; ++k) {
@@ -112,6 +119,42 @@ double floorMs(const BenchResults& r, int threads) {
     return 0.0;
 }
 
+// The light's pass culled and with both facings, and the camera's pass.
+void timePasses(const BenchOptions& options, const ProgressStage& runs, const Scene& scene, const WorldGeometry& world,
+                int threads, BenchResults& results) {
+    PassTiming light = timeDepthPass(options, runs, world, lightClipFromWorld(scene), 2048, 2048);
+    light.scene = scene.name, light.pass = "light 2048x2048", light.threads = threads;
+    results.passes.push_back(light);
+    PassTiming both = timeDepthPass(options, runs, world, lightClipFromWorld(scene), 2048, 2048, true);
+    both.scene = scene.name, both.pass = "light 2048x2048 both facings", both.threads = threads;
+    results.passes.push_back(both);
+    PassTiming camera = timeDepthPass(options, runs, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
+    camera.scene = scene.name, camera.threads = threads;
+    camera.pass = "camera " + std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height);
+    results.passes.push_back(camera);
+}
+
+// The front-end table: each stage's median, per core, and against the floor of its scene
+// and thread count.
+std::string formatFrontEndText(const BenchResults& r) {
+    if (r.frontEnd.empty()) return "";
+    std::string out = "\nfront end of the light pass 2048x2048 both facings; per core: triangles / (median s x threads),"
+                      " and triangles / median CPU s\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "%-11s %-18s %7s %10s %10s %13s %8s %10s %13s %8s\n", "scene", "stage", "threads",
+                  "triangles", "median ms", "Mtris/s/core", "x floor", "CPU ms", "Mtris/CPU s", "x floor");
+    out += line;
+    const FrontEndTiming* floor = nullptr;
+    for (const FrontEndTiming& f : r.frontEnd) {
+        if (f.stage == "floor") floor = &f;
+        std::snprintf(line, sizeof line, "%-11s %-18s %7d %10zu %10.2f %13.1f %8.1f %10.2f %13.1f %8.1f\n", f.scene.c_str(),
+                      f.stage.c_str(), f.threads, f.triangles, f.medianMs, f.mtrisPerSecondPerCore(),
+                      f.medianMs / floor->medianMs, f.cpuMs, f.mtrisPerCpuSecond(), f.cpuMs / floor->cpuMs);
+        out += line;
+    }
+    return out;
+}
+
 }  // namespace
 
 glm::mat4 lightClipFromWorld(const Scene& scene) {
@@ -123,9 +166,11 @@ glm::mat4 lightClipFromWorld(const Scene& scene) {
 
 BenchResults runBench(const BenchOptions& options) {
     BenchResults results;
-    const uint64_t rows = (options.scenes.size() * kRowsPerSceneAndThreads + 1) * options.threads.size();
+    const bool passes = measures(options, "passes");
+    const uint64_t rows = (options.scenes.size() * rowsPerSceneAndThreads(options) + (passes ? 1 : 0)) * options.threads.size();
     const ProgressStage runs(options.progress, "bench: run", rows * uint64_t(options.warmupRuns + options.runs));
     for (int threads : options.threads) {
+        if (!passes) break;
         FloorTiming floor = withThreads(threads, [&] { return timeFloor(options, runs); });
         floor.threads = threads;
         results.floors.push_back(floor);
@@ -135,17 +180,16 @@ BenchResults runBench(const BenchOptions& options) {
         const WorldGeometry world = flatten(scene);
         for (int threads : options.threads) {
             withThreads(threads, [&] {
-                PassTiming light = timeDepthPass(options, runs, world, lightClipFromWorld(scene), 2048, 2048);
-                light.scene = name, light.pass = "light 2048x2048", light.threads = threads;
-                results.passes.push_back(light);
-                PassTiming both = timeDepthPass(options, runs, world, lightClipFromWorld(scene), 2048, 2048, true);
-                both.scene = name, both.pass = "light 2048x2048 both facings", both.threads = threads;
-                results.passes.push_back(both);
-                PassTiming camera =
-                    timeDepthPass(options, runs, world, clipFromWorld(scene.camera), scene.camera.width, scene.camera.height);
-                camera.scene = name, camera.threads = threads;
-                camera.pass = "camera " + std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height);
-                results.passes.push_back(camera);
+                if (passes) timePasses(options, runs, scene, world, threads, results);
+                if (measures(options, "front-end")) {
+                    const auto time = [&](const std::function<void()>& run) { return timeRuns(options, runs, run); };
+                    for (FrontEndTiming row : timeFrontEnd(world, lightClipFromWorld(scene), 2048, depthPassState(true),
+                                                           options.simd, time)) {
+                        row.scene = name, row.threads = threads;
+                        results.frontEnd.push_back(row);
+                    }
+                }
+                if (!measures(options, "rays")) return;
                 const GBuffer gbuffer = renderGBuffer(world, scene.camera, options.simd);
                 for (bool buildEachRun : {false, true}) {
                     RayTiming rays = timeReference(options, runs, scene, world, gbuffer, buildEachRun);
@@ -163,7 +207,7 @@ std::string formatBenchText(const BenchResults& r) {
     char line[256];
     std::snprintf(line, sizeof line, "%-11s %-30s %7s %6s %10s %10s %9s %9s %9s %10s %10s\n", "scene", "pass", "threads",
                   "simd", "triangles", "median ms", "min ms", "Mtris/s", "Mpix/s", "set up", "tile pairs");
-    out += line;
+    if (!r.passes.empty()) out += line;
     for (const PassTiming& p : r.passes) {
         std::snprintf(line, sizeof line, "%-11s %-30s %7d %6s %10zu %10.2f %9.2f %9.1f %9.1f %10llu %10llu\n",
                       p.scene.c_str(), p.pass.c_str(), p.threads, p.simd.c_str(), p.triangles, p.medianMs, p.minMs,
@@ -182,6 +226,8 @@ std::string formatBenchText(const BenchResults& r) {
                       f.medianMs, f.minMs);
         out += line;
     }
+    out += formatFrontEndText(r);
+    if (r.rays.empty()) return out;
     std::snprintf(line, sizeof line, "\n%-11s %-14s %7s %10s %10s %9s %9s\n", "scene", "bvh", "threads", "rays", "median ms", "min ms",
                   "Mrays/s");
     out += line;
@@ -208,6 +254,12 @@ std::string formatBenchJson(const BenchResults& r) {
     for (const RayTiming& t : r.rays) {
         j["reference"].push_back({{"scene", t.scene}, {"bvh", t.bvh}, {"threads", t.threads}, {"rays", t.rays},
                                   {"median_ms", t.medianMs}, {"min_ms", t.minMs}, {"mrays_per_s", t.mraysPerSecond()}});
+    }
+    j["front_end"] = nlohmann::json::array();
+    for (const FrontEndTiming& f : r.frontEnd) {
+        j["front_end"].push_back({{"scene", f.scene}, {"stage", f.stage}, {"threads", f.threads}, {"triangles", f.triangles},
+                                  {"median_ms", f.medianMs}, {"mtris_per_s_per_core", f.mtrisPerSecondPerCore()},
+                                  {"cpu_ms", f.cpuMs}, {"mtris_per_cpu_s", f.mtrisPerCpuSecond()}});
     }
     j["floor"] = nlohmann::json::array();
     for (const FloorTiming& f : r.floors) j["floor"].push_back({{"threads", f.threads}, {"median_ms", f.medianMs}, {"min_ms", f.minMs}});

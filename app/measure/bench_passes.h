@@ -6,7 +6,9 @@
 // A pass is a depth clear plus one depth-only draw of every triangle with back faces culled;
 // the light's pass is also timed as the shadow-map technique draws its map: both facings
 // (no culling) and the default slope-scaled polygon offset (shadows/maps/shadow_bias.h).
-// The rays are timed with the Embree BVH built once, and built anew in every run.
+// The rays are timed with the Embree BVH built once, and built anew in every run. The
+// front-end table (bench_front_end.h) times the light pass with both facings stage by stage
+// against its floor.
 #pragma once
 
 #include <string>
@@ -14,6 +16,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/measure/bench_front_end.h"
 #include "raster/rasterizer.h"
 #include "scenes/scene.h"
 #include "shadows/progress.h"
@@ -43,6 +46,7 @@ struct RayTiming {
 struct BenchOptions {
     std::vector<std::string> scenes = {"sphere-box", "bunny", "throughput"};
     std::vector<int> threads = {1, 2};
+    std::vector<std::string> parts = {"passes", "front-end", "rays"};   // the tables to measure
     int warmupRuns = 2;
     int runs = 15;
     raster::SimdLevel simd = raster::bestSimdLevel();
@@ -60,6 +64,7 @@ struct BenchResults {
     std::vector<PassTiming> passes;
     std::vector<RayTiming> rays;
     std::vector<FloorTiming> floors;   // one per thread count
+    std::vector<FrontEndTiming> frontEnd;
 };
 
 // The light pass's matrix: the scene's first light looking at the origin, perspective with

@@ -187,3 +187,20 @@ TEST_CASE("setup kernel: edges, bounds and planes equal the int64 and frexp/ldex
     CHECK(accepted > 1000);
     CHECK(culledByCount > 100);
 }
+
+TEST_CASE("snapping: roundToEven is nearbyint's rounding over the whole snapped range, ties and signs included") {
+    // Every tie in the range rounds to the even neighbour, as nearbyint does; a broken shift
+    // (2^52 alone, or truncation) would round half of them the other way.
+    for (double x : {0.5, 1.5, 2.5, -0.5, -1.5, -2.5, 0x1p22 - 0.5, -0x1p22 + 0.5, 0.49999999999999994, -0.0}) {
+        CAPTURE(x);
+        CHECK(int32_t(roundToEven(x)) == int32_t(std::nearbyint(x)));
+    }
+    std::mt19937_64 random(37);
+    std::uniform_real_distribution<double> coordinate(-0x1p23, 0x1p23);
+    for (int k = 0; k < 100000; ++k) {
+        const double x = coordinate(random), tie = std::floor(x) + 0.5;
+        CAPTURE(x);
+        CHECK(roundToEven(x) == std::nearbyint(x));
+        CHECK(roundToEven(tie) == std::nearbyint(tie));
+    }
+}
