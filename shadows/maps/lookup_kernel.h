@@ -48,9 +48,11 @@ struct LookupMap {
 // The bias modes and filters, numbered as BiasMode and FilterKind (checked where they meet).
 enum LookupBias : int { kLookupConstant, kLookupSlopeScaled, kLookupNormalOffset, kLookupReceiverPlane };
 // kLookupPcss is percentage-closer soft shadows, the filter of shadows/filtered/pcss.cpp;
-// kLookupChs contact-hardening soft shadows, that of shadows/filtered/contact_hardening.cpp.
+// kLookupChs contact-hardening soft shadows, that of shadows/filtered/contact_hardening.cpp;
+// kLookupBlockerSearch PCSS's blocker search alone, for the filtered maps' width=pcss.
 enum LookupFilter : int {
-    kLookupNearest, kLookupBilinear, kLookupGrid, kLookupPoisson, kLookupPcss, kLookupChs, kLookupFilterCount
+    kLookupNearest, kLookupBilinear, kLookupGrid, kLookupPoisson, kLookupPcss, kLookupChs, kLookupBlockerSearch,
+    kLookupFilterCount
 };
 
 struct LookupConstants {
@@ -68,7 +70,7 @@ struct LookupConstants {
     const float* diskY;
     int diskTaps;
     float radiusTexels;         // poisson: the disk's radius, texels
-    // pcss: the blocker search's unit-disk taps and the fraction of the light's cone it
+    // pcss and the blocker search: the search's unit-disk taps and the fraction of the light's cone it
     // covers, the light's width in texels at unit distance per axis (w_light of eq. 7.6),
     // and the perspective map's near and far distances.
     const float* searchX;
@@ -93,7 +95,8 @@ struct ReceiverArrays {
     float* slopeX;
     float* slopeY;
     float* tolerance;
-    float* distance;            // clip w, for a perspective map the distance along its axis (pcss, chs; null otherwise)
+    float* distance;            // clip w, for a perspective map the distance along its axis (pcss, chs, blocker
+                                // search; null otherwise)
 };
 
 // One run of pixels of a row; count is a multiple of the kernel's width.
@@ -108,7 +111,8 @@ struct LookupRow {
     const float* rotationSin;
     ReceiverArrays receivers;   // written by the projection, read by the filter
     float* visibility;          // out: the lit fraction, 0 where served = 0
-    // out, pcss and chs only (zeroed by the caller: vectors with no served pixel are not written):
+    // out, pcss, chs and the blocker search only (zeroed by the caller: vectors with no
+    // served pixel are not written); the width not for the blocker search:
     float* blockerDistance;     // the blockers' mean distance d_o, 0 without blockers
     float* penumbraWidth;       // the filter's width in texels (eq. 7.6), 0 likewise
     // out, pcss with a hierarchy only (else null): the taps whose answer the hierarchy proved

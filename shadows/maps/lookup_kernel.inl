@@ -398,6 +398,22 @@ struct Pcss {
     }
 };
 
+// PCSS's blocker search alone (steps 1 and 2), for the filtered maps' width=pcss
+// (shadows/filtered/filtered_shadow_map.cpp), which filter their own moments over the eq.
+// 7.6 width: d_o into blockerDistance (0 without blockers), and V = 1 where no blocker was
+// found (lit), 0 where the caller's filter decides.
+struct BlockerSearch {
+    template <bool kPlane>
+    static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
+        const F32 dr = r.distance, zero = simd::splat(0.0f);
+        const BlockerEstimate blockers =
+            searchDisk<kPlane>(c, map, r, simd::load(row.rotationCos + i), simd::load(row.rotationSin + i),
+                               simd::cmpLt(simd::splat(c.zNear), dr), searchRadius(c, dr, 0), searchRadius(c, dr, 1));
+        simd::store(row.blockerDistance + i, simd::select(blockers.found, blockers.occluder, zero));
+        return simd::select(blockers.found, zero, simd::splat(1.0f));
+    }
+};
+
 // Contact-hardening soft shadows (shadows/filtered/contact_hardening.cpp: PCSS read on the
 // levels of the min/max hierarchy; RTR 7.6, Sikachev et al.), the receiver on its plane:
 //   1. blocker search over the light's cone cut at the near plane, read at the first level
@@ -639,6 +655,7 @@ inline const LookupKernels& kernels() {
         addFilter<Poisson>(t, kLookupPoisson);
         addFilter<Pcss>(t, kLookupPcss);
         addFilter<Chs>(t, kLookupChs);
+        addFilter<BlockerSearch>(t, kLookupBlockerSearch);
         return t;
     }();
     return table;

@@ -60,12 +60,13 @@ struct LookupPass::Tables {
     int width = 1;
     bool rotated = false;     // the filter turns a Poisson disk per pixel
     std::vector<float> rotationCos, rotationSin;   // rotated: per angle of pcf.h, its cosine and sine
-    bool soft = false;        // pcss, chs: it reads the receivers' distance and writes two more images
+    bool soft = false;        // pcss, chs, blocker search: it reads the receivers' distance, writes d_o
+    bool penumbra = false;    // pcss, chs: it writes the penumbra's width too
     bool proving = false;     // pcss with a hierarchy: it writes the known taps too
     bool chs = false;         // it writes the blocker search's level too
-    // pcss, chs: the light's width (eq. 7.6) and the perspective map's planes.
+    // pcss, chs, blocker search: the light's width (eq. 7.6) and the perspective map's planes.
     void setSoft(const DepthMap& map, const glm::dvec2& lightTexels);
-    // pcss: the search's disk and region.
+    // pcss, blocker search: the search's disk and region.
     void setSearch(const PcfKernel& search, double region);
 };
 
@@ -98,8 +99,9 @@ LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& lig
     reach = vector.reach, project = vector.project[plane], filter = vector.filter[filterIndex][plane];
     scalarReach = scalar.reach, scalarProject = scalar.project[plane], scalarFilter = scalar.filter[filterIndex][plane];
     width = vector.width;
-    rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss;
-    soft = filterIndex == kLookupPcss || filterIndex == kLookupChs;
+    rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss || filterIndex == kLookupBlockerSearch;
+    penumbra = filterIndex == kLookupPcss || filterIndex == kLookupChs;
+    soft = penumbra || filterIndex == kLookupBlockerSearch;
     for (int a = 0; rotated && a < kPoissonRotations; ++a) {
         rotationCos.push_back(float(portable::cos(poissonRotationAngle(a))));
         rotationSin.push_back(float(portable::sin(poissonRotationAngle(a))));
@@ -132,6 +134,14 @@ LookupPass::LookupPass(const DepthMap& map, const Light& light, const Chs& chs, 
     t.chs = true;
 }
 
+LookupPass::LookupPass(const DepthMap& map, const Light& light, const BlockerSearch& search, raster::SimdLevel simd) {
+    BiasSettings plane;
+    plane.mode = BiasMode::ReceiverPlane;
+    tables_ = std::make_unique<Tables>(std::span(&map, 1), light, plane, PcfKernel{}, kLookupBlockerSearch, simd);
+    tables_->setSearch(search.search, search.searchRegion);
+    tables_->setSoft(map, search.lightTexels);
+}
+
 void LookupPass::Tables::setSearch(const PcfKernel& search, double region) {
     for (const glm::dvec2& d : search.disk) searchX.push_back(float(d.x)), searchY.push_back(float(d.y));
     constants.searchX = searchX.data(), constants.searchY = searchY.data(), constants.searchTaps = int(searchX.size());
@@ -150,8 +160,8 @@ static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
 
 void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outputs& out) const {
     const Tables& t = *tables_;
-    if (t.soft && (!out.blockerDistance || !out.penumbraWidth)) {
-        throw std::invalid_argument("shadow lookup: a soft pass writes the blocker distance and penumbra width too");
+    if ((t.soft && !out.blockerDistance) || (t.penumbra && !out.penumbraWidth)) {
+        throw std::invalid_argument("shadow lookup: a soft pass writes the blocker distance, and the penumbra width");
     }
     if (t.proving && !out.knownTaps) throw std::invalid_argument("shadow lookup: a hierarchy's pass writes known taps");
     if (t.chs && !out.searchLevel) throw std::invalid_argument("shadow lookup: a chs pass writes the search level");

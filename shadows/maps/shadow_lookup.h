@@ -100,6 +100,14 @@ public:
         const LookupHierarchy& hierarchy;
     };
     LookupPass(const DepthMap& map, const Light& light, const Chs& chs, raster::SimdLevel simd);
+    // PCSS's blocker search alone (the kernel's kLookupBlockerSearch) on such a map: the
+    // blockers' mean distance per pixel, V = 1 where it finds none, 0 where it does.
+    struct BlockerSearch {
+        const PcfKernel& search;
+        double searchRegion = 1.0;
+        glm::dvec2 lightTexels{0.0};
+    };
+    LookupPass(const DepthMap& map, const Light& light, const BlockerSearch& search, raster::SimdLevel simd);
     ~LookupPass();
 
     // A row's working memory: which map serves each pixel, the receivers as the maps see
@@ -111,8 +119,9 @@ public:
             : served(size_t(count)), receivers(7 * size_t(count)), rotationCos(size_t(count)), rotationSin(size_t(count)) {}
     };
 
-    // Whole images the pass writes, row by row; the next two only for pcss and chs, known
-    // taps only for pcss with a hierarchy, the search level only for chs (LookupRow).
+    // Whole images the pass writes, row by row; the blocker distance only for pcss, chs and
+    // the blocker search, the width for the first two, known taps only for pcss with a
+    // hierarchy, the search level only for chs (LookupRow).
     struct Outputs {
         float* visibility;
         float* blockerDistance = nullptr;

@@ -217,6 +217,52 @@ TEST_CASE("shadow lookup: contact hardening gives the scalar twin's bytes at eve
     }
 }
 
+TEST_CASE("shadow lookup: the blocker search alone gives the scalar twin's bytes, and PCSS's blocker distances") {
+    // The filtered maps' width=pcss search (kLookupBlockerSearch) is PCSS's steps 1 and 2:
+    // the same d_o at every pixel as the pcss filter's, V = 1 where it found no blocker.
+    const LookupScene& s = lookupScene();
+    BiasSettings plane;
+    plane.mode = BiasMode::ReceiverPlane;
+    const std::vector<DepthMap> maps = s.maps(plane, 512);
+    const PcfKernel search = makePcfKernel({FilterKind::Poisson, 3, 16, 1.0});
+    const PcfKernel filter = makePcfKernel({FilterKind::Poisson, 3, 32, 1.0});
+    const size_t n = s.g.pixelCount();
+    const auto run = [&](const LookupPass& pass, bool pcss, int threads) {
+        std::vector<float> v(n), blocker(n), width(n);
+        withThreads(threads, [&] {
+            tbb::parallel_for(0, s.g.height, [&](int j) {
+                LookupPass::Scratch scratch(s.g.width);
+                for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
+                pass.lookUpRow(s.g, j, scratch, {v.data(), blocker.data(), pcss ? width.data() : nullptr});
+            });
+        });
+        return std::pair(v, blocker);
+    };
+    const auto searchOnly = [&](raster::SimdLevel level, int threads) {
+        return run(LookupPass(maps[0], s.light, LookupPass::BlockerSearch{search, 1.0, glm::dvec2(40.0)}, level), false,
+                   threads);
+    };
+    const auto [twinV, twinBlocker] = searchOnly(raster::SimdLevel::Scalar, 1);
+    const auto [pcssV, pcssBlocker] =
+        run(LookupPass(maps[0], s.light, {search, 1.0, filter, glm::dvec2(40.0)}, raster::SimdLevel::Scalar), true, 1);
+    CHECK(sameBytes(twinBlocker, pcssBlocker));
+    int blocked = 0, wrong = 0;
+    for (size_t k = 0; k < n; ++k) {
+        blocked += twinBlocker[k] > 0.0f;
+        const float expected = pcssV[k] == 0.0f && twinBlocker[k] == 0.0f ? 0.0f : twinBlocker[k] > 0.0f ? 0.0f : 1.0f;
+        wrong += twinV[k] != expected;
+    }
+    CHECK(blocked > 30);
+    CHECK(wrong == 0);
+    for (raster::SimdLevel level : vectorLevels()) {
+        for (int threads : {1, 2}) {
+            const auto [v, blocker] = searchOnly(level, threads);
+            CHECK(sameBytes(v, twinV));
+            CHECK(sameBytes(blocker, twinBlocker));
+        }
+    }
+}
+
 TEST_CASE("shadow lookup: a vector across two maps takes each lane from its own map") {
     // Two different maps and a selector that alternates them in stripes 1.6 cm wide on the
     // ground, a few pixels each: many vectors hold lanes of both. Each lane must get what a
