@@ -18,9 +18,9 @@ for level in 2 4; do
 done
 keep pcss-known-taps hierarchy-known-taps
 
-# 2. chs: PCSS's search and filter read on the hierarchy's levels.
+# 2. chs: PCSS's search read on the hierarchy's levels.
 render chs-filter-nodes-8 assets/scenes/sphere-box.json chs $view --debug-buffers "$scratch/debug"
-keep chs-filter-level chs-filter-level
+keep chs-search-level chs-search-level
 render chs-filter-nodes-2 assets/scenes/sphere-box.json chs $view --param filter-nodes=2
 
 # 3. Backprojection: the light plot of one ground pixel in the sphere's penumbra.

@@ -10,11 +10,10 @@
 // Step 3 (pcss.cpp: PCF; filtered_shadow_map.cpp: a summed-area-table box) filters over
 // that width. The taps compare against the receiver's plane (receiver-plane depth bias,
 // RTR 7.5, Figure 7.24 middle), since a search region many texels wide on a slanted
-// receiver would otherwise find the receiver itself.
+// receiver would otherwise find the receiver itself. Both steps run in float in the shadow
+// lookup's vector kernel (shadows/maps/lookup_kernel.inl: searchDisk, eq. 7.6 in
+// penumbraTexels); here are their settings and the receiver's plane for the double passes.
 #pragma once
-
-#include <cstdint>
-#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -29,21 +28,10 @@ struct BlockerSearchSettings {
     double region = 1.0;            // fraction of Fernando's region (the full light cone)
 };
 
-struct PenumbraEstimate {
-    int blockers = 0;               // taps that found an occluder
-    double blockerDistance = 0.0;   // d_o: their mean distance from the light, m
-    glm::dvec2 widthTexels{0.0};    // eq. 7.6 per map axis (0 without blockers)
-};
-
 // search-taps, search-region: rows the techniques with a blocker search include.
 const SettingsTable<BlockerSearchSettings>& blockerSearchSettingsTable();
 
 // The receiver as the blocker search and PCF compare it: on its own plane.
 MapReceiver planeReceiver(const SoftShadowMap& soft, const glm::dvec3& P, const glm::dvec3& N);
-
-// disk: the search's Poisson taps on the unit disk (makePcfKernel), rotated per pixel.
-PenumbraEstimate estimatePenumbra(const SoftShadowMap& soft, const MapReceiver& receiver, double receiverDistance,
-                                  const BlockerSearchSettings& settings, const std::vector<glm::dvec2>& disk,
-                                  uint64_t pixel);
 
 }  // namespace shadowlab

@@ -9,21 +9,22 @@
 //      it spans at most `search-nodes` nodes a side; a node whose least depth is nearer than
 //      the receiver's plane anywhere over it holds a blocker, at that depth; d_o is their mean;
 //   2. eq. 7.6 gives the filter's width w, as PCSS;
-//   3. an N x N grid (N = `filter-nodes`) over the width w, read at the first level where w
-//      spans at most N nodes: a node proved lit counts lit, one whose greatest depth is
-//      nearer than the plane counts shadowed, and a mixed node takes the texel at the tap
-//      (a point sample, as a mip of depths can hold nothing better).
-// So a penumbra costs the same taps however wide it is: the sharp contact reads texels, the
-// wide far penumbra coarse nodes. V is the lit fraction; no blocker: 1. Pixels are
-// independent, so V is the same for any thread count.
-#include <algorithm>
-#include <cmath>
+//   3. an N x N grid (N = `filter-nodes`) over the width w, each tap the texel it falls in
+//      (a mip of depths holds nothing better than a point sample); where the hierarchy
+//      proves a footprint lit or shadowed, its taps are skipped.
+// So the search costs the same nodes however wide the penumbra is: the sharp contact reads
+// texels, the wide far penumbra coarse nodes. V is the lit fraction; no blocker: 1. The
+// three steps run in float in the shadow lookup's vector kernel (shadows/maps/
+// lookup_kernel.inl, filter kLookupChs), rows in parallel; V is the same bytes for any
+// thread count and SIMD level.
+#include <utility>
+#include <vector>
 
 #include "shadows/debug_buffers.h"
-#include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/pcss.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/min_max_hierarchy.h"
+#include "shadows/maps/shadow_lookup.h"
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
@@ -47,63 +48,8 @@ const SettingsTable<ChsSettings>& chsSettingsTable() {
             .integer("search-nodes", member(&S::searchNodes), 2, 64,
                      "blocker search: nodes per side of the region's level")
             .integer("filter-nodes", member(&S::filterNodes), 2, 64,
-                     "filter: N x N taps, read at the level that fits them");
+                     "filter: N x N taps over the eq. 7.6 width");
     return table;
-}
-
-struct Estimate {
-    double blockerDistance = 0.0;   // 0: no blocker
-    int level = 0;
-};
-
-// Steps 1 and 2: the blockers' mean distance, from the nodes of the search region.
-Estimate searchBlockers(const SoftShadowMap& soft, const MinMaxHierarchy& h, const MapReceiver& r, double dr,
-                        int nodes) {
-    const auto [x0, y0, x1, y1] = coneTexels(soft, r.texel, dr, soft.zNear());
-    Estimate e;
-    if (h.provedLit(r, x0, y0, x1, y1)) return e;   // no node could hold a blocker: skip the search
-    e.level = readingLevelFor(std::max(x1 - x0, y1 - y0), nodes, h.levels());
-    double sum = 0.0;
-    int blockers = 0;
-    for (int y = y0 >> e.level; y <= y1 >> e.level; ++y) {
-        for (int x = x0 >> e.level; x <= x1 >> e.level; ++x) {
-            // The node's least depth is a blocker wherever in the node it lies: a sufficient
-            // test, so no floor node counts (a necessary one, not proved lit, would count
-            // every node the proof cannot settle, at the floor's own depth).
-            const float least = e.level == 0 ? soft.map.at(x, y) : h.node(e.level, x, y).least;
-            if (least < 1.0f && double(least) + r.tolerance < planeLeastOver(r, e.level, x, y)) {
-                sum += soft.distanceOf(least), ++blockers;
-            }
-        }
-    }
-    if (blockers) e.blockerDistance = std::clamp(sum / blockers, soft.zNear(), dr);
-    return e;
-}
-
-// Step 3: the N x N grid over the filter's width, each tap answered by its node.
-double filterGrid(const SoftShadowMap& soft, const MinMaxHierarchy& h, const MapReceiver& r, glm::dvec2 radius,
-                  int n, int& level) {
-    radius = glm::max(radius, glm::dvec2(0.5));
-    level = readingLevelFor(int(std::ceil(2.0 * std::max(radius.x, radius.y))), n, h.levels());
-    const int last = soft.map.size - 1;
-    int lit = 0;
-    for (int b = 0; b < n; ++b) {
-        for (int a = 0; a < n; ++a) {
-            const glm::dvec2 at = r.texel + radius * glm::dvec2((2.0 * a + 1.0) / n - 1.0, (2.0 * b + 1.0) / n - 1.0);
-            const int tx = std::clamp(texelIndexOf(at.x), 0, last), ty = std::clamp(texelIndexOf(at.y), 0, last);
-            if (level == 0) {
-                lit += r.litBy(soft.map, tx, ty);
-                continue;
-            }
-            const int x = tx >> level, y = ty >> level;
-            if (h.nodeProvedLit(r, level, x, y)) {
-                ++lit;
-            } else if (!h.nodeShadowed(r, level, x, y)) {
-                lit += r.litBy(soft.map, tx, ty);   // mixed: the texel at the tap
-            }
-        }
-    }
-    return double(lit) / double(n * n);
 }
 
 ShadowOutputs runChs(const ShadowInputs& in) {
@@ -116,35 +62,25 @@ ShadowOutputs runChs(const ShadowInputs& in) {
     const MinMaxHierarchy h(soft.map);
     timer.lap("hierarchy");
     const GBuffer& g = in.gbuffer;
-    ShadowOutputs out;
-    out.visibility.assign(g.pixelCount(), 0.0f);
-    std::vector<float> filterLevel(g.pixelCount(), -1.0f);
-    struct Row {};
-    forEachReceiverFacingLight<Row>(
-        g, soft,
-        [&](Row&, size_t k, const glm::dvec3& P, const glm::dvec3& N, const SoftReceiver& receiver) {
-            const MapReceiver r = planeReceiver(soft, P, N);
-            const Estimate e = searchBlockers(soft, h, r, receiver.distance, s.searchNodes);
-            out.visibility[k] = 1.0f;
-            if (e.blockerDistance <= 0.0) return;
-            const glm::dvec2 radius = 0.5 * sampleWidthTexels(soft, receiver.distance, e.blockerDistance);
-            int level = 0;
-            out.visibility[k] = float(filterGrid(soft, h, r, radius, s.filterNodes, level));
-            filterLevel[k] = float(level);
-        },
-        [](Row&) {});
+    const size_t n = g.pixelCount();
+    std::vector<float> visibility(n), blockerDistance(n), width(n), searchLevel(n);
+    const LookupPass pass(soft.map, soft.light, {s.searchNodes, s.filterNodes, soft.lightTexels, h.forKernel()},
+                          in.simd);
+    lookUpEveryRow(g, pass, {visibility.data(), blockerDistance.data(), width.data(), nullptr, searchLevel.data()});
     timer.lap("receivers");
     const DebugBuffers debug(in.debugDir, kChsName);
     if (debug.enabled()) {
         writeDepthMap(debug, "depth", soft.map);
         writeMinMaxHierarchy(debug, h);
-        debug.write("filter-level", g.width, g.height, filterLevel, -1.0f, float(h.levels()));
+        debug.write("search-level", g.width, g.height, searchLevel, 0.0f, float(h.levels()));
     }
     size_t filtered = 0, coarse = 0;   // in pixel order: the same for any thread count
-    for (float l : filterLevel) filtered += l >= 0.0f, coarse += l > 0.0f;
+    for (size_t k = 0; k < n; ++k) filtered += blockerDistance[k] > 0.0f, coarse += searchLevel[k] > 0.0f;
+    ShadowOutputs out;
+    out.visibility = std::move(visibility);
     out.stats = {{"resolution_texels", double(s.resolution)},
                  {"filtered_pixels", double(filtered)},
-                 {"coarse_filter_percent", filtered ? 100.0 * double(coarse) / double(filtered) : 0.0}};
+                 {"coarse_search_percent", filtered ? 100.0 * double(coarse) / double(filtered) : 0.0}};
     timer.appendTo(out.stats);
     return out;
 }

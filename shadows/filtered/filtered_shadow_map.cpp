@@ -10,9 +10,9 @@
 //
 // width=pcss widens the box per pixel as PCSS would (RTR 7.7: "These filtered approaches
 // can all be used in conjunction with PCSS to provide variable-width penumbrae"; Lauritzen,
-// GPU Gems 3 ch. 8; Annen et al. 2008, section 5): the blocker search and eq. 7.6 of
-// blocker_search.h give the width, and the summed-area table the box, so it needs
-// filter=sat. A fixed width is a constant penumbra, as PCF's (RTR 7.5).
+// GPU Gems 3 ch. 8; Annen et al. 2008, section 5): PCSS's blocker search (blocker_search.h,
+// in the shadow lookup's vector kernel) and eq. 7.6 give the width, and the summed-area
+// table the box, so it needs filter=sat. A fixed width is a constant penumbra, as PCF's (RTR 7.5).
 //
 // Every stage runs rows in parallel with one owner per output value and fixed summation
 // orders, so V is the same bytes for any thread count.
@@ -27,6 +27,7 @@
 #include "shadows/filtered/moment_filter.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/pcf.h"
+#include "shadows/maps/shadow_lookup.h"
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/stage_timer.h"
 
@@ -106,20 +107,24 @@ struct ReceiverRow {
 PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const FilteredSettings& s,
                                 const MomentMap& blurred, const SummedAreaTable& table) {
     const GBuffer& g = in.gbuffer;
-    const std::vector<glm::dvec2> searchDisk = makePcfKernel({FilterKind::Poisson, 3, s.search.taps, 1.0}).disk;
     const size_t channels = size_t(momentCount(s.moments.kind));
     PixelBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f)};
-    const auto perPixel = [&](ReceiverRow& row, size_t k, const glm::dvec3& P, const glm::dvec3& N,
+    // width=pcss: steps 1 and 2 of PCSS for every pixel in the lookup's vector kernel
+    // (lookup_kernel.inl, kLookupBlockerSearch), which leaves V = 1 where it finds no blocker.
+    std::vector<float> blockerDistance(s.pcssWidth ? g.pixelCount() : 0);
+    if (s.pcssWidth) {
+        const PcfKernel search = makePcfKernel({FilterKind::Poisson, 3, s.search.taps, 1.0});
+        const LookupPass pass(soft.map, soft.light, {search, s.search.region, soft.lightTexels}, in.simd);
+        lookUpEveryRow(g, pass, {out.visibility.data(), blockerDistance.data()});
+    }
+    const auto perPixel = [&](ReceiverRow& row, size_t k, const glm::dvec3&, const glm::dvec3&,
                               const SoftReceiver& receiver) {
         glm::dvec2 width(s.widthTexels);
         if (s.pcssWidth) {
-            const PenumbraEstimate e =
-                estimatePenumbra(soft, planeReceiver(soft, P, N), receiver.distance, s.search, searchDisk, k);
-            if (e.blockers == 0) {
-                out.visibility[k] = 1.0f;
-                return;
-            }
-            width = e.widthTexels;
+            if (blockerDistance[k] == 0.0f) return;   // no blocker: lit
+            // Eq. 7.6 from d_o, kept within near .. d_r as the kernel keeps it (width 0 at contact).
+            const double dr = receiver.distance;
+            width = sampleWidthTexels(soft, dr, std::min(std::max(double(blockerDistance[k]), soft.zNear()), dr));
         }
         row.pixels.push_back(k);
         row.texels.push_back(receiver.texel);

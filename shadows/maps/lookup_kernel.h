@@ -41,13 +41,19 @@ struct LookupMap {
     int size;                   // texels per side
     int tilesX;                 // tiles per row of the block-linear buffer
     // pcss: where the hierarchy proves every tap's answer, the taps are skipped; null: none.
+    // chs: the hierarchy its blocker search reads (never null).
     const LookupHierarchy* hierarchy;
 };
 
 // The bias modes and filters, numbered as BiasMode and FilterKind (checked where they meet).
 enum LookupBias : int { kLookupConstant, kLookupSlopeScaled, kLookupNormalOffset, kLookupReceiverPlane };
-// kLookupPcss is percentage-closer soft shadows, the filter of shadows/filtered/pcss.cpp.
-enum LookupFilter : int { kLookupNearest, kLookupBilinear, kLookupGrid, kLookupPoisson, kLookupPcss, kLookupFilterCount };
+// kLookupPcss is percentage-closer soft shadows, the filter of shadows/filtered/pcss.cpp;
+// kLookupChs contact-hardening soft shadows, that of shadows/filtered/contact_hardening.cpp;
+// kLookupBlockerSearch PCSS's blocker search alone, for the filtered maps' width=pcss.
+enum LookupFilter : int {
+    kLookupNearest, kLookupBilinear, kLookupGrid, kLookupPoisson, kLookupPcss, kLookupChs, kLookupBlockerSearch,
+    kLookupFilterCount
+};
 
 struct LookupConstants {
     const LookupMap* maps;      // the maps a selector chooses from
@@ -64,7 +70,7 @@ struct LookupConstants {
     const float* diskY;
     int diskTaps;
     float radiusTexels;         // poisson: the disk's radius, texels
-    // pcss: the blocker search's unit-disk taps and the fraction of the light's cone it
+    // pcss and the blocker search: the search's unit-disk taps and the fraction of the light's cone it
     // covers, the light's width in texels at unit distance per axis (w_light of eq. 7.6),
     // and the perspective map's near and far distances.
     const float* searchX;
@@ -73,6 +79,10 @@ struct LookupConstants {
     float searchRegion;
     float lightTexels[2];
     float zNear, zFar;
+    // chs (the light's and the map's figures above too): nodes per side of the blocker
+    // search's reading level, and N of the filter's N x N grid.
+    int searchNodes;
+    int filterNodes;
 };
 
 // Receivers as the map serving them sees them, one value per pixel of a run: where each
@@ -85,7 +95,8 @@ struct ReceiverArrays {
     float* slopeX;
     float* slopeY;
     float* tolerance;
-    float* distance;            // clip w, for a perspective map the distance along its axis (pcss; null otherwise)
+    float* distance;            // clip w, for a perspective map the distance along its axis (pcss, chs, blocker
+                                // search; null otherwise)
 };
 
 // One run of pixels of a row; count is a multiple of the kernel's width.
@@ -100,11 +111,14 @@ struct LookupRow {
     const float* rotationSin;
     ReceiverArrays receivers;   // written by the projection, read by the filter
     float* visibility;          // out: the lit fraction, 0 where served = 0
-    // out, pcss only (zeroed by the caller: vectors with no served pixel are not written):
+    // out, pcss, chs and the blocker search only (zeroed by the caller: vectors with no
+    // served pixel are not written); the width not for the blocker search:
     float* blockerDistance;     // the blockers' mean distance d_o, 0 without blockers
     float* penumbraWidth;       // the filter's width in texels (eq. 7.6), 0 likewise
     // out, pcss with a hierarchy only (else null): the taps whose answer the hierarchy proved
     float* knownTaps;
+    // out, chs only (else null): the level its blocker search read, 0 without blockers
+    float* searchLevel;
     int count;
 };
 

@@ -264,12 +264,11 @@ inline HierarchyNodes nodesOver(const LookupHierarchy& h, I32 x0, I32 y0, I32 x1
 struct TapProof {
     Mask lit, shadowed;
 };
+// The proof over the texels [x0, x1] x [y0, y1] (a rectangle past the map's border: none).
 template <bool kPlane, bool kShadowed>
-TapProof proveTaps(const LookupMap& map, const Receiver& r, F32 radiusX, F32 radiusY) {
+TapProof proveTexels(const LookupMap& map, const Receiver& r, I32 x0, I32 y0, I32 x1, I32 y1) {
     const LookupHierarchy& h = *map.hierarchy;
-    const F32 margin = simd::splat(1.0001f), zero = simd::splat(0.0f), one = simd::splat(1.0f);
-    const I32 x0 = texelIndexOf(r.texelX - radiusX * margin), x1 = texelIndexOf(r.texelX + radiusX * margin);
-    const I32 y0 = texelIndexOf(r.texelY - radiusY * margin), y1 = texelIndexOf(r.texelY + radiusY * margin);
+    const F32 zero = simd::splat(0.0f), one = simd::splat(1.0f);
     const I32 first = simd::splat(int32_t(0)), last = simd::splat(int32_t(map.size - 1));
     const auto clamp = [&](I32 c) { return simd::min(simd::max(c, first), last); };
     const Mask inside = simd::cmpEq(clamp(x0), x0) & simd::cmpEq(clamp(y0), y0) & simd::cmpEq(clamp(x1), x1) &
@@ -298,6 +297,52 @@ TapProof proveTaps(const LookupMap& map, const Receiver& r, F32 radiusX, F32 rad
     if constexpr (!kShadowed) proof.shadowed = simd::noLanes();
     return proof;
 }
+template <bool kPlane, bool kShadowed>
+TapProof proveTaps(const LookupMap& map, const Receiver& r, F32 radiusX, F32 radiusY) {
+    const F32 margin = simd::splat(1.0001f);
+    return proveTexels<kPlane, kShadowed>(map, r, texelIndexOf(r.texelX - radiusX * margin),
+                                          texelIndexOf(r.texelY - radiusY * margin),
+                                          texelIndexOf(r.texelX + radiusX * margin),
+                                          texelIndexOf(r.texelY + radiusY * margin));
+}
+
+// Eq. 7.6 in texels on one map axis: w = w_light (d_r - d_o) / (d_r d_o) (RTR 7.6).
+inline F32 penumbraTexels(const LookupConstants& c, F32 dr, F32 occluder, int axis) {
+    return simd::splat(c.lightTexels[axis]) * ((dr - occluder) / (dr * occluder));
+}
+
+// The blocker search's radius on one axis: the light's cone from the receiver cut at the
+// near plane (eq. 7.6 with d_o = near), times the fraction searched.
+inline F32 searchRadius(const LookupConstants& c, F32 dr, int axis) {
+    return simd::splat(0.5f * c.searchRegion) * penumbraTexels(c, dr, simd::splat(c.zNear), axis);
+}
+
+// PCSS's steps 1 and 2 (Fernando 2005; blocker_search.h) for the lanes `searched`: the
+// rotated search disk's taps nearer the light than the receiver's plane are blockers, and
+// d_o is their mean distance from the light. The offset and the plane can put the mean at
+// or behind the receiver by a rounding: clamped to near .. d_r (width 0 at contact).
+struct BlockerEstimate {
+    Mask found;
+    F32 occluder;   // d_o, m (meaningless where none was found)
+};
+template <bool kPlane>
+BlockerEstimate searchDisk(const LookupConstants& c, const LookupMap& map, const Receiver& r, F32 cosine, F32 sine,
+                           Mask searched, F32 searchX, F32 searchY) {
+    // A stored window depth's distance, f n / (f - z (f - n)) (SoftShadowMap::distanceOf).
+    const F32 farNear = simd::splat(c.zFar * c.zNear), far = simd::splat(c.zFar), range = simd::splat(c.zFar - c.zNear);
+    const F32 zero = simd::splat(0.0f);
+    F32 blockers = zero, distanceSum = zero;   // in tap order: the same sums at every width
+    for (int k = 0; k < c.searchTaps; ++k) {
+        const F32 dx = simd::splat(c.searchX[k]), dy = simd::splat(c.searchY[k]);
+        const I32 x = texelIndexOf(r.texelX + searchX * (cosine * dx - sine * dy));
+        const I32 y = texelIndexOf(r.texelY + searchY * (sine * dx + cosine * dy));
+        const F32 stored = storedDepth(map, x, y);
+        const Mask blocker = searched & !litBy<kPlane>(r, x, y, stored);
+        blockers = blockers + oneWhere(blocker);
+        distanceSum = distanceSum + simd::select(blocker, farNear / (far - stored * range), zero);
+    }
+    return {simd::cmpLt(zero, blockers), simd::min(simd::max(distanceSum / blockers, simd::splat(c.zNear)), r.distance)};
+}
 
 // Percentage-closer soft shadows (Fernando 2005, steps 1 to 3; RTR 7.6) on a perspective
 // map from the light's centre, the receiver on its own plane (blocker_search.h says why):
@@ -315,13 +360,9 @@ struct Pcss {
     template <bool kPlane>
     static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
         const F32 cosine = simd::load(row.rotationCos + i), sine = simd::load(row.rotationSin + i);
-        const F32 zero = simd::splat(0.0f), half = simd::splat(0.5f), zNear = simd::splat(c.zNear), dr = r.distance;
-        const auto widthTexels = [&](F32 occluder, int axis) {   // eq. 7.6
-            return simd::splat(c.lightTexels[axis]) * ((dr - occluder) / (dr * occluder));
-        };
-        const F32 region = simd::splat(0.5f * c.searchRegion);
-        const F32 searchX = region * widthTexels(zNear, 0), searchY = region * widthTexels(zNear, 1);
-        const Mask searched = simd::cmpLt(zNear, dr);
+        const F32 zero = simd::splat(0.0f), half = simd::splat(0.5f), dr = r.distance;
+        const F32 searchX = searchRadius(c, dr, 0), searchY = searchRadius(c, dr, 1);
+        const Mask searched = simd::cmpLt(simd::splat(c.zNear), dr);
         // PCSS has one map: the lanes it serves are the served ones.
         const Mask lanes = simd::cmpGt(simd::loadU8(row.served + i), simd::splat(int32_t(0)));
         const bool proving = map.hierarchy != nullptr;
@@ -332,23 +373,10 @@ struct Pcss {
             simd::store(row.knownTaps + i, simd::splat(float(c.searchTaps)));
             return simd::splat(1.0f);
         }
-        // A stored window depth's distance, f n / (f - z (f - n)) (SoftShadowMap::distanceOf).
-        const F32 farNear = simd::splat(c.zFar * c.zNear), far = simd::splat(c.zFar), range = simd::splat(c.zFar - c.zNear);
-        F32 blockers = zero, distanceSum = zero;   // in tap order: the same sums at every width
-        for (int k = 0; k < c.searchTaps; ++k) {
-            const F32 dx = simd::splat(c.searchX[k]), dy = simd::splat(c.searchY[k]);
-            const I32 x = texelIndexOf(r.texelX + searchX * (cosine * dx - sine * dy));
-            const I32 y = texelIndexOf(r.texelY + searchY * (sine * dx + cosine * dy));
-            const F32 stored = storedDepth(map, x, y);
-            const Mask blocker = searched & !litBy<kPlane>(r, x, y, stored);
-            blockers = blockers + oneWhere(blocker);
-            distanceSum = distanceSum + simd::select(blocker, farNear / (far - stored * range), zero);
-        }
-        const Mask shadowed = simd::cmpLt(zero, blockers);
-        // The offset and the plane can put the mean at or behind the receiver by a rounding:
-        // clamped to near .. d_r (width 0 at contact), as blocker_search.cpp.
-        const F32 occluder = simd::min(simd::max(distanceSum / blockers, zNear), dr);
-        const F32 widthX = widthTexels(occluder, 0), widthY = widthTexels(occluder, 1);
+        const BlockerEstimate blockers = searchDisk<kPlane>(c, map, r, cosine, sine, searched, searchX, searchY);
+        const Mask shadowed = blockers.found;
+        const F32 occluder = blockers.occluder;
+        const F32 widthX = penumbraTexels(c, dr, occluder, 0), widthY = penumbraTexels(c, dr, occluder, 1);
         const F32 radiusX = simd::max(half * widthX, half), radiusY = simd::max(half * widthY, half);
         // The filter runs only where a lane found blockers (the others are lit), and only
         // for lanes whose taps the hierarchy did not prove.
@@ -366,6 +394,152 @@ struct Pcss {
             const F32 filterTaps = simd::select(shadowed & filterKnown, simd::splat(float(c.diskTaps)), zero);
             simd::store(row.knownTaps + i, simd::select(searchKnown, simd::splat(float(c.searchTaps)), filterTaps));
         }
+        return simd::select(shadowed, visibility, simd::splat(1.0f));
+    }
+};
+
+// PCSS's blocker search alone (steps 1 and 2), for the filtered maps' width=pcss
+// (shadows/filtered/filtered_shadow_map.cpp), which filter their own moments over the eq.
+// 7.6 width: d_o into blockerDistance (0 without blockers), and V = 1 where no blocker was
+// found (lit), 0 where the caller's filter decides.
+struct BlockerSearch {
+    template <bool kPlane>
+    static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
+        const F32 dr = r.distance, zero = simd::splat(0.0f);
+        const BlockerEstimate blockers =
+            searchDisk<kPlane>(c, map, r, simd::load(row.rotationCos + i), simd::load(row.rotationSin + i),
+                               simd::cmpLt(simd::splat(c.zNear), dr), searchRadius(c, dr, 0), searchRadius(c, dr, 1));
+        simd::store(row.blockerDistance + i, simd::select(blockers.found, blockers.occluder, zero));
+        return simd::select(blockers.found, zero, simd::splat(1.0f));
+    }
+};
+
+// Contact-hardening soft shadows (shadows/filtered/contact_hardening.cpp: PCSS read on the
+// levels of the min/max hierarchy; RTR 7.6, Sikachev et al.), the receiver on its plane:
+//   1. blocker search over the light's cone cut at the near plane, read at the first level
+//      where the cone spans at most searchNodes nodes a side (readingLevelFor, lane by
+//      lane); a node whose least depth, plus the tolerance, is nearer than the receiver's
+//      plane anywhere over the node holds a blocker at that depth; d_o is their mean. Where
+//      the hierarchy proves the whole cone lit, the search is skipped (no blocker);
+//   2. eq. 7.6 gives the filter's width, as Pcss;
+//   3. an N x N grid (N = filterNodes) over that width, each tap the texel it falls in. The
+//      level-by-level reading of the filter the double pass did answered every tap as its
+//      texel does (a node proved lit or shadowed holds only texels that answer so), so the
+//      taps read texels, and a vector whose every lane's footprint is proved lit or
+//      shadowed skips them, as Pcss does.
+struct Chs {
+    // The level a region spanning `span` texels is read at with at most `nodes` nodes a
+    // side (readingLevelFor): 0 where span < nodes, else the first l >= firstLevel with
+    // (span >> l) + 2 <= nodes, capped at the top; (span >> l) + 2 > nodes is
+    // span >= (nodes - 1) 2^l, which falls as l grows.
+    static I32 readingLevel(const LookupHierarchy& h, I32 span, int nodes) {
+        I32 level = simd::select(simd::cmpGt(span, simd::splat(int32_t(nodes - 1))),
+                                 simd::splat(int32_t(h.firstLevel)), simd::splat(int32_t(0)));
+        for (int l = h.firstLevel; l < h.levels; ++l) {
+            const Mask deeper = simd::cmpGt(span, simd::splat(int32_t(((nodes - 1) << l) - 1)));
+            level = simd::select(deeper & simd::cmpGt(level, simd::splat(int32_t(0))), simd::splat(int32_t(l + 1)), level);
+        }
+        return level;
+    }
+
+    // Steps 1 and 2 for lanes `searched`: the blockers' count, and the sum of their
+    // distances from the light in node order (the same sums at every width).
+    static void searchBlockers(const LookupConstants& c, const LookupMap& map, const Receiver& r, Mask searched,
+                               I32 x0, I32 y0, I32 x1, I32 y1, I32 level, F32& blockers, F32& distanceSum) {
+        const LookupHierarchy& h = *map.hierarchy;
+        const I32 zeroI = simd::splat(int32_t(0));
+        const Mask onNodes = simd::cmpGt(level, zeroI);
+        // The level's node width, first node and nodes per side, lane by lane (nodesOver).
+        F32 width = simd::splat(1.0f);
+        I32 offset = zeroI, size = zeroI;
+        for (int l = h.firstLevel; l <= h.levels; ++l) {
+            const Mask at = simd::cmpEq(level, simd::splat(int32_t(l)));
+            width = simd::select(at, simd::splat(float(1 << l)), width);
+            offset = simd::select(at, simd::splat(int32_t(h.offset[l - h.firstLevel])), offset);
+            size = simd::select(at, simd::splat(int32_t(h.size[l - h.firstLevel])), size);
+        }
+        // A node's index on an axis is c / 2^l, exact in float for every texel index.
+        const F32 scale = simd::splat(1.0f) / width, half = simd::splat(0.5f), zero = simd::splat(0.0f);
+        const auto node = [&](I32 t) { return simd::truncateToInt(simd::toFloat(t) * scale); };
+        const I32 nx0 = node(x0), ny0 = node(y0), countX = node(x1) - nx0, countY = node(y1) - ny0;
+        const F32 halfWidth = (width - simd::splat(1.0f)) * half;
+        const F32 tilt = (abs(r.slopeX) + abs(r.slopeY)) * halfWidth;
+        const F32 farNear = simd::splat(c.zFar * c.zNear), far = simd::splat(c.zFar), range = simd::splat(c.zFar - c.zNear);
+        for (int b = 0; b < c.searchNodes; ++b) {
+            const Mask row = searched & !simd::cmpGt(simd::splat(int32_t(b)), countY);
+            if (!simd::any(row)) break;
+            const I32 y = ny0 + simd::splat(int32_t(b));
+            for (int a = 0; a < c.searchNodes; ++a) {
+                const Mask valid = row & !simd::cmpGt(simd::splat(int32_t(a)), countX);
+                if (!simd::any(valid)) break;
+                const I32 x = nx0 + simd::splat(int32_t(a));
+                // Each lane reads its node's least depth, or at level 0 the texel; the
+                // others read index 0, which every array has.
+                const I32 nodeIndex = simd::select(valid & onNodes, offset + y * size + x, zeroI);
+                const I32 texelIndex = simd::select(valid & !onNodes, texelStorageIndex(map, x, y), zeroI);
+                F32 least = simd::splat(1.0f);
+                if (simd::any(valid & onNodes)) least = simd::gather(h.least, nodeIndex);
+                if (simd::any(valid & !onNodes)) least = simd::select(onNodes, least, simd::gather(map.depth, texelIndex));
+                // The receiver's plane at its nearest over the node (planeLeastOver).
+                const F32 dx = (simd::toFloat(x) + half) * width - r.texelX;
+                const F32 dy = (simd::toFloat(y) + half) * width - r.texelY;
+                const F32 plane = r.depth + r.slopeX * dx + r.slopeY * dy - tilt;
+                const Mask blocker = valid & simd::cmpLt(least, simd::splat(1.0f)) & simd::cmpLt(least + r.tolerance, plane);
+                blockers = blockers + oneWhere(blocker);
+                distanceSum = distanceSum + simd::select(blocker, farNear / (far - least * range), zero);
+            }
+        }
+    }
+
+    // Step 3: the lit fraction of the N x N grid of taps over radius (texels) per axis.
+    template <bool kPlane>
+    static F32 gridLitFraction(const LookupConstants& c, const LookupMap& map, const Receiver& r, F32 radiusX,
+                               F32 radiusY) {
+        const int n = c.filterNodes;
+        const I32 first = simd::splat(int32_t(0)), last = simd::splat(int32_t(map.size - 1));
+        const auto clamp = [&](I32 t) { return simd::min(simd::max(t, first), last); };
+        F32 sum = simd::splat(0.0f);
+        for (int b = 0; b < n; ++b) {
+            const F32 v = simd::splat(float((2.0 * b + 1.0) / n - 1.0));
+            const I32 y = clamp(texelIndexOf(r.texelY + radiusY * v));
+            for (int a = 0; a < n; ++a) {
+                const F32 u = simd::splat(float((2.0 * a + 1.0) / n - 1.0));
+                const I32 x = clamp(texelIndexOf(r.texelX + radiusX * u));
+                sum = sum + oneWhere(litBy<kPlane>(map, r, x, y));
+            }
+        }
+        return sum / simd::splat(float(n * n));
+    }
+
+    template <bool kPlane>
+    static F32 lit(const LookupConstants& c, const LookupMap& map, const Receiver& r, const LookupRow& row, int i) {
+        const F32 zero = simd::splat(0.0f), half = simd::splat(0.5f), zNear = simd::splat(c.zNear), dr = r.distance;
+        const Mask lanes = simd::cmpGt(simd::loadU8(row.served + i), simd::splat(int32_t(0)));
+        // The cone's texels, clamped to the map (coneTexels).
+        const I32 first = simd::splat(int32_t(0)), last = simd::splat(int32_t(map.size - 1));
+        const auto clamp = [&](I32 t) { return simd::min(simd::max(t, first), last); };
+        const F32 coneX = half * penumbraTexels(c, dr, zNear, 0), coneY = half * penumbraTexels(c, dr, zNear, 1);
+        const I32 x0 = clamp(texelIndexOf(r.texelX - coneX)), x1 = clamp(texelIndexOf(r.texelX + coneX));
+        const I32 y0 = clamp(texelIndexOf(r.texelY - coneY)), y1 = clamp(texelIndexOf(r.texelY + coneY));
+        const Mask proved = proveTexels<kPlane, false>(map, r, x0, y0, x1, y1).lit;
+        const Mask searched = lanes & simd::cmpLt(zNear, dr) & !proved;
+        F32 blockers = zero, distanceSum = zero;
+        const I32 level = readingLevel(*map.hierarchy, simd::max(x1 - x0, y1 - y0), c.searchNodes);
+        if (simd::any(searched)) searchBlockers(c, map, r, searched, x0, y0, x1, y1, level, blockers, distanceSum);
+        const Mask shadowed = simd::cmpLt(zero, blockers);
+        const F32 occluder = simd::min(simd::max(distanceSum / blockers, zNear), dr);
+        const F32 widthX = penumbraTexels(c, dr, occluder, 0), widthY = penumbraTexels(c, dr, occluder, 1);
+        const F32 radiusX = simd::max(half * widthX, half), radiusY = simd::max(half * widthY, half);
+        F32 visibility = simd::splat(1.0f);
+        if (simd::any(lanes & shadowed)) {
+            const TapProof known = proveTaps<kPlane, true>(map, r, radiusX, radiusY);
+            visibility = simd::any(lanes & shadowed & !(known.lit | known.shadowed))
+                             ? gridLitFraction<kPlane>(c, map, r, radiusX, radiusY)
+                             : simd::select(known.shadowed, zero, simd::splat(1.0f));
+        }
+        simd::store(row.blockerDistance + i, simd::select(shadowed, occluder, zero));
+        simd::store(row.penumbraWidth + i, simd::select(shadowed, half * (widthX + widthY), zero));
+        simd::store(row.searchLevel + i, simd::select(shadowed, simd::toFloat(level), zero));
         return simd::select(shadowed, visibility, simd::splat(1.0f));
     }
 };
@@ -480,6 +654,8 @@ inline const LookupKernels& kernels() {
         addFilter<Grid>(t, kLookupGrid);
         addFilter<Poisson>(t, kLookupPoisson);
         addFilter<Pcss>(t, kLookupPcss);
+        addFilter<Chs>(t, kLookupChs);
+        addFilter<BlockerSearch>(t, kLookupBlockerSearch);
         return t;
     }();
     return table;

@@ -60,8 +60,14 @@ struct LookupPass::Tables {
     int width = 1;
     bool rotated = false;     // the filter turns a Poisson disk per pixel
     std::vector<float> rotationCos, rotationSin;   // rotated: per angle of pcf.h, its cosine and sine
-    bool pcss = false;        // the filter reads the receivers' distance and writes two more images
+    bool soft = false;        // pcss, chs, blocker search: it reads the receivers' distance, writes d_o
+    bool penumbra = false;    // pcss, chs: it writes the penumbra's width too
     bool proving = false;     // pcss with a hierarchy: it writes the known taps too
+    bool chs = false;         // it writes the blocker search's level too
+    // pcss, chs, blocker search: the light's width (eq. 7.6) and the perspective map's planes.
+    void setSoft(const DepthMap& map, const glm::dvec2& lightTexels);
+    // pcss, blocker search: the search's disk and region.
+    void setSearch(const PcfKernel& search, double region);
 };
 
 LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& light, const BiasSettings& bias,
@@ -93,8 +99,9 @@ LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& lig
     reach = vector.reach, project = vector.project[plane], filter = vector.filter[filterIndex][plane];
     scalarReach = scalar.reach, scalarProject = scalar.project[plane], scalarFilter = scalar.filter[filterIndex][plane];
     width = vector.width;
-    rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss;
-    pcss = filterIndex == kLookupPcss;
+    rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss || filterIndex == kLookupBlockerSearch;
+    penumbra = filterIndex == kLookupPcss || filterIndex == kLookupChs;
+    soft = penumbra || filterIndex == kLookupBlockerSearch;
     for (int a = 0; rotated && a < kPoissonRotations; ++a) {
         rotationCos.push_back(float(portable::cos(poissonRotationAngle(a))));
         rotationSin.push_back(float(portable::sin(poissonRotationAngle(a))));
@@ -110,14 +117,40 @@ LookupPass::LookupPass(const DepthMap& map, const Light& light, const Pcss& pcss
     plane.mode = BiasMode::ReceiverPlane;
     tables_ = std::make_unique<Tables>(std::span(&map, 1), light, plane, pcss.filter, kLookupPcss, simd);
     Tables& t = *tables_;
-    for (const glm::dvec2& d : pcss.search.disk) t.searchX.push_back(float(d.x)), t.searchY.push_back(float(d.y));
-    LookupConstants& c = t.constants;
-    c.searchX = t.searchX.data(), c.searchY = t.searchY.data(), c.searchTaps = int(t.searchX.size());
-    c.searchRegion = float(pcss.searchRegion);
-    c.lightTexels[0] = float(pcss.lightTexels.x), c.lightTexels[1] = float(pcss.lightTexels.y);
-    c.zNear = float(map.view.zNear), c.zFar = float(map.view.zFar);
+    t.setSearch(pcss.search, pcss.searchRegion);
+    t.setSoft(map, pcss.lightTexels);
     t.maps[0].hierarchy = pcss.hierarchy;
     t.proving = pcss.hierarchy != nullptr;
+}
+
+LookupPass::LookupPass(const DepthMap& map, const Light& light, const Chs& chs, raster::SimdLevel simd) {
+    BiasSettings plane;
+    plane.mode = BiasMode::ReceiverPlane;
+    tables_ = std::make_unique<Tables>(std::span(&map, 1), light, plane, PcfKernel{}, kLookupChs, simd);
+    Tables& t = *tables_;
+    t.constants.searchNodes = chs.searchNodes, t.constants.filterNodes = chs.filterNodes;
+    t.setSoft(map, chs.lightTexels);
+    t.maps[0].hierarchy = &chs.hierarchy;
+    t.chs = true;
+}
+
+LookupPass::LookupPass(const DepthMap& map, const Light& light, const BlockerSearch& search, raster::SimdLevel simd) {
+    BiasSettings plane;
+    plane.mode = BiasMode::ReceiverPlane;
+    tables_ = std::make_unique<Tables>(std::span(&map, 1), light, plane, PcfKernel{}, kLookupBlockerSearch, simd);
+    tables_->setSearch(search.search, search.searchRegion);
+    tables_->setSoft(map, search.lightTexels);
+}
+
+void LookupPass::Tables::setSearch(const PcfKernel& search, double region) {
+    for (const glm::dvec2& d : search.disk) searchX.push_back(float(d.x)), searchY.push_back(float(d.y));
+    constants.searchX = searchX.data(), constants.searchY = searchY.data(), constants.searchTaps = int(searchX.size());
+    constants.searchRegion = float(region);
+}
+
+void LookupPass::Tables::setSoft(const DepthMap& map, const glm::dvec2& lightTexels) {
+    constants.lightTexels[0] = float(lightTexels.x), constants.lightTexels[1] = float(lightTexels.y);
+    constants.zNear = float(map.view.zNear), constants.zFar = float(map.view.zFar);
 }
 
 LookupPass::~LookupPass() = default;
@@ -127,10 +160,11 @@ static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
 
 void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outputs& out) const {
     const Tables& t = *tables_;
-    if (t.pcss && (!out.blockerDistance || !out.penumbraWidth)) {
-        throw std::invalid_argument("shadow lookup: a PCSS pass writes the blocker distance and penumbra width too");
+    if ((t.soft && !out.blockerDistance) || (t.penumbra && !out.penumbraWidth)) {
+        throw std::invalid_argument("shadow lookup: a soft pass writes the blocker distance, and the penumbra width");
     }
     if (t.proving && !out.knownTaps) throw std::invalid_argument("shadow lookup: a hierarchy's pass writes known taps");
+    if (t.chs && !out.searchLevel) throw std::invalid_argument("shadow lookup: a chs pass writes the search level");
     const int count = g.width;
     if (t.rotated) {
         // The per-pixel rotation of the Poisson disk, a hash of the pixel index (pcf.h).
@@ -141,14 +175,14 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
     }
     float* r = scratch.receivers.data();
     const int n = int(scratch.served.size());
-    const ReceiverArrays arrays{r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n, t.pcss ? r + 6 * n : nullptr};
+    const ReceiverArrays arrays{r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n, t.soft ? r + 6 * n : nullptr};
     const size_t k = g.index(0, j);
     const int vectors = count - count % t.width;
     const auto image = [&](float* a, int at) { return a ? a + k + size_t(at) : a; };
     const LookupRow row{glm::value_ptr(g.position[k]), glm::value_ptr(g.normal[k]), scratch.served.data(),
                         scratch.rotationCos.data(), scratch.rotationSin.data(), arrays, image(out.visibility, 0),
                         image(out.blockerDistance, 0), image(out.penumbraWidth, 0), image(out.knownTaps, 0),
-                        vectors};
+                        image(out.searchLevel, 0), vectors};
     // The row's tail, fewer pixels than a vector, goes through the scalar twins (the same bits).
     const auto at = [&](float* a) { return a ? a + vectors : a; };
     const LookupRow tail{row.position + 3 * vectors, row.normal + 3 * vectors, row.served + vectors,
@@ -156,7 +190,8 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
                          {at(arrays.texelX), at(arrays.texelY), at(arrays.depth), at(arrays.slopeX), at(arrays.slopeY),
                           at(arrays.tolerance), at(arrays.distance)},
                          image(out.visibility, vectors), image(out.blockerDistance, vectors),
-                         image(out.penumbraWidth, vectors), image(out.knownTaps, vectors), count - vectors};
+                         image(out.penumbraWidth, vectors), image(out.knownTaps, vectors),
+                         image(out.searchLevel, vectors), count - vectors};
     const auto stage = [&](LookupKernel vector, LookupKernel scalar) {
         vector(t.constants, row);
         scalar(t.constants, tail);

@@ -89,6 +89,25 @@ public:
         const LookupHierarchy* hierarchy = nullptr;
     };
     LookupPass(const DepthMap& map, const Light& light, const Pcss& pcss, raster::SimdLevel simd);
+    // Contact-hardening soft shadows (the kernel's kLookupChs filter) on such a map, with
+    // receiver-plane bias: nodes per side of the blocker search's reading level and N of the
+    // filter's N x N grid, w_light as above, and the map's min/max hierarchy, which the
+    // search reads. It must outlive the pass.
+    struct Chs {
+        int searchNodes = 8;
+        int filterNodes = 8;
+        glm::dvec2 lightTexels{0.0};
+        const LookupHierarchy& hierarchy;
+    };
+    LookupPass(const DepthMap& map, const Light& light, const Chs& chs, raster::SimdLevel simd);
+    // PCSS's blocker search alone (the kernel's kLookupBlockerSearch) on such a map: the
+    // blockers' mean distance per pixel, V = 1 where it finds none, 0 where it does.
+    struct BlockerSearch {
+        const PcfKernel& search;
+        double searchRegion = 1.0;
+        glm::dvec2 lightTexels{0.0};
+    };
+    LookupPass(const DepthMap& map, const Light& light, const BlockerSearch& search, raster::SimdLevel simd);
     ~LookupPass();
 
     // A row's working memory: which map serves each pixel, the receivers as the maps see
@@ -100,13 +119,15 @@ public:
             : served(size_t(count)), receivers(7 * size_t(count)), rotationCos(size_t(count)), rotationSin(size_t(count)) {}
     };
 
-    // Whole images the pass writes, row by row; the others only for pcss, the last only
-    // with a hierarchy (LookupRow::knownTaps).
+    // Whole images the pass writes, row by row; the blocker distance only for pcss, chs and
+    // the blocker search, the width for the first two, known taps only for pcss with a
+    // hierarchy, the search level only for chs (LookupRow).
     struct Outputs {
         float* visibility;
         float* blockerDistance = nullptr;
         float* penumbraWidth = nullptr;
         float* knownTaps = nullptr;
+        float* searchLevel = nullptr;
     };
 
     // Row j's pixels into the outputs, given which map serves each in scratch.served; the
@@ -119,7 +140,7 @@ private:
 };
 
 // The pass over every row of g, rows in parallel, its one map serving every surface pixel
-// (no selector, no texel density): PCSS and multi-sample.
+// (no selector, no texel density): PCSS, contact hardening and multi-sample.
 void lookUpEveryRow(const GBuffer& g, const LookupPass& pass, const LookupPass::Outputs& out);
 
 // everyPixelDensity: measure the texel density at every pixel (the debug view), not only

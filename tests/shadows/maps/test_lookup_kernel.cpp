@@ -7,12 +7,14 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <tbb/parallel_for.h>
 
 #include "raster/thread_count.h"
 #include "shadows/maps/lookup_kernel.h"
+#include "shadows/maps/min_max_hierarchy.h"
 #include "shadows/maps/shadow_lookup.h"
 #include "shadows/technique.h"
 #include "shadow_map_test_util.h"
@@ -158,6 +160,106 @@ TEST_CASE("shadow lookup: PCSS gives the scalar twin's bytes at every SIMD level
     CHECK(blocked > penumbra);
     for (raster::SimdLevel level : vectorLevels()) {
         for (int threads : {1, 2}) CHECK(sameBytes(run(level, threads), twin));
+    }
+}
+
+TEST_CASE("shadow lookup: contact hardening gives the scalar twin's bytes at every SIMD level and thread count") {
+    // The chs filter on the same map as PCSS's case, reading the map's min/max hierarchy: a
+    // light 40 texels wide at 1 m, whose cones span under 8 texels (the search reads texels),
+    // and one 400 wide, whose cones the search reads on the hierarchy's levels; an even and
+    // an odd filter grid.
+    const LookupScene& s = lookupScene();
+    BiasSettings plane;
+    plane.mode = BiasMode::ReceiverPlane;
+    const std::vector<DepthMap> maps = s.maps(plane, 512);
+    const MinMaxHierarchy hierarchy(maps[0]);
+    struct Case {
+        double lightTexels;
+        int searchNodes, filterNodes;
+    };
+    for (const Case& c : {Case{40.0, 8, 8}, Case{400.0, 8, 3}}) {
+        CAPTURE(c.lightTexels);
+        const auto run = [&](raster::SimdLevel level, int threads) {
+            const LookupPass pass(maps[0], s.light,
+                                  {c.searchNodes, c.filterNodes, glm::dvec2(c.lightTexels), hierarchy.forKernel()}, level);
+            const size_t n = s.g.pixelCount();
+            std::vector<float> v(n), blocker(n), width(n), searchLevel(n);
+            withThreads(threads, [&] {
+                tbb::parallel_for(0, s.g.height, [&](int j) {
+                    LookupPass::Scratch scratch(s.g.width);
+                    for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
+                    pass.lookUpRow(s.g, j, scratch, {v.data(), blocker.data(), width.data(), nullptr, searchLevel.data()});
+                });
+            });
+            for (const std::vector<float>* image : {&blocker, &width, &searchLevel}) v.insert(v.end(), image->begin(), image->end());
+            return v;
+        };
+        const std::vector<float> twin = run(raster::SimdLevel::Scalar, 1);
+        const size_t n = s.g.pixelCount();
+        int penumbra = 0, blocked = 0, onNodes = 0;
+        for (size_t k = 0; k < n; ++k) {
+            penumbra += twin[k] > 0.0f && twin[k] < 1.0f;
+            blocked += twin[n + k] > 0.0f;
+            onNodes += twin[3 * n + k] > 0.0f;
+        }
+        CAPTURE(penumbra);
+        CAPTURE(onNodes);
+        CHECK(penumbra > 30);
+        CHECK(blocked > penumbra);
+        if (c.lightTexels > 100.0) {
+            CHECK(onNodes > blocked / 2);   // the wide cones' searches read the hierarchy's levels
+        } else {
+            CHECK(onNodes == 0);            // the narrow ones read texels
+        }
+        for (raster::SimdLevel level : vectorLevels()) {
+            for (int threads : {1, 2}) CHECK(sameBytes(run(level, threads), twin));
+        }
+    }
+}
+
+TEST_CASE("shadow lookup: the blocker search alone gives the scalar twin's bytes, and PCSS's blocker distances") {
+    // The filtered maps' width=pcss search (kLookupBlockerSearch) is PCSS's steps 1 and 2:
+    // the same d_o at every pixel as the pcss filter's, V = 1 where it found no blocker.
+    const LookupScene& s = lookupScene();
+    BiasSettings plane;
+    plane.mode = BiasMode::ReceiverPlane;
+    const std::vector<DepthMap> maps = s.maps(plane, 512);
+    const PcfKernel search = makePcfKernel({FilterKind::Poisson, 3, 16, 1.0});
+    const PcfKernel filter = makePcfKernel({FilterKind::Poisson, 3, 32, 1.0});
+    const size_t n = s.g.pixelCount();
+    const auto run = [&](const LookupPass& pass, bool pcss, int threads) {
+        std::vector<float> v(n), blocker(n), width(n);
+        withThreads(threads, [&] {
+            tbb::parallel_for(0, s.g.height, [&](int j) {
+                LookupPass::Scratch scratch(s.g.width);
+                for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
+                pass.lookUpRow(s.g, j, scratch, {v.data(), blocker.data(), pcss ? width.data() : nullptr});
+            });
+        });
+        return std::pair(v, blocker);
+    };
+    const auto searchOnly = [&](raster::SimdLevel level, int threads) {
+        return run(LookupPass(maps[0], s.light, LookupPass::BlockerSearch{search, 1.0, glm::dvec2(40.0)}, level), false,
+                   threads);
+    };
+    const auto [twinV, twinBlocker] = searchOnly(raster::SimdLevel::Scalar, 1);
+    const auto [pcssV, pcssBlocker] =
+        run(LookupPass(maps[0], s.light, {search, 1.0, filter, glm::dvec2(40.0)}, raster::SimdLevel::Scalar), true, 1);
+    CHECK(sameBytes(twinBlocker, pcssBlocker));
+    int blocked = 0, wrong = 0;
+    for (size_t k = 0; k < n; ++k) {
+        blocked += twinBlocker[k] > 0.0f;
+        const float expected = pcssV[k] == 0.0f && twinBlocker[k] == 0.0f ? 0.0f : twinBlocker[k] > 0.0f ? 0.0f : 1.0f;
+        wrong += twinV[k] != expected;
+    }
+    CHECK(blocked > 30);
+    CHECK(wrong == 0);
+    for (raster::SimdLevel level : vectorLevels()) {
+        for (int threads : {1, 2}) {
+            const auto [v, blocker] = searchOnly(level, threads);
+            CHECK(sameBytes(v, twinV));
+            CHECK(sameBytes(blocker, twinBlocker));
+        }
     }
 }
 

@@ -85,7 +85,7 @@ TEST_CASE("PCF over a straight edge equals the kernel's cumulative weights, at e
             std::vector<float> x = u;
             const LookupRow row{nullptr, nullptr, served.data(), rotationCos.data(), rotationSin.data(),
                                 {x.data(), y.data(), depth.data(), nullptr, nullptr, nullptr, nullptr},
-                                visibility.data(), nullptr, nullptr, nullptr, count};
+                                visibility.data(), nullptr, nullptr, nullptr, nullptr, count};
             lookupKernels(level).filter[int(settings.kind)][0](c, row);
             for (int k = 0; k < count; ++k) {
                 CAPTURE(u[size_t(k)]);
