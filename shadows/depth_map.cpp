@@ -86,6 +86,16 @@ DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const
                       });
 }
 
+DepthMap renderDepthMap(const PreparedScene& prepared, const LightView& view, const DepthMapSettings& settings,
+                        raster::SimdLevel simd) {
+    const glm::mat4 clipFromWorld(view.clipFromWorld());
+    const WorldDraws& draws = preparedWorldDraws(prepared);
+    return depthMapOf(view, settings, simd,
+                      [&](raster::Rasterizer& r, raster::Framebuffer& fb, const raster::PipelineState& state) {
+                          drawWorld(r, fb, state, prepared.world(), draws, clipFromWorld);
+                      });
+}
+
 DepthMap renderDepthMap(const WorldGeometry& world, std::span<const uint32_t> triangles, const LightView& view,
                         const DepthMapSettings& settings, raster::SimdLevel simd) {
     const glm::mat4 clipFromWorld(view.clipFromWorld());

@@ -18,6 +18,7 @@
 #include "raster/framebuffer.h"
 #include "raster/pipeline_state.h"
 #include "raster/tile_kernels.h"
+#include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
 #include "shadows/light_view.h"
 #include "shadows/settings_table.h"
@@ -78,6 +79,11 @@ struct DepthMapSettings {
 
 // The world's triangles, cut-outs with their holes (world_draw.h).
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
+                        raster::SimdLevel simd);
+// The same for a prepared scene's world, its draws grouped once for every map of every frame
+// (preparedWorldDraws): what a technique drawing several maps a frame (cube faces,
+// multi-sample's views) passes.
+DepthMap renderDepthMap(const PreparedScene& prepared, const LightView& view, const DepthMapSettings& settings,
                         raster::SimdLevel simd);
 // The same for some of the world's triangles (indices into world.triangles, ascending; none
 // drawn when empty), as the fins' hard maps draw one layer's objects.

@@ -1,20 +1,9 @@
 #include "shadows/world_draw.h"
 
-#include <vector>
-
 namespace shadowlab {
 namespace {
 
-// One draw's triangles: the solid ones by index, a cut-out's as corners of their own (a
-// corner's texture coordinate belongs to the triangle, not to the shared vertex).
-struct Batch {
-    std::vector<glm::uvec3> triangles;
-    std::vector<uint32_t> ids;
-    std::vector<glm::vec3> corners;
-    std::vector<float> uvs;
-};
-
-void addCutOutTriangle(const WorldGeometry& world, uint32_t t, Batch& batch) {
+void addCutOutTriangle(const WorldGeometry& world, uint32_t t, WorldDraws::Batch& batch) {
     const uint32_t first = uint32_t(batch.corners.size());
     for (int c = 0; c < 3; ++c) {
         batch.corners.push_back(world.positions[world.triangles[t][c]]);
@@ -25,25 +14,26 @@ void addCutOutTriangle(const WorldGeometry& world, uint32_t t, Batch& batch) {
     batch.ids.push_back(t);
 }
 
+// The one kind of data a prepared scene keeps for drawWorld.
+struct PreparedDraws {
+    WorldDraws draws;
+};
+
 }  // namespace
 
-void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::PipelineState& state,
-               const WorldGeometry& world, const glm::mat4& clipFromWorld, std::span<const uint32_t> only,
-               const glm::vec4& constantColor) {
+WorldDraws worldDraws(const WorldGeometry& world, std::span<const uint32_t> only) {
+    WorldDraws draws;
     if (world.cutOuts.empty() && only.empty()) {
-        raster::DrawCall call = raster::positionsDraw(world.positions, world.triangles, clipFromWorld);
-        call.constantColor = constantColor;
-        rasterizer.draw(fb, state, call);
-        return;
+        draws.whole = true;
+        return draws;
     }
-    Batch solid;
-    std::vector<Batch> cutOuts(world.cutOuts.size());
+    draws.cutOuts.resize(world.cutOuts.size());
     const auto add = [&](uint32_t t) {
         const int32_t cutOut = world.triangleCutOut.empty() ? -1 : world.triangleCutOut[t];
         if (cutOut < 0) {
-            solid.triangles.push_back(world.triangles[t]), solid.ids.push_back(t);
+            draws.solid.triangles.push_back(world.triangles[t]), draws.solid.ids.push_back(t);
         } else {
-            addCutOutTriangle(world, t, cutOuts[size_t(cutOut)]);
+            addCutOutTriangle(world, t, draws.cutOuts[size_t(cutOut)]);
         }
     };
     if (only.empty()) {
@@ -51,12 +41,28 @@ void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ra
     } else {
         for (uint32_t t : only) add(t);
     }
-    raster::DrawCall call = raster::positionsDraw(world.positions, solid.triangles, clipFromWorld);
-    call.primitiveIds = solid.ids;
+    return draws;
+}
+
+const WorldDraws& preparedWorldDraws(const PreparedScene& prepared) {
+    return prepared.derived<PreparedDraws>([&] { return PreparedDraws{worldDraws(prepared.world())}; }).draws;
+}
+
+void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::PipelineState& state,
+               const WorldGeometry& world, const WorldDraws& draws, const glm::mat4& clipFromWorld,
+               const glm::vec4& constantColor) {
+    if (draws.whole) {
+        raster::DrawCall call = raster::positionsDraw(world.positions, world.triangles, clipFromWorld);
+        call.constantColor = constantColor;
+        rasterizer.draw(fb, state, call);
+        return;
+    }
+    raster::DrawCall call = raster::positionsDraw(world.positions, draws.solid.triangles, clipFromWorld);
+    call.primitiveIds = draws.solid.ids;
     call.constantColor = constantColor;
     rasterizer.draw(fb, state, call);
-    for (size_t k = 0; k < cutOuts.size(); ++k) {
-        const Batch& batch = cutOuts[k];
+    for (size_t k = 0; k < draws.cutOuts.size(); ++k) {
+        const WorldDraws::Batch& batch = draws.cutOuts[k];
         if (batch.triangles.empty()) continue;
         const WorldGeometry::CutOut& cutOut = world.cutOuts[k];
         raster::PipelineState tested = state;
@@ -68,6 +74,12 @@ void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const ra
         cutOutCall.constantColor = constantColor;
         rasterizer.draw(fb, tested, cutOutCall);
     }
+}
+
+void drawWorld(raster::Rasterizer& rasterizer, raster::Framebuffer& fb, const raster::PipelineState& state,
+               const WorldGeometry& world, const glm::mat4& clipFromWorld, std::span<const uint32_t> only,
+               const glm::vec4& constantColor) {
+    drawWorld(rasterizer, fb, state, world, worldDraws(world, only), clipFromWorld, constantColor);
 }
 
 }  // namespace shadowlab

@@ -82,20 +82,29 @@ float groupDepth(const PatchGrid& grid, int ci, int cj, unsigned group) {
 }
 
 // The four corners of grid patch (i, j) on the light, each at its group's least depth
-// (projected once per corner and group); false if one does not reach the light's plane.
+// (projected once per corner and group); false if one does not reach the light's plane, or
+// if the patch, between its corners' depths, lies off the light (light_pyramid.h).
 bool gridPatchOnLight(const PatchGrid& grid, const SoftShadowMap& soft, const glm::dvec3& P,
-                      const AreaLightPlane& light, int i, int j, BackProjectionScratch& s, glm::vec2 (&v)[4]) {
+                      const AreaLightPlane& light, const LightPyramid& pyramid, int i, int j,
+                      BackProjectionScratch& s, glm::vec2 (&v)[4]) {
     const int cw = grid.width + 1;
     const double nodeWidth = double(1 << grid.level);
+    unsigned groups[4];
+    float nearest = grid.at(i, j);   // a corner's group holds the patch: no corner is deeper
     for (int c = 0; c < 4; ++c) {
         const int ci = i + kLoop[c][0], cj = j + kLoop[c][1];
-        const unsigned group =
-            kGroups[cornerEdges(grid, s.joined, ci, cj)][size_t((1 - kLoop[c][0]) + 2 * (1 - kLoop[c][1]))];
-        const size_t k = 4 * (size_t(cj) * size_t(cw) + size_t(ci)) + size_t(std::countr_zero(group));
+        groups[c] = kGroups[cornerEdges(grid, s.joined, ci, cj)][size_t((1 - kLoop[c][0]) + 2 * (1 - kLoop[c][1]))];
+        nearest = std::min(nearest, groupDepth(grid, ci, cj, groups[c]));
+    }
+    const double x = (grid.x0 + i) * nodeWidth, y = (grid.y0 + j) * nodeWidth;
+    if (pyramid.misses(x, y, x + nodeWidth, y + nodeWidth, nearest, grid.at(i, j))) return false;
+    for (int c = 0; c < 4; ++c) {
+        const int ci = i + kLoop[c][0], cj = j + kLoop[c][1];
+        const size_t k = 4 * (size_t(cj) * size_t(cw) + size_t(ci)) + size_t(std::countr_zero(groups[c]));
         if (s.cornerState[k] == 0) {
             const double X = (grid.x0 + ci) * nodeWidth, Y = (grid.y0 + cj) * nodeWidth;
             const bool onPlane =
-                projectOntoLight(soft, P, light, X, Y, groupDepth(grid, ci, cj, group), s.cornerOnLight[k]);
+                projectOntoLight(soft, P, light, X, Y, groupDepth(grid, ci, cj, groups[c]), s.cornerOnLight[k]);
             s.cornerState[k] = onPlane ? 1 : 2;
         }
         if (s.cornerState[k] != 1) return false;
@@ -107,8 +116,9 @@ bool gridPatchOnLight(const PatchGrid& grid, const SoftShadowMap& soft, const gl
 }  // namespace
 
 int backProjectPatches(const PatchGrid& grid, const SurfaceJoins& joins, const SoftShadowMap& soft,
-                       const glm::dvec3& P, const AreaLightPlane& light, const LightGrid& samples, LightBitmask& mask,
-                       BackProjectionScratch& s, std::vector<glm::vec2>* drawn) {
+                       const glm::dvec3& P, const AreaLightPlane& light, const LightPyramid& pyramid,
+                       const LightGrid& samples, LightBitmask& mask, BackProjectionScratch& s,
+                       std::vector<glm::vec2>* drawn) {
     const size_t slots = 4 * size_t(grid.width + 1) * size_t(grid.height + 1);   // a corner's four groups at most
     s.cornerState.assign(slots, 0), s.cornerOnLight.resize(slots);
     joinGridPatches(grid, joins, s.joined);
@@ -116,7 +126,7 @@ int backProjectPatches(const PatchGrid& grid, const SurfaceJoins& joins, const S
     for (int j = 0; j < grid.height; ++j) {
         for (int i = 0; i < grid.width; ++i) {
             glm::vec2 v[4];
-            if (grid.at(i, j) >= 1.0f || !gridPatchOnLight(grid, soft, P, light, i, j, s, v)) continue;
+            if (grid.at(i, j) >= 1.0f || !gridPatchOnLight(grid, soft, P, light, pyramid, i, j, s, v)) continue;
             samples.cover(mask, v, 4);
             ++projected;
             if (drawn) drawn->insert(drawn->end(), v, v + 4);

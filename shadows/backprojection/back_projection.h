@@ -20,6 +20,7 @@
 
 #include "shading/light_sampling.h"
 #include "shadows/backprojection/light_bitmask.h"
+#include "shadows/backprojection/light_pyramid.h"
 #include "shadows/backprojection/occluder_patches.h"
 #include "shadows/backprojection/surface_joins.h"
 #include "shadows/filtered/soft_shadow_map.h"
@@ -34,10 +35,12 @@ struct BackProjectionScratch {
 };
 
 // Sets in `mask` the samples of `samples` that the grid's occluder patches hide from P;
-// returns the number of patches projected. Stops early once every sample is hidden. With
-// `drawn`, appends each projected patch's four corners in (a, b) (the debug view).
+// returns the number of patches projected (a grid patch `pyramid` proves off the light is
+// not). Stops early once every sample is hidden. With `drawn`, appends each projected
+// patch's four corners in (a, b) (the debug view).
 int backProjectPatches(const PatchGrid& grid, const SurfaceJoins& joins, const SoftShadowMap& soft,
-                       const glm::dvec3& P, const AreaLightPlane& light, const LightGrid& samples, LightBitmask& mask,
-                       BackProjectionScratch& scratch, std::vector<glm::vec2>* drawn = nullptr);
+                       const glm::dvec3& P, const AreaLightPlane& light, const LightPyramid& pyramid,
+                       const LightGrid& samples, LightBitmask& mask, BackProjectionScratch& scratch,
+                       std::vector<glm::vec2>* drawn = nullptr);
 
 }  // namespace shadowlab

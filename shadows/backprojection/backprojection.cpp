@@ -107,13 +107,14 @@ PixelResult shadePixel(const Frame& f, const glm::dvec3& P, const glm::dvec3& N,
         const auto [x0, y0, x1, y1] = searchRegion(f, r, dr);
         out.proved = f.settings.minMaxHierarchy && f.hierarchy.provedLit(r, x0, y0, x1, y1);
         if (!out.proved) {
-            // 3. The occluders' patches onto the light.
-            gatherPatches(f.soft, f.hierarchy, {r, dr, f.samples.perAxis()}, x0, y0, x1, y1, f.settings.maxNodes,
-                          grid);
+            // 3. The occluders' patches onto the light, those off it left out.
+            const LightPyramid pyramid(f.soft, P, f.light);
+            gatherPatches(f.soft, f.hierarchy, {r, dr, pyramid, f.samples.perAxis()}, x0, y0, x1, y1,
+                          f.settings.maxNodes, grid);
             out.level = grid.level;
             if (grid.occluders > 0) {
-                out.patches =
-                    backProjectPatches(grid, f.joins, f.soft, P, f.plane, f.samples, hidden, scratch, drawn);
+                out.patches = backProjectPatches(grid, f.joins, f.soft, P, f.plane, pyramid, f.samples, hidden,
+                                                 scratch, drawn);
             }
         }
     }

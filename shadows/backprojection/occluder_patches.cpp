@@ -29,23 +29,40 @@ int sampleLevel(const SoftShadowMap& soft, const PatchReceiver& p, float depth) 
     return level < MinMaxHierarchy::kFirstLevel ? 0 : level;
 }
 
+// Whether a node's patches, at depth `least` or (refined) anywhere from there to the
+// receiver, all project off the light.
+bool offLight(const PatchReceiver& p, int level, int x, int y, float least, float deepest) {
+    const double width = double(1 << level);
+    return p.pyramid.misses(x * width, y * width, (x + 1) * width, (y + 1) * width, least, deepest);
+}
+
 // A mixed node: one patch at its least depth once it is no wider than a light sample, else
 // its children (the next level down, or texels below the hierarchy's first level), the
-// solid ones as patches and the mixed ones refined again.
+// solid ones as patches and the mixed ones refined again; nothing where it all projects
+// off the light.
 void refine(const SoftShadowMap& soft, const MinMaxHierarchy& hierarchy, const PatchReceiver& p, int level, int x,
             int y, float least, PatchGrid& out) {
-    if (level <= sampleLevel(soft, p, least)) return void(out.fine.push_back({level, x, y, least}));
+    if (level <= sampleLevel(soft, p, least)) {
+        if (!offLight(p, level, x, y, least, least)) out.fine.push_back({level, x, y, least});
+        return;
+    }
+    if (offLight(p, level, x, y, least, 1.0f)) return;
     const int down = level - 1 >= MinMaxHierarchy::kFirstLevel ? level - 1 : 0;
     const int per = 1 << (level - down), size = down == 0 ? soft.map.size : hierarchy.sizeOf(down);
     for (int j = y * per; j < std::min((y + 1) * per, size); ++j) {
         for (int i = x * per; i < std::min((x + 1) * per, size); ++i) {
             if (down == 0) {
-                if (!p.r.litBy(soft.map, i, j)) out.fine.push_back({0, i, j, soft.map.at(i, j)});
+                const float depth = soft.map.at(i, j);
+                if (!p.r.litBy(soft.map, i, j) && !offLight(p, 0, i, j, depth, depth))
+                    out.fine.push_back({0, i, j, depth});
                 continue;
             }
             const NodeClass c = classify(hierarchy, p.r, down, i, j);
-            if (c.all) out.fine.push_back({down, i, j, c.least});
-            else if (c.some) refine(soft, hierarchy, p, down, i, j, c.least, out);
+            if (c.all) {
+                if (!offLight(p, down, i, j, c.least, c.least)) out.fine.push_back({down, i, j, c.least});
+            } else if (c.some) {
+                refine(soft, hierarchy, p, down, i, j, c.least, out);
+            }
         }
     }
 }

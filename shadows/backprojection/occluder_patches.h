@@ -11,11 +11,14 @@
 // samples: a node of 2^l texels at distance d from the light covers 2^l / w(d) of the
 // light's width, w(d) the light's cone from the receiver in texels at d (eq. 7.6 in
 // texels), so the refinement stops at 2^l <= w(d) / n for n samples per axis. A thin
-// occluder (a rail under a wide plate) keeps its width to within a sample.
+// occluder (a rail under a wide plate) keeps its width to within a sample. A refined node
+// whose patches would all project off the light (light_pyramid.h) is left out, with all
+// it holds.
 #pragma once
 
 #include <vector>
 
+#include "shadows/backprojection/light_pyramid.h"
 #include "shadows/depth_map.h"
 #include "shadows/filtered/soft_shadow_map.h"
 #include "shadows/maps/min_max_hierarchy.h"
@@ -42,10 +45,12 @@ struct PatchGrid {
 };
 
 // What the patches are gathered for: the receiver (its plane, receiver-plane bias; its
-// distance dr from the light's centre) and the light's samples per axis.
+// distance dr from the light's centre; its view of the light) and the light's samples per
+// axis.
 struct PatchReceiver {
     const MapReceiver& r;
     double dr;
+    const LightPyramid& pyramid;
     int samplesPerAxis;
 };
 

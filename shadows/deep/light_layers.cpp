@@ -42,7 +42,9 @@ bool nearerEvent(const Event& a, const Event& b) {
 
 // The translucent surfaces per texel, each texel's in (depth, triangle) order: a counting
 // sort of every tile's list, then a sort within each texel (the tile lists are in drawing
-// order, which is the same on every thread count, but a texel wants front to back).
+// order, which is the same on every thread count, but a texel wants front to back). A
+// tile's fragments lie on its own texels, so the tiles count and fill in parallel, each
+// writing only its texels' entries, in its list's order: the same bytes for any thread count.
 struct TexelSurfaces {
     std::vector<uint32_t> start;
     std::vector<Event> events;
@@ -55,20 +57,20 @@ TexelSurfaces gatherSurfaces(const raster::Framebuffer& fb, const CasterTransmis
     const auto texelIndex = [&](const raster::Fragment& f) {
         return raster::rowMajorIndexOf(f.pixel, fb.tilesX(), size);
     };
-    for (int tile = 0; tile < tiles; ++tile) {
+    tbb::parallel_for(0, tiles, [&](int tile) {
         for (const raster::Fragment& f : fb.tileFragments(tile)) ++out.start[texelIndex(f) + 1];
-    }
+    });
     for (size_t k = 1; k < out.start.size(); ++k) out.start[k] += out.start[k - 1];
     out.events.resize(out.start.back());
     std::vector<uint32_t> next(out.start.begin(), out.start.end() - 1);
-    for (int tile = 0; tile < tiles; ++tile) {
+    tbb::parallel_for(0, tiles, [&](int tile) {
         for (const raster::Fragment& f : fb.tileFragments(tile)) {
             const uint32_t triangle = f.primitiveId;
             const glm::vec3 passed = transmission.materialOf(triangle).passed();
             const double y = std::max(double(luminance(passed)), 1e-12);
             out.events[next[texelIndex(f)]++] = {f.depth, f.depth, float(-portable::log(y)), passed, triangle};
         }
-    }
+    });
     tbb::parallel_for(size_t(0), out.start.size() - 1, [&](size_t t) {
         std::sort(out.events.begin() + out.start[t], out.events.begin() + out.start[t + 1], nearerEvent);
     });
@@ -144,7 +146,11 @@ void marchTexel(const DepthMap& map, const VolumeMarch& march, int x, int y, flo
     std::sort(out.begin() + ptrdiff_t(first), out.end(), nearerEvent);
 }
 
-// Every texel's surfaces and volume pieces merged, nearest first, into the layers' arrays.
+// Every texel's surfaces and volume pieces merged, nearest first, into the layers' arrays:
+// the rows gather their events in parallel, and once every texel's count is known each row
+// copies its events to their place, in parallel too. The figures over all events are
+// reduced per row and combined in row order (integer sums, least and greatest: exact), so
+// the bytes are the same for any thread count.
 void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> volumes, VolumetricLayers& layers) {
     const VolumeMarch march = volumeMarch(layers.opaque, volumes);
     const int size = layers.size();
@@ -170,17 +176,29 @@ void mergeEvents(const TexelSurfaces& surfaces, std::span<const DensityVolume> v
             throw std::length_error("the light's layers hold more than 2^32 events: lower the resolution");
         layers.start[t + 1] = uint32_t(total);
     }
-    layers.depthNear.reserve(total), layers.depthFar.reserve(total), layers.opticalDepth.reserve(total);
-    layers.passed.reserve(total), layers.triangle.reserve(total);
-    for (const std::vector<Event>& row : rows) {
-        for (const Event& e : row) {
-            layers.depthNear.push_back(e.near), layers.depthFar.push_back(e.far);
-            layers.opticalDepth.push_back(e.opticalDepth), layers.passed.push_back(e.passed);
-            layers.triangle.push_back(e.triangle);
-            layers.volumePieces += e.triangle == VolumetricLayers::kVolumePiece;
-            layers.nearestDepth = std::min(layers.nearestDepth, e.near);
-            layers.farthestDepth = std::max(layers.farthestDepth, e.far);
+    layers.depthNear.resize(total), layers.depthFar.resize(total), layers.opticalDepth.resize(total);
+    layers.passed.resize(total), layers.triangle.resize(total);
+    struct RowFigures {
+        uint64_t volumePieces = 0;
+        float nearest = 1.0f, farthest = 0.0f;
+    };
+    std::vector<RowFigures> figures(static_cast<size_t>(size));
+    tbb::parallel_for(0, size, [&](int y) {
+        size_t e = layers.start[size_t(y) * size_t(size)];
+        RowFigures& f = figures[size_t(y)];
+        for (const Event& event : rows[size_t(y)]) {
+            layers.depthNear[e] = event.near, layers.depthFar[e] = event.far;
+            layers.opticalDepth[e] = event.opticalDepth, layers.passed[e] = event.passed;
+            layers.triangle[e] = event.triangle;
+            ++e;
+            f.volumePieces += event.triangle == VolumetricLayers::kVolumePiece;
+            f.nearest = std::min(f.nearest, event.near), f.farthest = std::max(f.farthest, event.far);
         }
+    });
+    for (const RowFigures& f : figures) {
+        layers.volumePieces += f.volumePieces;
+        layers.nearestDepth = std::min(layers.nearestDepth, f.nearest);
+        layers.farthestDepth = std::max(layers.farthestDepth, f.farthest);
     }
 }
 

@@ -98,7 +98,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
             point.position = glm::vec3(areaLightPoint(frame, u));
             const LightView view = fitLightView(point, in.gbuffer, in.casterWorld(), fit);
             timer.lap("light_view");
-            const DepthMap map = renderDepthMap(in.casterWorld(), view, depth, in.simd);
+            const DepthMap map = renderDepthMap(in.casters(), view, depth, in.simd);
             timer.lap("depth_map");
             accumulateHardShadow(in.gbuffer, map, point, in.simd, v, lit);
             timer.lap("lookup");

@@ -84,7 +84,7 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
     // grazing light) for a quarter of the depth resolution.
     view = withFarPlane(view, view.zFar * kFarPlaneHeadroom);
     SoftShadowMap soft;
-    soft.map = renderDepthMap(in.casterWorld(), view, {resolution, DepthLayer::First, offset}, in.simd);
+    soft.map = renderDepthMap(in.casters(), view, {resolution, DepthLayer::First, offset}, in.simd);
     soft.linear = soft.map.image();
     tbb::parallel_for(size_t(0), soft.linear.size(), [&](size_t k) {
         float& z = soft.linear[k];

@@ -46,7 +46,7 @@ LightMaps cubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSe
         LightView view;
         const bool used = fitCubeFace(light, face, in.gbuffer, in.casterWorld(), o, view);
         timer.lap("light_view");
-        if (used) out.maps[face] = renderDepthMap(in.casterWorld(), view, depthMapSettings(s), in.simd);
+        if (used) out.maps[face] = renderDepthMap(in.casters(), view, depthMapSettings(s), in.simd);
         timer.lap("depth_map");
     }
     return out;
@@ -74,7 +74,7 @@ LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapS
         view = warped.view, out.nOpt = warped.nOpt;
     }
     timer.lap("light_view");
-    out.maps.push_back(renderDepthMap(in.casterWorld(), view, depthMapSettings(s), in.simd));
+    out.maps.push_back(renderDepthMap(in.casters(), view, depthMapSettings(s), in.simd));
     timer.lap("depth_map");
     return out;
 }
@@ -127,7 +127,7 @@ void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSett
                 DepthMapSettings one = depthMapSettings(s);
                 one.layer = layer;
                 writeDepthMap(debug, (layer == DepthLayer::First ? "depth-first" : "depth-second") + suffix,
-                              renderDepthMap(in.casterWorld(), lm.maps[k].view, one, in.simd));
+                              renderDepthMap(in.casters(), lm.maps[k].view, one, in.simd));
             }
         }
     }

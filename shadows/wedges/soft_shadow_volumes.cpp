@@ -30,6 +30,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 #include "shading/light_sampling.h"
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
@@ -66,20 +68,24 @@ const SettingsTable<SoftShadowVolumeSettings>& softShadowVolumeSettingsTable() {
     return table;
 }
 
-// Step 4, with the hard shadow of the centre from the stencil (row-major).
+// Step 4, with the hard shadow of the centre from the stencil (row-major); rows in
+// parallel, each pixel written by its own row: the same bytes for any thread count.
 ShadowOutputs finalVisibility(const GBuffer& g, const Light& centre, const std::vector<uint8_t>& stencil,
                               const WedgeCoverage& wedges, HardShadow mode) {
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
     out.stencil.resize(g.pixelCount());
     const LightReach reaches(centre);
-    for (size_t k = 0; k < g.pixelCount(); ++k) {
-        out.stencil[k] = float(int8_t(stencil[k]));
-        if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
-        const float count = out.stencil[k];
-        const float hard = mode == HardShadow::Count ? 1.0f - count : (count == 0.0f ? 1.0f : 0.0f);
-        out.visibility[k] = std::clamp(hard - float(wedges.correction[k]), 0.0f, 1.0f);
-    }
+    tbb::parallel_for(0, g.height, [&](int j) {
+        for (int i = 0; i < g.width; ++i) {
+            const size_t k = g.index(i, j);
+            out.stencil[k] = float(int8_t(stencil[k]));
+            if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
+            const float count = out.stencil[k];
+            const float hard = mode == HardShadow::Count ? 1.0f - count : (count == 0.0f ? 1.0f : 0.0f);
+            out.visibility[k] = std::clamp(hard - float(wedges.correction[k]), 0.0f, 1.0f);
+        }
+    });
     return out;
 }
 
