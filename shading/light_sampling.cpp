@@ -46,10 +46,19 @@ glm::dvec2 shiftedSobol02(uint32_t k, const glm::dvec2& shift) {
     return p - glm::floor(p);   // multiples of 2^-32 below 2 (Pcg32's shifts too): exact
 }
 
-glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
+namespace {
+
+// The disk point of the concentric map in polar form, r (cos phi, sin phi); the square's
+// centre, where phi is undefined, is the disk's.
+struct ConcentricPolar {
+    bool centre;
+    double r, phi;
+};
+
+ConcentricPolar concentricPolar(const glm::dvec2& u) {
     const glm::dvec2 s = 2.0 * u - 1.0;  // [-1, 1]^2
     if (s.x == 0.0 && s.y == 0.0) {
-        return glm::dvec2(0.0);
+        return {true, 0.0, 0.0};
     }
     // The square of "radius" max(|x|, |y|) maps to the circle of that radius; the position
     // along the square's side maps linearly to the angle within the matching quarter.
@@ -57,7 +66,29 @@ glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
     const bool nearXAxis = std::abs(s.x) > std::abs(s.y);
     const double r = nearXAxis ? s.x : s.y;
     const double phi = nearXAxis ? quarter * (s.y / s.x) : 2.0 * quarter - quarter * (s.x / s.y);
-    return r * glm::dvec2(portable::cos(phi), portable::sin(phi));
+    return {false, r, phi};
+}
+
+glm::dvec3 lightPointAt(const AreaLightFrame& frame, const glm::dvec2& m) {
+    return frame.centre + m.x * frame.axisA + m.y * frame.axisB;
+}
+
+// sin(r + turns pi/2) from sin r and cos r: portable::sin's and cos's pick by quadrant
+// (raster/portable_math.h, sinQuarterTurns).
+double quarterTurns(int turns, double sinR, double cosR) {
+    switch (turns % 4) {
+        case 0: return sinR;
+        case 1: return cosR;
+        case 2: return -sinR;
+        default: return -cosR;
+    }
+}
+
+}  // namespace
+
+glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
+    const ConcentricPolar p = concentricPolar(u);
+    return p.centre ? glm::dvec2(0.0) : p.r * glm::dvec2(portable::cos(p.phi), portable::sin(p.phi));
 }
 
 AreaLightFrame areaLightFrame(const Light& light) {
@@ -96,8 +127,7 @@ AreaLightPlane areaLightPlane(const AreaLightFrame& frame) {
 }
 
 glm::dvec3 areaLightPoint(const AreaLightFrame& frame, const glm::dvec2& u) {
-    const glm::dvec2 m = frame.disk ? concentricSquareToDisk(u) : 2.0 * u - 1.0;
-    return frame.centre + m.x * frame.axisA + m.y * frame.axisB;
+    return lightPointAt(frame, frame.disk ? concentricSquareToDisk(u) : 2.0 * u - 1.0);
 }
 
 glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng) {
@@ -108,3 +138,36 @@ glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng) {
 
 }  // namespace shadowlab
 
+
+namespace shadowlab {
+
+void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
+    const size_t count = size_t(n) * size_t(n);
+    u_.resize(count), points_.resize(count);
+    for (int b = 0; b < n; ++b) {
+        for (int a = 0; a < n; ++a) u_[size_t(a) + size_t(n) * size_t(b)] = jitteredSample(a, b, n, rng);
+    }
+    if (frame.disk) {
+        centre_.resize(count), radius_.resize(count), reduced_.resize(count), sine_.resize(count), cosine_.resize(count),
+            quadrant_.resize(count);
+        for (size_t k = 0; k < count; ++k) {   // phi = 0 at the centre: reduced, then unused
+            const ConcentricPolar p = concentricPolar(u_[k]);
+            centre_[k] = p.centre, radius_[k] = p.r;
+            reduced_[k] = portable::detail::reduceHalfPi(p.phi, quadrant_[k]);
+        }
+        for (size_t k = 0; k < count; ++k) {   // no branch: vectorised
+            sine_[k] = portable::detail::sinReduced(reduced_[k]);
+            cosine_[k] = portable::detail::cosReduced(reduced_[k]);
+        }
+        for (size_t k = 0; k < count; ++k) {
+            const double c = quarterTurns(quadrant_[k] + 1, sine_[k], cosine_[k]);
+            const double s = quarterTurns(quadrant_[k], sine_[k], cosine_[k]);
+            u_[k] = centre_[k] ? glm::dvec2(0.0) : radius_[k] * glm::dvec2(c, s);
+        }
+    } else {
+        for (glm::dvec2& u : u_) u = 2.0 * u - 1.0;
+    }
+    for (size_t k = 0; k < count; ++k) points_[k] = lightPointAt(frame, u_[k]);
+}
+
+}  // namespace shadowlab
