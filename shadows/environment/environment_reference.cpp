@@ -38,6 +38,7 @@
 #include "shadows/environment/environment_techniques.h"
 #include "shadows/environment/light_contribution.h"
 #include "shadows/reference/reference.h"
+#include "shadows/reference/scene_rays.h"
 #include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 
@@ -135,8 +136,7 @@ ShadowOutputs runExactIntegral(const ShadowInputs& in) {
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     const EnvironmentDistribution environment(map);
-    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
-    const ReferenceVisibility rays(in.casterWorld(), &transmission);
+    const ReferenceVisibility& rays = sceneRays(in.casters());   // built by the scene's first frame
     timer.lap("bvh");
     const GBuffer& g = in.gbuffer;
     const glm::vec3 eye = in.camera().eye;
