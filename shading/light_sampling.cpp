@@ -73,15 +73,22 @@ glm::dvec3 lightPointAt(const AreaLightFrame& frame, const glm::dvec2& m) {
     return frame.centre + m.x * frame.axisA + m.y * frame.axisB;
 }
 
-// sin(r + turns pi/2) from sin r and cos r: portable::sin's and cos's pick by quadrant
-// (raster/portable_math.h, sinQuarterTurns).
+// sin(r + turns pi/2) from sin r and cos r, turns taken modulo 4 (two's complement): the
+// pick of portable::sin and cos by quadrant (raster/portable_math.h, sinQuarterTurns: sin r,
+// cos r, -sin r, -cos r), as selects, for the quadrant is random from stratum to stratum.
 double quarterTurns(int turns, double sinR, double cosR) {
-    switch (turns % 4) {
-        case 0: return sinR;
-        case 1: return cosR;
-        case 2: return -sinR;
-        default: return -cosR;
-    }
+    const double value = turns & 1 ? cosR : sinR;
+    return turns & 2 ? -value : value;
+}
+
+// portable_math.h's reduceHalfPi of an angle in [-pi/4, 3pi/4], the concentric map's, with
+// the same operations but for the quadrant: k = floor(phi 2/pi + 1/2) is a small integer
+// (-1 to 2, rounding at the ends), so int(k) is exact, and quarterTurns' `& 1`, `& 2` read
+// it modulo 4 as reduceHalfPi's fmod does, with no library call.
+double reduceConcentricAngle(double phi, int& quadrant) {
+    const double k = std::floor(phi * portable::detail::kTwoOverPi + 0.5);
+    quadrant = int(k);
+    return (phi - k * portable::detail::kHalfPiHigh) - k * portable::detail::kHalfPiLow;
 }
 
 }  // namespace
@@ -153,7 +160,7 @@ void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
         for (size_t k = 0; k < count; ++k) {   // phi = 0 at the centre: reduced, then unused
             const ConcentricPolar p = concentricPolar(u_[k]);
             centre_[k] = p.centre, radius_[k] = p.r;
-            reduced_[k] = portable::detail::reduceHalfPi(p.phi, quadrant_[k]);
+            reduced_[k] = reduceConcentricAngle(p.phi, quadrant_[k]);
         }
         for (size_t k = 0; k < count; ++k) {   // no branch: vectorised
             sine_[k] = portable::detail::sinReduced(reduced_[k]);
