@@ -57,16 +57,15 @@ struct ConcentricPolar {
 
 ConcentricPolar concentricPolar(const glm::dvec2& u) {
     const glm::dvec2 s = 2.0 * u - 1.0;  // [-1, 1]^2
-    if (s.x == 0.0 && s.y == 0.0) {
-        return {true, 0.0, 0.0};
-    }
     // The square of "radius" max(|x|, |y|) maps to the circle of that radius; the position
-    // along the square's side maps linearly to the angle within the matching quarter.
+    // along the square's side maps linearly to the angle within the matching quarter. Both
+    // quarters' angles are computed and one kept, for which one is a coin flip per stratum
+    // that a branch would mispredict; the centre's is 0 (0/0 there is never kept).
     const double quarter = std::numbers::pi / 4.0;
+    const bool centre = s.x == 0.0 && s.y == 0.0;
     const bool nearXAxis = std::abs(s.x) > std::abs(s.y);
-    const double r = nearXAxis ? s.x : s.y;
-    const double phi = nearXAxis ? quarter * (s.y / s.x) : 2.0 * quarter - quarter * (s.x / s.y);
-    return {false, r, phi};
+    const double nearX = quarter * (s.y / s.x), nearY = 2.0 * quarter - quarter * (s.x / s.y);
+    return {centre, nearXAxis ? s.x : s.y, centre ? 0.0 : nearXAxis ? nearX : nearY};
 }
 
 glm::dvec3 lightPointAt(const AreaLightFrame& frame, const glm::dvec2& m) {
@@ -157,7 +156,7 @@ void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
     if (frame.disk) {
         centre_.resize(count), radius_.resize(count), reduced_.resize(count), sine_.resize(count), cosine_.resize(count),
             quadrant_.resize(count);
-        for (size_t k = 0; k < count; ++k) {   // phi = 0 at the centre: reduced, then unused
+        for (size_t k = 0; k < count; ++k) {   // the centre's phi is reduced, then unused
             const ConcentricPolar p = concentricPolar(u_[k]);
             centre_[k] = p.centre, radius_[k] = p.r;
             reduced_[k] = reduceConcentricAngle(p.phi, quadrant_[k]);
