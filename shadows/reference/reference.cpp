@@ -185,7 +185,7 @@ glm::vec3 passedAlong(const CasterTransmission& transmission, const RTCRay& ray,
 
 }  // namespace
 
-// The samples of one receiver, in order: each one's light is known without a ray (behind
+// The samples of a batch of receivers, in order: each one's light is known without a ray (behind
 // the surface, no segment left to block) or is what its shadow ray finds, 0 or 1 through
 // opaque casters (passedAlong through others). The rays are queued and traced together:
 // a coherent stream (rtcOccluded1M, which Embree cuts into packets of its widest ISA), or,
@@ -217,8 +217,11 @@ struct ReferenceVisibility::RayBatch::Samples {
         lights.push_back(glm::vec3(0.0f));
     }
 
-    // Fills in the light of every ray's sample. A ray reached its end unless rtcOccluded set
-    // its tfar to -inf (a hit the filter, if any, kept).
+    // A ray reached its end unless rtcOccluded set its tfar to -inf (a hit the filter, if
+    // any, kept).
+    static bool reached(const RTCRay& ray) { return ray.tfar != -std::numeric_limits<float>::infinity(); }
+
+    // Fills in the light of every ray's sample.
     void trace(RTCScene scene, const CasterTransmission* transmission, RayQueries queries) {
         if (rays.empty()) return;
         TransmissionContext context{{}, transmission, &crossed};
@@ -239,9 +242,8 @@ struct ReferenceVisibility::RayBatch::Samples {
         auto first = crossed.begin();
         for (uint32_t k = 0; k < rays.size(); ++k) {
             const auto last = std::find_if(first, crossed.end(), [k](const Crossing& c) { return c.ray != k; });
-            const bool reached = rays[k].tfar != -std::numeric_limits<float>::infinity();
             glm::vec3& light = lights[sampleOfRay[k]];
-            if (!reached) light = glm::vec3(0.0f);
+            if (!reached(rays[k])) light = glm::vec3(0.0f);
             else light = transmission ? passedAlong(*transmission, rays[k], {first, last}) : glm::vec3(1.0f);
             first = last;
         }
@@ -307,13 +309,22 @@ void addAreaSamples(Samples& samples, const Receiver& r, const AreaLightFrame& f
     for (size_t k = 0; k < targets.size(); ++k) addPointSample(samples, r, targets[k], samples.segmentEnds[k]);
 }
 
-// The mean light of the traced samples, summed in their order: with opaque casters the
-// visible fraction, count / n^2, exact in float; one sample's own light.
-glm::vec3 meanLight(const Samples& samples) {
+// The mean light of the traced samples [first, end), summed in their order: with opaque
+// casters the visible fraction, count / n^2, exact in float; one sample's own light.
+glm::vec3 meanLight(const Samples& samples, size_t first, size_t end) {
     glm::vec3 sum(0.0f);
-    for (const glm::vec3& light : samples.lights) sum += light;
-    return sum / float(samples.lights.size());
+    for (size_t s = first; s < end; ++s) sum += samples.lights[s];
+    return sum / float(end - first);
 }
+
+// Pixels whose samples are queued, each from its first sample to the next one's.
+struct QueuedPixel {
+    size_t pixel, firstSample;
+};
+
+// Rays go to Embree in batches of at least this many (or a row's): an area light's pixel
+// fills one, a point light's row of pixels shares one, so hard shadows trace in packets too.
+constexpr size_t kBatchRays = 256;
 
 // Everything about the light that is the same for every pixel.
 struct LightQuery {
@@ -401,21 +412,30 @@ ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, 
     if (transmission_) out.coloured.assign(gbuffer.pixelCount(), glm::vec3(0.0f));
     const ProgressStage progress(options.progress, "reference rays: row", uint64_t(gbuffer.height));
     tbb::parallel_for(tbb::blocked_range<int>(0, gbuffer.height), [&](const tbb::blocked_range<int>& rows) {
-        Samples samples;   // one pixel's at a time, its buffers reused
+        Samples samples;   // a batch's, its buffers reused
+        std::vector<QueuedPixel> queued;
+        const auto traceQueued = [&] {
+            samples.trace(embree_->scene, transmission_, options.queries);
+            for (size_t q = 0; q < queued.size(); ++q) {
+                const size_t end = q + 1 < queued.size() ? queued[q + 1].firstSample : samples.lights.size();
+                const glm::vec3 passed = meanLight(samples, queued[q].firstSample, end);
+                // Opaque casters pass the same value in every channel: V is that value.
+                out.visibility[queued[q].pixel] = transmission_ ? luminance(passed) : passed.x;
+                if (transmission_) out.coloured[queued[q].pixel] = passed;
+            }
+            samples.clear(), queued.clear();
+        };
         for (int j = rows.begin(); j != rows.end(); ++j) {
             for (int i = 0; i < gbuffer.width; ++i) {
                 const size_t k = gbuffer.index(i, j);
                 if (!gbuffer.hit[k]) {
                     continue;
                 }
-                samples.clear();
+                queued.push_back({k, samples.lights.size()});
                 addPixelSamples(samples, query, receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
-                samples.trace(embree_->scene, transmission_, options.queries);
-                const glm::vec3 passed = meanLight(samples);
-                // Opaque casters pass the same value in every channel: V is that value.
-                out.visibility[k] = transmission_ ? luminance(passed) : passed.x;
-                if (transmission_) out.coloured[k] = passed;
+                if (samples.rays.size() >= kBatchRays) traceQueued();
             }
+            traceQueued();
             progress.advance();
         }
         raysCast_ += samples.count;  // integer sum: the total is the same in any order
