@@ -234,6 +234,10 @@ struct ReferenceVisibility::RayBatch::Samples {
             for (RTCRay& ray : rays) rtcOccluded1(scene, &context.base, &ray);
         }
         count += rays.size();
+        if (!transmission) {   // opaque casters: 1 where a ray got through
+            for (uint32_t k = 0; k < rays.size(); ++k) lights[sampleOfRay[k]] = glm::vec3(reached(rays[k]) ? 1.0f : 0.0f);
+            return;
+        }
         std::ranges::sort(crossed, [](const Crossing& a, const Crossing& b) {
             if (a.ray != b.ray) return a.ray < b.ray;
             if (a.instance != b.instance) return a.instance < b.instance;
@@ -243,8 +247,7 @@ struct ReferenceVisibility::RayBatch::Samples {
         for (uint32_t k = 0; k < rays.size(); ++k) {
             const auto last = std::find_if(first, crossed.end(), [k](const Crossing& c) { return c.ray != k; });
             glm::vec3& light = lights[sampleOfRay[k]];
-            if (!reached(rays[k])) light = glm::vec3(0.0f);
-            else light = transmission ? passedAlong(*transmission, rays[k], {first, last}) : glm::vec3(1.0f);
+            light = reached(rays[k]) ? passedAlong(*transmission, rays[k], {first, last}) : glm::vec3(0.0f);
             first = last;
         }
     }
