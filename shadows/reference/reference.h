@@ -82,6 +82,9 @@ public:
     // integrators that choose their own directions (the environment reference); not counted
     // in raysCast().
     glm::vec3 directionPassed(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const;
+    // The same for a point `target` (a sample on an area source): in front of N's plane and
+    // nothing in the way of the segment, which stops the ray offset short of the target.
+    bool pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const;
 
     // The shadow rays of one receiver, queued and traced together; one per thread, reused,
     // so a steady state allocates nothing.
@@ -103,9 +106,6 @@ public:
     // batch's next use.
     std::span<const glm::vec3> directionsPassed(const glm::vec3& P, const glm::vec3& N,
                                                 std::span<const glm::dvec3> directions, RayBatch& batch) const;
-    // The same for a point `target` (a sample on an area source): in front of N's plane and
-    // nothing in the way of the segment, which stops the ray offset short of the target.
-    bool pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const;
 
     // Shadow rays cast by all visibility() calls so far (for Mrays/s in benchmarks).
     uint64_t raysCast() const { return raysCast_.load(); }
