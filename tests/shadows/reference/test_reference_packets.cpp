@@ -22,17 +22,17 @@ using namespace shadowlab;
 
 namespace {
 
-std::string sceneFile(const std::string& name) { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
+std::string packetSceneFile(const std::string& name) { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/" + name + ".json"; }
 
 // A scene at a small size, its G-buffer and the reference's rays through its casters.
-struct SmallScene {
+struct PacketScene {
     Scene scene;
     WorldGeometry world;
     GBuffer gbuffer;
     CasterTransmission transmission;
     ReferenceVisibility reference;
-    explicit SmallScene(const std::string& name)
-        : scene(smallCopy(loadScene(sceneFile(name)))), world(flatten(scene)),
+    explicit PacketScene(const std::string& name)
+        : scene(smallCopy(loadScene(packetSceneFile(name)))), world(flatten(scene)),
           gbuffer(renderGBuffer(world, scene.camera, raster::SimdLevel::Scalar)), transmission(scene, world),
           reference(world, &transmission) {}
     static Scene smallCopy(Scene s) {
@@ -55,7 +55,7 @@ std::vector<Light> everyKind(const Light& light, float size) {
     };
 }
 
-void checkSameAsSingleRays(const SmallScene& s, const Light& light) {
+void checkSameAsSingleRays(const PacketScene& s, const Light& light) {
     const ReferenceOptions stream{.areaSamplesPerAxis = 8, .queries = RayQueries::Stream};
     ReferenceOptions single = stream;
     single.queries = RayQueries::Single;
@@ -76,7 +76,7 @@ TEST_CASE("reference: the stream of rays gives the bytes of single rays, every l
                                              "volumetric/hair-over-plane",
                                              "volumetric/smoke-over-plane"};
     for (const std::string& name : scenes) {
-        const SmallScene s(name);
+        const PacketScene s(name);
         REQUIRE(!s.scene.lights.empty());
         const Light& own = s.scene.lights[0];
         const float size = 0.05f * float(sceneDiagonal(s.world));
@@ -91,7 +91,7 @@ TEST_CASE("reference: the stream of rays gives the bytes of single rays, every l
 }
 
 TEST_CASE("reference: directionsPassed traced together gives each direction's directionPassed") {
-    const SmallScene s("volumetric/foliage-cards");
+    const PacketScene s("volumetric/foliage-cards");
     REQUIRE(s.transmission.anyNonOpaque());
     ReferenceVisibility::RayBatch batch;
     std::vector<glm::dvec3> directions;
