@@ -46,18 +46,55 @@ glm::dvec2 shiftedSobol02(uint32_t k, const glm::dvec2& shift) {
     return p - glm::floor(p);   // multiples of 2^-32 below 2 (Pcg32's shifts too): exact
 }
 
-glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
+namespace {
+
+// The disk point of the concentric map in polar form, r (cos phi, sin phi); the square's
+// centre, where phi is undefined, is the disk's.
+struct ConcentricPolar {
+    bool centre;
+    double r, phi;
+};
+
+ConcentricPolar concentricPolar(const glm::dvec2& u) {
     const glm::dvec2 s = 2.0 * u - 1.0;  // [-1, 1]^2
-    if (s.x == 0.0 && s.y == 0.0) {
-        return glm::dvec2(0.0);
-    }
     // The square of "radius" max(|x|, |y|) maps to the circle of that radius; the position
-    // along the square's side maps linearly to the angle within the matching quarter.
+    // along the square's side maps linearly to the angle within the matching quarter. Both
+    // quarters' angles are computed and one kept, for which one is a coin flip per stratum
+    // that a branch would mispredict; the centre's is 0 (0/0 there is never kept).
     const double quarter = std::numbers::pi / 4.0;
+    const bool centre = s.x == 0.0 && s.y == 0.0;
     const bool nearXAxis = std::abs(s.x) > std::abs(s.y);
-    const double r = nearXAxis ? s.x : s.y;
-    const double phi = nearXAxis ? quarter * (s.y / s.x) : 2.0 * quarter - quarter * (s.x / s.y);
-    return r * glm::dvec2(portable::cos(phi), portable::sin(phi));
+    const double nearX = quarter * (s.y / s.x), nearY = 2.0 * quarter - quarter * (s.x / s.y);
+    return {centre, nearXAxis ? s.x : s.y, centre ? 0.0 : nearXAxis ? nearX : nearY};
+}
+
+glm::dvec3 lightPointAt(const AreaLightFrame& frame, const glm::dvec2& m) {
+    return frame.centre + m.x * frame.axisA + m.y * frame.axisB;
+}
+
+// sin(r + turns pi/2) from sin r and cos r, turns taken modulo 4 (two's complement): the
+// pick of portable::sin and cos by quadrant (raster/portable_math.h, sinQuarterTurns: sin r,
+// cos r, -sin r, -cos r), as selects, for the quadrant is random from stratum to stratum.
+double quarterTurns(int turns, double sinR, double cosR) {
+    const double value = turns & 1 ? cosR : sinR;
+    return turns & 2 ? -value : value;
+}
+
+// portable_math.h's reduceHalfPi of an angle in [-pi/4, 3pi/4], the concentric map's, with
+// the same operations but for the quadrant: k = floor(phi 2/pi + 1/2) is a small integer
+// (-1 to 2, rounding at the ends), so int(k) is exact, and quarterTurns' `& 1`, `& 2` read
+// it modulo 4 as reduceHalfPi's fmod does, with no library call.
+double reduceConcentricAngle(double phi, int& quadrant) {
+    const double k = std::floor(phi * portable::detail::kTwoOverPi + 0.5);
+    quadrant = int(k);
+    return (phi - k * portable::detail::kHalfPiHigh) - k * portable::detail::kHalfPiLow;
+}
+
+}  // namespace
+
+glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
+    const ConcentricPolar p = concentricPolar(u);
+    return p.centre ? glm::dvec2(0.0) : p.r * glm::dvec2(portable::cos(p.phi), portable::sin(p.phi));
 }
 
 AreaLightFrame areaLightFrame(const Light& light) {
@@ -96,8 +133,7 @@ AreaLightPlane areaLightPlane(const AreaLightFrame& frame) {
 }
 
 glm::dvec3 areaLightPoint(const AreaLightFrame& frame, const glm::dvec2& u) {
-    const glm::dvec2 m = frame.disk ? concentricSquareToDisk(u) : 2.0 * u - 1.0;
-    return frame.centre + m.x * frame.axisA + m.y * frame.axisB;
+    return lightPointAt(frame, frame.disk ? concentricSquareToDisk(u) : 2.0 * u - 1.0);
 }
 
 glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng) {
@@ -108,3 +144,36 @@ glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng) {
 
 }  // namespace shadowlab
 
+
+namespace shadowlab {
+
+void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
+    const size_t count = size_t(n) * size_t(n);
+    u_.resize(count), points_.resize(count);
+    for (int b = 0; b < n; ++b) {
+        for (int a = 0; a < n; ++a) u_[size_t(a) + size_t(n) * size_t(b)] = jitteredSample(a, b, n, rng);
+    }
+    if (frame.disk) {
+        centre_.resize(count), radius_.resize(count), reduced_.resize(count), sine_.resize(count), cosine_.resize(count),
+            quadrant_.resize(count);
+        for (size_t k = 0; k < count; ++k) {   // the centre's phi is reduced, then unused
+            const ConcentricPolar p = concentricPolar(u_[k]);
+            centre_[k] = p.centre, radius_[k] = p.r;
+            reduced_[k] = reduceConcentricAngle(p.phi, quadrant_[k]);
+        }
+        for (size_t k = 0; k < count; ++k) {   // no branch: vectorised
+            sine_[k] = portable::detail::sinReduced(reduced_[k]);
+            cosine_[k] = portable::detail::cosReduced(reduced_[k]);
+        }
+        for (size_t k = 0; k < count; ++k) {
+            const double c = quarterTurns(quadrant_[k] + 1, sine_[k], cosine_[k]);
+            const double s = quarterTurns(quadrant_[k], sine_[k], cosine_[k]);
+            u_[k] = centre_[k] ? glm::dvec2(0.0) : radius_[k] * glm::dvec2(c, s);
+        }
+    } else {
+        for (glm::dvec2& u : u_) u = 2.0 * u - 1.0;
+    }
+    for (size_t k = 0; k < count; ++k) points_[k] = lightPointAt(frame, u_[k]);
+}
+
+}  // namespace shadowlab

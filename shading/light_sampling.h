@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -71,5 +72,24 @@ glm::dvec3 areaLightPoint(const AreaLightFrame& frame, const glm::dvec2& u);
 
 // Sample u of stratum (a, b) of n x n, jittered with two draws from rng.
 glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng);
+
+// The light's points of all n x n strata, stratum (a, b) at a + n b: the bits of
+// areaLightPoint(frame, jitteredSample(a, b, n, rng)) over b, then a, from 0, and the same
+// draws from rng. Computed in stages over arrays, so that the disk's sine and cosine
+// polynomials of many strata run side by side (vectorised) where one sample at a time waits
+// on their latency; the same double operations in the same order per stratum. Reused from
+// call to call: a steady state allocates nothing.
+class AreaLightPoints {
+public:
+    void fill(const AreaLightFrame& frame, int n, Pcg32& rng);
+    const std::vector<glm::dvec3>& points() const { return points_; }
+
+private:
+    std::vector<glm::dvec3> points_;
+    std::vector<glm::dvec2> u_;   // per stratum: the sample, then the point in [-1, 1]^2 or the disk
+    std::vector<uint8_t> centre_;   // the disk's: the square's centre, the disk's
+    std::vector<double> radius_, reduced_, sine_, cosine_;   // concentricSquareToDisk's r, its angle less
+    std::vector<int> quadrant_;                              // its quarter turns, their sin and cos
+};
 
 }  // namespace shadowlab

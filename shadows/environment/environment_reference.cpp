@@ -22,7 +22,9 @@
 // Every pixel draws the same count of numbers from its own stream (seed, pixel), so the
 // image is the same bytes for any number of threads.
 #include <cmath>
+#include <span>
 #include <stdexcept>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -36,6 +38,7 @@
 #include "shadows/environment/environment_techniques.h"
 #include "shadows/environment/light_contribution.h"
 #include "shadows/reference/reference.h"
+#include "shadows/reference/scene_rays.h"
 #include "shadows/settings_table.h"
 #include "shadows/stage_timer.h"
 
@@ -43,6 +46,21 @@ namespace shadowlab {
 namespace {
 
 constexpr uint64_t kHalfSeeds[2] = {0x656e762d41ull, 0x656e762d42ull};   // "env-A", "env-B"
+
+// One sample's term of a round, f L V cos / (p_env + p_brdf), but for V: 0 where it is 0
+// whatever the casters do, else what the ray of `direction` has to find.
+struct Term {
+    glm::dvec3 fL{0.0};
+    double cosine = 0.0, pdf = 0.0;
+    int ray = -1;   // index among the traced directions; -1: the term is 0
+};
+
+// A thread's buffers for estimate(), reused from pixel to pixel.
+struct Scratch {
+    std::vector<Term> terms;
+    std::vector<glm::dvec3> directions;
+    ReferenceVisibility::RayBatch batch;
+};
 
 struct Integrand {
     const EnvironmentMap& map;
@@ -52,37 +70,52 @@ struct Integrand {
     glm::vec3 albedo;   // the surface's at the pixel (shading/surface_albedo.h)
     glm::vec3 P, Ng, Ns, wo;
 
-    // f L V cos / (p_env + p_brdf) in direction wi; 0 below either normal's plane.
-    glm::dvec3 operator()(const glm::dvec3& wi) const {
+    // Queues the term of direction wi; 0 below either normal's plane.
+    void add(const glm::dvec3& wi, Scratch& scratch) const {
+        scratch.terms.push_back(term(wi, scratch.directions));
+    }
+    Term term(const glm::dvec3& wi, std::vector<glm::dvec3>& directions) const {
         const double cosine = glm::dot(glm::dvec3(Ns), wi);
-        if (!(cosine > 0.0)) return glm::dvec3(0.0);
+        if (!(cosine > 0.0)) return {};
         const glm::ivec2 t = map.texelToward(wi);
         const glm::dvec3 L(map.at(t.x, t.y));
         const glm::dvec3 f(brdf(material, albedo, Ns, glm::vec3(wi), wo));
-        if (glm::dot(f * L, glm::dvec3(1.0)) == 0.0) return glm::dvec3(0.0);
+        if (glm::dot(f * L, glm::dvec3(1.0)) == 0.0) return {};
         const double pdf = (environment.empty() ? 0.0 : environment.pdf(wi)) +
                            brdfPdf(material, glm::dvec3(Ns), glm::dvec3(wo), wi);
-        if (!(pdf > 0.0)) return glm::dvec3(0.0);
-        const glm::dvec3 passed(rays.directionPassed(P, Ng, wi));   // through holes and translucent casters
-        if (passed == glm::dvec3(0.0)) return glm::dvec3(0.0);
-        return f * L * passed * cosine / pdf;
+        if (!(pdf > 0.0)) return {};
+        directions.push_back(wi);
+        return {f * L, cosine, pdf, int(directions.size()) - 1};
+    }
+    // f L V cos / pdf, V per channel what the casters let through its ray (holes,
+    // translucent casters).
+    static glm::dvec3 value(const Term& term, std::span<const glm::vec3> passed) {
+        if (term.ray < 0) return glm::dvec3(0.0);
+        const glm::dvec3 V(passed[size_t(term.ray)]);
+        if (V == glm::dvec3(0.0)) return glm::dvec3(0.0);
+        return term.fL * V * term.cosine / term.pdf;
     }
 };
 
 // One half's estimate: `rounds` rounds of one sample of each strategy. The two numbers
 // that choose a texel (environment) and place a lobe's direction (BRDF) come from two
 // (0, 2)-sequences, each shifted by its own random offset (shading/light_sampling.h), so the
-// rounds stratify both strategies; the rest are independent.
-glm::dvec3 estimate(const Integrand& integrand, int rounds, Pcg32 rng) {
+// rounds stratify both strategies; the rest are independent. Every term is queued first and
+// the rays traced together (reference.h's RayBatch); the sum runs in the rounds' order.
+glm::dvec3 estimate(const Integrand& integrand, int rounds, Pcg32 rng, Scratch& scratch) {
+    scratch.terms.clear(), scratch.directions.clear();
     const glm::dvec2 environmentShift(rng.nextDouble(), rng.nextDouble()), brdfShift(rng.nextDouble(), rng.nextDouble());
-    glm::dvec3 sum(0.0);
     for (int r = 0; r < rounds; ++r) {
         const glm::dvec2 texel = shiftedSobol02(uint32_t(r), environmentShift), lobe = shiftedSobol02(uint32_t(r), brdfShift);
         const glm::dvec4 ue(texel, rng.nextDouble(), rng.nextDouble());
         const glm::dvec3 ub(rng.nextDouble(), lobe);
-        if (!integrand.environment.empty()) sum += integrand(integrand.environment.sample(ue).direction);
-        sum += integrand(sampleBrdf(integrand.material, glm::dvec3(integrand.Ns), glm::dvec3(integrand.wo), ub).direction);
+        if (!integrand.environment.empty()) integrand.add(integrand.environment.sample(ue).direction, scratch);
+        integrand.add(sampleBrdf(integrand.material, glm::dvec3(integrand.Ns), glm::dvec3(integrand.wo), ub).direction, scratch);
     }
+    const std::span<const glm::vec3> passed =
+        integrand.rays.directionsPassed(integrand.P, integrand.Ng, scratch.directions, scratch.batch);
+    glm::dvec3 sum(0.0);
+    for (const Term& term : scratch.terms) sum += Integrand::value(term, passed);
     return sum / double(rounds);
 }
 
@@ -103,8 +136,7 @@ ShadowOutputs runExactIntegral(const ShadowInputs& in) {
     StageTimer timer;
     const EnvironmentMap& map = sceneEnvironment(in.prepared);
     const EnvironmentDistribution environment(map);
-    const CasterTransmission transmission(in.casters().scene(), in.casterWorld());
-    const ReferenceVisibility rays(in.casterWorld(), &transmission);
+    const ReferenceVisibility& rays = sceneRays(in.casters());   // built by the scene's first frame
     timer.lap("bvh");
     const GBuffer& g = in.gbuffer;
     const glm::vec3 eye = in.camera().eye;
@@ -113,6 +145,7 @@ ShadowOutputs runExactIntegral(const ShadowInputs& in) {
     std::vector<double> halvesDifference(g.pixelCount(), 0.0);
     const ProgressStage progress(in.progress, "environment reference: row", uint64_t(g.height));
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        Scratch scratch;
         for (int j = rows.begin(); j != rows.end(); ++j) {
             for (int i = 0; i < g.width; ++i) {
                 const size_t k = g.index(i, j);
@@ -121,8 +154,8 @@ ShadowOutputs runExactIntegral(const ShadowInputs& in) {
                 const Integrand integrand{map, environment, rays, material,
                                           surfaceAlbedo(material, in.scene().albedoTextures, g, k), g.position[k], g.normal[k], g.shadingNormal[k],
                                           glm::normalize(eye - g.position[k])};
-                const glm::dvec3 a = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[0], k));
-                const glm::dvec3 b = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[1], k));
+                const glm::dvec3 a = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[0], k), scratch);
+                const glm::dvec3 b = estimate(integrand, samples / 2, Pcg32(kHalfSeeds[1], k), scratch);
                 out.radiance[k] = glm::vec3(0.5 * (a + b));
                 halvesDifference[k] = luminance(a) - luminance(b);
             }

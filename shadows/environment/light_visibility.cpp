@@ -2,17 +2,10 @@
 
 #include <chrono>
 
-#include "shadows/reference/reference.h"
+#include "shadows/reference/scene_rays.h"
 #include "shadows/volumes/shadow_volume.h"
 
 namespace shadowlab {
-
-// The reference's rays, through the cut-outs' holes and translucent casters as it sees them.
-struct LightVisibility::Exact {
-    Exact(const Scene& scene, const WorldGeometry& world) : transmission(scene, world), rays(world, &transmission) {}
-    CasterTransmission transmission;
-    ReferenceVisibility rays;
-};
 
 const SettingsTable<LightVisibilitySettings>& lightVisibilitySettingsTable() {
     using S = LightVisibilitySettings;
@@ -21,7 +14,7 @@ const SettingsTable<LightVisibilitySettings>& lightVisibilitySettingsTable() {
             .choice("visibility", member(&S::method),
                     {{"shadow-map", VisibilityMethod::ShadowMap, "a `shadow-map` per light, at its default settings"},
                      {"shadow-volume", VisibilityMethod::ShadowVolume, "a `shadow-volume` per light (the paper's)"},
-                     {"exact", VisibilityMethod::Exact, "Embree rays, one BVH for the frame"}},
+                     {"exact", VisibilityMethod::Exact, "Embree rays, the scene's one BVH"}},
                     "how each light's V is found")
             .include(member(&S::resolution), mapResolutionTable("shadow-map: texels per side of each light's map"));
     return table;
@@ -53,7 +46,7 @@ LightVisibility::LightVisibility(const ShadowInputs& in, const LightVisibilitySe
     map_.map.resolution = settings.resolution;
     if (method_ == VisibilityMethod::Exact) {
         const auto start = std::chrono::steady_clock::now();
-        exact_ = std::make_unique<Exact>(in.casters().scene(), in.casterWorld());
+        exact_ = &sceneRays(in.casters());
         addStat(stats_, "visibility_bvh_ms",
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
@@ -64,7 +57,7 @@ LightVisibility::~LightVisibility() = default;
 std::vector<float> LightVisibility::of(const Light& light, const GBuffer& g, const Camera& camera) {
     if (exact_) {
         const auto start = std::chrono::steady_clock::now();
-        std::vector<float> V = exact_->rays.visibility(g, light);
+        std::vector<float> V = exact_->visibility(g, light);
         addStat(stats_, "visibility_rays_ms",
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         return V;

@@ -1,15 +1,14 @@
 // The visibility V of each of many lights at every pixel of a G-buffer, by one of three
 // methods: a `shadow-map` per light (at its default settings but for the map's resolution),
 // a `shadow-volume` per light (at its defaults), each run with typed settings through its
-// family's entry point, or exact Embree rays from one BVH built for the frame (the
-// references). The paper uses stenciled shadow volumes (DeCoro and Rusinkiewicz 2008,
+// family's entry point, or exact Embree rays through the scene's one BVH (the references,
+// shadows/reference/scene_rays.h). The paper uses stenciled shadow volumes (DeCoro and Rusinkiewicz 2008,
 // section 3.1); any of these fits.
 //
 // The per-light techniques' stage times and fill are summed over the lights and reported with
 // the prefix `visibility_` (`visibility_lookup_ms`, `visibility_fill_fragments`).
 #pragma once
 
-#include <memory>
 #include <vector>
 
 #include "shadows/maps/shadow_map_techniques.h"
@@ -17,6 +16,8 @@
 #include "shadows/technique.h"
 
 namespace shadowlab {
+
+class ReferenceVisibility;
 
 enum class VisibilityMethod { ShadowMap, ShadowVolume, Exact };
 
@@ -33,7 +34,8 @@ std::vector<TechniqueStat> prepareLightVisibility(const PreparedScene& casters, 
 
 class LightVisibility {
 public:
-    // With exact visibility, builds the BVH (its time is the stat `visibility_bvh_ms`).
+    // With exact visibility, finds the scene's BVH, built on its first frame (the time is the
+    // stat `visibility_bvh_ms`).
     LightVisibility(const ShadowInputs& in, const LightVisibilitySettings& settings);
     ~LightVisibility();
 
@@ -45,11 +47,10 @@ public:
     void appendStatsTo(std::vector<TechniqueStat>& stats) const;
 
 private:
-    struct Exact;
     const ShadowInputs& in_;
     VisibilityMethod method_;
     ShadowMapTechniqueSettings map_;      // with the settings' resolution
-    std::unique_ptr<Exact> exact_;
+    const ReferenceVisibility* exact_ = nullptr;   // the scene's (scene_rays.h); null: not exact
     std::vector<TechniqueStat> stats_;    // summed, in first-seen order
 };
 

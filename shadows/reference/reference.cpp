@@ -3,8 +3,10 @@
 // Embree runs in robust mode (RTC_SCENE_FLAG_ROBUST: conservative BVH traversal and no
 // accuracy-reducing shortcuts), so shadow rays do not slip through the seams between the
 // triangles of an occluder (Embree's own documentation of the flag). Occlusion
-// queries (rtcOccluded1) stop at the first hit found; the answer is a boolean that does not
-// depend on which hit that is, so BVH layout and thread count cannot change it.
+// queries stop at the first hit found; the answer is a boolean that does not depend on
+// which hit that is, so BVH layout and thread count cannot change it, nor whether a ray is
+// traced alone (rtcOccluded1) or with the other rays of its pixel in packets
+// (rtcOccluded1M, a coherent stream): see RayBatch::Samples.
 #include "shadows/reference/reference.h"
 
 #include <algorithm>
@@ -60,7 +62,7 @@ void throwIfEmbreeError(RTCDevice device, const char* what) {
 // Embree's task contexts. A TSan build (scripts/tsan.sh) therefore builds the BVH in an arena
 // of one thread, where no worker touches Embree's tasks; every loop of ours stays parallel and
 // checked. The BVH's layout cannot change an answer (see the top of this file and
-// ShadowRays::passed).
+// passedAlong).
 #if defined(__SANITIZE_THREAD__)
 #define SHADOWLAB_THREAD_SANITIZER 1
 #elif defined(__has_feature)
@@ -96,15 +98,23 @@ void attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& worl
 }
 
 
+}  // namespace
+
 // ---- Shadow rays -----------------------------------------------------------------------
 // What an occlusion query through casters that are not opaque carries: Embree hands the
 // context to the filter, which lets the ray pass every surface that is not solid and notes
-// what each translucent one passes.
+// what each translucent one passes, under the ray's id (its index in the batch). A named
+// namespace: RayBatch::Samples, a class of the header's, keeps a list of them.
+namespace reference_rays {
 struct Crossing {
-    uint32_t instance, triangle;
+    uint32_t ray, instance, triangle;
     float t;            // along the ray
     glm::vec3 passed;
 };
+}  // namespace reference_rays
+using reference_rays::Crossing;
+
+namespace {
 
 struct TransmissionContext {
     RTCIntersectContext base;   // first: Embree's pointer to it is a pointer to this
@@ -113,7 +123,9 @@ struct TransmissionContext {
 };
 
 // The occlusion filter (rtcSetGeometryOccludedFilterFunction): a hit on a solid point
-// stays valid and ends the query; any other is rejected, and a translucent one noted.
+// stays valid and ends the query; any other is rejected, and a translucent one noted. A
+// stream may hand it packets of any size and order (Embree's rtcOccluded1M), so each lane
+// names its ray by id.
 void transmissionFilter(const RTCFilterFunctionNArguments* args) {
     const auto* context = reinterpret_cast<const TransmissionContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
@@ -125,7 +137,8 @@ void transmissionFilter(const RTCFilterFunctionNArguments* args) {
         args->valid[i] = 0;
         if (passed == glm::vec3(1.0f)) continue;   // a cut-out's hole
         const float t = RTCRayN_tfar(args->ray, args->N, i);   // the hit's distance, during the filter
-        context->crossed->push_back({context->transmission->instanceOf(triangle), triangle, t, passed});
+        const uint32_t ray = RTCRayN_id(args->ray, args->N, i);
+        context->crossed->push_back({ray, context->transmission->instanceOf(triangle), triangle, t, passed});
     }
 }
 
@@ -145,73 +158,107 @@ double beyondVolumes(std::span<const DensityVolume> volumes, const glm::dvec3& o
 // Crossings of one surface closer than this, relative to t, are one (a shared edge).
 constexpr float kSameCrossing = 1e-5f;
 
-// Casts occlusion rays for one task and counts them.
-class ShadowRays {
-public:
-    ShadowRays(RTCScene scene, const CasterTransmission* transmission) : scene_(scene), transmission_(transmission) {}
-
-    // True if nothing blocks origin + t * direction for t in [0, tFar].
-    bool unblocked(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        return reachesEnd(context, origin, direction, tFar);
+// The light that passes along a ray that reached its end, per channel: through casters
+// that are not opaque the product of what each translucent surface it crossed passes, and
+// exp(-optical depth) of the volumes. Each surface counts once: a ray through an edge or a
+// corner that triangles of a mesh share hits each of them at the same t, and Embree may
+// report one hit twice, so crossings of one instance closer than kSameCrossing (of t) on
+// triangles that share a vertex are one (two strands of hair, one instance, do not).
+// `crossed` is sorted in (instance, t, triangle) order, so the bits do not depend on the
+// order the BVH found them in.
+glm::vec3 passedAlong(const CasterTransmission& transmission, const RTCRay& ray, std::span<const Crossing> crossed) {
+    glm::vec3 product(1.0f);
+    for (size_t k = 0; k < crossed.size(); ++k) {
+        const Crossing& c = crossed[k];
+        const bool same = k > 0 && c.instance == crossed[k - 1].instance &&
+                          c.t - crossed[k - 1].t <= kSameCrossing * c.t &&
+                          (c.triangle == crossed[k - 1].triangle || transmission.shareVertex(c.triangle, crossed[k - 1].triangle));
+        if (!same) product *= c.passed;
     }
+    const std::span<const DensityVolume> volumes = transmission.volumes();
+    if (volumes.empty()) return product;
+    // The ray reached its end: rtcOccluded left tfar as it was.
+    const glm::dvec3 a(glm::vec3(ray.org_x, ray.org_y, ray.org_z)), d(glm::vec3(ray.dir_x, ray.dir_y, ray.dir_z));
+    const double t = std::isfinite(ray.tfar) ? double(ray.tfar) : beyondVolumes(volumes, a, d);
+    return product * float(portable::exp(-opticalDepth(volumes, a, a + t * d)));
+}
 
-    // The light that passes along origin + t * direction, t in [0, tFar], per channel: 0 or
-    // 1 for opaque casters; through others the product of what each translucent surface
-    // passes, and exp(-optical depth) of the volumes. Each surface counts once: a ray
-    // through an edge or a corner that triangles of a mesh share hits each of them at the
-    // same t, and Embree may report one hit twice, so crossings of one instance closer than
-    // kSameCrossing (of t) on triangles that share a vertex are one (two strands of hair, one
-    // instance, do not). The product is taken in (instance, t) order, so the bits do not
-    // depend on the order the BVH found them in.
-    glm::vec3 passed(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
-        if (!transmission_) return glm::vec3(unblocked(origin, direction, tFar) ? 1.0f : 0.0f);
-        TransmissionContext context{{}, transmission_, &crossed_};
-        rtcInitIntersectContext(&context.base);
-        crossed_.clear();
-        if (!reachesEnd(context.base, origin, direction, tFar)) return glm::vec3(0.0f);
-        std::ranges::sort(crossed_, [](const Crossing& a, const Crossing& b) {
-            if (a.instance != b.instance) return a.instance < b.instance;
-            return a.t != b.t ? a.t < b.t : a.triangle < b.triangle;
-        });
-        glm::vec3 product(1.0f);
-        for (size_t k = 0; k < crossed_.size(); ++k) {
-            const Crossing& c = crossed_[k];
-            const bool same = k > 0 && c.instance == crossed_[k - 1].instance &&
-                              c.t - crossed_[k - 1].t <= kSameCrossing * c.t &&
-                              (c.triangle == crossed_[k - 1].triangle ||
-                               transmission_->shareVertex(c.triangle, crossed_[k - 1].triangle));
-            if (!same) product *= c.passed;
-        }
-        const std::span<const DensityVolume> volumes = transmission_->volumes();
-        if (volumes.empty()) return product;
-        const glm::dvec3 a(origin), d(direction);
-        const double t = std::isfinite(tFar) ? double(tFar) : beyondVolumes(volumes, a, d);
-        return product * float(portable::exp(-opticalDepth(volumes, a, a + t * d)));
+}  // namespace
+
+// The samples of a batch of receivers, in order: each one's light is known without a ray (behind
+// the surface, no segment left to block) or is what its shadow ray finds, 0 or 1 through
+// opaque casters (passedAlong through others). The rays are queued and traced together:
+// a coherent stream (rtcOccluded1M, which Embree cuts into packets of its widest ISA), or,
+// the plain twin, one rtcOccluded1 each. Both run the same robust traversal and the same
+// filter, and an occlusion query's answer does not depend on which hit ends it, so they
+// give the same bytes (tests/shadows/reference/test_reference_packets.cpp holds them to it).
+struct ReferenceVisibility::RayBatch::Samples {
+    std::vector<glm::vec3> lights;       // per sample
+    std::vector<RTCRay> rays;            // ray k's id is k
+    std::vector<uint32_t> sampleOfRay;
+    std::vector<Crossing> crossed;
+    AreaLightPoints lightPoints;         // an area light's, for the receiver
+    std::vector<double> segmentEnds;     // per light point
+    uint64_t count = 0;                  // rays traced
+
+    void clear() {
+        lights.clear(), rays.clear(), sampleOfRay.clear();
     }
-    uint64_t count() const { return count_; }
-
-private:
-    // Whether the ray reaches tFar: rtcOccluded1 sets tfar to -inf when it finds an occluder
-    // (a hit the filter, if any, kept) and leaves it otherwise.
-    bool reachesEnd(RTCIntersectContext& context, const glm::vec3& origin, const glm::vec3& direction, float tFar) {
-        RTCRay ray{};
+    void addKnown(const glm::vec3& light) { lights.push_back(light); }
+    void addRay(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
+        RTCRay& ray = rays.emplace_back();   // zeroed
         ray.org_x = origin.x, ray.org_y = origin.y, ray.org_z = origin.z;
         ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
         ray.tnear = 0.0f;
         ray.tfar = tFar;
         ray.mask = ~0u;
-        rtcOccluded1(scene_, &context, &ray);
-        ++count_;
-        return ray.tfar != -std::numeric_limits<float>::infinity();
+        ray.id = uint32_t(rays.size() - 1);
+        sampleOfRay.push_back(uint32_t(lights.size()));
+        lights.push_back(glm::vec3(0.0f));
     }
 
-    RTCScene scene_;
-    const CasterTransmission* transmission_;
-    std::vector<Crossing> crossed_;
-    uint64_t count_ = 0;
+    // A ray reached its end unless rtcOccluded set its tfar to -inf (a hit the filter, if
+    // any, kept).
+    static bool reached(const RTCRay& ray) { return ray.tfar != -std::numeric_limits<float>::infinity(); }
+
+    // Fills in the light of every ray's sample.
+    void trace(RTCScene scene, const CasterTransmission* transmission, RayQueries queries) {
+        if (rays.empty()) return;
+        TransmissionContext context{{}, transmission, &crossed};
+        rtcInitIntersectContext(&context.base);
+        crossed.clear();
+        if (queries == RayQueries::Stream) {
+            context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            rtcOccluded1M(scene, &context.base, rays.data(), unsigned(rays.size()), sizeof(RTCRay));
+        } else {
+            for (RTCRay& ray : rays) rtcOccluded1(scene, &context.base, &ray);
+        }
+        count += rays.size();
+        if (!transmission) {   // opaque casters: 1 where a ray got through
+            for (uint32_t k = 0; k < rays.size(); ++k) lights[sampleOfRay[k]] = glm::vec3(reached(rays[k]) ? 1.0f : 0.0f);
+            return;
+        }
+        std::ranges::sort(crossed, [](const Crossing& a, const Crossing& b) {
+            if (a.ray != b.ray) return a.ray < b.ray;
+            if (a.instance != b.instance) return a.instance < b.instance;
+            return a.t != b.t ? a.t < b.t : a.triangle < b.triangle;
+        });
+        auto first = crossed.begin();
+        for (uint32_t k = 0; k < rays.size(); ++k) {
+            const auto last = std::find_if(first, crossed.end(), [k](const Crossing& c) { return c.ray != k; });
+            glm::vec3& light = lights[sampleOfRay[k]];
+            light = reached(rays[k]) ? passedAlong(*transmission, rays[k], {first, last}) : glm::vec3(0.0f);
+            first = last;
+        }
+    }
 };
+
+ReferenceVisibility::RayBatch::RayBatch(RayQueries queries) : samples_(std::make_unique<Samples>()), queries_(queries) {}
+ReferenceVisibility::RayBatch::~RayBatch() = default;
+
+namespace {
+
+using Samples = ReferenceVisibility::RayBatch::Samples;
 
 // A receiving point and where its shadow rays start.
 struct Receiver {
@@ -228,37 +275,59 @@ Receiver receiverAt(const glm::vec3& P, const glm::vec3& N, double sceneDiagonal
 
 bool faces(const Receiver& r, const glm::dvec3& direction) { return glm::dot(r.N, direction) > 0.0; }
 
-// The light passed from one point of a light: 0 behind the surface, else what the casters
-// in between let through.
-glm::vec3 pointPassed(ShadowRays& rays, const Receiver& r, const glm::dvec3& target) {
-    if (!faces(r, target - r.P)) {
-        return glm::vec3(0.0f);
-    }
-    const glm::dvec3 toTarget = target - glm::dvec3(r.origin);
-    // Stop `offset` short of the target (see the offset derivation). A target closer than
-    // that leaves no segment for an occluder to sit on.
-    const double tFar = 1.0 - r.offset / glm::length(toTarget);
-    return tFar <= 0.0 ? glm::vec3(1.0f) : rays.passed(r.origin, glm::vec3(toTarget), float(tFar));
+// Where the shadow segment from the receiver to a point of a light ends, as a fraction of
+// target - origin: `offset` short of the target (see the offset derivation); NaN for a
+// target behind the surface, where no ray goes. Both arms computed and one selected, so a
+// loop over many targets vectorises.
+double segmentEnd(const Receiver& r, const glm::dvec3& target) {
+    const double tFar = 1.0 - r.offset / glm::length(target - glm::dvec3(r.origin));
+    return faces(r, target - r.P) ? tFar : std::numeric_limits<double>::quiet_NaN();
 }
 
-glm::vec3 directionPassed(ShadowRays& rays, const Receiver& r, const glm::dvec3& towardsLight) {
-    if (!faces(r, towardsLight)) return glm::vec3(0.0f);
-    return rays.passed(r.origin, glm::vec3(towardsLight), std::numeric_limits<float>::infinity());
+// Queues the sample of one point of a light whose segment ends at tFar: 0 behind the
+// surface; 1 for a target closer than the offset, which leaves no segment for an occluder
+// to sit on; else a ray.
+void addPointSample(Samples& samples, const Receiver& r, const glm::dvec3& target, double tFar) {
+    if (std::isnan(tFar)) return samples.addKnown(glm::vec3(0.0f));
+    if (tFar <= 0.0) return samples.addKnown(glm::vec3(1.0f));
+    samples.addRay(r.origin, glm::vec3(target - glm::dvec3(r.origin)), float(tFar));
 }
 
-// The mean passed over n x n stratified samples of the light: with opaque casters the
-// visible fraction, count / n^2, exact in float.
-glm::vec3 areaPassed(ShadowRays& rays, const Receiver& r, const AreaLightFrame& frame, int n, Pcg32 rng) {
+void addPointSample(Samples& samples, const Receiver& r, const glm::dvec3& target) {
+    addPointSample(samples, r, target, segmentEnd(r, target));
+}
+
+void addDirectionSample(Samples& samples, const Receiver& r, const glm::dvec3& towardsLight) {
+    if (!faces(r, towardsLight)) return samples.addKnown(glm::vec3(0.0f));
+    samples.addRay(r.origin, glm::vec3(towardsLight), std::numeric_limits<float>::infinity());
+}
+
+// Queues n x n stratified samples of an area light. The jitter is drawn for every stratum,
+// so sample positions never depend on geometry.
+void addAreaSamples(Samples& samples, const Receiver& r, const AreaLightFrame& frame, int n, Pcg32 rng) {
+    samples.lightPoints.fill(frame, n, rng);
+    const std::vector<glm::dvec3>& targets = samples.lightPoints.points();
+    samples.segmentEnds.resize(targets.size());
+    for (size_t k = 0; k < targets.size(); ++k) samples.segmentEnds[k] = segmentEnd(r, targets[k]);   // vectorised
+    for (size_t k = 0; k < targets.size(); ++k) addPointSample(samples, r, targets[k], samples.segmentEnds[k]);
+}
+
+// The mean light of the traced samples [first, end), summed in their order: with opaque
+// casters the visible fraction, count / n^2, exact in float; one sample's own light.
+glm::vec3 meanLight(const Samples& samples, size_t first, size_t end) {
     glm::vec3 sum(0.0f);
-    for (int b = 0; b < n; ++b) {
-        for (int a = 0; a < n; ++a) {
-            // Draw the jitter for every stratum, so sample positions never depend on geometry.
-            const glm::dvec3 target = areaLightPoint(frame, jitteredSample(a, b, n, rng));
-            sum += pointPassed(rays, r, target);
-        }
-    }
-    return sum / float(n * n);
+    for (size_t s = first; s < end; ++s) sum += samples.lights[s];
+    return sum / float(end - first);
 }
+
+// Pixels whose samples are queued, each from its first sample to the next one's.
+struct QueuedPixel {
+    size_t pixel, firstSample;
+};
+
+// Rays go to Embree in batches of at least this many (or a row's): an area light's pixel
+// fills one, a point light's row of pixels shares one, so hard shadows trace in packets too.
+constexpr size_t kBatchRays = 256;
 
 // Everything about the light that is the same for every pixel.
 struct LightQuery {
@@ -267,20 +336,19 @@ struct LightQuery {
     ReferenceOptions options;
 };
 
-glm::vec3 pixelPassed(ShadowRays& rays, const LightQuery& q, const Receiver& r, uint64_t pixel) {
+void addPixelSamples(Samples& samples, const LightQuery& q, const Receiver& r, uint64_t pixel) {
     switch (q.light.type) {
         case LightType::Point:
-            return pointPassed(rays, r, glm::dvec3(q.light.position));
+            return addPointSample(samples, r, glm::dvec3(q.light.position));
         case LightType::Spot:
-            return insideSpotCone(q.light, glm::vec3(r.P)) ? pointPassed(rays, r, glm::dvec3(q.light.position))
-                                                           : glm::vec3(0.0f);
+            if (!insideSpotCone(q.light, glm::vec3(r.P))) return samples.addKnown(glm::vec3(0.0f));
+            return addPointSample(samples, r, glm::dvec3(q.light.position));
         case LightType::Directional:
-            return directionPassed(rays, r, glm::dvec3(q.light.direction));
+            return addDirectionSample(samples, r, glm::dvec3(q.light.direction));
         case LightType::Disk:
         case LightType::Rectangle:
-            return areaPassed(rays, r, q.frame, q.options.areaSamplesPerAxis, Pcg32(q.options.seed, pixel));
+            return addAreaSamples(samples, r, q.frame, q.options.areaSamplesPerAxis, Pcg32(q.options.seed, pixel));
     }
-    return glm::vec3(0.0f);
 }
 
 }  // namespace
@@ -310,13 +378,28 @@ ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world, const Caste
 ReferenceVisibility::~ReferenceVisibility() = default;
 
 glm::vec3 ReferenceVisibility::directionPassed(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const {
-    ShadowRays rays(embree_->scene, transmission_);
-    return shadowlab::directionPassed(rays, receiverAt(P, N, sceneDiagonal_), direction);
+    Samples samples;
+    addDirectionSample(samples, receiverAt(P, N, sceneDiagonal_), direction);
+    samples.trace(embree_->scene, transmission_, RayQueries::Single);
+    return samples.lights[0];
+}
+
+std::span<const glm::vec3> ReferenceVisibility::directionsPassed(const glm::vec3& P, const glm::vec3& N,
+                                                                 std::span<const glm::dvec3> directions,
+                                                                 RayBatch& batch) const {
+    Samples& samples = *batch.samples_;
+    samples.clear();
+    const Receiver r = receiverAt(P, N, sceneDiagonal_);
+    for (const glm::dvec3& direction : directions) addDirectionSample(samples, r, direction);
+    samples.trace(embree_->scene, transmission_, batch.queries_);
+    return samples.lights;
 }
 
 bool ReferenceVisibility::pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const {
-    ShadowRays rays(embree_->scene, transmission_);
-    return glm::any(glm::greaterThan(pointPassed(rays, receiverAt(P, N, sceneDiagonal_), target), glm::vec3(0.0f)));
+    Samples samples;
+    addPointSample(samples, receiverAt(P, N, sceneDiagonal_), target);
+    samples.trace(embree_->scene, transmission_, RayQueries::Single);
+    return glm::any(glm::greaterThan(samples.lights[0], glm::vec3(0.0f)));
 }
 
 ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, const Light& light,
@@ -332,22 +415,33 @@ ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, 
     if (transmission_) out.coloured.assign(gbuffer.pixelCount(), glm::vec3(0.0f));
     const ProgressStage progress(options.progress, "reference rays: row", uint64_t(gbuffer.height));
     tbb::parallel_for(tbb::blocked_range<int>(0, gbuffer.height), [&](const tbb::blocked_range<int>& rows) {
-        ShadowRays rays(embree_->scene, transmission_);
+        Samples samples;   // a batch's, its buffers reused
+        std::vector<QueuedPixel> queued;
+        const auto traceQueued = [&] {
+            samples.trace(embree_->scene, transmission_, options.queries);
+            for (size_t q = 0; q < queued.size(); ++q) {
+                const size_t end = q + 1 < queued.size() ? queued[q + 1].firstSample : samples.lights.size();
+                const glm::vec3 passed = meanLight(samples, queued[q].firstSample, end);
+                // Opaque casters pass the same value in every channel: V is that value.
+                out.visibility[queued[q].pixel] = transmission_ ? luminance(passed) : passed.x;
+                if (transmission_) out.coloured[queued[q].pixel] = passed;
+            }
+            samples.clear(), queued.clear();
+        };
         for (int j = rows.begin(); j != rows.end(); ++j) {
             for (int i = 0; i < gbuffer.width; ++i) {
                 const size_t k = gbuffer.index(i, j);
                 if (!gbuffer.hit[k]) {
                     continue;
                 }
-                const glm::vec3 passed =
-                    pixelPassed(rays, query, receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
-                // Opaque casters pass the same value in every channel: V is that value.
-                out.visibility[k] = transmission_ ? luminance(passed) : passed.x;
-                if (transmission_) out.coloured[k] = passed;
+                queued.push_back({k, samples.lights.size()});
+                addPixelSamples(samples, query, receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
+                if (samples.rays.size() >= kBatchRays) traceQueued();
             }
+            traceQueued();
             progress.advance();
         }
-        raysCast_ += rays.count();  // integer sum: the total is the same in any order
+        raysCast_ += samples.count;  // integer sum: the total is the same in any order
     });
     return out;
 }

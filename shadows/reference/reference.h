@@ -24,6 +24,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -36,10 +37,16 @@
 
 namespace shadowlab {
 
+// How a receiver's shadow rays go to Embree: together as a coherent stream (rtcOccluded1M,
+// traced in packets), or one rtcOccluded1 each, the plain twin the stream is held to bit
+// for bit (both answer the same occlusion queries in robust mode).
+enum class RayQueries { Stream, Single };
+
 struct ReferenceOptions {
     int areaSamplesPerAxis = 32;       // area lights: n x n strata, one sample each
     uint64_t seed = 0x5eed5eed5eedull;  // jitter; pixel k uses PCG32 stream k
     Progress* progress = nullptr;       // counts the rows done; null: reports nothing
+    RayQueries queries = RayQueries::Stream;
 };
 
 class ReferenceVisibility {
@@ -78,6 +85,27 @@ public:
     // The same for a point `target` (a sample on an area source): in front of N's plane and
     // nothing in the way of the segment, which stops the ray offset short of the target.
     bool pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const;
+
+    // The shadow rays of one receiver, queued and traced together; one per thread, reused,
+    // so a steady state allocates nothing.
+    class RayBatch {
+    public:
+        explicit RayBatch(RayQueries queries = RayQueries::Stream);
+        ~RayBatch();
+        RayBatch(const RayBatch&) = delete;
+        RayBatch& operator=(const RayBatch&) = delete;
+        struct Samples;   // reference.cpp
+
+    private:
+        friend class ReferenceVisibility;
+        std::unique_ptr<Samples> samples_;
+        RayQueries queries_;
+    };
+    // directionPassed for each of `directions` from one point, traced together in `batch`:
+    // element k is direction k's, the same bits as directionPassed gives; valid until the
+    // batch's next use.
+    std::span<const glm::vec3> directionsPassed(const glm::vec3& P, const glm::vec3& N,
+                                                std::span<const glm::dvec3> directions, RayBatch& batch) const;
 
     // Shadow rays cast by all visibility() calls so far (for Mrays/s in benchmarks).
     uint64_t raysCast() const { return raysCast_.load(); }

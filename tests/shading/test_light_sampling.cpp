@@ -1,8 +1,10 @@
-// The pieces of area-light sampling: PCG32 output, the concentric map, light frames.
+// The pieces of area-light sampling: PCG32 output, the concentric map, light frames, and
+// the batched points of a stratified sampling against one point at a time.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <vector>
 
@@ -105,5 +107,28 @@ TEST_CASE("sobol02: every block of 2^m points puts one point in each elementary 
     for (uint32_t k = 0; k < 64; ++k) {
         const glm::dvec2 p = shiftedSobol02(k, {0.999999999767169356, 0.5});
         CHECK((p.x >= 0.0 && p.x < 1.0 && p.y >= 0.0 && p.y < 1.0));
+    }
+}
+
+TEST_CASE("AreaLightPoints: the bits and the draws of areaLightPoint of each jittered stratum, disk and rectangle") {
+    const Light disk{.type = LightType::Disk, .position = {0.3f, 4.0f, -1.2f}, .direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f)), .radius = 0.7f};
+    const Light rectangle{.type = LightType::Rectangle, .position = {-2.0f, 3.0f, 0.5f}, .halfEdgeU = {0.6f, 0.0f, 0.1f}, .halfEdgeV = {0.0f, 0.2f, 0.4f}};
+    AreaLightPoints batch;   // reused across lights and sizes, as the reference does
+    for (const Light& light : {disk, rectangle, disk}) {
+        const AreaLightFrame frame = areaLightFrame(light);
+        for (int n : {1, 2, 7, 32}) {
+            Pcg32 batched(9u, uint64_t(n)), alone(9u, uint64_t(n));
+            batch.fill(frame, n, batched);
+            REQUIRE(batch.points().size() == size_t(n * n));
+            bool same = true;
+            for (int b = 0; b < n; ++b) {
+                for (int a = 0; a < n; ++a) {
+                    const glm::dvec3 p = areaLightPoint(frame, jitteredSample(a, b, n, alone));
+                    same = same && std::memcmp(&p, &batch.points()[size_t(a + n * b)], sizeof p) == 0;
+                }
+            }
+            CHECK(same);
+            CHECK(batched.next() == alone.next());   // as many draws
+        }
     }
 }
