@@ -61,6 +61,18 @@ std::vector<raster::SimdLevel> vectorLevels() {
     return levels;
 }
 
+// Every row of the scene through `pass` on `threads` threads, each pixel served by the map
+// where it is a hit.
+void lookUpEveryRow(const LookupScene& s, const LookupPass& pass, int threads, const LookupPass::Outputs& out) {
+    withThreads(threads, [&] {
+        tbb::parallel_for(0, s.g.height, [&](int j) {
+            LookupPass::Scratch scratch(s.g.width);
+            for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
+            pass.lookUpRow(s.g, j, scratch, out);
+        });
+    });
+}
+
 }  // namespace
 
 TEST_CASE("shadow lookup: every SIMD level and thread count gives the scalar twin's bytes, for every filter and bias") {
@@ -141,13 +153,7 @@ TEST_CASE("shadow lookup: PCSS gives the scalar twin's bytes at every SIMD level
         const LookupPass pass(maps[0], s.light, {search, 1.0, filter, glm::dvec2(40.0)}, level);
         const size_t n = s.g.pixelCount();
         std::vector<float> v(n), blocker(n), width(n);
-        withThreads(threads, [&] {
-            tbb::parallel_for(0, s.g.height, [&](int j) {
-                LookupPass::Scratch scratch(s.g.width);
-                for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
-                pass.lookUpRow(s.g, j, scratch, {v.data(), blocker.data(), width.data()});
-            });
-        });
+        lookUpEveryRow(s, pass, threads, {v.data(), blocker.data(), width.data()});
         v.insert(v.end(), blocker.begin(), blocker.end());
         v.insert(v.end(), width.begin(), width.end());
         return v;
@@ -184,13 +190,7 @@ TEST_CASE("shadow lookup: contact hardening gives the scalar twin's bytes at eve
                                   {c.searchNodes, c.filterNodes, glm::dvec2(c.lightTexels), hierarchy.forKernel()}, level);
             const size_t n = s.g.pixelCount();
             std::vector<float> v(n), blocker(n), width(n), searchLevel(n);
-            withThreads(threads, [&] {
-                tbb::parallel_for(0, s.g.height, [&](int j) {
-                    LookupPass::Scratch scratch(s.g.width);
-                    for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
-                    pass.lookUpRow(s.g, j, scratch, {v.data(), blocker.data(), width.data(), nullptr, searchLevel.data()});
-                });
-            });
+            lookUpEveryRow(s, pass, threads, {v.data(), blocker.data(), width.data(), nullptr, searchLevel.data()});
             for (const std::vector<float>* image : {&blocker, &width, &searchLevel}) v.insert(v.end(), image->begin(), image->end());
             return v;
         };
@@ -229,13 +229,7 @@ TEST_CASE("shadow lookup: the blocker search alone gives the scalar twin's bytes
     const size_t n = s.g.pixelCount();
     const auto run = [&](const LookupPass& pass, bool pcss, int threads) {
         std::vector<float> v(n), blocker(n), width(n);
-        withThreads(threads, [&] {
-            tbb::parallel_for(0, s.g.height, [&](int j) {
-                LookupPass::Scratch scratch(s.g.width);
-                for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
-                pass.lookUpRow(s.g, j, scratch, {v.data(), blocker.data(), pcss ? width.data() : nullptr});
-            });
-        });
+        lookUpEveryRow(s, pass, threads, {v.data(), blocker.data(), pcss ? width.data() : nullptr});
         return std::pair(v, blocker);
     };
     const auto searchOnly = [&](raster::SimdLevel level, int threads) {
