@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The bytes of the exact references on a set of scenes and lights: one line per case, the
 # SHA-256 of the OpenEXR file `shadowlab render --aov` writes (V per light, or the
-# reference-env radiance, as float32), so two builds' lists are compared with diff. Issue 37
-# held the references' stream of rays to the single-ray code with it (docs/performance.md).
+# reference-env radiance, as float32), so two builds' lists are compared with diff: a change
+# to how the references trace must leave every line alone (docs/performance.md, "The exact
+# references").
 #
 # usage: scripts/reference_hashes.sh SHADOWLAB [THREADS]
 set -euo pipefail

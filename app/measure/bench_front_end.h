@@ -1,5 +1,6 @@
 // `shadowlab bench`'s front-end table: the rasterizer's set-up and binning timed against a
-// floor of our own making, in triangles per second per core (issue 37).
+// floor of our own making, in triangles per second per core: no one publishes a per-core
+// set-up and binning figure to compare with.
 //
 // The floor is the least a front end can do on this machine: per triangle, read its three
 // window vertices (the vertex stage's output) and write one 8-byte bin entry, split into
