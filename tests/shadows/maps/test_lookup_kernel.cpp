@@ -18,6 +18,7 @@
 #include "shadows/maps/shadow_lookup.h"
 #include "shadows/technique.h"
 #include "shadow_map_test_util.h"
+#include "tests/shadows/shadow_test_support.h"
 #include "tests/same_bits.h"
 
 using namespace shadowlab;
@@ -61,15 +62,13 @@ std::vector<raster::SimdLevel> vectorLevels() {
     return levels;
 }
 
-// Every row of the scene through `pass` on `threads` threads, each pixel served by the map
-// where it is a hit.
-void lookUpEveryRow(const LookupScene& s, const LookupPass& pass, int threads, const LookupPass::Outputs& out) {
-    withThreads(threads, [&] {
-        tbb::parallel_for(0, s.g.height, [&](int j) {
-            LookupPass::Scratch scratch(s.g.width);
-            for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
-            pass.lookUpRow(s.g, j, scratch, out);
-        });
+// Every row of the scene through `pass`, in parallel, each pixel served by the map where it
+// is a hit.
+void lookUpEveryRow(const LookupScene& s, const LookupPass& pass, const LookupPass::Outputs& out) {
+    tbb::parallel_for(0, s.g.height, [&](int j) {
+        LookupPass::Scratch scratch(s.g.width);
+        for (int i = 0; i < s.g.width; ++i) scratch.served[size_t(i)] = s.g.hit[s.g.index(i, j)];
+        pass.lookUpRow(s.g, j, scratch, out);
     });
 }
 
@@ -149,24 +148,22 @@ TEST_CASE("shadow lookup: PCSS gives the scalar twin's bytes at every SIMD level
     const std::vector<DepthMap> maps = s.maps(plane, 512);
     const PcfKernel search = makePcfKernel({FilterKind::Poisson, 3, 16, 1.0});
     const PcfKernel filter = makePcfKernel({FilterKind::Poisson, 3, 32, 1.0});
-    const auto run = [&](raster::SimdLevel level, int threads) {
+    const auto run = [&](raster::SimdLevel level) {
         const LookupPass pass(maps[0], s.light, {search, 1.0, filter, glm::dvec2(40.0)}, level);
         const size_t n = s.g.pixelCount();
         std::vector<float> v(n), blocker(n), width(n);
-        lookUpEveryRow(s, pass, threads, {v.data(), blocker.data(), width.data()});
+        lookUpEveryRow(s, pass, {v.data(), blocker.data(), width.data()});
         v.insert(v.end(), blocker.begin(), blocker.end());
         v.insert(v.end(), width.begin(), width.end());
         return v;
     };
-    const std::vector<float> twin = run(raster::SimdLevel::Scalar, 1);
+    const std::vector<float> twin = withThreads(1, [&] { return run(raster::SimdLevel::Scalar); });
     const size_t n = s.g.pixelCount();
     int penumbra = 0, blocked = 0;
     for (size_t k = 0; k < n; ++k) penumbra += twin[k] > 0.0f && twin[k] < 1.0f, blocked += twin[n + k] > 0.0f;
     CHECK(penumbra > 30);   // 65 of the 203 x 131 pixels
     CHECK(blocked > penumbra);
-    for (raster::SimdLevel level : vectorLevels()) {
-        for (int threads : {1, 2}) CHECK(sameBytes(run(level, threads), twin));
-    }
+    test::checkSameBytesEverywhere(twin, run);
 }
 
 TEST_CASE("shadow lookup: contact hardening gives the scalar twin's bytes at every SIMD level and thread count") {
@@ -185,16 +182,16 @@ TEST_CASE("shadow lookup: contact hardening gives the scalar twin's bytes at eve
     };
     for (const Case& c : {Case{40.0, 8, 8}, Case{400.0, 8, 3}}) {
         CAPTURE(c.lightTexels);
-        const auto run = [&](raster::SimdLevel level, int threads) {
+        const auto run = [&](raster::SimdLevel level) {
             const LookupPass pass(maps[0], s.light,
                                   {c.searchNodes, c.filterNodes, glm::dvec2(c.lightTexels), hierarchy.forKernel()}, level);
             const size_t n = s.g.pixelCount();
             std::vector<float> v(n), blocker(n), width(n), searchLevel(n);
-            lookUpEveryRow(s, pass, threads, {v.data(), blocker.data(), width.data(), nullptr, searchLevel.data()});
+            lookUpEveryRow(s, pass, {v.data(), blocker.data(), width.data(), nullptr, searchLevel.data()});
             for (const std::vector<float>* image : {&blocker, &width, &searchLevel}) v.insert(v.end(), image->begin(), image->end());
             return v;
         };
-        const std::vector<float> twin = run(raster::SimdLevel::Scalar, 1);
+        const std::vector<float> twin = withThreads(1, [&] { return run(raster::SimdLevel::Scalar); });
         const size_t n = s.g.pixelCount();
         int penumbra = 0, blocked = 0, onNodes = 0;
         for (size_t k = 0; k < n; ++k) {
@@ -211,9 +208,7 @@ TEST_CASE("shadow lookup: contact hardening gives the scalar twin's bytes at eve
         } else {
             CHECK(onNodes == 0);            // the narrow ones read texels
         }
-        for (raster::SimdLevel level : vectorLevels()) {
-            for (int threads : {1, 2}) CHECK(sameBytes(run(level, threads), twin));
-        }
+        test::checkSameBytesEverywhere(twin, run);
     }
 }
 
@@ -229,7 +224,7 @@ TEST_CASE("shadow lookup: the blocker search alone gives the scalar twin's bytes
     const size_t n = s.g.pixelCount();
     const auto run = [&](const LookupPass& pass, bool pcss, int threads) {
         std::vector<float> v(n), blocker(n), width(n);
-        lookUpEveryRow(s, pass, threads, {v.data(), blocker.data(), pcss ? width.data() : nullptr});
+        withThreads(threads, [&] { lookUpEveryRow(s, pass, {v.data(), blocker.data(), pcss ? width.data() : nullptr}); });
         return std::pair(v, blocker);
     };
     const auto searchOnly = [&](raster::SimdLevel level, int threads) {
