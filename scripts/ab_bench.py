@@ -13,7 +13,8 @@ import json
 import pathlib
 import statistics
 import subprocess
-import sys
+
+from ab_sweep import alternate, parse_ab
 
 
 def bench(binary, out, extra):
@@ -28,18 +29,10 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("a")
     parser.add_argument("b")
-    parser.add_argument("--rounds", type=int, default=2)
-    parser.add_argument("--out", default="out/ab_bench")
-    argv = sys.argv[1:]
-    split = argv.index("--") if "--" in argv else len(argv)
-    args = parser.parse_args(argv[:split])
-    extra = argv[split + 1:]
+    args, extra = parse_ab(parser, "out/ab_bench")
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    runs = {"a": [], "b": []}
-    for round_ in range(args.rounds):
-        for side in ("a", "b"):
-            runs[side].append(bench(getattr(args, side), out / f"{side}{round_}.json", extra))
+    runs = alternate(args, lambda binary, side, round_: bench(binary, out / f"{side}{round_}.json", extra))
     print("| scene | row | threads | A ms | B ms | B / A |")
     print("| --- | --- | ---: | ---: | ---: | ---: |")
     for key in runs["a"][0]:

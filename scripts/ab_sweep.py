@@ -32,23 +32,35 @@ def sweep(binary, scene, techniques, out, extra):
     return {(r["technique"], settingsName(r["settings"]), r["threads"]): r for r in rows}
 
 
+def parse_ab(parser, default_out):
+    """The two builds, --rounds and --out added to `parser`, parsed from the arguments before
+    '--'; the ones after it are returned apart, for the measured command."""
+    parser.add_argument("--rounds", type=int, default=2)
+    parser.add_argument("--out", default=default_out)
+    argv = sys.argv[1:]
+    split = argv.index("--") if "--" in argv else len(argv)
+    return parser.parse_args(argv[:split]), argv[split + 1:]
+
+
+def alternate(args, measure):
+    """{'a': [...], 'b': [...]}: measure(binary, side, round) for build A, then B, args.rounds
+    times, so the machine's drift falls on both."""
+    runs = {"a": [], "b": []}
+    for round_ in range(args.rounds):
+        for side in ("a", "b"):
+            runs[side].append(measure(getattr(args, side), side, round_))
+    return runs
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("a")
     parser.add_argument("b")
     parser.add_argument("scene")
     parser.add_argument("techniques")
-    parser.add_argument("--rounds", type=int, default=2)
-    parser.add_argument("--out", default="out/ab")
-    argv = sys.argv[1:]
-    split = argv.index("--") if "--" in argv else len(argv)
-    args = parser.parse_args(argv[:split])
-    extra = argv[split + 1:]
-    runs = {"a": [], "b": []}
-    for round_ in range(args.rounds):
-        for side in ("a", "b"):
-            out = pathlib.Path(args.out) / f"{side}{round_}"
-            runs[side].append(sweep(getattr(args, side), args.scene, args.techniques, out, extra))
+    args, extra = parse_ab(parser, "out/ab")
+    runs = alternate(args, lambda binary, side, round_: sweep(
+        binary, args.scene, args.techniques, pathlib.Path(args.out) / f"{side}{round_}", extra))
     print("| technique | settings | threads | A ms | B ms | B / A | A RMS | B RMS |")
     print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |")
     for key in runs["a"][0]:
