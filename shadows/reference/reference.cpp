@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -183,6 +184,53 @@ glm::vec3 passedAlong(const CasterTransmission& transmission, const RTCRay& ray,
     return product * float(portable::exp(-opticalDepth(volumes, a, a + t * d)));
 }
 
+// A shadow ray from origin along direction for t in [0, tFar], named `id` for the filter.
+RTCRay shadowRay(const glm::vec3& origin, const glm::vec3& direction, float tFar, uint32_t id) {
+    RTCRay ray{};
+    ray.org_x = origin.x, ray.org_y = origin.y, ray.org_z = origin.z;
+    ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
+    ray.tnear = 0.0f;
+    ray.tfar = tFar;
+    ray.mask = ~0u;
+    ray.id = id;
+    return ray;
+}
+
+// The light a traced ray brings: 0 if something solid stopped it (rtcOccluded set its tfar
+// to -inf: a hit the filter, if any, kept); else 1 through opaque casters, or what its
+// crossings, sorted by crossingOrder, let through.
+glm::vec3 lightOfRay(const RTCRay& ray, const CasterTransmission* transmission, std::span<const Crossing> crossed) {
+    if (ray.tfar == -std::numeric_limits<float>::infinity()) return glm::vec3(0.0f);
+    return transmission ? passedAlong(*transmission, ray, crossed) : glm::vec3(1.0f);
+}
+
+// By ray, then in passedAlong's (instance, t, triangle) order.
+bool crossingOrder(const Crossing& a, const Crossing& b) {
+    if (a.ray != b.ray) return a.ray < b.ray;
+    if (a.instance != b.instance) return a.instance < b.instance;
+    return a.t != b.t ? a.t < b.t : a.triangle < b.triangle;
+}
+
+// One ray traced alone (rtcOccluded1), with nothing allocated unless it crosses a
+// translucent surface: for callers that ask about one point at a time.
+glm::vec3 tracedAlone(RTCScene scene, const CasterTransmission* transmission, RTCRay ray) {
+    std::vector<Crossing> crossed;
+    TransmissionContext context{{}, transmission, &crossed};
+    rtcInitIntersectContext(&context.base);
+    rtcOccluded1(scene, &context.base, &ray);
+    std::ranges::sort(crossed, crossingOrder);
+    return lightOfRay(ray, transmission, crossed);
+}
+
+// The light of a point sample known without a ray: 0 behind the surface (tFar NaN); 1 for
+// a target closer than the offset (tFar <= 0), which leaves no segment for an occluder to
+// sit on.
+std::optional<glm::vec3> knownLight(double tFar) {
+    if (std::isnan(tFar)) return glm::vec3(0.0f);
+    if (tFar <= 0.0) return glm::vec3(1.0f);
+    return std::nullopt;
+}
+
 }  // namespace
 
 // The samples of a batch of receivers, in order: each one's light is known without a ray (behind
@@ -206,20 +254,10 @@ struct ReferenceVisibility::RayBatch::Samples {
     }
     void addKnown(const glm::vec3& light) { lights.push_back(light); }
     void addRay(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
-        RTCRay& ray = rays.emplace_back();   // zeroed
-        ray.org_x = origin.x, ray.org_y = origin.y, ray.org_z = origin.z;
-        ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
-        ray.tnear = 0.0f;
-        ray.tfar = tFar;
-        ray.mask = ~0u;
-        ray.id = uint32_t(rays.size() - 1);
+        rays.push_back(shadowRay(origin, direction, tFar, uint32_t(rays.size())));
         sampleOfRay.push_back(uint32_t(lights.size()));
         lights.push_back(glm::vec3(0.0f));
     }
-
-    // A ray reached its end unless rtcOccluded set its tfar to -inf (a hit the filter, if
-    // any, kept).
-    static bool reached(const RTCRay& ray) { return ray.tfar != -std::numeric_limits<float>::infinity(); }
 
     // Fills in the light of every ray's sample.
     void trace(RTCScene scene, const CasterTransmission* transmission, RayQueries queries) {
@@ -234,20 +272,15 @@ struct ReferenceVisibility::RayBatch::Samples {
             for (RTCRay& ray : rays) rtcOccluded1(scene, &context.base, &ray);
         }
         count += rays.size();
-        if (!transmission) {   // opaque casters: 1 where a ray got through
-            for (uint32_t k = 0; k < rays.size(); ++k) lights[sampleOfRay[k]] = glm::vec3(reached(rays[k]) ? 1.0f : 0.0f);
+        if (!transmission) {   // opaque casters: no crossings to share out
+            for (uint32_t k = 0; k < rays.size(); ++k) lights[sampleOfRay[k]] = lightOfRay(rays[k], nullptr, {});
             return;
         }
-        std::ranges::sort(crossed, [](const Crossing& a, const Crossing& b) {
-            if (a.ray != b.ray) return a.ray < b.ray;
-            if (a.instance != b.instance) return a.instance < b.instance;
-            return a.t != b.t ? a.t < b.t : a.triangle < b.triangle;
-        });
+        std::ranges::sort(crossed, crossingOrder);
         auto first = crossed.begin();
         for (uint32_t k = 0; k < rays.size(); ++k) {
             const auto last = std::find_if(first, crossed.end(), [k](const Crossing& c) { return c.ray != k; });
-            glm::vec3& light = lights[sampleOfRay[k]];
-            light = reached(rays[k]) ? passedAlong(*transmission, rays[k], {first, last}) : glm::vec3(0.0f);
+            lights[sampleOfRay[k]] = lightOfRay(rays[k], transmission, {first, last});
             first = last;
         }
     }
@@ -284,12 +317,10 @@ double segmentEnd(const Receiver& r, const glm::dvec3& target) {
     return faces(r, target - r.P) ? tFar : std::numeric_limits<double>::quiet_NaN();
 }
 
-// Queues the sample of one point of a light whose segment ends at tFar: 0 behind the
-// surface; 1 for a target closer than the offset, which leaves no segment for an occluder
-// to sit on; else a ray.
+// Queues the sample of one point of a light whose segment ends at tFar: its known light
+// (knownLight), else a ray.
 void addPointSample(Samples& samples, const Receiver& r, const glm::dvec3& target, double tFar) {
-    if (std::isnan(tFar)) return samples.addKnown(glm::vec3(0.0f));
-    if (tFar <= 0.0) return samples.addKnown(glm::vec3(1.0f));
+    if (const std::optional<glm::vec3> known = knownLight(tFar)) return samples.addKnown(*known);
     samples.addRay(r.origin, glm::vec3(target - glm::dvec3(r.origin)), float(tFar));
 }
 
@@ -378,10 +409,10 @@ ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world, const Caste
 ReferenceVisibility::~ReferenceVisibility() = default;
 
 glm::vec3 ReferenceVisibility::directionPassed(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& direction) const {
-    Samples samples;
-    addDirectionSample(samples, receiverAt(P, N, sceneDiagonal_), direction);
-    samples.trace(embree_->scene, transmission_, RayQueries::Single);
-    return samples.lights[0];
+    const Receiver r = receiverAt(P, N, sceneDiagonal_);
+    if (!faces(r, direction)) return glm::vec3(0.0f);
+    return tracedAlone(embree_->scene, transmission_,
+                       shadowRay(r.origin, glm::vec3(direction), std::numeric_limits<float>::infinity(), 0));
 }
 
 std::span<const glm::vec3> ReferenceVisibility::directionsPassed(const glm::vec3& P, const glm::vec3& N,
@@ -396,10 +427,13 @@ std::span<const glm::vec3> ReferenceVisibility::directionsPassed(const glm::vec3
 }
 
 bool ReferenceVisibility::pointVisible(const glm::vec3& P, const glm::vec3& N, const glm::dvec3& target) const {
-    Samples samples;
-    addPointSample(samples, receiverAt(P, N, sceneDiagonal_), target);
-    samples.trace(embree_->scene, transmission_, RayQueries::Single);
-    return glm::any(glm::greaterThan(samples.lights[0], glm::vec3(0.0f)));
+    const Receiver r = receiverAt(P, N, sceneDiagonal_);
+    const double tFar = segmentEnd(r, target);
+    const std::optional<glm::vec3> known = knownLight(tFar);
+    const glm::vec3 light = known ? *known
+                                  : tracedAlone(embree_->scene, transmission_,
+                                                shadowRay(r.origin, glm::vec3(target - glm::dvec3(r.origin)), float(tFar), 0));
+    return glm::any(glm::greaterThan(light, glm::vec3(0.0f)));
 }
 
 ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, const Light& light,
