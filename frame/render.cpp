@@ -103,6 +103,17 @@ std::vector<glm::vec3> shadePasses(const Scene& scene, const GBuffer& gbuffer, c
 
 std::string lightDebugFolder(size_t light) { return "light" + std::to_string(light); }
 
+TechniqueHistory& FrameHistory::pass(const PreparedScene& prepared, const Technique& technique,
+                                     const std::map<std::string, std::string>& params, size_t light) {
+    const Owner owner{&prepared, technique.name, params};
+    if (!owner_) owner_ = owner;
+    if (*owner_ != owner)
+        throw std::logic_error("a frame history of " + owner_->technique + " was given a frame of " + technique.name +
+                               ", another scene or other settings: keep one history per series");
+    if (light >= passes_.size()) passes_.resize(light + 1);
+    return passes_[light];
+}
+
 void applyOverrides(Scene& scene, const SceneOverrides& o) {
     if (o.light) selectLight(scene, *o.light);
     Camera& c = scene.camera;
@@ -169,7 +180,10 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
                                         .debugDir = passDebugDir(settings.debugDir, passCount, k),
                                         .progress = settings.progress,
                                         .casterScene = &casters.casters,
-                                        .receiverLiftM = casters.instanceErrorM},
+                                        .receiverLiftM = casters.instanceErrorM,
+                                        .history = settings.history ? &settings.history->pass(prepared, technique,
+                                                                                              settings.params, k)
+                                                                    : nullptr},
                                        k, passCount));
         frame.techniqueMs += frame.passes.back().techniqueMs;
     }

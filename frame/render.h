@@ -68,11 +68,35 @@ struct Frame {
     std::vector<TechniqueStat> preparation;
 };
 
+// What a sequence of frames of one technique keeps from frame to frame: each light's
+// TechniqueHistory (shadows/technique_history.h). It belongs to the first frame's prepared
+// scene, technique and settings; a frame of another is a std::logic_error, since its states
+// would be read as the wrong ones. A copy is a snapshot (app/common/timing.h).
+class FrameHistory {
+public:
+    // The history of the pass of scene.lights[light], for a frame of `technique` with `params`
+    // (the settings as given) over `prepared`.
+    TechniqueHistory& pass(const PreparedScene& prepared, const Technique& technique,
+                           const std::map<std::string, std::string>& params, size_t light);
+
+private:
+    struct Owner {
+        const PreparedScene* prepared;
+        std::string technique;
+        std::map<std::string, std::string> params;
+        bool operator==(const Owner&) const = default;
+    };
+    std::optional<Owner> owner_;
+    std::vector<TechniqueHistory> passes_;
+};
+
 struct FrameSettings {
     raster::SimdLevel simd = raster::bestSimdLevel();
     std::map<std::string, std::string> params;   // the technique's --param settings
     std::filesystem::path debugDir;              // empty: no intermediate buffers (lightDebugFolder())
     Progress* progress = nullptr;                // passed to the technique (ShadowInputs)
+    // The sequence this frame continues (FrameHistory); null: it stands alone.
+    FrameHistory* history = nullptr;
 };
 
 // In a frame of several lights each light's intermediate buffers go to a folder of its own

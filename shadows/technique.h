@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
 #include "shadows/progress.h"
+#include "shadows/technique_history.h"
 #include "shadows/technique_params.h"
 
 namespace shadowlab {
@@ -47,12 +49,22 @@ struct ShadowInputs {
     // like Scene::instances; empty with whole casters. A technique that renders a G-buffer
     // of its own lifts it alike.
     std::span<const float> receiverLiftM = {};
+    // What the technique keeps for the next frame of a sequence (technique_history.h): the
+    // caller's, one per light of its series; null: the frame stands alone, and kept() gives
+    // it a history that ends with these inputs.
+    TechniqueHistory* history = nullptr;
 
     const Scene& scene() const { return prepared.scene(); }
     const WorldGeometry& receiverWorld() const { return prepared.world(); }
     const PreparedScene& casters() const { return casterScene ? *casterScene : prepared; }
     const WorldGeometry& casterWorld() const { return casters().world(); }
     const Camera& camera() const { return gbufferCamera ? *gbufferCamera : prepared.scene().camera; }
+
+    // The history to keep state in: `history`, or for a frame that stands alone one of its
+    // own, which copies of these inputs share. Call it from the technique's own thread, as
+    // TechniqueHistory::state.
+    TechniqueHistory& kept() const { return history ? *history : *standalone_; }
+    std::shared_ptr<TechniqueHistory> standalone_ = std::make_shared<TechniqueHistory>();   // kept()'s; never set
 };
 
 // A named figure a technique reports about its own work (texels, fill, list lengths...).

@@ -32,6 +32,14 @@ void takeStageMedians(std::vector<TechniqueStat>& last, const std::vector<std::v
 // Frame::techniqueMs, and the last frame, its stage times ("<stage>_ms" stats) replaced by
 // their medians over the measured frames. Every frame, warm-up ones included, is counted in
 // `frames`.
+//
+// What the frames keep (FrameHistory) follows the view. A still view (settings.history
+// null: sweep, scaling) is a steady state: its warm-up frames follow one another, as an
+// engine's frames of an unchanging view would, and each measured frame starts from where
+// they left it; with no warm-up frame, from nothing (a first frame). A frame of a path
+// (settings.history given: flythrough) starts every run, warm-up or measured, from the
+// history the frames before it left, which it then replaces with its last run's. Every
+// measured frame so does the same work from the same state.
 struct TimedFrames {
     Timing timing;
     Frame last;

@@ -55,12 +55,13 @@ struct SeriesState {
     FlythroughSeries series;
     ImageChannels previous;              // scoredImage() of the frame before
     std::filesystem::path picturesDir;   // its frames' NNNN-image.png, ...; empty: none
+    FrameHistory history = {};           // what the frames before left the technique (timeFrames)
 };
 
 FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels& reference,
                              const ImageChannels* previousReference, SeriesState& state,
                              const FlythroughOptions& options, const ProgressStage& progress) {
-    const FrameSettings settings{options.simd, state.series.settings, {}};
+    const FrameSettings settings{options.simd, state.series.settings, {}, nullptr, &state.history};
     const TimedFrames timed =
         timeFrames(prepared, *state.technique, settings, options.warmupRuns, options.runs, progress);
     FlythroughFrame frame;
