@@ -1,0 +1,82 @@
+#include "shadows/virtual/page_marking.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "scenes/camera.h"
+#include "shading/lights.h"
+
+namespace shadowlab::vsm {
+namespace {
+
+// What every pixel's choice needs from the camera and the clipmap.
+struct LevelChoice {
+    glm::dvec3 eye, forward;
+    double footprintPerDepth;   // a pixel's side at unit view depth, m per m
+    const ClipmapSettings& clipmap;
+    const std::vector<LevelWindow>& windows;
+    const MarkingSettings& settings;
+
+    // The finest level whose texel is no larger than the pixel's (biased) footprint.
+    int matchingLevel(const glm::dvec3& P) const {
+        const double footprint = footprintPerDepth * glm::dot(P - eye, forward);
+        // texel(l) = 2^(l+1) / resolution <= footprint * 2^bias
+        const double l = std::floor(std::log2(footprint * double(clipmap.resolution) / 2.0) + settings.lodBias);
+        // A pixel wider than the coarsest texel reads the coarsest level (more detail than
+        // it needs); one finer than the finest, the finest.
+        return std::isfinite(l) ? int(std::clamp(l, double(clipmap.firstLevel), double(clipmap.lastLevel)))
+                                : clipmap.firstLevel;
+    }
+
+    // The level from `level` up whose window holds the whole box the lookup reads.
+    PixelLevel choose(const glm::dvec3& P, const LightFrame& frame) const {
+        const glm::dvec3 local = frame.local(P);
+        const int n = clipmap.pagesPerSide();
+        for (int level = matchingLevel(P); level <= clipmap.lastLevel; ++level) {
+            const glm::dvec2 texel = texelOf(clipmap, level, local);
+            const PageBox box = pagesRead(texel, settings.reachTexels, clipmap.pageTexels);
+            const LevelWindow& w = windows[size_t(level - clipmap.firstLevel)];
+            if (w.holds(box.x0, box.y0, n) && w.holds(box.x1, box.y1, n))
+                return {int8_t(level - clipmap.firstLevel), texel};
+        }
+        return {};
+    }
+};
+
+}  // namespace
+
+PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels) {
+    const auto page = [&](double c) { return pageOf(c, pageTexels); };
+    return {page(texel.x - reachTexels), page(texel.y - reachTexels), page(texel.x + reachTexels),
+            page(texel.y + reachTexels)};
+}
+
+std::vector<PixelLevel> markPages(const GBuffer& g, const Camera& camera, const Light& sun, const LightFrame& frame,
+                                  const ClipmapSettings& clipmap, const MarkingSettings& settings, PageTable& table) {
+    const LevelChoice choice{glm::dvec3(camera.eye), glm::normalize(glm::dvec3(camera.target - camera.eye)),
+                             2.0 / (clipFromViewD(camera)[1][1] * double(camera.height)), clipmap, table.windows(),
+                             settings};
+    const LightReach reaches(sun);
+    std::vector<PixelLevel> levels(g.pixelCount());
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        for (int j = rows.begin(); j < rows.end(); ++j) {
+            for (int i = 0; i < g.width; ++i) {
+                const size_t k = g.index(i, j);
+                if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
+                const PixelLevel chosen = choice.choose(glm::dvec3(g.position[k]), frame);
+                levels[k] = chosen;
+                if (chosen.level == kNoLevel) continue;
+                const int level = clipmap.firstLevel + chosen.level;
+                const PageBox box = pagesRead(chosen.texel, settings.reachTexels, clipmap.pageTexels);
+                for (int32_t py = box.y0; py <= box.y1; ++py)
+                    for (int32_t px = box.x0; px <= box.x1; ++px) table.request({level, px, py});
+            }
+        }
+    });
+    return levels;
+}
+
+}  // namespace shadowlab::vsm

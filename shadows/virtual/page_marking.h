@@ -1,0 +1,53 @@
+// Page marking (docs/virtual-shadow-maps.md): from the camera's G-buffer, the pages of the
+// virtual map that this frame's lookups will read, so that only those get memory and only
+// those not already valid get rendered (Lefohn et al. 2007, resolution-matched shadow maps:
+// the view's samples decide the pages, as in Unreal Engine 5's marking from the depth
+// buffer).
+//
+// Each pixel the light reaches picks the level whose texel matches its footprint: the
+// finest level l with texel(l) <= footprint * 2^lodBias (clamped to the clipmap's levels), where the footprint is the pixel's
+// side on a plane facing the camera at the pixel's view depth; a positive bias trades
+// resolution for fewer pages. It then marks every page under the texels its lookup reads:
+// the texel box [floor(u - reach), floor(u + reach)] around its texel coordinate u, reach
+// being the filter's half-width in texels (0 for a nearest-texel lookup). A box that leaves
+// the level's window moves the pixel to the next coarser level, so every texel a lookup
+// reads lies in a marked page of its level; a pixel that no level holds is left unmarked
+// (level kNoLevel) and is lit.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scenes/scene.h"
+#include "shading/gbuffer.h"
+#include "shadows/virtual/clipmap.h"
+#include "shadows/virtual/page_table.h"
+
+namespace shadowlab::vsm {
+
+inline constexpr int8_t kNoLevel = -1;
+
+struct MarkingSettings {
+    double lodBias = 0.0;       // in levels: + coarser, - finer
+    double reachTexels = 0.0;   // the lookup filter's half-width, texels
+};
+
+// A pixel's level and texel coordinate, as marking chose them and the lookup reads them.
+struct PixelLevel {
+    int8_t level = kNoLevel;   // index from settings.firstLevel, or kNoLevel
+    glm::dvec2 texel{0.0};
+};
+
+// The marked pages go into `table` (after its beginFrame); returns each pixel's level
+// (kNoLevel where the pixel has no surface, the light does not reach it or no level holds
+// its box). Rows run in parallel; the result is the same for any thread count.
+std::vector<PixelLevel> markPages(const GBuffer& g, const Camera& camera, const Light& sun, const LightFrame& frame,
+                                  const ClipmapSettings& clipmap, const MarkingSettings& settings, PageTable& table);
+
+// Every page the box of texel coordinate `texel` covers at a level: [first, last] in each axis.
+struct PageBox {
+    int32_t x0, y0, x1, y1;
+};
+PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels);
+
+}  // namespace shadowlab::vsm

@@ -1,0 +1,179 @@
+#include "shadows/virtual/page_table.h"
+
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+#include <string>
+
+namespace shadowlab::vsm {
+namespace {
+
+// x mod n in [0, n) for any sign of x.
+int32_t wrap(int32_t x, int n) {
+    const int32_t r = x % n;
+    return r < 0 ? r + n : r;
+}
+
+}  // namespace
+
+PageTable::PageTable(const ClipmapSettings& settings, int poolPages)
+    : settings_(settings), pagesPerSide_(settings.pagesPerSide()) {
+    checkClipmapSettings(settings);
+    if (poolPages < 1 || poolPages > (1 << 20))
+        throw std::invalid_argument("virtual shadow map: pool-pages must be in 1..1048576, got " +
+                                    std::to_string(poolPages));
+    const size_t perLevel = size_t(pagesPerSide_) * size_t(pagesPerSide_);
+    slots_.resize(perLevel * size_t(settings.levelCount()));
+    requestedNow_.assign(slots_.size(), 0);
+    owner_.assign(size_t(poolPages), -1);
+    lastRequested_.assign(size_t(poolPages), 0);
+    // Taken from the back: physical page 0 first.
+    for (int32_t p = poolPages - 1; p >= 0; --p) free_.push_back(p);
+}
+
+size_t PageTable::slotIndex(const PageKey& key) const {
+    const size_t n = size_t(pagesPerSide_);
+    return size_t(key.level - settings_.firstLevel) * n * n + size_t(wrap(key.y, pagesPerSide_)) * n +
+           size_t(wrap(key.x, pagesPerSide_));
+}
+
+PageKey PageTable::windowPage(size_t slot) const {
+    const size_t n = size_t(pagesPerSide_);
+    const LevelWindow& w = windows_[slot / (n * n)];
+    const int32_t sx = int32_t(slot % n), sy = int32_t(slot / n % n);
+    // The one page of the window in this slot: the window's first page plus how far the slot
+    // lies past the first page's slot, round the torus.
+    return {w.level, w.firstX + wrap(sx - wrap(w.firstX, pagesPerSide_), pagesPerSide_),
+            w.firstY + wrap(sy - wrap(w.firstY, pagesPerSide_), pagesPerSide_)};
+}
+
+const PageTable::Slot* PageTable::holding(const PageKey& key) const {
+    if (key.level < settings_.firstLevel || key.level > settings_.lastLevel) return nullptr;
+    const Slot& slot = slots_[slotIndex(key)];
+    return slot.physical != kNoPhysicalPage && slot.key == key ? &slot : nullptr;
+}
+
+void PageTable::beginFrame(const std::vector<LevelWindow>& windows) {
+    if (int(windows.size()) != settings_.levelCount())
+        throw std::logic_error("PageTable::beginFrame: one window per level");
+    windows_ = windows;
+    ++frame_;
+    std::fill(requestedNow_.begin(), requestedNow_.end(), uint8_t(0));
+    overflow_ = evicted_ = 0;
+}
+
+void PageTable::request(const PageKey& key) {
+    std::atomic_ref<uint8_t>(requestedNow_[slotIndex(key)]).store(1, std::memory_order_relaxed);
+}
+
+bool PageTable::requested(const PageKey& key) const {
+    if (windows_.empty() || key.level < settings_.firstLevel || key.level > settings_.lastLevel) return false;
+    const size_t slot = slotIndex(key);
+    return requestedNow_[slot] && windowPage(slot) == key;
+}
+
+void PageTable::release(Slot& slot) {
+    if (slot.physical != kNoPhysicalPage) {
+        owner_[size_t(slot.physical)] = -1;
+        free_.push_back(slot.physical);
+    }
+    slot.physical = kNoPhysicalPage;
+    slot.valid = false;
+}
+
+int32_t PageTable::takePhysicalPage() {
+    if (!free_.empty()) {
+        const int32_t p = free_.back();
+        free_.pop_back();
+        return p;
+    }
+    // The least recently requested page not requested this frame; the lowest index on a tie.
+    int32_t victim = kNoPhysicalPage;
+    for (int32_t p = 0; p < int32_t(owner_.size()); ++p) {
+        if (lastRequested_[size_t(p)] == frame_) continue;
+        if (victim == kNoPhysicalPage || lastRequested_[size_t(p)] < lastRequested_[size_t(victim)]) victim = p;
+    }
+    if (victim == kNoPhysicalPage) return victim;
+    Slot& evicted = slots_[size_t(owner_[size_t(victim)])];
+    evicted.physical = kNoPhysicalPage;
+    evicted.valid = false;
+    owner_[size_t(victim)] = -1;
+    ++evicted_;
+    return victim;
+}
+
+std::vector<PageKey> PageTable::allocate() {
+    const size_t perLevel = size_t(pagesPerSide_) * size_t(pagesPerSide_);
+    // First every requested page that has memory is marked as in use this frame, so that
+    // making room for the others never evicts one of them.
+    for (size_t s = 0; s < slots_.size(); ++s) {
+        if (!requestedNow_[s]) continue;
+        Slot& slot = slots_[s];
+        const PageKey key = windowPage(s);
+        if (slot.physical != kNoPhysicalPage && !(slot.key == key)) release(slot);   // a page the window left
+        slot.key = key;
+        if (slot.physical != kNoPhysicalPage) lastRequested_[size_t(slot.physical)] = frame_;
+    }
+    std::vector<PageKey> toRender;
+    for (int level = settings_.levelCount() - 1; level >= 0; --level) {
+        for (size_t s = size_t(level) * perLevel; s < size_t(level + 1) * perLevel; ++s) {
+            if (!requestedNow_[s]) continue;
+            Slot& slot = slots_[s];
+            if (slot.physical == kNoPhysicalPage) {
+                slot.physical = takePhysicalPage();
+                if (slot.physical == kNoPhysicalPage) {
+                    ++overflow_;
+                    continue;
+                }
+                owner_[size_t(slot.physical)] = int64_t(s);
+                lastRequested_[size_t(slot.physical)] = frame_;
+                slot.valid = false;
+            }
+            if (!slot.valid) toRender.push_back(slot.key);
+        }
+    }
+    return toRender;
+}
+
+void PageTable::markRendered(const PageKey& key) {
+    Slot& slot = slots_[slotIndex(key)];
+    if (slot.physical == kNoPhysicalPage || !(slot.key == key))
+        throw std::logic_error("PageTable::markRendered: the page has no memory");
+    slot.valid = true;
+}
+
+void PageTable::invalidate(const PageKey& key) {
+    if (holding(key)) slots_[slotIndex(key)].valid = false;
+}
+
+int PageTable::invalidateBox(int level, int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
+    const size_t perLevel = size_t(pagesPerSide_) * size_t(pagesPerSide_);
+    const size_t first = size_t(level - settings_.firstLevel) * perLevel;
+    int invalidated = 0;
+    for (size_t s = first; s < first + perLevel; ++s) {
+        Slot& slot = slots_[s];
+        const bool inside = slot.key.x >= x0 && slot.key.x <= x1 && slot.key.y >= y0 && slot.key.y <= y1;
+        if (slot.physical == kNoPhysicalPage || !slot.valid || !inside) continue;
+        slot.valid = false;
+        ++invalidated;
+    }
+    return invalidated;
+}
+
+void PageTable::invalidateAll() {
+    for (Slot& slot : slots_) slot.valid = false;
+}
+
+int32_t PageTable::physical(const PageKey& key) const {
+    const Slot* slot = holding(key);
+    return slot ? slot->physical : kNoPhysicalPage;
+}
+
+bool PageTable::valid(const PageKey& key) const {
+    const Slot* slot = holding(key);
+    return slot && slot->valid;
+}
+
+int PageTable::residentPages() const { return int(owner_.size() - free_.size()); }
+
+}  // namespace shadowlab::vsm
