@@ -55,8 +55,10 @@ struct MapReceiver {
     // Lit by texel (x, y) of the map: not farther from the light than what the map stores.
     // An empty texel (the cleared 1) holds no occluder, even where the receiver's plane,
     // extrapolated past the farthest receiver, runs beyond the far plane.
-    bool litBy(const DepthMap& map, int x, int y) const {
-        const float stored = map.at(x, y);
+    bool litBy(const DepthMap& map, int x, int y) const { return litByStored(map.at(x, y), x, y); }
+    // The same for `stored`, the depth texel (x, y) holds wherever it is kept (a virtual
+    // map's page).
+    bool litByStored(float stored, int x, int y) const {
         return stored >= 1.0f || depthAt(glm::dvec2(x + 0.5, y + 0.5)) <= double(stored) + tolerance;
     }
 };

@@ -2,24 +2,32 @@
 
 namespace shadowlab {
 
+const SettingsTable<BiasSettings>& biasSettingsTable() {
+    using S = BiasSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .choice("bias", member(&S::mode),
+                    {{"constant", BiasMode::Constant},
+                     {"slope-scaled", BiasMode::SlopeScaled, "polygon offset"},
+                     {"normal-offset", BiasMode::NormalOffset},
+                     {"receiver-plane", BiasMode::ReceiverPlane, "exact for planes, acne in concavities"}})
+            .real("constant-bias", member(&S::constantMetres), 0.0, 100.0,
+                  "constant, normal-offset: metres the receiver moves towards the light")
+            .real("slope-factor", member(&S::slopeFactor), 0.0, 1000.0,
+                  "slope-scaled: polygon offset factor; 1 covers a nearest lookup half a texel away")
+            .real("slope-units", member(&S::slopeUnits), 0.0, 1e6,
+                  "slope-scaled: polygon offset units, in float depth steps")
+            .real("normal-offset", member(&S::normalOffsetTexels), 0.0, 1000.0,
+                  "normal-offset: texels along the normal at a grazing light");
+    return table;
+}
+
 const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable() {
     using S = ShadowMapSettings;
     static const auto table =
         SettingsTable<S>()
             .include(member(&S::resolution), mapResolutionTable("texels per side of each map"))
-            .choice("bias", member(&S::bias, &BiasSettings::mode),
-                    {{"constant", BiasMode::Constant},
-                     {"slope-scaled", BiasMode::SlopeScaled, "polygon offset"},
-                     {"normal-offset", BiasMode::NormalOffset},
-                     {"receiver-plane", BiasMode::ReceiverPlane, "exact for planes, acne in concavities"}})
-            .real("constant-bias", member(&S::bias, &BiasSettings::constantMetres), 0.0, 100.0,
-                  "constant, normal-offset: metres the receiver moves towards the light")
-            .real("slope-factor", member(&S::bias, &BiasSettings::slopeFactor), 0.0, 1000.0,
-                  "slope-scaled: polygon offset factor; 1 covers a nearest lookup half a texel away")
-            .real("slope-units", member(&S::bias, &BiasSettings::slopeUnits), 0.0, 1e6,
-                  "slope-scaled: polygon offset units, in float depth steps")
-            .real("normal-offset", member(&S::bias, &BiasSettings::normalOffsetTexels), 0.0, 1000.0,
-                  "normal-offset: texels along the normal at a grazing light")
+            .include(member(&S::bias), biasSettingsTable())
             .choice("layer", member(&S::layer),
                     {{"first", DepthLayer::First},
                      {"second", DepthLayer::Second, "back faces"},

@@ -18,6 +18,10 @@ struct ShadowMapSettings {
     FilterSettings filter = {};
 };
 
+// The bias rows (`bias`, `constant-bias`, `slope-factor`, `slope-units`, `normal-offset`),
+// which every technique comparing depths in a map shares.
+const SettingsTable<BiasSettings>& biasSettingsTable();
+
 // Its parameters (docs/shadow-maps.md), each bound to its member; the defaults above.
 const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable();
 
