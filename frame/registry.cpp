@@ -16,6 +16,7 @@
 #include "shadows/projected/projected_texture.h"
 #include "shadows/reference/reference_techniques.h"
 #include "shadows/screen/contact_shadows.h"
+#include "shadows/virtual/virtual_shadow_map.h"
 #include "shadows/volumes/shadow_volume.h"
 #include "shadows/wedges/soft_shadow_volumes.h"
 
@@ -29,6 +30,7 @@ const std::vector<Technique>& techniques() {
         softReferenceTechnique(),
         withCasterLod(shadowMapTechnique()),
         withCasterLod(cascadedShadowMapTechnique()),
+        withCasterLod(virtualShadowMapTechnique()),
         withCasterLod(irregularZBufferTechnique()),
         withCasterLod(contactShadowsTechnique()),
         withCasterLod(shadowVolumeTechnique()),

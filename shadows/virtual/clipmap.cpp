@@ -4,6 +4,10 @@
 #include <stdexcept>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scenes/camera.h"
+
 namespace shadowlab::vsm {
 namespace {
 
@@ -12,13 +16,14 @@ bool powerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 }  // namespace
 
 LightFrame LightFrame::towards(const glm::dvec3& direction) {
+    // The rows of the shadow maps' light rotation (light_view.cpp: lookAt from the origin
+    // along -direction), so that a page's view and the frame agree to the bit.
+    const glm::dvec3 z = glm::normalize(direction);
+    const glm::dmat4 view = glm::lookAtRH(glm::dvec3(0.0), -z, lookAtUp(z));
     LightFrame frame;
-    frame.z = glm::normalize(direction);
-    // World up unless the beam is nearly vertical; then world z, so that a sun overhead still
-    // gets a frame (and the same one each time).
-    const glm::dvec3 up = std::abs(frame.z.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
-    frame.x = glm::normalize(glm::cross(up, frame.z));
-    frame.y = glm::cross(frame.z, frame.x);
+    frame.x = {view[0][0], view[1][0], view[2][0]};
+    frame.y = {view[0][1], view[1][1], view[2][1]};
+    frame.z = {view[0][2], view[1][2], view[2][2]};
     return frame;
 }
 
@@ -47,8 +52,8 @@ void checkClipmapSettings(const ClipmapSettings& s) {
     const auto fail = [](const std::string& what) { throw std::invalid_argument("virtual shadow map: " + what); };
     if (!powerOfTwo(s.resolution) || s.resolution > (1 << 20))
         fail("resolution must be a power of two up to 1048576, got " + std::to_string(s.resolution));
-    if (!powerOfTwo(s.pageTexels) || s.pageTexels < 8 || s.pageTexels > s.resolution / 2)
-        fail("page-texels must be a power of two from 8 to half the resolution, got " + std::to_string(s.pageTexels));
+    if (!powerOfTwo(s.pageTexels) || s.pageTexels < 16 || s.pageTexels > s.resolution / 2)
+        fail("page-texels must be a power of two from 16 to half the resolution, got " + std::to_string(s.pageTexels));
     if (s.firstLevel < -40 || s.lastLevel > 40 || s.firstLevel > s.lastLevel)
         fail("levels must satisfy -40 <= first-level <= last-level <= 40, got " + std::to_string(s.firstLevel) +
              ".." + std::to_string(s.lastLevel));

@@ -28,7 +28,8 @@
 namespace shadowlab::vsm {
 
 // The light's orthonormal frame, in double: z towards the light (Light::direction), x and y
-// across its beam. The same direction always gives the same frame.
+// across its beam: the rows of the rotation every shadow map of a sun is drawn with
+// (light_view.h), so the same direction always gives the same frame.
 struct LightFrame {
     glm::dvec3 x{1.0, 0.0, 0.0}, y{0.0, 1.0, 0.0}, z{0.0, 0.0, 1.0};
 
@@ -79,7 +80,7 @@ glm::dvec2 texelOf(const ClipmapSettings& settings, int level, const glm::dvec3&
 // The window of a level centred on the camera's eye, snapped to whole pages.
 LevelWindow placeLevel(const ClipmapSettings& settings, int level, const glm::dvec3& eyeLocal);
 
-// Whether the settings make a clipmap: resolution and page a power of two, 8 <= pageTexels
+// Whether the settings make a clipmap: resolution and page a power of two, 16 <= pageTexels
 // <= resolution <= 2^20, at least 2 pages a side, levels in [-40, 40] and first <= last.
 // Throws std::invalid_argument naming the setting otherwise.
 void checkClipmapSettings(const ClipmapSettings& settings);

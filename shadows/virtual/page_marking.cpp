@@ -20,15 +20,17 @@ struct LevelChoice {
     const std::vector<LevelWindow>& windows;
     const MarkingSettings& settings;
 
-    // The finest level whose texel is no larger than the pixel's (biased) footprint.
+    // The finest level whose texel is no larger than the pixel's (biased) footprint:
+    // texel(l) = 2^(l+1) / resolution <= footprint, so l = floor(log2(footprint * resolution
+    // / 2)), the binary exponent, exact (frexp, no libm approximation).
     int matchingLevel(const glm::dvec3& P) const {
         const double footprint = footprintPerDepth * glm::dot(P - eye, forward);
-        // texel(l) = 2^(l+1) / resolution <= footprint * 2^bias
-        const double l = std::floor(std::log2(footprint * double(clipmap.resolution) / 2.0) + settings.lodBias);
+        int exponent = 0;
+        const double mantissa = std::frexp(footprint * double(clipmap.resolution) / 2.0, &exponent);
         // A pixel wider than the coarsest texel reads the coarsest level (more detail than
-        // it needs); one finer than the finest, the finest.
-        return std::isfinite(l) ? int(std::clamp(l, double(clipmap.firstLevel), double(clipmap.lastLevel)))
-                                : clipmap.firstLevel;
+        // it needs); one finer than the finest, or at no depth, the finest.
+        const int level = mantissa > 0.0 ? exponent - 1 + settings.lodBias : clipmap.firstLevel;
+        return std::clamp(level, clipmap.firstLevel, clipmap.lastLevel);
     }
 
     // The level from `level` up whose window holds the whole box the lookup reads.

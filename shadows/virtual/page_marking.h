@@ -28,7 +28,7 @@ namespace shadowlab::vsm {
 inline constexpr int8_t kNoLevel = -1;
 
 struct MarkingSettings {
-    double lodBias = 0.0;       // in levels: + coarser, - finer
+    int lodBias = 0;            // in levels: + coarser, - finer
     double reachTexels = 0.0;   // the lookup filter's half-width, texels
 };
 

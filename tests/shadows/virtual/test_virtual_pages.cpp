@@ -83,7 +83,7 @@ TEST_CASE("virtual pages: every texel a lookup reads lies in a marked page that 
     for (double reach : {0.0, 0.5, 1.5, 3.0}) {
         INFO("reach " << reach << " texels");
         PageTable table(c, 4096);
-        const Marked marked = mark(view, c, {.lodBias = 0.0, .reachTexels = reach}, table);
+        const Marked marked = mark(view, c, {.lodBias = 0, .reachTexels = reach}, table);
         table.allocate();
         CHECK(table.overflowPages() == 0);
         size_t checkedPixels = 0, misses = 0;
@@ -109,7 +109,7 @@ TEST_CASE("virtual pages: a pixel's level matches its footprint, the finer for a
     const ClipmapSettings c = smallClipmap();
     PageTable table(c, 4096);
     const Marked base = mark(view, c, {}, table);
-    const Marked finer = mark(view, c, {.lodBias = -1.0}, table);
+    const Marked finer = mark(view, c, {.lodBias = -1}, table);
     size_t compared = 0, matched = 0;
     for (size_t k = 0; k < base.levels.size(); ++k) {
         if (base.levels[k].level == kNoLevel || finer.levels[k].level == kNoLevel) continue;

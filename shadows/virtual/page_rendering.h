@@ -1,0 +1,56 @@
+// Page rendering (docs/virtual-shadow-maps.md): each page that marking requested and that
+// holds no current depth is drawn as a small shadow map of its own, pageTexels a side, by
+// the rasterizer, with an orthographic view that is exactly the page's square of its level
+// and the depth range every page of the light shares; only the casters whose bounds'
+// projection meets the page are drawn (Unreal Engine 5 culls instances per page the same
+// way). The depths go into the page's place in the physical pool.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "raster/pipeline_state.h"
+#include "raster/tile_kernels.h"
+#include "scenes/bounds.h"
+#include "scenes/prepared_scene.h"
+#include "shadows/light_view.h"
+#include "shadows/virtual/clipmap.h"
+
+namespace shadowlab::vsm {
+
+// The light's depth range, shared by every page: distances along the beam (-z of the
+// frame) that hold every caster and receiver of the world.
+struct DepthRange {
+    double zNear = 0.0, zFar = 1.0;
+    bool holds(const DepthRange& r) const { return r.zNear >= zNear && r.zFar <= zFar; }
+};
+// The world's boxes' range, widened by 10 % of its length on each side (and at least 1 cm),
+// so that a caster that moves a little keeps it and the pages it did not touch.
+DepthRange depthRangeOf(const std::vector<Aabb>& boxes, const LightFrame& frame);
+
+// The view a page is drawn with (window depth (distance - zNear) / (zFar - zNear)).
+LightView pageView(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range,
+                   const PageKey& key);
+// Level l as one huge map: world -> (global texel x, y, window depth, 1), the matrix every
+// lookup of the level maps receivers with (a DepthMap's texelFromWorld, depth_map.h).
+glm::dmat4 levelTexelFromWorld(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range,
+                               int level);
+
+// The physical pool's depths: page p's texels, row-major, at p * pageTexels^2; it holds the
+// pages up to the highest one drawn so far (the table hands out low pages first).
+struct PagePool {
+    int pageTexels = 0;
+    std::vector<float> depth;
+    float at(int32_t page, int x, int y) const {
+        return depth[(size_t(page) * size_t(pageTexels) + size_t(y)) * size_t(pageTexels) + size_t(x)];
+    }
+};
+
+// Draws each page of `keys` into its physical page (physical[k] for keys[k]); `casterBoxes`
+// are the casters' instances' boxes, whose triangles are culled per page.
+void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBoxes, const LightFrame& frame,
+                 const ClipmapSettings& clipmap, const DepthRange& range, std::span<const PageKey> keys,
+                 std::span<const int32_t> physical, const raster::PolygonOffset& offset, raster::SimdLevel simd,
+                 PagePool& pool);
+
+}  // namespace shadowlab::vsm

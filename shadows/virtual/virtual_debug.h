@@ -1,0 +1,29 @@
+// The virtual shadow map's intermediate buffers (`--debug-buffers`, docs/virtual-shadow-
+// maps.md): what marking chose per pixel and what the page table and pool hold.
+//   level            per pixel, the level read (its index from the first, -1: none)
+//   texels-per-pixel per pixel, the level's texels across the pixel's footprint (1: matched)
+//   page-table       every level's table, one square of pagesPerSide^2 per level, stacked
+//                    from the first level down, each page of the level's window:
+//                    0 no memory, 0.25 memory but stale (invalidated), 0.5 valid but not
+//                    read this frame, 0.75 read from the cache, 1 rendered this frame
+//   pool             the physical pages in use as an atlas, page p at column p mod n, row
+//                    p / n of an n x n grid, window depth
+#pragma once
+
+#include <vector>
+
+#include "scenes/scene.h"
+#include "shading/gbuffer.h"
+#include "shadows/debug_buffers.h"
+#include "shadows/virtual/page_marking.h"
+#include "shadows/virtual/page_rendering.h"
+#include "shadows/virtual/page_table.h"
+
+namespace shadowlab::vsm {
+
+// Written through `debug` (nothing when it is disabled).
+void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera,
+                       const ClipmapSettings& clipmap, const std::vector<PixelLevel>& levels, const PageTable& table,
+                       const std::vector<PageKey>& rendered, const PagePool& pool);
+
+}  // namespace shadowlab::vsm

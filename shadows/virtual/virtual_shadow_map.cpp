@@ -1,0 +1,177 @@
+// The technique's frame, stage by stage (docs/virtual-shadow-maps.md):
+//   1. the light's frame and depth range; what moved since the last frame invalidates
+//      (page_invalidation.h);
+//   2. the levels' windows around the camera and the pages the pixels mark (page_marking.h);
+//   3. memory for the marked pages and the list of those to render (page_table.h);
+//   4. those pages drawn (page_rendering.h);
+//   5. the lookup (page_lookup.h);
+//   6. on request, the buffers (virtual_debug.h).
+// The page table, the pool and what the last frame saw are the technique's state in its
+// history (technique_history.h): a frame that stands alone starts from nothing and renders
+// every page it marks.
+#include "shadows/virtual/virtual_shadow_map.h"
+
+#include <optional>
+#include <stdexcept>
+
+#include "scenes/bounds.h"
+#include "shadows/debug_buffers.h"
+#include "shadows/maps/shadow_map_settings.h"
+#include "shadows/maps/shadow_map_techniques.h"
+#include "shadows/stage_timer.h"
+#include "shadows/virtual/page_invalidation.h"
+#include "shadows/virtual/page_lookup.h"
+#include "shadows/virtual/page_marking.h"
+#include "shadows/virtual/page_rendering.h"
+#include "shadows/virtual/virtual_debug.h"
+
+namespace shadowlab {
+namespace {
+
+using namespace vsm;
+
+const char* const kVirtualMapName = "virtual-shadow-map";
+
+struct VirtualMapSettings {
+    ClipmapSettings clipmap;
+    int poolPages = 1024;
+    int lodBias = 0;
+    BiasSettings bias = {};
+};
+
+const SettingsTable<VirtualMapSettings>& settingsTable() {
+    using S = VirtualMapSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .integer("virtual-resolution", member(&S::clipmap, &ClipmapSettings::resolution), 256, 1 << 20,
+                     "texels a side of each level (a power of two); only marked pages are drawn")
+            .integer("page-texels", member(&S::clipmap, &ClipmapSettings::pageTexels), 16, 4096,
+                     "texels a side of a page (a power of two)")
+            .integer("first-level", member(&S::clipmap, &ClipmapSettings::firstLevel), -40, 40,
+                     "the finest level: 2^(l+1) m a side")
+            .integer("last-level", member(&S::clipmap, &ClipmapSettings::lastLevel), -40, 40,
+                     "the coarsest level: 2^(l+1) m a side")
+            .integer("pool-pages", member(&S::poolPages), 1, 1 << 20, "physical pages of memory")
+            .integer("lod-bias", member(&S::lodBias), -8, 8, "levels coarser (+) or finer (-) than the pixels' footprint")
+            .include(member(&S::bias), biasSettingsTable());
+    return table;
+}
+
+// What the technique keeps from frame to frame.
+struct VirtualMapState {
+    std::optional<PageTable> table;
+    PagePool pool;
+    glm::dvec3 towardsLight{0.0};
+    DepthRange range;
+    std::vector<Aabb> casterBoxes;   // the last frame's, per instance
+};
+
+// The state ready for this frame: made on the first, reset when the light turned or the
+// casters left the depth range; the pages under casters that moved invalidated. Returns how
+// many valid pages were invalidated.
+int prepareState(VirtualMapState& state, const VirtualMapSettings& s, const glm::dvec3& towardsLight,
+                 const LightFrame& frame, const std::vector<Aabb>& boxes) {
+    const DepthRange needed = depthRangeOf(boxes, frame);
+    const bool fresh = !state.table || towardsLight != state.towardsLight || !state.range.holds(needed) ||
+                       boxes.size() != state.casterBoxes.size();
+    if (fresh) {
+        const int before = state.table ? state.table->residentPages() : 0;
+        if (!state.table) state.table.emplace(s.clipmap, s.poolPages), state.pool = {s.clipmap.pageTexels, {}};
+        state.table->invalidateAll();
+        state.towardsLight = towardsLight, state.range = needed, state.casterBoxes = boxes;
+        return before;
+    }
+    std::vector<Aabb> moved;
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        const Aabb& a = state.casterBoxes[i];
+        if (a.min != boxes[i].min || a.max != boxes[i].max) moved.push_back(a), moved.push_back(boxes[i]);
+    }
+    state.casterBoxes = boxes;
+    return invalidateUnder(moved, frame, s.clipmap, *state.table);
+}
+
+void addStats(ShadowOutputs& out, const PageTable& table, size_t requested, size_t rendered, int invalidated,
+              const LookupResult& lookup, const PagePool& pool) {
+    out.stats.push_back({"virtual_map_flag", 1.0});
+    out.stats.push_back({"requested_pages", double(requested)});
+    out.stats.push_back({"rendered_pages", double(rendered)});
+    out.stats.push_back({"cache_hit_percent", requested ? 100.0 * double(requested - rendered) / double(requested) : 0.0});
+    out.stats.push_back({"invalidated_pages", double(invalidated)});
+    out.stats.push_back({"evicted_pages", double(table.evictedPages())});
+    out.stats.push_back({"overflowed_pages", double(table.overflowPages())});
+    out.stats.push_back({"resident_pages", double(table.residentPages())});
+    out.stats.push_back({"pool_bytes", double(pool.depth.size() * sizeof(float))});
+    out.stats.push_back({"missing_pixels", double(lookup.missingPixels)});
+    out.stats.push_back({"unleveled_pixels", double(lookup.unleveledPixels)});
+}
+
+// A spot, point or area light (its centre): `shadow-map`'s frame with the same bias, its
+// stats and buffers, as `csm` does for a light it has no cascades for; the mip chains of
+// local lights are not built yet.
+ShadowOutputs localLightShadows(const ShadowInputs& in, const VirtualMapSettings& s) {
+    ShadowOutputs out = runShadowMap(in, ShadowMapTechniqueSettings{.map = {.bias = s.bias}});
+    out.stats.insert(out.stats.begin(), {"virtual_map_flag", 0.0});
+    return out;
+}
+
+ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
+    const VirtualMapSettings s = settingsTable().read(in.params);
+    checkClipmapSettings(s.clipmap);
+    if (in.light.type != LightType::Directional) return localLightShadows(in, s);
+    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);
+    StageTimer timer;
+    VirtualMapState& state = in.kept().state<VirtualMapState>();
+    // 1. The light's frame; what moved.
+    const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(in.light.direction));
+    const LightFrame frame = LightFrame::towards(towardsLight);
+    const std::vector<Aabb> boxes = instanceBounds(in.casters().scene(), in.casterWorld());
+    const int invalidated = prepareState(state, s, towardsLight, frame, boxes);
+    PageTable& table = *state.table;
+    timer.lap("invalidation");
+    // 2. Windows and marking.
+    std::vector<LevelWindow> windows;
+    const glm::dvec3 eye = frame.local(glm::dvec3(in.camera().eye));
+    for (int l = s.clipmap.firstLevel; l <= s.clipmap.lastLevel; ++l) windows.push_back(placeLevel(s.clipmap, l, eye));
+    table.beginFrame(windows);
+    const std::vector<PixelLevel> levels = markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap,
+                                                     {s.lodBias, biasReachTexels(s.bias)}, table);
+    timer.lap("marking");
+    // 3. Memory, and the pages to render.
+    const std::vector<PageKey> toRender = table.allocate();
+    std::vector<int32_t> physical;
+    for (const PageKey& key : toRender) physical.push_back(table.physical(key));
+    timer.lap("allocation");
+    // 4. The pages drawn.
+    renderPages(in.casters(), boxes, frame, s.clipmap, state.range, toRender, physical, polygonOffsetFor(s.bias),
+                in.simd, state.pool);
+    for (const PageKey& key : toRender) table.markRendered(key);
+    timer.lap("pages");
+    // 5. The lookup.
+    LookupResult lookup = lookUpPages(in.gbuffer, in.light, frame, s.clipmap, state.range, s.bias, levels, table,
+                                      state.pool);
+    timer.lap("lookup");
+    ShadowOutputs out;
+    out.visibility = std::move(lookup.visibility);
+    size_t requested = 0;
+    for (const LevelWindow& w : windows)
+        for (int32_t y = w.firstY; y < w.firstY + s.clipmap.pagesPerSide(); ++y)
+            for (int32_t x = w.firstX; x < w.firstX + s.clipmap.pagesPerSide(); ++x) requested += table.requested({w.level, x, y});
+    addStats(out, table, requested, toRender.size(), invalidated, lookup, state.pool);
+    timer.appendTo(out.stats);
+    writeVirtualDebug(DebugBuffers(in.debugDir, kVirtualMapName), in.gbuffer, in.camera(), s.clipmap, levels, table, toRender, state.pool);
+    return out;
+}
+
+}  // namespace
+
+Technique virtualShadowMapTechnique() {
+    return {.name = kVirtualMapName,
+            .description = "virtual shadow map (Fernando et al. 2001, Lefohn et al. 2007, UE5's layout): a sun's "
+                           "clipmap of 16k levels in pages, only the marked pages rendered, cached across frames",
+            .params = settingsTable().specs(),
+            .run = runVirtualShadowMap,
+            .referenceName = "reference",
+            .output = TechniqueOutput::Visibility};
+}
+
+}  // namespace shadowlab

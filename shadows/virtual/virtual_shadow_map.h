@@ -1,0 +1,13 @@
+// The `virtual-shadow-map` technique (docs/virtual-shadow-maps.md): a sun's clipmap of
+// pages, marked from the G-buffer, rendered only where not already valid, kept across
+// frames in the technique's history until a caster that moved or a turn of the light
+// invalidates them, and read with the shadow maps' bias.
+#pragma once
+
+#include "shadows/technique.h"
+
+namespace shadowlab {
+
+Technique virtualShadowMapTechnique();
+
+}  // namespace shadowlab

@@ -1,0 +1,128 @@
+// The `virtual-shadow-map` technique on the sun case: its hard shadow within the shadow
+// maps' bounds of the exact reference, every lit pixel covered by a page, the same bytes on
+// every thread count and SIMD level; and its cache: kept pages never change an answer (a
+// frame with a history gives the same V as one that stands alone), a still frame renders no
+// page, a camera move renders only the pages that entered the view, a turn of the sun
+// renders them all, and a short pool overflows into counted, lit pixels instead of failing.
+#include <doctest/doctest.h>
+
+#include "frame/registry.h"
+#include "frame/render.h"
+#include "tests/shadows/shadow_test_support.h"
+
+using namespace shadowlab;
+
+namespace {
+
+Scene sunScene() {
+    Scene scene = loadScene(test::hardCase("sun"));
+    scene.camera.width = 320;
+    scene.camera.height = 200;
+    return scene;
+}
+
+double statOf(const Frame& frame, const std::string& name) {
+    for (const TechniqueStat& s : frame.shadow.stats)
+        if (s.name == name) return s.value;
+    FAIL("no stat " << name);
+    return 0.0;
+}
+
+// A small virtual map (4096 texels a level, pages of 64) so that the tests stay quick.
+std::map<std::string, std::string> smallMap(std::map<std::string, std::string> more = {}) {
+    more.emplace("virtual-resolution", "4096");
+    more.emplace("page-texels", "64");
+    return more;
+}
+
+}  // namespace
+
+TEST_CASE("virtual-shadow-map: the sun's hard shadow within the shadow maps' bound, every pixel paged") {
+    const test::HardScene s(sunScene());
+    const ShadowOutputs out = s.run("virtual-shadow-map");
+    // Sampled, not exact: within 0.05 % of the hit pixels, as close as shadow-map at its
+    // default 2048 texels (0.02 % here); a wrong level, page or offset misses by far more.
+    const test::Misclassified m = test::misclassified(s.gbuffer, s.reference, s.light(), out.visibility);
+    CHECK(m.percent() <= 0.05);
+    CHECK(test::misclassified(s.gbuffer, s.reference, s.light(), s.run("shadow-map").visibility).percent() <= 0.05);
+    CHECK(test::stat(out, "missing_pixels") == 0);
+    CHECK(test::stat(out, "unleveled_pixels") == 0);
+    CHECK(test::stat(out, "rendered_pages") == test::stat(out, "requested_pages"));
+}
+
+TEST_CASE("virtual-shadow-map: the same bytes on every thread count and SIMD level") {
+    const test::HardScene s(sunScene());
+    const std::vector<float> twin = s.run("virtual-shadow-map", smallMap(), raster::SimdLevel::Scalar).visibility;
+    test::checkSameBytesEverywhere(twin, [&](raster::SimdLevel level) {
+        return s.run("virtual-shadow-map", smallMap(), level).visibility;
+    });
+}
+
+TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what is new is rendered") {
+    Scene scene = sunScene();
+    PreparedScene prepared(scene);
+    const Technique& vsm = findTechnique("virtual-shadow-map");
+    FrameHistory history;
+    FrameSettings kept;
+    kept.params = smallMap();
+    kept.history = &history;
+    FrameSettings alone;
+    alone.params = smallMap();
+    const auto sameAsAlone = [&](const Frame& f) {
+        CHECK(test::sameBytes(f.shadow.visibility, renderFrame(prepared, vsm, alone).shadow.visibility));
+    };
+
+    const Frame first = renderFrame(prepared, vsm, kept);
+    CHECK(statOf(first, "rendered_pages") == statOf(first, "requested_pages"));
+    CHECK(statOf(first, "requested_pages") > 4);
+
+    // A still frame: every page is cached.
+    const Frame still = renderFrame(prepared, vsm, kept);
+    CHECK(statOf(still, "rendered_pages") == 0);
+    CHECK(statOf(still, "cache_hit_percent") == 100.0);
+    CHECK(test::sameBytes(still.shadow.visibility, first.shadow.visibility));
+
+    // The camera pans: some pages enter the view; the rest are kept and read as drawn.
+    Camera camera = scene.camera;
+    camera.eye += glm::vec3(1.5f, 0.0f, 0.0f), camera.target += glm::vec3(1.5f, 0.0f, 0.0f);
+    prepared.setCamera(camera);
+    const Frame panned = renderFrame(prepared, vsm, kept);
+    CHECK(statOf(panned, "rendered_pages") > 0);
+    CHECK(statOf(panned, "rendered_pages") < statOf(panned, "requested_pages"));
+    sameAsAlone(panned);
+
+    // The sun turns: every page is drawn again.
+    std::vector<Light> lights = scene.lights;
+    lights[0].direction = glm::normalize(lights[0].direction + glm::vec3(0.2f, 0.0f, 0.0f));
+    prepared.setLights(lights);
+    const Frame turned = renderFrame(prepared, vsm, kept);
+    CHECK(statOf(turned, "rendered_pages") == statOf(turned, "requested_pages"));
+    sameAsAlone(turned);
+}
+
+TEST_CASE("virtual-shadow-map: a pool too small overflows into counted, lit pixels") {
+    const test::HardScene s(sunScene());
+    const ShadowOutputs out = s.run("virtual-shadow-map", smallMap({{"pool-pages", "2"}}));
+    CHECK(test::stat(out, "overflowed_pages") > 0);
+    CHECK(test::stat(out, "missing_pixels") > 0);
+    size_t lit = 0;
+    for (float v : out.visibility) lit += v == 1.0f;
+    CHECK(lit >= size_t(test::stat(out, "missing_pixels")));
+}
+
+TEST_CASE("virtual-shadow-map: settings it cannot take are refused by name, and a local light gets shadow-map's frame") {
+    const test::HardScene sun(test::hardCase("sun"));
+    CHECK_THROWS_WITH_AS(sun.run("virtual-shadow-map", {{"virtual-resolution", "3000"}}),
+                         doctest::Contains("resolution must be a power of two"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(sun.run("virtual-shadow-map", {{"first-level", "4"}, {"last-level", "2"}}),
+                         doctest::Contains("levels must satisfy"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(sun.run("virtual-shadow-map", {{"page-texels", "8"}}), doctest::Contains("page-texels"),
+                         std::invalid_argument);
+    CHECK(test::stat(sun.run("virtual-shadow-map"), "virtual_map_flag") == 1.0);
+    Scene diskScene = loadScene("sphere-box");
+    diskScene.camera.width = 64, diskScene.camera.height = 40;
+    const test::HardScene disk(std::move(diskScene));
+    const ShadowOutputs local = disk.run("virtual-shadow-map");
+    CHECK(test::stat(local, "virtual_map_flag") == 0.0);
+    CHECK(test::sameBytes(local.visibility, disk.run("shadow-map").visibility));
+}
