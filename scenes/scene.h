@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -167,6 +168,13 @@ struct CameraPath {
     int frames = 0;                        // frames to sample it at; 0: the command's default
 };
 
+// Where an instance goes (PreparedScene::setInstanceTransforms): a new worldFromObject,
+// affine.
+struct InstancePlacement {
+    uint32_t instance = 0;                 // index into Scene::instances
+    glm::mat4 worldFromObject{1.0f};
+};
+
 struct Scene {
     std::string name;
     std::vector<Mesh> meshes;
@@ -232,5 +240,13 @@ struct InstanceRange {
     uint32_t firstVertex, firstTriangle, triangleCount;
 };
 std::vector<InstanceRange> instanceRanges(const Scene& scene);
+
+// Writes an instance's world positions and corner normals over its range of `world`, as
+// flatten() places them (the same bits): flatten() fills each instance's part with it, and a
+// moved instance is placed again in place (PreparedScene::setInstanceTransforms).
+// `objectNormals`: cornerShadingNormals() of its mesh, three per triangle.
+void placeInstance(const MeshInstance& instance, const Mesh& mesh, std::span<const glm::vec3> objectNormals,
+                   const InstanceRange& range, WorldGeometry& world);
+
 
 }  // namespace shadowlab

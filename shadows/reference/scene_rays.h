@@ -1,8 +1,10 @@
 // The exact reference's rays for a prepared scene's casters: one Embree BVH, built by the
 // first frame that asks and kept with the scene for every later frame, light and technique
-// (PreparedScene::derived), as the edge adjacency is. A PreparedScene's meshes and
-// instances are fixed (scenes/prepared_scene.h), so the BVH never needs a refit or a
-// rebuild; geometry that moves is another PreparedScene, with a BVH of its own.
+// (PreparedScene::derived), as the edge adjacency is, until an instance moves
+// (PreparedScene::setInstanceTransforms): the BVH is then dropped with the rest of what
+// derives from world geometry, and the next frame that asks builds it again. (A refit would
+// give the same answers, robust traversal being exact for any tree, but the ray offset
+// follows the scene's bounding box too; a fresh build keeps one path to both.)
 #pragma once
 
 #include <optional>
