@@ -1,6 +1,7 @@
 #include "scenes/prepared_scene.h"
 
 #include <chrono>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -58,16 +59,22 @@ const void* PreparedScene::derivedData(std::type_index type, DependsOn dependsOn
 size_t PreparedScene::setInstanceTransforms(std::span<const InstancePlacement> placements) {
     // Every placement checked before anything changes.
     std::vector<const InstancePlacement*> moved;
+    std::vector<bool> placed(scene_.instances.size(), false);
     for (const InstancePlacement& placement : placements) {
         if (placement.instance >= scene_.instances.size())
             throw std::invalid_argument("setInstanceTransforms: instance " + std::to_string(placement.instance) +
                                         " does not exist (the scene has " + std::to_string(scene_.instances.size()) +
                                         ")");
+        if (placed[placement.instance])
+            throw std::invalid_argument("setInstanceTransforms: instance " + std::to_string(placement.instance) +
+                                        " is placed twice");
+        placed[placement.instance] = true;
         if (glm::row(placement.worldFromObject, 3) != glm::vec4(0.0f, 0.0f, 0.0f, 1.0f))
             throw std::invalid_argument("setInstanceTransforms: instance " + std::to_string(placement.instance) +
                                         "'s transform is not affine (its last row must be 0 0 0 1)");
         MeshInstance instance = scene_.instances[placement.instance];
-        if (instance.worldFromObject == placement.worldFromObject) continue;
+        // Bit for bit: a -0 for a +0 is a move too, as flatten() would keep its sign.
+        if (std::memcmp(&instance.worldFromObject, &placement.worldFromObject, sizeof(glm::mat4)) == 0) continue;
         instance.worldFromObject = placement.worldFromObject;
         for (const glm::vec3& p : scene_.meshes[instance.mesh].positions)
             if (!withinWorld(worldPosition(instance, p)))

@@ -56,7 +56,7 @@ public:
     // that change nothing change nothing. Meshes, materials and which instances exist stay
     // fixed: another of those is another PreparedScene. Not thread-safe: no frame may be
     // rendering. Throws std::invalid_argument, changing nothing, for an instance index out
-    // of range, a transform that is not affine (its last row 0 0 0 1) or a vertex that would
+    // of range or placed twice, a transform that is not affine (its last row 0 0 0 1) or a vertex that would
     // land outside the world (scene_limits.h). Returns how many instances moved.
     size_t setInstanceTransforms(std::span<const InstancePlacement> placements);
     // How many times instances have moved since the scene was prepared: a technique that

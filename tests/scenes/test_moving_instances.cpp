@@ -159,6 +159,8 @@ TEST_CASE("a move that cannot be made throws and changes nothing") {
     }
     const std::vector<InstancePlacement> missing{{1, shifted}, {uint32_t(scene.instances.size()), shifted}};
     CHECK_THROWS_AS(prepared.setInstanceTransforms(missing), std::invalid_argument);
+    const std::vector<InstancePlacement> twice{{1, shifted}, {1, scene.instances[1].worldFromObject}};
+    CHECK_THROWS_AS(prepared.setInstanceTransforms(twice), std::invalid_argument);
     CHECK(prepared.geometryVersion() == 0);
     checkSameWorld(prepared.world(), flatten(scene));
 }
