@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "scenes/camera.h"
+#include "scenes/error_text.h"
+#include "scenes/instance_transform.h"
 #include "scenes/scene_error.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
@@ -43,6 +45,7 @@ std::string lastKeyframeProblem(const CameraPath& path, const std::vector<Light>
         return "the path's times span more than the largest number; use smaller times";
     if (key.light.has_value() != previous.light.has_value())
         return std::string("give ") + lightKey(lights) + " in every keyframe or in none";
+    if (key.poses.size() != previous.poses.size()) return "give instances in every keyframe or in none";
     if (key.light && lightIsDirection(lights) &&
         glm::dot(glm::normalize(*key.light), glm::normalize(*previous.light)) < kMaxTurnCosine)
         return "the light turns by more than 170 degrees from the keyframe before; add a keyframe between";
@@ -52,6 +55,71 @@ std::string lastKeyframeProblem(const CameraPath& path, const std::vector<Light>
 // In double, as (1 - s) a + s b: exact at both keys, and b - a cannot overflow.
 glm::vec3 lerp(const glm::vec3& a, const glm::vec3& b, float s) {
     return glm::vec3((1.0 - double(s)) * glm::dvec3(a) + double(s) * glm::dvec3(b));
+}
+
+InstancePose lerp(const InstancePose& a, const InstancePose& b, float s) {
+    return {lerp(a.translate, b.translate, s), lerp(a.rotateDeg, b.rotateDeg, s), lerp(a.scale, b.scale, s)};
+}
+
+// ---- Instances a keyframe moves ---------------------------------------------------------
+
+// "instance": a name (one instance's alone) or an index into Scene::instances, of an
+// instance that an "instances" entry made.
+uint32_t instanceIndex(const JsonField& field, const Scene& scene, std::span<const PathInstance> parts) {
+    uint32_t index = 0;
+    if (field.raw().is_string()) {
+        const std::string name = field.string();
+        const auto named = [&](const MeshInstance& instance) { return instance.name == name; };
+        const auto found = std::ranges::find_if(scene.instances, named);
+        if (found == scene.instances.end()) field.fail("no instance is named " + inQuotes(name));
+        if (std::ranges::count_if(scene.instances, named) > 1)
+            field.fail("several instances are named " + inQuotes(name) + "; give its index");
+        index = uint32_t(found - scene.instances.begin());
+    } else {
+        index = uint32_t(field.integer({0.0, double(scene.instances.size()) - 1.0, false, false}));
+    }
+    if (index >= parts.size())
+        field.fail("instance " + inQuotes(scene.instances[index].name) +
+                   " comes from a model; keyframes move the instances of \"instances\" entries");
+    return index;
+}
+
+// A keyframe's "instances": each one's pose, in the order of path.instances, which the first
+// keyframe to give them sets; every later one must give the same instances.
+std::vector<InstancePose> readPoses(const JsonField& field, const Scene& scene, std::span<const PathInstance> parts,
+                                    CameraPath& path) {
+    const std::vector<JsonField> entries = field.elements();
+    if (entries.empty()) field.fail("needs at least one instance");
+    const bool first = path.instances.empty();
+    std::vector<std::optional<InstancePose>> poses(first ? entries.size() : path.instances.size());
+    for (size_t e = 0; e < entries.size(); ++e) {
+        const JsonObject object = entries[e].object({"instance", "translate", "rotate", "scale", "matrix"});
+        if (object.has("matrix"))
+            object["matrix"].fail("a keyframe gives an instance translate, rotate and scale, which interpolate; "
+                                  "a matrix does not");
+        const uint32_t instance = instanceIndex(object["instance"], scene, parts);
+        const std::string name = inQuotes(scene.instances[instance].name);
+        const auto listed = std::ranges::find(path.instances, instance, &PathInstance::instance);
+        if (first && listed != path.instances.end()) object["instance"].fail("lists instance " + name + " twice");
+        if (!first && listed == path.instances.end())
+            object["instance"].fail("instance " + name + " is not in the first keyframe's instances; every "
+                                    "keyframe moves the same instances");
+        if (first) path.instances.push_back(parts[instance]);
+        std::optional<InstancePose>& pose = poses[first ? e : size_t(listed - path.instances.begin())];
+        if (pose) object["instance"].fail("lists instance " + name + " twice");
+        pose = readPose(object);
+        MeshInstance placed = scene.instances[instance];
+        placed.worldFromObject = posedWorldFromObject(parts[instance], *pose);
+        checkInWorld(entries[e], placed, scene.meshes[placed.mesh]);
+    }
+    std::vector<InstancePose> ordered;
+    for (size_t k = 0; k < poses.size(); ++k) {
+        if (!poses[k])
+            field.fail("misses instance " + inQuotes(scene.instances[path.instances[k].instance].name) +
+                       ", which the first keyframe moves; every keyframe moves the same instances");
+        ordered.push_back(*poses[k]);
+    }
+    return ordered;
 }
 
 // ---- CSV --------------------------------------------------------------------------------
@@ -96,12 +164,21 @@ PathSample samplePath(const CameraPath& path, int frame, int frames) {
     const double t = frames == 1 ? keys.front().time
                    : frame == frames - 1 ? last.time
                                          : keys.front().time + (last.time - keys.front().time) * frame / (frames - 1);
-    if (t == last.time) return {t, last.eye, last.target, last.light};
+    const auto placed = [&](const std::vector<InstancePose>& poses) {
+        std::vector<InstancePlacement> placements;
+        for (size_t i = 0; i < poses.size(); ++i)
+            placements.push_back({path.instances[i].instance, posedWorldFromObject(path.instances[i], poses[i])});
+        return placements;
+    };
+    if (t == last.time) return {t, last.eye, last.target, last.light, placed(last.poses)};
     // The segment [k, k + 1] with time k <= t < time k + 1: a keyframe's own time gives it exactly.
     const size_t k = size_t(std::ranges::upper_bound(keys, t, {}, &PathKeyframe::time) - keys.begin()) - 1;
     const float s = float((t - keys[k].time) / (keys[k + 1].time - keys[k].time));
-    PathSample sample{t, lerp(keys[k].eye, keys[k + 1].eye, s), lerp(keys[k].target, keys[k + 1].target, s), {}};
+    PathSample sample{t, lerp(keys[k].eye, keys[k + 1].eye, s), lerp(keys[k].target, keys[k + 1].target, s), {}, {}};
     if (keys[k].light) sample.light = lerp(*keys[k].light, *keys[k + 1].light, s);
+    std::vector<InstancePose> poses;
+    for (size_t i = 0; i < keys[k].poses.size(); ++i) poses.push_back(lerp(keys[k].poses[i], keys[k + 1].poses[i], s));
+    sample.placements = placed(poses);
     return sample;
 }
 
@@ -118,7 +195,8 @@ void placeOnPath(const PathSample& sample, int frame, Camera& camera, std::vecto
     else light.position = *sample.light;
 }
 
-CameraPath readCameraPath(const JsonField& field, const std::vector<Light>& lights) {
+CameraPath readCameraPath(const JsonField& field, const Scene& scene, std::span<const PathInstance> parts) {
+    const std::vector<Light>& lights = scene.lights;
     const JsonObject object = field.object({"frames", "keyframes"});
     CameraPath path;
     if (const auto frames = object.optional("frames"))
@@ -128,12 +206,14 @@ CameraPath readCameraPath(const JsonField& field, const std::vector<Light>& ligh
     if (keyframes.size() > kMaxPathKeyframes)
         object["keyframes"].fail("more than " + std::to_string(kMaxPathKeyframes) + " keyframes");
     for (const JsonField& entry : keyframes) {
-        const JsonObject key = entry.object({"time", "eye", "target", lightKey(lights)});
+        const JsonObject key = entry.object({"time", "eye", "target", lightKey(lights), "instances"});
         PathKeyframe& keyframe = path.keyframes.emplace_back();
         keyframe.time = key["time"].number();
         keyframe.eye = key["eye"].vec3(kCoordinate);
         keyframe.target = key["target"].vec3(kCoordinate);
         if (const auto light = key.optional(lightKey(lights))) keyframe.light = light->vec3(kCoordinate);
+        if (const auto instances = key.optional("instances"))
+            keyframe.poses = readPoses(*instances, scene, parts, path);
         if (const std::string problem = lastKeyframeProblem(path, lights); !problem.empty()) entry.fail(problem);
     }
     return path;

@@ -63,6 +63,8 @@ double largestScale(const MeshInstance& instance) {
 }
 
 struct CasterLevels {
+    // Each level's copy holds the instances where they were when it was made.
+    static constexpr DependsOn kDependsOn = DependsOn::WorldGeometry;
     struct Level {
         explicit Level(SimplifiedScene s) : casters(std::move(s.scene)), instanceErrorM(std::move(s.instanceErrorM)) {}
         PreparedScene casters;

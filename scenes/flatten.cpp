@@ -1,6 +1,7 @@
 // flatten(): the world-space triangle list that every technique renders, and where each
 // instance lies in it (scene.h).
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 #include "scenes/scene.h"
@@ -9,17 +10,19 @@
 namespace shadowlab {
 namespace {
 
-void reserveFor(const Scene& scene, WorldGeometry& world) {
+// Every per-vertex and per-corner array at its full length, so that placeInstance writes
+// each instance's part in place; the per-triangle ones are appended.
+void sizeFor(const Scene& scene, WorldGeometry& world) {
     size_t vertices = 0, triangles = 0;
     for (const MeshInstance& instance : scene.instances) {
         vertices += scene.meshes[instance.mesh].positions.size();
         triangles += scene.meshes[instance.mesh].triangles.size();
     }
-    world.positions.reserve(vertices);
+    world.positions.resize(vertices);
     world.triangles.reserve(triangles);
     world.triangleMaterial.reserve(triangles);
     world.triangleInstance.reserve(triangles);
-    world.cornerNormals.reserve(3 * triangles);
+    world.cornerNormals.resize(3 * triangles);
 }
 
 // The instance's material, or null where a scene made in code has none for it (only
@@ -64,28 +67,26 @@ bool hasNonOpaqueCasters(const Scene& scene) {
 
 WorldGeometry flatten(const Scene& scene) {
     WorldGeometry world;
-    reserveFor(scene, world);
+    sizeFor(scene, world);
     // Each mesh's corner normals once, however many instances use it.
     std::vector<std::optional<std::vector<glm::vec3>>> meshNormals(scene.meshes.size());
     const bool cutOuts = anyMaterial(scene, [](const Material& m) { return m.cutOut(); });
     // Texture coordinates are kept only for what reads them: cut-outs' alpha, surfaces' albedo.
     const bool uvs = cutOuts || anyMaterial(scene, [](const Material& m) { return m.textured(); });
     std::vector<int32_t> materialCutOut(scene.materials.size(), -1);
+    const std::vector<InstanceRange> ranges = instanceRanges(scene);
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[instance.mesh];
-        const uint32_t base = uint32_t(world.positions.size());
-        for (const glm::vec3& p : mesh.positions) world.positions.push_back(worldPosition(instance, p));
         const int32_t cutOut = cutOuts ? cutOutOf(scene, instance.material, materialCutOut, world) : -1;
         for (const glm::uvec3& t : mesh.triangles) {
             if (cutOuts) world.triangleCutOut.push_back(cutOut);
-            world.triangles.push_back(t + base);
+            world.triangles.push_back(t + ranges[i].firstVertex);
             world.triangleMaterial.push_back(instance.material);
             world.triangleInstance.push_back(i);
         }
         if (!meshNormals[instance.mesh]) meshNormals[instance.mesh] = cornerShadingNormals(mesh);
-        const glm::dmat3 toWorld = normalMatrix(instance);
-        for (const glm::vec3& n : *meshNormals[instance.mesh]) world.cornerNormals.push_back(worldNormal(toWorld, n));
+        placeInstance(instance, mesh, *meshNormals[instance.mesh], ranges[i], world);
         if (!uvs) continue;
         if (!mesh.cornerUvs.empty() && mesh.cornerUvs.size() != 3 * mesh.triangles.size())
             throw std::invalid_argument("flatten: mesh " + mesh.source + " has texture coordinates for some corners only");
@@ -93,6 +94,16 @@ WorldGeometry flatten(const Scene& scene) {
         world.cornerUvs.insert(world.cornerUvs.end(), mesh.cornerUvs.begin(), mesh.cornerUvs.end());
     }
     return world;
+}
+
+void placeInstance(const MeshInstance& instance, const Mesh& mesh, std::span<const glm::vec3> objectNormals,
+                   const InstanceRange& range, WorldGeometry& world) {
+    for (size_t k = 0; k < mesh.positions.size(); ++k)
+        world.positions[range.firstVertex + k] = worldPosition(instance, mesh.positions[k]);
+    const glm::dmat3 toWorld = normalMatrix(instance);
+    const size_t firstCorner = 3 * size_t(range.firstTriangle);
+    for (size_t c = 0; c < objectNormals.size(); ++c)
+        world.cornerNormals[firstCorner + c] = worldNormal(toWorld, objectNormals[c]);
 }
 
 std::vector<InstanceRange> instanceRanges(const Scene& scene) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -155,16 +156,40 @@ struct Environment {
     float rotationDeg = 0.0f;
 };
 
-// A fly-through (docs/flythrough.md): the camera's eye and target, and optionally the first
-// light's position (or a directional light's direction towards it), at keyframe times.
+// A fly-through (docs/flythrough.md): the camera's eye and target, optionally the first
+// light's position (or a directional light's direction towards it), and optionally the
+// transforms of some instances, at keyframe times.
+// An instance's transform at a keyframe: the translate, rotate (degrees about x, then y,
+// then z) and scale of the scene file's instance entries (scenes/instance_transform.h).
+struct InstancePose {
+    glm::vec3 translate{0.0f}, rotateDeg{0.0f}, scale{1.0f};
+};
 struct PathKeyframe {
     double time = 0.0;
     glm::vec3 eye{0.0f}, target{0.0f};
     std::optional<glm::vec3> light;
+    std::vector<InstancePose> poses;       // one per CameraPath::instances, in its order
+};
+// An instance a path moves. Its worldFromObject at a pose is
+//   shift * translateRotateScale(pose) * fit
+// as the scene file composes it (scenes/scene_instances.cpp): the pose replaces the
+// transform the file gave, and the instance keeps its fit and its shift in a lattice.
+struct PathInstance {
+    uint32_t instance = 0;                 // index into Scene::instances
+    std::optional<glm::vec3> shift;        // a "repeat" copy's offset in its lattice
+    glm::mat4 fit{1.0f};
 };
 struct CameraPath {
     std::vector<PathKeyframe> keyframes;   // times strictly increasing; none: the scene has no path
+    std::vector<PathInstance> instances;   // the instances every keyframe places; none: no instance moves
     int frames = 0;                        // frames to sample it at; 0: the command's default
+};
+
+// Where an instance goes (PreparedScene::setInstanceTransforms): a new worldFromObject,
+// affine.
+struct InstancePlacement {
+    uint32_t instance = 0;                 // index into Scene::instances
+    glm::mat4 worldFromObject{1.0f};
 };
 
 struct Scene {
@@ -232,5 +257,12 @@ struct InstanceRange {
     uint32_t firstVertex, firstTriangle, triangleCount;
 };
 std::vector<InstanceRange> instanceRanges(const Scene& scene);
+
+// Writes an instance's world positions and corner normals over its range of `world`, as
+// flatten() places them (the same bits): flatten() fills each instance's part with it, and a
+// moved instance is placed again in place (PreparedScene::setInstanceTransforms).
+// `objectNormals`: cornerShadingNormals() of its mesh, three per triangle.
+void placeInstance(const MeshInstance& instance, const Mesh& mesh, std::span<const glm::vec3> objectNormals,
+                   const InstanceRange& range, WorldGeometry& world);
 
 }  // namespace shadowlab

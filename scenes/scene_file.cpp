@@ -195,7 +195,7 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     for (const JsonField& light : lights) scene.lights.push_back(readLight(light, directory));
     scene.camera = readCamera(object["camera"]);
     if (const auto flythrough = object.optional("flythrough"))
-        scene.flythrough = readCameraPath(*flythrough, scene.lights);
+        scene.flythrough = readCameraPath(*flythrough, scene, names.instanceParts);
     if (const auto environment = object.optional("environment")) scene.environment = readEnvironment(*environment, directory);
     // Something must light the scene: a light, or an environment map (the environment
     // techniques need no other light; the shadow techniques then say they have none).

@@ -22,9 +22,13 @@ inline bool withinWorld(const glm::vec3& p) {
 }
 
 // The names the file gives to meshes and materials, parallel to Scene::meshes and
-// Scene::materials; instances refer to them by name.
+// Scene::materials; instances refer to them by name. And the parts of each placement the
+// "instances" entries made (in Scene::instances' order; the instances of "models" come
+// after them and have none), which a fly-through's keyframes keep when they give an
+// instance a new transform (scene.h, PathInstance).
 struct SceneNames {
     std::vector<std::string> meshes, materials;
+    std::vector<PathInstance> instanceParts;
 };
 
 // One mesh entry: {"file": ...} (OBJ or PLY, relative to directory) or {"procedural": ...}.
@@ -36,9 +40,15 @@ void readMeshes(const JsonField& field, const std::string& directory, Scene& sce
 // An instance's or model's transform (docs/scene-format.md, "transform"): translate,
 // rotate and scale, or a matrix.
 glm::mat4 readTransform(const JsonObject& object);
+// Its translate, rotate and scale, each optional (the identity's where absent).
+InstancePose readPose(const JsonObject& object);
+
+// Fails on `field` if a vertex of the instance lands outside the world (kCoordinate) as
+// flatten() places it.
+void checkInWorld(const JsonField& field, const MeshInstance& instance, const Mesh& mesh);
 
 // Appends the instances one entry describes: one, or a lattice of copies with "repeat".
-void readInstance(const JsonField& field, const SceneNames& names, Scene& scene);
+void readInstance(const JsonField& field, SceneNames& names, Scene& scene);
 
 // One entry of "models": a glTF file's meshes, materials and node transforms, placed
 // (scene_models.cpp); its file is relative to directory.

@@ -9,8 +9,8 @@
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "raster/portable_math.h"
 #include "scenes/error_text.h"
+#include "scenes/instance_transform.h"
 #include "scenes/scene_file_parts.h"
 #include "scenes/scene_limits.h"
 
@@ -62,32 +62,6 @@ glm::mat4 readMatrix(const JsonField& field) {
     return matrix;
 }
 
-// A turn of `degrees` about world axis `axis` (0: x, 1: y, 2: z), counter-clockwise seen
-// from the axis' positive end; its sine and cosine from raster/portable_math.h, so that
-// transformed vertices are the same bits on every CPU.
-glm::mat4 rotationAbout(int axis, float degrees) {
-    const double radians = double(glm::radians(degrees));
-    const float c = float(portable::cos(radians)), s = float(portable::sin(radians));
-    const int u = (axis + 1) % 3, v = (axis + 2) % 3;   // the plane turned: u towards v
-    glm::mat4 rotation(1.0f);
-    rotation[u][u] = c, rotation[u][v] = s;
-    rotation[v][u] = -s, rotation[v][v] = c;
-    return rotation;
-}
-
-// translate * rotateZ * rotateY * rotateX * scale: scaled, then turned about x, y and z
-// (world axes, in that order), then moved.
-glm::mat4 readTranslateRotateScale(const JsonObject& object) {
-    glm::vec3 translate(0.0f), rotateDeg(0.0f), scale(1.0f);
-    if (const auto field = object.optional("translate")) translate = field->vec3(kCoordinate);
-    if (const auto field = object.optional("rotate")) rotateDeg = field->vec3();
-    if (const auto field = object.optional("scale"))
-        scale = field->raw().is_number() ? glm::vec3(field->number(kPositive)) : field->vec3(kPositive);
-    glm::mat4 m = glm::translate(glm::mat4(1.0f), translate);
-    m = m * rotationAbout(2, rotateDeg.z) * rotationAbout(1, rotateDeg.y) * rotationAbout(0, rotateDeg.x);
-    return glm::scale(m, scale);
-}
-
 // Copy (i, j, k) of the lattice is shifted by (i, j, k) * offset in world space; copies
 // are listed with i varying fastest.
 // The copies are counted before they are made (1024^3 of them would exhaust memory).
@@ -107,6 +81,17 @@ std::vector<glm::vec3> readRepeat(const JsonField& field, size_t instancesBefore
     return shifts;
 }
 
+}  // namespace
+
+InstancePose readPose(const JsonObject& object) {
+    InstancePose pose;
+    if (const auto field = object.optional("translate")) pose.translate = field->vec3(kCoordinate);
+    if (const auto field = object.optional("rotate")) pose.rotateDeg = field->vec3();
+    if (const auto field = object.optional("scale"))
+        pose.scale = field->raw().is_number() ? glm::vec3(field->number(kPositive)) : field->vec3(kPositive);
+    return pose;
+}
+
 // Every vertex must land within the world's bound (scene_limits.h, kMaxCoordinate) as
 // flatten() places it (worldPosition): a translation of 3e38 with a scale of 2e38 would
 // overflow, and coordinates near 2e18 abort Embree.
@@ -118,30 +103,29 @@ void checkInWorld(const JsonField& field, const MeshInstance& instance, const Me
     }
 }
 
-}  // namespace
-
 glm::mat4 readTransform(const JsonObject& object) {
-    if (!object.has("matrix")) return readTranslateRotateScale(object);
+    if (!object.has("matrix")) return translateRotateScale(readPose(object));
     if (object.has("translate") || object.has("rotate") || object.has("scale"))
         object["matrix"].fail("cannot be combined with translate, rotate or scale");
     return readMatrix(object["matrix"]);
 }
 
-void readInstance(const JsonField& field, const SceneNames& names, Scene& scene) {
+void readInstance(const JsonField& field, SceneNames& names, Scene& scene) {
     const JsonObject object = field.object(
         {"name", "mesh", "material", "translate", "rotate", "scale", "matrix", "fit", "repeat"});
     MeshInstance instance;
     instance.mesh = indexOfName(object["mesh"], names.meshes, "mesh");
     instance.material = indexOfName(object["material"], names.materials, "material");
     instance.name = object.has("name") ? object["name"].string() : names.meshes[instance.mesh];
-    const auto fit = object.optional("fit");
-    instance.worldFromObject =
-        readTransform(object) * (fit ? readFit(*fit, scene.meshes[instance.mesh]) : glm::mat4(1.0f));
+    const auto fitField = object.optional("fit");
+    const glm::mat4 fit = fitField ? readFit(*fitField, scene.meshes[instance.mesh]) : glm::mat4(1.0f);
+    instance.worldFromObject = readTransform(object) * fit;
     const auto repeat = object.optional("repeat");
     if (!repeat) {
         if (scene.instances.size() >= kMaxInstances)
             field.fail("a scene holds at most " + std::to_string(kMaxInstances) + " instances");
         checkInWorld(field, instance, scene.meshes[instance.mesh]);
+        names.instanceParts.push_back({uint32_t(scene.instances.size()), std::nullopt, fit});
         scene.instances.push_back(instance);
         return;
     }
@@ -151,6 +135,7 @@ void readInstance(const JsonField& field, const SceneNames& names, Scene& scene)
         shifted.name = instance.name + "[" + std::to_string(copy) + "]";
         shifted.worldFromObject = glm::translate(glm::mat4(1.0f), shifts[copy]) * instance.worldFromObject;
         checkInWorld(field, shifted, scene.meshes[instance.mesh]);
+        names.instanceParts.push_back({uint32_t(scene.instances.size()), shifts[copy], fit});
         scene.instances.push_back(shifted);
     }
 }

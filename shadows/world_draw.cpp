@@ -16,6 +16,8 @@ void addCutOutTriangle(const WorldGeometry& world, uint32_t t, WorldDraws::Batch
 
 // The one kind of data a prepared scene keeps for drawWorld.
 struct PreparedDraws {
+    // Its cut-out batches hold copies of the world's corners.
+    static constexpr DependsOn kDependsOn = DependsOn::WorldGeometry;
     WorldDraws draws;
 };
 

@@ -204,6 +204,8 @@ FlythroughResults runFlythrough(const FlythroughOptions& options) {
     for (int f = 0; f < results.frames; ++f) {
         prepared.setCamera(placed[f].camera);
         prepared.setLights(placed[f].lights);
+        // What derives from where they are (the references' BVH) is built again for the frame.
+        prepared.setInstanceTransforms(placed[f].sample.placements);
         withThreads(results.threads, [&] {
             previousReferences =
                 renderPathFrame(prepared, placed[f].sample, f, previousReferences, states, options, progress);

@@ -1,5 +1,5 @@
 // `shadowlab flythrough`: shadows in motion (docs/flythrough.md). A camera path (and
-// optionally the first light's) is sampled at a number of frames; at every frame each
+// optionally the first light's and some instances') is sampled at a number of frames; at every frame each
 // technique setting is timed as in `sweep` (warm-up frames, then the median of the measured
 // ones), scored against its exact reference of that frame, and its temporal stability
 // measured against the frame before (shading/temporal_stability.h): the change of V on the

@@ -12,6 +12,7 @@ namespace {
 // The map as a type of its own, so that PreparedScene::derived keeps it apart from other
 // environment maps a family might derive.
 struct SceneEnvironmentMap {
+    static constexpr DependsOn kDependsOn = DependsOn::FixedContent;
     EnvironmentMap map;
 };
 
@@ -46,9 +47,11 @@ namespace {
 // Types of their own, so that PreparedScene::derived keeps them apart from any other
 // family's tables or pyramid.
 struct SceneLocalIllumination {
+    static constexpr DependsOn kDependsOn = DependsOn::FixedContent;   // the map's and the materials'
     LocalIllumination tables;
 };
 struct ScenePyramid {
+    static constexpr DependsOn kDependsOn = DependsOn::FixedContent;
     EnvironmentPyramid pyramid;
 };
 

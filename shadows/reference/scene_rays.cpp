@@ -10,6 +10,7 @@ namespace {
 
 // What the scene keeps: the transmission the BVH's filter reads in place, and the BVH.
 struct SceneRays {
+    static constexpr DependsOn kDependsOn = DependsOn::WorldGeometry;
     std::unique_ptr<const CasterTransmission> transmission;
     std::unique_ptr<const ReferenceVisibility> rays;
 };

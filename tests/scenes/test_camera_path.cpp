@@ -26,9 +26,9 @@ std::string sceneWithPath(const std::string& flythrough, bool sun = false) {
 
 CameraPath threeKeyframes() {
     CameraPath path;
-    path.keyframes = {{0.0, {0, 4, 9}, {0, 0, 0}, glm::vec3(0, 5, 0)},
-                      {1.0, {4, 4, 5}, {0, 1, 0}, glm::vec3(2, 5, 0)},
-                      {3.0, {8, 2, 1}, {1, 1, 1}, glm::vec3(2, 5, 4)}};
+    path.keyframes = {{0.0, {0, 4, 9}, {0, 0, 0}, glm::vec3(0, 5, 0), {}},
+                      {1.0, {4, 4, 5}, {0, 1, 0}, glm::vec3(2, 5, 0), {}},
+                      {3.0, {8, 2, 1}, {1, 1, 1}, glm::vec3(2, 5, 4), {}}};
     return path;
 }
 
@@ -55,7 +55,7 @@ TEST_CASE("a path's frames are evenly spaced in time, exact at keyframes and lin
 
 TEST_CASE("a directional light's path is interpolated, then normalised, and placed on the light") {
     CameraPath path;
-    path.keyframes = {{0.0, {0, 4, 9}, {0, 0, 0}, glm::vec3(2, 0, 0)}, {1.0, {0, 4, 9}, {0, 0, 0}, glm::vec3(0, 2, 0)}};
+    path.keyframes = {{0.0, {0, 4, 9}, {0, 0, 0}, glm::vec3(2, 0, 0), {}}, {1.0, {0, 4, 9}, {0, 0, 0}, glm::vec3(0, 2, 0), {}}};
     const PathSample mid = samplePath(path, 1, 3);
     CHECK(mid.light == glm::vec3(1, 1, 0));
     Camera camera;
@@ -67,7 +67,7 @@ TEST_CASE("a directional light's path is interpolated, then normalised, and plac
     CHECK(camera.eye == glm::vec3(0, 4, 9));
     // The eye passing through the target between two keyframes is caught at that frame.
     // Frame 1 of 3 has its eye and its target both at (0, 0, 1).
-    path.keyframes = {{0.0, {0, 0, 2}, {0, 0, 3}, {}}, {1.0, {0, 0, 0}, {0, 0, -1}, {}}};
+    path.keyframes = {{0.0, {0, 0, 2}, {0, 0, 3}, {}, {}}, {1.0, {0, 0, 0}, {0, 0, -1}, {}, {}}};
     CHECK_THROWS_WITH_AS(placeOnPath(samplePath(path, 1, 3), 1, camera, lights),
                          doctest::Contains("frame 1 of the path"), std::invalid_argument);
 }

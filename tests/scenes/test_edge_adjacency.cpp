@@ -58,23 +58,38 @@ TEST_CASE("prepared scene: the edge adjacency is built once, on first use, and r
     CHECK(prepared.edgeAdjacency()[0].closed);
 }
 
+namespace {
+
+// Types for PreparedScene::derived (at namespace scope: a local class has no static members).
+struct DerivedCount {
+    static constexpr DependsOn kDependsOn = DependsOn::FixedContent;
+    int value;
+};
+struct DerivedDoubled {
+    static constexpr DependsOn kDependsOn = DependsOn::FixedContent;
+    int value;
+};
+struct DerivedFailing {
+    static constexpr DependsOn kDependsOn = DependsOn::FixedContent;
+    int value;
+};
+
+}  // namespace
+
 TEST_CASE("prepared scene: derived data is built once per type, reported once, rebuilt after a throw, and may derive another type") {
     Scene scene;
     scene.meshes = {makeBox(glm::vec3(0.0f), glm::vec3(1.0f))};
     scene.instances = {{"box", 0, 0, glm::mat4(1.0f)}};
     const PreparedScene prepared(scene);
-    struct Count { int value; };
-    struct Doubled { int value; };
     int builds = 0;
     std::optional<double> ms;
-    CHECK(prepared.derived<Count>([&] { return Count{++builds}; }, &ms).value == 1);
+    CHECK(prepared.derived<DerivedCount>([&] { return DerivedCount{++builds}; }, &ms).value == 1);
     CHECK(ms.has_value());
-    CHECK(prepared.derived<Count>([&] { return Count{++builds}; }, &ms).value == 1);   // kept
+    CHECK(prepared.derived<DerivedCount>([&] { return DerivedCount{++builds}; }, &ms).value == 1);   // kept
     CHECK_FALSE(ms.has_value());
     CHECK(builds == 1);
     // A build that derives another type (as the environment's tables derive its map).
-    CHECK(prepared.derived<Doubled>([&] { return Doubled{2 * prepared.derived<Count>([] { return Count{-1}; }).value}; }).value == 2);
-    struct Failing { int value; };
-    CHECK_THROWS_AS(prepared.derived<Failing>([]() -> Failing { throw std::runtime_error("no"); }), std::runtime_error);
-    CHECK(prepared.derived<Failing>([] { return Failing{7}; }).value == 7);
+    CHECK(prepared.derived<DerivedDoubled>([&] { return DerivedDoubled{2 * prepared.derived<DerivedCount>([] { return DerivedCount{-1}; }).value}; }).value == 2);
+    CHECK_THROWS_AS(prepared.derived<DerivedFailing>([]() -> DerivedFailing { throw std::runtime_error("no"); }), std::runtime_error);
+    CHECK(prepared.derived<DerivedFailing>([] { return DerivedFailing{7}; }).value == 7);
 }
