@@ -107,7 +107,7 @@ ShadowOutputs runContactShadows(const ShadowInputs& in) {
     StageTimer timer;
     // 2. The march.
     const ScreenMarch march(in.gbuffer, in.camera(), light, settings.march);
-    const ScreenMarch::Mask mask = march.mask();
+    const ScreenMarch::Mask mask = march.mask(in.simd);
     timer.lap("march");
     // 3. Shadowed where either pass found an occluder.
     addStats(out, mask, out.visibility);
