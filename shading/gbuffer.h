@@ -17,7 +17,7 @@ struct GBuffer {
     int width = 0, height = 0;
     std::vector<uint8_t> hit;            // 1 where a surface covers the pixel centre
     std::vector<glm::vec3> position;     // world space, 0 where hit = 0
-    std::vector<glm::vec3> normal;       // world-space geometric normal facing the camera
+    std::vector<glm::vec3> normal;       // world-space geometric normal facing the camera, 0 where hit = 0
     std::vector<glm::vec3> shadingNormal;  // smooth normal for shading, on the side of `normal`
     std::vector<uint32_t> material;      // index into Scene::materials
     std::vector<uint32_t> triangle;      // index into WorldGeometry::triangles, or kNoTriangle

@@ -15,6 +15,9 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/maps/shadow_map_techniques.h"
@@ -77,17 +80,33 @@ void writeDebug(const ShadowInputs& in, const ContactShadowSettings& settings, c
     writeMarchPlot(in.debugDir, g, mask.visibility, p.x, p.y, samples, settings.march.thicknessM);
 }
 
-// Figures in pixel order (one thread): the same for any thread count.
-void addStats(ShadowOutputs& out, const ScreenMarch::Mask& mask, const std::vector<float>& mapVisibility) {
+// 3. Shadowed where either pass found an occluder, V = min(V_map, V_march), with the march's
+// figures (restored: where the map saw light), rows in parallel. The figures are counts, the
+// same in any order, so the same for any thread count.
+struct MarchCounts {
     size_t occluded = 0, restored = 0, leftScreen = 0;
-    for (size_t k = 0; k < mask.visibility.size(); ++k) {
-        occluded += mask.end[k] == uint8_t(MarchEnd::Occluded);
-        restored += mask.end[k] == uint8_t(MarchEnd::Occluded) && mapVisibility[k] > 0.0f;
-        leftScreen += mask.end[k] == uint8_t(MarchEnd::LeftScreen);
-    }
-    out.stats.push_back({"march_occluded_pixels", double(occluded)});
-    out.stats.push_back({"restored_pixels", double(restored)});
-    out.stats.push_back({"march_left_screen_pixels", double(leftScreen)});
+};
+
+MarchCounts combine(const GBuffer& g, const ScreenMarch::Mask& mask, std::vector<float>& visibility) {
+    const auto rows = [&](const tbb::blocked_range<int>& range, MarchCounts counts) {
+        for (size_t k = g.index(0, range.begin()); k < g.index(0, range.end()); ++k) {
+            const bool occluded = mask.end[k] == uint8_t(MarchEnd::Occluded);
+            counts.occluded += occluded, counts.restored += occluded && visibility[k] > 0.0f;
+            counts.leftScreen += mask.end[k] == uint8_t(MarchEnd::LeftScreen);
+            visibility[k] = std::min(visibility[k], mask.visibility[k]);
+        }
+        return counts;
+    };
+    const auto sum = [](const MarchCounts& a, const MarchCounts& b) {
+        return MarchCounts{a.occluded + b.occluded, a.restored + b.restored, a.leftScreen + b.leftScreen};
+    };
+    return tbb::parallel_reduce(tbb::blocked_range<int>(0, g.height), MarchCounts{}, rows, sum);
+}
+
+void addStats(ShadowOutputs& out, const MarchCounts& counts) {
+    out.stats.push_back({"march_occluded_pixels", double(counts.occluded)});
+    out.stats.push_back({"restored_pixels", double(counts.restored)});
+    out.stats.push_back({"march_left_screen_pixels", double(counts.leftScreen)});
 }
 
 // Without the map: V = 1 wherever the light reaches the surface, for the march to shadow.
@@ -107,14 +126,12 @@ ShadowOutputs runContactShadows(const ShadowInputs& in) {
     StageTimer timer;
     // 2. The march.
     const ScreenMarch march(in.gbuffer, in.camera(), light, settings.march);
-    const ScreenMarch::Mask mask = march.mask();
+    const ScreenMarch::Mask mask = march.mask(in.simd);
     timer.lap("march");
-    // 3. Shadowed where either pass found an occluder.
-    addStats(out, mask, out.visibility);
-    for (size_t k = 0; k < out.visibility.size(); ++k) {
-        out.visibility[k] = std::min(out.visibility[k], mask.visibility[k]);
-    }
+    // 3. V = min(V_map, V_march), and the march's figures.
+    const MarchCounts counts = combine(in.gbuffer, mask, out.visibility);
     timer.lap("combine");
+    addStats(out, counts);
     timer.appendTo(out.stats);
     writeDebug(in, settings, march, mask);
     return out;

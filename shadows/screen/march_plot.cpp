@@ -83,12 +83,7 @@ void writePath(const std::filesystem::path& directory, const GBuffer& g, const s
 }  // namespace
 
 std::vector<MarchSample> marchSamples(const ScreenMarch& march, const GBuffer& g, int i, int j) {
-    std::vector<MarchSample> samples;
-    march.march(g.index(i, j), [&](const MarchSample& s) {
-        samples.push_back(s);
-        return false;
-    });
-    return samples;
+    return march.samples(g.index(i, j));
 }
 
 void writeMarchPlot(const std::filesystem::path& directory, const GBuffer& g, const std::vector<float>& mask, int i,

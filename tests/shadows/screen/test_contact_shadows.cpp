@@ -1,8 +1,8 @@
 // contact-shadows (RTR 7.10) against the exact hard reference: on box-contact it restores
 // the contact shadow that the shadow map's bias loses; the buffer's depth under a sample is
 // the ground plane's, analytically; a plane never shadows itself; its known failure (a
-// caster off screen casts no march shadow) is asserted; and its bytes are the same for
-// every thread count and SIMD level.
+// caster off screen casts no march shadow) is asserted; its bytes, and the march kernel's,
+// are the same for every thread count and SIMD level; and the plotted march is the mask's.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -16,6 +16,7 @@
 
 #include "frame/registry.h"
 #include "raster/thread_count.h"
+#include "shading/lights.h"
 #include "shadows/screen/march_plot.h"
 #include "shadows/screen/screen_march.h"
 #include "tests/scratch_directory.h"
@@ -117,7 +118,7 @@ TEST_CASE("contact-shadows: the march mask alone, and a plane never shadows itse
     const HardScene s(groundOnlyView(160, 100));
     for (int steps : {1, 16, 200}) {
         const ScreenMarch march(s.gbuffer, s.scene.camera, s.light(), {0.5f, steps, 0.05f});
-        const ScreenMarch::Mask mask = march.mask();
+        const ScreenMarch::Mask mask = march.mask(raster::bestSimdLevel());
         CHECK(std::count(mask.visibility.begin(), mask.visibility.end(), 0.0f) == 0);
     }
 }
@@ -155,6 +156,62 @@ TEST_CASE("contact-shadows: the same bytes for 1 and 2 threads and every SIMD le
     const std::vector<float> twin = withThreads(1, [&] { return run(raster::SimdLevel::Scalar); });
     CHECK(std::count(twin.begin(), twin.end(), 0.0f) > 1000);
     test::checkSameBytesEverywhere(twin, run);
+}
+
+namespace {
+
+// The march mask as one V buffer for checkSameBytesEverywhere: V, then each pixel's end.
+std::vector<float> maskBytes(const ScreenMarch::Mask& mask) {
+    std::vector<float> out = mask.visibility;
+    for (uint8_t end : mask.end) out.push_back(float(end));
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("contact-shadows: the march kernel gives the scalar twin's mask and ends at every SIMD level and thread count") {
+    // 317 pixels a row: no multiple of any vector's width, so every row has a tail too.
+    Scene scene = loadScene(hardCase("box-contact"));
+    scene.camera.width = 317, scene.camera.height = 190;
+    const HardScene s(std::move(scene));
+    for (const MarchSettings& settings : {MarchSettings{}, MarchSettings{0.6f, 40, 0.2f}}) {
+        const ScreenMarch march(s.gbuffer, s.scene.camera, s.light(), settings);
+        const auto run = [&](raster::SimdLevel level) { return maskBytes(march.mask(level)); };
+        const ScreenMarch::Mask twin = withThreads(1, [&] { return march.mask(raster::SimdLevel::Scalar); });
+        size_t ends[3] = {0, 0, 0};
+        for (uint8_t end : twin.end) ++ends[end];
+        INFO(ends[0] << " lit, " << ends[1] << " occluded, " << ends[2] << " left the screen");
+        CHECK(ends[size_t(MarchEnd::Occluded)] > 500);
+        CHECK(ends[size_t(MarchEnd::LeftScreen)] > 0);
+        test::checkSameBytesEverywhere(maskBytes(twin), run);
+    }
+}
+
+TEST_CASE("contact-shadows: the plotted march is the mask's, step by step") {
+    // The mask ends at a pixel's first occluded sample, or where the ray leaves the screen;
+    // the plot's samples (the scalar kernel's trace) must say the same at every pixel.
+    Scene scene = loadScene(hardCase("box-contact"));
+    scene.camera.width = 160, scene.camera.height = 100;
+    const HardScene s(std::move(scene));
+    const MarchSettings settings{0.4f, 20, 0.1f};
+    const ScreenMarch march(s.gbuffer, s.scene.camera, s.light(), settings);
+    const ScreenMarch::Mask mask = march.mask(raster::bestSimdLevel());
+    const LightReach reaches(s.light());
+    size_t occluded = 0, left = 0, mismatches = 0;
+    for (size_t k = 0; k < s.gbuffer.pixelCount(); ++k) {
+        if (!s.gbuffer.hit[k] || !reaches(s.gbuffer.position[k], s.gbuffer.normal[k])) continue;
+        const std::vector<MarchSample> samples = march.samples(k);
+        const auto first = std::find_if(samples.begin(), samples.end(), [](const MarchSample& x) { return x.occluded; });
+        const MarchEnd expected = first != samples.end()          ? MarchEnd::Occluded
+                                  : samples.size() < size_t(settings.steps) ? MarchEnd::LeftScreen
+                                                                          : MarchEnd::Lit;
+        mismatches += mask.end[k] != uint8_t(expected);
+        occluded += expected == MarchEnd::Occluded, left += expected == MarchEnd::LeftScreen;
+    }
+    INFO(occluded << " occluded, " << left << " left the screen");
+    CHECK(occluded > 100);
+    CHECK(left > 0);
+    CHECK(mismatches == 0);
 }
 
 TEST_CASE("contact-shadows: the debug buffers hold the mask and the chosen pixel's march") {
