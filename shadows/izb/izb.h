@@ -168,8 +168,9 @@ struct Buckets {
     uint32_t length(size_t bucket) const { return first[bucket + 1] - first[bucket]; }
 };
 // Counting sort: count per key, exclusive prefix sum, scatter in item order, so each bucket
-// keeps its items in their original order. Entries are value[k], or the item index k
-// itself when `value` is empty.
+// keeps its items in their original order, for any number of threads (lists.cpp sorts by
+// groups of keys, then each group, both in parallel). Entries are value[k], or the item
+// index k itself when `value` is empty.
 Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const std::vector<uint32_t>& value = {});
 
 // A texel's bucket lists its receivers (indices into Receivers), in pixel order.
