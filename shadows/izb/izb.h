@@ -86,8 +86,9 @@ struct Receiver {
     uint32_t pixel;                     // index into the G-buffer
     double tFar;                        // the reference's end of the segment
 };
-// The receivers in pixel order.
-using Receivers = std::vector<Receiver>;
+// The receivers in pixel order, in uninitialised storage (each is written once, and a frame
+// has up to a million of them).
+using Receivers = raster::BufferStorage<Receiver>;
 
 // Fills `visibility` (one float per pixel): 0 where hit = 0, where the light is behind the
 // surface (dot(N, L - P) <= 0) or outside a spot cone; 1 elsewhere, and returns the points
@@ -142,8 +143,8 @@ std::vector<LightView> fitViews(const Light& pointOrDirectional, const GBuffer& 
 // [0, 1]^2, so that its texel at any resolution costs two products (Johnson et al. 2005
 // store each sample's light-space position once for the same reason).
 struct ReceiverPlaces {
-    std::vector<uint8_t> view;
-    std::vector<glm::dvec2> unitUV;
+    raster::BufferStorage<uint8_t> view;   // uninitialised storage, as Receivers
+    raster::BufferStorage<glm::dvec2> unitUV;
     size_t size() const { return view.size(); }
 };
 ReceiverPlaces placeReceivers(const std::vector<LightView>& views, const Receivers& receivers);

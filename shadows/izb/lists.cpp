@@ -57,8 +57,8 @@ void groupSlots(const std::vector<uint32_t>& key, const Chunks& chunks, size_t g
 
 // One group's items, already in item order, sorted by key into the buckets: count, prefix
 // sum from the group's start, scatter with first[] as each bucket's next free slot.
-void sortGroup(size_t g, size_t keyCount, const std::vector<uint32_t>& groupedKey, const std::vector<uint32_t>& groupedValue,
-               uint32_t begin, uint32_t end, Buckets& b) {
+void sortGroup(size_t g, size_t keyCount, const raster::BufferStorage<uint32_t>& groupedKey,
+               const raster::BufferStorage<uint32_t>& groupedValue, uint32_t begin, uint32_t end, Buckets& b) {
     const size_t low = g * kKeysPerGroup, high = std::min(keyCount, low + kKeysPerGroup);
     uint32_t next[kKeysPerGroup] = {};
     for (uint32_t p = begin; p < end; ++p) ++next[groupedKey[p] - low];
@@ -74,7 +74,7 @@ Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const st
     const size_t groups = (keyCount + kKeysPerGroup - 1) / kKeysPerGroup;
     std::vector<uint32_t> slot, groupFirst;
     groupSlots(key, chunks, groups, slot, groupFirst);
-    std::vector<uint32_t> groupedKey(key.size()), groupedValue(key.size());
+    raster::BufferStorage<uint32_t> groupedKey(key.size()), groupedValue(key.size());   // every slot written once
     tbb::parallel_for(size_t(0), chunks.count, [&](size_t c) {
         for (size_t item = chunks.begin(c); item < chunks.end(c); ++item) {
             const uint32_t p = slot[c * groups + key[item] / kKeysPerGroup]++;
