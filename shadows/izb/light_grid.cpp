@@ -155,8 +155,8 @@ LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sce
     return grid;
 }
 
-std::vector<uint32_t> receiverTexels(int resolution, const ReceiverPlaces& places) {
-    std::vector<uint32_t> texel(places.size());
+raster::BufferStorage<uint32_t> receiverTexels(int resolution, const ReceiverPlaces& places) {
+    raster::BufferStorage<uint32_t> texel(places.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, places.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t k = r.begin(); k != r.end(); ++k) texel[k] = texelAt(places.view[k], places.unitUV[k], resolution);
     });

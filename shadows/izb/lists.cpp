@@ -40,7 +40,7 @@ struct Chunks {
 // slot[c * groups + g]: where chunk c's first item of group g goes in group order, so that
 // the groups follow one another and, inside one, the chunks do (an exclusive prefix sum
 // over (group, chunk)); groupFirst[g]: where group g begins, groupFirst[groups] = items.
-void groupSlots(const std::vector<uint32_t>& key, const Chunks& chunks, size_t groups, std::vector<uint32_t>& slot,
+void groupSlots(std::span<const uint32_t> key, const Chunks& chunks, size_t groups, std::vector<uint32_t>& slot,
                 std::vector<uint32_t>& groupFirst) {
     slot.assign(chunks.count * groups, 0);
     tbb::parallel_for(size_t(0), chunks.count, [&](size_t c) {
@@ -69,7 +69,7 @@ void sortGroup(size_t g, size_t keyCount, const raster::BufferStorage<uint32_t>&
 
 }  // namespace
 
-Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const std::vector<uint32_t>& value) {
+Buckets countingSort(std::span<const uint32_t> key, size_t keyCount, std::span<const uint32_t> value) {
     const Chunks chunks{key.size(), (key.size() + kItemsPerChunk - 1) / kItemsPerChunk};
     const size_t groups = (keyCount + kKeysPerGroup - 1) / kKeysPerGroup;
     std::vector<uint32_t> slot, groupFirst;
