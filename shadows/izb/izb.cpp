@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <optional>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/izb/izb.h"
@@ -31,13 +34,28 @@ void forEachTexel(const izb::LightGrid& grid, Visit visit) {
 
 // Length figures over the texels' lists: longest, mean and 99th percentile (nearest rank) of
 // the non-empty ones, and how many are empty.
+// How many texels hold each list length, counted over ranges of texels in parallel and
+// summed (integers: the same for any schedule).
+using Histogram = std::vector<uint64_t>;
+Histogram lengthHistogram(const izb::TexelLists& lists, size_t texels) {
+    const auto count = [&](const tbb::blocked_range<size_t>& range, Histogram histogram) {
+        for (size_t t = range.begin(); t != range.end(); ++t) {
+            const uint32_t n = lists.length(t);
+            if (histogram.size() <= n) histogram.resize(n + 1, 0);
+            ++histogram[n];
+        }
+        return histogram;
+    };
+    const auto add = [](Histogram a, const Histogram& b) {
+        if (a.size() < b.size()) a.resize(b.size(), 0);
+        for (size_t n = 0; n < b.size(); ++n) a[n] += b[n];
+        return a;
+    };
+    return tbb::parallel_reduce(tbb::blocked_range<size_t>(0, texels, 1 << 16), Histogram(1, 0), count, add);
+}
+
 void addListStats(const izb::LightGrid& grid, const izb::TexelLists& lists, std::vector<TechniqueStat>& stats) {
-    std::vector<uint64_t> histogram(1, 0);
-    for (size_t t = 0; t < grid.texelCount(); ++t) {
-        const uint32_t n = lists.length(t);
-        if (histogram.size() <= n) histogram.resize(n + 1, 0);
-        ++histogram[n];
-    }
+    Histogram histogram = lengthHistogram(lists, grid.texelCount());
     // The numbers past the resolution in the edge tiles are no texels (and always empty).
     const uint64_t texels = uint64_t(grid.views.size()) * uint64_t(grid.resolution) * uint64_t(grid.resolution);
     histogram[0] -= grid.texelCount() - texels;

@@ -38,6 +38,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -86,8 +87,9 @@ struct Receiver {
     uint32_t pixel;                     // index into the G-buffer
     double tFar;                        // the reference's end of the segment
 };
-// The receivers in pixel order.
-using Receivers = std::vector<Receiver>;
+// The receivers in pixel order, in uninitialised storage (each is written once, and a frame
+// has up to a million of them).
+using Receivers = raster::BufferStorage<Receiver>;
 
 // Fills `visibility` (one float per pixel): 0 where hit = 0, where the light is behind the
 // surface (dot(N, L - P) <= 0) or outside a spot cone; 1 elsewhere, and returns the points
@@ -142,8 +144,8 @@ std::vector<LightView> fitViews(const Light& pointOrDirectional, const GBuffer& 
 // [0, 1]^2, so that its texel at any resolution costs two products (Johnson et al. 2005
 // store each sample's light-space position once for the same reason).
 struct ReceiverPlaces {
-    std::vector<uint8_t> view;
-    std::vector<glm::dvec2> unitUV;
+    raster::BufferStorage<uint8_t> view;   // uninitialised storage, as Receivers
+    raster::BufferStorage<glm::dvec2> unitUV;
     size_t size() const { return view.size(); }
 };
 ReceiverPlaces placeReceivers(const std::vector<LightView>& views, const Receivers& receivers);
@@ -156,25 +158,27 @@ LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sce
 
 // The texel whose closed square holds a placed receiver; a point on the far edge
 // u = resolution belongs to the last texel. Receivers always lie inside a view.
-std::vector<uint32_t> receiverTexels(int resolution, const ReceiverPlaces& places);
+raster::BufferStorage<uint32_t> receiverTexels(int resolution, const ReceiverPlaces& places);
 // The same for one point, placed on the spot.
 uint32_t texelOf(const LightGrid& grid, const glm::dvec3& point);
 
 // ---- 3. Lists ------------------------------------------------------------------------------
 // Items grouped by a key: bucket b holds entry[first[b]] .. entry[first[b + 1] - 1].
 struct Buckets {
-    std::vector<uint32_t> first;    // keyCount + 1 offsets (exclusive prefix sum of the counts)
-    std::vector<uint32_t> entry;
+    // Uninitialised storage, as Receivers: the sort writes every element once.
+    raster::BufferStorage<uint32_t> first;    // keyCount + 1 offsets (exclusive prefix sum of the counts)
+    raster::BufferStorage<uint32_t> entry;
     uint32_t length(size_t bucket) const { return first[bucket + 1] - first[bucket]; }
 };
 // Counting sort: count per key, exclusive prefix sum, scatter in item order, so each bucket
-// keeps its items in their original order. Entries are value[k], or the item index k
-// itself when `value` is empty.
-Buckets countingSort(const std::vector<uint32_t>& key, size_t keyCount, const std::vector<uint32_t>& value = {});
+// keeps its items in their original order, for any number of threads (lists.cpp sorts by
+// groups of keys, then each group, both in parallel). Entries are value[k], or the item
+// index k itself when `value` is empty.
+Buckets countingSort(std::span<const uint32_t> key, size_t keyCount, std::span<const uint32_t> value = {});
 
 // A texel's bucket lists its receivers (indices into Receivers), in pixel order.
 using TexelLists = Buckets;
-inline TexelLists buildTexelLists(const std::vector<uint32_t>& texelOfReceiver, size_t texelCount) {
+inline TexelLists buildTexelLists(std::span<const uint32_t> texelOfReceiver, size_t texelCount) {
     return countingSort(texelOfReceiver, texelCount);
 }
 

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <functional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -62,22 +61,38 @@ uint32_t texelAt(int view, const glm::dvec2& unitUV, int resolution) {
     return uint32_t(texelIndex(resolution, view, cell(u, resolution), cell(v, resolution)));
 }
 
-// Mean length of the non-empty lists at a resolution: receivers over occupied texels. The
-// receivers mark their texels in parallel (relaxed atomic stores of the same 1, so the
-// marks do not depend on the schedule), then the marks are counted.
-double meanListLength(size_t viewCount, int resolution, const ReceiverPlaces& places) {
-    const size_t side = size_t(tilesPerSide(resolution)) * kTileSize;
-    std::vector<uint8_t> occupied(viewCount * side * side, 0);
+// The occupied texels (those holding a receiver) at resolutions R and 2R, from one pass over
+// the receivers: they mark their texels at 2R (relaxed atomic stores of the same 1, so the
+// marks do not depend on the schedule), and a texel at R is occupied where one of its 2 x 2
+// texels at 2R is. The cells nest exactly: u * 2R is twice u * R, rounded alike, so
+// cell(u * 2R) / 2 = cell(u * R), and the count at R is the one a pass at R would give.
+struct Occupancy {
+    size_t coarse = 0, fine = 0;
+};
+Occupancy occupiedTexels(size_t viewCount, int resolution, const ReceiverPlaces& places) {
+    const int fine = 2 * resolution;
+    const size_t side = size_t(fine);
+    std::vector<uint8_t> marked(viewCount * side * side, 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, places.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t k = r.begin(); k != r.end(); ++k) {
-            std::atomic_ref<uint8_t>(occupied[texelAt(places.view[k], places.unitUV[k], resolution)]).store(1, std::memory_order_relaxed);
+            const size_t i = size_t(cell(places.unitUV[k].x * fine, fine)), j = size_t(cell(places.unitUV[k].y * fine, fine));
+            std::atomic_ref<uint8_t>(marked[(places.view[k] * side + j) * side + i]).store(1, std::memory_order_relaxed);
         }
     });
-    const size_t count = tbb::parallel_reduce(
-        tbb::blocked_range<size_t>(0, occupied.size(), 1 << 16), size_t(0),
-        [&](const tbb::blocked_range<size_t>& r, size_t n) { return n + size_t(std::count(occupied.begin() + r.begin(), occupied.begin() + r.end(), 1)); },
-        std::plus<>());
-    return double(places.size()) / double(std::max<size_t>(count, 1));
+    // Coarse row J of every view stacked is fine rows 2J and 2J + 1.
+    const auto countRows = [&](const tbb::blocked_range<size_t>& rows, Occupancy n) {
+        for (size_t J = rows.begin(); J != rows.end(); ++J) {
+            const uint8_t* top = &marked[2 * J * side];
+            const uint8_t* bottom = top + side;
+            for (size_t I = 0; I < size_t(resolution); ++I) {
+                const int four = top[2 * I] + top[2 * I + 1] + bottom[2 * I] + bottom[2 * I + 1];
+                n.coarse += four != 0, n.fine += size_t(four);
+            }
+        }
+        return n;
+    };
+    const auto add = [](Occupancy a, const Occupancy& b) { return Occupancy{a.coarse + b.coarse, a.fine + b.fine}; };
+    return tbb::parallel_reduce(tbb::blocked_range<size_t>(0, viewCount * size_t(resolution), 64), Occupancy{}, countRows, add);
 }
 
 }  // namespace
@@ -90,17 +105,29 @@ std::vector<LightView> fitViews(const Light& light, const GBuffer& gbuffer, cons
     return fitLightViews(light, gbuffer, world, options).views;
 }
 
-// Refines R twice by R' = R sqrt(mean(R) / target): if the occupied area stayed the same,
-// the mean non-empty list length would scale as 1 / R^2 and hit the target exactly. It
-// shrinks as R grows (the receivers' footprint has holes at fine scales), hence the second
-// step. docs/hard-shadows.md gives the lengths it reaches.
+// Steps R' = R sqrt(mean(R) / target): if the occupied area stayed the same, the mean
+// non-empty list length would scale as 1 / R^2 and R' would hit the target at once. It
+// shrinks as R grows (the receivers' footprint has holes at fine scales), hence more steps.
+// They start from R0, where the receivers would meet the target if they filled their views,
+// and the occupied texels are counted only at R0 and 2R0 (one pass, occupiedTexels); in
+// between, the occupied fraction of the texels is taken as linear in R, and beyond as at the
+// nearer end. Only sqrt and the four operations, so every CPU finds the same R.
+// docs/hard-shadows.md gives the lengths it reaches.
 int chooseResolution(size_t viewCount, const ReceiverPlaces& places, double target) {
-    int resolution = 256;
-    for (int step = 0; step < 2; ++step) {
-        const double scale = std::sqrt(meanListLength(viewCount, resolution, places) / target);
-        resolution = std::clamp(int(std::lround(resolution * scale)), kMinMapResolution, kMaxMapResolution);
+    const auto clamped = [](double r) { return std::clamp(int(std::lround(r)), kMinMapResolution, kMaxMapResolution); };
+    const double receivers = double(places.size()), views = double(viewCount);
+    const int start = std::min(clamped(std::sqrt(receivers / (target * views))), kMaxMapResolution / 2);
+    const Occupancy occupied = occupiedTexels(viewCount, start, places);
+    const double r0 = start;
+    const double f0 = double(std::max<size_t>(occupied.coarse, 1)) / (views * r0 * r0);
+    const double f1 = double(std::max<size_t>(occupied.fine, 1)) / (views * 4.0 * r0 * r0);
+    const auto fraction = [&](double r) { return f0 + (f1 - f0) * std::clamp((r - r0) / r0, 0.0, 1.0); };
+    double resolution = r0;
+    for (int step = 0; step < 3; ++step) {
+        const double mean = receivers / (fraction(resolution) * views * resolution * resolution);
+        resolution *= std::sqrt(mean / target);
     }
-    return resolution;
+    return clamped(resolution);
 }
 
 ReceiverPlaces placeReceivers(const std::vector<LightView>& views, const Receivers& receivers) {
@@ -128,8 +155,8 @@ LightGrid makeLightGrid(std::vector<LightView> views, int resolution, double sce
     return grid;
 }
 
-std::vector<uint32_t> receiverTexels(int resolution, const ReceiverPlaces& places) {
-    std::vector<uint32_t> texel(places.size());
+raster::BufferStorage<uint32_t> receiverTexels(int resolution, const ReceiverPlaces& places) {
+    raster::BufferStorage<uint32_t> texel(places.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, places.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t k = r.begin(); k != r.end(); ++k) texel[k] = texelAt(places.view[k], places.unitUV[k], resolution);
     });
