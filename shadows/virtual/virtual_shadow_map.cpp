@@ -64,6 +64,7 @@ struct VirtualMapState {
     glm::dvec3 towardsLight{0.0};
     DepthRange range;
     std::vector<Aabb> casterBoxes;   // the last frame's, per instance
+    uint64_t geometryVersion = 0;    // the prepared scene's when they were taken
 };
 
 // The state ready for this frame: made on the first, reset when the light turned or the
@@ -124,7 +125,12 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     // 1. The light's frame; what moved.
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(in.light.direction));
     const LightFrame frame = LightFrame::towards(towardsLight);
-    const std::vector<Aabb> boxes = instanceBounds(in.casters().scene(), in.casterWorld());
+    // The casters' boxes: the last frame's unless an instance moved since (the prepared
+    // scene's geometry version), so that a steady frame makes no pass over the vertices.
+    const bool moved = !state.table || state.geometryVersion != in.prepared.geometryVersion();
+    const std::vector<Aabb> boxes =
+        moved ? instanceBounds(in.casters().scene(), in.casterWorld()) : state.casterBoxes;
+    state.geometryVersion = in.prepared.geometryVersion();
     const int invalidated = prepareState(state, s, towardsLight, frame, boxes);
     PageTable& table = *state.table;
     timer.lap("invalidation");

@@ -6,6 +6,8 @@
 // renders them all, and a short pool overflows into counted, lit pixels instead of failing.
 #include <doctest/doctest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "frame/registry.h"
 #include "frame/render.h"
 #include "tests/shadows/shadow_test_support.h"
@@ -98,6 +100,31 @@ TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what 
     const Frame turned = renderFrame(prepared, vsm, kept);
     CHECK(statOf(turned, "rendered_pages") == statOf(turned, "requested_pages"));
     sameAsAlone(turned);
+}
+
+TEST_CASE("virtual-shadow-map: a moving caster re-renders the pages under it, and the kept ones stay right") {
+    PreparedScene prepared(sunScene());
+    const Technique& vsm = findTechnique("virtual-shadow-map");
+    FrameHistory history;
+    FrameSettings kept;
+    kept.params = smallMap();
+    kept.history = &history;
+    FrameSettings alone;
+    alone.params = smallMap();
+    const Frame first = renderFrame(prepared, vsm, kept);
+    // The sphere (instance 1) slides 0.4 m along x.
+    const uint32_t sphere = 1;
+    const glm::mat4 moved = glm::translate(glm::mat4(1.0f), glm::vec3(0.4f, 0.0f, 0.0f)) *
+                            prepared.scene().instances[sphere].worldFromObject;
+    const InstancePlacement placement{sphere, moved};
+    REQUIRE(prepared.setInstanceTransforms({&placement, 1}) == 1);
+    const Frame after = renderFrame(prepared, vsm, kept);
+    CHECK(statOf(after, "invalidated_pages") > 0);
+    CHECK(statOf(after, "rendered_pages") > 0);
+    CHECK(statOf(after, "rendered_pages") < statOf(after, "requested_pages"));
+    const std::vector<float> fresh = renderFrame(prepared, vsm, alone).shadow.visibility;
+    CHECK(test::sameBytes(after.shadow.visibility, fresh));
+    CHECK(!test::sameBytes(after.shadow.visibility, first.shadow.visibility));
 }
 
 TEST_CASE("virtual-shadow-map: a pool too small overflows into counted, lit pixels") {
