@@ -25,10 +25,8 @@
 #include "shadows/virtual/page_rendering.h"
 #include "shadows/virtual/virtual_debug.h"
 
-namespace shadowlab {
+namespace shadowlab::vsm {
 namespace {
-
-using namespace vsm;
 
 const char* const kVirtualMapName = "virtual-shadow-map";
 
@@ -39,7 +37,7 @@ struct VirtualMapSettings {
     BiasSettings bias = {};
 };
 
-const SettingsTable<VirtualMapSettings>& settingsTable() {
+const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
     using S = VirtualMapSettings;
     static const auto table =
         SettingsTable<S>()
@@ -116,7 +114,7 @@ ShadowOutputs localLightShadows(const ShadowInputs& in, const VirtualMapSettings
 }
 
 ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
-    const VirtualMapSettings s = settingsTable().read(in.params);
+    const VirtualMapSettings s = virtualMapSettingsTable().read(in.params);
     checkClipmapSettings(s.clipmap);
     if (in.light.type != LightType::Directional) return localLightShadows(in, s);
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);
@@ -169,12 +167,16 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
 }
 
 }  // namespace
+}  // namespace shadowlab::vsm
+
+namespace shadowlab {
 
 Technique virtualShadowMapTechnique() {
+    using namespace vsm;
     return {.name = kVirtualMapName,
             .description = "virtual shadow map (Fernando et al. 2001, Lefohn et al. 2007, UE5's layout): a sun's "
                            "clipmap of 16k levels in pages, only the marked pages rendered, cached across frames",
-            .params = settingsTable().specs(),
+            .params = virtualMapSettingsTable().specs(),
             .run = runVirtualShadowMap,
             .referenceName = "reference",
             .output = TechniqueOutput::Visibility};

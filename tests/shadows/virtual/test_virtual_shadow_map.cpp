@@ -23,7 +23,7 @@ Scene sunScene() {
     return scene;
 }
 
-double statOf(const Frame& frame, const std::string& name) {
+double virtualStat(const Frame& frame, const std::string& name) {
     for (const TechniqueStat& s : frame.shadow.stats)
         if (s.name == name) return s.value;
     FAIL("no stat " << name);
@@ -75,13 +75,13 @@ TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what 
     };
 
     const Frame first = renderFrame(prepared, vsm, kept);
-    CHECK(statOf(first, "rendered_pages") == statOf(first, "requested_pages"));
-    CHECK(statOf(first, "requested_pages") > 4);
+    CHECK(virtualStat(first, "rendered_pages") == virtualStat(first, "requested_pages"));
+    CHECK(virtualStat(first, "requested_pages") > 4);
 
     // A still frame: every page is cached.
     const Frame still = renderFrame(prepared, vsm, kept);
-    CHECK(statOf(still, "rendered_pages") == 0);
-    CHECK(statOf(still, "cache_hit_percent") == 100.0);
+    CHECK(virtualStat(still, "rendered_pages") == 0);
+    CHECK(virtualStat(still, "cache_hit_percent") == 100.0);
     CHECK(test::sameBytes(still.shadow.visibility, first.shadow.visibility));
 
     // The camera pans: some pages enter the view; the rest are kept and read as drawn.
@@ -89,8 +89,8 @@ TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what 
     camera.eye += glm::vec3(1.5f, 0.0f, 0.0f), camera.target += glm::vec3(1.5f, 0.0f, 0.0f);
     prepared.setCamera(camera);
     const Frame panned = renderFrame(prepared, vsm, kept);
-    CHECK(statOf(panned, "rendered_pages") > 0);
-    CHECK(statOf(panned, "rendered_pages") < statOf(panned, "requested_pages"));
+    CHECK(virtualStat(panned, "rendered_pages") > 0);
+    CHECK(virtualStat(panned, "rendered_pages") < virtualStat(panned, "requested_pages"));
     sameAsAlone(panned);
 
     // The sun turns: every page is drawn again.
@@ -98,7 +98,7 @@ TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what 
     lights[0].direction = glm::normalize(lights[0].direction + glm::vec3(0.2f, 0.0f, 0.0f));
     prepared.setLights(lights);
     const Frame turned = renderFrame(prepared, vsm, kept);
-    CHECK(statOf(turned, "rendered_pages") == statOf(turned, "requested_pages"));
+    CHECK(virtualStat(turned, "rendered_pages") == virtualStat(turned, "requested_pages"));
     sameAsAlone(turned);
 }
 
@@ -119,9 +119,9 @@ TEST_CASE("virtual-shadow-map: a moving caster re-renders the pages under it, an
     const InstancePlacement placement{sphere, moved};
     REQUIRE(prepared.setInstanceTransforms({&placement, 1}) == 1);
     const Frame after = renderFrame(prepared, vsm, kept);
-    CHECK(statOf(after, "invalidated_pages") > 0);
-    CHECK(statOf(after, "rendered_pages") > 0);
-    CHECK(statOf(after, "rendered_pages") < statOf(after, "requested_pages"));
+    CHECK(virtualStat(after, "invalidated_pages") > 0);
+    CHECK(virtualStat(after, "rendered_pages") > 0);
+    CHECK(virtualStat(after, "rendered_pages") < virtualStat(after, "requested_pages"));
     const std::vector<float> fresh = renderFrame(prepared, vsm, alone).shadow.visibility;
     CHECK(test::sameBytes(after.shadow.visibility, fresh));
     CHECK(!test::sameBytes(after.shadow.visibility, first.shadow.visibility));
