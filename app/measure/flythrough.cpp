@@ -69,6 +69,7 @@ FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels&
     frame.minMs = timed.timing.minMs;
     ImageChannels scored = scoredImage(timed.last);
     frame.errors = scoreImage(reference, scored, timed.last.output);
+    frame.stats = timed.last.shadow.stats;
     if (!state.picturesDir.empty()) {
         const std::string number = text::format("%04d", int(state.series.frames.size()));
         writeFramePictures(state.picturesDir, state.picturesDir, number, timed.last, &reference);

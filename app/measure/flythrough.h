@@ -50,6 +50,10 @@ struct FlythroughFrame {
     double medianMs = 0.0, minMs = 0.0;
     ErrorFigures errors;
     std::optional<FlickerFigures> flicker;   // against the frame before: none for frame 0
+    // The technique's figures for the frame (its last measured run's, stage times the runs'
+    // medians): what a technique that keeps state shows about it, a virtual map's pages
+    // rendered and cache hits.
+    std::vector<TechniqueStat> stats;
 };
 
 // One technique setting along the whole path.

@@ -1,5 +1,6 @@
 #include "app/measure/flythrough_report.h"
 
+#include <algorithm>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,9 @@ Json frameJson(const FlythroughFrame& f) {
     frame["median_ms"] = f.medianMs;
     frame["min_ms"] = f.minMs;
     frame["errors"] = Json::parse(formatJson(f.errors));
+    Json stats = Json::object();
+    for (const TechniqueStat& stat : f.stats) stats[stat.name] = stat.value;
+    frame["stats"] = stats;
     frame["flicker"] = f.flicker ? Json{{"mean", f.flicker->mean}, {"p99", f.flicker->p99},
                                         {"pixels", f.flicker->pixels}, {"stable_pixels", f.flicker->stablePixels}}
                                  : Json(nullptr);
@@ -38,6 +42,17 @@ Json seriesJson(const FlythroughSeries& s) {
                               {"mean_misclassified_percent", p.meanMisclassifiedPercent},
                               {"flicker_mean", p.flickerMean}, {"flicker_p99", p.flickerP99}}},
             {"frames", frames}};
+}
+
+// Every stat name any frame of any series reports, in the order first seen: the CSV's last
+// columns, blank where a frame has no such figure.
+std::vector<std::string> statColumns(const FlythroughResults& results) {
+    std::vector<std::string> names;
+    for (const FlythroughSeries& s : results.series)
+        for (const FlythroughFrame& f : s.frames)
+            for (const TechniqueStat& stat : f.stats)
+                if (std::find(names.begin(), names.end(), stat.name) == names.end()) names.push_back(stat.name);
+    return names;
 }
 
 }  // namespace
@@ -58,10 +73,13 @@ std::string formatFlythroughText(const FlythroughResults& results) {
 }
 
 std::string formatFlythroughCsv(const FlythroughResults& results) {
-    std::string csv = csvLine({"technique", "settings", "frame", "time", "eye_x", "eye_y", "eye_z", "target_x",
-                               "target_y", "target_z", "light_x", "light_y", "light_z", "median_ms", "min_ms", "rms",
-                               "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
-                               "flicker_mean", "flicker_p99", "flicker_stable_percent"});
+    const std::vector<std::string> stats = statColumns(results);
+    std::vector<std::string> header{"technique", "settings", "frame", "time", "eye_x", "eye_y", "eye_z", "target_x",
+                                    "target_y", "target_z", "light_x", "light_y", "light_z", "median_ms", "min_ms", "rms",
+                                    "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
+                                    "flicker_mean", "flicker_p99", "flicker_stable_percent"};
+    header.insert(header.end(), stats.begin(), stats.end());
+    std::string csv = csvLine(header);
     for (const FlythroughSeries& s : results.series) {
         for (const FlythroughFrame& f : s.frames) {
             std::vector<std::string> fields{s.technique, settingsLabel(s.settings), std::to_string(f.frame),
@@ -78,6 +96,10 @@ std::string formatFlythroughCsv(const FlythroughResults& results) {
             else
                 for (double x : {f.flicker->mean, f.flicker->p99, f.flicker->stablePercent()})
                     fields.push_back(csvNumber(x));
+            for (const std::string& name : stats) {
+                const auto stat = std::ranges::find(f.stats, name, &TechniqueStat::name);
+                fields.push_back(stat == f.stats.end() ? "" : csvNumber(stat->value));
+            }
             csv += csvLine(fields);
         }
     }

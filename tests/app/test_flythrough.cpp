@@ -4,6 +4,7 @@
 // an object gives each frame the references of the moved scene, and the techniques follow.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -104,6 +105,35 @@ TEST_CASE("texel snapping removes the flicker a sub-texel camera move causes in 
     CHECK(on.flickerMean < 0.5 * off.flickerMean);
     for (const FlythroughFrame& frame : results.series[1].frames)
         if (frame.flicker) CHECK(frame.flicker->stablePercent() > 99.0);
+}
+
+TEST_CASE("a fly-through hands each setting's history on: a virtual map redraws only the pages a moving caster dirties") {
+    // The sphere slides under a still sun: after the first frame, the pages kept from the
+    // frame before are read from the cache and only those under the sphere's boxes drawn
+    // again; the figures reach the CSV and the JSON frame by frame.
+    FlythroughOptions options =
+        smallRun(builtinSceneDir() + "/flythrough/sliding-sphere-still-sun.json", {"virtual-shadow-map"}, 3);
+    options.axes = {{"virtual-resolution", {"4096"}}, {"page-texels", {"64"}}};
+    const FlythroughResults results = runFlythrough(options);
+    REQUIRE(results.series.size() == 1);
+    const std::vector<FlythroughFrame>& frames = results.series[0].frames;
+    REQUIRE(frames.size() == 3);
+    const auto stat = [](const FlythroughFrame& f, const std::string& name) {
+        const auto it = std::ranges::find(f.stats, name, &TechniqueStat::name);
+        REQUIRE(it != f.stats.end());
+        return it->value;
+    };
+    CHECK(stat(frames[0], "rendered_pages") == stat(frames[0], "requested_pages"));
+    for (size_t k = 1; k < frames.size(); ++k) {
+        CHECK(stat(frames[k], "invalidated_pages") > 0);
+        CHECK(stat(frames[k], "rendered_pages") > 0);
+        CHECK(stat(frames[k], "cache_hit_percent") > 50.0);
+        CHECK(frames[k].errors.percentOfPixels(frames[k].errors.misclassified()) < 0.5);
+    }
+    const std::string csv = formatFlythroughCsv(results);
+    CHECK(csv.substr(0, csv.find('\n')).find(",rendered_pages,") != std::string::npos);
+    const nlohmann::json json = nlohmann::json::parse(formatFlythroughJson(results));
+    CHECK(json["series"][0]["frames"][2]["stats"]["rendered_pages"].get<double>() == stat(frames[2], "rendered_pages"));
 }
 
 TEST_CASE("a fly-through follows the scene's path and writes its table, JSON, plots and frames") {
