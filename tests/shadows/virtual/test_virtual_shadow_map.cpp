@@ -37,6 +37,21 @@ std::map<std::string, std::string> smallMap(std::map<std::string, std::string> m
     return more;
 }
 
+// The sun case's frames with a history kept from one to the next, and frames alone.
+struct Sequence {
+    PreparedScene prepared{sunScene()};
+    const Technique& vsm = findTechnique("virtual-shadow-map");
+    FrameHistory history;
+    Frame next() { return renderFrame(prepared, vsm, settings(&history)); }
+    std::vector<float> alone() const { return renderFrame(prepared, vsm, settings(nullptr)).shadow.visibility; }
+    static FrameSettings settings(FrameHistory* kept) {
+        FrameSettings s;
+        s.params = smallMap();
+        s.history = kept;
+        return s;
+    }
+};
+
 }  // namespace
 
 TEST_CASE("virtual-shadow-map: the sun's hard shadow within the shadow maps' bound, every pixel paged") {
@@ -61,69 +76,49 @@ TEST_CASE("virtual-shadow-map: the same bytes on every thread count and SIMD lev
 }
 
 TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what is new is rendered") {
-    Scene scene = sunScene();
-    PreparedScene prepared(scene);
-    const Technique& vsm = findTechnique("virtual-shadow-map");
-    FrameHistory history;
-    FrameSettings kept;
-    kept.params = smallMap();
-    kept.history = &history;
-    FrameSettings alone;
-    alone.params = smallMap();
-    const auto sameAsAlone = [&](const Frame& f) {
-        CHECK(test::sameBytes(f.shadow.visibility, renderFrame(prepared, vsm, alone).shadow.visibility));
-    };
-
-    const Frame first = renderFrame(prepared, vsm, kept);
+    Sequence s;
+    const Frame first = s.next();
     CHECK(virtualStat(first, "rendered_pages") == virtualStat(first, "requested_pages"));
     CHECK(virtualStat(first, "requested_pages") > 4);
 
     // A still frame: every page is cached.
-    const Frame still = renderFrame(prepared, vsm, kept);
+    const Frame still = s.next();
     CHECK(virtualStat(still, "rendered_pages") == 0);
     CHECK(virtualStat(still, "cache_hit_percent") == 100.0);
     CHECK(test::sameBytes(still.shadow.visibility, first.shadow.visibility));
 
     // The camera pans: some pages enter the view; the rest are kept and read as drawn.
-    Camera camera = scene.camera;
+    Camera camera = s.prepared.scene().camera;
     camera.eye += glm::vec3(1.5f, 0.0f, 0.0f), camera.target += glm::vec3(1.5f, 0.0f, 0.0f);
-    prepared.setCamera(camera);
-    const Frame panned = renderFrame(prepared, vsm, kept);
+    s.prepared.setCamera(camera);
+    const Frame panned = s.next();
     CHECK(virtualStat(panned, "rendered_pages") > 0);
     CHECK(virtualStat(panned, "rendered_pages") < virtualStat(panned, "requested_pages"));
-    sameAsAlone(panned);
+    CHECK(test::sameBytes(panned.shadow.visibility, s.alone()));
 
     // The sun turns: every page is drawn again.
-    std::vector<Light> lights = scene.lights;
+    std::vector<Light> lights = s.prepared.scene().lights;
     lights[0].direction = glm::normalize(lights[0].direction + glm::vec3(0.2f, 0.0f, 0.0f));
-    prepared.setLights(lights);
-    const Frame turned = renderFrame(prepared, vsm, kept);
+    s.prepared.setLights(lights);
+    const Frame turned = s.next();
     CHECK(virtualStat(turned, "rendered_pages") == virtualStat(turned, "requested_pages"));
-    sameAsAlone(turned);
+    CHECK(test::sameBytes(turned.shadow.visibility, s.alone()));
 }
 
 TEST_CASE("virtual-shadow-map: a moving caster re-renders the pages under it, and the kept ones stay right") {
-    PreparedScene prepared(sunScene());
-    const Technique& vsm = findTechnique("virtual-shadow-map");
-    FrameHistory history;
-    FrameSettings kept;
-    kept.params = smallMap();
-    kept.history = &history;
-    FrameSettings alone;
-    alone.params = smallMap();
-    const Frame first = renderFrame(prepared, vsm, kept);
+    Sequence s;
+    const Frame first = s.next();
     // The sphere (instance 1) slides 0.4 m along x.
     const uint32_t sphere = 1;
     const glm::mat4 moved = glm::translate(glm::mat4(1.0f), glm::vec3(0.4f, 0.0f, 0.0f)) *
-                            prepared.scene().instances[sphere].worldFromObject;
+                            s.prepared.scene().instances[sphere].worldFromObject;
     const InstancePlacement placement{sphere, moved};
-    REQUIRE(prepared.setInstanceTransforms({&placement, 1}) == 1);
-    const Frame after = renderFrame(prepared, vsm, kept);
+    REQUIRE(s.prepared.setInstanceTransforms({&placement, 1}) == 1);
+    const Frame after = s.next();
     CHECK(virtualStat(after, "invalidated_pages") > 0);
     CHECK(virtualStat(after, "rendered_pages") > 0);
     CHECK(virtualStat(after, "rendered_pages") < virtualStat(after, "requested_pages"));
-    const std::vector<float> fresh = renderFrame(prepared, vsm, alone).shadow.visibility;
-    CHECK(test::sameBytes(after.shadow.visibility, fresh));
+    CHECK(test::sameBytes(after.shadow.visibility, s.alone()));
     CHECK(!test::sameBytes(after.shadow.visibility, first.shadow.visibility));
 }
 
