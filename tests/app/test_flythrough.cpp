@@ -192,8 +192,10 @@ TEST_CASE("a fly-through refuses what it cannot measure, before rendering") {
 TEST_CASE("a moved frame's references are those of the moved scene prepared afresh") {
     // The disk light's soft reference and its centre's hard one; the sun's hard one.
     using Case = std::pair<std::string, std::vector<std::string>>;
-    for (const auto& [name, references] : {Case{"sliding-sphere", {"reference", "reference-soft"}},
-                                           Case{"sliding-sphere-sun", {"reference"}}}) {
+    // Named, not bound (clang 14 cannot capture structured bindings in INFO's lambda).
+    for (const Case& c : {Case{"sliding-sphere", {"reference", "reference-soft"}}, Case{"sliding-sphere-sun", {"reference"}}}) {
+        const std::string& name = c.first;
+        const std::vector<std::string>& references = c.second;
         Scene scene = loadScene(movingScene(name));
         SceneOverrides small;
         small.width = 96, small.height = 60;
