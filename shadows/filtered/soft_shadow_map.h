@@ -66,9 +66,11 @@ void requireAreaLight(const Light& light, const std::string& technique);
 
 // Throws std::invalid_argument unless the light is a disk or a rectangle. The receivers
 // stay marginTexels inside the map's sides, and with coverBlockerSearch also the widest
-// blocker search region (whose taps would otherwise read clamped border texels).
-SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
-                                  double marginTexels, bool coverBlockerSearch);
+// blocker search region (whose taps would otherwise read clamped border texels). The map is
+// the technique's state (in.kept(), technique_history.h): each frame draws it into the last
+// frame's memory, so a steady state allocates neither the map nor its linear depth.
+const SoftShadowMap& renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
+                                         double marginTexels, bool coverBlockerSearch);
 
 SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P);
 
