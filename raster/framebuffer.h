@@ -150,6 +150,9 @@ public:
     // clears it; this one is left empty.
     FramebufferStorage release() &&;
     std::vector<uint8_t> stencilImage() const;
+    // The stencil buffer itself, block-linear (index()), its pending tiles resolved and no
+    // other buffer's: to read in place, without the copy stencilImage() makes.
+    const BufferStorage<uint8_t>& stencil() { return stencil_.resolved(); }
     std::vector<float> colorImage(int channel) const;
     std::vector<uint32_t> primitiveIdImage() const;
     // The fragments drawn into tile t (row-major over tiles) since the last clear, in the

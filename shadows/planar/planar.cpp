@@ -181,7 +181,7 @@ ShadowOutputs runPlanar(const ShadowInputs& in) {
 
     // The stencil read in place (block-linear), rows in parallel; the counts are integer
     // sums, the same in any order.
-    const uint8_t* stencil = fb.view().stencil;
+    const uint8_t* stencil = fb.stencil().data();
     const GBuffer& g = in.gbuffer;
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);

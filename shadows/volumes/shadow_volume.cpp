@@ -69,8 +69,8 @@ namespace shadowlab {
 namespace {
 
 // Step 6, with the stencil as a signed count per pixel, read in place from the framebuffer
-// (block-linear, `tilesX` tiles wide); rows in parallel (the count of shadowed pixels is an
-// integer sum, the same in any order).
+// (Framebuffer::stencil(): block-linear, `tilesX` tiles wide); rows in parallel (the count of
+// shadowed pixels is an integer sum, the same in any order).
 ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light, const uint8_t* stencil, int tilesX) {
     ShadowOutputs out;
     out.visibility.resize(g.pixelCount());
@@ -122,7 +122,7 @@ ShadowOutputs runShadowVolume(const ShadowInputs& in, const StencilPassSettings&
     raster::Rasterizer& rasterizer = kept.rasterizer.at(in.simd);
     const StencilPass pass = runStencilPass(rasterizer, *fb, in, settings, homogeneousLight(light), timer);
 
-    ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb->view().stencil, fb->tilesX());
+    ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb->stencil().data(), fb->tilesX());
     timer.lap("visibility");
     appendStencilPassStats(in, pass, out.stats);
     timer.appendTo(out.stats);
