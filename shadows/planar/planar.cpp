@@ -191,15 +191,19 @@ ShadowOutputs runPlanar(const ShadowInputs& in) {
         tbb::blocked_range<int>(0, g.height), Counts{0, 0},
         [&](const tbb::blocked_range<int>& rows, Counts c) {
             for (int j = rows.begin(); j < rows.end(); ++j) {
-                for (int i = 0; i < g.width; ++i) {
-                    const size_t k = g.index(i, j);
-                    const uint8_t s = stencil[fb.index(i, j)];
-                    out.stencil[k] = float(s);
-                    // Outside a spot's cone no light arrives (the V convention), shadow or not.
-                    const bool inCone = in.light.type != LightType::Spot || insideSpotCone(in.light, g.position[k]);
-                    out.visibility[k] = g.hit[k] && inCone && s != kShadowed ? 1.0f : 0.0f;
-                    c.first += s != kNoReceiver;
-                    c.second += s == kShadowed;
+                for (int x0 = 0; x0 < g.width; x0 += raster::kBlockSize) {
+                    // A block's row of pixels is contiguous: one storage index per block.
+                    const uint8_t* run = stencil + fb.index(x0, j);
+                    for (int i = x0; i < std::min(x0 + raster::kBlockSize, g.width); ++i) {
+                        const size_t k = g.index(i, j);
+                        const uint8_t s = run[i - x0];
+                        out.stencil[k] = float(s);
+                        // Outside a spot's cone no light arrives (the V convention), shadow or not.
+                        const bool inCone = in.light.type != LightType::Spot || insideSpotCone(in.light, g.position[k]);
+                        out.visibility[k] = g.hit[k] && inCone && s != kShadowed ? 1.0f : 0.0f;
+                        c.first += s != kNoReceiver;
+                        c.second += s == kShadowed;
+                    }
                 }
             }
             return c;

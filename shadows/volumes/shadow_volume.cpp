@@ -49,6 +49,7 @@
 // (shadows/wedges/) run for the light's centre; step 6 is here.
 #include "shadows/volumes/shadow_volume.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -79,13 +80,17 @@ ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light, const 
         tbb::blocked_range<int>(0, g.height), size_t(0),
         [&](const tbb::blocked_range<int>& rows, size_t count) {
             for (int j = rows.begin(); j < rows.end(); ++j) {
-                for (int i = 0; i < g.width; ++i) {
-                    const size_t k = g.index(i, j);
-                    const uint8_t s = stencil[raster::blockLinearIndex(i, j, tilesX)];
-                    out.stencil[k] = float(int8_t(s));   // wrapped count read as signed
-                    const bool lit = g.hit[k] && s == 0 && lightReaches(light, g.position[k], g.normal[k]);
-                    out.visibility[k] = lit ? 1.0f : 0.0f;
-                    count += g.hit[k] && !lit;
+                for (int x0 = 0; x0 < g.width; x0 += raster::kBlockSize) {
+                    // A block's row of pixels is contiguous: one storage index per block.
+                    const uint8_t* run = stencil + raster::blockLinearIndex(x0, j, tilesX);
+                    for (int i = x0; i < std::min(x0 + raster::kBlockSize, g.width); ++i) {
+                        const size_t k = g.index(i, j);
+                        const uint8_t s = run[i - x0];
+                        out.stencil[k] = float(int8_t(s));   // wrapped count read as signed
+                        const bool lit = g.hit[k] && s == 0 && lightReaches(light, g.position[k], g.normal[k]);
+                        out.visibility[k] = lit ? 1.0f : 0.0f;
+                        count += g.hit[k] && !lit;
+                    }
                 }
             }
             return count;
