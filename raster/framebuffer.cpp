@@ -24,7 +24,8 @@ void growSink(FragmentSink& sink) {
 }  // namespace
 
 template <class T>
-void LazyClearedBuffer<T>::allocate(size_t tiles, T value) {
+void LazyClearedBuffer<T>::allocate(size_t tiles, T value, BufferStorage<T> memory) {
+    data_ = std::move(memory);
     data_.resize(tiles * kPixelsPerTile);
     pending_.resize(tiles);
     clear(value);
@@ -62,7 +63,7 @@ template class LazyClearedBuffer<float>;
 template class LazyClearedBuffer<uint8_t>;
 template class LazyClearedBuffer<uint32_t>;
 
-Framebuffer::Framebuffer(int width, int height, Attachments attachments)
+Framebuffer::Framebuffer(int width, int height, Attachments attachments, FramebufferStorage memory)
     : width_(width), height_(height), attachments_(attachments) {
     if (width < 1 || height < 1 || width > kMaxViewport || height > kMaxViewport) {
         throw std::invalid_argument("framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
@@ -71,12 +72,12 @@ Framebuffer::Framebuffer(int width, int height, Attachments attachments)
     tilesX_ = (width + kTileSize - 1) / kTileSize;
     tilesY_ = (height + kTileSize - 1) / kTileSize;
     const size_t tiles = size_t(tilesX_) * size_t(tilesY_);
-    depth_.allocate(tiles, 1.0f);
-    if (attachments.stencil) stencil_.allocate(tiles, 0);
+    depth_.allocate(tiles, 1.0f, std::move(memory.depth));
+    if (attachments.stencil) stencil_.allocate(tiles, 0, std::move(memory.stencil));
     if (attachments.color) {
-        for (auto& plane : color_) plane.allocate(tiles, 0.0f);
+        for (int c = 0; c < 4; ++c) color_[c].allocate(tiles, 0.0f, std::move(memory.color[c]));
     }
-    if (attachments.primitiveId) primitiveId_.allocate(tiles, 0);
+    if (attachments.primitiveId) primitiveId_.allocate(tiles, 0, std::move(memory.primitiveId));
     if (attachments.fragments) {
         fragments_.reset(new std::vector<FragmentSink>(tiles, FragmentSink{nullptr, 0, 0, growSink}));
     }
@@ -97,6 +98,13 @@ std::span<const Fragment> Framebuffer::tileFragments(int tile) const {
 void Framebuffer::clearFragments() {
     if (!fragments_) return;
     for (FragmentSink& sink : *fragments_) sink.size = 0;
+}
+
+FramebufferStorage Framebuffer::release() && {
+    return {depth_.release(),
+            stencil_.release(),
+            {color_[0].release(), color_[1].release(), color_[2].release(), color_[3].release()},
+            primitiveId_.release()};
 }
 
 void Framebuffer::clearDepth(float value) { depth_.clear(value); }

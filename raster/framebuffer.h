@@ -71,10 +71,23 @@ template <class T>
 using BufferStorage = std::vector<T, UninitializedAllocator<T>>;
 
 // One block-linear buffer with a per-tile pending clear.
+// The memory of a framebuffer's buffers, handed from one framebuffer (release()) to the next
+// of the same kind so that a frame in a steady state draws without allocating them again
+// (shadows/technique_history.h). Its values are stale: the framebuffer made from it clears
+// every buffer as a new one would. A buffer of another size is resized (reallocated only to
+// grow), one the framebuffer does not attach is dropped.
+struct FramebufferStorage {
+    BufferStorage<float> depth = {};
+    BufferStorage<uint8_t> stencil = {};
+    BufferStorage<float> color[4] = {};
+    BufferStorage<uint32_t> primitiveId = {};
+};
+
 template <class T>
 class LazyClearedBuffer {
 public:
-    void allocate(size_t tiles, T value);
+    // `tiles` tiles cleared to `value`, in `memory` (FramebufferStorage) where it is given.
+    void allocate(size_t tiles, T value, BufferStorage<T> memory = {});
     bool empty() const { return data_.empty(); }
     void clear(T value);
     // Fills the tile if its clear is pending; during a draw only the tile's task calls it.
@@ -88,6 +101,8 @@ public:
     // Copies `count` values from storage index `from` (all in one tile), reading a
     // pending tile as its clear value.
     void copyRun(size_t from, size_t count, T* out) const;
+    // The memory, unresolved, for a later buffer; this one is empty afterwards.
+    BufferStorage<T> release() { return std::move(data_); }
 
 private:
     BufferStorage<T> data_;
@@ -104,9 +119,10 @@ struct Attachments {
 
 class Framebuffer {
 public:
-    // Cleared to depth 1, stencil 0, colour 0 and primitive id 0. Throws
-    // std::invalid_argument unless 1 <= width, height <= kMaxViewport.
-    Framebuffer(int width, int height, Attachments attachments = {});
+    // Cleared to depth 1, stencil 0, colour 0 and primitive id 0, in `memory` where it is
+    // given (an earlier framebuffer's release()). Throws std::invalid_argument unless
+    // 1 <= width, height <= kMaxViewport.
+    Framebuffer(int width, int height, Attachments attachments = {}, FramebufferStorage memory = {});
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -130,7 +146,13 @@ public:
     BufferStorage<float> takeDepth() { return std::move(depth_.resolved()); }
     // A colour plane likewise (0 = R); the framebuffer has no such plane afterwards.
     BufferStorage<float> takeColor(int channel) { return std::move(color_[channel].resolved()); }
+    // The memory of every buffer (but the fragment lists) for a later framebuffer, which
+    // clears it; this one is left empty.
+    FramebufferStorage release() &&;
     std::vector<uint8_t> stencilImage() const;
+    // The stencil buffer itself, block-linear (index()), its pending tiles resolved and no
+    // other buffer's: to read in place, without the copy stencilImage() makes.
+    const BufferStorage<uint8_t>& stencil() { return stencil_.resolved(); }
     std::vector<float> colorImage(int channel) const;
     std::vector<uint32_t> primitiveIdImage() const;
     // The fragments drawn into tile t (row-major over tiles) since the last clear, in the

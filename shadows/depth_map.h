@@ -17,6 +17,7 @@
 #include "raster/fixed_point.h"
 #include "raster/framebuffer.h"
 #include "raster/pipeline_state.h"
+#include "raster/rasterizer.h"
 #include "raster/tile_kernels.h"
 #include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
@@ -53,8 +54,10 @@ struct DepthMap {
         y = y < 0 ? 0 : y >= size ? size - 1 : y;
         return depth[raster::blockLinearIndex(x, y, tilesX)];
     }
-    // Row-major, row 0 at the top: the map as an image (debug views, filtered maps).
+    // Row-major, row 0 at the top: the map as an image (debug views, filtered maps); the
+    // second form writes it into `rows`' memory (a kept buffer, technique_history.h).
     std::vector<float> image() const;
+    void image(std::vector<float>& rows) const;
 };
 
 // The texel holding texel coordinate c, floor(c), saturated to +-2^30 (NaN to -2^30) so
@@ -77,17 +80,24 @@ struct DepthMapSettings {
     raster::PolygonOffset offset;           // slope-scaled bias, applied while drawing
 };
 
-// The world's triangles, cut-outs with their holes (world_draw.h).
+// The world's triangles, cut-outs with their holes (world_draw.h). The map is drawn in
+// `memory`'s depth buffer, reallocated only if it is too small, with `rasterizer` where given
+// (at `simd`; its front-end buffers keep their memory), else a rasterizer of its own: a
+// technique that keeps its maps and rasterizer between frames (technique_history.h,
+// kept_raster.h) passes last frame's and allocates no map afresh.
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,
-                        raster::SimdLevel simd);
+                        raster::SimdLevel simd, DepthMap memory = {},
+                        raster::Rasterizer* rasterizer = nullptr);
 // The same for a prepared scene's world, its draws grouped once for every map of every frame
 // (preparedWorldDraws): what a technique drawing several maps a frame (cube faces,
 // multi-sample's views) passes.
 DepthMap renderDepthMap(const PreparedScene& prepared, const LightView& view, const DepthMapSettings& settings,
-                        raster::SimdLevel simd);
+                        raster::SimdLevel simd, DepthMap memory = {},
+                        raster::Rasterizer* rasterizer = nullptr);
 // The same for some of the world's triangles (indices into world.triangles, ascending; none
 // drawn when empty), as the fins' hard maps draw one layer's objects.
 DepthMap renderDepthMap(const WorldGeometry& world, std::span<const uint32_t> triangles, const LightView& view,
-                        const DepthMapSettings& settings, raster::SimdLevel simd);
+                        const DepthMapSettings& settings, raster::SimdLevel simd, DepthMap memory = {},
+                        raster::Rasterizer* rasterizer = nullptr);
 
 }  // namespace shadowlab

@@ -143,17 +143,13 @@ glm::dvec3 inView(const WorldGeometry& world, const glm::dmat4& viewFromWorld, u
     return glm::dvec3(viewFromWorld * glm::dvec4(glm::dvec3(world.positions[vertex]), 1.0));
 }
 
-// Each vertex once in the view: its depth (-z), and bit k set when it lies inside side plane
-// k (sideDistance, as nearestInside() decides).
-struct ViewVertices {
-    std::vector<double> depth;
-    std::vector<uint8_t> insideBits;
-};
-
 constexpr uint8_t kInsideAll = 0xf;
 
-ViewVertices viewVertices(const WorldGeometry& world, const glm::dmat4& viewFromWorld, const SidePlanes& sides) {
-    ViewVertices out{std::vector<double>(world.positions.size()), std::vector<uint8_t>(world.positions.size())};
+// Each vertex once in the view: its depth (-z), and bit k set when it lies inside side plane
+// k (sideDistance, as nearestInside() decides), in LightViewScratch's arrays.
+void viewVertices(const WorldGeometry& world, const glm::dmat4& viewFromWorld, const SidePlanes& sides,
+                  LightViewScratch& out) {
+    out.depth.resize(world.positions.size()), out.insideBits.resize(world.positions.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, world.positions.size(), 16384), [&](const auto& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
             const glm::dvec3 q = inView(world, viewFromWorld, uint32_t(i));
@@ -162,7 +158,6 @@ ViewVertices viewVertices(const WorldGeometry& world, const glm::dmat4& viewFrom
             out.depth[i] = -q.z, out.insideBits[i] = bits;
         }
     });
-    return out;
 }
 
 // The nearest geometry inside the sides, over all triangles; a minimum is exact and
@@ -170,9 +165,10 @@ ViewVertices viewVertices(const WorldGeometry& world, const glm::dmat4& viewFrom
 // triangle with every corner inside every side is its own clipped polygon, so its nearest
 // is its nearest corner's depth, the bits nearestInside() would return; only the others
 // are clipped.
-double nearestGeometry(const WorldGeometry& world, const glm::dmat4& viewFromWorld, const SidePlanes& sides) {
+double nearestGeometry(const WorldGeometry& world, const glm::dmat4& viewFromWorld, const SidePlanes& sides,
+                       LightViewScratch& vertices) {
     constexpr size_t kChunk = 16384;
-    const ViewVertices vertices = viewVertices(world, viewFromWorld, sides);
+    viewVertices(world, viewFromWorld, sides, vertices);
     const size_t chunks = (world.triangles.size() + kChunk - 1) / kChunk;
     std::vector<double> nearest(chunks, kInfinity);
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
@@ -210,7 +206,9 @@ void widen(Bounds& b, const LightFitOptions& o) {
 // Near and far from the receivers and the geometry in front of them.
 void fitDepthRange(LightView& view, const Bounds& b, const WorldGeometry& world, const LightFitOptions& o) {
     view.zFar = b.farthest * (1.0 + 1e-4) + (view.orthographic ? 1e-4 : 0.0);
-    const double occluder = nearestGeometry(world, view.viewFromWorld, sidePlanes(b, view.orthographic));
+    LightViewScratch own;
+    const double occluder =
+        nearestGeometry(world, view.viewFromWorld, sidePlanes(b, view.orthographic), o.scratch ? *o.scratch : own);
     double zNear = std::min(occluder, b.nearest);
     if (!view.orthographic) zNear = std::max(zNear * (1.0 - 1e-4), view.zFar * o.minNearFraction);
     else zNear -= 1e-4 * (view.zFar - zNear) + 1e-4;

@@ -10,6 +10,7 @@
 // technique uses six cube faces instead (fitCubeFace).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,14 @@ struct LightView {
     glm::dmat4 clipFromWorld() const { return clipFromView * viewFromWorld; }
 };
 
+// The memory a fit works in: every vertex's depth and side bits in the view (the nearest
+// geometry inside it). A technique keeps it between frames (technique_history.h) and lends
+// it through LightFitOptions::scratch, so that a steady state's fits allocate none of it.
+struct LightViewScratch {
+    std::vector<double> depth;
+    std::vector<uint8_t> insideBits;
+};
+
 struct LightFitOptions {
     int resolution = 2048;       // texels per side of the map the view is for
     double marginTexels = 2.0;   // receivers stay this far inside the sides (filter footprints)
@@ -45,6 +54,8 @@ struct LightFitOptions {
     // false fits it anyway, to the geometry around the light (a comparison for tests and
     // measurements: no receiver looks such a face up, so V is the same, bit for bit).
     bool cullCubeFaces = true;
+    // The memory to fit in (kept between frames); null: the fit's own, freed after it.
+    LightViewScratch* scratch = nullptr;
 };
 
 // Throws std::invalid_argument when there are no receivers, the light is an area light

@@ -156,7 +156,7 @@ ShadowOutputs runBackprojection(const ShadowInputs& in) {
     const LightGrid samples(s.lightSamples, light.disk);
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
-    const SoftShadowMap soft = renderPcssMap(in, s.resolution);
+    const SoftShadowMap& soft = renderPcssMap(in, s.resolution);
     timer.lap("map");
     const MinMaxHierarchy hierarchy(soft.map);
     timer.lap("hierarchy");

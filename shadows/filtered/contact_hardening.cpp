@@ -57,7 +57,7 @@ ShadowOutputs runChs(const ShadowInputs& in) {
     requireAreaLight(in.light, kChsName);
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
-    const SoftShadowMap soft = renderPcssMap(in, s.resolution);
+    const SoftShadowMap& soft = renderPcssMap(in, s.resolution);
     timer.lap("map");
     const MinMaxHierarchy h(soft.map);
     timer.lap("hierarchy");

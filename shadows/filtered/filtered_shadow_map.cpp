@@ -20,6 +20,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "raster/portable_math.h"
 #include "shadows/debug_buffers.h"
@@ -100,12 +101,15 @@ struct ReceiverRow {
     std::vector<size_t> pixels;
     std::vector<glm::dvec2> texels, widths;
     std::vector<double> depths, moments, visibility;
+    void clear() {   // for the next row, keeping the memory
+        pixels.clear(), texels.clear(), widths.clear(), depths.clear(), moments.clear(), visibility.clear();
+    }
 };
 
 // Step 4 for every pixel: the filtered moments at the receiver, then V, a row's receivers
 // in one run of the kind's visibility (whose exponentials go a vector at a time).
 PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, const FilteredSettings& s,
-                                const MomentMap& blurred, const SummedAreaTable& table) {
+                                const MomentMap& blurred, const SummedAreaTable& table, std::vector<ReceiverRow>& rows) {
     const GBuffer& g = in.gbuffer;
     const size_t channels = size_t(momentCount(s.moments.kind));
     PixelBuffers out{std::vector<float>(g.pixelCount(), 0.0f), std::vector<float>(g.pixelCount(), 0.0f)};
@@ -146,7 +150,7 @@ PixelBuffers visibilityPerPixel(const ShadowInputs& in, const SoftShadowMap& sof
         momentVisibilityRun(s.moments, row.moments.data(), row.depths.data(), count, row.visibility.data(), in.simd);
         for (size_t r = 0; r < count; ++r) out.visibility[row.pixels[r]] = float(row.visibility[r]);
     };
-    forEachReceiverFacingLight<ReceiverRow>(g, soft, perPixel, endOfRow);
+    forEachReceiverFacingLight(g, soft, rows, perPixel, endOfRow);
     return out;
 }
 
@@ -177,29 +181,40 @@ void writeDebug(const ShadowInputs& in, const FilteredSettings& s, const SoftSha
     debug.write("filter-width", in.gbuffer.width, in.gbuffer.height, px.widthTexels, 0.0f, std::max(widest, 1.0f));
 }
 
+// The moments, the filter's maps and the receivers' row buffers (one per thread), kept
+// between frames (technique_history.h): each frame writes them over the last one's, so a
+// steady state allocates none of them.
+struct FilteredMaps {
+    MomentMap moments, rowPass, blurred;   // rowPass: the blur's first pass
+    SummedAreaTable table;
+    std::vector<ReceiverRow> receiverRows;
+};
+
 ShadowOutputs runFiltered(const ShadowInputs& in, const FilteredSettings& s) {
     requireAreaLight(in.light, momentKindName(s.moments.kind));
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
-    const SoftShadowMap soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),
+    const SoftShadowMap& soft = renderSoftShadowMap(in, s.resolution, polygonOffsetFor(BiasSettings{}),
                                                    kFitMarginTexels + 0.5 * s.widthTexels, s.pcssWidth);
     timer.lap("map");
-    const MomentMap moments = momentMap(soft, s.moments, in.simd);
+    FilteredMaps& maps = in.kept().state<FilteredMaps>();
+    maps.moments = momentMap(soft, s.moments, in.simd, std::move(maps.moments));
+    const MomentMap& moments = maps.moments;
     timer.lap("moments");
-    MomentMap blurred;
-    SummedAreaTable table;
     if (s.summedAreaTable) {
         checkTablePrecision(s, moments);
-        table = summedAreaTable(moments);
+        maps.table = summedAreaTable(moments, std::move(maps.table));
     } else {
-        blurred = blurMoments(moments, blurWeights(s.blur, s.widthTexels));
+        blurMoments(moments, blurWeights(s.blur, s.widthTexels), maps.rowPass, maps.blurred);
     }
+    const MomentMap& blurred = maps.blurred;
+    const SummedAreaTable& table = maps.table;
     timer.lap("filter");
-    const PixelBuffers px = visibilityPerPixel(in, soft, s, blurred, table);
+    PixelBuffers px = visibilityPerPixel(in, soft, s, blurred, table, maps.receiverRows);
     timer.lap("receivers");
     writeDebug(in, s, soft, moments, blurred, table, px);
     ShadowOutputs out;
-    out.visibility = px.visibility;
+    out.visibility = std::move(px.visibility);   // the last use
     out.stats = {{"resolution_texels", double(s.resolution)},
                  {"moments_count", double(moments.channels)},
                  {"light_near_m", soft.zNear()},

@@ -73,8 +73,8 @@ const double* MomentMap::at(int x, int y) const {
     return &values[(size_t(y) * size_t(size) + size_t(x)) * size_t(channels)];
 }
 
-MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings, raster::SimdLevel simd) {
-    MomentMap m{soft.map.size, momentCount(settings.kind), {}};
+MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings, raster::SimdLevel simd, MomentMap memory) {
+    MomentMap m{soft.map.size, momentCount(settings.kind), std::move(memory.values)};
     m.values.resize(soft.linear.size() * size_t(m.channels));
     tbb::parallel_for(tbb::blocked_range<size_t>(0, soft.linear.size(), kMomentRun), [&](const tbb::blocked_range<size_t>& r) {
         double z[kMomentRun];
@@ -100,6 +100,12 @@ std::vector<double> blurWeights(BlurKind kind, int width) {
 }
 
 MomentMap blurMoments(const MomentMap& in, const std::vector<double>& weights) {
+    MomentMap rows, out;
+    blurMoments(in, weights, rows, out);
+    return out;
+}
+
+void blurMoments(const MomentMap& in, const std::vector<double>& weights, MomentMap& rows, MomentMap& out) {
     if (weights.empty() || weights.size() > kMaxBlurTaps) {
         throw std::invalid_argument("blur of " + std::to_string(weights.size()) + " taps; 1 to " +
                                     std::to_string(kMaxBlurTaps) + " are possible");
@@ -111,8 +117,8 @@ MomentMap blurMoments(const MomentMap& in, const std::vector<double>& weights) {
     // contiguous run too (the rows above and below, or the row shifted), so the run is one
     // weightedSum over them; a texel with taps past an edge reads the border texel.
     const size_t taps = weights.size();   // at most kMaxBlurTaps (filter-width's range)
-    const auto pass = [&](const MomentMap& from, bool alongX) {
-        MomentMap to{size, from.channels, {}};
+    const auto pass = [&](const MomentMap& from, bool alongX, MomentMap& to) {
+        to.size = size, to.channels = from.channels;
         to.values.resize(from.values.size());
         tbb::parallel_for(0, size, [&](int y) {
             std::array<const double*, kMaxBlurTaps> sources;
@@ -137,9 +143,9 @@ MomentMap blurMoments(const MomentMap& in, const std::vector<double>& weights) {
                 for (int x = last; x < size; ++x) blurRun(x, x + 1);
             }
         });
-        return to;
     };
-    return pass(pass(in, true), false);
+    pass(in, true, rows);
+    pass(rows, false, out);
 }
 
 void sampleBilinear(const MomentMap& m, const glm::dvec2& texel, double* out) {
@@ -173,8 +179,8 @@ void sampleBilinearRun(const MomentMap& m, const glm::dvec2* texels, size_t coun
     }
 }
 
-SummedAreaTable summedAreaTable(const MomentMap& m) {
-    SummedAreaTable t{m.size, m.channels, {}};
+SummedAreaTable summedAreaTable(const MomentMap& m, SummedAreaTable memory) {
+    SummedAreaTable t{m.size, m.channels, std::move(memory.sums)};
     const size_t stride = size_t(m.size) + 1, channels = size_t(m.channels);
     t.sums.assign(stride * stride * channels, 0.0);
     const auto entry = [&](size_t X, size_t Y, int c) -> double& { return t.sums[(Y * stride + X) * channels + size_t(c)]; };

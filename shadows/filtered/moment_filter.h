@@ -56,20 +56,26 @@ struct SummedAreaTable {
 };
 
 // The kind's moments of every texel's normalised linear depth (the same bits at every SIMD
-// level and thread count).
-MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings, raster::SimdLevel simd);
+// level and thread count), in `memory`'s storage (a map kept between frames,
+// technique_history.h; reallocated only to grow).
+MomentMap momentMap(const SoftShadowMap& soft, const MomentSettings& settings, raster::SimdLevel simd,
+                    MomentMap memory = {});
 
 // Weights of an odd `width` (at most kMaxBlurTaps) of taps: equal (box) or Gaussian with
 // sigma = width / 6, so the taps span +-3 sigma; normalised to sum 1.
 std::vector<double> blurWeights(BlurKind kind, int width);
 MomentMap blurMoments(const MomentMap& moments, const std::vector<double>& weights);
+// The same into `out`, through `rows` (the row pass's result), both in their own memory:
+// a technique keeps them between frames (technique_history.h) and allocates neither again.
+void blurMoments(const MomentMap& moments, const std::vector<double>& weights, MomentMap& rows, MomentMap& out);
 
 // The moments at a continuous texel position, bilinear between texel centres.
 void sampleBilinear(const MomentMap& moments, const glm::dvec2& texel, double* out);
 // The same for count texels, out holding `channels` values per texel.
 void sampleBilinearRun(const MomentMap& moments, const glm::dvec2* texels, size_t count, double* out);
 
-SummedAreaTable summedAreaTable(const MomentMap& moments);
+// The table of `moments`, in `memory`'s storage (a kept table, as momentMap's).
+SummedAreaTable summedAreaTable(const MomentMap& moments, SummedAreaTable memory = {});
 // The mean of the moments over the box [lo, hi] (texel units), clipped to the map; a box
 // thinner than a texel is widened to one texel about its centre.
 void boxMean(const SummedAreaTable& table, glm::dvec2 lo, glm::dvec2 hi, double* out);

@@ -28,6 +28,7 @@
 #include "shadows/depth_map.h"
 #include "shadows/filtered/soft_shadow_map.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
+#include "shadows/kept_raster.h"
 #include "shadows/light_view.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
@@ -72,6 +73,12 @@ void accumulateHardShadow(const GBuffer& g, const DepthMap& map, const Light& po
     });
 }
 
+// The samples' map and the rasterizer that draws it, kept between frames.
+struct SampleMap {
+    DepthMap map;
+    KeptRasterizer rasterizer;
+};
+
 ShadowOutputs runMultiSample(const ShadowInputs& in) {
     const auto [resolution, samples] = multiSampleSettingsTable().read(in.params);
     const int perAxis = int(std::lround(std::sqrt(double(samples))));
@@ -86,9 +93,14 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     fit.resolution = resolution;
     fit.marginTexels = kNearestFitMarginTexels;
     fit.simd = in.simd;
+    fit.scratch = &in.kept().state<LightViewScratch>();
     const DepthMapSettings depth{resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
     std::vector<uint16_t> lit(in.gbuffer.pixelCount(), 0);
     std::vector<float> v(in.gbuffer.pixelCount());
+    // Every sample's map drawn in one memory by one rasterizer, kept between frames
+    // (technique_history.h, kept_raster.h).
+    SampleMap& kept = in.kept().state<SampleMap>();
+    DepthMap& map = kept.map;
     StageTimer timer;
     Pcg32 rng(kLightSampleSeed, 0);
     for (int b = 0; b < perAxis; ++b) {
@@ -98,7 +110,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
             point.position = glm::vec3(areaLightPoint(frame, u));
             const LightView view = fitLightView(point, in.gbuffer, in.casterWorld(), fit);
             timer.lap("light_view");
-            const DepthMap map = renderDepthMap(in.casters(), view, depth, in.simd);
+            map = renderDepthMap(in.casters(), view, depth, in.simd, std::move(map), &kept.rasterizer.at(in.simd));
             timer.lap("depth_map");
             accumulateHardShadow(in.gbuffer, map, point, in.simd, v, lit);
             timer.lap("lookup");

@@ -58,7 +58,7 @@ ShadowOutputs runPcss(const ShadowInputs& in) {
     requireAreaLight(in.light, "pcss");
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
-    const SoftShadowMap soft = renderPcssMap(in, settings.resolution);
+    const SoftShadowMap& soft = renderPcssMap(in, settings.resolution);
     timer.lap("map");
     const std::optional<MinMaxHierarchy> hierarchy = pcssHierarchy(soft, settings);
     timer.lap("hierarchy");
@@ -98,7 +98,7 @@ const SettingsTable<PcssSettings>& pcssSettingsTable() {
     return table;
 }
 
-SoftShadowMap renderPcssMap(const ShadowInputs& in, int resolution) {
+const SoftShadowMap& renderPcssMap(const ShadowInputs& in, int resolution) {
     return renderSoftShadowMap(in, resolution, polygonOffsetFor(BiasSettings{}), kSearchFitMarginTexels, true);
 }
 

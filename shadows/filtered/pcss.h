@@ -24,7 +24,7 @@ struct PcssSettings {
 const SettingsTable<PcssSettings>& pcssSettingsTable();
 
 // The map of the light's centre, its view wide enough for every receiver's blocker search.
-SoftShadowMap renderPcssMap(const ShadowInputs& in, int resolution);
+const SoftShadowMap& renderPcssMap(const ShadowInputs& in, int resolution);
 
 struct PcssBuffers {
     std::vector<float> visibility;

@@ -7,6 +7,7 @@
 
 #include "shading/light_sampling.h"
 #include "shading/lights.h"
+#include "shadows/kept_raster.h"
 #include "shadows/light_view.h"
 
 namespace shadowlab {
@@ -60,14 +61,24 @@ void requireAreaLight(const Light& light, const std::string& technique) {
         throw std::invalid_argument(technique + ": needs an area light (disk or rectangle)");
 }
 
-SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
-                                  double marginTexels, bool coverBlockerSearch) {
+namespace {
+
+// The rasterizer that draws the map, kept with it (kept_raster.h).
+struct SoftMapRasterizer {
+    KeptRasterizer kept;
+};
+
+}  // namespace
+
+const SoftShadowMap& renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
+                                         double marginTexels, bool coverBlockerSearch) {
     const AreaLightFrame frame = areaLightFrame(in.light);
     const Light centre = pointLightFor(in.light);
     LightFitOptions fit;
     fit.resolution = resolution;
     fit.simd = in.simd;
     fit.marginTexels = marginTexels;
+    fit.scratch = &in.kept().state<LightViewScratch>();
     LightView view = fitLightView(centre, in.gbuffer, in.casterWorld(), fit);
     if (coverBlockerSearch) {
         // The search region (eq. 7.6 at d_o = near) is widest for the farthest receiver and
@@ -83,9 +94,10 @@ SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const 
     // depth keeps the surface's own ramp under every filter (hundreds of texels even at a
     // grazing light) for a quarter of the depth resolution.
     view = withFarPlane(view, view.zFar * kFarPlaneHeadroom);
-    SoftShadowMap soft;
-    soft.map = renderDepthMap(in.casters(), view, {resolution, DepthLayer::First, offset}, in.simd);
-    soft.linear = soft.map.image();
+    SoftShadowMap& soft = in.kept().state<SoftShadowMap>();
+    soft.map = renderDepthMap(in.casters(), view, {resolution, DepthLayer::First, offset}, in.simd, std::move(soft.map),
+                              &in.kept().state<SoftMapRasterizer>().kept.at(in.simd));
+    soft.map.image(soft.linear);
     tbb::parallel_for(size_t(0), soft.linear.size(), [&](size_t k) {
         float& z = soft.linear[k];
         z = z >= 1.0f ? 1.0f : float(soft.normalised(soft.distanceOf(z)));

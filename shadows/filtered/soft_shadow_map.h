@@ -24,7 +24,9 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "raster/tile_kernels.h"
 #include "shading/gbuffer.h"
@@ -66,30 +68,41 @@ void requireAreaLight(const Light& light, const std::string& technique);
 
 // Throws std::invalid_argument unless the light is a disk or a rectangle. The receivers
 // stay marginTexels inside the map's sides, and with coverBlockerSearch also the widest
-// blocker search region (whose taps would otherwise read clamped border texels).
-SoftShadowMap renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
-                                  double marginTexels, bool coverBlockerSearch);
+// blocker search region (whose taps would otherwise read clamped border texels). The map is
+// the technique's state (in.kept(), technique_history.h): each frame draws it into the last
+// frame's memory, so a steady state allocates neither the map nor its linear depth.
+const SoftShadowMap& renderSoftShadowMap(const ShadowInputs& in, int resolution, const raster::PolygonOffset& offset,
+                                         double marginTexels, bool coverBlockerSearch);
 
 SoftReceiver softReceiver(const SoftShadowMap& soft, const glm::dvec3& P);
 
 // Calls perPixel(row, k, P, N, receiver) for every camera pixel k whose surface faces the
 // light's centre (lightReaches: dot(N, centre - P) > 0; the others keep V = 0), rows in
-// parallel, then endOfRow(row): the pixels of a row share one RowState, made afresh for the
-// row, so a pass can finish them together (the map lookups of the whole row, then a run of
-// the moments' visibility). Each call writes only its own pixels' outputs, so the results
-// are the same for any thread count.
+// parallel, then endOfRow(row): the pixels of a row share one RowState, so a pass can finish
+// them together (the map lookups of the whole row, then a run of the moments' visibility).
+// Each thread works in its own RowState of `perThread` (resized to the arena's threads),
+// emptied (row.clear(), which keeps the memory) before each row: a caller that keeps them
+// between frames (technique_history.h) allocates no row buffers in a steady state. perPixel
+// and endOfRow must not wait on parallel work (another row could then take the thread's
+// RowState). Each call writes only its own pixels' outputs, so the results are the same for
+// any thread count.
 template <class RowState, class PerPixel, class EndOfRow>
-void forEachReceiverFacingLight(const GBuffer& g, const SoftShadowMap& soft, PerPixel perPixel, EndOfRow endOfRow) {
+void forEachReceiverFacingLight(const GBuffer& g, const SoftShadowMap& soft, std::vector<RowState>& perThread,
+                                PerPixel perPixel, EndOfRow endOfRow) {
     const LightReach reaches(soft.light);
-    tbb::parallel_for(0, g.height, [&](int j) {
-        RowState row;
-        for (int i = 0; i < g.width; ++i) {
-            const size_t k = g.index(i, j);
-            if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
-            const glm::dvec3 P(g.position[k]), N(g.normal[k]);
-            perPixel(row, k, P, N, softReceiver(soft, P));
+    perThread.resize(size_t(tbb::this_task_arena::max_concurrency()));
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        RowState& row = perThread[size_t(tbb::this_task_arena::current_thread_index())];
+        for (int j = rows.begin(); j < rows.end(); ++j) {
+            row.clear();
+            for (int i = 0; i < g.width; ++i) {
+                const size_t k = g.index(i, j);
+                if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
+                const glm::dvec3 P(g.position[k]), N(g.normal[k]);
+                perPixel(row, k, P, N, softReceiver(soft, P));
+            }
+            endOfRow(row);
         }
-        endOfRow(row);
     });
 }
 

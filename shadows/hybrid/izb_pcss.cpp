@@ -84,7 +84,7 @@ ShadowOutputs runIzbPcss(const ShadowInputs& in) {
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     StageTimer timer;
     // 1. PCSS: the soft V and the blocker distances.
-    const SoftShadowMap soft = renderPcssMap(in, pcss.resolution);
+    const SoftShadowMap& soft = renderPcssMap(in, pcss.resolution);
     timer.lap("pcss_map");
     const PcssBuffers softPart = pcssPerPixel(in, soft, pcss, pcssHierarchy(soft, pcss));
     timer.lap("pcss");

@@ -83,7 +83,8 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     StageTimer timer;
-    const CascadedMaps cm = renderCascades(in.light, in.camera(), in.gbuffer, in.casterWorld(), cs, depthMapSettings(s), in.simd);
+    CascadedMaps& cm = in.kept().state<CascadedMaps>();   // last frame's, whose memory the maps reuse
+    cm = renderCascades(in.light, in.camera(), in.gbuffer, in.casterWorld(), cs, depthMapSettings(s), in.simd, std::move(cm));
     timer.lap("cascades");
     ShadowLookup lookup = lookUpShadows(in.gbuffer, in.camera(), in.light, cm.maps,
                                         CascadeSelector{cm, in.camera()}, s.bias, makePcfKernel(s.filter), in.simd,
@@ -104,12 +105,18 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
 }  // namespace
 
 CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffer& receivers, const WorldGeometry& world,
-                            const CascadeSettings& cascades, const DepthMapSettings& maps, raster::SimdLevel simd) {
-    CascadedMaps out;
+                            const CascadeSettings& cascades, const DepthMapSettings& maps, raster::SimdLevel simd,
+                            CascadedMaps memory) {
+    CascadedMaps out = std::move(memory);
     out.cascades = fitCascades(sun, camera, receivers, world, cascades, simd);
     out.maps.resize(out.cascades.size());
     for (size_t k = 0; k < out.cascades.size(); ++k) {
-        if (out.cascades[k].hasReceivers) out.maps[k] = renderDepthMap(world, out.cascades[k].view, maps, simd);
+        DepthMap& map = out.maps[k];
+        if (out.cascades[k].hasReceivers) {
+            map = renderDepthMap(world, out.cascades[k].view, maps, simd, std::move(map), &out.rasterizer.at(simd));
+        } else {
+            map.size = 0;   // not drawn; its memory kept for a later frame
+        }
     }
     return out;
 }

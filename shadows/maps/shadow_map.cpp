@@ -18,6 +18,7 @@
 
 #include "shadows/debug_buffers.h"
 #include "shadows/depth_map.h"
+#include "shadows/kept_raster.h"
 #include "shadows/light_view.h"
 #include "shadows/maps/lispsm.h"
 #include "shadows/maps/shadow_lookup.h"
@@ -31,52 +32,64 @@ namespace {
 
 bool insideFace(const DepthMap& face, const glm::dvec3& P) { return face.size != 0 && insideCubeFace(face.view, P); }
 
+// A frame's maps. The technique keeps them between frames (technique_history.h) and draws
+// each frame's into the last one's memory with the same rasterizer (kept_raster.h), so a
+// steady state allocates no map.
 struct LightMaps {
     std::vector<DepthMap> maps;     // one map, or six cube faces (size 0 where a face has no receiver)
     bool cube = false;
     double nOpt = 0.0;              // LiSPSM's n, infinity when it kept the uniform map
+    KeptRasterizer rasterizer;
 };
 
-LightMaps cubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, const LightFitOptions& o,
-                   StageTimer& timer) {
-    LightMaps out;
+void drawCubeMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, const LightFitOptions& o,
+                  StageTimer& timer, LightMaps& out) {
     out.cube = true;
     out.maps.resize(6);
     for (int face = 0; face < 6; ++face) {
         LightView view;
         const bool used = fitCubeFace(light, face, in.gbuffer, in.casterWorld(), o, view);
         timer.lap("light_view");
-        if (used) out.maps[face] = renderDepthMap(in.casters(), view, depthMapSettings(s), in.simd);
+        DepthMap& map = out.maps[face];
+        if (used) {
+            map = renderDepthMap(in.casters(), view, depthMapSettings(s), in.simd, std::move(map),
+                                 &out.rasterizer.at(in.simd));
+        } else {
+            map.size = 0;   // not drawn; its memory kept for a later frame
+        }
         timer.lap("depth_map");
     }
-    return out;
 }
 
-// Stages light_view (fitting the frustum) and depth_map (drawing it).
-LightMaps lightMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, bool forceCube, bool lispsm,
-                    bool cullCubeFaces, StageTimer& timer) {
+// Stages light_view (fitting the frustum) and depth_map (drawing it), into `out`, the maps
+// of the frame before.
+void drawLightMaps(const ShadowInputs& in, const Light& light, const ShadowMapSettings& s, bool forceCube, bool lispsm,
+                   bool cullCubeFaces, StageTimer& timer, LightMaps& out) {
     LightFitOptions options;
     options.cullCubeFaces = cullCubeFaces;
     options.resolution = s.resolution;
     options.marginTexels = kernelRadiusTexels(s.filter) + 1.5;
     options.simd = in.simd;
-    if (forceCube) return cubeMaps(in, light, s, options, timer);
+    options.scratch = &in.kept().state<LightViewScratch>();
+    out.nOpt = 0.0;
+    if (forceCube) return drawCubeMaps(in, light, s, options, timer, out);
     LightView view;
     try {
         view = fitLightView(light, in.gbuffer, in.casterWorld(), options);
     } catch (const std::invalid_argument&) {
         if (light.type != LightType::Point) throw;
-        return cubeMaps(in, light, s, options, timer);   // receivers all around the light
+        return drawCubeMaps(in, light, s, options, timer, out);   // receivers all around the light
     }
-    LightMaps out;
     if (lispsm) {
         const LispsmView warped = lispsmView(view, light, in.camera(), in.gbuffer, s.resolution, options.marginTexels);
         view = warped.view, out.nOpt = warped.nOpt;
     }
     timer.lap("light_view");
-    out.maps.push_back(renderDepthMap(in.casters(), view, depthMapSettings(s), in.simd));
+    out.cube = false;
+    out.maps.resize(1);
+    out.maps[0] = renderDepthMap(in.casters(), view, depthMapSettings(s), in.simd, std::move(out.maps[0]),
+                                 &out.rasterizer.at(in.simd));
     timer.lap("depth_map");
-    return out;
 }
 
 // The map selector of cube maps: the first face whose pyramid holds P.
@@ -166,7 +179,8 @@ ShadowOutputs runShadowMap(const ShadowInputs& in, const ShadowMapTechniqueSetti
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);   // settings checked first
     ShadowOutputs out;
     StageTimer timer;
-    const LightMaps lm = lightMaps(in, light, s, forceCube, lispsm, settings.cullCubeFaces, timer);
+    LightMaps& lm = in.kept().state<LightMaps>();
+    drawLightMaps(in, light, s, forceCube, lispsm, settings.cullCubeFaces, timer, lm);
     ShadowLookup lookup = lookUp(in, light, lm, s);
     timer.lap("lookup");
     addStats(out, lm, s, lookup);

@@ -38,6 +38,7 @@
 #include "scenes/camera.h"
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/kept_raster.h"
 #include "shadows/settings_table.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/stage_timer.h"
@@ -139,6 +140,12 @@ raster::PipelineState shadowState() {
     return state;
 }
 
+// The stencil pass's framebuffer memory and rasterizer, kept between frames (kept_raster.h).
+struct PlanarBuffers {
+    raster::FramebufferStorage memory;
+    KeptRasterizer rasterizer;
+};
+
 ShadowOutputs runPlanar(const ShadowInputs& in) {
     const PlanarSettings settings = planarSettingsTable().read(in.params);
     const Camera& camera = in.camera();
@@ -155,9 +162,11 @@ ShadowOutputs runPlanar(const ShadowInputs& in) {
     const glm::dmat4 cameraFromWorld = clipFromWorldD(camera);
     const glm::mat4 clipFromWorld(cameraFromWorld);
     const glm::mat4 clipFromShadow(cameraFromWorld * planarProjection(plane, light));
-    raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = true});
+    PlanarBuffers& kept = in.kept().state<PlanarBuffers>();
+    KeptFramebuffer framebuffer(kept.memory, camera.width, camera.height, {.stencil = true, .color = true});
+    raster::Framebuffer& fb = *framebuffer;
     fb.clearDepth(1.0f), fb.clearStencil(kNoReceiver), fb.clearColor(glm::vec4(1.0f));
-    raster::Rasterizer rasterizer(in.simd);
+    raster::Rasterizer& rasterizer = kept.rasterizer.at(in.simd);
     // Cut-outs with their holes in every pass (world_draw.h): the prepass's depth is the
     // G-buffer's, and a projected card's texture coordinates interpolate as on the card
     // (M is projective), so its shadow has the shape of its leaves.
@@ -170,23 +179,32 @@ ShadowOutputs runPlanar(const ShadowInputs& in) {
     }
     timer.lap("stencil");
 
-    const std::vector<uint8_t> stencil = fb.stencilImage();
+    // The stencil read in place (block-linear), rows in parallel; the counts are integer
+    // sums, the same in any order.
+    const uint8_t* stencil = fb.stencil().data();
     const GBuffer& g = in.gbuffer;
     ShadowOutputs out;
     out.visibility.assign(g.pixelCount(), 0.0f);
     out.stencil.resize(g.pixelCount());
-    // Rows in parallel; the counts are integer sums, the same in any order.
     using Counts = std::pair<size_t, size_t>;   // receiver pixels, shadowed ones
     const Counts counts = tbb::parallel_reduce(
-        tbb::blocked_range<size_t>(0, g.pixelCount(), 16384), Counts{0, 0},
-        [&](const tbb::blocked_range<size_t>& r, Counts c) {
-            for (size_t k = r.begin(); k != r.end(); ++k) {
-                out.stencil[k] = float(stencil[k]);
-                // Outside a spot's cone no light arrives (the V convention), shadow or not.
-                const bool inCone = in.light.type != LightType::Spot || insideSpotCone(in.light, g.position[k]);
-                out.visibility[k] = g.hit[k] && inCone && stencil[k] != kShadowed ? 1.0f : 0.0f;
-                c.first += stencil[k] != kNoReceiver;
-                c.second += stencil[k] == kShadowed;
+        tbb::blocked_range<int>(0, g.height), Counts{0, 0},
+        [&](const tbb::blocked_range<int>& rows, Counts c) {
+            for (int j = rows.begin(); j < rows.end(); ++j) {
+                for (int x0 = 0; x0 < g.width; x0 += raster::kBlockSize) {
+                    // A block's row of pixels is contiguous: one storage index per block.
+                    const uint8_t* run = stencil + fb.index(x0, j);
+                    for (int i = x0; i < std::min(x0 + raster::kBlockSize, g.width); ++i) {
+                        const size_t k = g.index(i, j);
+                        const uint8_t s = run[i - x0];
+                        out.stencil[k] = float(s);
+                        // Outside a spot's cone no light arrives (the V convention), shadow or not.
+                        const bool inCone = in.light.type != LightType::Spot || insideSpotCone(in.light, g.position[k]);
+                        out.visibility[k] = g.hit[k] && inCone && s != kShadowed ? 1.0f : 0.0f;
+                        c.first += s != kNoReceiver;
+                        c.second += s == kShadowed;
+                    }
+                }
             }
             return c;
         },

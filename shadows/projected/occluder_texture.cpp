@@ -1,8 +1,8 @@
 #include "shadows/projected/occluder_texture.h"
 
-#include "raster/rasterizer.h"
+#include <utility>
+
 #include "shadows/projected/occluder_view.h"
-#include "shadows/world_draw.h"
 
 namespace shadowlab {
 
@@ -13,23 +13,18 @@ std::vector<float> OccluderTexture::image() const {
 }
 
 OccluderTexture renderOccluderTexture(const WorldGeometry& casters, std::span<const uint32_t> occluders,
-                                      const Light& light, int resolution, raster::SimdLevel simd) {
-    OccluderTexture texture;
-    if (occluders.empty()) return texture;   // drawWorld would draw every triangle
-    DepthMap& map = texture.map;
-    map.view = fitOccluderView(casters, occluders, light, resolution);
-    map.size = resolution;
-    map.tilesX = (resolution + raster::kTileSize - 1) / raster::kTileSize;
-    const glm::mat4 clipFromWorld(map.view.clipFromWorld());
-    map.texelFromWorld = texelFromWorldOf(clipFromWorld, resolution);
-    map.worldFromTexel = glm::inverse(map.texelFromWorld);
-    raster::Framebuffer framebuffer(resolution, resolution);   // depth cleared to 1: nothing covered
-    raster::PipelineState state;
-    state.cull = raster::CullMode::None;   // an occluder covers the light with either side
-    state.output = raster::FragmentOutput::DepthOnly;
-    raster::Rasterizer rasterizer(simd);
-    drawWorld(rasterizer, framebuffer, state, casters, clipFromWorld, occluders);
-    map.depth = framebuffer.takeDepth();
+                                      const Light& light, int resolution, raster::SimdLevel simd,
+                                      OccluderTexture memory, raster::Rasterizer* rasterizer) {
+    OccluderTexture texture = std::move(memory);
+    if (occluders.empty()) {   // drawWorld would draw every triangle
+        texture.map.size = 0;  // its memory kept for a later frame
+        return texture;
+    }
+    // Depth only, no culling (an occluder covers the light with either side), no offset: a
+    // texel is covered where the depth is below the cleared 1.
+    const LightView view = fitOccluderView(casters, occluders, light, resolution);
+    texture.map = renderDepthMap(casters, occluders, view, {resolution, DepthLayer::First, {}}, simd,
+                                 std::move(texture.map), rasterizer);
     return texture;
 }
 

@@ -22,8 +22,11 @@ struct OccluderTexture {
 };
 
 // The occluders are triangles of `casters`; with none the texture is empty (size 0,
-// nothing covered). Throws as fitOccluderView.
+// nothing covered). Throws as fitOccluderView. The texture is drawn in `memory`'s map (last
+// frame's, technique_history.h), reallocated only to grow, with `rasterizer` where given
+// (renderDepthMap).
 OccluderTexture renderOccluderTexture(const WorldGeometry& casters, std::span<const uint32_t> occluders,
-                                      const Light& light, int resolution, raster::SimdLevel simd);
+                                      const Light& light, int resolution, raster::SimdLevel simd,
+                                      OccluderTexture memory = {}, raster::Rasterizer* rasterizer = nullptr);
 
 }  // namespace shadowlab

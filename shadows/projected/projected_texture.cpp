@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shadows/debug_buffers.h"
+#include "shadows/kept_raster.h"
 #include "shadows/projected/instance_roles.h"
 #include "shadows/projected/occluder_texture.h"
 #include "shadows/projected/texture_projection.h"
@@ -34,6 +35,13 @@ const SettingsTable<ProjectedTextureSettings>& projectedTextureSettingsTable() {
     return table;
 }
 
+// The occluder texture and the rasterizer that draws it, kept between frames
+// (technique_history.h, kept_raster.h).
+struct KeptTexture {
+    OccluderTexture texture;
+    KeptRasterizer rasterizer;
+};
+
 ShadowOutputs runProjectedTexture(const ShadowInputs& in) {
     const ProjectedTextureSettings settings = projectedTextureSettingsTable().read(in.params);
     const Light light = pointLightFor(in.light);
@@ -45,7 +53,10 @@ ShadowOutputs runProjectedTexture(const ShadowInputs& in) {
     StageTimer timer;
     const std::vector<uint32_t> occluders = trianglesWithRole(in.casterWorld(), roles.occluder);
     timer.lap("roles");
-    const OccluderTexture texture = renderOccluderTexture(in.casterWorld(), occluders, light, resolution, in.simd);
+    KeptTexture& kept = in.kept().state<KeptTexture>();   // last frame's, its memory reused
+    kept.texture = renderOccluderTexture(in.casterWorld(), occluders, light, resolution, in.simd, std::move(kept.texture),
+                                         &kept.rasterizer.at(in.simd));
+    const OccluderTexture& texture = kept.texture;
     timer.lap("texture");
     ProjectedShadow shadow = projectOntoReceivers(in.gbuffer, in.receiverWorld(), roles.receiver, light, texture);
     timer.lap("projection");

@@ -49,6 +49,7 @@
 // (shadows/wedges/) run for the light's centre; step 6 is here.
 #include "shadows/volumes/shadow_volume.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -59,6 +60,7 @@
 #include "raster/rasterizer.h"
 #include "shading/lights.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/kept_raster.h"
 #include "shadows/silhouettes/silhouette.h"
 #include "shadows/silhouettes/silhouette_image.h"
 #include "shadows/stage_timer.h"
@@ -67,21 +69,29 @@
 namespace shadowlab {
 namespace {
 
-// Step 6, with the stencil as a signed count per pixel; rows in parallel (the count of
+// Step 6, with the stencil as a signed count per pixel, read in place from the framebuffer
+// (Framebuffer::stencil(): block-linear, `tilesX` tiles wide); rows in parallel (the count of
 // shadowed pixels is an integer sum, the same in any order).
-ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light,
-                                    const std::vector<uint8_t>& stencil) {
+ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light, const uint8_t* stencil, int tilesX) {
     ShadowOutputs out;
     out.visibility.resize(g.pixelCount());
     out.stencil.resize(g.pixelCount());
     const size_t shadowed = tbb::parallel_reduce(
         tbb::blocked_range<int>(0, g.height), size_t(0),
         [&](const tbb::blocked_range<int>& rows, size_t count) {
-            for (size_t k = g.index(0, rows.begin()); k < g.index(0, rows.end()); ++k) {
-                out.stencil[k] = float(int8_t(stencil[k]));   // wrapped count read as signed
-                const bool lit = g.hit[k] && stencil[k] == 0 && lightReaches(light, g.position[k], g.normal[k]);
-                out.visibility[k] = lit ? 1.0f : 0.0f;
-                count += g.hit[k] && !lit;
+            for (int j = rows.begin(); j < rows.end(); ++j) {
+                for (int x0 = 0; x0 < g.width; x0 += raster::kBlockSize) {
+                    // A block's row of pixels is contiguous: one storage index per block.
+                    const uint8_t* run = stencil + raster::blockLinearIndex(x0, j, tilesX);
+                    for (int i = x0; i < std::min(x0 + raster::kBlockSize, g.width); ++i) {
+                        const size_t k = g.index(i, j);
+                        const uint8_t s = run[i - x0];
+                        out.stencil[k] = float(int8_t(s));   // wrapped count read as signed
+                        const bool lit = g.hit[k] && s == 0 && lightReaches(light, g.position[k], g.normal[k]);
+                        out.visibility[k] = lit ? 1.0f : 0.0f;
+                        count += g.hit[k] && !lit;
+                    }
+                }
             }
             return count;
         },
@@ -89,6 +99,12 @@ ShadowOutputs visibilityFromStencil(const GBuffer& g, const Light& light,
     out.stats.push_back({"shadowed_pixels", double(shadowed)});
     return out;
 }
+
+// The stencil pass's framebuffer memory and rasterizer, kept between frames (kept_raster.h).
+struct StencilBuffers {
+    raster::FramebufferStorage memory;
+    KeptRasterizer rasterizer;
+};
 
 void writeDebug(const DebugBuffers& debug, const ShadowInputs& in, const ShadowOutputs& out, const ShadowVolume& volume,
                 const std::vector<float>& fill) {
@@ -106,15 +122,16 @@ ShadowOutputs runShadowVolume(const ShadowInputs& in, const StencilPassSettings&
     const Light light = pointLightFor(in.light);
     StageTimer timer;
     const DebugBuffers debug(in.debugDir, "shadow-volume");
-    raster::Framebuffer fb(camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
-    raster::Rasterizer rasterizer(in.simd);
-    const StencilPass pass = runStencilPass(rasterizer, fb, in, settings, homogeneousLight(light), timer);
+    StencilBuffers& kept = in.kept().state<StencilBuffers>();
+    KeptFramebuffer fb(kept.memory, camera.width, camera.height, {.stencil = true, .color = debug.enabled()});
+    raster::Rasterizer& rasterizer = kept.rasterizer.at(in.simd);
+    const StencilPass pass = runStencilPass(rasterizer, *fb, in, settings, homogeneousLight(light), timer);
 
-    ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb.stencilImage());
+    ShadowOutputs out = visibilityFromStencil(in.gbuffer, light, fb->stencil().data(), fb->tilesX());
     timer.lap("visibility");
     appendStencilPassStats(in, pass, out.stats);
     timer.appendTo(out.stats);
-    if (debug.enabled()) writeDebug(debug, in, out, pass.volume, fillPerPixel(rasterizer, fb, pass));
+    if (debug.enabled()) writeDebug(debug, in, out, pass.volume, fillPerPixel(rasterizer, *fb, pass));
     return out;
 }
 
