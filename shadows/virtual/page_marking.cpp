@@ -56,13 +56,14 @@ PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels) {
             page(texel.y + reachTexels)};
 }
 
-std::vector<PixelLevel> markPages(const GBuffer& g, const Camera& camera, const Light& sun, const LightFrame& frame,
-                                  const ClipmapSettings& clipmap, const MarkingSettings& settings, PageTable& table) {
+void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const LightFrame& frame,
+               const ClipmapSettings& clipmap, const MarkingSettings& settings, PageTable& table,
+               std::vector<PixelLevel>& levels) {
     const LevelChoice choice{glm::dvec3(camera.eye), glm::normalize(glm::dvec3(camera.target - camera.eye)),
                              2.0 / (clipFromViewD(camera)[1][1] * double(camera.height)), clipmap, table.windows(),
                              settings};
     const LightReach reaches(sun);
-    std::vector<PixelLevel> levels(g.pixelCount());
+    levels.assign(g.pixelCount(), PixelLevel{});
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
         for (int j = rows.begin(); j < rows.end(); ++j) {
             for (int i = 0; i < g.width; ++i) {
@@ -78,7 +79,6 @@ std::vector<PixelLevel> markPages(const GBuffer& g, const Camera& camera, const 
             }
         }
     });
-    return levels;
 }
 
 }  // namespace shadowlab::vsm

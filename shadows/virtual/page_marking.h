@@ -38,11 +38,13 @@ struct PixelLevel {
     glm::dvec2 texel{0.0};
 };
 
-// The marked pages go into `table` (after its beginFrame); returns each pixel's level
-// (kNoLevel where the pixel has no surface, the light does not reach it or no level holds
-// its box). Rows run in parallel; the result is the same for any thread count.
-std::vector<PixelLevel> markPages(const GBuffer& g, const Camera& camera, const Light& sun, const LightFrame& frame,
-                                  const ClipmapSettings& clipmap, const MarkingSettings& settings, PageTable& table);
+// The marked pages go into `table` (after its beginFrame), and each pixel's level into
+// `levels` (resized to the pixels; kNoLevel where the pixel has no surface, the light does
+// not reach it or no level holds its box): last frame's memory, where the technique keeps
+// it. Rows run in parallel; the result is the same for any thread count.
+void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const LightFrame& frame,
+               const ClipmapSettings& clipmap, const MarkingSettings& settings, PageTable& table,
+               std::vector<PixelLevel>& levels);
 
 // Every page the box of texel coordinate `texel` covers at a level: [first, last] in each axis.
 struct PageBox {

@@ -32,16 +32,15 @@ Footprint pageSquare(const ClipmapSettings& clipmap, const PageKey& key) {
     return {{key.x * side, -(key.y + 1) * side}, {(key.x + 1) * side, -key.y * side}};
 }
 
-// The triangles of the instances whose footprint meets the page, ascending.
-std::vector<uint32_t> pageCasters(const std::vector<InstanceRange>& ranges, const std::vector<Footprint>& footprints,
-                                  const Footprint& page) {
-    std::vector<uint32_t> triangles;
+// The triangles of the instances whose footprint meets the page, ascending, into `triangles`.
+void pageCasters(const std::vector<InstanceRange>& ranges, const std::vector<Footprint>& footprints,
+                 const Footprint& page, std::vector<uint32_t>& triangles) {
+    triangles.clear();
     for (size_t i = 0; i < ranges.size(); ++i) {
         const Footprint& f = footprints[i];
         if (f.hi.x < page.lo.x || f.lo.x > page.hi.x || f.hi.y < page.lo.y || f.lo.y > page.hi.y) continue;
         for (uint32_t t = 0; t < ranges[i].triangleCount; ++t) triangles.push_back(ranges[i].firstTriangle + t);
     }
-    return triangles;
 }
 
 }  // namespace
@@ -89,20 +88,24 @@ glm::dmat4 levelTexelFromWorld(const LightFrame& frame, const ClipmapSettings& c
 void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBoxes, const LightFrame& frame,
                  const ClipmapSettings& clipmap, const DepthRange& range, std::span<const PageKey> keys,
                  std::span<const int32_t> physical, const raster::PolygonOffset& offset, raster::SimdLevel simd,
-                 PagePool& pool) {
+                 PageDrawing& drawing, PagePool& pool) {
+    if (keys.empty()) return;
     const std::vector<InstanceRange> ranges = instanceRanges(casters.scene());
     std::vector<Footprint> footprints;
     for (const Aabb& box : casterBoxes) footprints.push_back(footprintOf(box, frame));
     const size_t pageSize = size_t(clipmap.pageTexels) * size_t(clipmap.pageTexels);
+    raster::Rasterizer& rasterizer = drawing.rasterizer.at(simd);
     for (size_t k = 0; k < keys.size(); ++k) {
-        const std::vector<uint32_t> triangles = pageCasters(ranges, footprints, pageSquare(clipmap, keys[k]));
-        const DepthMap map = renderDepthMap(casters.world(), triangles, pageView(frame, clipmap, range, keys[k]),
-                                            {clipmap.pageTexels, DepthLayer::First, offset}, simd);
-        const std::vector<float> image = map.image();
+        pageCasters(ranges, footprints, pageSquare(clipmap, keys[k]), drawing.triangles);
+        drawing.map = renderDepthMap(casters.world(), drawing.triangles, pageView(frame, clipmap, range, keys[k]),
+                                     {clipmap.pageTexels, DepthLayer::First, offset}, simd, std::move(drawing.map),
+                                     &rasterizer);
+        drawing.map.image(drawing.rows);
         // The pool grows to the highest physical page drawn: memory only for pages in use.
         const size_t end = (size_t(physical[k]) + 1) * pageSize;
         if (pool.depth.size() < end) pool.depth.resize(end);
-        std::copy(image.begin(), image.end(), pool.depth.begin() + std::ptrdiff_t(size_t(physical[k]) * pageSize));
+        std::copy(drawing.rows.begin(), drawing.rows.end(),
+                  pool.depth.begin() + std::ptrdiff_t(size_t(physical[k]) * pageSize));
     }
 }
 

@@ -13,6 +13,8 @@
 #include "raster/tile_kernels.h"
 #include "scenes/bounds.h"
 #include "scenes/prepared_scene.h"
+#include "shadows/depth_map.h"
+#include "shadows/kept_raster.h"
 #include "shadows/light_view.h"
 #include "shadows/virtual/clipmap.h"
 
@@ -46,11 +48,20 @@ struct PagePool {
     }
 };
 
+// What drawing pages keeps from frame to frame (technique_history.h): the map a page is
+// drawn in, the rasterizer, a page's casters and its rows.
+struct PageDrawing {
+    DepthMap map;
+    KeptRasterizer rasterizer;
+    std::vector<uint32_t> triangles;
+    std::vector<float> rows;
+};
+
 // Draws each page of `keys` into its physical page (physical[k] for keys[k]); `casterBoxes`
 // are the casters' instances' boxes, whose triangles are culled per page.
 void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBoxes, const LightFrame& frame,
                  const ClipmapSettings& clipmap, const DepthRange& range, std::span<const PageKey> keys,
                  std::span<const int32_t> physical, const raster::PolygonOffset& offset, raster::SimdLevel simd,
-                 PagePool& pool);
+                 PageDrawing& drawing, PagePool& pool);
 
 }  // namespace shadowlab::vsm

@@ -63,6 +63,8 @@ struct VirtualMapState {
     DepthRange range;
     std::vector<Aabb> casterBoxes;   // the last frame's, per instance
     uint64_t geometryVersion = 0;    // the prepared scene's when they were taken
+    std::vector<PixelLevel> levels;  // marking's, per pixel
+    PageDrawing drawing;
 };
 
 // The state ready for this frame: made on the first, reset when the light turned or the
@@ -93,14 +95,14 @@ void addStats(ShadowOutputs& out, const PageTable& table, size_t requested, size
               const LookupResult& lookup, const PagePool& pool) {
     out.stats.push_back({"virtual_map_flag", 1.0});
     out.stats.push_back({"requested_pages", double(requested)});
-    out.stats.push_back({"rendered_pages", double(rendered)});
+    out.stats.push_back({"cache_drawn_pages", double(rendered)});
     out.stats.push_back({"cache_hit_percent", requested ? 100.0 * double(requested - rendered) / double(requested) : 0.0});
-    out.stats.push_back({"invalidated_pages", double(invalidated)});
-    out.stats.push_back({"evicted_pages", double(table.evictedPages())});
-    out.stats.push_back({"overflowed_pages", double(table.overflowPages())});
-    out.stats.push_back({"resident_pages", double(table.residentPages())});
-    out.stats.push_back({"pool_bytes", double(pool.depth.size() * sizeof(float))});
-    out.stats.push_back({"missing_pixels", double(lookup.missingPixels)});
+    out.stats.push_back({"cache_invalidated_pages", double(invalidated)});
+    out.stats.push_back({"cache_evicted_pages", double(table.evictedPages())});
+    out.stats.push_back({"cache_overflowed_pages", double(table.overflowPages())});
+    out.stats.push_back({"cache_resident_pages", double(table.residentPages())});
+    out.stats.push_back({"cache_pool_bytes", double(pool.depth.size() * sizeof(float))});
+    out.stats.push_back({"cache_missing_pixels", double(lookup.missingPixels)});
     out.stats.push_back({"unleveled_pixels", double(lookup.unleveledPixels)});
 }
 
@@ -137,8 +139,9 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     const glm::dvec3 eye = frame.local(glm::dvec3(in.camera().eye));
     for (int l = s.clipmap.firstLevel; l <= s.clipmap.lastLevel; ++l) windows.push_back(placeLevel(s.clipmap, l, eye));
     table.beginFrame(windows);
-    const std::vector<PixelLevel> levels = markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap,
-                                                     {s.lodBias, biasReachTexels(s.bias)}, table);
+    markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap, {s.lodBias, biasReachTexels(s.bias)}, table,
+              state.levels);
+    const std::vector<PixelLevel>& levels = state.levels;
     timer.lap("marking");
     // 3. Memory, and the pages to render.
     const std::vector<PageKey> toRender = table.allocate();
@@ -147,7 +150,7 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     timer.lap("allocation");
     // 4. The pages drawn.
     renderPages(in.casters(), boxes, frame, s.clipmap, state.range, toRender, physical, polygonOffsetFor(s.bias),
-                in.simd, state.pool);
+                in.simd, state.drawing, state.pool);
     for (const PageKey& key : toRender) table.markRendered(key);
     timer.lap("pages");
     // 5. The lookup.

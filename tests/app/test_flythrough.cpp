@@ -123,17 +123,17 @@ TEST_CASE("a fly-through hands each setting's history on: a virtual map redraws 
         REQUIRE(it != f.stats.end());
         return it->value;
     };
-    CHECK(stat(frames[0], "rendered_pages") == stat(frames[0], "requested_pages"));
+    CHECK(stat(frames[0], "cache_drawn_pages") == stat(frames[0], "requested_pages"));
     for (size_t k = 1; k < frames.size(); ++k) {
-        CHECK(stat(frames[k], "invalidated_pages") > 0);
-        CHECK(stat(frames[k], "rendered_pages") > 0);
+        CHECK(stat(frames[k], "cache_invalidated_pages") > 0);
+        CHECK(stat(frames[k], "cache_drawn_pages") > 0);
         CHECK(stat(frames[k], "cache_hit_percent") > 50.0);
         CHECK(frames[k].errors.percentOfPixels(frames[k].errors.misclassified()) < 0.5);
     }
     const std::string csv = formatFlythroughCsv(results);
-    CHECK(csv.substr(0, csv.find('\n')).find(",rendered_pages,") != std::string::npos);
+    CHECK(csv.substr(0, csv.find('\n')).find(",cache_drawn_pages,") != std::string::npos);
     const nlohmann::json json = nlohmann::json::parse(formatFlythroughJson(results));
-    CHECK(json["series"][0]["frames"][2]["stats"]["rendered_pages"].get<double>() == stat(frames[2], "rendered_pages"));
+    CHECK(json["series"][0]["frames"][2]["stats"]["cache_drawn_pages"].get<double>() == stat(frames[2], "cache_drawn_pages"));
 }
 
 TEST_CASE("a fly-through follows the scene's path and writes its table, JSON, plots and frames") {

@@ -58,7 +58,8 @@ struct Marked {
 // One frame's marking into `table`, and the set of pages it requested.
 Marked mark(const SunView& view, const ClipmapSettings& c, const MarkingSettings& m, PageTable& table) {
     table.beginFrame(windowsAround(c, view.frame, view.scene.camera.eye));
-    Marked out{markPages(view.gbuffer, view.scene.camera, view.sun(), view.frame, c, m, table), {}};
+    Marked out;
+    markPages(view.gbuffer, view.scene.camera, view.sun(), view.frame, c, m, table, out.levels);
     for (const LevelWindow& w : table.windows())
         for (int32_t y = w.firstY; y < w.firstY + c.pagesPerSide(); ++y)
             for (int32_t x = w.firstX; x < w.firstX + c.pagesPerSide(); ++x)

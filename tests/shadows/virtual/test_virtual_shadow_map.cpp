@@ -62,9 +62,9 @@ TEST_CASE("virtual-shadow-map: the sun's hard shadow within the shadow maps' bou
     const test::Misclassified m = test::misclassified(s.gbuffer, s.reference, s.light(), out.visibility);
     CHECK(m.percent() <= 0.05);
     CHECK(test::misclassified(s.gbuffer, s.reference, s.light(), s.run("shadow-map").visibility).percent() <= 0.05);
-    CHECK(test::stat(out, "missing_pixels") == 0);
+    CHECK(test::stat(out, "cache_missing_pixels") == 0);
     CHECK(test::stat(out, "unleveled_pixels") == 0);
-    CHECK(test::stat(out, "rendered_pages") == test::stat(out, "requested_pages"));
+    CHECK(test::stat(out, "cache_drawn_pages") == test::stat(out, "requested_pages"));
 }
 
 TEST_CASE("virtual-shadow-map: the same bytes on every thread count and SIMD level") {
@@ -78,12 +78,12 @@ TEST_CASE("virtual-shadow-map: the same bytes on every thread count and SIMD lev
 TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what is new is rendered") {
     Sequence s;
     const Frame first = s.next();
-    CHECK(virtualStat(first, "rendered_pages") == virtualStat(first, "requested_pages"));
+    CHECK(virtualStat(first, "cache_drawn_pages") == virtualStat(first, "requested_pages"));
     CHECK(virtualStat(first, "requested_pages") > 4);
 
     // A still frame: every page is cached.
     const Frame still = s.next();
-    CHECK(virtualStat(still, "rendered_pages") == 0);
+    CHECK(virtualStat(still, "cache_drawn_pages") == 0);
     CHECK(virtualStat(still, "cache_hit_percent") == 100.0);
     CHECK(test::sameBytes(still.shadow.visibility, first.shadow.visibility));
 
@@ -92,8 +92,8 @@ TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what 
     camera.eye += glm::vec3(1.5f, 0.0f, 0.0f), camera.target += glm::vec3(1.5f, 0.0f, 0.0f);
     s.prepared.setCamera(camera);
     const Frame panned = s.next();
-    CHECK(virtualStat(panned, "rendered_pages") > 0);
-    CHECK(virtualStat(panned, "rendered_pages") < virtualStat(panned, "requested_pages"));
+    CHECK(virtualStat(panned, "cache_drawn_pages") > 0);
+    CHECK(virtualStat(panned, "cache_drawn_pages") < virtualStat(panned, "requested_pages"));
     CHECK(test::sameBytes(panned.shadow.visibility, s.alone()));
 
     // The sun turns: every page is drawn again.
@@ -101,7 +101,7 @@ TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what 
     lights[0].direction = glm::normalize(lights[0].direction + glm::vec3(0.2f, 0.0f, 0.0f));
     s.prepared.setLights(lights);
     const Frame turned = s.next();
-    CHECK(virtualStat(turned, "rendered_pages") == virtualStat(turned, "requested_pages"));
+    CHECK(virtualStat(turned, "cache_drawn_pages") == virtualStat(turned, "requested_pages"));
     CHECK(test::sameBytes(turned.shadow.visibility, s.alone()));
 }
 
@@ -115,9 +115,9 @@ TEST_CASE("virtual-shadow-map: a moving caster re-renders the pages under it, an
     const InstancePlacement placement{sphere, moved};
     REQUIRE(s.prepared.setInstanceTransforms({&placement, 1}) == 1);
     const Frame after = s.next();
-    CHECK(virtualStat(after, "invalidated_pages") > 0);
-    CHECK(virtualStat(after, "rendered_pages") > 0);
-    CHECK(virtualStat(after, "rendered_pages") < virtualStat(after, "requested_pages"));
+    CHECK(virtualStat(after, "cache_invalidated_pages") > 0);
+    CHECK(virtualStat(after, "cache_drawn_pages") > 0);
+    CHECK(virtualStat(after, "cache_drawn_pages") < virtualStat(after, "requested_pages"));
     CHECK(test::sameBytes(after.shadow.visibility, s.alone()));
     CHECK(!test::sameBytes(after.shadow.visibility, first.shadow.visibility));
 }
@@ -125,11 +125,11 @@ TEST_CASE("virtual-shadow-map: a moving caster re-renders the pages under it, an
 TEST_CASE("virtual-shadow-map: a pool too small overflows into counted, lit pixels") {
     const test::HardScene s(sunScene());
     const ShadowOutputs out = s.run("virtual-shadow-map", smallMap({{"pool-pages", "2"}}));
-    CHECK(test::stat(out, "overflowed_pages") > 0);
-    CHECK(test::stat(out, "missing_pixels") > 0);
+    CHECK(test::stat(out, "cache_overflowed_pages") > 0);
+    CHECK(test::stat(out, "cache_missing_pixels") > 0);
     size_t lit = 0;
     for (float v : out.visibility) lit += v == 1.0f;
-    CHECK(lit >= size_t(test::stat(out, "missing_pixels")));
+    CHECK(lit >= size_t(test::stat(out, "cache_missing_pixels")));
 }
 
 TEST_CASE("virtual-shadow-map: settings it cannot take are refused by name, and a local light gets shadow-map's frame") {
