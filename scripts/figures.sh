@@ -436,6 +436,11 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
         --out $std/$scene-soft > /dev/null
       columns="$columns $scene=$(ls $std/$scene/*.json $std/$scene-soft/*.json | paste -sd, -)"
     done
+    # A sun's techniques under a sun (hard/sun.json at its 640 x 400): the virtual map draws
+    # only for directional lights, and csm's cascades run.
+    $app sweep assets/scenes/hard/sun.json --technique shadow-map,csm,virtual-shadow-map --reference reference --width 640 --height 400 \
+      --threads 2 --runs 5 --out $std/sun > /dev/null
+    columns="$columns sun=$(ls $std/sun/*.json | paste -sd, -)"
     python3 scripts/technique_standard.py $columns
     ;;
   report)
