@@ -21,8 +21,9 @@ inline Scene smallScene(const std::string& nameOrPath, int width = 96, int heigh
 inline std::string sunScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/hard/sun.json"; }
 inline std::string skyScene() { return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/environment/sphere-sky.json"; }
 
-// csm's cascades are for a sun (any other light gets shadow-map's frame): test it on one.
-inline bool runsOnASun(const Technique& t) { return t.name == "csm"; }
+// csm's cascades and the virtual map's clipmap are for a sun (any other light gets
+// shadow-map's frame): test them on one.
+inline bool runsOnASun(const Technique& t) { return t.name == "csm" || t.name == "virtual-shadow-map"; }
 
 // Settings that keep each technique's frame small: few samples and lights.
 inline std::map<std::string, std::string> quickSettings(const Technique& t) {

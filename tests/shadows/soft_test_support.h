@@ -14,6 +14,7 @@
 #include "scenes/scene_file.h"
 #include "shadows/reference/reference.h"
 #include "shadows/technique.h"
+#include "tests/frame/technique_scenes.h"   // smallScene
 
 namespace shadowlab::test {
 
@@ -58,12 +59,6 @@ struct SoftScene {
 // A case of assets/scenes/soft by name, as a path from the source tree (ctest runs in the build tree).
 inline std::string softCase(const std::string& name) {
     return std::string(SHADOWLAB_SOURCE_DIR) + "/assets/scenes/soft/" + name + ".json";
-}
-
-inline Scene smallScene(const std::string& name, int width, int height) {
-    Scene scene = loadScene(name);
-    scene.camera.width = width, scene.camera.height = height;
-    return scene;
 }
 
 }  // namespace shadowlab::test

@@ -53,12 +53,11 @@ struct SmallScene {
     }
 };
 
-// csm's cascades and the virtual map's clipmap are for a sun: sphere-box under a sun; every
-// other technique runs on sphere-box with its disk light (hard-shadow techniques use its
-// centre).
+// A sun's techniques (test::runsOnASun) run on sphere-box under a sun; every other technique
+// on sphere-box with its disk light (hard-shadow techniques use its centre).
 SmallScene sceneFor(const std::string& technique) {
-    const bool sun = technique == "csm" || technique == "virtual-shadow-map";
-    return SmallScene(sun ? test::sunSphereBox(kWidth, kHeight) : test::smallScene("sphere-box", kWidth, kHeight));
+    return SmallScene(test::runsOnASun(findTechnique(technique)) ? test::sunSphereBox(kWidth, kHeight)
+                                                                 : test::smallScene("sphere-box", kWidth, kHeight));
 }
 
 std::vector<float> readBuffer(const fs::path& dir, const std::string& technique, const std::string& name) {

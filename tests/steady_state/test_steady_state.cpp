@@ -19,6 +19,7 @@
 #include "shadows/filtered/soft_shadow_map.h"
 #include "scenes/read_file.h"
 #include "scenes/scene_file.h"
+#include "tests/frame/technique_scenes.h"
 #include "tests/same_bits.h"
 #include "tests/steady_state/allocation_count.h"
 
@@ -30,10 +31,11 @@ bool endsWith(const std::string& s, const std::string& tail) {
     return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// The scene docs/data/technique_stages.json tests each technique on.
-std::string testSceneOf(const std::string& technique) {
-    const bool environment = technique.rfind("env-", 0) == 0 || technique.rfind("reference-env", 0) == 0;
-    return environment ? "environment/sphere-sky.json" : "sphere-box.json";
+// The environment techniques under a sky, a sun's (test::runsOnASun) under the sun, the
+// others on sphere-box.
+std::string testSceneOf(const Technique& technique) {
+    const bool environment = technique.name.rfind("env-", 0) == 0 || technique.name.rfind("reference-env", 0) == 0;
+    return environment ? "environment/sphere-sky.json" : test::runsOnASun(technique) ? "hard/sun.json" : "sphere-box.json";
 }
 
 Scene smallScene(const std::string& file, int width, int height) {
@@ -145,7 +147,7 @@ void checkThirdFrame(const PreparedScene& prepared, const Technique& technique,
 // next test changes the view.
 TEST_CASE("every technique's third frame of a still view gives the bytes of a frame alone") {
     for (const Technique& technique : techniques()) {
-        const PreparedScene prepared(smallScene(testSceneOf(technique.name), 24, 16));
+        const PreparedScene prepared(smallScene(testSceneOf(technique), 24, 16));
         for (int threads : {1, 2}) {
             const std::string what = technique.name + " at " + std::to_string(threads) + " threads";
             INFO(what);

@@ -10,18 +10,14 @@
 
 #include "frame/registry.h"
 #include "frame/render.h"
+#include "tests/frame/technique_scenes.h"
 #include "tests/shadows/shadow_test_support.h"
 
 using namespace shadowlab;
 
 namespace {
 
-Scene sunScene() {
-    Scene scene = loadScene(test::hardCase("sun"));
-    scene.camera.width = 320;
-    scene.camera.height = 200;
-    return scene;
-}
+Scene sunScene320() { return test::smallScene(test::sunScene(), 320, 200); }
 
 double virtualStat(const Frame& frame, const std::string& name) {
     for (const TechniqueStat& s : frame.shadow.stats)
@@ -39,7 +35,7 @@ std::map<std::string, std::string> smallMap(std::map<std::string, std::string> m
 
 // The sun case's frames with a history kept from one to the next, and frames alone.
 struct Sequence {
-    PreparedScene prepared{sunScene()};
+    PreparedScene prepared{sunScene320()};
     const Technique& vsm = findTechnique("virtual-shadow-map");
     FrameHistory history;
     Frame next() { return renderFrame(prepared, vsm, settings(&history)); }
@@ -55,7 +51,7 @@ struct Sequence {
 }  // namespace
 
 TEST_CASE("virtual-shadow-map: the sun's hard shadow within the shadow maps' bound, every pixel paged") {
-    const test::HardScene s(sunScene());
+    const test::HardScene s(sunScene320());
     const ShadowOutputs out = s.run("virtual-shadow-map");
     // Sampled, not exact: within 0.05 % of the hit pixels, as close as shadow-map at its
     // default 2048 texels (0.02 % here); a wrong level, page or offset misses by far more.
@@ -68,7 +64,7 @@ TEST_CASE("virtual-shadow-map: the sun's hard shadow within the shadow maps' bou
 }
 
 TEST_CASE("virtual-shadow-map: the same bytes on every thread count and SIMD level") {
-    const test::HardScene s(sunScene());
+    const test::HardScene s(sunScene320());
     const std::vector<float> twin = s.run("virtual-shadow-map", smallMap(), raster::SimdLevel::Scalar).visibility;
     test::checkSameBytesEverywhere(twin, [&](raster::SimdLevel level) {
         return s.run("virtual-shadow-map", smallMap(), level).visibility;
@@ -123,7 +119,7 @@ TEST_CASE("virtual-shadow-map: a moving caster re-renders the pages under it, an
 }
 
 TEST_CASE("virtual-shadow-map: a pool too small overflows into counted, lit pixels") {
-    const test::HardScene s(sunScene());
+    const test::HardScene s(sunScene320());
     const ShadowOutputs out = s.run("virtual-shadow-map", smallMap({{"pool-pages", "2"}}));
     CHECK(test::stat(out, "cache_overflowed_pages") > 0);
     CHECK(test::stat(out, "cache_missing_pixels") > 0);
