@@ -271,13 +271,17 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     return view;
 }
 
-bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const WorldGeometry& world,
-                 const LightFitOptions& options, LightView& view) {
+glm::dmat4 cubeFaceViewFromWorld(const glm::dvec3& apex, int face) {
     static const glm::dvec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     static const glm::dvec3 kUps[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    return glm::lookAtRH(apex, apex + kAxes[face], kUps[face]);
+}
+
+bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const WorldGeometry& world,
+                 const LightFitOptions& options, LightView& view) {
     const glm::dvec3 apex(light.position);
     view = {};
-    view.viewFromWorld = glm::lookAtRH(apex, apex + kAxes[face], kUps[face]);
+    view.viewFromWorld = cubeFaceViewFromWorld(apex, face);
     // The face's receivers: those inside its 90-degree pyramid.
     const auto add = [&](Bounds& b, size_t k) {
         const glm::dvec3 P(receivers.position[k]);

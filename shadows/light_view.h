@@ -71,6 +71,10 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
 bool fitCubeFace(const Light& light, int face, const GBuffer& receivers, const WorldGeometry& world,
                  const LightFitOptions& options, LightView& view);
 
+// Face k's view from a light at `apex`: looking along the face's axis with its fixed up
+// vector, the frame fitCubeFace fits in (and a virtual map's faces are drawn in).
+glm::dmat4 cubeFaceViewFromWorld(const glm::dvec3& apex, int face);
+
 // The faces' names, as debug buffers suffix them ("-face-px").
 inline constexpr const char* kCubeFaceNames[6] = {"px", "nx", "py", "ny", "pz", "nz"};
 
