@@ -16,14 +16,20 @@ int32_t wrap(int32_t x, int n) {
 
 }  // namespace
 
-PageTable::PageTable(const ClipmapSettings& settings, int poolPages)
-    : settings_(settings), pagesPerSide_(settings.pagesPerSide()) {
-    checkClipmapSettings(settings);
+PageLayout PageLayout::of(const ClipmapSettings& clipmap) {
+    checkClipmapSettings(clipmap);
+    return {clipmap.firstLevel, std::vector<int>(size_t(clipmap.levelCount()), clipmap.pagesPerSide())};
+}
+
+PageTable::PageTable(const ClipmapSettings& settings, int poolPages) : PageTable(PageLayout::of(settings), poolPages) {}
+
+PageTable::PageTable(const PageLayout& layout, int poolPages) : layout_(layout) {
     if (poolPages < 1 || poolPages > (1 << 20))
         throw std::invalid_argument("virtual shadow map: pool-pages must be in 1..1048576, got " +
                                     std::to_string(poolPages));
-    const size_t perLevel = size_t(pagesPerSide_) * size_t(pagesPerSide_);
-    slots_.resize(perLevel * size_t(settings.levelCount()));
+    firstSlot_.push_back(0);
+    for (int n : layout.pagesPerSide) firstSlot_.push_back(firstSlot_.back() + size_t(n) * size_t(n));
+    slots_.resize(firstSlot_.back());
     requestedNow_.assign(slots_.size(), 0);
     owner_.assign(size_t(poolPages), -1);
     lastRequested_.assign(size_t(poolPages), 0);
@@ -32,29 +38,29 @@ PageTable::PageTable(const ClipmapSettings& settings, int poolPages)
 }
 
 size_t PageTable::slotIndex(const PageKey& key) const {
-    const size_t n = size_t(pagesPerSide_);
-    return size_t(key.level - settings_.firstLevel) * n * n + size_t(wrap(key.y, pagesPerSide_)) * n +
-           size_t(wrap(key.x, pagesPerSide_));
+    const size_t l = size_t(key.level - layout_.firstLevel);
+    const int n = layout_.pagesPerSide[l];
+    return firstSlot_[l] + size_t(wrap(key.y, n)) * size_t(n) + size_t(wrap(key.x, n));
 }
 
 PageKey PageTable::windowPage(size_t slot) const {
-    const size_t n = size_t(pagesPerSide_);
-    const LevelWindow& w = windows_[slot / (n * n)];
-    const int32_t sx = int32_t(slot % n), sy = int32_t(slot / n % n);
+    const size_t l = size_t(std::upper_bound(firstSlot_.begin(), firstSlot_.end(), slot) - firstSlot_.begin()) - 1;
+    const int n = layout_.pagesPerSide[l];
+    const LevelWindow& w = windows_[l];
+    const int32_t sx = int32_t((slot - firstSlot_[l]) % size_t(n)), sy = int32_t((slot - firstSlot_[l]) / size_t(n));
     // The one page of the window in this slot: the window's first page plus how far the slot
     // lies past the first page's slot, round the torus.
-    return {w.level, w.firstX + wrap(sx - wrap(w.firstX, pagesPerSide_), pagesPerSide_),
-            w.firstY + wrap(sy - wrap(w.firstY, pagesPerSide_), pagesPerSide_)};
+    return {w.level, w.firstX + wrap(sx - wrap(w.firstX, n), n), w.firstY + wrap(sy - wrap(w.firstY, n), n)};
 }
 
 const PageTable::Slot* PageTable::holding(const PageKey& key) const {
-    if (key.level < settings_.firstLevel || key.level > settings_.lastLevel) return nullptr;
+    if (!holdsLevel(key.level)) return nullptr;
     const Slot& slot = slots_[slotIndex(key)];
     return slot.physical != kNoPhysicalPage && slot.key == key ? &slot : nullptr;
 }
 
 void PageTable::beginFrame(const std::vector<LevelWindow>& windows) {
-    if (int(windows.size()) != settings_.levelCount())
+    if (int(windows.size()) != layout_.levelCount())
         throw std::logic_error("PageTable::beginFrame: one window per level");
     windows_ = windows;
     ++frame_;
@@ -67,9 +73,13 @@ void PageTable::request(const PageKey& key) {
 }
 
 bool PageTable::requested(const PageKey& key) const {
-    if (windows_.empty() || key.level < settings_.firstLevel || key.level > settings_.lastLevel) return false;
+    if (windows_.empty() || !holdsLevel(key.level)) return false;
     const size_t slot = slotIndex(key);
     return requestedNow_[slot] && windowPage(slot) == key;
+}
+
+size_t PageTable::requestedPages() const {
+    return size_t(std::count(requestedNow_.begin(), requestedNow_.end(), uint8_t(1)));
 }
 
 void PageTable::release(Slot& slot) {
@@ -103,7 +113,6 @@ int32_t PageTable::takePhysicalPage() {
 }
 
 std::vector<PageKey> PageTable::allocate() {
-    const size_t perLevel = size_t(pagesPerSide_) * size_t(pagesPerSide_);
     // First every requested page that has memory is marked as in use this frame, so that
     // making room for the others never evicts one of them.
     for (size_t s = 0; s < slots_.size(); ++s) {
@@ -115,8 +124,8 @@ std::vector<PageKey> PageTable::allocate() {
         if (slot.physical != kNoPhysicalPage) lastRequested_[size_t(slot.physical)] = frame_;
     }
     std::vector<PageKey> toRender;
-    for (int level = settings_.levelCount() - 1; level >= 0; --level) {
-        for (size_t s = size_t(level) * perLevel; s < size_t(level + 1) * perLevel; ++s) {
+    for (int level = layout_.levelCount() - 1; level >= 0; --level) {
+        for (size_t s = firstSlot_[size_t(level)]; s < firstSlot_[size_t(level) + 1]; ++s) {
             if (!requestedNow_[s]) continue;
             Slot& slot = slots_[s];
             if (slot.physical == kNoPhysicalPage) {
@@ -147,10 +156,9 @@ void PageTable::invalidate(const PageKey& key) {
 }
 
 int PageTable::invalidateBox(int level, int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
-    const size_t perLevel = size_t(pagesPerSide_) * size_t(pagesPerSide_);
-    const size_t first = size_t(level - settings_.firstLevel) * perLevel;
+    const size_t l = size_t(level - layout_.firstLevel);
     int invalidated = 0;
-    for (size_t s = first; s < first + perLevel; ++s) {
+    for (size_t s = firstSlot_[l]; s < firstSlot_[l + 1]; ++s) {
         Slot& slot = slots_[s];
         const bool inside = slot.key.x >= x0 && slot.key.x <= x1 && slot.key.y >= y0 && slot.key.y <= y1;
         if (slot.physical == kNoPhysicalPage || !slot.valid || !inside) continue;

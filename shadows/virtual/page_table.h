@@ -2,10 +2,12 @@
 // maps.md): which pages of the virtual map have memory, which of those hold a depth that
 // is still right (valid), and which page to give up when the pool is full.
 //
-// The table of a level is pagesPerSide^2 slots addressed toroidally, slot (px mod n, py mod
-// n) for page (px, py), each tagged with the page it holds: a level's window spans n pages
-// a side, so no two pages of one window share a slot, and a window that pans keeps every
-// page it still covers in its slot (the clipmap's toroidal update, Tanner et al. 1998).
+// The table of a level is n^2 slots (n its pages a side: the same for every level of a
+// clipmap, halving from mip to mip of a local light's face, PageLayout) addressed
+// toroidally, slot (px mod n, py mod n) for page (px, py), each tagged with the page it
+// holds: a level's window spans n pages a side, so no two pages of one window share a slot,
+// and a window that pans keeps every page it still covers in its slot (the clipmap's
+// toroidal update, Tanner et al. 1998). A mip's window is the whole mip, at page (0, 0).
 //
 // A frame: beginFrame() with the levels' windows, request() every page a lookup will read
 // (page_marking.h; only pages inside their level's window), then allocate(), which gives every requested page without memory a physical page, taking a
@@ -27,10 +29,23 @@ namespace shadowlab::vsm {
 
 inline constexpr int32_t kNoPhysicalPage = -1;
 
+// The levels a table holds: level firstLevel + i has pagesPerSide[i] pages a side in its
+// window (a clipmap's levels, or a local light's faces' mips, mip_chain.h).
+struct PageLayout {
+    int firstLevel = 0;
+    std::vector<int> pagesPerSide;
+
+    static PageLayout of(const ClipmapSettings& clipmap);
+    int levelCount() const { return int(pagesPerSide.size()); }
+    bool operator==(const PageLayout&) const = default;
+};
+
 class PageTable {
 public:
     // `poolPages` physical pages of pageTexels^2 texels each.
     PageTable(const ClipmapSettings& settings, int poolPages);
+    PageTable(const PageLayout& layout, int poolPages);
+    const PageLayout& layout() const { return layout_; }
 
     // The levels' windows this frame, one per level from the first.
     void beginFrame(const std::vector<LevelWindow>& windows);
@@ -39,6 +54,7 @@ public:
     // threads at once: it sets a flag.
     void request(const PageKey& key);
     bool requested(const PageKey& key) const;
+    size_t requestedPages() const;   // this frame's, so far
 
     // Gives memory to the requested pages, coarse levels first (so that a full pool drops
     // fine pages, never the coarse ones a lookup falls back to), and returns the requested
@@ -69,16 +85,17 @@ private:
         int32_t physical = kNoPhysicalPage;
         bool valid = false;
     };
+    bool holdsLevel(int level) const { return level >= layout_.firstLevel && level - layout_.firstLevel < layout_.levelCount(); }
     size_t slotIndex(const PageKey& key) const;
     const Slot* holding(const PageKey& key) const;   // the slot, if it holds key
     PageKey windowPage(size_t slot) const;           // the page of this frame's window at a slot
     int32_t takePhysicalPage();                      // free, else least recently requested; or none
     void release(Slot& slot);
 
-    ClipmapSettings settings_;
-    int pagesPerSide_;
+    PageLayout layout_;
+    std::vector<size_t> firstSlot_;        // per level, and the slot count at the end
     std::vector<LevelWindow> windows_;
-    std::vector<Slot> slots_;              // per level, pagesPerSide^2
+    std::vector<Slot> slots_;              // per level, its pagesPerSide^2
     std::vector<uint8_t> requestedNow_;    // per slot, this frame
     std::vector<int64_t> owner_;           // per physical page: its slot, or -1 (free)
     std::vector<uint64_t> lastRequested_;  // per physical page: the frame it was last requested in
