@@ -24,6 +24,7 @@
 #include "shadows/virtual/page_marking.h"
 #include "shadows/virtual/page_rendering.h"
 #include "shadows/virtual/virtual_debug.h"
+#include "shadows/virtual/virtual_stats.h"
 
 namespace shadowlab::vsm {
 namespace {
@@ -91,21 +92,6 @@ int prepareState(VirtualMapState& state, const VirtualMapSettings& s, const glm:
     return invalidateUnder(moved, frame, s.clipmap, *state.table);
 }
 
-void addStats(ShadowOutputs& out, const PageTable& table, size_t requested, size_t rendered, int invalidated,
-              const LookupResult& lookup, const PagePool& pool) {
-    out.stats.push_back({"virtual_map_flag", 1.0});
-    out.stats.push_back({"requested_pages", double(requested)});
-    out.stats.push_back({"cache_drawn_pages", double(rendered)});
-    out.stats.push_back({"cache_hit_percent", requested ? 100.0 * double(requested - rendered) / double(requested) : 0.0});
-    out.stats.push_back({"cache_invalidated_pages", double(invalidated)});
-    out.stats.push_back({"cache_evicted_pages", double(table.evictedPages())});
-    out.stats.push_back({"cache_overflowed_pages", double(table.overflowPages())});
-    out.stats.push_back({"cache_resident_pages", double(table.residentPages())});
-    out.stats.push_back({"cache_pool_bytes", double(pool.depth.size() * sizeof(float))});
-    out.stats.push_back({"cache_missing_pixels", double(lookup.missingPixels)});
-    out.stats.push_back({"unleveled_pixels", double(lookup.unleveledPixels)});
-}
-
 // A spot, point or area light (its centre): `shadow-map`'s frame with the same bias, its
 // stats and buffers, as `csm` does for a light it has no cascades for; the mip chains of
 // local lights are not built yet.
@@ -159,11 +145,7 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     timer.lap("lookup");
     ShadowOutputs out;
     out.visibility = std::move(lookup.visibility);
-    size_t requested = 0;
-    for (const LevelWindow& w : windows)
-        for (int32_t y = w.firstY; y < w.firstY + s.clipmap.pagesPerSide(); ++y)
-            for (int32_t x = w.firstX; x < w.firstX + s.clipmap.pagesPerSide(); ++x) requested += table.requested({w.level, x, y});
-    addStats(out, table, requested, toRender.size(), invalidated, lookup, state.pool);
+    addPageStats(out, table, toRender.size(), invalidated, lookup, state.pool);
     timer.appendTo(out.stats);
     writeVirtualDebug(DebugBuffers(in.debugDir, kVirtualMapName), in.gbuffer, in.camera(), s.clipmap, levels, table, toRender, state.pool);
     return out;
