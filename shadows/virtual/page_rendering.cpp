@@ -85,6 +85,19 @@ glm::dmat4 levelTexelFromWorld(const LightFrame& frame, const ClipmapSettings& c
     return m;
 }
 
+void drawPage(const PreparedScene& casters, std::span<const uint32_t> triangles, const LightView& view,
+              int32_t physical, const raster::PolygonOffset& offset, raster::SimdLevel simd, PageDrawing& drawing,
+              PagePool& pool) {
+    const size_t pageSize = size_t(pool.pageTexels) * size_t(pool.pageTexels);
+    drawing.map = renderDepthMap(casters.world(), triangles, view, {pool.pageTexels, DepthLayer::First, offset}, simd,
+                                 std::move(drawing.map), &drawing.rasterizer.at(simd));
+    drawing.map.image(drawing.rows);
+    // The pool grows to the highest physical page drawn: memory only for pages in use.
+    const size_t end = (size_t(physical) + 1) * pageSize;
+    if (pool.depth.size() < end) pool.depth.resize(end);
+    std::copy(drawing.rows.begin(), drawing.rows.end(), pool.depth.begin() + std::ptrdiff_t(size_t(physical) * pageSize));
+}
+
 void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBoxes, const LightFrame& frame,
                  const ClipmapSettings& clipmap, const DepthRange& range, std::span<const PageKey> keys,
                  std::span<const int32_t> physical, const raster::PolygonOffset& offset, raster::SimdLevel simd,
@@ -93,19 +106,10 @@ void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBo
     const std::vector<InstanceRange> ranges = instanceRanges(casters.scene());
     std::vector<Footprint> footprints;
     for (const Aabb& box : casterBoxes) footprints.push_back(footprintOf(box, frame));
-    const size_t pageSize = size_t(clipmap.pageTexels) * size_t(clipmap.pageTexels);
-    raster::Rasterizer& rasterizer = drawing.rasterizer.at(simd);
     for (size_t k = 0; k < keys.size(); ++k) {
         pageCasters(ranges, footprints, pageSquare(clipmap, keys[k]), drawing.triangles);
-        drawing.map = renderDepthMap(casters.world(), drawing.triangles, pageView(frame, clipmap, range, keys[k]),
-                                     {clipmap.pageTexels, DepthLayer::First, offset}, simd, std::move(drawing.map),
-                                     &rasterizer);
-        drawing.map.image(drawing.rows);
-        // The pool grows to the highest physical page drawn: memory only for pages in use.
-        const size_t end = (size_t(physical[k]) + 1) * pageSize;
-        if (pool.depth.size() < end) pool.depth.resize(end);
-        std::copy(drawing.rows.begin(), drawing.rows.end(),
-                  pool.depth.begin() + std::ptrdiff_t(size_t(physical[k]) * pageSize));
+        drawPage(casters, drawing.triangles, pageView(frame, clipmap, range, keys[k]), physical[k], offset, simd,
+                 drawing, pool);
     }
 }
 

@@ -57,6 +57,13 @@ struct PageDrawing {
     std::vector<float> rows;
 };
 
+// Draws `triangles` of the casters (ascending) with `view` as a page of pool.pageTexels
+// texels a side into physical page `physical`, growing the pool to hold it: the draw every
+// page of any light's virtual map makes.
+void drawPage(const PreparedScene& casters, std::span<const uint32_t> triangles, const LightView& view,
+              int32_t physical, const raster::PolygonOffset& offset, raster::SimdLevel simd, PageDrawing& drawing,
+              PagePool& pool);
+
 // Draws each page of `keys` into its physical page (physical[k] for keys[k]); `casterBoxes`
 // are the casters' instances' boxes, whose triangles are culled per page.
 void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBoxes, const LightFrame& frame,
