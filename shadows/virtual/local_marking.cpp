@@ -1,0 +1,66 @@
+#include "shadows/virtual/local_marking.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "scenes/camera.h"
+#include "shading/lights.h"
+
+namespace shadowlab::vsm {
+
+int matchingMip(const MipChain& chain, double footprint, double along, int lodBias) {
+    // texel(m) = 2 along tan 2^m / resolution <= footprint: m = floor(log2(footprint resolution
+    // / (2 along tan))), the binary exponent, exact (frexp, no libm approximation).
+    int exponent = 0;
+    const double mantissa = std::frexp(footprint * double(chain.resolution) / (2.0 * along * chain.tanHalf), &exponent);
+    // A pixel wider than the coarsest texel reads the coarsest mip; one finer than mip 0's,
+    // or at no depth, mip 0.
+    const int mip = mantissa > 0.0 && std::isfinite(mantissa) ? exponent - 1 + lodBias : 0;
+    return std::clamp(mip, 0, chain.mipCount - 1);
+}
+
+glm::dvec2 texelIn(const glm::dmat4& texelFromWorld, const glm::dvec3& P) {
+    const glm::dvec4 h = texelFromWorld * glm::dvec4(P, 1.0);
+    return glm::dvec2(glm::dvec3(h) / h.w);
+}
+
+PageBox localPagesRead(const MipChain& chain, int mip, const glm::dvec2& texel, double reachTexels) {
+    const PageBox box = pagesRead(texel, reachTexels, chain.pageTexels);
+    const int32_t last = chain.pagesPerSide(mip) - 1;
+    const auto clamp = [&](int32_t p) { return std::clamp(p, int32_t(0), last); };
+    return {clamp(box.x0), clamp(box.y0), clamp(box.x1), clamp(box.y1)};
+}
+
+void markLocalPages(const GBuffer& g, const Camera& camera, const Light& light, const MipChain& chain,
+                    const MarkingSettings& settings, PageTable& table, std::vector<PixelLevel>& levels) {
+    const glm::dvec3 eye(camera.eye), forward = glm::normalize(glm::dvec3(camera.target - camera.eye));
+    const double footprintPerDepth = 2.0 / (clipFromViewD(camera)[1][1] * double(camera.height));
+    std::vector<glm::dmat4> texelFromWorld;   // per level
+    for (int level = 0; level < chain.levelCount(); ++level) texelFromWorld.push_back(chain.texelFromWorld(level));
+    const LightReach reaches(light);
+    levels.assign(g.pixelCount(), PixelLevel{});
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        for (int j = rows.begin(); j < rows.end(); ++j) {
+            for (int i = 0; i < g.width; ++i) {
+                const size_t k = g.index(i, j);
+                if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
+                const glm::dvec3 P(g.position[k]);
+                const int face = chain.faceHolding(P);
+                if (face < 0) continue;
+                const double along = -(chain.faces[size_t(face)] * glm::dvec4(P, 1.0)).z;
+                const int mip = matchingMip(chain, footprintPerDepth * glm::dot(P - eye, forward), along, settings.lodBias);
+                const int level = chain.levelOf(face, mip);
+                const glm::dvec2 texel = texelIn(texelFromWorld[size_t(level)], P);
+                levels[k] = {int8_t(level), texel};
+                const PageBox box = localPagesRead(chain, mip, texel, settings.reachTexels);
+                for (int32_t py = box.y0; py <= box.y1; ++py)
+                    for (int32_t px = box.x0; px <= box.x1; ++px) table.request({level, px, py});
+            }
+        }
+    });
+}
+
+}  // namespace shadowlab::vsm
