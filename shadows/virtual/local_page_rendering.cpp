@@ -1,0 +1,30 @@
+#include "shadows/virtual/local_page_rendering.h"
+
+namespace shadowlab::vsm {
+
+bool boxMeetsPage(const Aabb& box, const glm::dmat4& texelFromWorld, const PageKey& key, int pageTexels) {
+    bool behind = false;
+    const std::optional<TexelRect> rect = texelRectOf(box, texelFromWorld, behind);
+    if (behind) return false;
+    if (!rect) return true;
+    const double x0 = double(key.x) * pageTexels, y0 = double(key.y) * pageTexels;
+    return rect->hi.x >= x0 && rect->lo.x <= x0 + pageTexels && rect->hi.y >= y0 && rect->lo.y <= y0 + pageTexels;
+}
+
+void renderLocalPages(const PreparedScene& casters, const std::vector<Aabb>& casterBoxes, const MipChain& chain,
+                      std::span<const PageKey> keys, std::span<const int32_t> physical,
+                      const raster::PolygonOffset& offset, raster::SimdLevel simd, PageDrawing& drawing, PagePool& pool) {
+    if (keys.empty()) return;
+    const std::vector<InstanceRange> ranges = instanceRanges(casters.scene());
+    for (size_t k = 0; k < keys.size(); ++k) {
+        const glm::dmat4 texelFromWorld = chain.texelFromWorld(keys[k].level);
+        drawing.triangles.clear();
+        for (size_t i = 0; i < ranges.size(); ++i) {
+            if (!boxMeetsPage(casterBoxes[i], texelFromWorld, keys[k], chain.pageTexels)) continue;
+            for (uint32_t t = 0; t < ranges[i].triangleCount; ++t) drawing.triangles.push_back(ranges[i].firstTriangle + t);
+        }
+        drawPage(casters, drawing.triangles, chain.pageView(keys[k]), physical[k], offset, simd, drawing, pool);
+    }
+}
+
+}  // namespace shadowlab::vsm
