@@ -2,11 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "scenes/camera.h"
 
 namespace shadowlab::vsm {
 namespace {
+
+// A page's state in the page-table images (the header's key); "rendered this frame" the caller sets.
+float pageState(const PageTable& table, const PageKey& key) {
+    if (table.physical(key) == kNoPhysicalPage) return 0.0f;
+    return !table.valid(key) ? 0.25f : table.requested(key) ? 0.75f : 0.5f;
+}
 
 std::vector<float> pageTableImage(const ClipmapSettings& clipmap, const PageTable& table,
                                   const std::vector<PageKey>& rendered) {
@@ -15,13 +22,8 @@ std::vector<float> pageTableImage(const ClipmapSettings& clipmap, const PageTabl
     for (size_t l = 0; l < table.windows().size(); ++l) {
         const LevelWindow& w = table.windows()[l];
         for (int y = 0; y < n; ++y) {
-            for (int x = 0; x < n; ++x) {
-                const PageKey key{w.level, w.firstX + x, w.firstY + y};
-                float state = 0.0f;
-                if (table.physical(key) != kNoPhysicalPage)
-                    state = !table.valid(key) ? 0.25f : table.requested(key) ? 0.75f : 0.5f;
-                image[(l * size_t(n) + size_t(y)) * size_t(n) + size_t(x)] = state;
-            }
+            for (int x = 0; x < n; ++x)
+                image[(l * size_t(n) + size_t(y)) * size_t(n) + size_t(x)] = pageState(table, {w.level, w.firstX + x, w.firstY + y});
         }
     }
     for (const PageKey& key : rendered) {
@@ -46,7 +48,64 @@ std::vector<float> poolAtlas(const PagePool& pool, int& side) {
     return atlas;
 }
 
+// Face f's mips stacked from mip 0 down, each left-aligned in mip 0's width; the rows of
+// mip m start at firstRow[m].
+std::vector<float> facePageTableImage(const MipChain& chain, int face, const PageTable& table,
+                                      const std::vector<PageKey>& rendered, int& rows) {
+    const int n0 = chain.pagesPerSide(0);
+    std::vector<int> firstRow{0};
+    for (int mip = 0; mip < chain.mipCount; ++mip) firstRow.push_back(firstRow.back() + chain.pagesPerSide(mip));
+    rows = firstRow.back();
+    std::vector<float> image(size_t(n0) * size_t(rows), 0.0f);
+    const auto at = [&](const PageKey& key) -> float& {
+        return image[size_t(firstRow[size_t(chain.mipOfLevel(key.level))] + key.y) * size_t(n0) + size_t(key.x)];
+    };
+    for (int mip = 0; mip < chain.mipCount; ++mip) {
+        const int level = chain.levelOf(face, mip);
+        for (int32_t y = 0; y < chain.pagesPerSide(mip); ++y)
+            for (int32_t x = 0; x < chain.pagesPerSide(mip); ++x) at({level, x, y}) = pageState(table, {level, x, y});
+    }
+    for (const PageKey& key : rendered)
+        if (chain.faceOfLevel(key.level) == face) at(key) = 1.0f;
+    return image;
+}
+
+void writePool(const DebugBuffers& debug, const PagePool& pool) {
+    int side = 0;
+    const std::vector<float> atlas = poolAtlas(pool, side);
+    debug.write("pool", side, side, atlas, 0.0f, 1.0f);
+}
+
 }  // namespace
+
+void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera, const MipChain& chain,
+                            const std::vector<PixelLevel>& levels, const PageTable& table,
+                            const std::vector<PageKey>& rendered, const PagePool& pool) {
+    if (!debug.enabled()) return;
+    std::vector<float> face(g.pixelCount(), -1.0f), mip(g.pixelCount(), -1.0f), texelsPerPixel(g.pixelCount(), 0.0f);
+    const glm::dvec3 eye(camera.eye), forward = glm::normalize(glm::dvec3(camera.target - camera.eye));
+    const double perDepth = 2.0 / (clipFromViewD(camera)[1][1] * double(camera.height));
+    for (size_t k = 0; k < g.pixelCount(); ++k) {
+        if (levels[k].level == kNoLevel) continue;
+        const int f = chain.faceOfLevel(levels[k].level), m = chain.mipOfLevel(levels[k].level);
+        const glm::dvec3 P(g.position[k]);
+        face[k] = float(chain.faceCount() == 6 ? f : 0), mip[k] = float(m);
+        // The mip's texel across the face's beam at the pixel's depth along its axis.
+        const double along = -(chain.faces[size_t(f)] * glm::dvec4(P, 1.0)).z;
+        const double texel = 2.0 * along * chain.tanHalf / double(chain.mipTexels(m));
+        texelsPerPixel[k] = float(perDepth * glm::dot(P - eye, forward) / texel);
+    }
+    debug.write("face", g.width, g.height, face, -1.0f, 5.0f);
+    debug.write("mip", g.width, g.height, mip, -1.0f, float(chain.mipCount - 1));
+    debug.write("texels-per-pixel", g.width, g.height, texelsPerPixel, 0.0f, 4.0f);
+    for (int f = 0; f < chain.faceCount(); ++f) {
+        int rows = 0;
+        const std::vector<float> image = facePageTableImage(chain, f, table, rendered, rows);
+        const std::string name = chain.faceCount() == 6 ? std::string("page-table-face-") + kCubeFaceNames[f] : "page-table";
+        debug.write(name, chain.pagesPerSide(0), rows, image, 0.0f, 1.0f);
+    }
+    writePool(debug, pool);
+}
 
 void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera,
                        const ClipmapSettings& clipmap, const std::vector<PixelLevel>& levels, const PageTable& table,
@@ -65,9 +124,7 @@ void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera
     debug.write("texels-per-pixel", g.width, g.height, texelsPerPixel, 0.0f, 4.0f);
     const int n = clipmap.pagesPerSide();
     debug.write("page-table", n, n * clipmap.levelCount(), pageTableImage(clipmap, table, rendered), 0.0f, 1.0f);
-    int side = 0;
-    const std::vector<float> atlas = poolAtlas(pool, side);
-    debug.write("pool", side, side, atlas, 0.0f, 1.0f);
+    writePool(debug, pool);
 }
 
 }  // namespace shadowlab::vsm

@@ -8,6 +8,13 @@
 //                    read this frame, 0.75 read from the cache, 1 rendered this frame
 //   pool             the physical pages in use as an atlas, page p at column p mod n, row
 //                    p / n of an n x n grid, window depth
+// For a spot or point light's mip chains (mip_chain.h), in place of level and page-table:
+//   face             per pixel, the face read (0..5: kCubeFaceNames, 0 for a spot; -1: none)
+//   mip              per pixel, the mip read (-1: none)
+//   texels-per-pixel per pixel, the mip's texels across the pixel's footprint
+//   page-table-face-<f>  (page-table for a spot's one face) every mip's table of the face,
+//                    stacked from mip 0 down, each mip left-aligned in mip 0's width, the
+//                    states as above
 #pragma once
 
 #include <vector>
@@ -15,6 +22,7 @@
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
 #include "shadows/debug_buffers.h"
+#include "shadows/virtual/mip_chain.h"
 #include "shadows/virtual/page_marking.h"
 #include "shadows/virtual/page_rendering.h"
 #include "shadows/virtual/page_table.h"
@@ -25,5 +33,8 @@ namespace shadowlab::vsm {
 void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera,
                        const ClipmapSettings& clipmap, const std::vector<PixelLevel>& levels, const PageTable& table,
                        const std::vector<PageKey>& rendered, const PagePool& pool);
+void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera, const MipChain& chain,
+                            const std::vector<PixelLevel>& levels, const PageTable& table,
+                            const std::vector<PageKey>& rendered, const PagePool& pool);
 
 }  // namespace shadowlab::vsm
