@@ -8,7 +8,8 @@
 //   6. on request, the buffers (virtual_debug.h).
 // The page table, the pool and what the last frame saw are the technique's state in its
 // history (technique_history.h): a frame that stands alone starts from nothing and renders
-// every page it marks.
+// every page it marks. A spot, point or area light takes the same stages through its faces'
+// mip chains instead (local_virtual_map.h).
 #include "shadows/virtual/virtual_shadow_map.h"
 
 #include <optional>
@@ -17,8 +18,8 @@
 #include "scenes/bounds.h"
 #include "shadows/debug_buffers.h"
 #include "shadows/maps/shadow_map_settings.h"
-#include "shadows/maps/shadow_map_techniques.h"
 #include "shadows/stage_timer.h"
+#include "shadows/virtual/local_virtual_map.h"
 #include "shadows/virtual/page_invalidation.h"
 #include "shadows/virtual/page_lookup.h"
 #include "shadows/virtual/page_marking.h"
@@ -92,19 +93,11 @@ int prepareState(VirtualMapState& state, const VirtualMapSettings& s, const glm:
     return invalidateUnder(moved, frame, s.clipmap, *state.table);
 }
 
-// A spot, point or area light (its centre): `shadow-map`'s frame with the same bias, its
-// stats and buffers, as `csm` does for a light it has no cascades for; the mip chains of
-// local lights are not built yet.
-ShadowOutputs localLightShadows(const ShadowInputs& in, const VirtualMapSettings& s) {
-    ShadowOutputs out = runShadowMap(in, ShadowMapTechniqueSettings{.map = {.bias = s.bias}});
-    out.stats.insert(out.stats.begin(), {"virtual_map_flag", 0.0});
-    return out;
-}
-
 ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     const VirtualMapSettings s = virtualMapSettingsTable().read(in.params);
     checkClipmapSettings(s.clipmap);
-    if (in.light.type != LightType::Directional) return localLightShadows(in, s);
+    if (in.light.type != LightType::Directional)
+        return runLocalVirtualMap(in, {s.clipmap, s.poolPages, s.lodBias, s.bias});
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);
     StageTimer timer;
     VirtualMapState& state = in.kept().state<VirtualMapState>();
@@ -160,7 +153,8 @@ Technique virtualShadowMapTechnique() {
     using namespace vsm;
     return {.name = kVirtualMapName,
             .description = "virtual shadow map (Fernando et al. 2001, Lefohn et al. 2007, UE5's layout): a sun's "
-                           "clipmap of 16k levels in pages, only the marked pages rendered, cached across frames",
+                           "clipmap of 16k levels, or a local light's faces' mip chains, in pages; only the marked "
+                           "pages rendered, cached across frames",
             .params = virtualMapSettingsTable().specs(),
             .run = runVirtualShadowMap,
             .referenceName = "reference",
