@@ -95,6 +95,7 @@ const std::vector<Kept>& keptTechniques() {
         {"shadow-map", "hard/sun.json", {{"warp", "lispsm"}}},
         {"csm", "hard/sun.json", {}},
         {"virtual-shadow-map", "hard/sun.json", {}},
+        {"virtual-shadow-map", "sphere-box.json", {}},   // the disk light's centre: six faces' mip chains
         {"projected-texture", "sphere-box.json", {}},
         {"shadow-volume", "sphere-box.json", {}},
         {"vsm", "sphere-box.json", {}},
