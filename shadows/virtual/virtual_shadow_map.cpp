@@ -44,7 +44,8 @@ const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
     static const auto table =
         SettingsTable<S>()
             .integer("virtual-resolution", member(&S::clipmap, &ClipmapSettings::resolution), 256, 1 << 20,
-                     "texels a side of each level (a power of two); only marked pages are drawn")
+                     "texels a side of each level, and of a local light's faces at mip 0 (a power of two); only "
+                     "marked pages are drawn")
             .integer("page-texels", member(&S::clipmap, &ClipmapSettings::pageTexels), 16, 4096,
                      "texels a side of a page (a power of two)")
             .integer("first-level", member(&S::clipmap, &ClipmapSettings::firstLevel), -40, 40,
