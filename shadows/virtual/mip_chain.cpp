@@ -86,9 +86,11 @@ DepthRange depthRangeAround(const std::vector<Aabb>& boxes, const glm::dvec3& ap
     const double nearestAlong = nearest / std::sqrt(1.0 + 2.0 * tanHalf * tanHalf);
     const double zFar = 1.1 * farthest + 0.01;
     // The floor is the widened far's in both forms, so that a kept range still holds a tight
-    // one whose near is the floor.
+    // one whose near is the floor. Half the nearest distance lets a caster come halfway to
+    // the light before the table starts afresh, for at most one bit of depth precision
+    // (window depth resolves about z^2 / near).
     if (tight) return {std::max(nearestAlong, nearFloor(zFar)), farthest};
-    return {std::max(0.9 * nearestAlong, nearFloor(zFar)), zFar};
+    return {std::max(0.5 * nearestAlong, nearFloor(zFar)), zFar};
 }
 
 MipChain mipChainFor(const Light& light, const ClipmapSettings& settings, const std::vector<Aabb>& boxes) {

@@ -71,10 +71,10 @@ struct MipChain {
 MipChain mipChainFor(const Light& light, const ClipmapSettings& settings, const std::vector<Aabb>& boxes);
 
 // The depth range along the faces' axes that holds every box, widened by 10 % (and 1 cm) at
-// its far end and 10 % at its near end, and at least 1e-4 of the far distance (which bounds
-// the depth precision a perspective map loses, as light_view.h's minNearFraction); `tight`
-// false returns it widened, true the range the boxes need, to test whether a kept range
-// still holds them (DepthRange::holds).
+// its far end and to half its distance at its near end, and at least 1e-4 of the far
+// distance (which bounds the depth precision a perspective map loses, as light_view.h's
+// minNearFraction); `tight` false returns it widened, true the range the boxes need, to test
+// whether a kept range still holds them (DepthRange::holds).
 DepthRange depthRangeAround(const std::vector<Aabb>& boxes, const glm::dvec3& apex, double tanHalf, bool tight);
 
 // A box's texel rectangle in one level (its corners' projections' bounds, texel units), or
