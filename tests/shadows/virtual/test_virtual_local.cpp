@@ -34,7 +34,11 @@ using LocalKeySet = std::set<std::tuple<int, int32_t, int32_t>>;
 // A small virtual map (4096 texels at mip 0, pages of 64: mips 0..6) so that the tests stay
 // quick.
 ClipmapSettings localSmallChain() { return {.resolution = 4096, .pageTexels = 64}; }
-std::map<std::string, std::string> localSmallMap() { return {{"virtual-resolution", "4096"}, {"page-texels", "64"}}; }
+std::map<std::string, std::string> localSmallMap(std::map<std::string, std::string> more = {}) {
+    more.emplace("virtual-resolution", "4096");
+    more.emplace("page-texels", "64");
+    return more;
+}
 
 // A local light's view at 160 x 100 with its chain and a table marked by its pixels.
 struct LocalView {
@@ -231,8 +235,7 @@ TEST_CASE("virtual-shadow-map: a local light's kept pages never change an answer
         FrameHistory history;
         FrameSettings kept, alone;
         // Two mips finer than the pixels: enough pages that a ball's move leaves some alone.
-        kept.params = alone.params = localSmallMap();
-        kept.params["lod-bias"] = alone.params["lod-bias"] = "-2";
+        kept.params = alone.params = localSmallMap({{"lod-bias", "-2"}});
         kept.history = &history;
         const auto stat = [](const Frame& f, const std::string& n) { return test::stat(f.shadow, n); };
         const Frame first = renderFrame(prepared, vsm, kept);
@@ -262,4 +265,25 @@ TEST_CASE("virtual-shadow-map: a local light's kept pages never change an answer
         CHECK(stat(lightMoved, "cache_drawn_pages") == stat(lightMoved, "requested_pages"));
         CHECK(test::sameBytes(lightMoved.shadow.visibility, renderFrame(prepared, vsm, alone).shadow.visibility));
     }
+}
+
+TEST_CASE("virtual-shadow-map: a spot wider than 60 degrees gets six faces, and a short pool overflows into lit pixels") {
+    Scene wide = test::smallScene(test::hardCase("spot"), 160, 100);
+    wide.lights[0].coneAngleDeg = 75.0f;
+    const test::HardScene s(std::move(wide));
+    const ShadowOutputs out = s.run("virtual-shadow-map", localSmallMap());
+    CHECK(test::stat(out, "faces_count") == 6.0);
+    CHECK(test::stat(out, "cache_missing_pixels") == 0);
+    CHECK(test::stat(out, "unleveled_pixels") == 0);
+    CHECK(test::misclassified(s.gbuffer, s.reference, s.light(), out.visibility).percent() <= 0.2);
+
+    // Two physical pages for more requested ones: the coarse mips get them, the rest are
+    // counted, and their pixels lit.
+    const ShadowOutputs overflowed = s.run("virtual-shadow-map", localSmallMap({{"pool-pages", "2"}}));
+    CHECK(test::stat(overflowed, "cache_overflowed_pages") > 0);
+    CHECK(test::stat(overflowed, "cache_missing_pixels") > 0);
+    CHECK(test::stat(overflowed, "cache_resident_pages") == 2);
+    size_t lit = 0;
+    for (float v : overflowed.visibility) lit += v == 1.0f;
+    CHECK(lit >= size_t(test::stat(overflowed, "cache_missing_pixels")));
 }
