@@ -29,7 +29,7 @@ CellComparison comparePagesWithMap(const PreparedScene& prepared, const ClipmapS
                                    int32_t cy, raster::SimdLevel simd) {
     const LightFrame frame = LightFrame::towards(glm::dvec3(prepared.scene().lights[0].direction));
     const std::vector<Aabb> boxes = instanceBounds(prepared.scene(), prepared.world());
-    const DepthRange range = depthRangeOf(boxes, frame);
+    const vsm::DepthRange range = depthRangeOf(boxes, frame);
     const int cell = cellTexels(c), pagesPerCell = cell / c.pageTexels;
     std::vector<PageKey> keys;
     std::vector<int32_t> physical;
