@@ -84,6 +84,18 @@ struct AlphaTest {
     UvWrap wrap{};
 };
 
+// The framebuffer as a window of a larger viewport, as OpenGL draws with glViewport at a
+// negative offset and the scissor at the framebuffer: vertices are placed, snapped, clipped
+// and set up in the viewport's pixels, and the framebuffer holds viewport pixels [x, x +
+// width) x [y, y + height) (row 0 at the top). Two windows of one viewport, and the viewport
+// drawn whole, so give the same bits to every pixel they share: a virtual shadow map's pages
+// are windows of one map (shadows/virtual/page_rendering.h). viewportWidth 0: the viewport is
+// the framebuffer itself (x = y = 0).
+struct ViewportWindow {
+    int viewportWidth = 0, viewportHeight = 0;
+    int x = 0, y = 0;
+};
+
 struct PipelineState {
     CullMode cull = CullMode::Back;
     bool clipFar = true;            // false for an infinite far projection (shadow volumes)
@@ -95,6 +107,7 @@ struct PipelineState {
     uint8_t colorWriteMask = 0xf;   // bit k enables channel k (R, G, B, A)
     BlendState blend;
     AlphaTest alphaTest;
+    ViewportWindow window;
 };
 
 }  // namespace shadowlab::raster

@@ -86,8 +86,11 @@ uint32_t largestIndex(std::span<const glm::uvec3> triangles) {
         [](uint32_t a, uint32_t b) { return std::max(a, b); });
 }
 
+// The viewport vertices are placed in: the framebuffer, or the one it is a window of.
 Viewport viewportFor(const Framebuffer& fb, const PipelineState& state) {
-    return {fb.width(), fb.height(), clipVolumeFor(fb.width(), fb.height(), state.clipFar)};
+    const ViewportWindow& w = state.window;
+    const int width = w.viewportWidth ? w.viewportWidth : fb.width(), height = w.viewportWidth ? w.viewportHeight : fb.height();
+    return {width, height, clipVolumeFor(width, height, state.clipFar)};
 }
 
 }  // namespace
@@ -120,6 +123,14 @@ void Rasterizer::validate(const Framebuffer& framebuffer, const PipelineState& s
     }
     if (!call.triangles.empty() && largestIndex(call.triangles) >= vertexCount) {
         throw std::invalid_argument("draw: vertex index out of range (" + std::to_string(vertexCount) + " vertices)");
+    }
+    const ViewportWindow& w = state.window;
+    if (w.viewportWidth == 0 ? (w.viewportHeight != 0 || w.x != 0 || w.y != 0)
+                             : (w.viewportWidth < 1 || w.viewportWidth > kMaxViewport || w.viewportHeight < 1 ||
+                                w.viewportHeight > kMaxViewport || w.x < 0 || w.y < 0 ||
+                                w.x > w.viewportWidth - framebuffer.width() || w.y > w.viewportHeight - framebuffer.height())) {
+        throw std::invalid_argument("draw: the framebuffer must be a window inside a viewport of at most " +
+                                    std::to_string(kMaxViewport) + " pixels a side");
     }
     const Attachments& has = framebuffer.attachments();
     if (state.stencil.enabled && !has.stencil) throw std::invalid_argument("draw: stencil test on a framebuffer without stencil");

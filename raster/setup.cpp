@@ -5,7 +5,17 @@ namespace shadowlab::raster {
 SetupConstants setupConstants(int width, int height, const PipelineState& state, int varyingCount) {
     const bool interpolates = state.output == FragmentOutput::VaryingColor || state.alphaTest.alpha;
     const int planeCount = interpolates ? 1 + varyingCount : 0;
-    return {width, height, state.cull, state.conservative, state.offset, planeCount};
+    const ViewportWindow& w = state.window;
+    return {width,
+            height,
+            w.x,
+            w.y,
+            w.viewportWidth ? w.viewportWidth : width,
+            w.viewportWidth ? w.viewportHeight : height,
+            state.cull,
+            state.conservative,
+            state.offset,
+            planeCount};
 }
 
 SetupQueue::SetupQueue(SetupKernel kernel, const SetupConstants& constants, SetupChunk& chunk)

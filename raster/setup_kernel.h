@@ -19,7 +19,9 @@ inline constexpr int kSetupBatchSize = 16;
 
 // What setup needs of the draw.
 struct SetupConstants {
-    int width, height;
+    int width, height;                   // the framebuffer
+    int windowX, windowY;                // its origin in the viewport (pipeline_state.h, ViewportWindow)
+    int viewportWidth, viewportHeight;
     CullMode cull;
     bool conservative;
     PolygonOffset offset;

@@ -93,8 +93,14 @@ inline void canonicalRotation(SetupCorner (&c)[3], int varyingCount) {
 
 inline F64 ceil(F64 a) { return simd::splat64(0.0) - simd::floor(simd::splat64(0.0) - a); }
 
+// The pixels a triangle may cover, and its planes' reference pixel. Bounds are computed in
+// the viewport's pixels, then moved to the framebuffer's (the window's, pipeline_state.h)
+// and clamped to it; the reference pixel is the bounds' first pixel clamped to the
+// viewport instead, so it is the same in every window of one viewport (and, without a
+// window, the bounds' first pixel as before).
 struct PixelBounds {
-    F64 minX, minY, maxX, maxY;   // half-open, clamped to the framebuffer
+    F64 minX, minY, maxX, maxY;   // half-open, clamped to the framebuffer, framebuffer pixels
+    F64 refX, refY;               // viewport pixels
 };
 
 inline PixelBounds pixelBounds(const SetupCorner (&c)[3], const SetupConstants& constants) {
@@ -115,15 +121,24 @@ inline PixelBounds pixelBounds(const SetupCorner (&c)[3], const SetupConstants& 
         }
     }
     const F64 zero = simd::splat64(0.0);
-    return {simd::max(first[0], zero), simd::max(first[1], zero), simd::min(end[0], simd::splat64(constants.width)),
-            simd::min(end[1], simd::splat64(constants.height))};
+    const F64 windowX = simd::splat64(constants.windowX), windowY = simd::splat64(constants.windowY);
+    return {simd::max(first[0] - windowX, zero),
+            simd::max(first[1] - windowY, zero),
+            simd::min(end[0] - windowX, simd::splat64(constants.width)),
+            simd::min(end[1] - windowY, simd::splat64(constants.height)),
+            simd::max(first[0], zero),
+            simd::max(first[1], zero)};
 }
 
 struct Edges {
     F64 a[3], b[3], c[3];   // c = floor(K / 256), in pixel units
 };
 
-inline Edges setupEdges(const SetupCorner (&v)[3], F64 sign, bool conservative) {
+// The edge functions in framebuffer pixels: e(i, j) evaluated at viewport pixel (i + windowX,
+// j + windowY), so c gains A windowX + B windowY (exact: integers below 2^37).
+inline Edges setupEdges(const SetupCorner (&v)[3], F64 sign, const SetupConstants& constants) {
+    const bool conservative = constants.conservative;
+    const F64 windowX = simd::splat64(constants.windowX), windowY = simd::splat64(constants.windowY);
     const F64 zero = simd::splat64(0.0), half = simd::splat64(kSubpixelHalf), perSubpixel = simd::splat64(1.0 / kSubpixelOne);
     Edges e;
     for (int k = 0; k < 3; ++k) {
@@ -137,7 +152,7 @@ inline Edges setupEdges(const SetupCorner (&v)[3], F64 sign, bool conservative) 
             const Mask64 topLeft = simd::cmpLt(zero, A) | (simd::cmpEq(A, zero) & simd::cmpLt(zero, B));
             K = K - simd::select(topLeft, zero, simd::splat64(1.0));
         }
-        e.a[k] = A, e.b[k] = B, e.c[k] = simd::floor(K * perSubpixel);
+        e.a[k] = A, e.b[k] = B, e.c[k] = simd::floor(K * perSubpixel) + A * windowX + B * windowY;
     }
     return e;
 }
@@ -156,7 +171,7 @@ inline PlaneBasis planeBasis(const SetupCorner (&c)[3], const PixelBounds& bound
     b.x1 = c[1].x * perSubpixel - x0, b.y1 = c[1].y * perSubpixel - y0;
     b.x2 = c[2].x * perSubpixel - x0, b.y2 = c[2].y * perSubpixel - y0;
     b.inverseDet = simd::splat64(1.0) / (b.x1 * b.y2 - b.x2 * b.y1);
-    b.refX = bounds.minX + half - x0, b.refY = bounds.minY + half - y0;
+    b.refX = bounds.refX + half - x0, b.refY = bounds.refY + half - y0;
     return b;
 }
 
@@ -200,6 +215,7 @@ inline Plane lanePlane(const PlaneStore& p, int lane) {
 struct SetupStore {
     alignas(64) double edgeA[3][simd::kWidth64], edgeB[3][simd::kWidth64], edgeC[3][simd::kWidth64];
     alignas(64) double minX[simd::kWidth64], minY[simd::kWidth64], maxX[simd::kWidth64], maxY[simd::kWidth64];
+    alignas(64) double refX[simd::kWidth64], refY[simd::kWidth64];   // framebuffer pixels
     PlaneStore planes[1 + kMaxVaryings];   // depth, then the varying planes
 };
 
@@ -210,6 +226,7 @@ inline void appendTriangle(const SetupStore& s, int lane, bool frontFacing, uint
         t.edgeA[k] = int32_t(s.edgeA[k][lane]), t.edgeB[k] = int32_t(s.edgeB[k][lane]), t.edgeC[k] = int64_t(s.edgeC[k][lane]);
     }
     t.minX = int32_t(s.minX[lane]), t.minY = int32_t(s.minY[lane]), t.maxX = int32_t(s.maxX[lane]), t.maxY = int32_t(s.maxY[lane]);
+    t.refX = int32_t(s.refX[lane]), t.refY = int32_t(s.refY[lane]);
     t.depth = lanePlane(s.planes[0], lane);
     t.varyings = nullptr;
     t.primitiveId = primitiveId;
@@ -238,12 +255,14 @@ inline void setupLanes(const SetupBatch& batch, int first, const SetupConstants&
     if (acceptedBits == 0) return;
 
     SetupStore s;
-    const Edges edges = setupEdges(v, simd::select(frontFacing, simd::splat64(-1.0), simd::splat64(1.0)), constants.conservative);
+    const Edges edges = setupEdges(v, simd::select(frontFacing, simd::splat64(-1.0), simd::splat64(1.0)), constants);
     for (int k = 0; k < 3; ++k) {
         simd::store(s.edgeA[k], edges.a[k]), simd::store(s.edgeB[k], edges.b[k]), simd::store(s.edgeC[k], edges.c[k]);
     }
     simd::store(s.minX, bounds.minX), simd::store(s.minY, bounds.minY);
     simd::store(s.maxX, bounds.maxX), simd::store(s.maxY, bounds.maxY);
+    simd::store(s.refX, bounds.refX - simd::splat64(constants.windowX));
+    simd::store(s.refY, bounds.refY - simd::splat64(constants.windowY));
     const PlaneBasis basis = planeBasis(v, bounds);
     const PlaneLanes depth = planeThrough(basis, v[0].z, v[1].z, v[2].z);
     storePlane(depth, polygonOffset(constants.offset, lanes.maxDepth, depth), s.planes[0]);

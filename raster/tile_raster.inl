@@ -180,8 +180,8 @@ template <FragmentOutput kOutput, bool kStencil, bool kAlphaTest>
 inline void shadeFragments(const TriangleSetup& tri, const DrawConstants& draw, const FramebufferView& fb,
                            FragmentVector f) {
     // Offsets from the setup's reference pixel are small integers, exact in float.
-    const F32 dx = simd::toFloat(f.x - simd::splat(tri.minX));
-    const F32 dy = simd::toFloat(f.y - simd::splat(tri.minY));
+    const F32 dx = simd::toFloat(f.x - simd::splat(tri.refX));
+    const F32 dy = simd::toFloat(f.y - simd::splat(tri.refY));
     if constexpr (kAlphaTest) {
         f.covered = f.covered & alphaTestPasses(tri, draw.state.alphaTest, dx, dy);
         if (!simd::any(f.covered)) return;

@@ -15,7 +15,7 @@ namespace shadowlab::raster {
 inline constexpr int kMaxVaryings = 8;
 
 // An attribute that varies affinely across the screen: value at the centre of the
-// reference pixel (minX, minY) and its change per pixel step in x and in y.
+// reference pixel (TriangleSetup::refX, refY) and its change per pixel step in x and in y.
 struct Plane {
     float atRef, perX, perY;
 };
@@ -28,6 +28,11 @@ struct TriangleSetup {
     int32_t edgeA[3], edgeB[3];
     int64_t edgeC[3];
     int32_t minX, minY, maxX, maxY;   // pixel bounds, half-open, inside the framebuffer
+    // The planes' reference pixel, framebuffer coordinates: the bounds' first pixel clamped
+    // to the viewport, not to the framebuffer, so that every window of a viewport evaluates
+    // a plane from the same pixel (pipeline_state.h, ViewportWindow). It may lie outside
+    // the framebuffer; the offsets from it stay below 2^15, exact in float.
+    int32_t refX, refY;
     Plane depth;                      // window depth, polygon offset included
     const Plane* varyings;            // 1/w first, then each varying divided by w
     uint32_t primitiveId;

@@ -3,22 +3,24 @@
 # every hard case, the shadow map's bias-by-resolution grid, Figure 7's torus and the eq. 8
 # scaling fit, the environment techniques' images and buffers, and speed against error by
 # caster level of detail, differential rendering into photographs, and every technique's
-# stages to one standard (the Figure 3 table is scripts/figure3.sh, about an hour on its own).
+# stages to one standard (the Figure 3 table is scripts/figure3.sh, about an hour on its own),
+# and the virtual shadow map against cascades and shadow maps at equal memory
+# (docs/virtual-shadow-maps.md).
 # Writes CSV, JSON and SVG under out/figures, copies the plots and images the docs show into
 # docs/images, and prints docs/performance.md's tables. Takes about 10 minutes on 2 cores,
-# more for the sweeps' pictures (docs/report.md), ten minutes for the fly-throughs and about
-# fifteen for the technique-standard sweeps; run nothing else meanwhile (times are medians,
-# but a busy machine still moves them).
+# more for the sweeps' pictures (docs/report.md), ten minutes for the fly-throughs, about
+# fifteen for the technique-standard sweeps and twelve for the virtual map's; run nothing
+# else meanwhile (times are medians, but a busy machine still moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|lights|suite|standard|report ...]
-#        (default: all twenty, report last; suite needs the packages scripts/suite_models.sh installs)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|lights|suite|standard|virtual|report ...]
+#        (default: all twenty-one, report last; suite needs the packages scripts/suite_models.sh installs)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough lights suite standard report}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough lights suite standard virtual report}
 
 for part in $parts; do
   case $part in
@@ -443,6 +445,67 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     columns="$columns sun=$(ls $std/sun/*.json | paste -sd, -)"
     python3 scripts/technique_standard.py $columns
     ;;
+  virtual)
+    # docs/virtual-shadow-maps.md, "At equal memory": the virtual map beside shadow-map and csm
+    # (near/far bounds from the camera, and from the samples: SDSM) at the depth memory each
+    # reserves: 4, 16, 64 and 256 MiB (one map of 1024, 2048, 4096 texels; four cascades of
+    # 1024, 2048, 4096; a pool of 64, 256, 1024 pages of 128^2 texels, of which it holds only
+    # the pages in use; on still views also at levels one finer than the pixels' footprint,
+    # lod-bias=-1). Still views: speed against error (the virtual map's pages kept from
+    # the warm-up frame), and its first frame alone (--warmup 0: every page drawn); the suite's
+    # scenes under a sun (the engine's light is a disk: left out; the dungeon's sun alone).
+    # Then four paths, per-frame ms, error, pages drawn and cache hits; the buffers of the sun
+    # case. Errors and pages are exact, times want a quiet machine. About 12 minutes on 2 cores.
+    v=$out/virtual
+    maps=shadow-map,csm,virtual-shadow-map
+    stem=reference+shadow-map+csm+virtual-shadow-map
+    grid="--param resolution=1024,2048,4096 --param bounds=camera,samples --param pool-pages=64,256,1024"
+    # The virtual map's levels one finer than the pixels' footprint too (four times the pages).
+    finer="--param lod-bias=0,-1"
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    scripts/suite_models.sh > /dev/null
+    # sphere-box's light is a disk: a virtual map without local lights draws shadow-map's frame
+    # there (the table says so by its held memory and empty page columns).
+    for scene in sphere-box assets/scenes/hard/sun.json assets/scenes/virtual/small-casters.json \
+                 assets/scenes/suite/house.json assets/scenes/suite/grove.json assets/scenes/suite/dungeon.json; do
+      name=$(basename $scene .json)
+      light=""
+      [ $name = dungeon ] && light="--light 0"
+      $app sweep $scene $light --technique reference,$maps $grid $finer --threads 2 --runs 3 --warmup 1 --out $v > /dev/null
+      $app sweep $scene $light --technique virtual-shadow-map --param pool-pages=64,256,1024 $finer --threads 2 --runs 3 \
+        --warmup 0 --out $v/first > /dev/null
+      echo "$name:"
+      python3 scripts/vsm_table.py sweep $v/$name-$stem.csv $v/first/$name-virtual-shadow-map.csv
+      cp $v/$name-$stem.svg docs/images/virtual-$name.svg
+    done
+    # Soft lookups (PCF, shadow-map ray tracing) against the soft reference, once the virtual
+    # map has them: its rays parameter (0 rays = hard).
+    if $app techniques | awk '/^virtual-shadow-map/ {on = 1; next} /^[a-z]/ {on = 0} on' | grep -q '^ *rays='; then
+      for scene in sphere-box assets/scenes/hard/sun.json; do
+        $app sweep $scene --technique virtual-shadow-map,pcss --param rays=0,4,16 --reference reference-soft \
+          --threads 2 --runs 3 --out $v/soft --plot-y rms > /dev/null
+        python3 $table $v/soft/$(basename $scene .json)-virtual-shadow-map+pcss.csv soft
+      done
+    fi
+    fly="--technique $maps $grid --threads 2 --runs 3 --warmup 1"
+    $app flythrough assets/scenes/flythrough/avenue.json $fly --out $v/fly > /dev/null
+    $app flythrough assets/scenes/flythrough/sliding-sphere-still-sun.json $fly --out $v/fly > /dev/null
+    $app flythrough assets/scenes/flythrough/sliding-sphere-sun.json $fly --out $v/fly > /dev/null
+    $app flythrough assets/scenes/hard/sun.json --path assets/scenes/flythrough/sun-dolly.csv --frames 48 $fly \
+      --out $v/fly/dolly > /dev/null
+    python3 scripts/vsm_table.py flythrough $v/fly/dolly/sun-flythrough-$(echo $maps | tr , +).json \
+      $v/fly/*-flythrough-$(echo $maps | tr , +).json
+    for path in avenue sliding-sphere-still-sun sliding-sphere-sun; do
+      for plot in -time -error -pages -hits; do
+        cp $v/fly/$path-flythrough-$(echo $maps | tr , +)$plot.svg docs/images/virtual-flythrough-$path$plot.svg
+      done
+    done
+    $app render assets/scenes/hard/sun.json --technique virtual-shadow-map --width 640 --height 400 -o $v/sun.png \
+      --debug-buffers $v/buffers > /dev/null
+    for buffer in level texels-per-pixel page-table pool; do
+      cp $v/buffers/virtual-shadow-map-$buffer.png docs/images/virtual-buffer-$buffer.png
+    done
+    ;;
   report)
     # Every sweep's JSON under out/figures (the files with a grid of reference fingerprints;
     # bench and composite JSON are not sweeps) as one site: a page per scene and per setting.
@@ -450,6 +513,6 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     $app report $sweeps --out out/report
     ;;
   *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
-       "environment, lod, differential, screen, volumetric, cutouts, flythrough, lights, suite, standard, report)" >&2; exit 2 ;;
+       "environment, lod, differential, screen, volumetric, cutouts, flythrough, lights, suite, standard, virtual, report)" >&2; exit 2 ;;
   esac
 done

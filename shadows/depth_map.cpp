@@ -26,6 +26,7 @@ void drawDepthLayer(const DepthMapSettings& settings, raster::CullMode cull, ras
     state.cull = cull;
     state.offset = settings.offset;
     state.output = raster::FragmentOutput::DepthOnly;
+    state.window = settings.window;
     draw(rasterizer, framebuffer, state);
     depth = framebuffer.takeDepth();
 }
@@ -38,7 +39,7 @@ DepthMap depthMapOf(const LightView& view, const DepthMapSettings& settings, ras
     map.size = settings.size;
     map.tilesX = (settings.size + raster::kTileSize - 1) / raster::kTileSize;
     map.view = view;
-    map.texelFromWorld = texelFromWorldOf(glm::mat4(view.clipFromWorld()), settings.size);
+    map.texelFromWorld = texelFromWorldOf(glm::mat4(view.clipFromWorld()), settings.size, settings.window);
     map.worldFromTexel = glm::inverse(map.texelFromWorld);
     switch (settings.layer) {
         case DepthLayer::First:
@@ -76,13 +77,14 @@ void DepthMap::image(std::vector<float>& rows) const {
     });
 }
 
-glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size) {
-    // x_texel = (x_ndc + 1) s / 2, y_texel = (1 - y_ndc) s / 2 (row 0 on top), z = (z_ndc + 1) / 2,
-    // exactly raster/window.h's toWindow.
-    const double h = 0.5 * size;
+glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size, const raster::ViewportWindow& in) {
+    // x_texel = (x_ndc + 1) w / 2 - x0, y_texel = (1 - y_ndc) h / 2 - y0 (row 0 on top),
+    // z = (z_ndc + 1) / 2: raster/window.h's toWindow, in the window's texels.
+    const double hx = 0.5 * (in.viewportWidth ? in.viewportWidth : size);
+    const double hy = 0.5 * (in.viewportWidth ? in.viewportHeight : size);
     glm::dmat4 window(1.0);
-    window[0][0] = h, window[1][1] = -h, window[2][2] = 0.5;
-    window[3] = glm::dvec4(h, h, 0.5, 1.0);
+    window[0][0] = hx, window[1][1] = -hy, window[2][2] = 0.5;
+    window[3] = glm::dvec4(hx - in.x, hy - in.y, 0.5, 1.0);
     return window * glm::dmat4(clipFromWorld);
 }
 

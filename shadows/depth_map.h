@@ -71,13 +71,17 @@ inline int texelIndexOf(double c) {
     return truncated - (saturated < double(truncated) ? 1 : 0);
 }
 
-// The window transform of a size x size map after `clipFromWorld` (float, as drawn).
-glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size);
+// The window transform of a size x size map after `clipFromWorld` (float, as drawn); for a
+// map drawn as a window of a larger viewport, that viewport's transform moved to the window.
+glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size, const raster::ViewportWindow& window = {});
 
 struct DepthMapSettings {
     int size = 2048;
     DepthLayer layer = DepthLayer::First;
     raster::PolygonOffset offset;           // slope-scaled bias, applied while drawing
+    // The map as a window of a larger square viewport (pipeline_state.h): its texels then
+    // have the bits of that viewport's, wherever it is drawn whole or in other windows.
+    raster::ViewportWindow window;
 };
 
 // The world's triangles, cut-outs with their holes (world_draw.h). The map is drawn in

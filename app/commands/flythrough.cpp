@@ -1,5 +1,6 @@
 // `shadowlab flythrough`: shadows in motion along a camera (and light) path
-// (app/measure/flythrough.h), written as the table, CSV, JSON and three plots.
+// (app/measure/flythrough.h), written as the table, CSV, JSON and three plots (five for a technique that caches
+// pages: its pages drawn and cache hits per frame).
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -41,8 +42,9 @@ void runFlythroughCommand(FlythroughArgs a) {
     writeCsvJsonSvg(stem, formatFlythroughCsv(results), formatFlythroughJson(results),
                     formatFlythroughSvg(results, FlythroughPlot::Flicker));
     for (const auto& [suffix, plot] :
-         {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error}})
-        writeTextFile(stem.string() + suffix, formatFlythroughSvg(results, plot));
+         {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error},
+          {"-pages.svg", FlythroughPlot::DrawnPages}, {"-hits.svg", FlythroughPlot::CacheHits}})
+        if (hasFlythroughPlot(results, plot)) writeTextFile(stem.string() + suffix, formatFlythroughSvg(results, plot));
     commitAndList(outputs);
 }
 
@@ -70,7 +72,8 @@ void addFlythroughCommand(CLI::App& command) {
         ->capture_default_str()
         ->check(CLI::Range(0.0f, 1.0f));
     f->add_option("--out", a.outDir, "directory for SCENE-flythrough-TECHNIQUES.csv, .json, .svg (flicker), "
-                                     "-time.svg and -error.svg")->capture_default_str();
+                                     "-time.svg, -error.svg, and -pages.svg and -hits.svg for a "
+                                     "technique that caches pages")->capture_default_str();
     f->add_flag("--images", a.images,
                 "also write every frame's image, error map and V, "
                 "OUT/SCENE-flythrough-TECHNIQUES-frames/SETTING/NNNN-image.png, -error-map.png, -visibility.png");

@@ -60,15 +60,22 @@ DepthRange depthRangeOf(const std::vector<Aabb>& boxes, const LightFrame& frame)
     return {lo - pad, hi + pad};
 }
 
-LightView pageView(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range,
-                   const PageKey& key) {
-    LightView view;
-    view.orthographic = true;
-    view.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -frame.z, lookAtUp(frame.z));
-    view.zNear = range.zNear, view.zFar = range.zFar;
-    const Footprint square = pageSquare(clipmap, key);
-    view.clipFromView = glm::orthoRH_NO(square.lo.x, square.hi.x, square.lo.y, square.hi.y, range.zNear, range.zFar);
-    return view;
+int cellTexels(const ClipmapSettings& clipmap) { return std::min(clipmap.resolution, raster::kMaxViewport); }
+
+PageView pageView(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range, const PageKey& key) {
+    const int cell = cellTexels(clipmap), pagesPerCell = cell / clipmap.pageTexels;
+    const auto cellOf = [&](int32_t page) { return page >= 0 ? page / pagesPerCell : -((-int64_t(page) - 1) / pagesPerCell) - 1; };
+    const int64_t cx = cellOf(key.x), cy = cellOf(key.y);
+    const double side = clipmap.texelM(key.level) * cell;
+    PageView v;
+    v.cell.orthographic = true;
+    v.cell.viewFromWorld = glm::lookAtRH(glm::dvec3(0.0), -frame.z, lookAtUp(frame.z));
+    v.cell.zNear = range.zNear, v.cell.zFar = range.zFar;
+    v.cell.clipFromView = glm::orthoRH_NO(double(cx) * side, double(cx + 1) * side, -double(cy + 1) * side,
+                                          -double(cy) * side, range.zNear, range.zFar);
+    v.window = {cell, cell, int((int64_t(key.x) - cx * pagesPerCell) * clipmap.pageTexels),
+                int((int64_t(key.y) - cy * pagesPerCell) * clipmap.pageTexels)};
+    return v;
 }
 
 glm::dmat4 levelTexelFromWorld(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range,
@@ -86,11 +93,11 @@ glm::dmat4 levelTexelFromWorld(const LightFrame& frame, const ClipmapSettings& c
 }
 
 void drawPage(const PreparedScene& casters, std::span<const uint32_t> triangles, const LightView& view,
-              int32_t physical, const raster::PolygonOffset& offset, raster::SimdLevel simd, PageDrawing& drawing,
-              PagePool& pool) {
+              const raster::ViewportWindow& window, int32_t physical, const raster::PolygonOffset& offset,
+              raster::SimdLevel simd, PageDrawing& drawing, PagePool& pool) {
     const size_t pageSize = size_t(pool.pageTexels) * size_t(pool.pageTexels);
-    drawing.map = renderDepthMap(casters.world(), triangles, view, {pool.pageTexels, DepthLayer::First, offset}, simd,
-                                 std::move(drawing.map), &drawing.rasterizer.at(simd));
+    drawing.map = renderDepthMap(casters.world(), triangles, view, {pool.pageTexels, DepthLayer::First, offset, window},
+                                 simd, std::move(drawing.map), &drawing.rasterizer.at(simd));
     drawing.map.image(drawing.rows);
     // The pool grows to the highest physical page drawn: memory only for pages in use.
     const size_t end = (size_t(physical) + 1) * pageSize;
@@ -108,8 +115,8 @@ void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBo
     for (const Aabb& box : casterBoxes) footprints.push_back(footprintOf(box, frame));
     for (size_t k = 0; k < keys.size(); ++k) {
         pageCasters(ranges, footprints, pageSquare(clipmap, keys[k]), drawing.triangles);
-        drawPage(casters, drawing.triangles, pageView(frame, clipmap, range, keys[k]), physical[k], offset, simd,
-                 drawing, pool);
+        const PageView view = pageView(frame, clipmap, range, keys[k]);
+        drawPage(casters, drawing.triangles, view.cell, view.window, physical[k], offset, simd, drawing, pool);
     }
 }
 

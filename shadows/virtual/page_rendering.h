@@ -1,9 +1,12 @@
 // Page rendering (docs/virtual-shadow-maps.md): each page that marking requested and that
-// holds no current depth is drawn as a small shadow map of its own, pageTexels a side, by
-// the rasterizer, with an orthographic view that is exactly the page's square of its level
-// and the depth range every page of the light shares; only the casters whose bounds'
-// projection meets the page are drawn (Unreal Engine 5 culls instances per page the same
-// way). The depths go into the page's place in the physical pool.
+// holds no current depth is drawn by the rasterizer, pageTexels a side, as a window of its
+// cell's map: an ordinary orthographic shadow map of the level's texels over a square of
+// the light's frame (the depth range every page of the light shares), of which the page's
+// texels are a part (raster/pipeline_state.h, ViewportWindow). Its depths are then the
+// bits that ordinary map has there, drawn whole, and never depend on which other pages
+// exist. Only the casters whose bounds' projection meets the page are drawn (Unreal Engine
+// 5 culls instances per page the same way). The depths go into the page's place in the
+// physical pool.
 #pragma once
 
 #include <span>
@@ -30,9 +33,18 @@ struct DepthRange {
 // so that a caster that moves a little keeps it and the pages it did not touch.
 DepthRange depthRangeOf(const std::vector<Aabb>& boxes, const LightFrame& frame);
 
-// The view a page is drawn with (window depth (distance - zNear) / (zFar - zNear)).
-LightView pageView(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range,
-                   const PageKey& key);
+// A level's cells: squares of cellTexels() texels a side, min(resolution, the rasterizer's
+// largest viewport), fixed in the light's frame (cell (0, 0) has its top-left corner at the
+// frame's origin, rows down along -y, as pages). A cell is a whole number of pages, so a
+// page lies in one cell.
+int cellTexels(const ClipmapSettings& clipmap);
+// How page `key` is drawn: its cell's orthographic view (window depth (distance - zNear) /
+// (zFar - zNear)) and where the page lies in that view's viewport.
+struct PageView {
+    LightView cell;
+    raster::ViewportWindow window;
+};
+PageView pageView(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range, const PageKey& key);
 // Level l as one huge map: world -> (global texel x, y, window depth, 1), the matrix every
 // lookup of the level maps receivers with (a DepthMap's texelFromWorld, depth_map.h).
 glm::dmat4 levelTexelFromWorld(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range,
@@ -57,12 +69,13 @@ struct PageDrawing {
     std::vector<float> rows;
 };
 
-// Draws `triangles` of the casters (ascending) with `view` as a page of pool.pageTexels
-// texels a side into physical page `physical`, growing the pool to hold it: the draw every
-// page of any light's virtual map makes.
+// Draws `triangles` of the casters (ascending) with `view`, as `window` of its viewport
+// (none: the page is the viewport), as a page of pool.pageTexels texels a side into physical
+// page `physical`, growing the pool to hold it: the draw every page of any light's virtual
+// map makes.
 void drawPage(const PreparedScene& casters, std::span<const uint32_t> triangles, const LightView& view,
-              int32_t physical, const raster::PolygonOffset& offset, raster::SimdLevel simd, PageDrawing& drawing,
-              PagePool& pool);
+              const raster::ViewportWindow& window, int32_t physical, const raster::PolygonOffset& offset,
+              raster::SimdLevel simd, PageDrawing& drawing, PagePool& pool);
 
 // Draws each page of `keys` into its physical page (physical[k] for keys[k]); `casterBoxes`
 // are the casters' instances' boxes, whose triangles are culled per page.

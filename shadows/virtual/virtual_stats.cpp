@@ -8,7 +8,9 @@ void addPageStats(ShadowOutputs& out, const PageTable& table, size_t rendered, i
     out.stats.push_back({"virtual_map_flag", 1.0});
     out.stats.push_back({"requested_pages", double(requested)});
     out.stats.push_back({"cache_drawn_pages", double(rendered)});
-    out.stats.push_back({"cache_hit_percent", requested ? 100.0 * double(requested - rendered) / double(requested) : 0.0});
+    // A hit is a requested page valid already: neither drawn nor left without memory.
+    const double hits = double(requested - rendered) - double(table.overflowPages());
+    out.stats.push_back({"cache_hit_percent", requested ? 100.0 * hits / double(requested) : 0.0});
     out.stats.push_back({"cache_invalidated_pages", double(invalidated)});
     out.stats.push_back({"cache_evicted_pages", double(table.evictedPages())});
     out.stats.push_back({"cache_overflowed_pages", double(table.overflowPages())});

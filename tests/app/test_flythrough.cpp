@@ -134,6 +134,11 @@ TEST_CASE("a fly-through hands each setting's history on: a virtual map redraws 
     CHECK(csv.substr(0, csv.find('\n')).find(",cache_drawn_pages,") != std::string::npos);
     const nlohmann::json json = nlohmann::json::parse(formatFlythroughJson(results));
     CHECK(json["series"][0]["frames"][2]["stats"]["cache_drawn_pages"].get<double>() == stat(frames[2], "cache_drawn_pages"));
+    // Its pages drawn and cache hits per frame are plotted, one point a frame.
+    for (FlythroughPlot plot : {FlythroughPlot::DrawnPages, FlythroughPlot::CacheHits}) {
+        REQUIRE(hasFlythroughPlot(results, plot));
+        CHECK(formatFlythroughSvg(results, plot).find("virtual-shadow-map") != std::string::npos);
+    }
 }
 
 TEST_CASE("a fly-through follows the scene's path and writes its table, JSON, plots and frames") {
@@ -170,6 +175,9 @@ TEST_CASE("a fly-through follows the scene's path and writes its table, JSON, pl
     CHECK(json["series"][0]["path_figures"]["flicker_mean"].get<double>() == pathFigures(series).flickerMean);
     for (FlythroughPlot plot : {FlythroughPlot::Time, FlythroughPlot::Error, FlythroughPlot::Flicker})
         CHECK(formatFlythroughSvg(results, plot).find("shadow-map") != std::string::npos);
+    // A shadow map caches no pages: no cache plots.
+    CHECK_FALSE(hasFlythroughPlot(results, FlythroughPlot::DrawnPages));
+    CHECK_FALSE(hasFlythroughPlot(results, FlythroughPlot::CacheHits));
     CHECK(flythroughFileStem(results.scene, {&findTechnique("shadow-map"), &findTechnique("pcss")}) ==
           "sphere-box-flythrough-shadow-map+pcss");
 }

@@ -53,7 +53,13 @@ std::vector<SetupConstants> constantCases() {
     for (CullMode cull : {CullMode::None, CullMode::Back, CullMode::Front}) {
         for (bool conservative : {false, true}) {
             for (PolygonOffset offset : {PolygonOffset{0.0f, 0.0f}, PolygonOffset{1.1f, 4.0f}, PolygonOffset{0.0f, -2.0f}}) {
-                for (int planeCount : {0, 4}) cases.push_back({kViewportWidth, kViewportHeight, cull, conservative, offset, planeCount});
+                for (int planeCount : {0, 4}) {
+                    cases.push_back({kViewportWidth, kViewportHeight, 0, 0, kViewportWidth, kViewportHeight, cull,
+                                     conservative, offset, planeCount});
+                    // A window of the viewport (pipeline_state.h, ViewportWindow).
+                    cases.push_back({kViewportWidth / 3, kViewportHeight / 2, 40, 24, kViewportWidth, kViewportHeight,
+                                     cull, conservative, offset, planeCount});
+                }
             }
         }
     }
@@ -66,7 +72,7 @@ bool sameBytes(const SetupOutput& a, const SetupOutput& b, int planeCount) {
         const TriangleSetup &s = a.triangles[k], &t = b.triangles[k];
         const bool same = std::memcmp(s.edgeA, t.edgeA, sizeof s.edgeA) == 0 && std::memcmp(s.edgeB, t.edgeB, sizeof s.edgeB) == 0 &&
                           std::memcmp(s.edgeC, t.edgeC, sizeof s.edgeC) == 0 && s.minX == t.minX && s.minY == t.minY &&
-                          s.maxX == t.maxX && s.maxY == t.maxY && std::memcmp(&s.depth, &t.depth, sizeof s.depth) == 0 &&
+                          s.maxX == t.maxX && s.maxY == t.maxY && s.refX == t.refX && s.refY == t.refY && std::memcmp(&s.depth, &t.depth, sizeof s.depth) == 0 &&
                           s.primitiveId == t.primitiveId && s.frontFacing == t.frontFacing &&
                           std::memcmp(a.planes[k], b.planes[k], sizeof(Plane) * size_t(planeCount)) == 0;
         if (!same) return false;
@@ -98,8 +104,11 @@ bool oracleSetup(const SetupBatch& batch, int t, const SetupConstants& k, Triang
         begin[a] = k.conservative ? ceilDiv(lo[a] - 1, 256) - 1 : ceilDiv(lo[a] - 128, 256);
         end[a] = k.conservative ? floorDiv(hi[a] + 1, 256) + 1 : floorDiv(hi[a] - 128, 256) + 1;
     }
-    out.minX = int32_t(std::max<int64_t>(begin[0], 0)), out.minY = int32_t(std::max<int64_t>(begin[1], 0));
-    out.maxX = int32_t(std::min<int64_t>(end[0], k.width)), out.maxY = int32_t(std::min<int64_t>(end[1], k.height));
+    // Bounds in the framebuffer (the window); the planes' reference pixel clamped to the viewport.
+    out.minX = int32_t(std::max<int64_t>(begin[0] - k.windowX, 0)), out.minY = int32_t(std::max<int64_t>(begin[1] - k.windowY, 0));
+    out.maxX = int32_t(std::min<int64_t>(end[0] - k.windowX, k.width)), out.maxY = int32_t(std::min<int64_t>(end[1] - k.windowY, k.height));
+    const int64_t refX = std::max<int64_t>(begin[0], 0), refY = std::max<int64_t>(begin[1], 0);
+    out.refX = int32_t(refX - k.windowX), out.refY = int32_t(refY - k.windowY);
     if (out.minX >= out.maxX || out.minY >= out.maxY) return false;
     const int64_t sign = det > 0 ? 1 : -1;
     for (int e = 0; e < 3; ++e) {
@@ -107,7 +116,7 @@ bool oracleSetup(const SetupBatch& batch, int t, const SetupConstants& k, Triang
         const int64_t A = -sign * (vy[b] - vy[a]), B = sign * (vx[b] - vx[a]), C = -(A * vx[a] + B * vy[a]);
         const bool topLeft = A > 0 || (A == 0 && B > 0);
         const int64_t K = k.conservative ? 128 * (A + B) + C + 129 * (std::abs(A) + std::abs(B)) : 128 * (A + B) + C - (topLeft ? 0 : 1);
-        out.edgeA[e] = int32_t(A), out.edgeB[e] = int32_t(B), out.edgeC[e] = floorDiv(K, 256);
+        out.edgeA[e] = int32_t(A), out.edgeB[e] = int32_t(B), out.edgeC[e] = floorDiv(K, 256) + A * k.windowX + B * k.windowY;
     }
     const double x0 = vx[0] / 256.0, y0 = vy[0] / 256.0;
     const double x1 = vx[1] / 256.0 - x0, y1 = vy[1] / 256.0 - y0, x2 = vx[2] / 256.0 - x0, y2 = vy[2] / 256.0 - y0;
@@ -116,7 +125,7 @@ bool oracleSetup(const SetupBatch& batch, int t, const SetupConstants& k, Triang
         const double perX = ((q[1] - q[0]) * y2 - (q[2] - q[0]) * y1) * inverseDet;
         const double perY = ((q[2] - q[0]) * x1 - (q[1] - q[0]) * x2) * inverseDet;
         if (slopes) slopes[0] = perX, slopes[1] = perY;
-        return Plane{float(q[0] + perX * (out.minX + 0.5 - x0) + perY * (out.minY + 0.5 - y0) + offset), float(perX), float(perY)};
+        return Plane{float(q[0] + perX * (double(refX) + 0.5 - x0) + perY * (double(refY) + 0.5 - y0) + offset), float(perX), float(perY)};
     };
     const double z[3] = {batch.z[order[0]][t], batch.z[order[1]][t], batch.z[order[2]][t]};
     double slopes[2];

@@ -123,6 +123,8 @@ TEST_CASE("virtual-shadow-map: a pool too small overflows into counted, lit pixe
     const ShadowOutputs out = s.run("virtual-shadow-map", smallMap({{"pool-pages", "2"}}));
     CHECK(test::stat(out, "cache_overflowed_pages") > 0);
     CHECK(test::stat(out, "cache_missing_pixels") > 0);
+    // A frame alone hits nothing in the cache: a page without memory is no hit.
+    CHECK(test::stat(out, "cache_hit_percent") == 0.0);
     size_t lit = 0;
     for (float v : out.visibility) lit += v == 1.0f;
     CHECK(lit >= size_t(test::stat(out, "cache_missing_pixels")));
