@@ -23,7 +23,8 @@ void renderLocalPages(const PreparedScene& casters, const std::vector<Aabb>& cas
             if (!boxMeetsPage(casterBoxes[i], texelFromWorld, keys[k], chain.pageTexels)) continue;
             for (uint32_t t = 0; t < ranges[i].triangleCount; ++t) drawing.triangles.push_back(ranges[i].firstTriangle + t);
         }
-        drawPage(casters, drawing.triangles, chain.pageView(keys[k]), {}, physical[k], offset, simd, drawing, pool);
+        const PageView view = chain.pageView(keys[k]);
+        drawPage(casters, drawing.triangles, view.cell, view.window, physical[k], offset, simd, drawing, pool);
     }
 }
 

@@ -1,9 +1,10 @@
 // Page rendering for a spot or point light's mip chains (docs/virtual-shadow-maps.md;
-// page_rendering.h for the sun): each page to render is drawn as a small perspective depth
-// map, the off-centre window of its face's frustum that holds exactly its texels
-// (MipChain::pageView), into its physical page. Casters are culled per instance: an
-// instance is drawn when its box's projection into the page's mip meets the page's texels,
-// or, conservatively, when the box crosses the light's plane facing the face.
+// page_rendering.h for the sun): each page to render is drawn as a window of its cell's
+// perspective map, the off-centre part of its face's frustum that holds the cell's texels
+// (MipChain::pageView), into its physical page, so its texels are that map's bits. Casters
+// are culled per instance: an instance is drawn when its box's projection into the page's
+// mip meets the page's texels, or, conservatively, when the box crosses the light's plane
+// facing the face.
 #pragma once
 
 #include <span>

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "raster/fixed_point.h"
 #include "scenes/camera.h"
 
 namespace shadowlab::vsm {
@@ -52,18 +53,23 @@ glm::dmat4 MipChain::texelFromWorld(int level) const {
     return windowOf(mipTexels(mipOfLevel(level))) * clipFromView() * faces[size_t(faceOfLevel(level))];
 }
 
-LightView MipChain::pageView(const PageKey& key) const {
-    // The page's texels [x P, (x+1) P) x [y P, (y+1) P) of a mip of S texels span normalised
-    // device x from -1 + 2 x P / S, y (rows downwards) from 1 - 2 (y+1) P / S; scaled by the
-    // near plane's half side, the window of the face's frustum.
-    const double S = mipTexels(mipOfLevel(key.level)), P = pageTexels, side = range.zNear * tanHalf;
-    const double x0 = -1.0 + 2.0 * key.x * P / S, x1 = -1.0 + 2.0 * (key.x + 1) * P / S;
-    const double y0 = 1.0 - 2.0 * (key.y + 1) * P / S, y1 = 1.0 - 2.0 * key.y * P / S;
-    LightView view;
-    view.viewFromWorld = faces[size_t(faceOfLevel(key.level))];
-    view.clipFromView = glm::frustumRH_NO(x0 * side, x1 * side, y0 * side, y1 * side, range.zNear, range.zFar);
-    view.zNear = range.zNear, view.zFar = range.zFar;
-    return view;
+int MipChain::cellTexels(int mip) const { return std::min(mipTexels(mip), raster::kMaxViewport); }
+
+PageView MipChain::pageView(const PageKey& key) const {
+    const int mip = mipOfLevel(key.level), cell = cellTexels(mip), pagesPerCell = cell / pageTexels;
+    const int32_t cx = key.x / pagesPerCell, cy = key.y / pagesPerCell;   // pages count from 0
+    // The cell's texels [cx C, (cx+1) C) x [cy C, (cy+1) C) of a mip of S texels span
+    // normalised device x from -1 + 2 cx C / S, y (rows downwards) from 1 - 2 (cy+1) C / S;
+    // scaled by the near plane's half side, the window of the face's frustum.
+    const double S = mipTexels(mip), C = cell, side = range.zNear * tanHalf;
+    const double x0 = -1.0 + 2.0 * cx * C / S, x1 = -1.0 + 2.0 * (cx + 1) * C / S;
+    const double y0 = 1.0 - 2.0 * (cy + 1) * C / S, y1 = 1.0 - 2.0 * cy * C / S;
+    PageView v;
+    v.cell.viewFromWorld = faces[size_t(faceOfLevel(key.level))];
+    v.cell.clipFromView = glm::frustumRH_NO(x0 * side, x1 * side, y0 * side, y1 * side, range.zNear, range.zFar);
+    v.cell.zNear = range.zNear, v.cell.zFar = range.zFar;
+    v.window = {cell, cell, (key.x - cx * pagesPerCell) * pageTexels, (key.y - cy * pagesPerCell) * pageTexels};
+    return v;
 }
 
 int MipChain::faceHolding(const glm::dvec3& P) const {

@@ -59,9 +59,14 @@ struct MipChain {
     // texel y, window depth, w), a DepthMap's texelFromWorld (depth_map.h).
     glm::dmat4 clipFromView() const;
     glm::dmat4 texelFromWorld(int level) const;
-    // The view a page is drawn with: the off-centre window of its face's frustum that
-    // holds exactly its texels.
-    LightView pageView(const PageKey& key) const;
+    // A mip's cells: squares of min(mip texels, the rasterizer's largest viewport) texels
+    // from the mip's corner, each a whole number of pages (page_rendering.h's cells).
+    int cellTexels(int mip) const;
+    // How a page is drawn: as a window of its cell's map, whose view is the off-centre part
+    // of its face's frustum that holds exactly the cell's texels; so a page's texels are
+    // the bits of an ordinary perspective map of its cell (of the whole mip, for a mip that
+    // fits the viewport), drawn whole.
+    PageView pageView(const PageKey& key) const;
     // The first face whose pyramid holds P (insideCubeFace's test for a cube face), or -1.
     int faceHolding(const glm::dvec3& P) const;
 };
