@@ -2,13 +2,15 @@
 // local_marking, local_invalidation, local_page_rendering, local_lookup, local_virtual_map)
 // on hard/spot.json (one face) and hard/point-light-inside.json (six): marking is
 // conservative and picks the mip of the pixel's footprint, a still frame renders no page, a
-// moved box invalidates exactly the pages a brute-force overlap finds, the technique is
-// within shadow-map's hard-case bound of the exact reference with the same bytes on every
-// thread count and SIMD level, and kept pages never change an answer.
+// moved box invalidates exactly the pages a brute-force overlap finds, pages equal their
+// cell's ordinary map bit for bit, the technique is within shadow-map's hard-case bound of
+// the exact reference with the same bytes on every thread count and SIMD level, and kept
+// pages never change an answer.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <tuple>
 #include <vector>
@@ -20,6 +22,7 @@
 #include "scenes/bounds.h"
 #include "shadows/virtual/local_invalidation.h"
 #include "shadows/virtual/local_marking.h"
+#include "shadows/virtual/local_page_rendering.h"
 #include "shadows/virtual/mip_chain.h"
 #include "tests/frame/technique_scenes.h"
 #include "tests/shadows/shadow_test_support.h"
@@ -286,4 +289,39 @@ TEST_CASE("virtual-shadow-map: a spot wider than 60 degrees gets six faces, and 
     size_t lit = 0;
     for (float v : overflowed.visibility) lit += v == 1.0f;
     CHECK(lit >= size_t(test::stat(overflowed, "cache_missing_pixels")));
+}
+
+TEST_CASE("virtual local pages: every page equals an ordinary perspective map of its cell, bit for bit") {
+    // A 512-texel chain: mip 0 is one cell, so every page of a face's mip 0 is a window of
+    // the face's ordinary 512 map; each page drawn with only the casters culling keeps.
+    for (const char* name : kLocalLightScenes) {
+        INFO(std::string(name));
+        const test::HardScene s(test::smallScene(test::hardCase(name), 160, 100));
+        const std::vector<Aabb> boxes = instanceBounds(s.scene, s.world);
+        const MipChain chain = mipChainFor(s.light(), {.resolution = 512, .pageTexels = 64}, boxes);
+        const raster::PolygonOffset offset{1.5f, 4.0f};
+        size_t texels = 0, differing = 0, covered = 0;
+        for (int face = 0; face < chain.faceCount(); ++face) {
+            std::vector<PageKey> keys;
+            std::vector<int32_t> physical;
+            for (int32_t y = 0; y < chain.pagesPerSide(0); ++y)
+                for (int32_t x = 0; x < chain.pagesPerSide(0); ++x)
+                    keys.push_back({chain.levelOf(face, 0), x, y}), physical.push_back(int32_t(physical.size()));
+            PageDrawing drawing;
+            PagePool pool{chain.pageTexels, {}};
+            renderLocalPages(s.prepared, boxes, chain, keys, physical, offset, raster::bestSimdLevel(), drawing, pool);
+            const DepthMap whole = renderDepthMap(s.world, chain.pageView(keys[0]).cell, {512, DepthLayer::First, offset, {}},
+                                                  raster::bestSimdLevel());
+            for (size_t k = 0; k < keys.size(); ++k)
+                for (int y = 0; y < chain.pageTexels; ++y)
+                    for (int x = 0; x < chain.pageTexels; ++x) {
+                        const float page = pool.at(physical[k], x, y);
+                        const float map = whole.at(keys[k].x * chain.pageTexels + x, keys[k].y * chain.pageTexels + y);
+                        ++texels, differing += std::memcmp(&page, &map, sizeof page) != 0, covered += map < 1.0f;
+                    }
+        }
+        CHECK(texels == size_t(chain.faceCount()) * 512 * 512);
+        CHECK(covered > texels / 4);
+        CHECK(differing == 0);
+    }
 }
