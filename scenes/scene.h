@@ -133,6 +133,11 @@ struct Light {
     float range = 0.0f;
     float radius = 0.0f;                // disk
     glm::vec3 halfEdgeU{0.0f}, halfEdgeV{0.0f};  // rectangle
+    // directional: the sun seen as a disk of this angular diameter (degrees, in [0, 180);
+    // UE5's "Source Angle", the real sun's about 0.53) around `direction`; 0: a point-like sun.
+    // Only reference-soft reads it (conventions.md, "Lights"); every other technique and the
+    // shading see the centre direction.
+    float angularDiameterDeg = 0.0f;
     glm::vec3 intensity{1.0f};
     // spot: its cookie, null for none. Shared by the copies of the light, never changed.
     std::shared_ptr<const LightCookie> cookie = nullptr;

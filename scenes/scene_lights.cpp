@@ -20,6 +20,10 @@ constexpr std::array<std::pair<std::string_view, LightType>, 5> kLightTypes{{
 // A spot's half-angle: beyond 90 degrees it would no longer be a cone in front of it.
 constexpr Interval kConeAngleDeg{0.0, 90.0, true, false};
 
+// A sun's angular diameter: below 180 degrees its disk on the sky is a cap smaller than a
+// hemisphere, whose directions the soft reference samples (shading/light_sampling.h, sunCap).
+constexpr Interval kAngularDiameterDeg{0.0, 180.0, false, true};
+
 // Two vectors count as perpendicular when the cosine of their angle is below this; it
 // allows for the rounding of hand-typed decimals such as 0.7071.
 constexpr double kPerpendicularCosine = 1e-4;
@@ -29,7 +33,7 @@ std::vector<std::string_view> keysFor(LightType type) {
         case LightType::Point: return {"type", "position", "color", "power", "range"};
         case LightType::Spot:
             return {"type", "position", "direction", "coneAngle", "innerConeAngle", "range", "color", "power", "cookie"};
-        case LightType::Directional: return {"type", "direction", "color", "power"};
+        case LightType::Directional: return {"type", "direction", "angularDiameter", "color", "power"};
         case LightType::Disk: return {"type", "position", "normal", "radius", "color", "power"};
         case LightType::Rectangle: return {"type", "position", "halfEdgeU", "halfEdgeV", "color", "power"};
     }
@@ -71,7 +75,11 @@ void readShape(const JsonObject& object, Light& light) {
             light.coneAngleDeg = object["coneAngle"].number(kConeAngleDeg);
             readPunctualFalloff(object, light);
             break;
-        case LightType::Directional: light.direction = unitDirection(object["direction"]); break;
+        case LightType::Directional:
+            light.direction = unitDirection(object["direction"]);
+            if (const auto angle = object.optional("angularDiameter"))
+                light.angularDiameterDeg = float(angle->number(kAngularDiameterDeg));
+            break;
         case LightType::Disk:
             light.direction = unitDirection(object["normal"]);
             light.radius = object["radius"].number(kPositive);

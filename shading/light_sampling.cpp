@@ -90,6 +90,19 @@ double reduceConcentricAngle(double phi, int& quadrant) {
     return (phi - k * portable::detail::kHalfPiHigh) - k * portable::detail::kHalfPiLow;
 }
 
+// An orthonormal basis (a, b) around a unit n, without a branch on an arbitrary "up"
+// vector: Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an
+// Orthonormal Basis, Revisited", JCGT 6(1), 2017.
+struct Basis {
+    glm::dvec3 a, b;
+};
+Basis orthonormalBasis(const glm::dvec3& n) {
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z);
+    const double b = n.x * n.y * a;
+    return {glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), glm::dvec3(b, sign + n.y * n.y * a, -n.y)};
+}
+
 }  // namespace
 
 glm::dvec2 concentricSquareToDisk(const glm::dvec2& u) {
@@ -108,18 +121,29 @@ AreaLightFrame areaLightFrame(const Light& light) {
     if (light.type != LightType::Disk) {
         throw std::invalid_argument("areaLightFrame: not an area light");
     }
-    // Orthonormal basis around the normal without a branch on an arbitrary "up" vector:
-    // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an Orthonormal
-    // Basis, Revisited", JCGT 6(1), 2017.
-    const glm::dvec3 n = areaLightNormal(light);
-    const double sign = std::copysign(1.0, n.z);
-    const double a = -1.0 / (sign + n.z);
-    const double b = n.x * n.y * a;
+    const Basis basis = orthonormalBasis(areaLightNormal(light));
     const double radius = double(light.radius);
     frame.disk = true;
-    frame.axisA = radius * glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    frame.axisB = radius * glm::dvec3(b, sign + n.y * n.y * a, -n.y);
+    frame.axisA = radius * basis.a;
+    frame.axisB = radius * basis.b;
     return frame;
+}
+
+SunCap sunCap(const Light& light) {
+    if (light.type != LightType::Directional || !(light.angularDiameterDeg > 0.0f)) {
+        throw std::invalid_argument("sunCap: not a directional light with an angular size");
+    }
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(light.direction));
+    const Basis basis = orthonormalBasis(axis);
+    // theta_max / 2 in radians; 1 - cos(theta_max) = 2 sin^2(theta_max / 2).
+    const double quarterAngle = double(light.angularDiameterDeg) * (std::numbers::pi / 720.0);
+    const double s = portable::sin(quarterAngle);
+    return {.axis = axis, .tangentA = basis.a, .tangentB = basis.b, .oneMinusCosMax = 2.0 * s * s};
+}
+
+glm::dvec3 sunCapDirection(const SunCap& cap, const glm::dvec2& m) {
+    const double h = cap.oneMinusCosMax, r2h = glm::dot(m, m) * h;
+    return (1.0 - r2h) * cap.axis + std::sqrt(h * (2.0 - r2h)) * (m.x * cap.tangentA + m.y * cap.tangentB);
 }
 
 AreaLightPlane areaLightPlane(const AreaLightFrame& frame) {
@@ -147,33 +171,48 @@ glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng) {
 
 namespace shadowlab {
 
-void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
+void AreaLightPoints::jitter(int n, Pcg32& rng) {
     const size_t count = size_t(n) * size_t(n);
     u_.resize(count), points_.resize(count);
     for (int b = 0; b < n; ++b) {
         for (int a = 0; a < n; ++a) u_[size_t(a) + size_t(n) * size_t(b)] = jitteredSample(a, b, n, rng);
     }
+}
+
+void AreaLightPoints::squaresToDisk() {
+    const size_t count = u_.size();
+    centre_.resize(count), radius_.resize(count), reduced_.resize(count), sine_.resize(count), cosine_.resize(count),
+        quadrant_.resize(count);
+    for (size_t k = 0; k < count; ++k) {   // the centre's phi is reduced, then unused
+        const ConcentricPolar p = concentricPolar(u_[k]);
+        centre_[k] = p.centre, radius_[k] = p.r;
+        reduced_[k] = reduceConcentricAngle(p.phi, quadrant_[k]);
+    }
+    for (size_t k = 0; k < count; ++k) {   // no branch: vectorised
+        sine_[k] = portable::detail::sinReduced(reduced_[k]);
+        cosine_[k] = portable::detail::cosReduced(reduced_[k]);
+    }
+    for (size_t k = 0; k < count; ++k) {
+        const double c = quarterTurns(quadrant_[k] + 1, sine_[k], cosine_[k]);
+        const double s = quarterTurns(quadrant_[k], sine_[k], cosine_[k]);
+        u_[k] = centre_[k] ? glm::dvec2(0.0) : radius_[k] * glm::dvec2(c, s);
+    }
+}
+
+void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
+    jitter(n, rng);
     if (frame.disk) {
-        centre_.resize(count), radius_.resize(count), reduced_.resize(count), sine_.resize(count), cosine_.resize(count),
-            quadrant_.resize(count);
-        for (size_t k = 0; k < count; ++k) {   // the centre's phi is reduced, then unused
-            const ConcentricPolar p = concentricPolar(u_[k]);
-            centre_[k] = p.centre, radius_[k] = p.r;
-            reduced_[k] = reduceConcentricAngle(p.phi, quadrant_[k]);
-        }
-        for (size_t k = 0; k < count; ++k) {   // no branch: vectorised
-            sine_[k] = portable::detail::sinReduced(reduced_[k]);
-            cosine_[k] = portable::detail::cosReduced(reduced_[k]);
-        }
-        for (size_t k = 0; k < count; ++k) {
-            const double c = quarterTurns(quadrant_[k] + 1, sine_[k], cosine_[k]);
-            const double s = quarterTurns(quadrant_[k], sine_[k], cosine_[k]);
-            u_[k] = centre_[k] ? glm::dvec2(0.0) : radius_[k] * glm::dvec2(c, s);
-        }
+        squaresToDisk();
     } else {
         for (glm::dvec2& u : u_) u = 2.0 * u - 1.0;
     }
-    for (size_t k = 0; k < count; ++k) points_[k] = lightPointAt(frame, u_[k]);
+    for (size_t k = 0; k < u_.size(); ++k) points_[k] = lightPointAt(frame, u_[k]);
+}
+
+void AreaLightPoints::fill(const SunCap& cap, int n, Pcg32& rng) {
+    jitter(n, rng);
+    squaresToDisk();
+    for (size_t k = 0; k < u_.size(); ++k) points_[k] = sunCapDirection(cap, u_[k]);
 }
 
 }  // namespace shadowlab

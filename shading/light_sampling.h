@@ -73,6 +73,28 @@ glm::dvec3 areaLightPoint(const AreaLightFrame& frame, const glm::dvec2& u);
 // Sample u of stratum (a, b) of n x n, jittered with two draws from rng.
 glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng);
 
+// A sun of angular diameter a (a directional light's angularDiameterDeg > 0) is the cap of
+// directions within theta_max = a/2 of its unit `axis` (towards the sun), a disk on the sky.
+// tangentA, tangentB: an orthonormal basis around the axis; h = 1 - cos(theta_max), kept
+// as 2 sin^2(theta_max / 2), which keeps its digits for a sun of a fraction of a degree.
+struct SunCap {
+    glm::dvec3 axis{0.0}, tangentA{0.0}, tangentB{0.0};
+    double oneMinusCosMax = 0.0;
+};
+// Throws std::invalid_argument unless the light is directional with angularDiameterDeg > 0.
+SunCap sunCap(const Light& light);
+
+// The cap's direction for a point m = r (cos phi, sin phi) of the unit disk, equal-area: the
+// cap between the axis and theta has solid angle 2 pi (1 - cos theta), the fraction
+// (1 - cos theta) / h of the whole cap, and the disk within r the fraction r^2 of the disk,
+// so the map that keeps relative area (and phi) has
+//     cos theta = 1 - r^2 h,   sin theta = r sqrt(h (2 - r^2 h)),
+//     direction = cos theta axis + sqrt(h (2 - r^2 h)) (m.x tangentA + m.y tangentB)
+// (the factor r of sin theta cancels the 1/r of the unit vector m / r: no division at the
+// centre). Composed with concentricSquareToDisk, strata of the unit square become cells of
+// equal solid angle.
+glm::dvec3 sunCapDirection(const SunCap& cap, const glm::dvec2& m);
+
 // The light's points of all n x n strata, stratum (a, b) at a + n b: the bits of
 // areaLightPoint(frame, jitteredSample(a, b, n, rng)) over b, then a, from 0, and the same
 // draws from rng. Computed in stages over arrays, so that the disk's sine and cosine
@@ -82,9 +104,14 @@ glm::dvec2 jitteredSample(int a, int b, int n, Pcg32& rng);
 class AreaLightPoints {
 public:
     void fill(const AreaLightFrame& frame, int n, Pcg32& rng);
+    // A sun's: points() are then the unit directions sunCapDirection(cap,
+    // concentricSquareToDisk(jitteredSample(a, b, n, rng))), in the same order and draws.
+    void fill(const SunCap& cap, int n, Pcg32& rng);
     const std::vector<glm::dvec3>& points() const { return points_; }
 
 private:
+    void jitter(int n, Pcg32& rng);   // u_: the strata's samples
+    void squaresToDisk();             // u_: concentricSquareToDisk of each
     std::vector<glm::dvec3> points_;
     std::vector<glm::dvec2> u_;   // per stratum: the sample, then the point in [-1, 1]^2 or the disk
     std::vector<uint8_t> centre_;   // the disk's: the square's centre, the disk's

@@ -28,7 +28,9 @@ struct LightArrival {
 // A glTF spot (innerConeAngleDeg set) falls off smoothly from its inner angle to its cone's
 // edge, and a light with a range fades to 0 at it, by KHR_lights_punctual's recommended
 // formulas (conventions.md, "Lights"); without them the bits are those of the plain rules.
-// Directional: the light's irradiance. Disk, rectangle: the far-field point light above.
+// Directional: the light's irradiance, from its direction; a sun with an angular size the
+// same, its disk's irradiance from its centre (exact while the disk is above the horizon:
+// conventions.md, "Lights"), its size left to V. Disk, rectangle: the far-field point light above.
 LightArrival lightArrival(const Light& light, const glm::vec3& point);
 
 // A spot light's cookie (RTR 4th ed., section 7.2, "gobo map") projected through its cone

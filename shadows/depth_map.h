@@ -23,6 +23,7 @@
 #include "scenes/scene.h"
 #include "shadows/light_view.h"
 #include "shadows/settings_table.h"
+#include "shadows/texel_index.h"
 
 namespace shadowlab {
 
@@ -59,17 +60,6 @@ struct DepthMap {
     std::vector<float> image() const;
     void image(std::vector<float>& rows) const;
 };
-
-// The texel holding texel coordinate c, floor(c), saturated to +-2^30 (NaN to -2^30) so
-// that any coordinate is a valid int that at() then clamps (converting an out-of-range
-// double to int is undefined). Truncation plus a correction instead of std::floor, which
-// is a library call on the baseline x86-64 target.
-inline int texelIndexOf(double c) {
-    constexpr double kLimit = 1073741824.0;
-    const double saturated = c > -kLimit ? (c < kLimit ? c : kLimit) : -kLimit;
-    const int truncated = int(saturated);
-    return truncated - (saturated < double(truncated) ? 1 : 0);
-}
 
 // The window transform of a size x size map after `clipFromWorld` (float, as drawn); for a
 // map drawn as a window of a larger viewport, that viewport's transform moved to the window.

@@ -64,9 +64,9 @@ double casterLodRatio(const TechniqueParams& params) {
 }
 
 Light pointLightFor(const Light& light) {
-    if (light.type != LightType::Disk && light.type != LightType::Rectangle) return light;
     Light point = light;
-    point.type = LightType::Point;
+    if (light.type == LightType::Disk || light.type == LightType::Rectangle) point.type = LightType::Point;
+    point.angularDiameterDeg = 0.0f;
     return point;
 }
 

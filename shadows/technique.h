@@ -137,7 +137,8 @@ bool anySurface(const GBuffer& g);
 bool anyReachable(const GBuffer& g, const Light& light);
 ShadowOutputs unlitOutputs(const GBuffer& g);
 
-// Hard-shadow techniques see a light as a point: an area light's centre stands in for it.
+// Hard-shadow techniques see a light as a point: an area light's centre stands in for it,
+// and a sun with an angular size is a point-like sun in its centre direction.
 // The result is for visibility only (its intensity keeps the area light's units).
 Light pointLightFor(const Light& light);
 

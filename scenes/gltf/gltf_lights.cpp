@@ -66,7 +66,7 @@ std::optional<Light> readNodeLight(const GltfDocument& document, size_t node, co
     if (source.type == "directional") {
         light.type = LightType::Directional;
         light.direction = -unitOrFail(document, forward, nodeField);   // ours points towards the light
-        return light;
+        return light;   // KHR_lights_punctual has no angular size: a point-like sun, angularDiameterDeg 0
     }
     light.position = glm::vec3(worldFromNode[3]);
     if (!(std::abs(light.position.x) <= kMaxCoordinate && std::abs(light.position.y) <= kMaxCoordinate &&

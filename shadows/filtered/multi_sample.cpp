@@ -94,7 +94,7 @@ ShadowOutputs runMultiSample(const ShadowInputs& in) {
     fit.marginTexels = kNearestFitMarginTexels;
     fit.simd = in.simd;
     fit.scratch = &in.kept().state<LightViewScratch>();
-    const DepthMapSettings depth{resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
+    const DepthMapSettings depth{resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{}), {}};
     std::vector<uint16_t> lit(in.gbuffer.pixelCount(), 0);
     std::vector<float> v(in.gbuffer.pixelCount());
     // Every sample's map drawn in one memory by one rasterizer, kept between frames

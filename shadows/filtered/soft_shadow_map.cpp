@@ -95,7 +95,7 @@ const SoftShadowMap& renderSoftShadowMap(const ShadowInputs& in, int resolution,
     // grazing light) for a quarter of the depth resolution.
     view = withFarPlane(view, view.zFar * kFarPlaneHeadroom);
     SoftShadowMap& soft = in.kept().state<SoftShadowMap>();
-    soft.map = renderDepthMap(in.casters(), view, {resolution, DepthLayer::First, offset}, in.simd, std::move(soft.map),
+    soft.map = renderDepthMap(in.casters(), view, {resolution, DepthLayer::First, offset, {}}, in.simd, std::move(soft.map),
                               &in.kept().state<SoftMapRasterizer>().kept.at(in.simd));
     soft.map.image(soft.linear);
     tbb::parallel_for(size_t(0), soft.linear.size(), [&](size_t k) {

@@ -161,7 +161,7 @@ int drawLayers(const ShadowInputs& in, const FinScene& scene, const FinSettings&
                IlluminanceBuffer& buffer, StageTimer& timer) {
     const IlluminanceSettings settings{s.light, scene.view, scene.L0, s.style.edgeWeight, s.maps.falloff, in.simd};
     // Slope-scaled, the shadow map's default: the illuminance compares receivers where they are.
-    const DepthMapSettings hardSettings{s.maps.resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{})};
+    const DepthMapSettings hardSettings{s.maps.resolution, DepthLayer::First, polygonOffsetFor(BiasSettings{}), {}};
     int drawn = 0;
     for (int layer = 0; layer < scene.layering.layers.count(); ++layer) {
         const LayerContents& c = scene.layering.contents[layer];

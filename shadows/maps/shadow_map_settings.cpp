@@ -45,7 +45,7 @@ const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable() {
 }
 
 DepthMapSettings depthMapSettings(const ShadowMapSettings& s) {
-    return {s.resolution, s.layer, polygonOffsetFor(s.bias)};
+    return {s.resolution, s.layer, polygonOffsetFor(s.bias), {}};
 }
 
 }  // namespace shadowlab

@@ -23,7 +23,7 @@ OccluderTexture renderOccluderTexture(const WorldGeometry& casters, std::span<co
     // Depth only, no culling (an occluder covers the light with either side), no offset: a
     // texel is covered where the depth is below the cleared 1.
     const LightView view = fitOccluderView(casters, occluders, light, resolution);
-    texture.map = renderDepthMap(casters, occluders, view, {resolution, DepthLayer::First, {}}, simd,
+    texture.map = renderDepthMap(casters, occluders, view, {resolution, DepthLayer::First, {}, {}}, simd,
                                  std::move(texture.map), rasterizer);
     return texture;
 }

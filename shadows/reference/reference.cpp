@@ -245,7 +245,7 @@ struct ReferenceVisibility::RayBatch::Samples {
     std::vector<RTCRay> rays;            // ray k's id is k
     std::vector<uint32_t> sampleOfRay;
     std::vector<Crossing> crossed;
-    AreaLightPoints lightPoints;         // an area light's, for the receiver
+    AreaLightPoints lightPoints;         // an area light's, or a sun's directions, for the receiver
     std::vector<double> segmentEnds;     // per light point
     uint64_t count = 0;                  // rays traced
 
@@ -343,6 +343,15 @@ void addAreaSamples(Samples& samples, const Receiver& r, const AreaLightFrame& f
     for (size_t k = 0; k < targets.size(); ++k) addPointSample(samples, r, targets[k], samples.segmentEnds[k]);
 }
 
+// Queues n x n stratified directions towards a sun with an angular size, in its cap
+// (light_sampling.h, sunCapDirection): like an area light's points, drawn for every
+// stratum, and a direction below the surface's horizon is dark, as an area light's point
+// behind it is.
+void addSunSamples(Samples& samples, const Receiver& r, const SunCap& cap, int n, Pcg32 rng) {
+    samples.lightPoints.fill(cap, n, rng);
+    for (const glm::dvec3& direction : samples.lightPoints.points()) addDirectionSample(samples, r, direction);
+}
+
 // The mean light of the traced samples [first, end), summed in their order: with opaque
 // casters the visible fraction, count / n^2, exact in float; one sample's own light.
 glm::vec3 meanLight(const Samples& samples, size_t first, size_t end) {
@@ -364,6 +373,7 @@ constexpr size_t kBatchRays = 256;
 struct LightQuery {
     const Light& light;
     AreaLightFrame frame;
+    std::optional<SunCap> sun;   // a directional light with an angular size
     ReferenceOptions options;
 };
 
@@ -375,6 +385,7 @@ void addPixelSamples(Samples& samples, const LightQuery& q, const Receiver& r, u
             if (!insideSpotCone(q.light, glm::vec3(r.P))) return samples.addKnown(glm::vec3(0.0f));
             return addPointSample(samples, r, glm::dvec3(q.light.position));
         case LightType::Directional:
+            if (q.sun) return addSunSamples(samples, r, *q.sun, q.options.areaSamplesPerAxis, Pcg32(q.options.seed, pixel));
             return addDirectionSample(samples, r, glm::dvec3(q.light.direction));
         case LightType::Disk:
         case LightType::Rectangle:
@@ -440,10 +451,12 @@ ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, 
                                                         const ReferenceOptions& options) const {
     requireConsistent(gbuffer, "ReferenceVisibility::visibility");
     const bool area = light.type == LightType::Disk || light.type == LightType::Rectangle;
-    if (area && options.areaSamplesPerAxis < 1) {
+    const bool sun = light.type == LightType::Directional && light.angularDiameterDeg > 0.0f;
+    if ((area || sun) && options.areaSamplesPerAxis < 1) {
         throw std::invalid_argument("ReferenceVisibility: areaSamplesPerAxis must be >= 1");
     }
-    const LightQuery query{light, area ? areaLightFrame(light) : AreaLightFrame{}, options};
+    const LightQuery query{light, area ? areaLightFrame(light) : AreaLightFrame{},
+                           sun ? std::optional(sunCap(light)) : std::nullopt, options};
     Passed out;
     out.visibility.assign(gbuffer.pixelCount(), 0.0f);
     if (transmission_) out.coloured.assign(gbuffer.pixelCount(), glm::vec3(0.0f));

@@ -4,19 +4,24 @@
 // errors").
 //
 //   point, spot:  V in {0, 1}: one ray to the light position.
-//   directional:  V in {0, 1}: one ray towards the light, to infinity.
+//   directional:  V in {0, 1}: one ray towards the light, to infinity; a sun with an
+//                 angular size (angularDiameterDeg > 0): V = visible fraction of n x n
+//                 stratified directions uniform in solid angle over its cap, each a ray
+//                 to infinity (shading/light_sampling.h, sunCapDirection).
 //   disk, rect:   V = visible fraction of n x n stratified samples on the light
 //                 (default 32 x 32 = 1024), an estimate of the fraction of the light's
 //                 area seen from P (shading/light_sampling.h).
 // A light (or light sample) on or behind the plane of the surface, dot(N, L - P) <= 0,
-// is invisible, as is a point outside a spot light's cone (the same hard cone as
+// is invisible, and so is a sun's direction below the surface's horizon, dot(N, d) <= 0,
+// as is a point outside a spot light's cone (the same hard cone as
 // shading/lights.h): no ray is cast for them. Pixels with hit = 0 get V = 0.
 // Through casters that are not opaque, a ray's 0 or 1 becomes the light it passes: the
 // product of what each translucent surface it crosses lets through, times exp(-optical
 // depth) of the density volumes (caster_transmission.h, volume_march.h); V is the
 // luminance of that product.
 //
-// Each pixel depends only on its own G-buffer entry and, for area lights, on a random
+// Each pixel depends only on its own G-buffer entry and, for area lights and suns with a
+// size, on a random
 // stream seeded by (options.seed, pixel index), so V is the same bytes for any number of
 // threads.
 #pragma once
@@ -43,7 +48,7 @@ namespace shadowlab {
 enum class RayQueries { Stream, Single };
 
 struct ReferenceOptions {
-    int areaSamplesPerAxis = 32;       // area lights: n x n strata, one sample each
+    int areaSamplesPerAxis = 32;       // area lights, suns with a size: n x n strata, one sample each
     uint64_t seed = 0x5eed5eed5eedull;  // jitter; pixel k uses PCG32 stream k
     Progress* progress = nullptr;       // counts the rows done; null: reports nothing
     RayQueries queries = RayQueries::Stream;
@@ -65,7 +70,7 @@ public:
 
     // V per pixel (see the header comment). Throws std::invalid_argument if the G-buffer's
     // arrays are not all width * height long, or options.areaSamplesPerAxis < 1 for an
-    // area light.
+    // area light or a sun with a size.
     std::vector<float> visibility(const GBuffer& gbuffer, const Light& light,
                                   const ReferenceOptions& options = {}) const;
     // V and, through casters that are not opaque, the light passed per channel (the mean

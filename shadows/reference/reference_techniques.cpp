@@ -45,8 +45,9 @@ const SettingsTable<SoftReferenceSettings>& softReferenceSettingsTable() {
     return table;
 }
 
-// The soft shadows' reference: the visible fraction of the area light itself, from n x n
-// stratified samples (reference.h); point and directional lights give hard shadows.
+// The soft shadows' reference: the visible fraction of the area light itself, or of a sun's
+// disk on the sky, from n x n stratified samples (reference.h); point lights and point-like
+// suns give hard shadows.
 ShadowOutputs exactSoftReference(const ShadowInputs& in) {
     const SoftReferenceSettings settings = softReferenceSettingsTable().read(in.params);
     return referenceVisibility(in, in.light, {.areaSamplesPerAxis = settings.samplesPerAxis});
@@ -74,8 +75,8 @@ Technique referenceTechnique() {
 
 Technique softReferenceTechnique() {
     return {.name = "reference-soft",
-            .description = "exact soft shadows: the visible fraction of the area light, n x n stratified "
-                           "Embree rays per pixel",
+            .description = "exact soft shadows: the visible fraction of the area light (or of a sun's disk "
+                           "on the sky), n x n stratified Embree rays per pixel",
             .params = softReferenceSettingsTable().specs(),
             .run = exactSoftReference,
             .referenceName = "reference-soft",

@@ -29,12 +29,6 @@ LightFrame LightFrame::towards(const glm::dvec3& direction) {
 
 double ClipmapSettings::texelM(int level) const { return std::ldexp(2.0, level) / double(resolution); }
 
-int32_t pageOf(double c, int pageTexels) {
-    constexpr double kLimit = 1073741824.0;   // 2^30
-    const double page = std::floor(c / double(pageTexels));   // exact: pageTexels is a power of two
-    return int32_t(page > -kLimit ? (page < kLimit ? page : kLimit) : -kLimit);   // NaN: -2^30
-}
-
 glm::dvec2 texelOf(const ClipmapSettings& settings, int level, const glm::dvec3& local) {
     const double texel = settings.texelM(level);
     return {local.x / texel, -local.y / texel};

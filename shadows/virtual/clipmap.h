@@ -24,6 +24,7 @@
 #include <glm/glm.hpp>
 
 #include "scenes/scene.h"
+#include "shadows/texel_index.h"
 
 namespace shadowlab::vsm {
 
@@ -72,7 +73,10 @@ struct LevelWindow {
 
 // The page holding texel coordinate c (floor(c / pageTexels)), saturated to +-2^30 pages,
 // so that any coordinate, however far, gives a page no window holds instead of overflowing.
-int32_t pageOf(double c, int pageTexels);
+// c / pageTexels is exact (a power of two), as its product with the inverse; texelIndexOf
+// floors and saturates without a library call. Inline: marking and the lookup call it per
+// pixel.
+inline int32_t pageOf(double c, int pageTexels) { return texelIndexOf(c * (1.0 / double(pageTexels))); }
 
 // Level l's texel coordinate of a point of the frame (the row grows downwards).
 glm::dvec2 texelOf(const ClipmapSettings& settings, int level, const glm::dvec3& local);

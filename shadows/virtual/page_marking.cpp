@@ -1,7 +1,9 @@
 #include "shadows/virtual/page_marking.h"
 
 #include <algorithm>
-#include <cmath>
+#include <bit>
+#include <cstdint>
+#include <limits>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -12,6 +14,13 @@
 namespace shadowlab::vsm {
 namespace {
 
+// The binary exponent e of x = m 2^e, m in [0.5, 1), for x > 0, as std::frexp gives it,
+// read from the bits (frexp is a library call per pixel); a subnormal x gets the smallest
+// normal's, -1021, which chooses the same (finest) level as its own would.
+int binaryExponent(double x) {
+    return x >= std::numeric_limits<double>::min() ? int((std::bit_cast<uint64_t>(x) >> 52) & 0x7ff) - 1022 : -1021;
+}
+
 // What every pixel's choice needs from the camera and the clipmap.
 struct LevelChoice {
     glm::dvec3 eye, forward;
@@ -19,17 +28,17 @@ struct LevelChoice {
     const ClipmapSettings& clipmap;
     const std::vector<LevelWindow>& windows;
     const MarkingSettings& settings;
+    std::vector<double> texelsPerM;   // per level: 1 / texelM, a power of two, so exact
 
     // The finest level whose texel is no larger than the pixel's (biased) footprint:
     // texel(l) = 2^(l+1) / resolution <= footprint, so l = floor(log2(footprint * resolution
-    // / 2)), the binary exponent, exact (frexp, no libm approximation).
+    // / 2)), the binary exponent, exact.
     int matchingLevel(const glm::dvec3& P) const {
         const double footprint = footprintPerDepth * glm::dot(P - eye, forward);
-        int exponent = 0;
-        const double mantissa = std::frexp(footprint * double(clipmap.resolution) / 2.0, &exponent);
+        const double scaled = footprint * double(clipmap.resolution) / 2.0;
         // A pixel wider than the coarsest texel reads the coarsest level (more detail than
         // it needs); one finer than the finest, or at no depth, the finest.
-        const int level = mantissa > 0.0 ? exponent - 1 + settings.lodBias : clipmap.firstLevel;
+        const int level = scaled > 0.0 ? binaryExponent(scaled) - 1 + settings.lodBias : clipmap.firstLevel;
         return std::clamp(level, clipmap.firstLevel, clipmap.lastLevel);
     }
 
@@ -38,7 +47,8 @@ struct LevelChoice {
         const glm::dvec3 local = frame.local(P);
         const int n = clipmap.pagesPerSide();
         for (int level = matchingLevel(P); level <= clipmap.lastLevel; ++level) {
-            const glm::dvec2 texel = texelOf(clipmap, level, local);
+            const double perM = texelsPerM[size_t(level - clipmap.firstLevel)];
+            const glm::dvec2 texel(local.x * perM, -local.y * perM);   // texelOf's bits
             const PageBox box = pagesRead(texel, settings.reachTexels, clipmap.pageTexels);
             const LevelWindow& w = windows[size_t(level - clipmap.firstLevel)];
             if (w.holds(box.x0, box.y0, n) && w.holds(box.x1, box.y1, n))
@@ -59,12 +69,17 @@ PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels) {
 void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const LightFrame& frame,
                const ClipmapSettings& clipmap, const MarkingSettings& settings, PageTable& table,
                std::vector<PixelLevel>& levels) {
-    const LevelChoice choice{glm::dvec3(camera.eye), glm::normalize(glm::dvec3(camera.target - camera.eye)),
-                             2.0 / (clipFromViewD(camera)[1][1] * double(camera.height)), clipmap, table.windows(),
-                             settings};
+    LevelChoice choice{glm::dvec3(camera.eye), glm::normalize(glm::dvec3(camera.target - camera.eye)),
+                       2.0 / (clipFromViewD(camera)[1][1] * double(camera.height)), clipmap, table.windows(),
+                       settings, {}};
+    for (int l = clipmap.firstLevel; l <= clipmap.lastLevel; ++l) choice.texelsPerM.push_back(1.0 / clipmap.texelM(l));
     const LightReach reaches(sun);
     levels.assign(g.pixelCount(), PixelLevel{});
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        // Neighbouring pixels mostly read the same pages: a box requested just before is not
+        // requested again (a request only sets a flag).
+        PageBox last{1, 1, 0, 0};   // no box: x0 > x1
+        int lastBoxLevel = 0;
         for (int j = rows.begin(); j < rows.end(); ++j) {
             for (int i = 0; i < g.width; ++i) {
                 const size_t k = g.index(i, j);
@@ -74,6 +89,9 @@ void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const L
                 if (chosen.level == kNoLevel) continue;
                 const int level = clipmap.firstLevel + chosen.level;
                 const PageBox box = pagesRead(chosen.texel, settings.reachTexels, clipmap.pageTexels);
+                if (level == lastBoxLevel && box.x0 == last.x0 && box.y0 == last.y0 && box.x1 == last.x1 && box.y1 == last.y1)
+                    continue;
+                last = box, lastBoxLevel = level;
                 for (int32_t py = box.y0; py <= box.y1; ++py)
                     for (int32_t px = box.x0; px <= box.x1; ++px) table.request({level, px, py});
             }

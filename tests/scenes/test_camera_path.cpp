@@ -61,9 +61,11 @@ TEST_CASE("a directional light's path is interpolated, then normalised, and plac
     Camera camera;
     std::vector<Light> lights(1);
     lights[0].type = LightType::Directional;
+    lights[0].angularDiameterDeg = 2.5f;
     placeOnPath(mid, 1, camera, lights);
     CHECK(glm::length(lights[0].direction) == doctest::Approx(1.0).epsilon(1e-6));
     CHECK(lights[0].direction.x == lights[0].direction.y);
+    CHECK(lights[0].angularDiameterDeg == 2.5f);   // turning the sun keeps its size
     CHECK(camera.eye == glm::vec3(0, 4, 9));
     // The eye passing through the target between two keyframes is caught at that frame.
     // Frame 1 of 3 has its eye and its target both at (0, 0, 1).

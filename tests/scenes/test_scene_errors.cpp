@@ -121,6 +121,18 @@ TEST_CASE("the unbroken test scene loads") {
     CHECK(scene.materials[1].albedo == Material{}.albedo);   // default kept
 }
 
+// A sun's size (conventions.md, "Lights"): absent, the point-like sun every scene had.
+TEST_CASE("a sun's angular diameter loads, and without it the sun is point-like") {
+    const test::TempDir dir;
+    writeMeshFiles(dir);
+    json s = validScene();
+    CHECK(loadScene(dir.write("plain.json", render(s))).lights[3].angularDiameterDeg == 0.0f);
+    s["lights"][3]["angularDiameter"] = 2.5;
+    const Scene sized = loadScene(dir.write("sized.json", render(s)));
+    CHECK(sized.lights[3].angularDiameterDeg == 2.5f);
+    CHECK(sized.lights[3].direction == loadScene(dir.path("plain.json")).lights[3].direction);
+}
+
 // KHR_lights_punctual's range and inner cone, which a glTF file's lights carry, are a scene
 // file's too (a glTF model placed by "models" brings no lights of its own).
 TEST_CASE("a point's and a spot's range and a spot's inner cone load, and without them the light is unbounded and its cone hard") {
@@ -241,6 +253,16 @@ TEST_CASE("degenerate lights") {
         {"inner cone at the cone", [](json& s) { s["lights"][2]["innerConeAngle"] = 30; },
          {"lights[2].innerConeAngle: must be in [0, 30), got 30"}},
         {"range of a sun", [](json& s) { s["lights"][3]["range"] = 4; }, {"lights[3]: unknown key \"range\""}},
+        {"negative sun size", [](json& s) { s["lights"][3]["angularDiameter"] = -0.5; },
+         {"lights[3].angularDiameter: must be in [0, 180), got -0.5"}},
+        {"sun as wide as a hemisphere", [](json& s) { s["lights"][3]["angularDiameter"] = 180; },
+         {"lights[3].angularDiameter: must be in [0, 180), got 180"}},
+        {"sun size as text", [](json& s) { s["lights"][3]["angularDiameter"] = "2"; },
+         {"lights[3].angularDiameter: must be a number"}},
+        {"angular size of a point light", [](json& s) { s["lights"][1]["angularDiameter"] = 2; },
+         {"lights[1]: unknown key \"angularDiameter\""}},
+        {"angular size of a disk light", [](json& s) { s["lights"][0]["angularDiameter"] = 2; },
+         {"lights[0]: unknown key \"angularDiameter\""}},
         {"negative power", [](json& s) { s["lights"][1]["power"] = -2; }, {"lights[1].power: must be >= 0, got -2"}},
         {"negative colour", [](json& s) { s["lights"][3]["color"][2] = -0.5; },
          {"lights[3].color[2]: must be >= 0, got -0.5"}},

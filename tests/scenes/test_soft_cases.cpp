@@ -89,3 +89,16 @@ TEST_CASE("sharp-corner: star points narrower than 30 degrees") {
     CHECK(tipDegrees < 30.0);
     CHECK(tipDegrees > 20.0);
 }
+
+TEST_CASE("sun-disk: a 2.5-degree sun whose penumbra at the post's tip is over 30 cm") {
+    const Scene scene = loadSoftCase("sun-disk");
+    REQUIRE(scene.lights.size() == 1);
+    const Light& sun = scene.lights[0];
+    CHECK(sun.type == LightType::Directional);
+    CHECK(sun.angularDiameterDeg == 2.5f);
+    const Box post = instanceBounds(scene, flatten(scene), "post");
+    // From the tip (height H) along the sun to the ground: H / sin(elevation); the penumbra
+    // is that length times the angle in radians.
+    const double elevation = std::asin(double(sun.direction.y)), angle = 2.5 * M_PI / 180.0;
+    CHECK(double(post.hi.y) / std::sin(elevation) * angle > 0.3);
+}

@@ -1,11 +1,13 @@
-// The pieces of area-light sampling: PCG32 output, the concentric map, light frames, and
-// the batched points of a stratified sampling against one point at a time.
+// The pieces of area-light sampling: PCG32 output, the concentric map, light frames, the
+// batched points of a stratified sampling against one point at a time, and a sun's cap of
+// directions (equal-area, inside the cap).
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "shading/light_sampling.h"
@@ -129,6 +131,67 @@ TEST_CASE("AreaLightPoints: the bits and the draws of areaLightPoint of each jit
             }
             CHECK(same);
             CHECK(batched.next() == alone.next());   // as many draws
+        }
+    }
+}
+
+TEST_CASE("sunCap: a sun's cap needs a directional light with a size, and keeps the digits of a small one") {
+    Light sun{.type = LightType::Directional, .direction = {0.0f, 2.0f, 0.0f}};
+    CHECK_THROWS_AS(sunCap(sun), std::invalid_argument);   // size 0: a point-like sun
+    CHECK_THROWS_AS(sunCap(Light{.type = LightType::Disk, .radius = 1.0f}), std::invalid_argument);
+    sun.angularDiameterDeg = 0.53f;   // the real sun
+    const SunCap cap = sunCap(sun);
+    CHECK(cap.axis == glm::dvec3(0.0, 1.0, 0.0));
+    const double thetaMax = 0.5 * double(sun.angularDiameterDeg) * std::numbers::pi / 180.0;
+    // 1 - cos x = x^2/2 - x^4/24 + ..., the next term below 1e-9 of it.
+    CHECK(cap.oneMinusCosMax == doctest::Approx(thetaMax * thetaMax / 2.0 - std::pow(thetaMax, 4) / 24.0).epsilon(1e-12));
+    CHECK(std::abs(glm::dot(cap.axis, cap.tangentA)) < 1e-15);
+    CHECK(std::abs(glm::dot(cap.axis, cap.tangentB)) < 1e-15);
+    CHECK(glm::cross(cap.tangentA, cap.tangentB) == glm::dvec3(0.0, 1.0, 0.0));
+}
+
+// Uniform in solid angle over the cap of half-angle theta_max, cos theta is uniform on
+// [cos theta_max, 1]: its mean is (1 + cos theta_max) / 2, standard deviation h / sqrt(12)
+// with h = 1 - cos theta_max, and each quarter of [cos theta_max, 1] and each quadrant of
+// azimuth holds a quarter of the directions. N independent samples miss the mean by less
+// than 5 h / sqrt(12 N) except with probability below 1e-6 (stratified ones by less); a map
+// that is not equal-area, cos theta = 1 - r h (uniform in r), has mean 1 - 2h/3, h/6 away.
+TEST_CASE("sunCapDirection: equal-area over the cap and inside it, stratified batch the same bits") {
+    AreaLightPoints batch;
+    for (float size : {0.53f, 3.0f, 40.0f, 170.0f}) {
+        const Light sun{.type = LightType::Directional, .direction = glm::normalize(glm::vec3(0.3f, 1.0f, -0.2f)), .angularDiameterDeg = size};
+        const SunCap cap = sunCap(sun);
+        const double h = cap.oneMinusCosMax, cosMax = 1.0 - h;
+        const int n = 64, count = n * n;
+        Pcg32 batched(5u, 77u), alone(5u, 77u);
+        batch.fill(cap, n, batched);
+        REQUIRE(batch.points().size() == size_t(count));
+        double sumCos = 0.0;
+        int quarter[4] = {0, 0, 0, 0}, quadrant[4] = {0, 0, 0, 0}, outside = 0, notUnit = 0;
+        bool same = true;
+        for (int b = 0; b < n; ++b) {
+            for (int a = 0; a < n; ++a) {
+                const glm::dvec3 d = batch.points()[size_t(a + n * b)];
+                const glm::dvec3 one = sunCapDirection(cap, concentricSquareToDisk(jitteredSample(a, b, n, alone)));
+                same = same && std::memcmp(&d, &one, sizeof d) == 0;
+                const double cosTheta = glm::dot(d, cap.axis);
+                sumCos += cosTheta;
+                outside += cosTheta < cosMax - 1e-12;
+                notUnit += std::abs(glm::length(d) - 1.0) > 1e-12;
+                ++quarter[std::min(3, int(4.0 * (1.0 - cosTheta) / h))];
+                ++quadrant[(glm::dot(d, cap.tangentA) < 0.0) + 2 * (glm::dot(d, cap.tangentB) < 0.0)];
+            }
+        }
+        CAPTURE(size);
+        CHECK(same);
+        CHECK(batched.next() == alone.next());   // as many draws
+        CHECK(outside == 0);
+        CHECK(notUnit == 0);
+        CHECK(std::abs(sumCos / count - (1.0 + cosMax) / 2.0) <= 5.0 * h / std::sqrt(12.0 * count));
+        for (int k = 0; k < 4; ++k) {
+            // Binomial(N, 1/4): standard deviation sqrt(3N)/4 = 28 for N = 4096; five of them.
+            CHECK(std::abs(quarter[k] - count / 4) <= 140);
+            CHECK(std::abs(quadrant[k] - count / 4) <= 140);
         }
     }
 }

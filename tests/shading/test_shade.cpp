@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "raster/portable_constants.h"
 #include "shading/lights.h"
@@ -101,6 +102,13 @@ TEST_CASE("spot light is a hard cone, directional light gives E cos") {
     const glm::dvec3 albedo(0.5, 0.25, 1.0);
     checkColour(shade(sceneWith(sun), onePointAtOrigin(0), 0, {1.0f, 0.0f})[0],
                 ambientOnly + albedo / kPi * 3.0 / std::sqrt(2.0));
+    // A sun with a size shades as the point-like one, bit for bit: E from its centre, times
+    // V (conventions.md, "Lights"); its size shows only in the soft reference's V.
+    Light sized = sun;
+    sized.angularDiameterDeg = 2.5f;
+    const std::vector<glm::vec3> point = shade(sceneWith(sun), onePointAtOrigin(0), 0, {0.5f, 0.0f});
+    const std::vector<glm::vec3> disk = shade(sceneWith(sized), onePointAtOrigin(0), 0, {0.5f, 0.0f});
+    CHECK(point == disk);
 }
 
 TEST_CASE("disk and rectangle lights shade as point lights of intensity L A cos(theta_light)") {

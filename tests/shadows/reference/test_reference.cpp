@@ -6,7 +6,9 @@
 //  (b) a disk (and a rectangle) light over the straight edge of a half-plane occluder: the
 //      visible fraction is the area of the light on one side of a line, a circular
 //      segment for the disk; the stratified estimate must be within a bound derived from
-//      the strata the line crosses;
+//      the strata the line crosses; likewise a sun with an angular size, the solid angle
+//      of its cap on one side of a great circle (a circular segment of the sun's disk on
+//      the sky, to the order of its angular size squared);
 //  and the result must be the same bytes for 1 and 2 threads, and with progress reported.
 #include <doctest/doctest.h>
 
@@ -14,12 +16,14 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <sstream>
 
 #include "raster/thread_count.h"
 #include "shading/light_sampling.h"
 #include "shadows/reference/reference.h"
+#include "shadows/technique.h"
 #include "tests/same_bits.h"
 
 using namespace shadowlab;
@@ -177,13 +181,17 @@ double diskFractionRightOf(double d, double R) {
     return (R * R * std::acos(d / R) - d * std::sqrt(R * R - d * d)) / (std::numbers::pi * R * R);
 }
 
-// World-x range covered by each stratum's image on the light, from a (sub+1)^2 grid of
-// points per stratum, widened by the largest step between neighbouring grid points (the
-// map is smooth within a stratum, so the true range exceeds the sampled one by less).
+// Which side of the occluder's edge a sample u in [0, 1)^2 of the light falls on: the
+// sample is visible iff its coordinate >= the receiver's edge.
+using SampleCoordinate = std::function<double(const glm::dvec2& u)>;
+
+// Range of the coordinate covered by each stratum, from a (sub+1)^2 grid of points per
+// stratum, widened by the largest step between neighbouring grid points (the map is smooth
+// within a stratum, so the true range exceeds the sampled one by less).
 struct Range {
     double lo, hi;
 };
-std::vector<Range> strataXRanges(const AreaLightFrame& frame, int n, int sub) {
+std::vector<Range> strataRanges(const SampleCoordinate& coordinate, int n, int sub) {
     std::vector<Range> ranges;
     for (int b = 0; b < n; ++b) {
         for (int a = 0; a < n; ++a) {
@@ -193,7 +201,7 @@ std::vector<Range> strataXRanges(const AreaLightFrame& frame, int n, int sub) {
                 double previous = 0.0;
                 for (int p = 0; p <= sub; ++p) {
                     const glm::dvec2 u((a + double(p) / sub) / n, (b + double(q) / sub) / n);
-                    const double x = areaLightPoint(frame, u).x;
+                    const double x = coordinate(u);
                     r.lo = std::min(r.lo, x);
                     r.hi = std::max(r.hi, x);
                     if (p > 0) step = std::max(step, std::abs(x - previous));
@@ -213,24 +221,40 @@ std::vector<Range> strataXRanges(const AreaLightFrame& frame, int n, int sub) {
 // so |error| < t = sqrt(K ln(2/delta) / 2) / N except with probability delta.
 // The test uses delta = 1e-6 per point (so it would pass for almost any seed); the ray
 // offset (micrometres) moves the edge by far less than the 1e-4 added for it.
-void checkProfile(const Light& light, double (*exactFraction)(const Light&, double hiddenBelow)) {
+// A light's samples against the edge: which side each falls on, the edge's place for a
+// receiver at x, and the exact visible fraction for an edge.
+struct Profile {
+    SampleCoordinate coordinate;
+    std::function<double(double receiverX)> edge;
+    std::function<double(double edge)> exactFraction;
+    double halfWidth = 0.7;   // the receivers' x in [-halfWidth, halfWidth]
+};
+
+// An area light's: the x of its point, hidden below hiddenBelowX of the receiver's x.
+Profile areaLightProfile(const Light& light, double (*exactFraction)(const Light&, double hiddenBelow)) {
+    const AreaLightFrame frame = areaLightFrame(light);
+    return {[frame](const glm::dvec2& u) { return areaLightPoint(frame, u).x; }, hiddenBelowX,
+            [light, exactFraction](double edge) { return exactFraction(light, edge); }};
+}
+
+void checkProfile(const Light& light, const Profile& profile) {
     const ReferenceVisibility reference(halfPlaneGeometry(), nullptr);
     const ReferenceOptions options;  // 32 x 32
     const int n = options.areaSamplesPerAxis, samples = n * n;
-    const std::vector<Range> ranges = strataXRanges(areaLightFrame(light), n, 16);
+    const std::vector<Range> ranges = strataRanges(profile.coordinate, n, 16);
     const double delta = 1e-6;
 
     const int points = 71;
     GBuffer g = emptyGBuffer(points, 1);
     for (int i = 0; i < points; ++i) {
-        setSurface(g, size_t(i), {-0.7 + 0.02 * i, 0.0, 0.37}, {0.0, 1.0, 0.0});
+        setSurface(g, size_t(i), {profile.halfWidth * (-1.0 + i / 35.0), 0.0, 0.37}, {0.0, 1.0, 0.0});
     }
     const std::vector<float> V = reference.visibility(g, light, options);
     double sumError = 0.0, sumK = 0.0;
     int penumbra = 0;
     for (int i = 0; i < points; ++i) {
-        const double xc = hiddenBelowX(double(g.position[size_t(i)].x));
-        const double exact = exactFraction(light, xc);
+        const double xc = profile.edge(double(g.position[size_t(i)].x));
+        const double exact = profile.exactFraction(xc);
         const auto K = std::count_if(ranges.begin(), ranges.end(),
                                      [xc](const Range& r) { return r.lo <= xc && xc <= r.hi; });
         const double bound = std::sqrt(double(K) * std::log(2.0 / delta) / 2.0) / samples + 1e-4;
@@ -247,6 +271,36 @@ void checkProfile(const Light& light, double (*exactFraction)(const Light&, doub
     // a biased sampler (say, a map that does not preserve area) fails this long before
     // any single point leaves its bound.
     CHECK(std::abs(sumError / points) <= 5.0 * std::sqrt(sumK) / (2.0 * samples * points));
+}
+
+// The share of a sun's cap whose directions d have dot(d, n) >= 0, n the unit normal of a
+// great circle. In polar coordinates (theta, phi) about the cap's axis a, with
+// sin delta = dot(a, n), the circle of polar angle theta is on that side where
+// cos phi >= -tan delta cot theta; cos theta is uniform on [cos theta_max, 1] over the cap,
+// so the share is the mean of acos(clamp(-tan delta cot theta)) / pi over it (midpoint rule,
+// cos theta = 1 - h s, sin theta = sqrt(h s (2 - h s)) to keep the digits of a small cap).
+double capShareAbove(const SunCap& cap, const glm::dvec3& n) {
+    const double sinDelta = glm::dot(cap.axis, n), tanDelta = sinDelta / std::sqrt(1.0 - sinDelta * sinDelta);
+    const int steps = 200000;
+    double sum = 0.0;
+    for (int k = 0; k < steps; ++k) {
+        const double hs = cap.oneMinusCosMax * (k + 0.5) / steps;
+        const double cotTheta = (1.0 - hs) / std::sqrt(hs * (2.0 - hs));
+        sum += std::acos(std::clamp(-tanDelta * cotTheta, -1.0, 1.0));
+    }
+    return sum / (steps * std::numbers::pi);
+}
+
+// A sun of 3 degrees above the half-plane, tilted along z so that its penumbra stays
+// centred on x = 0. A direction d from P = (x, 0, z) passes the occluder iff it reaches
+// y = h at x >= 0: d.x / d.y >= -x / h, the side of the great circle of normal (1, -c, 0)
+// with c = -x / h.
+Light sunOverEdge() {
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.0f, 1.0f, 0.3f));
+    sun.angularDiameterDeg = 3.0f;
+    return sun;
 }
 
 Light diskLight() {
@@ -292,9 +346,9 @@ TEST_CASE("directional light over a square occluder: V is the parallel projectio
 }
 
 TEST_CASE("disk light over a half-plane edge: the visible fraction is a circular segment") {
-    checkProfile(diskLight(), [](const Light& light, double hiddenBelow) {
-        return diskFractionRightOf(hiddenBelow - double(light.position.x), double(light.radius));
-    });
+    checkProfile(diskLight(), areaLightProfile(diskLight(), [](const Light& light, double hiddenBelow) {
+                     return diskFractionRightOf(hiddenBelow - double(light.position.x), double(light.radius));
+                 }));
 }
 
 TEST_CASE("rectangle light over a half-plane edge: the visible fraction is linear") {
@@ -302,10 +356,62 @@ TEST_CASE("rectangle light over a half-plane edge: the visible fraction is linea
     rectangle.type = LightType::Rectangle;
     rectangle.halfEdgeU = {0.5f, 0.0f, 0.0f};
     rectangle.halfEdgeV = {0.0f, 0.0f, 0.3f};
-    checkProfile(rectangle, [](const Light& light, double hiddenBelow) {
-        const double right = double(light.position.x + light.halfEdgeU.x), width = 2.0 * light.halfEdgeU.x;
-        return std::clamp((right - hiddenBelow) / width, 0.0, 1.0);
-    });
+    checkProfile(rectangle, areaLightProfile(rectangle, [](const Light& light, double hiddenBelow) {
+                     const double right = double(light.position.x + light.halfEdgeU.x), width = 2.0 * light.halfEdgeU.x;
+                     return std::clamp((right - hiddenBelow) / width, 0.0, 1.0);
+                 }));
+}
+
+TEST_CASE("sun with an angular size over a half-plane edge: the visible share of its cap") {
+    const SunCap cap = sunCap(sunOverEdge());
+    const Profile profile{
+        .coordinate = [cap](const glm::dvec2& u) {
+            const glm::dvec3 d = sunCapDirection(cap, concentricSquareToDisk(u));
+            return d.x / d.y;
+        },
+        .edge = [](double receiverX) { return -receiverX / kOccluderY; },
+        .exactFraction = [cap](double c) { return capShareAbove(cap, glm::normalize(glm::dvec3(1.0, -c, 0.0))); },
+        .halfWidth = 0.075};   // the penumbra: |x| < about h tan(1.5 degrees) / cos(16.7 degrees)
+    checkProfile(sunOverEdge(), profile);
+}
+
+TEST_CASE("a sun's cap cut by a great circle is a circular segment of its disk on the sky, to O(theta_max^2)") {
+    const SunCap cap = sunCap(sunOverEdge());
+    const double thetaMax = 1.5 * std::numbers::pi / 180.0;
+    for (double offset : {-1.2, -0.8, -0.3, 0.0, 0.5, 0.9, 1.1}) {   // the circle's distance from the centre, in theta_max
+        // The great circle at angle delta = offset theta_max from the axis, tilted about x.
+        const double delta = offset * thetaMax;
+        const glm::dvec3 n = glm::normalize(glm::dvec3(std::cos(delta), 0.0, 0.0) + std::sin(delta) * cap.axis);
+        CAPTURE(offset);
+        CHECK(std::abs(capShareAbove(cap, n) - diskFractionRightOf(-delta, thetaMax)) <= thetaMax * thetaMax);
+    }
+}
+
+TEST_CASE("a sun of size 0 is one ray per pixel, and the hard techniques see a sized sun's centre direction") {
+    const SquareScene scene({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0});
+    const ReferenceVisibility reference(scene.world, nullptr);
+    const int n = 40;
+    const GBuffer g = planeGrid(scene.receiver, n, 2.0);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.2f, 1.0f, 0.1f));
+    const uint64_t before = reference.raysCast();
+    const std::vector<float> point = reference.visibility(g, sun);
+    CHECK(reference.raysCast() - before == uint64_t(n * n));
+    Light sized = sun;
+    sized.angularDiameterDeg = 10.0f;
+    CHECK(test::sameBytes(reference.visibility(g, pointLightFor(sized)), point));
+    // The sized sun itself: a penumbra around the hard outline, the same V far from it.
+    const std::vector<float> soft = reference.visibility(g, sized, {.areaSamplesPerAxis = 8});
+    int penumbra = 0, differ = 0;
+    for (size_t k = 0; k < soft.size(); ++k) {
+        penumbra += soft[k] > 0.0f && soft[k] < 1.0f;
+        // Beyond the outline by more than the penumbra's half-width in the occluder's plane,
+        // 1 m up: under 1.1 m x tan(5 degrees) < 0.1.
+        differ += std::abs(scene.signedDistanceToOutline(glm::dvec3(g.position[k]), sun)) > 0.15 && soft[k] != point[k];
+    }
+    CHECK(penumbra > 50);
+    CHECK(differ == 0);
 }
 
 TEST_CASE("no light from behind the surface, outside a spot cone, or on background pixels") {

@@ -42,7 +42,8 @@ struct PacketScene {
 };
 
 // The same light as `light` seen as each other kind: point and spot at its position, a
-// directional light from above it, a disk and a rectangle of the scene's scale around it.
+// directional light from above it, point-like and as a sun of 3 degrees (its cap of
+// directions), a disk and a rectangle of the scene's scale around it.
 std::vector<Light> everyKind(const Light& light, float size) {
     const glm::vec3 centre = light.position;
     const glm::vec3 down = glm::normalize(-centre + glm::vec3(0.0f, 0.0f, 0.1f));
@@ -50,6 +51,7 @@ std::vector<Light> everyKind(const Light& light, float size) {
         {.type = LightType::Point, .position = centre},
         {.type = LightType::Spot, .position = centre, .direction = down, .coneAngleDeg = 25.0f},
         {.type = LightType::Directional, .direction = glm::normalize(centre)},
+        {.type = LightType::Directional, .direction = glm::normalize(centre), .angularDiameterDeg = 3.0f},
         {.type = LightType::Disk, .position = centre, .direction = -down, .radius = size},
         {.type = LightType::Rectangle, .position = centre, .halfEdgeU = {size, 0.0f, 0.0f}, .halfEdgeV = {0.0f, 0.0f, 0.6f * size}},
     };
