@@ -16,16 +16,16 @@ void renderLocalPages(const PreparedScene& casters, const std::vector<Aabb>& cas
                       const raster::PolygonOffset& offset, raster::SimdLevel simd, PageDrawing& drawing, PagePool& pool) {
     if (keys.empty()) return;
     const std::vector<InstanceRange> ranges = instanceRanges(casters.scene());
-    for (size_t k = 0; k < keys.size(); ++k) {
+    const auto setup = [&](size_t k, std::vector<uint32_t>& triangles) {
         const glm::dmat4 texelFromWorld = chain.texelFromWorld(keys[k].level);
-        drawing.triangles.clear();
+        triangles.clear();
         for (size_t i = 0; i < ranges.size(); ++i) {
             if (!boxMeetsPage(casterBoxes[i], texelFromWorld, keys[k], chain.pageTexels)) continue;
-            for (uint32_t t = 0; t < ranges[i].triangleCount; ++t) drawing.triangles.push_back(ranges[i].firstTriangle + t);
+            for (uint32_t t = 0; t < ranges[i].triangleCount; ++t) triangles.push_back(ranges[i].firstTriangle + t);
         }
-        const PageView view = chain.pageView(keys[k]);
-        drawPage(casters, drawing.triangles, view.cell, view.window, physical[k], offset, simd, drawing, pool);
-    }
+        return chain.pageView(keys[k]);
+    };
+    drawPages(casters, physical, setup, offset, simd, drawing, pool);
 }
 
 }  // namespace shadowlab::vsm

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "scenes/camera.h"
 #include "shadows/depth_map.h"
@@ -92,17 +94,25 @@ glm::dmat4 levelTexelFromWorld(const LightFrame& frame, const ClipmapSettings& c
     return m;
 }
 
-void drawPage(const PreparedScene& casters, std::span<const uint32_t> triangles, const LightView& view,
-              const raster::ViewportWindow& window, int32_t physical, const raster::PolygonOffset& offset,
-              raster::SimdLevel simd, PageDrawing& drawing, PagePool& pool) {
-    const size_t pageSize = size_t(pool.pageTexels) * size_t(pool.pageTexels);
-    drawing.map = renderDepthMap(casters.world(), triangles, view, {pool.pageTexels, DepthLayer::First, offset, window},
-                                 simd, std::move(drawing.map), &drawing.rasterizer.at(simd));
-    drawing.map.image(drawing.rows);
+void drawPages(const PreparedScene& casters, std::span<const int32_t> physical, const PageSetup& setup,
+               const raster::PolygonOffset& offset, raster::SimdLevel simd, PageDrawing& drawing, PagePool& pool) {
+    if (physical.empty()) return;
     // The pool grows to the highest physical page drawn: memory only for pages in use.
-    const size_t end = (size_t(physical) + 1) * pageSize;
+    const size_t pageSize = size_t(pool.pageTexels) * size_t(pool.pageTexels);
+    const size_t end = (size_t(*std::max_element(physical.begin(), physical.end())) + 1) * pageSize;
     if (pool.depth.size() < end) pool.depth.resize(end);
-    std::copy(drawing.rows.begin(), drawing.rows.end(), pool.depth.begin() + std::ptrdiff_t(size_t(physical) * pageSize));
+    drawing.drawers.resize(size_t(tbb::this_task_arena::max_concurrency()));
+    tbb::parallel_for(size_t(0), physical.size(), [&](size_t k) {
+        PageDrawer& d = drawing.drawers[size_t(tbb::this_task_arena::current_thread_index())];
+        const PageView view = setup(k, d.triangles);
+        tbb::this_task_arena::isolate([&] {
+            d.map = renderDepthMap(casters.world(), d.triangles, view.cell,
+                                   {pool.pageTexels, DepthLayer::First, offset, view.window}, simd, std::move(d.map),
+                                   &d.rasterizer.at(simd));
+            d.map.image(d.rows);
+        });
+        std::copy(d.rows.begin(), d.rows.end(), pool.depth.begin() + std::ptrdiff_t(size_t(physical[k]) * pageSize));
+    });
 }
 
 void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBoxes, const LightFrame& frame,
@@ -113,11 +123,11 @@ void renderPages(const PreparedScene& casters, const std::vector<Aabb>& casterBo
     const std::vector<InstanceRange> ranges = instanceRanges(casters.scene());
     std::vector<Footprint> footprints;
     for (const Aabb& box : casterBoxes) footprints.push_back(footprintOf(box, frame));
-    for (size_t k = 0; k < keys.size(); ++k) {
-        pageCasters(ranges, footprints, pageSquare(clipmap, keys[k]), drawing.triangles);
-        const PageView view = pageView(frame, clipmap, range, keys[k]);
-        drawPage(casters, drawing.triangles, view.cell, view.window, physical[k], offset, simd, drawing, pool);
-    }
+    const auto setup = [&](size_t k, std::vector<uint32_t>& triangles) {
+        pageCasters(ranges, footprints, pageSquare(clipmap, keys[k]), triangles);
+        return pageView(frame, clipmap, range, keys[k]);
+    };
+    drawPages(casters, physical, setup, offset, simd, drawing, pool);
 }
 
 }  // namespace shadowlab::vsm

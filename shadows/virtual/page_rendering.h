@@ -9,6 +9,7 @@
 // physical pool.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -60,22 +61,30 @@ struct PagePool {
     }
 };
 
-// What drawing pages keeps from frame to frame (technique_history.h): the map a page is
-// drawn in, the rasterizer, a page's casters and its rows.
-struct PageDrawing {
+// What drawing pages keeps from frame to frame (technique_history.h): per worker thread,
+// the map a page is drawn in, a rasterizer, a page's casters and its rows.
+struct PageDrawer {
     DepthMap map;
     KeptRasterizer rasterizer;
     std::vector<uint32_t> triangles;
     std::vector<float> rows;
 };
+struct PageDrawing {
+    std::vector<PageDrawer> drawers;   // one per thread of the task arena
+};
 
-// Draws `triangles` of the casters (ascending) with `view`, as `window` of its viewport
-// (none: the page is the viewport), as a page of pool.pageTexels texels a side into physical
-// page `physical`, growing the pool to hold it: the draw every page of any light's virtual
-// map makes.
-void drawPage(const PreparedScene& casters, std::span<const uint32_t> triangles, const LightView& view,
-              const raster::ViewportWindow& window, int32_t physical, const raster::PolygonOffset& offset,
-              raster::SimdLevel simd, PageDrawing& drawing, PagePool& pool);
+// How page k is drawn: its casters' triangles (ascending, into `triangles`) and its view.
+// Called once per page, from any thread.
+using PageSetup = std::function<PageView(size_t k, std::vector<uint32_t>& triangles)>;
+
+// Draws pages 0 .. physical.size() - 1, page k into physical page physical[k], as a page of
+// pool.pageTexels texels a side, growing the pool to hold them: the draw every page of any
+// light's virtual map makes. Pages are drawn in parallel, each by one thread with its own
+// drawer (its rasterizer's own parallel work isolated, so that no thread takes up a second
+// page with the same drawer); a page's bits depend on its view and window alone, so the
+// pool is the same for any thread count.
+void drawPages(const PreparedScene& casters, std::span<const int32_t> physical, const PageSetup& setup,
+               const raster::PolygonOffset& offset, raster::SimdLevel simd, PageDrawing& drawing, PagePool& pool);
 
 // Draws each page of `keys` into its physical page (physical[k] for keys[k]); `casterBoxes`
 // are the casters' instances' boxes, whose triangles are culled per page.
