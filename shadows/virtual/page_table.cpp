@@ -65,7 +65,8 @@ void PageTable::beginFrame(const std::vector<LevelWindow>& windows) {
     windows_ = windows;
     ++frame_;
     std::fill(requestedNow_.begin(), requestedNow_.end(), uint8_t(0));
-    overflow_ = evicted_ = 0;
+    overflow_ = 0;
+    evictedNow_.clear();
 }
 
 void PageTable::request(const PageKey& key) {
@@ -105,10 +106,10 @@ int32_t PageTable::takePhysicalPage() {
     }
     if (victim == kNoPhysicalPage) return victim;
     Slot& evicted = slots_[size_t(owner_[size_t(victim)])];
+    evictedNow_.push_back(evicted.key);
     evicted.physical = kNoPhysicalPage;
     evicted.valid = false;
     owner_[size_t(victim)] = -1;
-    ++evicted_;
     return victim;
 }
 

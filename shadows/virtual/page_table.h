@@ -75,7 +75,8 @@ public:
 
     // This frame's figures.
     int overflowPages() const { return overflow_; }
-    int evictedPages() const { return evicted_; }
+    int evictedPages() const { return int(evictedNow_.size()); }
+    const std::vector<PageKey>& evictedThisFrame() const { return evictedNow_; }   // in eviction order
     int residentPages() const;
     int poolPages() const { return int(owner_.size()); }
 
@@ -101,7 +102,8 @@ private:
     std::vector<uint64_t> lastRequested_;  // per physical page: the frame it was last requested in
     std::vector<int32_t> free_;            // physical pages without a slot, taken from the back
     uint64_t frame_ = 0;
-    int overflow_ = 0, evicted_ = 0;
+    int overflow_ = 0;
+    std::vector<PageKey> evictedNow_;      // the pages whose memory this frame took
 };
 
 }  // namespace shadowlab::vsm

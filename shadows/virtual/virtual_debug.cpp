@@ -9,7 +9,9 @@
 namespace shadowlab::vsm {
 namespace {
 
-// A page's state in the page-table images (the header's key); "rendered this frame" the caller sets.
+// A page's state in the page-table images (the header's key); "evicted" and "rendered this
+// frame" the image functions set from the table's and the frame's lists.
+constexpr float kEvictedState = 0.125f;
 float pageState(const PageTable& table, const PageKey& key) {
     if (table.physical(key) == kNoPhysicalPage) return 0.0f;
     return !table.valid(key) ? 0.25f : table.requested(key) ? 0.75f : 0.5f;
@@ -26,11 +28,16 @@ std::vector<float> pageTableImage(const ClipmapSettings& clipmap, const PageTabl
                 image[(l * size_t(n) + size_t(y)) * size_t(n) + size_t(x)] = pageState(table, {w.level, w.firstX + x, w.firstY + y});
         }
     }
-    for (const PageKey& key : rendered) {
-        const LevelWindow& w = table.windows()[size_t(key.level - clipmap.firstLevel)];
-        image[(size_t(key.level - clipmap.firstLevel) * size_t(n) + size_t(key.y - w.firstY)) * size_t(n) +
-              size_t(key.x - w.firstX)] = 1.0f;
-    }
+    const auto mark = [&](const std::vector<PageKey>& keys, float state) {
+        for (const PageKey& key : keys) {
+            const LevelWindow& w = table.windows()[size_t(key.level - clipmap.firstLevel)];
+            if (!w.holds(key.x, key.y, n)) continue;   // an evicted page may lie outside
+            image[(size_t(key.level - clipmap.firstLevel) * size_t(n) + size_t(key.y - w.firstY)) * size_t(n) +
+                  size_t(key.x - w.firstX)] = state;
+        }
+    };
+    mark(table.evictedThisFrame(), kEvictedState);
+    mark(rendered, 1.0f);
     return image;
 }
 
@@ -65,6 +72,8 @@ std::vector<float> facePageTableImage(const MipChain& chain, int face, const Pag
         for (int32_t y = 0; y < chain.pagesPerSide(mip); ++y)
             for (int32_t x = 0; x < chain.pagesPerSide(mip); ++x) at({level, x, y}) = pageState(table, {level, x, y});
     }
+    for (const PageKey& key : table.evictedThisFrame())
+        if (chain.faceOfLevel(key.level) == face) at(key) = kEvictedState;
     for (const PageKey& key : rendered)
         if (chain.faceOfLevel(key.level) == face) at(key) = 1.0f;
     return image;

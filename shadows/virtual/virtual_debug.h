@@ -4,8 +4,9 @@
 //   texels-per-pixel per pixel, the level's texels across the pixel's footprint (1: matched)
 //   page-table       every level's table, one square of pagesPerSide^2 per level, stacked
 //                    from the first level down, each page of the level's window:
-//                    0 no memory, 0.25 memory but stale (invalidated), 0.5 valid but not
-//                    read this frame, 0.75 read from the cache, 1 rendered this frame
+//                    0 no memory, 0.125 evicted this frame (its memory given to another
+//                    page), 0.25 memory but stale (invalidated), 0.5 valid but not read
+//                    this frame, 0.75 read from the cache, 1 rendered this frame
 //   pool             the physical pages in use as an atlas, page p at column p mod n, row
 //                    p / n of an n x n grid, window depth
 // For a spot or point light's mip chains (mip_chain.h), in place of level and page-table:

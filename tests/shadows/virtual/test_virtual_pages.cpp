@@ -180,6 +180,7 @@ TEST_CASE("virtual pages: eviction takes the least recently requested page, neve
     // frame 1, then (3,0) from frame 2 (lowest physical page on the tie with (4,0)).
     frameOf({{0, 0, 0}, {0, 5, 0}, {0, 6, 0}, {0, 7, 0}, {0, 8, 0}});
     CHECK(table.evictedPages() == 3);
+    CHECK(table.evictedThisFrame() == std::vector<PageKey>{{0, 1, 0}, {0, 2, 0}, {0, 3, 0}});   // the debug table's list
     CHECK(table.overflowPages() == 0);
     for (int32_t x : {0, 5, 6, 7, 8}) CHECK(table.valid({0, x, 0}));
     for (int32_t x : {1, 2, 3}) CHECK(table.physical({0, x, 0}) == kNoPhysicalPage);
