@@ -8,11 +8,9 @@
 namespace shadowlab::vsm {
 namespace {
 
-// x mod n in [0, n) for any sign of x.
-int32_t wrap(int32_t x, int n) {
-    const int32_t r = x % n;
-    return r < 0 ? r + n : r;
-}
+// x mod n in [0, n) for any sign of x, n a power of two (every layout's page count is: the
+// constructor checks): the low bits of two's complement, no division per request.
+int32_t wrap(int32_t x, int n) { return x & (n - 1); }
 
 }  // namespace
 
@@ -28,7 +26,11 @@ PageTable::PageTable(const PageLayout& layout, int poolPages) : layout_(layout) 
         throw std::invalid_argument("virtual shadow map: pool-pages must be in 1..1048576, got " +
                                     std::to_string(poolPages));
     firstSlot_.push_back(0);
-    for (int n : layout.pagesPerSide) firstSlot_.push_back(firstSlot_.back() + size_t(n) * size_t(n));
+    for (int n : layout.pagesPerSide) {
+        if (n < 1 || (n & (n - 1)) != 0)
+            throw std::logic_error("PageTable: a level's pages a side must be a power of two, got " + std::to_string(n));
+        firstSlot_.push_back(firstSlot_.back() + size_t(n) * size_t(n));
+    }
     slots_.resize(firstSlot_.back());
     requestedNow_.assign(slots_.size(), 0);
     owner_.assign(size_t(poolPages), -1);
