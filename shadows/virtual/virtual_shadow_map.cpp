@@ -35,6 +35,7 @@ struct VirtualMapSettings {
     int poolPages = 1024;
     int lodBias = 0;
     BiasSettings bias = {};
+    FilterSettings filter = {};
 };
 
 const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
@@ -51,7 +52,8 @@ const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
                      "the coarsest level: 2^(l+1) m a side")
             .integer("pool-pages", member(&S::poolPages), 1, 1 << 20, "physical pages of memory")
             .integer("lod-bias", member(&S::lodBias), -8, 8, "levels coarser (+) or finer (-) than the pixels' footprint")
-            .include(member(&S::bias), biasSettingsTable());
+            .include(member(&S::bias), biasSettingsTable())
+            .include(member(&S::filter), filterSettingsTable());
     return table;
 }
 
@@ -112,7 +114,7 @@ void addStats(ShadowOutputs& out, const PageTable& table, size_t requested, size
 // stats and buffers, as `csm` does for a light it has no cascades for; the mip chains of
 // local lights are not built yet.
 ShadowOutputs localLightShadows(const ShadowInputs& in, const VirtualMapSettings& s) {
-    ShadowOutputs out = runShadowMap(in, ShadowMapTechniqueSettings{.map = {.bias = s.bias}});
+    ShadowOutputs out = runShadowMap(in, ShadowMapTechniqueSettings{.map = {.bias = s.bias, .filter = s.filter}});
     out.stats.insert(out.stats.begin(), {"virtual_map_flag", 0.0});
     return out;
 }
@@ -141,8 +143,8 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     const glm::dvec3 eye = frame.local(glm::dvec3(in.camera().eye));
     for (int l = s.clipmap.firstLevel; l <= s.clipmap.lastLevel; ++l) windows.push_back(placeLevel(s.clipmap, l, eye));
     table.beginFrame(windows);
-    markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap, {s.lodBias, biasReachTexels(s.bias)}, table,
-              state.levels);
+    markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap, {s.lodBias, lookupReachTexels(s.bias, s.filter)},
+              table, state.levels);
     const std::vector<PixelLevel>& levels = state.levels;
     timer.lap("marking");
     // 3. Memory, and the pages to render.
@@ -156,8 +158,8 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     for (const PageKey& key : toRender) table.markRendered(key);
     timer.lap("pages");
     // 5. The lookup.
-    LookupResult lookup = lookUpPages(in.gbuffer, in.light, frame, s.clipmap, state.range, s.bias, levels, table,
-                                      state.pool);
+    LookupResult lookup = lookUpPages(in.gbuffer, in.light, frame, s.clipmap, state.range, s.bias,
+                                      makePcfKernel(s.filter), levels, table, state.pool);
     timer.lap("lookup");
     ShadowOutputs out;
     out.visibility = std::move(lookup.visibility);
