@@ -50,7 +50,8 @@ std::vector<float> poolAtlas(const PagePool& pool, int& side) {
 
 void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera,
                        const ClipmapSettings& clipmap, const std::vector<PixelLevel>& levels, const PageTable& table,
-                       const std::vector<PageKey>& rendered, const PagePool& pool) {
+                       const std::vector<PageKey>& rendered, const PagePool& pool,
+                       const std::vector<float>& escapedRays) {
     if (!debug.enabled()) return;
     std::vector<float> level(g.pixelCount(), -1.0f), texelsPerPixel(g.pixelCount(), 0.0f);
     const glm::dvec3 eye(camera.eye), forward = glm::normalize(glm::dvec3(camera.target - camera.eye));
@@ -68,6 +69,7 @@ void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera
     int side = 0;
     const std::vector<float> atlas = poolAtlas(pool, side);
     debug.write("pool", side, side, atlas, 0.0f, 1.0f);
+    if (!escapedRays.empty()) debug.write("smrt-escaped", g.width, g.height, escapedRays, 0.0f, 1.0f);
 }
 
 }  // namespace shadowlab::vsm
