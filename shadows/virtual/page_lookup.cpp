@@ -9,10 +9,24 @@
 namespace shadowlab::vsm {
 
 float PageTexels::at(int level, int x, int y) const {
-    const PageKey key{level, pageOf(x, clipmap_.pageTexels), pageOf(y, clipmap_.pageTexels)};
+    const PageKey key = pageOf(level, x, y);
     const int32_t physical = table_.physical(key);
     if (physical == kNoPhysicalPage || !table_.valid(key)) return kMissingTexel;
     return pool_.at(physical, x - key.x * clipmap_.pageTexels, y - key.y * clipmap_.pageTexels);
+}
+
+float PageTexels::at(int level, int x, int y, Cursor& cursor) const {
+    const PageKey key = pageOf(level, x, y);
+    if (!(key == cursor.key)) {
+        const int32_t physical = table_.physical(key);
+        cursor.key = key;
+        cursor.texels = physical == kNoPhysicalPage || !table_.valid(key)
+                            ? nullptr
+                            : &pool_.depth[size_t(physical) * size_t(clipmap_.pageTexels) * size_t(clipmap_.pageTexels)];
+    }
+    if (!cursor.texels) return kMissingTexel;
+    return cursor.texels[size_t(y - key.y * clipmap_.pageTexels) * size_t(clipmap_.pageTexels) +
+                         size_t(x - key.x * clipmap_.pageTexels)];
 }
 
 std::vector<DepthMap> levelMaps(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range) {
@@ -56,8 +70,9 @@ LookupResult lookUpPages(const GBuffer& g, const Light& sun, const LightFrame& f
                                                       glm::dvec3(g.normal[k]), towardsLight, bias);
                     const int level = clipmap.firstLevel + p.level;
                     bool missing = false;
+                    PageTexels::Cursor cursor;
                     const auto litAt = [&](int x, int y) {
-                        const float stored = texels.at(level, x, y);
+                        const float stored = texels.at(level, x, y, cursor);
                         missing |= stored == PageTexels::kMissingTexel;
                         return stored == PageTexels::kMissingTexel || r.litByStored(stored, x, y);
                     };

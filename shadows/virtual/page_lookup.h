@@ -7,6 +7,8 @@
 // and is counted; a pixel that no level holds is lit, and counted.
 #pragma once
 
+#include <bit>
+#include <climits>
 #include <vector>
 
 #include "scenes/scene.h"
@@ -23,16 +25,28 @@ namespace shadowlab::vsm {
 class PageTexels {
 public:
     PageTexels(const ClipmapSettings& clipmap, const PageTable& table, const PagePool& pool)
-        : clipmap_(clipmap), table_(table), pool_(pool) {}
+        : clipmap_(clipmap), table_(table), pool_(pool), pageShift_(std::countr_zero(unsigned(clipmap.pageTexels))) {}
     // The window depth texel (x, y) of `level` holds, or kMissingTexel where its page has no
     // current depth.
     static constexpr float kMissingTexel = -1.0f;
     float at(int level, int x, int y) const;
+    // The same, remembering the page last read in `cursor`: a ray's or a kernel's next read
+    // is most often in the same page, and skips the table.
+    struct Cursor {
+        PageKey key{0, INT32_MIN, INT32_MIN};
+        const float* texels = nullptr;   // the page's, row-major; null: no current depth
+    };
+    float at(int level, int x, int y, Cursor& cursor) const;
 
 private:
+    // The page holding texel (x, y): floor(x / pageTexels), an arithmetic shift (pageTexels
+    // is a power of two), where pageOf's double floor is a library call.
+    PageKey pageOf(int level, int x, int y) const { return {level, x >> pageShift_, y >> pageShift_}; }
+
     const ClipmapSettings& clipmap_;
     const PageTable& table_;
     const PagePool& pool_;
+    int pageShift_;
 };
 
 // Each level as the one map a receiver is mapped into (only its matrices are set), by index

@@ -21,6 +21,7 @@ struct Marcher {
     RayReach reach;
     double depthPerM;   // window depth per m along the beam
     const SmrtSettings& smrt;
+    std::vector<double> texelM;   // per level from the first: its texel, m
 };
 
 // A pixel's receiver: its level, texel there, biased window depth, and what the hard
@@ -46,14 +47,17 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
     glm::dvec2 previousAcross(0.0);
     bool behind = o.behind;
     RayEnd end;
+    PageTexels::Cursor cursor;
+    const double originTexel = m.texelM[size_t(o.level - m.clipmap.firstLevel)];
+    int level = o.level;
     for (int k = 0; k < m.smrt.steps; ++k) {
         const double s = (k + xi) / m.smrt.steps, h = height * s * s;
         const glm::dvec2 across = slope * h;
-        const int level = rayLevel(m.clipmap, o.level, h, m.reach);
-        const double texel = m.clipmap.texelM(level);
+        level = rayLevel(m.clipmap, level, h, m.reach);   // from the last sample's: h only grows
+        const double texel = m.texelM[size_t(level - m.clipmap.firstLevel)];
         // The receiver's texel at this level (an exact power-of-two scaling), moved across.
-        const glm::dvec2 t = o.texel * (m.clipmap.texelM(o.level) / texel) + glm::dvec2(across.x, -across.y) / texel;
-        const float stored = m.texels.at(level, texelIndexOf(t.x), texelIndexOf(t.y));
+        const glm::dvec2 t = o.texel * (originTexel / texel) + glm::dvec2(across.x, -across.y) / texel;
+        const float stored = m.texels.at(level, texelIndexOf(t.x), texelIndexOf(t.y), cursor);
         if (stored == PageTexels::kMissingTexel) {
             end.missing = true;
             return end;
@@ -93,7 +97,8 @@ SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAng
                               const PagePool& pool) {
     const std::vector<DepthMap> maps = levelMaps(frame, clipmap, range);
     const PageTexels texels(clipmap, table, pool);
-    const Marcher marcher{texels, clipmap, smrtReach(smrt, halfAngle, range), 1.0 / (range.zFar - range.zNear), smrt};
+    Marcher marcher{texels, clipmap, smrtReach(smrt, halfAngle, range), 1.0 / (range.zFar - range.zNear), smrt, {}};
+    for (int l = clipmap.firstLevel; l <= clipmap.lastLevel; ++l) marcher.texelM.push_back(clipmap.texelM(l));
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(sun.direction));
     const LightReach reaches(sun);
     SmrtResult out{{std::vector<float>(g.pixelCount(), 0.0f)}, std::vector<float>(g.pixelCount(), 0.0f)};
