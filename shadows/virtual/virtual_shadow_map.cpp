@@ -66,9 +66,9 @@ const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
     return table;
 }
 
-// The sun's cone: half its angular diameter, radians. A light carries no angular size yet
-// (0: a point-like sun, every ray along the beam).
-double sunHalfAngle(const Light&) { return 0.0; }
+// The sun's cone: half its angular diameter, radians (0: a point-like sun, every ray along
+// the beam).
+double sunHalfAngle(const Light& sun) { return glm::radians(double(sun.angularDiameterDeg)) / 2.0; }
 
 // What the technique keeps from frame to frame.
 struct VirtualMapState {
