@@ -60,6 +60,16 @@ double kernelRadiusTexels(const FilterSettings& s) {
     return 0.0;
 }
 
+double tapReachTexels(const FilterSettings& s) {
+    switch (s.kind) {
+        case FilterKind::Nearest: return 0.0;
+        case FilterKind::Bilinear: return 0.5;
+        case FilterKind::Grid: return 0.5 * (s.gridSize - 1);
+        case FilterKind::Poisson: return s.poissonRadiusTexels * 1.0001;
+    }
+    return 0.0;
+}
+
 int poissonRotationIndex(uint64_t pixel) {
     static_assert(kPoissonRotations == 1 << 10);
     return int(splitMix64(pixel) >> 54);   // the hash's top 10 bits
@@ -68,5 +78,11 @@ int poissonRotationIndex(uint64_t pixel) {
 double poissonRotationAngle(int index) { return 2.0 * std::numbers::pi * double(index) / double(kPoissonRotations); }
 
 double poissonRotation(uint64_t pixel) { return poissonRotationAngle(poissonRotationIndex(pixel)); }
+
+glm::dvec2 poissonRotationCosSin(uint64_t pixel) {
+    // Rounded to float as shadow_lookup.cpp's table holds them, so both turn a disk alike.
+    const double angle = poissonRotation(pixel);
+    return {double(float(portable::cos(angle))), double(float(portable::sin(angle)))};
+}
 
 }  // namespace shadowlab

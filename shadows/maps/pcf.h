@@ -46,6 +46,12 @@ PcfKernel makePcfKernel(const FilterSettings& settings);
 // How far (texels) from the receiver the kernel reaches, for fitting margins.
 double kernelRadiusTexels(const FilterSettings& settings);
 
+// How far its taps' coordinates lie from the receiver's, per axis: every tap reads a texel
+// in [floor(u - r), floor(u + r)] (nearest 0, bilinear 0.5, grid (n - 1) / 2, poisson the
+// radius widened by 1e-4 for the rotation's rounding). What a lookup whose texels must be
+// in memory first reserves (a virtual map's marking).
+double tapReachTexels(const FilterSettings& settings);
+
 // The per-pixel rotation of the poisson kernel: one of kPoissonRotations angles evenly
 // spaced over the turn, picked by a hash of the pixel index. A quantised angle lets a
 // receiver pass read its cosine and sine from a table of kPoissonRotations entries instead
@@ -57,10 +63,55 @@ int poissonRotationIndex(uint64_t pixel);
 double poissonRotation(uint64_t pixel);
 double poissonRotationAngle(int index);
 
+// The pixel's (cos, sin) of poissonRotation, as the shadow maps' lookup tabulates them.
+glm::dvec2 poissonRotationCosSin(uint64_t pixel);
+
 // Offset (texels) of unit-disk tap d rotated by (cos, sin) = rotation and scaled by
 // radiusTexels per axis (an ellipse where a map's texels are not square in the world).
 inline glm::dvec2 rotatedTap(const glm::dvec2& d, const glm::dvec2& rotation, const glm::dvec2& radiusTexels) {
     return radiusTexels * glm::dvec2(rotation.x * d.x - rotation.y * d.y, rotation.y * d.x + rotation.x * d.y);
+}
+
+// The kernel's lit fraction for a receiver at texel coordinate `texel`, in double:
+// litAt(x, y) says whether texel (x, y) lights it, `rotation` is the pixel's
+// poissonRotationCosSin. The taps and weights of the shadow maps' float filters
+// (lookup_kernel.inl), for a lookup that finds its texels another way (a virtual map's
+// pages); tests/shadows/virtual holds the two to the same answers on the same texels.
+template <class LitAt>
+double pcfLitFraction(const PcfKernel& kernel, const glm::dvec2& texel, const glm::dvec2& rotation,
+                      const LitAt& litAt) {
+    const FilterSettings& s = kernel.settings;
+    const auto lit = [&](int x, int y) { return litAt(x, y) ? 1.0 : 0.0; };
+    switch (s.kind) {
+        case FilterKind::Nearest: return lit(texelIndexOf(texel.x), texelIndexOf(texel.y));
+        case FilterKind::Bilinear: {
+            // The four texel centres around the receiver, weighted bilinearly (RTR 7.5).
+            const glm::dvec2 base = texel - 0.5;
+            const int x0 = texelIndexOf(base.x), y0 = texelIndexOf(base.y);
+            const double fx = base.x - x0, fy = base.y - y0;
+            const double top = (1.0 - fx) * lit(x0, y0) + fx * lit(x0 + 1, y0);
+            const double bottom = (1.0 - fx) * lit(x0, y0 + 1) + fx * lit(x0 + 1, y0 + 1);
+            return (1.0 - fy) * top + fy * bottom;
+        }
+        case FilterKind::Grid: {
+            // N x N taps one texel apart centred on the receiver (RTR Figure 7.23).
+            const double first = -0.5 * double(s.gridSize - 1);
+            double sum = 0.0;
+            for (int b = 0; b < s.gridSize; ++b)
+                for (int a = 0; a < s.gridSize; ++a)
+                    sum += lit(texelIndexOf(texel.x + first + a), texelIndexOf(texel.y + first + b));
+            return sum / double(s.gridSize * s.gridSize);
+        }
+        case FilterKind::Poisson: {
+            double sum = 0.0;
+            for (const glm::dvec2& d : kernel.disk) {
+                const glm::dvec2 t = texel + rotatedTap(d, rotation, glm::dvec2(s.poissonRadiusTexels));
+                sum += lit(texelIndexOf(t.x), texelIndexOf(t.y));
+            }
+            return sum / double(kernel.disk.size());
+        }
+    }
+    return 1.0;
 }
 
 }  // namespace shadowlab

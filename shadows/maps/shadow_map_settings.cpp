@@ -22,6 +22,21 @@ const SettingsTable<BiasSettings>& biasSettingsTable() {
     return table;
 }
 
+const SettingsTable<FilterSettings>& filterSettingsTable() {
+    using S = FilterSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .choice("filter", member(&S::kind),
+                    {{"nearest", FilterKind::Nearest},
+                     {"bilinear", FilterKind::Bilinear, "2x2 PCF"},
+                     {"grid", FilterKind::Grid, "NxN PCF"},
+                     {"poisson", FilterKind::Poisson, "rotated Poisson disk PCF"}})
+            .integer("grid-size", member(&S::gridSize), 2, 15, "grid: taps per side")
+            .integer("poisson-taps", member(&S::poissonTaps), 1, 64, "poisson: taps")
+            .real("poisson-radius", member(&S::poissonRadiusTexels), 0.0, 64.0, "poisson: radius in texels");
+    return table;
+}
+
 const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable() {
     using S = ShadowMapSettings;
     static const auto table =
@@ -32,15 +47,7 @@ const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable() {
                     {{"first", DepthLayer::First},
                      {"second", DepthLayer::Second, "back faces"},
                      {"midpoint", DepthLayer::Midpoint, "average of first and second depth"}})
-            .choice("filter", member(&S::filter, &FilterSettings::kind),
-                    {{"nearest", FilterKind::Nearest},
-                     {"bilinear", FilterKind::Bilinear, "2x2 PCF"},
-                     {"grid", FilterKind::Grid, "NxN PCF"},
-                     {"poisson", FilterKind::Poisson, "rotated Poisson disk PCF"}})
-            .integer("grid-size", member(&S::filter, &FilterSettings::gridSize), 2, 15, "grid: taps per side")
-            .integer("poisson-taps", member(&S::filter, &FilterSettings::poissonTaps), 1, 64, "poisson: taps")
-            .real("poisson-radius", member(&S::filter, &FilterSettings::poissonRadiusTexels), 0.0, 64.0,
-                  "poisson: radius in texels");
+            .include(member(&S::filter), filterSettingsTable());
     return table;
 }
 

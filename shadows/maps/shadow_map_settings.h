@@ -22,6 +22,10 @@ struct ShadowMapSettings {
 // which every technique comparing depths in a map shares.
 const SettingsTable<BiasSettings>& biasSettingsTable();
 
+// The PCF rows (`filter`, `grid-size`, `poisson-taps`, `poisson-radius`), which every
+// technique filtering a map's compares shares.
+const SettingsTable<FilterSettings>& filterSettingsTable();
+
 // Its parameters (docs/shadow-maps.md), each bound to its member; the defaults above.
 const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable();
 

@@ -10,7 +10,8 @@
 namespace shadowlab::vsm {
 
 LookupResult lookUpLocalPages(const GBuffer& g, const Light& light, const MipChain& chain, const BiasSettings& bias,
-                              const std::vector<PixelLevel>& levels, const PageTable& table, const PagePool& pool) {
+                              const PcfKernel& filter, const std::vector<PixelLevel>& levels, const PageTable& table,
+                              const PagePool& pool) {
     // Each level as the one map a receiver is mapped into (only its matrices are read).
     std::vector<DepthMap> levelMaps(size_t(chain.levelCount()));
     for (int l = 0; l < chain.levelCount(); ++l) {
@@ -19,6 +20,8 @@ LookupResult lookUpLocalPages(const GBuffer& g, const Light& light, const MipCha
         map.texelFromWorld = chain.texelFromWorld(l);
         map.worldFromTexel = glm::inverse(map.texelFromWorld);
     }
+    const PageTexels texels(chain.pageTexels, table, pool);
+    const bool rotated = filter.settings.kind == FilterKind::Poisson;
     const LightReach reaches(light);
     LookupResult out{std::vector<float>(g.pixelCount(), 0.0f)};
     struct Counts {
@@ -39,17 +42,18 @@ LookupResult lookUpLocalPages(const GBuffer& g, const Light& light, const MipCha
                     const DepthMap& map = levelMaps[size_t(p.level)];
                     const MapReceiver r = mapReceiverFromPoint(map, glm::dvec3(g.position[k]), glm::dvec3(g.normal[k]),
                                                                chain.apex, bias);
-                    // Clamped to the mip, as DepthMap::at clamps to a map's border.
-                    const int tx = std::clamp(texelIndexOf(r.texel.x), 0, map.size - 1);
-                    const int ty = std::clamp(texelIndexOf(r.texel.y), 0, map.size - 1);
-                    const PageKey key{p.level, tx / chain.pageTexels, ty / chain.pageTexels};
-                    const int32_t physical = table.physical(key);
-                    if (physical == kNoPhysicalPage || !table.valid(key)) {
-                        ++c.missing, out.visibility[k] = 1.0f;
-                        continue;
-                    }
-                    const float stored = pool.at(physical, tx - key.x * chain.pageTexels, ty - key.y * chain.pageTexels);
-                    out.visibility[k] = r.litByStored(stored, tx, ty) ? 1.0f : 0.0f;
+                    bool missing = false;
+                    PageTexels::Cursor cursor;
+                    const auto litAt = [&](int x, int y) {
+                        // Clamped to the mip, as DepthMap::at clamps to a map's border.
+                        x = std::clamp(x, 0, map.size - 1), y = std::clamp(y, 0, map.size - 1);
+                        const float stored = texels.at(p.level, x, y, cursor);
+                        missing |= stored == PageTexels::kMissingTexel;
+                        return stored == PageTexels::kMissingTexel || r.litByStored(stored, x, y);
+                    };
+                    const glm::dvec2 rotation = rotated ? poissonRotationCosSin(k) : glm::dvec2(1.0, 0.0);
+                    out.visibility[k] = float(pcfLitFraction(filter, r.texel, rotation, litAt));
+                    c.missing += missing;
                 }
             }
             return c;

@@ -1,9 +1,10 @@
-// The hard lookup of a spot or point light's virtual map (docs/virtual-shadow-maps.md;
+// The lookup of a spot or point light's virtual map (docs/virtual-shadow-maps.md;
 // page_lookup.h for the sun's): each pixel reads the face and mip marking chose for it as
 // a perspective shadow map of that mip's texels would be read (the shadow maps' receiver
-// mapping and bias, shadow_bias.h, with the light at the apex), its texel clamped to the mip
-// as a map clamps to its border, found through the page table in the physical pool. A pixel
-// whose page has no memory (the pool overflowed), or in no face, is lit, and counted.
+// mapping and bias, shadow_bias.h, with the light at the apex, and their percentage-closer
+// filters, pcf.h), each tap's texel clamped to the mip as a map clamps to its border, found
+// through the page table in the physical pool. A tap in a page without memory (the pool
+// overflowed) reads lit and its pixel is counted; a pixel in no face is lit, and counted.
 #pragma once
 
 #include <vector>
@@ -22,6 +23,7 @@ namespace shadowlab::vsm {
 // `light` decides which pixels it reaches (an area light as itself); the receivers are
 // mapped from chain.apex.
 LookupResult lookUpLocalPages(const GBuffer& g, const Light& light, const MipChain& chain, const BiasSettings& bias,
-                              const std::vector<PixelLevel>& levels, const PageTable& table, const PagePool& pool);
+                              const PcfKernel& filter, const std::vector<PixelLevel>& levels, const PageTable& table,
+                              const PagePool& pool);
 
 }  // namespace shadowlab::vsm

@@ -78,7 +78,7 @@ ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings&
     timer.lap("invalidation");
     // 2. Marking: every mip's window is the whole mip.
     table.beginFrame(chain.windows());
-    markLocalPages(in.gbuffer, in.camera(), in.light, chain, {s.lodBias, biasReachTexels(s.bias)}, table, state.levels);
+    markLocalPages(in.gbuffer, in.camera(), in.light, chain, {s.lodBias, lookupReachTexels(s.bias, s.filter)}, table, state.levels);
     timer.lap("marking");
     // 3. Memory, and the pages to render.
     const std::vector<PageKey> toRender = table.allocate();
@@ -91,7 +91,8 @@ ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings&
     for (const PageKey& key : toRender) table.markRendered(key);
     timer.lap("pages");
     // 5. The lookup.
-    LookupResult lookup = lookUpLocalPages(in.gbuffer, in.light, chain, s.bias, state.levels, table, state.pool);
+    LookupResult lookup = lookUpLocalPages(in.gbuffer, in.light, chain, s.bias, makePcfKernel(s.filter), state.levels,
+                                           table, state.pool);
     timer.lap("lookup");
     ShadowOutputs out;
     out.visibility = std::move(lookup.visibility);

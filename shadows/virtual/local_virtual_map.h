@@ -12,6 +12,7 @@
 // The table, the pool and what the last frame saw are kept in the technique's history.
 #pragma once
 
+#include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
 #include "shadows/technique.h"
 #include "shadows/virtual/clipmap.h"
@@ -23,6 +24,7 @@ struct LocalMapSettings {
     int poolPages = 1024;
     int lodBias = 0;
     BiasSettings bias = {};
+    FilterSettings filter = {};
 };
 
 ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings& s);

@@ -8,21 +8,48 @@
 
 namespace shadowlab::vsm {
 
-double biasReachTexels(const BiasSettings& bias) {
-    return bias.mode == BiasMode::NormalOffset ? bias.normalOffsetTexels : 0.0;
+float PageTexels::at(int level, int x, int y) const {
+    const PageKey key = pageOf(level, x, y);
+    const int32_t physical = table_.physical(key);
+    if (physical == kNoPhysicalPage || !table_.valid(key)) return kMissingTexel;
+    return pool_.at(physical, x - key.x * pageTexels_, y - key.y * pageTexels_);
+}
+
+float PageTexels::at(int level, int x, int y, Cursor& cursor) const {
+    const PageKey key = pageOf(level, x, y);
+    if (!(key == cursor.key)) {
+        const int32_t physical = table_.physical(key);
+        cursor.key = key;
+        cursor.texels = physical == kNoPhysicalPage || !table_.valid(key)
+                            ? nullptr
+                            : &pool_.depth[size_t(physical) * size_t(pageTexels_) * size_t(pageTexels_)];
+    }
+    if (!cursor.texels) return kMissingTexel;
+    return cursor.texels[size_t(y - key.y * pageTexels_) * size_t(pageTexels_) +
+                         size_t(x - key.x * pageTexels_)];
+}
+
+std::vector<DepthMap> levelMaps(const LightFrame& frame, const ClipmapSettings& clipmap, const DepthRange& range) {
+    std::vector<DepthMap> maps(size_t(clipmap.levelCount()));
+    for (int l = 0; l < clipmap.levelCount(); ++l) {
+        maps[size_t(l)].texelFromWorld = levelTexelFromWorld(frame, clipmap, range, clipmap.firstLevel + l);
+        maps[size_t(l)].worldFromTexel = glm::inverse(maps[size_t(l)].texelFromWorld);
+    }
+    return maps;
+}
+
+double lookupReachTexels(const BiasSettings& bias, const FilterSettings& filter) {
+    return (bias.mode == BiasMode::NormalOffset ? bias.normalOffsetTexels : 0.0) + tapReachTexels(filter);
 }
 
 LookupResult lookUpPages(const GBuffer& g, const Light& sun, const LightFrame& frame, const ClipmapSettings& clipmap,
-                         const DepthRange& range, const BiasSettings& bias, const std::vector<PixelLevel>& levels,
-                         const PageTable& table, const PagePool& pool) {
-    // Each level as the one map a receiver is mapped into (only its matrices are read).
-    std::vector<DepthMap> levelMaps(size_t(clipmap.levelCount()));
-    for (int l = 0; l < clipmap.levelCount(); ++l) {
-        levelMaps[size_t(l)].texelFromWorld = levelTexelFromWorld(frame, clipmap, range, clipmap.firstLevel + l);
-        levelMaps[size_t(l)].worldFromTexel = glm::inverse(levelMaps[size_t(l)].texelFromWorld);
-    }
+                         const DepthRange& range, const BiasSettings& bias, const PcfKernel& filter,
+                         const std::vector<PixelLevel>& levels, const PageTable& table, const PagePool& pool) {
+    const std::vector<DepthMap> maps = levelMaps(frame, clipmap, range);
+    const PageTexels texels(clipmap.pageTexels, table, pool);
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(sun.direction));
     const LightReach reaches(sun);
+    const bool rotated = filter.settings.kind == FilterKind::Poisson;
     LookupResult out{std::vector<float>(g.pixelCount(), 0.0f)};
     struct Counts {
         size_t missing = 0, unleveled = 0;
@@ -39,18 +66,19 @@ LookupResult lookUpPages(const GBuffer& g, const Light& sun, const LightFrame& f
                         ++c.unleveled, out.visibility[k] = 1.0f;
                         continue;
                     }
-                    const MapReceiver r = mapReceiver(levelMaps[size_t(p.level)], glm::dvec3(g.position[k]),
+                    const MapReceiver r = mapReceiver(maps[size_t(p.level)], glm::dvec3(g.position[k]),
                                                       glm::dvec3(g.normal[k]), towardsLight, bias);
-                    const int tx = texelIndexOf(r.texel.x), ty = texelIndexOf(r.texel.y);
-                    const PageKey key{clipmap.firstLevel + p.level, pageOf(tx, clipmap.pageTexels),
-                                      pageOf(ty, clipmap.pageTexels)};
-                    const int32_t physical = table.physical(key);
-                    if (physical == kNoPhysicalPage || !table.valid(key)) {
-                        ++c.missing, out.visibility[k] = 1.0f;
-                        continue;
-                    }
-                    const float stored = pool.at(physical, tx - key.x * clipmap.pageTexels, ty - key.y * clipmap.pageTexels);
-                    out.visibility[k] = r.litByStored(stored, tx, ty) ? 1.0f : 0.0f;
+                    const int level = clipmap.firstLevel + p.level;
+                    bool missing = false;
+                    PageTexels::Cursor cursor;
+                    const auto litAt = [&](int x, int y) {
+                        const float stored = texels.at(level, x, y, cursor);
+                        missing |= stored == PageTexels::kMissingTexel;
+                        return stored == PageTexels::kMissingTexel || r.litByStored(stored, x, y);
+                    };
+                    const glm::dvec2 rotation = rotated ? poissonRotationCosSin(k) : glm::dvec2(1.0, 0.0);
+                    out.visibility[k] = float(pcfLitFraction(filter, r.texel, rotation, litAt));
+                    c.missing += missing;
                 }
             }
             return c;

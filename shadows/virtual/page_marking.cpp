@@ -58,7 +58,34 @@ struct LevelChoice {
     }
 };
 
+void requestBox(PageTable& table, int level, const PageBox& box) {
+    for (int32_t py = box.y0; py <= box.y1; ++py)
+        for (int32_t px = box.x0; px <= box.x1; ++px) table.request({level, px, py});
+}
+
+// The pages a pixel's rays read (RayReach), at every level from its own to the one its
+// highest sample reads; a level whose window does not hold the box is left out, and the
+// rays count what they miss there.
+void markRays(PageTable& table, const ClipmapSettings& clipmap, const MarkingSettings& settings, int level,
+              const glm::dvec3& local) {
+    const double reach = settings.reachTexels + settings.rays.reachTexels;
+    const int top = rayLevel(clipmap, level, -local.z - settings.rays.zNear, settings.rays);
+    const int n = clipmap.pagesPerSide();
+    for (int l = level; l <= top; ++l) {
+        const glm::dvec2 texel = texelOf(clipmap, l, local);
+        const PageBox box = pagesRead(texel, reach, clipmap.pageTexels);
+        const LevelWindow& w = table.windows()[size_t(l - clipmap.firstLevel)];
+        if (w.holds(box.x0, box.y0, n) && w.holds(box.x1, box.y1, n)) requestBox(table, l, box);
+    }
+}
+
 }  // namespace
+
+int rayLevel(const ClipmapSettings& clipmap, int level, double heightM, const RayReach& rays) {
+    const double drift = rays.tanHalfAngle * heightM;
+    while (level < clipmap.lastLevel && drift > rays.reachTexels * clipmap.texelM(level)) ++level;
+    return level;
+}
 
 PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels) {
     const auto page = [&](double c) { return pageOf(c, pageTexels); };
@@ -89,11 +116,12 @@ void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const L
                 if (chosen.level == kNoLevel) continue;
                 const int level = clipmap.firstLevel + chosen.level;
                 const PageBox box = pagesRead(chosen.texel, settings.reachTexels, clipmap.pageTexels);
-                if (level == lastBoxLevel && box.x0 == last.x0 && box.y0 == last.y0 && box.x1 == last.x1 && box.y1 == last.y1)
-                    continue;
+                if (!(level == lastBoxLevel && box.x0 == last.x0 && box.y0 == last.y0 && box.x1 == last.x1 &&
+                      box.y1 == last.y1))
+                    requestBox(table, level, box);
                 last = box, lastBoxLevel = level;
-                for (int32_t py = box.y0; py <= box.y1; ++py)
-                    for (int32_t px = box.x0; px <= box.x1; ++px) table.request({level, px, py});
+                if (settings.rays.tanHalfAngle > 0.0)
+                    markRays(table, clipmap, settings, level, frame.local(glm::dvec3(g.position[k])));
             }
         }
     });

@@ -27,9 +27,25 @@ namespace shadowlab::vsm {
 
 inline constexpr int8_t kNoLevel = -1;
 
+// Shadow-map ray tracing's reach (smrt.h): a pixel's rays climb from it to the top of the
+// light's depth range (zNear, m along the beam) and drift across the beam by at most
+// tanHalfAngle m per m climbed; a sample reads the finest level, from the pixel's own, at
+// which the drift is at most reachTexels of its texels (rayLevel). Marking marks, at each
+// level a pixel's rays read, the box of reachTexels (plus the lookup's reach) around it.
+struct RayReach {
+    double tanHalfAngle = 0.0;   // 0: no rays
+    double reachTexels = 0.0;
+    double zNear = 0.0;
+};
+
+// The level a sample `heightM` above a pixel of `level` reads: the finest l >= level with
+// tanHalfAngle * heightM <= reachTexels * texel(l), at most the last level.
+int rayLevel(const ClipmapSettings& clipmap, int level, double heightM, const RayReach& rays);
+
 struct MarkingSettings {
     int lodBias = 0;            // in levels: + coarser, - finer
     double reachTexels = 0.0;   // the lookup filter's half-width, texels
+    RayReach rays = {};
 };
 
 // A pixel's level and texel coordinate, as marking chose them and the lookup reads them.

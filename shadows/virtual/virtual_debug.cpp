@@ -118,7 +118,8 @@ void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const C
 
 void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera,
                        const ClipmapSettings& clipmap, const std::vector<PixelLevel>& levels, const PageTable& table,
-                       const std::vector<PageKey>& rendered, const PagePool& pool) {
+                       const std::vector<PageKey>& rendered, const PagePool& pool,
+                       const std::vector<float>& escapedRays) {
     if (!debug.enabled()) return;
     std::vector<float> level(g.pixelCount(), -1.0f), texelsPerPixel(g.pixelCount(), 0.0f);
     const glm::dvec3 eye(camera.eye), forward = glm::normalize(glm::dvec3(camera.target - camera.eye));
@@ -134,6 +135,7 @@ void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera
     const int n = clipmap.pagesPerSide();
     debug.write("page-table", n, n * clipmap.levelCount(), pageTableImage(clipmap, table, rendered), 0.0f, 1.0f);
     writePool(debug, pool);
+    if (!escapedRays.empty()) debug.write("smrt-escaped", g.width, g.height, escapedRays, 0.0f, 1.0f);
 }
 
 }  // namespace shadowlab::vsm

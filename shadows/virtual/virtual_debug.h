@@ -9,6 +9,9 @@
 //                    this frame, 0.75 read from the cache, 1 rendered this frame
 //   pool             the physical pages in use as an atlas, page p at column p mod n, row
 //                    p / n of an n x n grid, window depth
+//   smrt-escaped     with shadow-map ray tracing, per pixel the fraction of its rays that
+//                    went behind an occluder and escaped past its edge (smrt.h): where
+//                    the depth history made the inner penumbra
 // For a spot or point light's mip chains (mip_chain.h), in place of level and page-table:
 //   face             per pixel, the face read (0..5: kCubeFaceNames, 0 for a spot; -1: none)
 //   mip              per pixel, the mip read (-1: none)
@@ -30,10 +33,12 @@
 
 namespace shadowlab::vsm {
 
-// Written through `debug` (nothing when it is disabled).
+// Written through `debug` (nothing when it is disabled); smrt-escaped only where
+// escapedRays is not empty.
 void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera,
                        const ClipmapSettings& clipmap, const std::vector<PixelLevel>& levels, const PageTable& table,
-                       const std::vector<PageKey>& rendered, const PagePool& pool);
+                       const std::vector<PageKey>& rendered, const PagePool& pool,
+                       const std::vector<float>& escapedRays);
 void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera, const MipChain& chain,
                             const std::vector<PixelLevel>& levels, const PageTable& table,
                             const std::vector<PageKey>& rendered, const PagePool& pool);

@@ -24,6 +24,7 @@
 #include "shadows/virtual/page_lookup.h"
 #include "shadows/virtual/page_marking.h"
 #include "shadows/virtual/page_rendering.h"
+#include "shadows/virtual/smrt.h"
 #include "shadows/virtual/virtual_debug.h"
 #include "shadows/virtual/virtual_stats.h"
 
@@ -37,6 +38,8 @@ struct VirtualMapSettings {
     int poolPages = 1024;
     int lodBias = 0;
     BiasSettings bias = {};
+    FilterSettings filter = {};
+    SmrtSettings smrt = {};
 };
 
 const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
@@ -54,9 +57,21 @@ const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
                      "the coarsest level: 2^(l+1) m a side")
             .integer("pool-pages", member(&S::poolPages), 1, 1 << 20, "physical pages of memory")
             .integer("lod-bias", member(&S::lodBias), -8, 8, "levels coarser (+) or finer (-) than the pixels' footprint")
-            .include(member(&S::bias), biasSettingsTable());
+            .include(member(&S::bias), biasSettingsTable())
+            .include(member(&S::filter), filterSettingsTable())
+            .integer("smrt-rays", member(&S::smrt, &SmrtSettings::rays), 0, 256,
+                     "shadow-map ray tracing: rays per pixel towards the sun's disk; 0: the lookup above")
+            .integer("smrt-steps", member(&S::smrt, &SmrtSettings::steps), 1, 64, "shadow-map ray tracing: samples per ray")
+            .real("smrt-reach", member(&S::smrt, &SmrtSettings::reachTexels), 0.5, 64.0,
+                  "shadow-map ray tracing: texels a ray drifts across a level before reading a coarser one")
+            .real("smrt-max-slope", member(&S::smrt, &SmrtSettings::maxSlope), 0.0, 1000.0,
+                  "shadow-map ray tracing: the depth history's slope bound, m along the beam per m across");
     return table;
 }
+
+// The sun's cone: half its angular diameter, radians (0: a point-like sun, every ray along
+// the beam).
+double sunHalfAngle(const Light& sun) { return glm::radians(double(sun.angularDiameterDeg)) / 2.0; }
 
 // What the technique keeps from frame to frame.
 struct VirtualMapState {
@@ -97,8 +112,14 @@ int prepareState(VirtualMapState& state, const VirtualMapSettings& s, const glm:
 ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     const VirtualMapSettings s = virtualMapSettingsTable().read(in.params);
     checkClipmapSettings(s.clipmap);
-    if (in.light.type != LightType::Directional)
-        return runLocalVirtualMap(in, {s.clipmap, s.poolPages, s.lodBias, s.bias});
+    if (in.light.type != LightType::Directional) {
+        // Shadow-map ray tracing marches a sun's cone through the clipmap (smrt.h); a local
+        // light's faces are read hard or filtered.
+        if (s.smrt.rays > 0)
+            throw std::invalid_argument("virtual-shadow-map: smrt-rays traces a sun's cone; a spot, point or area "
+                                        "light takes filter (PCF) instead");
+        return runLocalVirtualMap(in, {s.clipmap, s.poolPages, s.lodBias, s.bias, s.filter});
+    }
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);
     StageTimer timer;
     VirtualMapState& state = in.kept().state<VirtualMapState>();
@@ -119,7 +140,9 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     const glm::dvec3 eye = frame.local(glm::dvec3(in.camera().eye));
     for (int l = s.clipmap.firstLevel; l <= s.clipmap.lastLevel; ++l) windows.push_back(placeLevel(s.clipmap, l, eye));
     table.beginFrame(windows);
-    markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap, {s.lodBias, biasReachTexels(s.bias)}, table,
+    const double halfAngle = sunHalfAngle(in.light);
+    markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap,
+              {s.lodBias, lookupReachTexels(s.bias, s.filter), smrtReach(s.smrt, halfAngle, state.range)}, table,
               state.levels);
     const std::vector<PixelLevel>& levels = state.levels;
     timer.lap("marking");
@@ -134,14 +157,22 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     for (const PageKey& key : toRender) table.markRendered(key);
     timer.lap("pages");
     // 5. The lookup.
-    LookupResult lookup = lookUpPages(in.gbuffer, in.light, frame, s.clipmap, state.range, s.bias, levels, table,
-                                      state.pool);
+    SmrtResult rays;
+    if (s.smrt.rays > 0)
+        rays = traceShadowMapRays(in.gbuffer, in.light, halfAngle, frame, s.clipmap, state.range, s.bias, s.smrt,
+                                  levels, table, state.pool);
+    else
+        rays.lookup = lookUpPages(in.gbuffer, in.light, frame, s.clipmap, state.range, s.bias,
+                                  makePcfKernel(s.filter), levels, table, state.pool);
+    LookupResult& lookup = rays.lookup;
     timer.lap("lookup");
     ShadowOutputs out;
     out.visibility = std::move(lookup.visibility);
     addPageStats(out, table, toRender.size(), invalidated, lookup, state.pool);
+    if (s.smrt.rays > 0) out.stats.push_back({"smrt_missing_read_count", double(rays.missingReads)});
     timer.appendTo(out.stats);
-    writeVirtualDebug(DebugBuffers(in.debugDir, kVirtualMapName), in.gbuffer, in.camera(), s.clipmap, levels, table, toRender, state.pool);
+    writeVirtualDebug(DebugBuffers(in.debugDir, kVirtualMapName), in.gbuffer, in.camera(), s.clipmap, levels, table,
+                      toRender, state.pool, rays.escapedRays);
     return out;
 }
 

@@ -13,6 +13,7 @@
 #include "scenes/scene_file.h"
 #include "shadows/camera_pass.h"
 #include "shadows/virtual/page_invalidation.h"
+#include "shadows/virtual/page_lookup.h"
 #include "shadows/virtual/page_marking.h"
 
 using namespace shadowlab;
@@ -103,6 +104,61 @@ TEST_CASE("virtual pages: every texel a lookup reads lies in a marked page that 
         CHECK(checkedPixels > 10000);
         CHECK(misses == 0);
     }
+}
+
+TEST_CASE("virtual pages: every texel a PCF lookup reads, with its bias, lies in a page marking marked") {
+    // The lookup's own taps (pcfLitFraction on mapReceiver's texel, as lookUpPages takes
+    // them) checked against the table, for each filter and for the normal offset, which moves
+    // the receiver's texel: marking's reach is lookupReachTexels, the lookup's the taps.
+    const SunView view;
+    const ClipmapSettings c = smallClipmap();
+    const std::vector<DepthMap> maps = levelMaps(view.frame, c, {0.0, 100.0});
+    FilterSettings grid4{FilterKind::Grid}, poisson{FilterKind::Poisson};
+    grid4.gridSize = 4, poisson.poissonRadiusTexels = 2.5;
+    BiasSettings normalOffset{.mode = BiasMode::NormalOffset};
+    normalOffset.normalOffsetTexels = 2.0;
+    for (const BiasSettings& bias : {BiasSettings{}, normalOffset}) {
+        for (const FilterSettings& filter : {FilterSettings{}, FilterSettings{FilterKind::Bilinear}, grid4, poisson}) {
+            INFO("filter " << int(filter.kind) << ", bias " << int(bias.mode));
+            const PcfKernel kernel = makePcfKernel(filter);
+            PageTable table(c, 4096);
+            const Marked marked = mark(view, c, {.lodBias = 0, .reachTexels = lookupReachTexels(bias, filter)}, table);
+            table.allocate();
+            REQUIRE(table.overflowPages() == 0);
+            size_t taps = 0, misses = 0;
+            for (size_t k = 0; k < marked.levels.size(); ++k) {
+                const PixelLevel& p = marked.levels[k];
+                if (p.level == kNoLevel) continue;
+                const int level = c.firstLevel + p.level;
+                const MapReceiver r = mapReceiver(maps[size_t(p.level)], glm::dvec3(view.gbuffer.position[k]),
+                                                  glm::dvec3(view.gbuffer.normal[k]),
+                                                  glm::normalize(glm::dvec3(view.sun().direction)), bias);
+                pcfLitFraction(kernel, r.texel, poissonRotationCosSin(k), [&](int x, int y) {
+                    const PageKey key{level, int32_t(std::floor(x / double(c.pageTexels))),
+                                      int32_t(std::floor(y / double(c.pageTexels)))};
+                    ++taps, misses += table.physical(key) == kNoPhysicalPage;
+                    return true;
+                });
+            }
+            CHECK(taps > 10000);
+            CHECK(misses == 0);
+        }
+    }
+    // Without the reach (the hard lookup's box for a 4 x 4 grid) taps do leave the pages.
+    const PcfKernel kernel = makePcfKernel(grid4);
+    PageTable table(c, 4096);
+    const Marked marked = mark(view, c, {.lodBias = 0, .reachTexels = 0.0}, table);
+    table.allocate();
+    size_t misses = 0;
+    for (const PixelLevel& p : marked.levels) {
+        if (p.level == kNoLevel) continue;
+        pcfLitFraction(kernel, p.texel, {1.0, 0.0}, [&](int x, int y) {
+            misses += table.physical({c.firstLevel + p.level, int32_t(std::floor(x / double(c.pageTexels))),
+                                      int32_t(std::floor(y / double(c.pageTexels)))}) == kNoPhysicalPage;
+            return true;
+        });
+    }
+    CHECK(misses > 0);
 }
 
 TEST_CASE("virtual pages: a pixel's level matches its footprint, the finer for a negative bias") {

@@ -1,0 +1,65 @@
+// Shadow-map ray tracing (SMRT) through a virtual shadow map (docs/virtual-shadow-maps.md):
+// soft shadows of a sun of angular radius theta from the pages alone, after the public
+// description in Epic Games' "Virtual Shadow Maps" documentation ("Shadow Map Ray
+// Tracing": a few rays per pixel towards the light's area, each sampled at a few steps
+// against the map, occluders extrapolated from the depth history, a tolerance that grows
+// along the ray). Our reading of it, from that description only:
+//
+// Each pixel sends `rays` rays from its receiver (the hard lookup's, with its bias) in
+// directions of the sun's cone (stratified over the disk of directions, jittered per pixel
+// by a PCG32 stream of its index), up to the top of the light's depth range. A ray climbs;
+// sample k at height h_k = H ((k + xi) / steps)^2 (denser near the receiver, where contact
+// shadows are; xi jittered per ray) reads the stored depth at its texel of the level
+// rayLevel gives (page_marking.h: the pixel's own, coarser once the drift across the beam
+// passes `reach` texels), through the page table.
+//
+// The map is a height field seen from the light: a sample deeper than the stored depth is
+// behind an occluder's front, which says nothing of whether the ray passes through the
+// occluder or beneath it. The depth history decides: a ray behind an occluder that comes
+// out in front of it again crossed the occluder, and is hit, where the stored depth at the
+// sample it comes out at continues the surface it was behind (the depths of the samples
+// before, extrapolated along the ray with their slope, within a tolerance of max-slope
+// times the distance stepped across the beam and a texel of the level read: it grows along
+// the ray). It escaped past the occluder's edge where the stored depth there is deeper
+// than that: the inner penumbra. A ray still behind at its last sample is hit.
+// V = the fraction of rays not hit. The hard lookup's receiver starts each ray, so that a
+// pixel in the hard shadow's umbra is hit by every ray that never escapes.
+//
+// A read in a page without memory is counted and ends the ray unhit (lit, as the hard
+// lookup reads a missing page). Deterministic: per pixel, a fixed PCG32 stream.
+#pragma once
+
+#include <vector>
+
+#include "shadows/virtual/page_lookup.h"
+
+namespace shadowlab::vsm {
+
+struct SmrtSettings {
+    int rays = 0;             // per pixel; 0: the hard lookup's bytes
+    int steps = 8;            // samples per ray
+    double reachTexels = 4;   // drift across a level's texels before reading the next coarser
+    // The depth history's slope bound, m along the beam per m across: a tolerance too tight
+    // lets rays escape through an occluder's own curve (light leaks), too loose keeps them
+    // from escaping past its edge (no inner penumbra); 16 had the least error on the sun
+    // case (docs/virtual-shadow-maps.md).
+    double maxSlope = 16.0;
+};
+
+struct SmrtResult {
+    LookupResult lookup;
+    std::vector<float> escapedRays;   // per pixel, the fraction of rays that escaped past an occluder's edge
+    size_t missingReads = 0;          // samples whose page had no memory
+};
+
+// The rays' reach for marking (page_marking.h) from the sun's cone.
+RayReach smrtReach(const SmrtSettings& smrt, double halfAngle, const DepthRange& range);
+
+// V per pixel from `smrt.rays` rays (at least 1) in the cone of half-angle `halfAngle`
+// (radians) around the sun's direction; marking must have had smrtReach's reach.
+SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAngle, const LightFrame& frame,
+                              const ClipmapSettings& clipmap, const DepthRange& range, const BiasSettings& bias,
+                              const SmrtSettings& smrt, const std::vector<PixelLevel>& levels, const PageTable& table,
+                              const PagePool& pool);
+
+}  // namespace shadowlab::vsm
