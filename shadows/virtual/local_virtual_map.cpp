@@ -8,6 +8,7 @@
 #include "shadows/virtual/local_invalidation.h"
 #include "shadows/virtual/local_lookup.h"
 #include "shadows/virtual/local_marking.h"
+#include "shadows/virtual/page_invalidation.h"
 #include "shadows/virtual/local_page_rendering.h"
 #include "shadows/virtual/mip_chain.h"
 #include "shadows/virtual/page_lookup.h"
@@ -52,11 +53,7 @@ int prepareState(LocalMapState& state, const LocalMapSettings& s, const Light& l
         state.light = light, state.casterBoxes = boxes;
         return before;
     }
-    std::vector<Aabb> moved;
-    for (size_t i = 0; i < boxes.size(); ++i) {
-        const Aabb& a = state.casterBoxes[i];
-        if (a.min != boxes[i].min || a.max != boxes[i].max) moved.push_back(a), moved.push_back(boxes[i]);
-    }
+    const std::vector<Aabb> moved = movedBoxes(state.casterBoxes, boxes);
     state.casterBoxes = boxes;
     return invalidateLocalUnder(moved, state.chain, *state.table);
 }

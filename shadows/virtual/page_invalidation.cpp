@@ -16,6 +16,14 @@ PageRange pagesUnder(const Aabb& box, const LightFrame& frame, const ClipmapSett
     return {page(lo.x), page(lo.y), page(hi.x), page(hi.y)};
 }
 
+std::vector<Aabb> movedBoxes(const std::vector<Aabb>& last, const std::vector<Aabb>& now) {
+    std::vector<Aabb> moved;
+    for (size_t i = 0; i < now.size(); ++i) {
+        if (last[i].min != now[i].min || last[i].max != now[i].max) moved.push_back(last[i]), moved.push_back(now[i]);
+    }
+    return moved;
+}
+
 int invalidateUnder(const std::vector<Aabb>& boxes, const LightFrame& frame, const ClipmapSettings& clipmap,
                     PageTable& table) {
     int invalidated = 0;

@@ -24,6 +24,10 @@ struct PageRange {
 };
 PageRange pagesUnder(const Aabb& box, const LightFrame& frame, const ClipmapSettings& clipmap, int level);
 
+// The boxes of the instances whose box changed from `last` to `now` (one per instance in
+// both), before and after the move: what a virtual map invalidates under.
+std::vector<Aabb> movedBoxes(const std::vector<Aabb>& last, const std::vector<Aabb>& now);
+
 // Invalidates, at every level, the pages under each box (a moved caster's bounds before and
 // after); returns how many valid pages it invalidated.
 int invalidateUnder(const std::vector<Aabb>& boxes, const LightFrame& frame, const ClipmapSettings& clipmap,

@@ -1,11 +1,5 @@
 #include "shadows/virtual/page_lookup.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
-
-#include "shading/lights.h"
-
 namespace shadowlab::vsm {
 
 float PageTexels::at(int level, int x, int y) const {
@@ -48,47 +42,20 @@ LookupResult lookUpPages(const GBuffer& g, const Light& sun, const LightFrame& f
     const std::vector<DepthMap> maps = levelMaps(frame, clipmap, range);
     const PageTexels texels(clipmap.pageTexels, table, pool);
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(sun.direction));
-    const LightReach reaches(sun);
     const bool rotated = filter.settings.kind == FilterKind::Poisson;
-    LookupResult out{std::vector<float>(g.pixelCount(), 0.0f)};
-    struct Counts {
-        size_t missing = 0, unleveled = 0;
-    };
-    const Counts counts = tbb::parallel_reduce(
-        tbb::blocked_range<int>(0, g.height), Counts{},
-        [&](const tbb::blocked_range<int>& rows, Counts c) {
-            for (int j = rows.begin(); j < rows.end(); ++j) {
-                for (int i = 0; i < g.width; ++i) {
-                    const size_t k = g.index(i, j);
-                    if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;   // V = 0
-                    const PixelLevel& p = levels[k];
-                    if (p.level == kNoLevel) {
-                        ++c.unleveled, out.visibility[k] = 1.0f;
-                        continue;
-                    }
-                    const MapReceiver r = mapReceiver(maps[size_t(p.level)], glm::dvec3(g.position[k]),
-                                                      glm::dvec3(g.normal[k]), towardsLight, bias);
-                    const int level = clipmap.firstLevel + p.level;
-                    bool missing = false;
-                    PageTexels::Cursor cursor;
-                    const auto litAt = [&](int x, int y) {
-                        const float stored = texels.at(level, x, y, cursor);
-                        missing |= stored == PageTexels::kMissingTexel;
-                        return stored == PageTexels::kMissingTexel || r.litByStored(stored, x, y);
-                    };
-                    const glm::dvec2 rotation = rotated ? poissonRotationCosSin(k) : glm::dvec2(1.0, 0.0);
-                    out.visibility[k] = float(pcfLitFraction(filter, r.texel, rotation, litAt));
-                    c.missing += missing;
-                }
-            }
-            return c;
-        },
-        [](Counts a, const Counts& b) {
-            a.missing += b.missing, a.unleveled += b.unleveled;
-            return a;
-        });
-    out.missingPixels = counts.missing, out.unleveledPixels = counts.unleveled;
-    return out;
+    return lookUpEachPixel(g, sun, levels, [&](size_t k, const PixelLevel& p, bool& missing) {
+        const MapReceiver r = mapReceiver(maps[size_t(p.level)], glm::dvec3(g.position[k]), glm::dvec3(g.normal[k]),
+                                          towardsLight, bias);
+        const int level = clipmap.firstLevel + p.level;
+        PageTexels::Cursor cursor;
+        const auto litAt = [&](int x, int y) {
+            const float stored = texels.at(level, x, y, cursor);
+            missing |= stored == PageTexels::kMissingTexel;
+            return stored == PageTexels::kMissingTexel || r.litByStored(stored, x, y);
+        };
+        const glm::dvec2 rotation = rotated ? poissonRotationCosSin(k) : glm::dvec2(1.0, 0.0);
+        return float(pcfLitFraction(filter, r.texel, rotation, litAt));
+    });
 }
 
 }  // namespace shadowlab::vsm

@@ -11,8 +11,12 @@
 #include <climits>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shading/lights.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_bias.h"
 #include "shadows/virtual/page_marking.h"
@@ -59,6 +63,46 @@ struct LookupResult {
     size_t missingPixels = 0;        // a tap read as lit for want of a page with memory
     size_t unleveledPixels = 0;      // lit: reached by the light but in no level's window
 };
+
+// The pass every lookup of a virtual map makes over the pixels (the sun's, a local light's,
+// the rays'), rows in parallel: a pixel without a surface or that `light` does not reach
+// keeps V = 0, one that no level holds is lit and counted, and every other gets
+// V = read(k, its PixelLevel, missing), which sets `missing` where a read found no page
+// (the pixel is then counted). The counts are sums, the same for any thread count.
+template <class Read>
+LookupResult lookUpEachPixel(const GBuffer& g, const Light& light, const std::vector<PixelLevel>& levels,
+                             const Read& read) {
+    const LightReach reaches(light);
+    LookupResult out{std::vector<float>(g.pixelCount(), 0.0f)};
+    struct Counts {
+        size_t missing = 0, unleveled = 0;
+    };
+    const Counts counts = tbb::parallel_reduce(
+        tbb::blocked_range<int>(0, g.height), Counts{},
+        [&](const tbb::blocked_range<int>& rows, Counts c) {
+            for (int j = rows.begin(); j < rows.end(); ++j) {
+                for (int i = 0; i < g.width; ++i) {
+                    const size_t k = g.index(i, j);
+                    if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;   // V = 0
+                    const PixelLevel& p = levels[k];
+                    if (p.level == kNoLevel) {
+                        ++c.unleveled, out.visibility[k] = 1.0f;
+                        continue;
+                    }
+                    bool missing = false;
+                    out.visibility[k] = read(k, p, missing);
+                    c.missing += missing;
+                }
+            }
+            return c;
+        },
+        [](Counts a, const Counts& b) {
+            a.missing += b.missing, a.unleveled += b.unleveled;
+            return a;
+        });
+    out.missingPixels = counts.missing, out.unleveledPixels = counts.unleveled;
+    return out;
+}
 
 LookupResult lookUpPages(const GBuffer& g, const Light& sun, const LightFrame& frame, const ClipmapSettings& clipmap,
                          const DepthRange& range, const BiasSettings& bias, const PcfKernel& filter,

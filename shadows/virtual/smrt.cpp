@@ -1,13 +1,10 @@
 #include "shadows/virtual/smrt.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
 #include "shading/light_sampling.h"
-#include "shading/lights.h"
 
 namespace shadowlab::vsm {
 namespace {
@@ -100,57 +97,35 @@ SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAng
     Marcher marcher{texels, clipmap, smrtReach(smrt, halfAngle, range), 1.0 / (range.zFar - range.zNear), smrt, {}};
     for (int l = clipmap.firstLevel; l <= clipmap.lastLevel; ++l) marcher.texelM.push_back(clipmap.texelM(l));
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(sun.direction));
-    const LightReach reaches(sun);
-    SmrtResult out{{std::vector<float>(g.pixelCount(), 0.0f)}, std::vector<float>(g.pixelCount(), 0.0f)};
-    struct Counts {
-        size_t missing = 0, unleveled = 0, reads = 0;
-    };
-    const Counts counts = tbb::parallel_reduce(
-        tbb::blocked_range<int>(0, g.height), Counts{},
-        [&](const tbb::blocked_range<int>& rows, Counts c) {
-            for (int j = rows.begin(); j < rows.end(); ++j) {
-                for (int i = 0; i < g.width; ++i) {
-                    const size_t k = g.index(i, j);
-                    if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;   // V = 0
-                    const PixelLevel& p = levels[k];
-                    if (p.level == kNoLevel) {
-                        ++c.unleveled, out.lookup.visibility[k] = 1.0f;
-                        continue;
-                    }
-                    const MapReceiver r = mapReceiver(maps[size_t(p.level)], glm::dvec3(g.position[k]),
-                                                      glm::dvec3(g.normal[k]), towardsLight, bias);
-                    const int level = clipmap.firstLevel + p.level;
-                    const int tx = texelIndexOf(r.texel.x), ty = texelIndexOf(r.texel.y);
-                    const float stored = texels.at(level, tx, ty);
-                    if (stored == PageTexels::kMissingTexel) {
-                        ++c.missing, out.lookup.visibility[k] = 1.0f;
-                        continue;
-                    }
-                    const Origin origin{level, r.texel, r.depth, stored, !r.litByStored(stored, tx, ty)};
-                    // Directions stratified over the cone's disk (a shifted (0, 2)-sequence).
-                    Pcg32 rng(kSeed, k);
-                    const glm::dvec2 shift(rng.nextDouble(), rng.nextDouble());
-                    int hits = 0, escapes = 0;
-                    bool missing = false;
-                    for (int ray = 0; ray < smrt.rays; ++ray) {
-                        const glm::dvec2 disk = concentricSquareToDisk(shiftedSobol02(uint32_t(ray), shift));
-                        const RayEnd end = marchRay(marcher, origin, marcher.reach.tanHalfAngle * disk, rng.nextDouble());
-                        hits += end.hit, escapes += end.escaped, missing |= end.missing;
-                        c.reads += end.missing;
-                    }
-                    out.lookup.visibility[k] = float(double(smrt.rays - hits) / double(smrt.rays));
-                    out.escapedRays[k] = float(double(escapes) / double(smrt.rays));
-                    c.missing += missing;
-                }
-            }
-            return c;
-        },
-        [](Counts a, const Counts& b) {
-            a.missing += b.missing, a.unleveled += b.unleveled, a.reads += b.reads;
-            return a;
-        });
-    out.lookup.missingPixels = counts.missing, out.lookup.unleveledPixels = counts.unleveled;
-    out.missingReads = counts.reads;
+    SmrtResult out{{}, std::vector<float>(g.pixelCount(), 0.0f)};
+    std::atomic<size_t> missingReads = 0;   // a sum: the same for any thread count
+    out.lookup = lookUpEachPixel(g, sun, levels, [&](size_t k, const PixelLevel& p, bool& missing) {
+        const MapReceiver r = mapReceiver(maps[size_t(p.level)], glm::dvec3(g.position[k]), glm::dvec3(g.normal[k]),
+                                          towardsLight, bias);
+        const int level = clipmap.firstLevel + p.level;
+        const int tx = texelIndexOf(r.texel.x), ty = texelIndexOf(r.texel.y);
+        const float stored = texels.at(level, tx, ty);
+        if (stored == PageTexels::kMissingTexel) {
+            missing = true;
+            return 1.0f;
+        }
+        const Origin origin{level, r.texel, r.depth, stored, !r.litByStored(stored, tx, ty)};
+        // Directions stratified over the cone's disk (a shifted (0, 2)-sequence).
+        Pcg32 rng(kSeed, k);
+        const glm::dvec2 shift(rng.nextDouble(), rng.nextDouble());
+        int hits = 0, escapes = 0;
+        size_t reads = 0;
+        for (int ray = 0; ray < smrt.rays; ++ray) {
+            const glm::dvec2 disk = concentricSquareToDisk(shiftedSobol02(uint32_t(ray), shift));
+            const RayEnd end = marchRay(marcher, origin, marcher.reach.tanHalfAngle * disk, rng.nextDouble());
+            hits += end.hit, escapes += end.escaped, missing |= end.missing;
+            reads += end.missing;
+        }
+        if (reads) missingReads += reads;
+        out.escapedRays[k] = float(double(escapes) / double(smrt.rays));
+        return float(double(smrt.rays - hits) / double(smrt.rays));
+    });
+    out.missingReads = missingReads;
     return out;
 }
 

@@ -100,11 +100,7 @@ int prepareState(VirtualMapState& state, const VirtualMapSettings& s, const glm:
         state.towardsLight = towardsLight, state.range = needed, state.casterBoxes = boxes;
         return before;
     }
-    std::vector<Aabb> moved;
-    for (size_t i = 0; i < boxes.size(); ++i) {
-        const Aabb& a = state.casterBoxes[i];
-        if (a.min != boxes[i].min || a.max != boxes[i].max) moved.push_back(a), moved.push_back(boxes[i]);
-    }
+    const std::vector<Aabb> moved = movedBoxes(state.casterBoxes, boxes);
     state.casterBoxes = boxes;
     return invalidateUnder(moved, frame, s.clipmap, *state.table);
 }
