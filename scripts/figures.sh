@@ -478,15 +478,18 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
       python3 scripts/vsm_table.py sweep $v/$name-$stem.csv $v/first/$name-virtual-shadow-map.csv
       cp $v/$name-$stem.svg docs/images/virtual-$name.svg
     done
-    # Soft lookups (PCF, shadow-map ray tracing) against the soft reference, once the virtual
-    # map has them: its rays parameter (0 rays = hard).
-    if $app techniques | awk '/^virtual-shadow-map/ {on = 1; next} /^[a-z]/ {on = 0} on' | grep -q '^ *rays='; then
-      for scene in sphere-box assets/scenes/hard/sun.json; do
-        $app sweep $scene --technique virtual-shadow-map,pcss --param rays=0,4,16 --reference reference-soft \
-          --threads 2 --runs 3 --out $v/soft --plot-y rms > /dev/null
-        python3 $table $v/soft/$(basename $scene .json)-virtual-shadow-map+pcss.csv soft
-      done
-    fi
+    # Soft lookups against the soft reference, on a sun with an angular size (soft/sun-disk,
+    # 2.5 degrees): the virtual map hard and with PCF beside shadow-map's same filters, then
+    # with shadow-map ray tracing (smrt-rays; 0 rays = the hard lookup).
+    soft=assets/scenes/soft/sun-disk.json
+    $app sweep $soft --technique virtual-shadow-map,shadow-map --param filter=nearest,bilinear,poisson \
+      --reference reference-soft --threads 2 --runs 3 --warmup 1 --out $v/soft --plot-y rms > /dev/null
+    $app sweep $soft --technique virtual-shadow-map --param smrt-rays=4,16 --reference reference-soft \
+      --threads 2 --runs 3 --warmup 1 --out $v/soft/rays --plot-y rms > /dev/null
+    echo "sun-disk, soft:"
+    python3 $table $v/soft/sun-disk-virtual-shadow-map+shadow-map.csv soft
+    python3 $table $v/soft/rays/sun-disk-virtual-shadow-map.csv soft
+    cp $v/soft/sun-disk-virtual-shadow-map+shadow-map.svg docs/images/virtual-soft-sun-disk.svg
     fly="--technique $maps $grid --threads 2 --runs 3 --warmup 1"
     $app flythrough assets/scenes/flythrough/avenue.json $fly --out $v/fly > /dev/null
     $app flythrough assets/scenes/flythrough/sliding-sphere-still-sun.json $fly --out $v/fly > /dev/null
