@@ -1,11 +1,13 @@
 #include "shadows/virtual/mip_chain.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "raster/fixed_point.h"
+#include "raster/portable_math.h"
 #include "scenes/camera.h"
 
 namespace shadowlab::vsm {
@@ -102,13 +104,14 @@ DepthRange depthRangeAround(const std::vector<Aabb>& boxes, const glm::dvec3& ap
 MipChain mipChainFor(const Light& light, const ClipmapSettings& settings, const std::vector<Aabb>& boxes) {
     MipChain chain;
     chain.resolution = settings.resolution, chain.pageTexels = settings.pageTexels;
-    chain.mipCount = int(std::log2(double(settings.resolution / settings.pageTexels))) + 1;   // exact: powers of two
+    chain.mipCount = std::countr_zero(unsigned(settings.resolution / settings.pageTexels)) + 1;   // powers of two
     chain.apex = glm::dvec3(light.position);
     if (light.type == LightType::Spot && double(light.coneAngleDeg) <= kMaxSpotFaceDeg) {
         // One face round the cone, 1 % wider so that every point the cone holds (tested in
         // float, insideSpotCone) falls inside it.
         const glm::dvec3 axis = glm::normalize(glm::dvec3(light.direction));
-        chain.tanHalf = 1.01 * std::tan(glm::radians(double(light.coneAngleDeg)));
+        // portable::tan, not libm's, whose bits depend on the CPU it dispatches to.
+        chain.tanHalf = 1.01 * portable::tan(glm::radians(double(light.coneAngleDeg)));
         chain.faces.push_back(glm::lookAtRH(chain.apex, chain.apex + axis, lookAtUp(axis)));
     } else {
         for (int face = 0; face < 6; ++face) chain.faces.push_back(cubeFaceViewFromWorld(chain.apex, face));

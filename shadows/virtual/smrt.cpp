@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "raster/portable_math.h"
 #include "shading/light_sampling.h"
 
 namespace shadowlab::vsm {
@@ -85,7 +86,8 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
 }  // namespace
 
 RayReach smrtReach(const SmrtSettings& smrt, double halfAngle, const DepthRange& range) {
-    return {smrt.rays > 0 ? std::tan(halfAngle) : 0.0, smrt.reachTexels, range.zNear};
+    // portable::tan, not libm's, whose bits depend on the CPU it dispatches to.
+    return {smrt.rays > 0 ? portable::tan(halfAngle) : 0.0, smrt.reachTexels, range.zNear};
 }
 
 SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAngle, const LightFrame& frame,
