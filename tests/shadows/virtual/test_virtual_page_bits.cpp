@@ -1,9 +1,9 @@
-// A virtual shadow map's pages are an ordinary shadow map of the same texels, bit for bit
-// (issue 38): each page is drawn as a window of its cell's map (page_rendering.h), so on
-// the sun case every texel of every page of a cell equals the texel an ordinary map of that
-// cell, drawn whole in one pass with every caster, holds there. At a coarse level the
-// casters lie inside the cell; at a fine one the ground reaches far past it, so its
-// triangles are clipped at the guard band, the same way in both.
+// A virtual shadow map's pages are an ordinary shadow map of the same texels, bit for bit,
+// whichever pages are drawn and in what order: each page is drawn as a window of its cell's
+// map (page_rendering.h), so on the sun case every texel of every page of a cell equals the
+// texel an ordinary map of that cell, drawn whole in one pass with every caster, holds
+// there. At a coarse level the casters lie inside the cell; at a fine one the ground reaches
+// far past it, so its triangles are clipped at the guard band, the same way in both.
 #include <doctest/doctest.h>
 
 #include <cstring>
