@@ -77,7 +77,7 @@ void DepthMap::image(std::vector<float>& rows) const {
     });
 }
 
-glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size, const raster::ViewportWindow& in) {
+glm::dmat4 texelFromClip(int size, const raster::ViewportWindow& in) {
     // x_texel = (x_ndc + 1) w / 2 - x0, y_texel = (1 - y_ndc) h / 2 - y0 (row 0 on top),
     // z = (z_ndc + 1) / 2: raster/window.h's toWindow, in the window's texels.
     const double hx = 0.5 * (in.viewportWidth ? in.viewportWidth : size);
@@ -85,7 +85,11 @@ glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size, const rast
     glm::dmat4 window(1.0);
     window[0][0] = hx, window[1][1] = -hy, window[2][2] = 0.5;
     window[3] = glm::dvec4(hx - in.x, hy - in.y, 0.5, 1.0);
-    return window * glm::dmat4(clipFromWorld);
+    return window;
+}
+
+glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size, const raster::ViewportWindow& window) {
+    return texelFromClip(size, window) * glm::dmat4(clipFromWorld);
 }
 
 DepthMap renderDepthMap(const WorldGeometry& world, const LightView& view, const DepthMapSettings& settings,

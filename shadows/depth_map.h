@@ -61,8 +61,11 @@ struct DepthMap {
     void image(std::vector<float>& rows) const;
 };
 
-// The window transform of a size x size map after `clipFromWorld` (float, as drawn); for a
-// map drawn as a window of a larger viewport, that viewport's transform moved to the window.
+// The window transform of a size x size map: clip space -> (texel x, texel y, window depth,
+// w); for a map drawn as a window of a larger viewport, that viewport's transform moved to
+// the window.
+glm::dmat4 texelFromClip(int size, const raster::ViewportWindow& window = {});
+// The same after `clipFromWorld` (float, as drawn).
 glm::dmat4 texelFromWorldOf(const glm::mat4& clipFromWorld, int size, const raster::ViewportWindow& window = {});
 
 struct DepthMapSettings {

@@ -9,18 +9,10 @@
 #include "raster/fixed_point.h"
 #include "raster/portable_math.h"
 #include "scenes/camera.h"
+#include "shadows/depth_map.h"
 
 namespace shadowlab::vsm {
 namespace {
-
-// The window transform of a size x size map (depth_map.h's texelFromWorldOf, in double).
-glm::dmat4 windowOf(int size) {
-    const double h = 0.5 * size;
-    glm::dmat4 window(1.0);
-    window[0][0] = h, window[1][1] = -h, window[2][2] = 0.5;
-    window[3] = glm::dvec4(h, h, 0.5, 1.0);
-    return window;
-}
 
 // The nearest distance from P to the box (0 inside it) and the farthest corner's.
 glm::dvec2 distancesTo(const Aabb& box, const glm::dvec3& P) {
@@ -52,7 +44,7 @@ glm::dmat4 MipChain::clipFromView() const {
 }
 
 glm::dmat4 MipChain::texelFromWorld(int level) const {
-    return windowOf(mipTexels(mipOfLevel(level))) * clipFromView() * faces[size_t(faceOfLevel(level))];
+    return texelFromClip(mipTexels(mipOfLevel(level))) * clipFromView() * faces[size_t(faceOfLevel(level))];
 }
 
 int MipChain::cellTexels(int mip) const { return std::min(mipTexels(mip), raster::kMaxViewport); }
