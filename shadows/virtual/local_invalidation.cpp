@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-
 namespace shadowlab::vsm {
 
 PageRange localPagesUnder(const Aabb& box, const MipChain& chain, int level) {

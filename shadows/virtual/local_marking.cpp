@@ -13,12 +13,11 @@ namespace shadowlab::vsm {
 
 int matchingMip(const MipChain& chain, double footprint, double along, int lodBias) {
     // texel(m) = 2 along tan 2^m / resolution <= footprint: m = floor(log2(footprint resolution
-    // / (2 along tan))), the binary exponent, exact (frexp, no libm approximation).
-    int exponent = 0;
-    const double mantissa = std::frexp(footprint * double(chain.resolution) / (2.0 * along * chain.tanHalf), &exponent);
+    // / (2 along tan))), the binary exponent, exact.
+    const double scaled = footprint * double(chain.resolution) / (2.0 * along * chain.tanHalf);
     // A pixel wider than the coarsest texel reads the coarsest mip; one finer than mip 0's,
-    // or at no depth, mip 0.
-    const int mip = mantissa > 0.0 && std::isfinite(mantissa) ? exponent - 1 + lodBias : 0;
+    // or at no depth (or none along the face's axis: an infinite ratio), mip 0.
+    const int mip = scaled > 0.0 && std::isfinite(scaled) ? binaryExponent(scaled) - 1 + lodBias : 0;
     return std::clamp(mip, 0, chain.mipCount - 1);
 }
 

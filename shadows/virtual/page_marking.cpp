@@ -1,9 +1,7 @@
 #include "shadows/virtual/page_marking.h"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
-#include <limits>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -13,13 +11,6 @@
 
 namespace shadowlab::vsm {
 namespace {
-
-// The binary exponent e of x = m 2^e, m in [0.5, 1), for x > 0, as std::frexp gives it,
-// read from the bits (frexp is a library call per pixel); a subnormal x gets the smallest
-// normal's, -1021, which chooses the same (finest) level as its own would.
-int binaryExponent(double x) {
-    return x >= std::numeric_limits<double>::min() ? int((std::bit_cast<uint64_t>(x) >> 52) & 0x7ff) - 1022 : -1021;
-}
 
 // What every pixel's choice needs from the camera and the clipmap.
 struct LevelChoice {

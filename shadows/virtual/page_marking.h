@@ -15,7 +15,9 @@
 // (level kNoLevel) and is lit.
 #pragma once
 
+#include <bit>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "scenes/scene.h"
@@ -26,6 +28,14 @@
 namespace shadowlab::vsm {
 
 inline constexpr int8_t kNoLevel = -1;
+
+// The binary exponent e of x = m 2^e, m in [0.5, 1), for x > 0, as std::frexp gives it,
+// read from the bits (frexp is a library call per pixel; marking picks a level or a mip by
+// it); a subnormal x gets the smallest normal's, -1021, which chooses the same (finest)
+// level as its own would.
+inline int binaryExponent(double x) {
+    return x >= std::numeric_limits<double>::min() ? int((std::bit_cast<uint64_t>(x) >> 52) & 0x7ff) - 1022 : -1021;
+}
 
 // Shadow-map ray tracing's reach (smrt.h): a pixel's rays climb from it to the top of the
 // light's depth range (zNear, m along the beam) and drift across the beam by at most
