@@ -6,7 +6,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "scenes/camera.h"
 #include "shading/lights.h"
 
 namespace shadowlab::vsm {
@@ -35,8 +34,7 @@ PageBox localPagesRead(const MipChain& chain, int mip, const glm::dvec2& texel, 
 
 void markLocalPages(const GBuffer& g, const Camera& camera, const Light& light, const MipChain& chain,
                     const MarkingSettings& settings, PageTable& table, std::vector<PixelLevel>& levels) {
-    const glm::dvec3 eye(camera.eye), forward = glm::normalize(glm::dvec3(camera.target - camera.eye));
-    const double footprintPerDepth = 2.0 / (clipFromViewD(camera)[1][1] * double(camera.height));
+    const PixelFootprint footprint(camera);
     std::vector<glm::dmat4> texelFromWorld;   // per level
     for (int level = 0; level < chain.levelCount(); ++level) texelFromWorld.push_back(chain.texelFromWorld(level));
     const LightReach reaches(light);
@@ -50,7 +48,7 @@ void markLocalPages(const GBuffer& g, const Camera& camera, const Light& light, 
                 const int face = chain.faceHolding(P);
                 if (face < 0) continue;
                 const double along = -(chain.faces[size_t(face)] * glm::dvec4(P, 1.0)).z;
-                const int mip = matchingMip(chain, footprintPerDepth * glm::dot(P - eye, forward), along, settings.lodBias);
+                const int mip = matchingMip(chain, footprint.at(P), along, settings.lodBias);
                 const int level = chain.levelOf(face, mip);
                 const glm::dvec2 texel = texelIn(texelFromWorld[size_t(level)], P);
                 levels[k] = {int8_t(level), texel};

@@ -14,8 +14,7 @@ namespace {
 
 // What every pixel's choice needs from the camera and the clipmap.
 struct LevelChoice {
-    glm::dvec3 eye, forward;
-    double footprintPerDepth;   // a pixel's side at unit view depth, m per m
+    PixelFootprint footprint;
     const ClipmapSettings& clipmap;
     const std::vector<LevelWindow>& windows;
     const MarkingSettings& settings;
@@ -25,8 +24,7 @@ struct LevelChoice {
     // texel(l) = 2^(l+1) / resolution <= footprint, so l = floor(log2(footprint * resolution
     // / 2)), the binary exponent, exact.
     int matchingLevel(const glm::dvec3& P) const {
-        const double footprint = footprintPerDepth * glm::dot(P - eye, forward);
-        const double scaled = footprint * double(clipmap.resolution) / 2.0;
+        const double scaled = footprint.at(P) * double(clipmap.resolution) / 2.0;
         // A pixel wider than the coarsest texel reads the coarsest level (more detail than
         // it needs); one finer than the finest, or at no depth, the finest.
         const int level = scaled > 0.0 ? binaryExponent(scaled) - 1 + settings.lodBias : clipmap.firstLevel;
@@ -78,6 +76,10 @@ int rayLevel(const ClipmapSettings& clipmap, int level, double heightM, const Ra
     return level;
 }
 
+PixelFootprint::PixelFootprint(const Camera& camera)
+    : eye_(camera.eye), forward_(glm::normalize(glm::dvec3(camera.target - camera.eye))),
+      perDepth_(2.0 / (clipFromViewD(camera)[1][1] * double(camera.height))) {}
+
 PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels) {
     const auto page = [&](double c) { return pageOf(c, pageTexels); };
     return {page(texel.x - reachTexels), page(texel.y - reachTexels), page(texel.x + reachTexels),
@@ -87,9 +89,7 @@ PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels) {
 void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const LightFrame& frame,
                const ClipmapSettings& clipmap, const MarkingSettings& settings, PageTable& table,
                std::vector<PixelLevel>& levels) {
-    LevelChoice choice{glm::dvec3(camera.eye), glm::normalize(glm::dvec3(camera.target - camera.eye)),
-                       2.0 / (clipFromViewD(camera)[1][1] * double(camera.height)), clipmap, table.windows(),
-                       settings, {}};
+    LevelChoice choice{PixelFootprint(camera), clipmap, table.windows(), settings, {}};
     for (int l = clipmap.firstLevel; l <= clipmap.lastLevel; ++l) choice.texelsPerM.push_back(1.0 / clipmap.texelM(l));
     const LightReach reaches(sun);
     levels.assign(g.pixelCount(), PixelLevel{});

@@ -29,6 +29,18 @@ namespace shadowlab::vsm {
 
 inline constexpr int8_t kNoLevel = -1;
 
+// A pixel's side, m, on the plane facing the camera at a point's view depth: the footprint
+// marking matches a level's or a mip's texel to, and the debug buffers divide by.
+class PixelFootprint {
+public:
+    explicit PixelFootprint(const Camera& camera);
+    double at(const glm::dvec3& P) const { return perDepth_ * glm::dot(P - eye_, forward_); }
+
+private:
+    glm::dvec3 eye_, forward_;
+    double perDepth_;   // a pixel's side at unit view depth, m per m
+};
+
 // The binary exponent e of x = m 2^e, m in [0.5, 1), for x > 0, as std::frexp gives it,
 // read from the bits (frexp is a library call per pixel; marking picks a level or a mip by
 // it); a subnormal x gets the smallest normal's, -1021, which chooses the same (finest)

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <string>
 
-#include "scenes/camera.h"
 
 namespace shadowlab::vsm {
 namespace {
@@ -92,8 +91,7 @@ void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const C
                             const std::vector<PageKey>& rendered, const PagePool& pool) {
     if (!debug.enabled()) return;
     std::vector<float> face(g.pixelCount(), -1.0f), mip(g.pixelCount(), -1.0f), texelsPerPixel(g.pixelCount(), 0.0f);
-    const glm::dvec3 eye(camera.eye), forward = glm::normalize(glm::dvec3(camera.target - camera.eye));
-    const double perDepth = 2.0 / (clipFromViewD(camera)[1][1] * double(camera.height));
+    const PixelFootprint footprint(camera);
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         if (levels[k].level == kNoLevel) continue;
         const int f = chain.faceOfLevel(levels[k].level), m = chain.mipOfLevel(levels[k].level);
@@ -102,7 +100,7 @@ void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const C
         // The mip's texel across the face's beam at the pixel's depth along its axis.
         const double along = -(chain.faces[size_t(f)] * glm::dvec4(P, 1.0)).z;
         const double texel = 2.0 * along * chain.tanHalf / double(chain.mipTexels(m));
-        texelsPerPixel[k] = float(perDepth * glm::dot(P - eye, forward) / texel);
+        texelsPerPixel[k] = float(footprint.at(P) / texel);
     }
     debug.write("face", g.width, g.height, face, -1.0f, 5.0f);
     debug.write("mip", g.width, g.height, mip, -1.0f, float(chain.mipCount - 1));
@@ -122,13 +120,11 @@ void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera
                        const std::vector<float>& escapedRays) {
     if (!debug.enabled()) return;
     std::vector<float> level(g.pixelCount(), -1.0f), texelsPerPixel(g.pixelCount(), 0.0f);
-    const glm::dvec3 eye(camera.eye), forward = glm::normalize(glm::dvec3(camera.target - camera.eye));
-    const double perDepth = 2.0 / (clipFromViewD(camera)[1][1] * double(camera.height));
+    const PixelFootprint footprint(camera);
     for (size_t k = 0; k < g.pixelCount(); ++k) {
         if (levels[k].level == kNoLevel) continue;
         level[k] = float(levels[k].level);
-        const double footprint = perDepth * glm::dot(glm::dvec3(g.position[k]) - eye, forward);
-        texelsPerPixel[k] = float(footprint / clipmap.texelM(clipmap.firstLevel + levels[k].level));
+        texelsPerPixel[k] = float(footprint.at(glm::dvec3(g.position[k])) / clipmap.texelM(clipmap.firstLevel + levels[k].level));
     }
     debug.write("level", g.width, g.height, level, -1.0f, float(clipmap.levelCount() - 1));
     debug.write("texels-per-pixel", g.width, g.height, texelsPerPixel, 0.0f, 4.0f);
