@@ -107,8 +107,7 @@ void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const L
                 if (chosen.level == kNoLevel) continue;
                 const int level = clipmap.firstLevel + chosen.level;
                 const PageBox box = pagesRead(chosen.texel, settings.reachTexels, clipmap.pageTexels);
-                if (!(level == lastBoxLevel && box.x0 == last.x0 && box.y0 == last.y0 && box.x1 == last.x1 &&
-                      box.y1 == last.y1))
+                if (!(level == lastBoxLevel && box == last))
                     requestBox(table, level, box);
                 last = box, lastBoxLevel = level;
                 if (settings.rays.tanHalfAngle > 0.0)

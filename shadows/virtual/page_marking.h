@@ -87,6 +87,7 @@ void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const L
 // Every page the box of texel coordinate `texel` covers at a level: [first, last] in each axis.
 struct PageBox {
     int32_t x0, y0, x1, y1;
+    bool operator==(const PageBox&) const = default;
 };
 PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels);
 

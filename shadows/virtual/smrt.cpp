@@ -10,8 +10,6 @@
 namespace shadowlab::vsm {
 namespace {
 
-constexpr uint64_t kSeed = 0x5eed5eed5eedull;   // the reference's: pixel k draws from PCG32 stream k
-
 // What every ray of every pixel shares.
 struct Marcher {
     const PageTexels& texels;
@@ -36,54 +34,91 @@ struct RayEnd {
     bool hit = false, escaped = false, missing = false;
 };
 
+// A sample `h` m up a ray and what its texel holds.
+struct Read {
+    double h = 0.0;
+    int level = 0;
+    glm::dvec2 across{0.0};   // m across the beam from the receiver
+    double texel = 0.0;       // its level's texel, m
+    float stored = 0.0f;
+    bool missing = false, empty = false, behind = false;
+};
+
 // One ray climbing across the beam by `slope` (m per m, the frame's x and y), its steps
 // jittered by xi.
 RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, double xi) {
     const double height = o.depth / m.depthPerM;   // m up to the depth range's top
-    const double slopeLimit = m.smrt.maxSlope * m.depthPerM;
-    double previous = o.stored, previousSlope = 0.0;   // the depth history, window depth per m across
-    glm::dvec2 previousAcross(0.0);
-    bool behind = o.behind;
-    RayEnd end;
-    PageTexels::Cursor cursor;
     const double originTexel = m.texelM[size_t(o.level - m.clipmap.firstLevel)];
+    PageTexels::Cursor cursor;
+    const auto readAt = [&](double h, int level) {
+        Read r{h, level, slope * h, m.texelM[size_t(level - m.clipmap.firstLevel)]};
+        // The receiver's texel at this level (an exact power-of-two scaling), moved across.
+        const glm::dvec2 t = o.texel * (originTexel / r.texel) + glm::dvec2(r.across.x, -r.across.y) / r.texel;
+        r.stored = m.texels.at(level, texelIndexOf(t.x), texelIndexOf(t.y), cursor);
+        r.missing = r.stored == PageTexels::kMissingTexel;
+        r.empty = r.stored >= 1.0f;
+        r.behind = !r.missing && !r.empty && o.depth - h * m.depthPerM > double(r.stored);
+        return r;
+    };
+    DepthHistory history(m.smrt.maxSlope * m.depthPerM, o.stored, o.stored >= 1.0f, o.behind);
+    Read previous{0.0, o.level, glm::dvec2(0.0), originTexel, o.stored, false, o.stored >= 1.0f, o.behind};
+    Read fed = previous;   // the last read the history saw
+    const auto feed = [&](const Read& r) {
+        const double step = glm::length(r.across - fed.across);
+        fed = r;
+        return history.next(r.stored, r.empty, r.behind, step, r.texel);
+    };
+    RayEnd end;
     int level = o.level;
     for (int k = 0; k < m.smrt.steps; ++k) {
         const double s = (k + xi) / m.smrt.steps, h = height * s * s;
-        const glm::dvec2 across = slope * h;
         level = rayLevel(m.clipmap, level, h, m.reach);   // from the last sample's: h only grows
-        const double texel = m.texelM[size_t(level - m.clipmap.firstLevel)];
-        // The receiver's texel at this level (an exact power-of-two scaling), moved across.
-        const glm::dvec2 t = o.texel * (originTexel / texel) + glm::dvec2(across.x, -across.y) / texel;
-        const float stored = m.texels.at(level, texelIndexOf(t.x), texelIndexOf(t.y), cursor);
-        if (stored == PageTexels::kMissingTexel) {
+        const Read now = readAt(h, level);
+        if (now.missing) {
             end.missing = true;
             return end;
         }
-        const bool empty = stored >= 1.0f;
-        const bool nowBehind = !empty && o.depth - h * m.depthPerM > double(stored);
-        const double step = glm::length(across - previousAcross);
-        if (behind && !nowBehind) {
-            // Out in front again: through the surface it was behind (hit), or past its edge.
-            const double extrapolated = previous + previousSlope * step;
-            const double tolerance = slopeLimit * (step + texel);
-            if (!empty && double(stored) <= extrapolated + tolerance) {
-                end.hit = true;
-                return end;
-            }
-            end.escaped = true;
+        DepthHistory::Crossing crossing;
+        if (previous.behind && !now.behind) {
+            // Out in front again: halved towards where (marking's boxes hold every point
+            // below a sample at its level: its drift is smaller).
+            Read lo = previous, hi = now;
+            refineCrossing(lo, hi, [&](const Read& a, const Read& b) { return readAt((a.h + b.h) / 2.0, b.level); },
+                           end.missing);
+            if (end.missing) return end;
+            if (lo.h != previous.h) feed(lo);
+            crossing = feed(hi);
+        } else {
+            crossing = feed(now);
         }
-        const bool emptyBefore = previous >= 1.0;
-        previousSlope = empty || emptyBefore || step <= 0.0
-                            ? 0.0
-                            : std::clamp((double(stored) - previous) / step, -slopeLimit, slopeLimit);
-        previous = stored, previousAcross = across, behind = nowBehind;
+        if (crossing == DepthHistory::Crossing::Hit) {
+            end.hit = true;
+            return end;
+        }
+        end.escaped |= crossing == DepthHistory::Crossing::Escaped;
+        previous = now;
     }
-    end.hit = behind;
+    end.hit = history.behind();
     return end;
 }
 
 }  // namespace
+
+DepthHistory::Crossing DepthHistory::next(double stored, bool empty, bool nowBehind, double step, double texel) {
+    Crossing crossing = Crossing::None;
+    if (behind_ && !nowBehind) {
+        // Out in front again: through the surface it was behind (hit), or past its edge.
+        const double extrapolated = previous_ + previousSlope_ * step;
+        const double tolerance = slopeLimit_ * (step + texel);
+        if (!empty && stored <= extrapolated + tolerance) return Crossing::Hit;
+        crossing = Crossing::Escaped;
+    }
+    previousSlope_ = empty || previousEmpty_ || step <= 0.0
+                         ? 0.0
+                         : std::clamp((stored - previous_) / step, -slopeLimit_, slopeLimit_);
+    previous_ = stored, previousEmpty_ = empty, behind_ = nowBehind;
+    return crossing;
+}
 
 RayReach smrtReach(const SmrtSettings& smrt, double halfAngle, const DepthRange& range) {
     // portable::tan, not libm's, whose bits depend on the CPU it dispatches to.
@@ -113,7 +148,7 @@ SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAng
         }
         const Origin origin{level, r.texel, r.depth, stored, !r.litByStored(stored, tx, ty)};
         // Directions stratified over the cone's disk (a shifted (0, 2)-sequence).
-        Pcg32 rng(kSeed, k);
+        Pcg32 rng(kSmrtSeed, k);
         const glm::dvec2 shift(rng.nextDouble(), rng.nextDouble());
         int hits = 0, escapes = 0;
         size_t reads = 0;
