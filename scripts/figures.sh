@@ -464,8 +464,7 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     finer="--param lod-bias=0,-1"
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
     scripts/suite_models.sh > /dev/null
-    # sphere-box's light is a disk: a virtual map without local lights draws shadow-map's frame
-    # there (the table says so by its held memory and empty page columns).
+    # sphere-box's light is a disk: the virtual map reads its six faces' mip chains.
     for scene in sphere-box assets/scenes/hard/sun.json assets/scenes/virtual/small-casters.json \
                  assets/scenes/suite/house.json assets/scenes/suite/grove.json assets/scenes/suite/dungeon.json; do
       name=$(basename $scene .json)
@@ -490,6 +489,21 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     python3 $table $v/soft/sun-disk-virtual-shadow-map+shadow-map.csv soft
     python3 $table $v/soft/rays/sun-disk-virtual-shadow-map.csv soft
     cp $v/soft/sun-disk-virtual-shadow-map+shadow-map.svg docs/images/virtual-soft-sun-disk.svg
+    # The same towards local area lights (soft/'s rectangle and disks, each at its own 640 x
+    # 400): the virtual map hard and with 4 and 16 rays beside shadow-map and PCSS, with the
+    # speed-against-error plot; then both maps' 3 x 3 PCF (the rays refuse a filter beside
+    # them). docs/virtual-shadow-maps.md, "Towards a local light's area".
+    for name in square-over-plane two-heights large-light branch-over-crate; do
+      scene=assets/scenes/soft/$name.json
+      $app sweep $scene --technique virtual-shadow-map,shadow-map,pcss --param smrt-rays=0,4,16 \
+        --reference reference-soft --threads 2 --runs 3 --warmup 1 --out $v/local-soft --plot-y rms > /dev/null
+      $app sweep $scene --technique virtual-shadow-map,shadow-map --param filter=grid \
+        --reference reference-soft --threads 2 --runs 3 --warmup 1 --out $v/local-soft/pcf > /dev/null
+      echo "$name, soft:"
+      python3 $table $v/local-soft/$name-virtual-shadow-map+shadow-map+pcss.csv soft
+      python3 $table $v/local-soft/pcf/$name-virtual-shadow-map+shadow-map.csv soft
+      cp $v/local-soft/$name-virtual-shadow-map+shadow-map+pcss.svg docs/images/virtual-soft-$name.svg
+    done
     fly="--technique $maps $grid --threads 2 --runs 3 --warmup 1"
     $app flythrough assets/scenes/flythrough/avenue.json $fly --out $v/fly > /dev/null
     $app flythrough assets/scenes/flythrough/sliding-sphere-still-sun.json $fly --out $v/fly > /dev/null

@@ -8,18 +8,11 @@ namespace shadowlab::vsm {
 LookupResult lookUpLocalPages(const GBuffer& g, const Light& light, const MipChain& chain, const BiasSettings& bias,
                               const PcfKernel& filter, const std::vector<PixelLevel>& levels, const PageTable& table,
                               const PagePool& pool) {
-    // Each level as the one map a receiver is mapped into (only its matrices are read).
-    std::vector<DepthMap> levelMaps(size_t(chain.levelCount()));
-    for (int l = 0; l < chain.levelCount(); ++l) {
-        DepthMap& map = levelMaps[size_t(l)];
-        map.size = chain.mipTexels(chain.mipOfLevel(l));
-        map.texelFromWorld = chain.texelFromWorld(l);
-        map.worldFromTexel = glm::inverse(map.texelFromWorld);
-    }
+    const std::vector<DepthMap> maps = levelMaps(chain);
     const PageTexels texels(chain.pageTexels, table, pool);
     const bool rotated = filter.settings.kind == FilterKind::Poisson;
     return lookUpEachPixel(g, light, levels, [&](size_t k, const PixelLevel& p, bool& missing) {
-        const DepthMap& map = levelMaps[size_t(p.level)];
+        const DepthMap& map = maps[size_t(p.level)];
         const MapReceiver r =
             mapReceiverFromPoint(map, glm::dvec3(g.position[k]), glm::dvec3(g.normal[k]), chain.apex, bias);
         PageTexels::Cursor cursor;

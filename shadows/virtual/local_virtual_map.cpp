@@ -7,6 +7,8 @@
 #include "shadows/stage_timer.h"
 #include "shadows/virtual/local_invalidation.h"
 #include "shadows/virtual/local_lookup.h"
+#include "shadows/virtual/local_ray_samples.h"
+#include "shadows/virtual/local_smrt.h"
 #include "shadows/virtual/local_marking.h"
 #include "shadows/virtual/page_invalidation.h"
 #include "shadows/virtual/local_page_rendering.h"
@@ -76,6 +78,8 @@ ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings&
     // 2. Marking: every mip's window is the whole mip.
     table.beginFrame(chain.windows());
     markLocalPages(in.gbuffer, in.camera(), in.light, chain, {s.lodBias, lookupReachTexels(s.bias, s.filter)}, table, state.levels);
+    const LocalRaySamples samples(chain, in.light, s.bias, s.smrt);
+    if (s.smrt.rays > 0) markLocalRayPages(in.gbuffer, samples, state.levels, table);
     timer.lap("marking");
     // 3. Memory, and the pages to render.
     const std::vector<PageKey> toRender = table.allocate();
@@ -88,17 +92,23 @@ ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings&
     for (const PageKey& key : toRender) table.markRendered(key);
     timer.lap("pages");
     // 5. The lookup.
-    LookupResult lookup = lookUpLocalPages(in.gbuffer, in.light, chain, s.bias, makePcfKernel(s.filter), state.levels,
-                                           table, state.pool);
+    SmrtResult rays;
+    if (s.smrt.rays > 0)
+        rays = traceLocalShadowMapRays(in.gbuffer, in.light, samples, s.smrt, state.levels, table, state.pool);
+    else
+        rays.lookup = lookUpLocalPages(in.gbuffer, in.light, chain, s.bias, makePcfKernel(s.filter), state.levels,
+                                       table, state.pool);
+    LookupResult& lookup = rays.lookup;
     timer.lap("lookup");
     ShadowOutputs out;
     out.visibility = std::move(lookup.visibility);
     addPageStats(out, table, toRender.size(), invalidated, lookup, state.pool);
     out.stats.push_back({"faces_count", double(chain.faceCount())});
     out.stats.push_back({"mips_count", double(chain.mipCount)});
+    if (s.smrt.rays > 0) out.stats.push_back({"smrt_missing_read_count", double(rays.missingReads)});
     timer.appendTo(out.stats);
     writeLocalVirtualDebug(DebugBuffers(in.debugDir, "virtual-shadow-map"), in.gbuffer, in.camera(), chain,
-                           state.levels, table, toRender, state.pool);
+                           state.levels, table, toRender, state.pool, rays.escapedRays);
     return out;
 }
 

@@ -7,7 +7,8 @@
 //   2. the pages the pixels mark (local_marking.h);
 //   3. memory for them and the list of those to render (page_table.h);
 //   4. those pages drawn (local_page_rendering.h);
-//   5. the lookup (local_lookup.h);
+//   5. the lookup (local_lookup.h), or shadow-map ray tracing towards the light's area
+//      (local_smrt.h), whose samples' pages step 2 marks too (local_ray_samples.h);
 //   6. on request, the buffers (virtual_debug.h).
 // The table, the pool and what the last frame saw are kept in the technique's history.
 #pragma once
@@ -16,6 +17,7 @@
 #include "shadows/maps/shadow_bias.h"
 #include "shadows/technique.h"
 #include "shadows/virtual/clipmap.h"
+#include "shadows/virtual/smrt.h"
 
 namespace shadowlab::vsm {
 
@@ -25,6 +27,7 @@ struct LocalMapSettings {
     int lodBias = 0;
     BiasSettings bias = {};
     FilterSettings filter = {};
+    SmrtSettings smrt = {};
 };
 
 ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings& s);

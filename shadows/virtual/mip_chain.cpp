@@ -66,10 +66,20 @@ PageView MipChain::pageView(const PageKey& key) const {
     return v;
 }
 
+std::vector<DepthMap> levelMaps(const MipChain& chain) {
+    std::vector<DepthMap> maps(size_t(chain.levelCount()));
+    for (int l = 0; l < chain.levelCount(); ++l) {
+        DepthMap& map = maps[size_t(l)];
+        map.size = chain.mipTexels(chain.mipOfLevel(l));
+        map.texelFromWorld = chain.texelFromWorld(l);
+        map.worldFromTexel = glm::inverse(map.texelFromWorld);
+    }
+    return maps;
+}
+
 int MipChain::faceHolding(const glm::dvec3& P) const {
     for (int f = 0; f < faceCount(); ++f) {
-        const glm::dvec3 q(faces[size_t(f)] * glm::dvec4(P, 1.0));
-        if (-q.z > 0.0 && std::abs(q.x) <= -q.z * tanHalf && std::abs(q.y) <= -q.z * tanHalf) return f;
+        if (pyramidHolds(glm::dvec3(faces[size_t(f)] * glm::dvec4(P, 1.0)))) return f;
     }
     return -1;
 }

@@ -19,6 +19,7 @@
 // gives memory to the coarse mips first. A mip's window is the whole mip, fixed.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -69,7 +70,15 @@ struct MipChain {
     PageView pageView(const PageKey& key) const;
     // The first face whose pyramid holds P (insideCubeFace's test for a cube face), or -1.
     int faceHolding(const glm::dvec3& P) const;
+    // Whether a face's pyramid holds q, a point in that face's view space.
+    bool pyramidHolds(const glm::dvec3& q) const {
+        return -q.z > 0.0 && std::abs(q.x) <= -q.z * tanHalf && std::abs(q.y) <= -q.z * tanHalf;
+    }
 };
+
+// Each level as the one map a receiver is mapped into (only its size and matrices set), by
+// level index (mip * faces + face).
+std::vector<DepthMap> levelMaps(const MipChain& chain);
 
 // The faces of `light` (spot or point; an area light's centre as a point, pointLightFor),
 // their mips, and a depth range holding `boxes`, the casters' instances' boxes (depthRangeAround).

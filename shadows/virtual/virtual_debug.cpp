@@ -88,7 +88,8 @@ void writePool(const DebugBuffers& debug, const PagePool& pool) {
 
 void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera, const MipChain& chain,
                             const std::vector<PixelLevel>& levels, const PageTable& table,
-                            const std::vector<PageKey>& rendered, const PagePool& pool) {
+                            const std::vector<PageKey>& rendered, const PagePool& pool,
+                            const std::vector<float>& escapedRays) {
     if (!debug.enabled()) return;
     std::vector<float> face(g.pixelCount(), -1.0f), mip(g.pixelCount(), -1.0f), texelsPerPixel(g.pixelCount(), 0.0f);
     const PixelFootprint footprint(camera);
@@ -112,6 +113,7 @@ void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const C
         debug.write(name, chain.pagesPerSide(0), rows, image, 0.0f, 1.0f);
     }
     writePool(debug, pool);
+    if (!escapedRays.empty()) debug.write("smrt-escaped", g.width, g.height, escapedRays, 0.0f, 1.0f);
 }
 
 void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera,

@@ -12,7 +12,8 @@
 //   smrt-escaped     with shadow-map ray tracing, per pixel the fraction of its rays that
 //                    went behind an occluder and escaped past its edge (smrt.h): where
 //                    the depth history made the inner penumbra
-// For a spot or point light's mip chains (mip_chain.h), in place of level and page-table:
+// For a spot or point light's mip chains (mip_chain.h), in place of level and page-table
+// (pool and smrt-escaped as above):
 //   face             per pixel, the face read (0..5: kCubeFaceNames, 0 for a spot; -1: none)
 //   mip              per pixel, the mip read (-1: none)
 //   texels-per-pixel per pixel, the mip's texels across the pixel's footprint
@@ -41,6 +42,7 @@ void writeVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera
                        const std::vector<float>& escapedRays);
 void writeLocalVirtualDebug(const DebugBuffers& debug, const GBuffer& g, const Camera& camera, const MipChain& chain,
                             const std::vector<PixelLevel>& levels, const PageTable& table,
-                            const std::vector<PageKey>& rendered, const PagePool& pool);
+                            const std::vector<PageKey>& rendered, const PagePool& pool,
+                            const std::vector<float>& escapedRays);
 
 }  // namespace shadowlab::vsm

@@ -60,7 +60,7 @@ const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
             .include(member(&S::bias), biasSettingsTable())
             .include(member(&S::filter), filterSettingsTable())
             .integer("smrt-rays", member(&S::smrt, &SmrtSettings::rays), 0, 256,
-                     "shadow-map ray tracing: rays per pixel towards the sun's disk; 0: the lookup above")
+                     "shadow-map ray tracing: rays per pixel towards the sun's disk or the light's area; 0: the lookup above")
             .integer("smrt-steps", member(&S::smrt, &SmrtSettings::steps), 1, 64, "shadow-map ray tracing: samples per ray")
             .real("smrt-reach", member(&S::smrt, &SmrtSettings::reachTexels), 0.5, 64.0,
                   "shadow-map ray tracing: texels a ray drifts across a level before reading a coarser one")
@@ -108,13 +108,12 @@ int prepareState(VirtualMapState& state, const VirtualMapSettings& s, const glm:
 ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     const VirtualMapSettings s = virtualMapSettingsTable().read(in.params);
     checkClipmapSettings(s.clipmap);
+    // The rays replace the lookup, filter and all: a filter beside them would go unread.
+    if (s.smrt.rays > 0 && s.filter.kind != FilterKind::Nearest)
+        throw std::invalid_argument(std::string(kVirtualMapName) +
+                                    ": smrt-rays replaces the lookup's filter; give filter=nearest (the default) with it");
     if (in.light.type != LightType::Directional) {
-        // Shadow-map ray tracing marches a sun's cone through the clipmap (smrt.h); a local
-        // light's faces are read hard or filtered.
-        if (s.smrt.rays > 0)
-            throw std::invalid_argument("virtual-shadow-map: smrt-rays traces a sun's cone; a spot, point or area "
-                                        "light takes filter (PCF) instead");
-        return runLocalVirtualMap(in, {s.clipmap, s.poolPages, s.lodBias, s.bias, s.filter});
+        return runLocalVirtualMap(in, {s.clipmap, s.poolPages, s.lodBias, s.bias, s.filter, s.smrt});
     }
     if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);
     StageTimer timer;

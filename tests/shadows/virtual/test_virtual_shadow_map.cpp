@@ -138,6 +138,9 @@ TEST_CASE("virtual-shadow-map: settings it cannot take are refused by name, and 
                          doctest::Contains("levels must satisfy"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(sun.run("virtual-shadow-map", {{"page-texels", "8"}}), doctest::Contains("page-texels"),
                          std::invalid_argument);
+    // The rays replace the lookup: a filter beside them would go unread.
+    CHECK_THROWS_WITH_AS(sun.run("virtual-shadow-map", {{"smrt-rays", "4"}, {"filter", "grid"}}),
+                         doctest::Contains("smrt-rays replaces the lookup's filter"), std::invalid_argument);
     CHECK(test::stat(sun.run("virtual-shadow-map"), "virtual_map_flag") == 1.0);
     Scene diskScene = loadScene("sphere-box");
     diskScene.camera.width = 64, diskScene.camera.height = 40;
