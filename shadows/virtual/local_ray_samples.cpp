@@ -86,8 +86,8 @@ LocalRaySample LocalRaySamples::sampleOf(double t, const glm::dvec3& fromApex, c
 }
 
 LocalRaySample LocalRaySamples::pointOf(const Ray& ray, double t, int face, int mip) const {
-    return sampleOf(t, ray.fromApex + t * ray.towardsLight, ray.viewOrigin[size_t(face)] + t * ray.viewStep[size_t(face)],
-                    face, mip);
+    const glm::dvec3 q = ray.viewOrigin[size_t(face)] + t * ray.viewStep[size_t(face)];
+    return sampleOf(t, ray.fromApex + t * ray.towardsLight, q, face, mip);
 }
 
 bool LocalRaySamples::sampleAt(Ray& ray, int k, LocalRaySample& out) const {

@@ -13,7 +13,7 @@ struct AxisDistance {
 };
 
 // A sample and what its texel holds.
-struct Read {
+struct LocalRead {
     LocalRaySample sample;
     float stored = 0.0f;
     bool missing = false, empty = false, behind = false;
@@ -21,8 +21,8 @@ struct Read {
     double texelM = 0.0;           // the texel's side there, m
 };
 
-Read readAt(const PageTexels& texels, PageTexels::Cursor& cursor, const AxisDistance& axis, const LocalRaySample& s) {
-    Read r{s, texels.at(s.level, s.x, s.y, cursor)};
+LocalRead readAt(const PageTexels& texels, PageTexels::Cursor& cursor, const AxisDistance& axis, const LocalRaySample& s) {
+    LocalRead r{s, texels.at(s.level, s.x, s.y, cursor)};
     r.missing = r.stored == PageTexels::kMissingTexel;
     r.empty = r.stored >= 1.0f;
     if (r.missing || r.empty) return r;
@@ -36,9 +36,9 @@ Read readAt(const PageTexels& texels, PageTexels::Cursor& cursor, const AxisDist
 // One ray's depth history over the reads it is fed.
 class RayHistory {
 public:
-    RayHistory(double maxSlope, const Read& origin)
+    RayHistory(double maxSlope, const LocalRead& origin)
         : history_(maxSlope, origin.storedDistance, origin.empty, origin.behind), last_(origin) {}
-    DepthHistory::Crossing feed(const Read& r) {
+    DepthHistory::Crossing feed(const LocalRead& r) {
         // The step across, as a chord between the two beams at the surface the ray was last
         // behind or beside (the sample's own distance where that texel is empty).
         const double at = last_.empty ? last_.sample.distance : last_.storedDistance;
@@ -50,11 +50,7 @@ public:
 
 private:
     DepthHistory history_;
-    Read last_;
-};
-
-struct RayEnd {
-    bool hit = false, escaped = false, missing = false;
+    LocalRead last_;
 };
 
 }  // namespace
@@ -70,7 +66,7 @@ SmrtResult traceLocalShadowMapRays(const GBuffer& g, const Light& light, const L
     out.lookup = lookUpEachPixel(g, light, levels, [&](size_t k, const PixelLevel& p, bool& missing) {
         const MapReceiver r = samples.receiver(p, g.position[k], g.normal[k]);
         PageTexels::Cursor cursor;
-        Read origin = readAt(texels, cursor, axis, samples.originOf(p, r));
+        LocalRead origin = readAt(texels, cursor, axis, samples.originOf(p, r));
         if (origin.missing) {
             missing = true;
             return 1.0f;
@@ -80,10 +76,10 @@ SmrtResult traceLocalShadowMapRays(const GBuffer& g, const Light& light, const L
         size_t reads = 0;
         samples.forEachRay(k, p, r, [&](LocalRaySamples::RayWalk& ray) {
             RayHistory history(smrt.maxSlope, origin);
-            Read previous = origin;
+            LocalRead previous = origin;
             RayEnd end;
             ray.walk([&](const LocalRaySample& s) {
-                const Read now = readAt(texels, cursor, axis, s);
+                const LocalRead now = readAt(texels, cursor, axis, s);
                 DepthHistory::Crossing crossing;
                 if (now.missing) {
                     end.missing = true;
@@ -92,13 +88,11 @@ SmrtResult traceLocalShadowMapRays(const GBuffer& g, const Light& light, const L
                 if (previous.behind && !now.behind && refinable(previous.sample, s)) {
                     // Out in front again: halved towards where (the pages between the two
                     // are marked: pagesBetween).
-                    Read lo = previous, hi = now;
-                    refineCrossing(
-                        lo, hi,
-                        [&](const Read& a, const Read& b) {
-                            return readAt(texels, cursor, axis, ray.between(a.sample, b.sample));
-                        },
-                        end.missing);
+                    LocalRead lo = previous, hi = now;
+                    const auto halfway = [&](const LocalRead& a, const LocalRead& b) {
+                        return readAt(texels, cursor, axis, ray.between(a.sample, b.sample));
+                    };
+                    refineCrossing(smrt.refinements, lo, hi, halfway, end.missing);
                     if (end.missing) return false;
                     if (lo.sample.t != previous.sample.t) history.feed(lo);
                     crossing = history.feed(hi);

@@ -30,12 +30,8 @@ struct Origin {
     bool behind;
 };
 
-struct RayEnd {
-    bool hit = false, escaped = false, missing = false;
-};
-
 // A sample `h` m up a ray and what its texel holds.
-struct Read {
+struct SunRead {
     double h = 0.0;
     int level = 0;
     glm::dvec2 across{0.0};   // m across the beam from the receiver
@@ -51,7 +47,7 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
     const double originTexel = m.texelM[size_t(o.level - m.clipmap.firstLevel)];
     PageTexels::Cursor cursor;
     const auto readAt = [&](double h, int level) {
-        Read r{h, level, slope * h, m.texelM[size_t(level - m.clipmap.firstLevel)]};
+        SunRead r{h, level, slope * h, m.texelM[size_t(level - m.clipmap.firstLevel)]};
         // The receiver's texel at this level (an exact power-of-two scaling), moved across.
         const glm::dvec2 t = o.texel * (originTexel / r.texel) + glm::dvec2(r.across.x, -r.across.y) / r.texel;
         r.stored = m.texels.at(level, texelIndexOf(t.x), texelIndexOf(t.y), cursor);
@@ -61,9 +57,9 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
         return r;
     };
     DepthHistory history(m.smrt.maxSlope * m.depthPerM, o.stored, o.stored >= 1.0f, o.behind);
-    Read previous{0.0, o.level, glm::dvec2(0.0), originTexel, o.stored, false, o.stored >= 1.0f, o.behind};
-    Read fed = previous;   // the last read the history saw
-    const auto feed = [&](const Read& r) {
+    SunRead previous{0.0, o.level, glm::dvec2(0.0), originTexel, o.stored, false, o.stored >= 1.0f, o.behind};
+    SunRead fed = previous;   // the last read the history saw
+    const auto feed = [&](const SunRead& r) {
         const double step = glm::length(r.across - fed.across);
         fed = r;
         return history.next(r.stored, r.empty, r.behind, step, r.texel);
@@ -73,7 +69,7 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
     for (int k = 0; k < m.smrt.steps; ++k) {
         const double s = (k + xi) / m.smrt.steps, h = height * s * s;
         level = rayLevel(m.clipmap, level, h, m.reach);   // from the last sample's: h only grows
-        const Read now = readAt(h, level);
+        const SunRead now = readAt(h, level);
         if (now.missing) {
             end.missing = true;
             return end;
@@ -82,9 +78,9 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
         if (previous.behind && !now.behind) {
             // Out in front again: halved towards where (marking's boxes hold every point
             // below a sample at its level: its drift is smaller).
-            Read lo = previous, hi = now;
-            refineCrossing(lo, hi, [&](const Read& a, const Read& b) { return readAt((a.h + b.h) / 2.0, b.level); },
-                           end.missing);
+            SunRead lo = previous, hi = now;
+            const auto halfway = [&](const SunRead& a, const SunRead& b) { return readAt((a.h + b.h) / 2.0, b.level); };
+            refineCrossing(m.smrt.refinements, lo, hi, halfway, end.missing);
             if (end.missing) return end;
             if (lo.h != previous.h) feed(lo);
             crossing = feed(hi);

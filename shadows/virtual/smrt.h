@@ -47,9 +47,11 @@ struct SmrtSettings {
     // lets rays escape through an occluder's own curve (light leaks), too loose keeps them
     // from escaping past its edge (no inner penumbra). With crossings refined
     // (refineCrossing), 8 had the least RMS summed over soft/'s ten cases with 16 rays at
-    // 160 x 100 (0.331; 16: 0.338, 32: 0.39, 4: within 0.01 but more on large-light;
-    // docs/virtual-shadow-maps.md).
+    // 160 x 100 (0.351; 4: 0.355, 16: 0.358, 32: 0.429; docs/virtual-shadow-maps.md).
     double maxSlope = 8.0;
+    // Halvings of a crossing's step (refineCrossing): 4 find where the ray came out within
+    // 1/16 of the step; 0 judges the samples as they fall.
+    int refinements = 4;
 };
 
 // One ray's depth history (the header's comment): whether a sample that comes out in front
@@ -76,18 +78,22 @@ private:
     bool previousEmpty_, behind_;
 };
 
-// Where a ray comes out in front between a sample behind the stored surface (lo) and the
-// next in front (hi), their step is halved this many times, keeping the last sample behind
-// and the first in front: the pair the depth history then judges lies within 1/16 of the
-// step of where the ray came out, where the stored depths on either side tell an occluder's
-// surface (continuous) from its edge (a jump), however far apart the samples were.
-inline constexpr int kCrossingRefinements = 4;
+// How one ray ended: hit, escaped past an occluder's edge on the way, or stopped by a read
+// without memory.
+struct RayEnd {
+    bool hit = false, escaped = false, missing = false;
+};
 
-// between(lo, hi): the read halfway; Read has `missing` (no page: the refinement stops and
-// sets `missing`) and `behind`.
+// Where a ray comes out in front between a sample behind the stored surface (lo) and the
+// next in front (hi), their step is halved `refinements` times, keeping the last point
+// behind and the first in front: the pair the depth history then judges lies within
+// 2^-refinements of the step of where the ray came out, where the stored depths on either
+// side tell an occluder's surface (continuous) from its edge (a jump), however far apart the
+// samples were. between(lo, hi): the read halfway; Read has `missing` (no page: the
+// refinement stops and sets `missing`) and `behind`.
 template <class Read, class Between>
-void refineCrossing(Read& lo, Read& hi, const Between& between, bool& missing) {
-    for (int i = 0; i < kCrossingRefinements; ++i) {
+void refineCrossing(int refinements, Read& lo, Read& hi, const Between& between, bool& missing) {
+    for (int i = 0; i < refinements; ++i) {
         const Read mid = between(lo, hi);
         if (mid.missing) {
             missing = true;

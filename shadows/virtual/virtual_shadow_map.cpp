@@ -65,7 +65,9 @@ const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
             .real("smrt-reach", member(&S::smrt, &SmrtSettings::reachTexels), 0.5, 64.0,
                   "shadow-map ray tracing: texels a ray drifts across a level before reading a coarser one")
             .real("smrt-max-slope", member(&S::smrt, &SmrtSettings::maxSlope), 0.0, 1000.0,
-                  "shadow-map ray tracing: the depth history's slope bound, m along the beam per m across");
+                  "shadow-map ray tracing: the depth history's slope bound, m along the beam per m across")
+            .integer("smrt-refinements", member(&S::smrt, &SmrtSettings::refinements), 0, 16,
+                     "shadow-map ray tracing: halvings of the step where a ray comes out in front of the map");
     return table;
 }
 
