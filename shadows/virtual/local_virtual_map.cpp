@@ -78,8 +78,11 @@ ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings&
     // 2. Marking: every mip's window is the whole mip.
     table.beginFrame(chain.windows());
     markLocalPages(in.gbuffer, in.camera(), in.light, chain, {s.lodBias, lookupReachTexels(s.bias, s.filter)}, table, state.levels);
-    const LocalRaySamples samples(chain, in.light, s.bias, s.smrt);
-    if (s.smrt.rays > 0) markLocalRayPages(in.gbuffer, samples, state.levels, table);
+    std::optional<LocalRaySamples> samples;   // the rays' samples, where there are rays
+    if (s.smrt.rays > 0) {
+        samples.emplace(chain, in.light, s.bias, s.smrt);
+        markLocalRayPages(in.gbuffer, *samples, state.levels, table);
+    }
     timer.lap("marking");
     // 3. Memory, and the pages to render.
     const std::vector<PageKey> toRender = table.allocate();
@@ -93,8 +96,8 @@ ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings&
     timer.lap("pages");
     // 5. The lookup.
     SmrtResult rays;
-    if (s.smrt.rays > 0)
-        rays = traceLocalShadowMapRays(in.gbuffer, in.light, samples, s.smrt, state.levels, table, state.pool);
+    if (samples)
+        rays = traceLocalShadowMapRays(in.gbuffer, in.light, *samples, s.smrt, state.levels, table, state.pool);
     else
         rays.lookup = lookUpLocalPages(in.gbuffer, in.light, chain, s.bias, makePcfKernel(s.filter), state.levels,
                                        table, state.pool);
