@@ -49,16 +49,24 @@ LocalRaySamples::Ray LocalRaySamples::rayOf(const glm::dvec3& origin, const glm:
     const double distance = glm::length(ray.fromApex);
     ray.originBeam = distance > 0.0 ? ray.fromApex / distance : glm::dvec3(0.0);
     ray.xi = xi, ray.mip = chain_.mipOfLevel(level);
-    // t_top: the ray is nearer than zNear along face f's axis from t_f on (never, t_f = 1,
-    // where L itself is not), so along every face's from the largest t_f.
+    // t_top: where the ray enters the region nearer than zNear along every face's axis (an
+    // intersection of half-spaces, so [enter, leave] along the ray); one that never enters it
+    // runs to L.
     const double zNear = chain_.range.zNear;
-    double tTop = 0.0;
+    double enter = 0.0, leave = 1.0;
     for (size_t f = 0; f < chain_.faces.size(); ++f) {
         ray.viewOrigin[f] = glm::dvec3(chain_.faces[f] * glm::dvec4(origin, 1.0));
         ray.viewStep[f] = glm::dvec3(chain_.faces[f] * glm::dvec4(ray.towardsLight, 0.0));
         const double a = -ray.viewOrigin[f].z, b = a - ray.viewStep[f].z;
-        tTop = std::max(tTop, a <= zNear ? 0.0 : b >= zNear ? 1.0 : (a - zNear) / (a - b));
+        if (a > zNear && b > zNear) enter = 1.0;   // never nearer along this axis
+        if ((a > zNear) == (b > zNear)) continue;
+        const double crossing = (a - zNear) / (a - b);
+        if (a > b)
+            enter = std::max(enter, crossing);
+        else
+            leave = std::min(leave, crossing);
     }
+    const double tTop = enter < leave ? enter : 1.0;
     const size_t face = size_t(chain_.faceOfLevel(level));
     ray.along = -ray.viewOrigin[face].z;
     ray.alongLight = std::max(ray.along - ray.viewStep[face].z, 2.0 * zNear);

@@ -6,18 +6,19 @@
 // Each pixel sends `rays` rays from its receiver (the hard lookup's, with its bias, as a
 // world point) to points of the light (stratified over a disk's or a rectangle's area by a
 // shifted (0, 2)-sequence, light_sampling.h, as reference-soft samples it; the apex itself
-// for a point or spot light), jittered per pixel by a PCG32 stream of its index. A ray
-// P -> L stops where no caster can be: at t_top, the first t at which P + t (L - P) lies
+// for a point or spot light, one ray), jittered per pixel by a PCG32 stream of its index. A
+// ray P -> L stops where no caster can be: at t_top, where P + t (L - P) enters the region
 // nearer the apex than the depth range's near plane along every face's axis (so along the
-// axis of the face that would hold it). A point of the ray moves across the map as
-// sigma(t) = t a / ((1 - t) a + t b), a and b P's and L's distances along the axis of P's
-// face (the projection divides by the distance along the axis): sample k sits at
-// sigma_k = sigma(t_top) ((k + xi) / steps)^2, so that, as the sun's rays climb, the samples
-// move across the map in steps that grow from the receiver, where a perspective map would
-// otherwise see the last steps near the light leap over an occluder's whole face. b is taken
-// as at least 2 zNear, about the nearest caster's distance (depthRangeAround puts zNear at
-// half of it): nearer the light no occluder needs finer steps, and sigma stays finite for
-// a light wider than zNear. (Against t = t_top s^2 and against b >= zNear / 2, it had the
+// axis of the face that would hold it); a ray that never enters it runs to L. A point of
+// the ray moves across the map in proportion to sigma(t) = t a / ((1 - t) a + t b), a and
+// b P's and L's distances along the axis of P's face (the projection divides by the
+// distance along the axis): sample k sits at sigma_k = sigma(t_top) ((k + xi) / steps)^2,
+// so that, as the sun's rays climb, the samples move across the map in steps that grow
+// from the receiver, where a perspective map would otherwise see the last steps near the
+// light leap over an occluder's whole face. b is taken as at least 2 zNear,
+// depthRangeAround's lower bound on any caster's distance along a face's axis (zNear is
+// half of it): nearer the light no occluder needs finer steps, and sigma stays finite for a
+// light wider than zNear. (Against t = t_top s^2 and against b >= zNear / 2, it had the
 // least RMS on soft/'s cases but one, within 0.0015 of the best there; 16 rays, 160 x 100.)
 //
 // A sample reads its texel in the face that holds it (faceHolding; a sample in no face ends
@@ -111,13 +112,18 @@ public:
         Ray ray_;
     };
 
-    // onRay(walk) for each ray of pixel k, in order; `r` is receiver()'s at level p.level.
+    // onRay(walk) for each ray of pixel k, in order; `r` is receiver()'s at level p.level. A
+    // point or spot light gets one ray (all would follow one beam); a receiver that its bias
+    // took to or behind the light's plane facing its face, none.
     template <class OnRay>
     void forEachRay(size_t k, const PixelLevel& p, const MapReceiver& r, const OnRay& onRay) const {
+        const glm::dvec3 origin = originPoint(p, r);
+        const glm::dmat4& face = chain_.faces[size_t(chain_.faceOfLevel(p.level))];
+        if (!(-(face * glm::dvec4(origin, 1.0)).z > 0.0)) return;
         Pcg32 rng(kSmrtSeed, k);
         const glm::dvec2 shift(rng.nextDouble(), rng.nextDouble());
-        const glm::dvec3 origin = originPoint(p, r);
-        for (int ray = 0; ray < smrt_.rays; ++ray) {
+        const int rays = area_ ? smrt_.rays : 1;
+        for (int ray = 0; ray < rays; ++ray) {
             RayWalk walk(*this, rayOf(origin, lightPoint(shiftedSobol02(uint32_t(ray), shift)),
                                       p.level, rng.nextDouble()));
             onRay(walk);

@@ -21,17 +21,24 @@ struct LocalRead {
     double texelM = 0.0;           // the texel's side there, m
 };
 
-LocalRead readAt(const PageTexels& texels, PageTexels::Cursor& cursor, const AxisDistance& axis, const LocalRaySample& s) {
-    LocalRead r{s, texels.at(s.level, s.x, s.y, cursor)};
-    r.missing = r.stored == PageTexels::kMissingTexel;
-    r.empty = r.stored >= 1.0f;
-    if (r.missing || r.empty) return r;
-    r.behind = s.depth > double(r.stored);
-    const double storedAlong = axis(r.stored);
-    r.storedDistance = s.distance * storedAlong / s.along;
-    r.texelM = s.texelM * storedAlong / s.along;
-    return r;
-}
+// What tracing every ray shares.
+struct Tracer {
+    const PageTexels& texels;
+    AxisDistance axis;
+    const SmrtSettings& smrt;
+
+    LocalRead read(PageTexels::Cursor& cursor, const LocalRaySample& s) const {
+        LocalRead r{s, texels.at(s.level, s.x, s.y, cursor)};
+        r.missing = r.stored == PageTexels::kMissingTexel;
+        r.empty = r.stored >= 1.0f;
+        if (r.missing || r.empty) return r;
+        r.behind = s.depth > double(r.stored);
+        const double storedAlong = axis(r.stored);
+        r.storedDistance = s.distance * storedAlong / s.along;
+        r.texelM = s.texelM * storedAlong / s.along;
+        return r;
+    }
+};
 
 // One ray's depth history over the reads it is fed.
 class RayHistory {
@@ -53,6 +60,32 @@ private:
     LocalRead last_;
 };
 
+// One ray from `origin` along its walk's samples.
+RayEnd traceRay(const Tracer& t, LocalRaySamples::RayWalk& ray, const LocalRead& origin) {
+    RayHistory history(t.smrt.maxSlope, origin);
+    PageTexels::Cursor cursor;
+    const auto feed = [&](const LocalRead& r) { return history.feed(r); };
+    // Halvings between two samples of one face: pagesBetween marked the pages between them.
+    const auto halfway = [&](const LocalRead& a, const LocalRead& b) {
+        return t.read(cursor, ray.between(a.sample, b.sample));
+    };
+    LocalRead previous = origin;
+    RayEnd end;
+    ray.walk([&](const LocalRaySample& s) {
+        const LocalRead now = t.read(cursor, s);
+        const DepthHistory::Crossing crossing =
+            now.missing ? DepthHistory::Crossing::None
+                        : judgeStep(t.smrt.refinements, previous, now, refinable(previous.sample, s), halfway, feed,
+                                    end.missing);
+        end.missing |= now.missing;
+        previous = now;
+        return !end.missing && end.goesOn(crossing);
+    });
+    // A ray still behind at its last sample (or where it left every face) is hit.
+    end.hit |= !end.missing && history.behind();
+    return end;
+}
+
 }  // namespace
 
 SmrtResult traceLocalShadowMapRays(const GBuffer& g, const Light& light, const LocalRaySamples& samples,
@@ -60,58 +93,26 @@ SmrtResult traceLocalShadowMapRays(const GBuffer& g, const Light& light, const L
                                    const PageTable& table, const PagePool& pool) {
     const MipChain& chain = samples.chain();
     const PageTexels texels(chain.pageTexels, table, pool);
-    const AxisDistance axis{chain.range.zNear, chain.range.zFar};
+    const Tracer tracer{texels, {chain.range.zNear, chain.range.zFar}, smrt};
     SmrtResult out{{}, std::vector<float>(g.pixelCount(), 0.0f)};
     std::atomic<size_t> missingReads = 0;   // a sum: the same for any thread count
     out.lookup = lookUpEachPixel(g, light, levels, [&](size_t k, const PixelLevel& p, bool& missing) {
         const MapReceiver r = samples.receiver(p, g.position[k], g.normal[k]);
         PageTexels::Cursor cursor;
-        LocalRead origin = readAt(texels, cursor, axis, samples.originOf(p, r));
+        LocalRead origin = tracer.read(cursor, samples.originOf(p, r));
         if (origin.missing) {
             missing = true;
             return 1.0f;
         }
         origin.behind = !r.litByStored(origin.stored, origin.sample.x, origin.sample.y);   // the hard lookup's
-        int hits = 0, escapes = 0;
-        size_t reads = 0;
-        samples.forEachRay(k, p, r, [&](LocalRaySamples::RayWalk& ray) {
-            RayHistory history(smrt.maxSlope, origin);
-            LocalRead previous = origin;
-            RayEnd end;
-            ray.walk([&](const LocalRaySample& s) {
-                const LocalRead now = readAt(texels, cursor, axis, s);
-                DepthHistory::Crossing crossing;
-                if (now.missing) {
-                    end.missing = true;
-                    return false;
-                }
-                if (previous.behind && !now.behind && refinable(previous.sample, s)) {
-                    // Out in front again: halved towards where (the pages between the two
-                    // are marked: pagesBetween).
-                    LocalRead lo = previous, hi = now;
-                    const auto halfway = [&](const LocalRead& a, const LocalRead& b) {
-                        return readAt(texels, cursor, axis, ray.between(a.sample, b.sample));
-                    };
-                    refineCrossing(smrt.refinements, lo, hi, halfway, end.missing);
-                    if (end.missing) return false;
-                    if (lo.sample.t != previous.sample.t) history.feed(lo);
-                    crossing = history.feed(hi);
-                } else {
-                    crossing = history.feed(now);
-                }
-                previous = now;
-                end.hit = crossing == DepthHistory::Crossing::Hit;
-                end.escaped |= crossing == DepthHistory::Crossing::Escaped;
-                return !end.hit;
-            });
-            // A ray still behind at its last sample (or where it left every face) is hit.
-            end.hit |= !end.missing && history.behind();
-            hits += end.hit, escapes += end.escaped, missing |= end.missing;
-            reads += end.missing;
-        });
-        if (reads) missingReads += reads;
-        out.escapedRays[k] = float(double(escapes) / double(smrt.rays));
-        return float(double(smrt.rays - hits) / double(smrt.rays));
+        RayTally tally;
+        samples.forEachRay(k, p, r, [&](LocalRaySamples::RayWalk& ray) { tally.add(traceRay(tracer, ray, origin)); });
+        // A receiver whose bias took it behind the light sends none: the hard lookup's answer.
+        if (tally.rays == 0) return origin.behind ? 0.0f : 1.0f;
+        missing |= tally.missing > 0;
+        if (tally.missing) missingReads += size_t(tally.missing);
+        out.escapedRays[k] = tally.escapedFraction();
+        return tally.visibility();
     });
     out.missingReads = missingReads;
     return out;

@@ -64,34 +64,20 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
         fed = r;
         return history.next(r.stored, r.empty, r.behind, step, r.texel);
     };
+    const auto halfway = [&](const SunRead& a, const SunRead& b) { return readAt((a.h + b.h) / 2.0, b.level); };
     RayEnd end;
     int level = o.level;
     for (int k = 0; k < m.smrt.steps; ++k) {
         const double s = (k + xi) / m.smrt.steps, h = height * s * s;
         level = rayLevel(m.clipmap, level, h, m.reach);   // from the last sample's: h only grows
         const SunRead now = readAt(h, level);
-        if (now.missing) {
-            end.missing = true;
-            return end;
-        }
-        DepthHistory::Crossing crossing;
-        if (previous.behind && !now.behind) {
-            // Out in front again: halved towards where (marking's boxes hold every point
-            // below a sample at its level: its drift is smaller).
-            SunRead lo = previous, hi = now;
-            const auto halfway = [&](const SunRead& a, const SunRead& b) { return readAt((a.h + b.h) / 2.0, b.level); };
-            refineCrossing(m.smrt.refinements, lo, hi, halfway, end.missing);
-            if (end.missing) return end;
-            if (lo.h != previous.h) feed(lo);
-            crossing = feed(hi);
-        } else {
-            crossing = feed(now);
-        }
-        if (crossing == DepthHistory::Crossing::Hit) {
-            end.hit = true;
-            return end;
-        }
-        end.escaped |= crossing == DepthHistory::Crossing::Escaped;
+        // Halvings read at the later sample's level, whose marked box holds every point
+        // below it (its drift is smaller).
+        const DepthHistory::Crossing crossing =
+            now.missing ? DepthHistory::Crossing::None
+                        : judgeStep(m.smrt.refinements, previous, now, true, halfway, feed, end.missing);
+        end.missing |= now.missing;
+        if (end.missing || !end.goesOn(crossing)) return end;
         previous = now;
     }
     end.hit = history.behind();
@@ -146,17 +132,17 @@ SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAng
         // Directions stratified over the cone's disk (a shifted (0, 2)-sequence).
         Pcg32 rng(kSmrtSeed, k);
         const glm::dvec2 shift(rng.nextDouble(), rng.nextDouble());
-        int hits = 0, escapes = 0;
-        size_t reads = 0;
-        for (int ray = 0; ray < smrt.rays; ++ray) {
+        // A point-like sun's rays would all run along the beam: one is enough.
+        const int rays = marcher.reach.tanHalfAngle > 0.0 ? smrt.rays : 1;
+        RayTally tally;
+        for (int ray = 0; ray < rays; ++ray) {
             const glm::dvec2 disk = concentricSquareToDisk(shiftedSobol02(uint32_t(ray), shift));
-            const RayEnd end = marchRay(marcher, origin, marcher.reach.tanHalfAngle * disk, rng.nextDouble());
-            hits += end.hit, escapes += end.escaped, missing |= end.missing;
-            reads += end.missing;
+            tally.add(marchRay(marcher, origin, marcher.reach.tanHalfAngle * disk, rng.nextDouble()));
         }
-        if (reads) missingReads += reads;
-        out.escapedRays[k] = float(double(escapes) / double(smrt.rays));
-        return float(double(smrt.rays - hits) / double(smrt.rays));
+        missing |= tally.missing > 0;
+        if (tally.missing) missingReads += size_t(tally.missing);
+        out.escapedRays[k] = tally.escapedFraction();
+        return tally.visibility();
     });
     out.missingReads = missingReads;
     return out;

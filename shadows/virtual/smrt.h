@@ -82,6 +82,12 @@ private:
 // without memory.
 struct RayEnd {
     bool hit = false, escaped = false, missing = false;
+    // Records a crossing the history judged; whether the ray goes on (it ends at a hit).
+    bool goesOn(DepthHistory::Crossing crossing) {
+        hit = crossing == DepthHistory::Crossing::Hit;
+        escaped |= crossing == DepthHistory::Crossing::Escaped;
+        return !hit;
+    }
 };
 
 // Where a ray comes out in front between a sample behind the stored surface (lo) and the
@@ -90,18 +96,44 @@ struct RayEnd {
 // 2^-refinements of the step of where the ray came out, where the stored depths on either
 // side tell an occluder's surface (continuous) from its edge (a jump), however far apart the
 // samples were. between(lo, hi): the read halfway; Read has `missing` (no page: the
-// refinement stops and sets `missing`) and `behind`.
+// refinement stops and sets `missing`) and `behind`. Returns whether lo moved.
 template <class Read, class Between>
-void refineCrossing(int refinements, Read& lo, Read& hi, const Between& between, bool& missing) {
+bool refineCrossing(int refinements, Read& lo, Read& hi, const Between& between, bool& missing) {
+    bool moved = false;
     for (int i = 0; i < refinements; ++i) {
         const Read mid = between(lo, hi);
         if (mid.missing) {
             missing = true;
-            return;
+            return moved;
         }
+        moved |= mid.behind;
         (mid.behind ? lo : hi) = mid;
     }
+    return moved;
 }
+
+// The history's judgement of a ray's step from `previous` to `now`: feed(read) passes a read
+// to the history and returns its Crossing. Where the ray came out in front (and the step is
+// `refinable`), refineCrossing's last point behind (if it moved) and first in front are fed
+// instead of `now`. A read without memory sets `missing` and judges nothing.
+template <class Read, class Between, class Feed>
+DepthHistory::Crossing judgeStep(int refinements, const Read& previous, const Read& now, bool refinable,
+                                 const Between& between, const Feed& feed, bool& missing) {
+    if (!previous.behind || now.behind || !refinable) return feed(now);
+    Read lo = previous, hi = now;
+    const bool moved = refineCrossing(refinements, lo, hi, between, missing);
+    if (missing) return DepthHistory::Crossing::None;
+    if (moved) feed(lo);
+    return feed(hi);
+}
+
+// One pixel's rays, tallied: V is the fraction not hit.
+struct RayTally {
+    int rays = 0, hits = 0, escapes = 0, missing = 0;
+    void add(const RayEnd& end) { ++rays, hits += end.hit, escapes += end.escaped, missing += end.missing; }
+    float visibility() const { return float(double(rays - hits) / double(rays)); }
+    float escapedFraction() const { return float(double(escapes) / double(rays)); }
+};
 
 struct SmrtResult {
     LookupResult lookup;
