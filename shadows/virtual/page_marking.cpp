@@ -52,20 +52,21 @@ void requestBox(PageTable& table, int level, const PageBox& box) {
         for (int32_t px = box.x0; px <= box.x1; ++px) table.request({level, px, py});
 }
 
-// The pages a pixel's rays read (RayReach), at every level from its own to the one its
-// highest sample reads; a level whose window does not hold the box is left out, and the
-// rays count what they miss there.
+// The pages a pixel's rays read (RayReach): at every level from its own to the one its
+// highest sample reads whose window holds the box, and, where the last of those does not,
+// at the coarser one the rays then read (heldRayLevel).
 void markRays(PageTable& table, const ClipmapSettings& clipmap, const MarkingSettings& settings, int level,
               const glm::dvec3& local) {
-    const double reach = settings.reachTexels + settings.rays.reachTexels;
+    const double reach = rayBoxReach(settings);
+    const std::vector<LevelWindow>& windows = table.windows();
     const int top = rayLevel(clipmap, level, -local.z - settings.rays.zNear, settings.rays);
-    const int n = clipmap.pagesPerSide();
-    for (int l = level; l <= top; ++l) {
-        const glm::dvec2 texel = texelOf(clipmap, l, local);
-        const PageBox box = pagesRead(texel, reach, clipmap.pageTexels);
-        const LevelWindow& w = table.windows()[size_t(l - clipmap.firstLevel)];
-        if (w.holds(box.x0, box.y0, n) && w.holds(box.x1, box.y1, n)) requestBox(table, l, box);
-    }
+    const auto mark = [&](int l) {
+        if (windowHoldsBox(clipmap, windows[size_t(l - clipmap.firstLevel)], local, reach))
+            requestBox(table, l, pagesRead(texelOf(clipmap, l, local), reach, clipmap.pageTexels));
+    };
+    for (int l = level; l <= top; ++l) mark(l);
+    const int held = heldRayLevel(clipmap, windows, top, local, reach);
+    if (held != top) mark(held);
 }
 
 }  // namespace
@@ -73,6 +74,19 @@ void markRays(PageTable& table, const ClipmapSettings& clipmap, const MarkingSet
 int rayLevel(const ClipmapSettings& clipmap, int level, double heightM, const RayReach& rays) {
     const double drift = rays.tanHalfAngle * heightM;
     while (level < clipmap.lastLevel && drift > rays.reachTexels * clipmap.texelM(level)) ++level;
+    return level;
+}
+
+bool windowHoldsBox(const ClipmapSettings& clipmap, const LevelWindow& window, const glm::dvec3& local, double reach) {
+    const PageBox box = pagesRead(texelOf(clipmap, window.level, local), reach, clipmap.pageTexels);
+    const int n = clipmap.pagesPerSide();
+    return window.holds(box.x0, box.y0, n) && window.holds(box.x1, box.y1, n);
+}
+
+int heldRayLevel(const ClipmapSettings& clipmap, const std::vector<LevelWindow>& windows, int level,
+                 const glm::dvec3& local, double reach) {
+    while (level < clipmap.lastLevel && !windowHoldsBox(clipmap, windows[size_t(level - clipmap.firstLevel)], local, reach))
+        ++level;
     return level;
 }
 

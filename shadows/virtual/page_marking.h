@@ -70,6 +70,21 @@ struct MarkingSettings {
     RayReach rays = {};
 };
 
+// The half-width, texels, of the box marking marks at each level a pixel's rays read: the
+// lookup's reach (the receiver's texel moves by its bias) plus the rays' drift.
+inline double rayBoxReach(const MarkingSettings& s) { return s.reachTexels + s.rays.reachTexels; }
+
+// Whether `window` holds the pages of the box of `reach` texels around `local`'s texel in
+// its level (`local`: a point in the light's frame).
+bool windowHoldsBox(const ClipmapSettings& clipmap, const LevelWindow& window, const glm::dvec3& local, double reach);
+
+// The level a ray's sample reads: from `level` (rayLevel's), the first whose window holds
+// the pixel's rays' box (windowHoldsBox with rayBoxReach), where marking marked it; the
+// last level where none does (its reads then find no page, and are counted). `windows` by
+// level from the first, as PageTable::windows() has them.
+int heldRayLevel(const ClipmapSettings& clipmap, const std::vector<LevelWindow>& windows, int level,
+                 const glm::dvec3& local, double reach);
+
 // A pixel's level and texel coordinate, as marking chose them and the lookup reads them.
 struct PixelLevel {
     int8_t level = kNoLevel;   // index from settings.firstLevel, or kNoLevel

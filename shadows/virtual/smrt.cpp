@@ -15,6 +15,8 @@ struct Marcher {
     const PageTexels& texels;
     const ClipmapSettings& clipmap;
     RayReach reach;
+    double boxReach;    // marking's box about a pixel at each level its rays read (rayBoxReach)
+    const std::vector<LevelWindow>& windows;
     double depthPerM;   // window depth per m along the beam
     const SmrtSettings& smrt;
     std::vector<double> texelM;   // per level from the first: its texel, m
@@ -23,6 +25,7 @@ struct Marcher {
 // A pixel's receiver: its level, texel there, biased window depth, and what the hard
 // lookup read at its texel.
 struct Origin {
+    glm::dvec3 local;   // the pixel's point in the light's frame
     int level;
     glm::dvec2 texel;
     double depth;
@@ -69,7 +72,9 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
     int level = o.level;
     for (int k = 0; k < m.smrt.steps; ++k) {
         const double s = (k + xi) / m.smrt.steps, h = height * s * s;
-        level = rayLevel(m.clipmap, level, h, m.reach);   // from the last sample's: h only grows
+        // From the last sample's level (h only grows), and on to one whose window holds the
+        // pixel's rays' box, where marking marked it.
+        level = heldRayLevel(m.clipmap, m.windows, rayLevel(m.clipmap, level, h, m.reach), o.local, m.boxReach);
         const SunRead now = readAt(h, level);
         // Halvings read at the later sample's level, whose marked box holds every point
         // below it (its drift is smaller).
@@ -107,13 +112,14 @@ RayReach smrtReach(const SmrtSettings& smrt, double halfAngle, const DepthRange&
     return {smrt.rays > 0 ? portable::tan(halfAngle) : 0.0, smrt.reachTexels, range.zNear};
 }
 
-SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAngle, const LightFrame& frame,
+SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, const LightFrame& frame,
                               const ClipmapSettings& clipmap, const DepthRange& range, const BiasSettings& bias,
-                              const SmrtSettings& smrt, const std::vector<PixelLevel>& levels, const PageTable& table,
-                              const PagePool& pool) {
+                              const SmrtSettings& smrt, const MarkingSettings& marking,
+                              const std::vector<PixelLevel>& levels, const PageTable& table, const PagePool& pool) {
     const std::vector<DepthMap> maps = levelMaps(frame, clipmap, range);
     const PageTexels texels(clipmap.pageTexels, table, pool);
-    Marcher marcher{texels, clipmap, smrtReach(smrt, halfAngle, range), 1.0 / (range.zFar - range.zNear), smrt, {}};
+    Marcher marcher{texels, clipmap, marking.rays, rayBoxReach(marking), table.windows(),
+                    1.0 / (range.zFar - range.zNear), smrt, {}};
     for (int l = clipmap.firstLevel; l <= clipmap.lastLevel; ++l) marcher.texelM.push_back(clipmap.texelM(l));
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(sun.direction));
     SmrtResult out{{}, std::vector<float>(g.pixelCount(), 0.0f)};
@@ -128,7 +134,8 @@ SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAng
             missing = true;
             return 1.0f;
         }
-        const Origin origin{level, r.texel, r.depth, stored, !r.litByStored(stored, tx, ty)};
+        const Origin origin{frame.local(glm::dvec3(g.position[k])), level, r.texel, r.depth, stored,
+                            !r.litByStored(stored, tx, ty)};
         // Directions stratified over the cone's disk (a shifted (0, 2)-sequence).
         Pcg32 rng(kSmrtSeed, k);
         const glm::dvec2 shift(rng.nextDouble(), rng.nextDouble());

@@ -144,11 +144,12 @@ struct SmrtResult {
 // The rays' reach for marking (page_marking.h) from the sun's cone.
 RayReach smrtReach(const SmrtSettings& smrt, double halfAngle, const DepthRange& range);
 
-// V per pixel from `smrt.rays` rays (at least 1) in the cone of half-angle `halfAngle`
-// (radians) around the sun's direction; marking must have had smrtReach's reach.
-SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, double halfAngle, const LightFrame& frame,
+// V per pixel from `smrt.rays` rays (at least 1) in the cone of the half-angle whose tangent
+// `marking.rays` holds (smrtReach's), around the sun's direction; `marking`: the settings
+// marking had, whose boxes the rays' samples read within (heldRayLevel).
+SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, const LightFrame& frame,
                               const ClipmapSettings& clipmap, const DepthRange& range, const BiasSettings& bias,
-                              const SmrtSettings& smrt, const std::vector<PixelLevel>& levels, const PageTable& table,
-                              const PagePool& pool);
+                              const SmrtSettings& smrt, const MarkingSettings& marking,
+                              const std::vector<PixelLevel>& levels, const PageTable& table, const PagePool& pool);
 
 }  // namespace shadowlab::vsm

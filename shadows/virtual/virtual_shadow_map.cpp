@@ -138,9 +138,9 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     for (int l = s.clipmap.firstLevel; l <= s.clipmap.lastLevel; ++l) windows.push_back(placeLevel(s.clipmap, l, eye));
     table.beginFrame(windows);
     const double halfAngle = sunHalfAngle(in.light);
-    markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap,
-              {s.lodBias, lookupReachTexels(s.bias, s.filter), smrtReach(s.smrt, halfAngle, state.range)}, table,
-              state.levels);
+    const MarkingSettings marking{s.lodBias, lookupReachTexels(s.bias, s.filter),
+                                  smrtReach(s.smrt, halfAngle, state.range)};
+    markPages(in.gbuffer, in.camera(), in.light, frame, s.clipmap, marking, table, state.levels);
     const std::vector<PixelLevel>& levels = state.levels;
     timer.lap("marking");
     // 3. Memory, and the pages to render.
@@ -156,8 +156,8 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
     // 5. The lookup.
     SmrtResult rays;
     if (s.smrt.rays > 0)
-        rays = traceShadowMapRays(in.gbuffer, in.light, halfAngle, frame, s.clipmap, state.range, s.bias, s.smrt,
-                                  levels, table, state.pool);
+        rays = traceShadowMapRays(in.gbuffer, in.light, frame, s.clipmap, state.range, s.bias, s.smrt, marking, levels,
+                                  table, state.pool);
     else
         rays.lookup = lookUpPages(in.gbuffer, in.light, frame, s.clipmap, state.range, s.bias,
                                   makePcfKernel(s.filter), levels, table, state.pool);

@@ -199,8 +199,9 @@ std::vector<float> sizedSunReference(const test::HardScene& s, double halfAngle)
 }
 
 SmrtResult traceRays(const PagedSun& p, const SmrtSettings& rays, double halfAngle) {
-    return traceShadowMapRays(p.s.gbuffer, p.s.scene.lights[0], halfAngle, p.frame, p.clipmap, p.range, BiasSettings{},
-                              rays, p.levels, p.table, p.pool);
+    const MarkingSettings marking{0, lookupReachTexels({}, {}), smrtReach(rays, halfAngle, p.range)};
+    return traceShadowMapRays(p.s.gbuffer, p.s.scene.lights[0], p.frame, p.clipmap, p.range, BiasSettings{}, rays,
+                              marking, p.levels, p.table, p.pool);
 }
 
 double rmsAgainst(const test::HardScene& s, const std::vector<float>& v, const std::vector<float>& reference) {
@@ -298,4 +299,17 @@ TEST_CASE("virtual-shadow-map: shadow-map ray tracing on the sized sun of soft/s
     CHECK(test::stat(rays, "smrt_missing_read_count") == 0);
     // 640 x 400: 0.044 hard, 0.018 with 16 rays (docs/virtual-shadow-maps.md).
     CHECK(s.rms(rays.visibility) < 0.6 * s.rms(hard.visibility));
+}
+
+TEST_CASE("virtual-shadow-map: a sun's rays read only marked pages where their boxes leave a level's window") {
+    // Levels of 256 texels are two pages of 128 a side: many pixels' rays' boxes leave a
+    // level's window, and their samples must read the coarser level marking marked instead
+    // (heldRayLevel; before it, 477 reads of 16000 pixels' rays found no page here).
+    const test::SoftScene s(test::smallScene(test::softCase("sun-disk"), 160, 100), 8);
+    for (const char* resolution : {"256", "1024"}) {
+        INFO("virtual-resolution " << resolution);
+        const ShadowOutputs rays = s.run("virtual-shadow-map", {{"smrt-rays", "4"}, {"virtual-resolution", resolution}});
+        CHECK(test::stat(rays, "smrt_missing_read_count") == 0);
+        CHECK(test::stat(rays, "cache_missing_pixels") == 0);
+    }
 }
