@@ -489,20 +489,26 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     python3 $table $v/soft/sun-disk-virtual-shadow-map+shadow-map.csv soft
     python3 $table $v/soft/rays/sun-disk-virtual-shadow-map.csv soft
     cp $v/soft/sun-disk-virtual-shadow-map+shadow-map.svg docs/images/virtual-soft-sun-disk.svg
-    # The same towards local area lights (soft/'s rectangle and disks, each at its own 640 x
-    # 400): the virtual map hard and with 4 and 16 rays beside shadow-map and PCSS, with the
+    # The same towards local area lights (soft/'s rectangle and disks, each at its own size):
+    # the virtual map hard and with 4 and 16 rays beside shadow-map and PCSS, with the
     # speed-against-error plot; then both maps' 3 x 3 PCF (the rays refuse a filter beside
     # them). docs/virtual-shadow-maps.md, "Towards a local light's area".
-    for name in square-over-plane two-heights large-light branch-over-crate; do
-      scene=assets/scenes/soft/$name.json
-      $app sweep $scene --technique virtual-shadow-map,shadow-map,pcss --param smrt-rays=0,4,16 \
+    # ball-near-disk is where the rays lose: an occluder 2 cm from a wide light.
+    for scene in assets/scenes/soft/square-over-plane.json assets/scenes/soft/two-heights.json \
+                 assets/scenes/soft/large-light.json assets/scenes/soft/branch-over-crate.json \
+                 assets/scenes/virtual/ball-near-disk.json; do
+      name=$(basename $scene .json)
+      # PCSS's one light view refuses receivers beside the light (the ball's).
+      techniques=virtual-shadow-map,shadow-map,pcss
+      [ $name = ball-near-disk ] && techniques=virtual-shadow-map,shadow-map
+      $app sweep $scene --technique $techniques --param smrt-rays=0,4,16 \
         --reference reference-soft --threads 2 --runs 3 --warmup 1 --out $v/local-soft --plot-y rms > /dev/null
       $app sweep $scene --technique virtual-shadow-map,shadow-map --param filter=grid \
         --reference reference-soft --threads 2 --runs 3 --warmup 1 --out $v/local-soft/pcf > /dev/null
       echo "$name, soft:"
-      python3 $table $v/local-soft/$name-virtual-shadow-map+shadow-map+pcss.csv soft
+      python3 $table $v/local-soft/$name-$(echo $techniques | tr , +).csv soft
       python3 $table $v/local-soft/pcf/$name-virtual-shadow-map+shadow-map.csv soft
-      cp $v/local-soft/$name-virtual-shadow-map+shadow-map+pcss.svg docs/images/virtual-soft-$name.svg
+      cp $v/local-soft/$name-$(echo $techniques | tr , +).svg docs/images/virtual-soft-$name.svg
     done
     fly="--technique $maps $grid --threads 2 --runs 3 --warmup 1"
     $app flythrough assets/scenes/flythrough/avenue.json $fly --out $v/fly > /dev/null
