@@ -48,7 +48,7 @@ void checkClipmapSettings(const ClipmapSettings& s) {
         fail("resolution must be a power of two up to 1048576, got " + std::to_string(s.resolution));
     if (!powerOfTwo(s.pageTexels) || s.pageTexels < 16 || s.pageTexels > s.resolution / 2)
         fail("page-texels must be a power of two from 16 to half the resolution, got " + std::to_string(s.pageTexels));
-    if (s.firstLevel < -40 || s.lastLevel > 40 || s.firstLevel > s.lastLevel)
+    if (s.firstLevel < -kMaxLevel || s.lastLevel > kMaxLevel || s.firstLevel > s.lastLevel)
         fail("levels must satisfy -40 <= first-level <= last-level <= 40, got " + std::to_string(s.firstLevel) +
              ".." + std::to_string(s.lastLevel));
 }

@@ -85,8 +85,10 @@ glm::dvec2 texelOf(const ClipmapSettings& settings, int level, const glm::dvec3&
 LevelWindow placeLevel(const ClipmapSettings& settings, int level, const glm::dvec3& eyeLocal);
 
 // Whether the settings make a clipmap: resolution and page a power of two, 16 <= pageTexels
-// <= resolution <= 2^20, at least 2 pages a side, levels in [-40, 40] and first <= last.
-// Throws std::invalid_argument naming the setting otherwise.
+// <= resolution <= 2^20, at least 2 pages a side, levels in [-kMaxLevel, kMaxLevel] and
+// first <= last. Throws std::invalid_argument naming the setting otherwise.
+inline constexpr int kMaxLevel = 40;
+inline constexpr int kMaxLevelCount = 2 * kMaxLevel + 1;
 void checkClipmapSettings(const ClipmapSettings& settings);
 
 }  // namespace shadowlab::vsm

@@ -1,6 +1,7 @@
 #include "shadows/virtual/smrt.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 
@@ -25,13 +26,28 @@ struct Marcher {
 // A pixel's receiver: its level, texel there, biased window depth, and what the hard
 // lookup read at its texel.
 struct Origin {
-    glm::dvec3 local;   // the pixel's point in the light's frame
     int level;
+    // Per level from the first: heldRayLevel's answer from there for this pixel, the level
+    // its rays' samples read (-1 below the pixel's own level, which they never read).
+    std::array<int8_t, kMaxLevelCount> heldFrom;
     glm::dvec2 texel;
     double depth;
     float stored;
     bool behind;
 };
+
+// heldRayLevel from every level at or above `level` for a pixel at `local` (the light's
+// frame), from the last level down: a level whose window holds the rays' box is its own
+// answer, else the next one's.
+void heldLevelsFrom(const Marcher& m, int level, const glm::dvec3& local, std::array<int8_t, kMaxLevelCount>& held) {
+    const int first = m.clipmap.firstLevel;
+    held.fill(-1);
+    held[size_t(m.clipmap.lastLevel - first)] = int8_t(m.clipmap.lastLevel);
+    for (int l = m.clipmap.lastLevel - 1; l >= level; --l)
+        held[size_t(l - first)] = windowHoldsBox(m.clipmap, m.windows[size_t(l - first)], local, m.boxReach)
+                                      ? int8_t(l)
+                                      : held[size_t(l + 1 - first)];
+}
 
 // A sample `h` m up a ray and what its texel holds.
 struct SunRead {
@@ -69,12 +85,14 @@ RayEnd marchRay(const Marcher& m, const Origin& o, const glm::dvec2& slope, doub
     };
     const auto halfway = [&](const SunRead& a, const SunRead& b) { return readAt((a.h + b.h) / 2.0, b.level); };
     RayEnd end;
-    int level = o.level;
+    // Each sample reads from the last sample's level (h only grows) on, at one whose window
+    // holds the pixel's rays' box, where marking marked it: looked for again only where the
+    // drift moves a sample coarser.
+    int level = o.heldFrom[size_t(o.level - m.clipmap.firstLevel)];
     for (int k = 0; k < m.smrt.steps; ++k) {
         const double s = (k + xi) / m.smrt.steps, h = height * s * s;
-        // From the last sample's level (h only grows), and on to one whose window holds the
-        // pixel's rays' box, where marking marked it.
-        level = heldRayLevel(m.clipmap, m.windows, rayLevel(m.clipmap, level, h, m.reach), o.local, m.boxReach);
+        const int drifted = rayLevel(m.clipmap, level, h, m.reach);
+        if (drifted != level) level = o.heldFrom[size_t(drifted - m.clipmap.firstLevel)];
         const SunRead now = readAt(h, level);
         // Halvings read at the later sample's level, whose marked box holds every point
         // below it (its drift is smaller).
@@ -134,8 +152,8 @@ SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, const LightFra
             missing = true;
             return 1.0f;
         }
-        const Origin origin{frame.local(glm::dvec3(g.position[k])), level, r.texel, r.depth, stored,
-                            !r.litByStored(stored, tx, ty)};
+        Origin origin{level, {}, r.texel, r.depth, stored, !r.litByStored(stored, tx, ty)};
+        heldLevelsFrom(marcher, level, frame.local(glm::dvec3(g.position[k])), origin.heldFrom);
         // Directions stratified over the cone's disk (a shifted (0, 2)-sequence).
         Pcg32 rng(kSmrtSeed, k);
         const glm::dvec2 shift(rng.nextDouble(), rng.nextDouble());

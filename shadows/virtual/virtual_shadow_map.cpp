@@ -51,9 +51,9 @@ const SettingsTable<VirtualMapSettings>& virtualMapSettingsTable() {
                      "marked pages are drawn")
             .integer("page-texels", member(&S::clipmap, &ClipmapSettings::pageTexels), 16, 4096,
                      "texels a side of a page (a power of two)")
-            .integer("first-level", member(&S::clipmap, &ClipmapSettings::firstLevel), -40, 40,
+            .integer("first-level", member(&S::clipmap, &ClipmapSettings::firstLevel), -kMaxLevel, kMaxLevel,
                      "the finest level: 2^(l+1) m a side")
-            .integer("last-level", member(&S::clipmap, &ClipmapSettings::lastLevel), -40, 40,
+            .integer("last-level", member(&S::clipmap, &ClipmapSettings::lastLevel), -kMaxLevel, kMaxLevel,
                      "the coarsest level: 2^(l+1) m a side")
             .integer("pool-pages", member(&S::poolPages), 1, 1 << 20, "physical pages of memory")
             .integer("lod-bias", member(&S::lodBias), -8, 8, "levels coarser (+) or finer (-) than the pixels' footprint")
