@@ -87,9 +87,7 @@ LocalRaySample LocalRaySamples::sampleOf(double t, const glm::dvec3& fromApex, c
     s.y = std::clamp(texelIndexOf(s.texel0.y * scale), 0, last);
     s.depth = h.z * perW;
     s.along = -q.z;
-    s.distance = glm::length(fromApex);
-    s.beam = s.distance > 0.0 ? fromApex * (1.0 / s.distance) : glm::dvec3(0.0);
-    s.texelM = 2.0 * s.along * chain_.tanHalf / (double(chain_.resolution) * scale);
+    s.fromApex = fromApex;
     return s;
 }
 

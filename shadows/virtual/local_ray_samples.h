@@ -60,9 +60,7 @@ struct LocalRaySample {
     int x = 0, y = 0;         // its texel at `mip`, clamped to the mip as a lookup clamps
     double depth = 0.0;       // the point's window depth in that face
     double along = 0.0;       // its distance along the face's axis, m
-    glm::dvec3 beam{0.0};     // the unit direction from the apex to it
-    double distance = 0.0;    // from the apex to it, m
-    double texelM = 0.0;      // the texel's side at the point, m
+    glm::dvec3 fromApex{0.0}; // the point less the apex
 };
 
 class LocalRaySamples {

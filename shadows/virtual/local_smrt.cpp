@@ -17,6 +17,8 @@ struct LocalRead {
     LocalRaySample sample;
     float stored = 0.0f;
     bool missing = false, empty = false, behind = false;
+    double distance = 0.0;         // the sample's from the apex, m
+    glm::dvec3 beam{0.0};          // the unit direction from the apex to it
     double storedDistance = 0.0;   // the stored surface on the sample's beam, m from the apex
     double texelM = 0.0;           // the texel's side there, m
 };
@@ -25,17 +27,20 @@ struct LocalRead {
 struct Tracer {
     const PageTexels& texels;
     AxisDistance axis;
+    double texelPerAlong;   // a mip-0 texel's side per m along a face's axis
     const SmrtSettings& smrt;
 
     LocalRead read(PageTexels::Cursor& cursor, const LocalRaySample& s) const {
         LocalRead r{s, texels.at(s.level, s.x, s.y, cursor)};
         r.missing = r.stored == PageTexels::kMissingTexel;
         r.empty = r.stored >= 1.0f;
+        r.distance = glm::length(s.fromApex);
+        r.beam = r.distance > 0.0 ? s.fromApex * (1.0 / r.distance) : glm::dvec3(0.0);
         if (r.missing || r.empty) return r;
         r.behind = s.depth > double(r.stored);
         const double storedAlong = axis(r.stored);
-        r.storedDistance = s.distance * storedAlong / s.along;
-        r.texelM = s.texelM * storedAlong / s.along;
+        r.storedDistance = r.distance * storedAlong / s.along;
+        r.texelM = texelPerAlong * storedAlong * double(1 << s.mip);
         return r;
     }
 };
@@ -48,8 +53,8 @@ public:
     DepthHistory::Crossing feed(const LocalRead& r) {
         // The step across, as a chord between the two beams at the surface the ray was last
         // behind or beside (the sample's own distance where that texel is empty).
-        const double at = last_.empty ? last_.sample.distance : last_.storedDistance;
-        const double step = glm::length(r.sample.beam - last_.sample.beam) * at;
+        const double at = last_.empty ? last_.distance : last_.storedDistance;
+        const double step = glm::length(r.beam - last_.beam) * at;
         last_ = r;
         return history_.next(r.storedDistance, r.empty, r.behind, step, r.texelM);
     }
@@ -93,7 +98,8 @@ SmrtResult traceLocalShadowMapRays(const GBuffer& g, const Light& light, const L
                                    const PageTable& table, const PagePool& pool) {
     const MipChain& chain = samples.chain();
     const PageTexels texels(chain.pageTexels, table, pool);
-    const Tracer tracer{texels, {chain.range.zNear, chain.range.zFar}, smrt};
+    const Tracer tracer{texels, {chain.range.zNear, chain.range.zFar}, 2.0 * chain.tanHalf / double(chain.resolution),
+                        smrt};
     SmrtResult out{{}, std::vector<float>(g.pixelCount(), 0.0f)};
     std::atomic<size_t> missingReads = 0;   // a sum: the same for any thread count
     out.lookup = lookUpEachPixel(g, light, levels, [&](size_t k, const PixelLevel& p, bool& missing) {
