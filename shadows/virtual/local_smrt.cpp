@@ -115,10 +115,7 @@ SmrtResult traceLocalShadowMapRays(const GBuffer& g, const Light& light, const L
         samples.forEachRay(k, p, r, [&](LocalRaySamples::RayWalk& ray) { tally.add(traceRay(tracer, ray, origin)); });
         // A receiver whose bias took it behind the light sends none: the hard lookup's answer.
         if (tally.rays == 0) return origin.behind ? 0.0f : 1.0f;
-        missing |= tally.missing > 0;
-        if (tally.missing) missingReads += size_t(tally.missing);
-        out.escapedRays[k] = tally.escapedFraction();
-        return tally.visibility();
+        return tally.finish(k, out.escapedRays, missingReads, missing);
     });
     out.missingReads = missingReads;
     return out;

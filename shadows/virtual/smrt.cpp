@@ -164,10 +164,7 @@ SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, const LightFra
             const glm::dvec2 disk = concentricSquareToDisk(shiftedSobol02(uint32_t(ray), shift));
             tally.add(marchRay(marcher, origin, marcher.reach.tanHalfAngle * disk, rng.nextDouble()));
         }
-        missing |= tally.missing > 0;
-        if (tally.missing) missingReads += size_t(tally.missing);
-        out.escapedRays[k] = tally.escapedFraction();
-        return tally.visibility();
+        return tally.finish(k, out.escapedRays, missingReads, missing);
     });
     out.missingReads = missingReads;
     return out;

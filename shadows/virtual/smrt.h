@@ -29,6 +29,7 @@
 // lookup reads a missing page). Deterministic: per pixel, a fixed PCG32 stream.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -131,8 +132,14 @@ DepthHistory::Crossing judgeStep(int refinements, const Read& previous, const Re
 struct RayTally {
     int rays = 0, hits = 0, escapes = 0, missing = 0;
     void add(const RayEnd& end) { ++rays, hits += end.hit, escapes += end.escaped, missing += end.missing; }
-    float visibility() const { return float(double(rays - hits) / double(rays)); }
-    float escapedFraction() const { return float(double(escapes) / double(rays)); }
+    // Pixel k's V; its escaped fraction into escapedRays, its reads without a page added to
+    // missingReads (a sum: the same for any thread count) and flagged in `missing`.
+    float finish(size_t k, std::vector<float>& escapedRays, std::atomic<size_t>& missingReads, bool& missing) const {
+        missing |= this->missing > 0;
+        if (this->missing) missingReads += size_t(this->missing);
+        escapedRays[k] = float(double(escapes) / double(rays));
+        return float(double(rays - hits) / double(rays));
+    }
 };
 
 struct SmrtResult {
