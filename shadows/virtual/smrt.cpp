@@ -28,7 +28,8 @@ struct Marcher {
 struct Origin {
     int level;
     // Per level from the first: heldRayLevel's answer from there for this pixel, the level
-    // its rays' samples read (-1 below the pixel's own level, which they never read).
+    // its rays' samples read (-1, unread, below the pixel's own level: samples never read
+    // finer than it).
     std::array<int8_t, kMaxLevelCount> heldFrom;
     glm::dvec2 texel;
     double depth;
@@ -153,6 +154,8 @@ SmrtResult traceShadowMapRays(const GBuffer& g, const Light& sun, const LightFra
             return 1.0f;
         }
         Origin origin{level, {}, r.texel, r.depth, stored, !r.litByStored(stored, tx, ty)};
+        // A receiver whose bias lifted it above the depth range's top has no height to climb.
+        if (!(r.depth > 0.0)) return origin.behind ? 0.0f : 1.0f;
         heldLevelsFrom(marcher, level, frame.local(glm::dvec3(g.position[k])), origin.heldFrom);
         // Directions stratified over the cone's disk (a shifted (0, 2)-sequence).
         Pcg32 rng(kSmrtSeed, k);

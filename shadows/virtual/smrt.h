@@ -11,7 +11,9 @@
 // sample k at height h_k = H ((k + xi) / steps)^2 (denser near the receiver, where contact
 // shadows are; xi jittered per ray) reads the stored depth at its texel of the level
 // rayLevel gives (page_marking.h: the pixel's own, coarser once the drift across the beam
-// passes `reach` texels), through the page table.
+// passes `reach` texels; then heldRayLevel's, coarser again where that level's window does
+// not hold the pixel's rays' box, as marking marks it), through the page table. A receiver
+// whose bias lifts it above the depth range's top sends no rays: the hard lookup's answer.
 //
 // The map is a height field seen from the light: a sample deeper than the stored depth is
 // behind an occluder's front, which says nothing of whether the ray passes through the
@@ -48,7 +50,7 @@ struct SmrtSettings {
     // lets rays escape through an occluder's own curve (light leaks), too loose keeps them
     // from escaping past its edge (no inner penumbra). With crossings refined
     // (refineCrossing), 8 had the least RMS summed over soft/'s ten cases with 16 rays at
-    // 160 x 100 (0.351; 4: 0.355, 16: 0.358, 32: 0.429; docs/virtual-shadow-maps.md).
+    // 160 x 100 (0.351; 4: 0.355, 16: 0.358, 32: 0.430; docs/virtual-shadow-maps.md).
     double maxSlope = 8.0;
     // Halvings of a crossing's step (refineCrossing): 4 find where the ray came out within
     // 1/16 of the step; 0 judges the samples as they fall.
@@ -132,8 +134,8 @@ DepthHistory::Crossing judgeStep(int refinements, const Read& previous, const Re
 struct RayTally {
     int rays = 0, hits = 0, escapes = 0, missing = 0;
     void add(const RayEnd& end) { ++rays, hits += end.hit, escapes += end.escaped, missing += end.missing; }
-    // Pixel k's V; its escaped fraction into escapedRays, its reads without a page added to
-    // missingReads (a sum: the same for any thread count) and flagged in `missing`.
+    // Pixel k's V (rays > 0); its escaped fraction into escapedRays, its reads without a page
+    // added to missingReads (a sum: the same for any thread count) and flagged in `missing`.
     float finish(size_t k, std::vector<float>& escapedRays, std::atomic<size_t>& missingReads, bool& missing) const {
         missing |= this->missing > 0;
         if (this->missing) missingReads += size_t(this->missing);
