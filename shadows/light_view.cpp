@@ -104,7 +104,9 @@ BoundsResult servedBounds(const Light& light, const GBuffer& g, BoundsSpace spac
 Bounds receiverBounds(const Light& light, const GBuffer& g, const glm::dmat4& viewFromWorld, bool orthographic,
                       raster::SimdLevel simd) {
     const BoundsResult r = servedBounds(light, g, orthographic ? kOrthographicView : kPerspectiveView, viewFromWorld, simd);
-    if (r.behindApex) throw std::invalid_argument("light view: a receiver lies beside or behind the light; use cube faces");
+    if (r.behindApex)
+        throw std::invalid_argument("light view: a receiver lies beside or behind the light, where one perspective view "
+                                    "cannot reach (shadow-map's cube faces can)");
     const Bounds b{r.lo[0], r.hi[0], r.lo[1], r.hi[1], r.lo[2], r.hi[2]};
     if (b.x0 > b.x1) throw std::invalid_argument("light view: no receivers (no pixel has hit = 1)");
     return b;
