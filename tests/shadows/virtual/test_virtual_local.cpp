@@ -15,9 +15,6 @@
 #include <tuple>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
-
-#include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/bounds.h"
 #include "shadows/virtual/local_invalidation.h"
@@ -26,6 +23,7 @@
 #include "shadows/virtual/mip_chain.h"
 #include "tests/frame/technique_scenes.h"
 #include "tests/shadows/shadow_test_support.h"
+#include "tests/shadows/virtual/virtual_test_support.h"
 
 using namespace shadowlab;
 using namespace shadowlab::vsm;
@@ -37,11 +35,6 @@ using LocalKeySet = std::set<std::tuple<int, int32_t, int32_t>>;
 // A small virtual map (4096 texels at mip 0, pages of 64: mips 0..6) so that the tests stay
 // quick.
 ClipmapSettings localSmallChain() { return {.resolution = 4096, .pageTexels = 64}; }
-std::map<std::string, std::string> localSmallMap(std::map<std::string, std::string> more = {}) {
-    more.emplace("virtual-resolution", "4096");
-    more.emplace("page-texels", "64");
-    return more;
-}
 
 // A local light's view at 160 x 100 with its chain and a table marked by its pixels.
 struct LocalView {
@@ -223,9 +216,9 @@ TEST_CASE("virtual-shadow-map: a local light's same bytes on every thread count 
     for (const char* name : kLocalLightScenes) {
         INFO(std::string(name));
         const test::HardScene s(test::smallScene(test::hardCase(name), 160, 100));
-        const std::vector<float> twin = s.run("virtual-shadow-map", localSmallMap(), raster::SimdLevel::Scalar).visibility;
+        const std::vector<float> twin = s.run("virtual-shadow-map", test::smallVirtualMap(), raster::SimdLevel::Scalar).visibility;
         test::checkSameBytesEverywhere(twin, [&](raster::SimdLevel level) {
-            return s.run("virtual-shadow-map", localSmallMap(), level).visibility;
+            return s.run("virtual-shadow-map", test::smallVirtualMap(), level).visibility;
         });
     }
 }
@@ -233,40 +226,32 @@ TEST_CASE("virtual-shadow-map: a local light's same bytes on every thread count 
 TEST_CASE("virtual-shadow-map: a local light's kept pages never change an answer") {
     for (const char* name : kLocalLightScenes) {
         INFO(std::string(name));
-        PreparedScene prepared(test::smallScene(test::hardCase(name), 160, 100));
-        const Technique& vsm = findTechnique("virtual-shadow-map");
-        FrameHistory history;
-        FrameSettings kept, alone;
         // Two mips finer than the pixels: enough pages that a ball's move leaves some alone.
-        kept.params = alone.params = localSmallMap({{"lod-bias", "-2"}});
-        kept.history = &history;
+        test::KeptFrames frames(test::smallScene(test::hardCase(name), 160, 100),
+                                test::smallVirtualMap({{"lod-bias", "-2"}}));
         const auto stat = [](const Frame& f, const std::string& n) { return test::stat(f.shadow, n); };
-        const Frame first = renderFrame(prepared, vsm, kept);
+        const Frame first = frames.next();
         CHECK(stat(first, "cache_drawn_pages") == stat(first, "requested_pages"));
 
         // A still frame: every page is cached.
-        const Frame still = renderFrame(prepared, vsm, kept);
+        const Frame still = frames.next();
         CHECK(stat(still, "cache_drawn_pages") == 0);
         CHECK(test::sameBytes(still.shadow.visibility, first.shadow.visibility));
 
         // A caster moves: the pages under it are drawn again, the others kept.
-        const uint32_t moving = std::string(name) == "spot" ? 1 : 6;
-        const glm::mat4 moved = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.0f, 0.0f)) *
-                                prepared.scene().instances[moving].worldFromObject;
-        const InstancePlacement placement{moving, moved};
-        REQUIRE(prepared.setInstanceTransforms({&placement, 1}) == 1);
-        const Frame after = renderFrame(prepared, vsm, kept);
+        frames.move(std::string(name) == "spot" ? 1 : 6, glm::vec3(0.3f, 0.0f, 0.0f));
+        const Frame after = frames.next();
         CHECK(stat(after, "cache_invalidated_pages") > 0);
         CHECK(stat(after, "cache_drawn_pages") < stat(after, "requested_pages"));
-        CHECK(test::sameBytes(after.shadow.visibility, renderFrame(prepared, vsm, alone).shadow.visibility));
+        CHECK(test::sameBytes(after.shadow.visibility, frames.alone()));
 
         // The light moves: every page is drawn again.
-        std::vector<Light> lights = prepared.scene().lights;
+        std::vector<Light> lights = frames.prepared.scene().lights;
         lights[0].position += glm::vec3(0.1f, 0.0f, 0.0f);
-        prepared.setLights(lights);
-        const Frame lightMoved = renderFrame(prepared, vsm, kept);
+        frames.prepared.setLights(lights);
+        const Frame lightMoved = frames.next();
         CHECK(stat(lightMoved, "cache_drawn_pages") == stat(lightMoved, "requested_pages"));
-        CHECK(test::sameBytes(lightMoved.shadow.visibility, renderFrame(prepared, vsm, alone).shadow.visibility));
+        CHECK(test::sameBytes(lightMoved.shadow.visibility, frames.alone()));
     }
 }
 
@@ -274,7 +259,7 @@ TEST_CASE("virtual-shadow-map: a spot wider than 60 degrees gets six faces, and 
     Scene wide = test::smallScene(test::hardCase("spot"), 160, 100);
     wide.lights[0].coneAngleDeg = 75.0f;
     const test::HardScene s(std::move(wide));
-    const ShadowOutputs out = s.run("virtual-shadow-map", localSmallMap());
+    const ShadowOutputs out = s.run("virtual-shadow-map", test::smallVirtualMap());
     CHECK(test::stat(out, "faces_count") == 6.0);
     CHECK(test::stat(out, "cache_missing_pixels") == 0);
     CHECK(test::stat(out, "unleveled_pixels") == 0);
@@ -282,7 +267,7 @@ TEST_CASE("virtual-shadow-map: a spot wider than 60 degrees gets six faces, and 
 
     // Two physical pages for more requested ones: the coarse mips get them, the rest are
     // counted, and their pixels lit.
-    const ShadowOutputs overflowed = s.run("virtual-shadow-map", localSmallMap({{"pool-pages", "2"}}));
+    const ShadowOutputs overflowed = s.run("virtual-shadow-map", test::smallVirtualMap({{"pool-pages", "2"}}));
     CHECK(test::stat(overflowed, "cache_overflowed_pages") > 0);
     CHECK(test::stat(overflowed, "cache_missing_pixels") > 0);
     CHECK(test::stat(overflowed, "cache_resident_pages") == 2);
@@ -330,11 +315,11 @@ TEST_CASE("virtual-shadow-map: a local light's PCF reads only marked pages and b
     for (const char* name : kLocalLightScenes) {
         INFO(std::string(name));
         const test::HardScene s(test::smallScene(test::hardCase(name), 160, 100));
-        const ShadowOutputs hard = s.run("virtual-shadow-map", localSmallMap());
+        const ShadowOutputs hard = s.run("virtual-shadow-map", test::smallVirtualMap());
         CHECK(std::none_of(hard.visibility.begin(), hard.visibility.end(), [](float v) { return v > 0.0f && v < 1.0f; }));
         for (const std::string filter : {"bilinear", "grid", "poisson"}) {
             INFO("filter " << filter);
-            const ShadowOutputs out = s.run("virtual-shadow-map", localSmallMap({{"filter", filter}}));
+            const ShadowOutputs out = s.run("virtual-shadow-map", test::smallVirtualMap({{"filter", filter}}));
             // shadow-map at 256 texels a face: about the virtual map's texel on this 160 x 100
             // view, whose mips match the pixels' footprint.
             const ShadowOutputs map = s.run("shadow-map", {{"filter", filter}, {"resolution", "256"}});

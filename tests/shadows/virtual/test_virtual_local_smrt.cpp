@@ -9,9 +9,6 @@
 #include <algorithm>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
-
-#include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/bounds.h"
 #include "shadows/virtual/local_lookup.h"
@@ -22,18 +19,13 @@
 #include "tests/frame/technique_scenes.h"
 #include "tests/shadows/shadow_test_support.h"
 #include "tests/shadows/soft_test_support.h"
+#include "tests/shadows/virtual/virtual_test_support.h"
 
 using namespace shadowlab;
 using namespace shadowlab::vsm;
 
 // Named, so that a unity build of the tests meets no other file's helpers.
 namespace virtual_local_smrt_test {
-
-std::map<std::string, std::string> smallChain(std::map<std::string, std::string> more = {}) {
-    more.emplace("virtual-resolution", "4096");
-    more.emplace("page-texels", "64");
-    return more;
-}
 
 // The technique's stages up to its rays (local_virtual_map.cpp) on a small chain: the
 // pixels' pages marked, the rays' too where `markRays`, every marked page drawn.
@@ -99,8 +91,8 @@ TEST_CASE("virtual-shadow-map: rays to a spot or point light give its hard shado
     for (const char* name : {"spot", "point-light-inside"}) {
         INFO(name);
         const test::HardScene s(test::smallScene(test::hardCase(name), 160, 100));
-        const ShadowOutputs hard = s.run("virtual-shadow-map", smallChain());
-        const ShadowOutputs rays = s.run("virtual-shadow-map", smallChain({{"smrt-rays", "4"}}));
+        const ShadowOutputs hard = s.run("virtual-shadow-map", test::smallVirtualMap());
+        const ShadowOutputs rays = s.run("virtual-shadow-map", test::smallVirtualMap({{"smrt-rays", "4"}}));
         size_t differing = 0, shadowed = 0;
         for (size_t k = 0; k < hard.visibility.size(); ++k) {
             differing += hard.visibility[k] != rays.visibility[k];
@@ -139,7 +131,7 @@ TEST_CASE("virtual-shadow-map: rays to a rectangle and a disk light against refe
 
 TEST_CASE("virtual-shadow-map: a local light's rays are the same bytes on every thread count and SIMD level") {
     const test::HardScene s(test::smallScene(test::softCase("two-heights"), 96, 60));
-    const auto params = smallChain({{"smrt-rays", "4"}});
+    const auto params = test::smallVirtualMap({{"smrt-rays", "4"}});
     const std::vector<float> twin = s.run("virtual-shadow-map", params, raster::SimdLevel::Scalar).visibility;
     CHECK(std::any_of(twin.begin(), twin.end(), [](float v) { return v > 0.0f && v < 1.0f; }));
     test::checkSameBytesEverywhere(twin, [&](raster::SimdLevel level) {
@@ -148,26 +140,19 @@ TEST_CASE("virtual-shadow-map: a local light's rays are the same bytes on every 
 }
 
 TEST_CASE("virtual-shadow-map: a local light's kept pages never change its rays' answer") {
-    PreparedScene prepared(test::smallScene(test::softCase("square-over-plane"), 160, 100));
-    const Technique& vsm = findTechnique("virtual-shadow-map");
-    FrameHistory history;
-    FrameSettings kept, alone;
-    kept.params = alone.params = smallChain({{"smrt-rays", "4"}});
-    kept.history = &history;
+    test::KeptFrames frames(test::smallScene(test::softCase("square-over-plane"), 160, 100),
+                            test::smallVirtualMap({{"smrt-rays", "4"}}));
     const auto stat = [](const Frame& f, const std::string& n) { return test::stat(f.shadow, n); };
-    const Frame first = renderFrame(prepared, vsm, kept);
-    const Frame still = renderFrame(prepared, vsm, kept);
+    const Frame first = frames.next();
+    const Frame still = frames.next();
     CHECK(stat(still, "cache_drawn_pages") == 0);
     CHECK(test::sameBytes(still.shadow.visibility, first.shadow.visibility));
     // The square moves: the pages under it are drawn again, the others kept, and the rays
     // read what a fresh map would hold.
-    const glm::mat4 moved =
-        glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.0f, 0.0f)) * prepared.scene().instances[1].worldFromObject;
-    const InstancePlacement placement{1, moved};
-    REQUIRE(prepared.setInstanceTransforms({&placement, 1}) == 1);
-    const Frame after = renderFrame(prepared, vsm, kept);
+    frames.move(1, glm::vec3(0.3f, 0.0f, 0.0f));
+    const Frame after = frames.next();
     CHECK(stat(after, "cache_invalidated_pages") > 0);
     CHECK(stat(after, "cache_drawn_pages") < stat(after, "requested_pages"));
-    CHECK(test::sameBytes(after.shadow.visibility, renderFrame(prepared, vsm, alone).shadow.visibility));
+    CHECK(test::sameBytes(after.shadow.visibility, frames.alone()));
     CHECK(!test::sameBytes(after.shadow.visibility, first.shadow.visibility));
 }

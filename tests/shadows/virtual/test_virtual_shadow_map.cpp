@@ -6,12 +6,10 @@
 // renders them all, and a short pool overflows into counted, lit pixels instead of failing.
 #include <doctest/doctest.h>
 
-#include <glm/gtc/matrix_transform.hpp>
-
-#include "frame/registry.h"
 #include "frame/render.h"
 #include "tests/frame/technique_scenes.h"
 #include "tests/shadows/shadow_test_support.h"
+#include "tests/shadows/virtual/virtual_test_support.h"
 
 using namespace shadowlab;
 
@@ -19,34 +17,8 @@ namespace {
 
 Scene sunScene320() { return test::smallScene(test::sunScene(), 320, 200); }
 
-double virtualStat(const Frame& frame, const std::string& name) {
-    for (const TechniqueStat& s : frame.shadow.stats)
-        if (s.name == name) return s.value;
-    FAIL("no stat " << name);
-    return 0.0;
-}
-
-// A small virtual map (4096 texels a level, pages of 64) so that the tests stay quick.
-std::map<std::string, std::string> smallMap(std::map<std::string, std::string> more = {}) {
-    more.emplace("virtual-resolution", "4096");
-    more.emplace("page-texels", "64");
-    return more;
-}
-
 // The sun case's frames with a history kept from one to the next, and frames alone.
-struct Sequence {
-    PreparedScene prepared{sunScene320()};
-    const Technique& vsm = findTechnique("virtual-shadow-map");
-    FrameHistory history;
-    Frame next() { return renderFrame(prepared, vsm, settings(&history)); }
-    std::vector<float> alone() const { return renderFrame(prepared, vsm, settings(nullptr)).shadow.visibility; }
-    static FrameSettings settings(FrameHistory* kept) {
-        FrameSettings s;
-        s.params = smallMap();
-        s.history = kept;
-        return s;
-    }
-};
+test::KeptFrames sunFrames() { return {sunScene320(), test::smallVirtualMap()}; }
 
 }  // namespace
 
@@ -65,22 +37,22 @@ TEST_CASE("virtual-shadow-map: the sun's hard shadow within the shadow maps' bou
 
 TEST_CASE("virtual-shadow-map: the same bytes on every thread count and SIMD level") {
     const test::HardScene s(sunScene320());
-    const std::vector<float> twin = s.run("virtual-shadow-map", smallMap(), raster::SimdLevel::Scalar).visibility;
+    const std::vector<float> twin = s.run("virtual-shadow-map", test::smallVirtualMap(), raster::SimdLevel::Scalar).visibility;
     test::checkSameBytesEverywhere(twin, [&](raster::SimdLevel level) {
-        return s.run("virtual-shadow-map", smallMap(), level).visibility;
+        return s.run("virtual-shadow-map", test::smallVirtualMap(), level).visibility;
     });
 }
 
 TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what is new is rendered") {
-    Sequence s;
+    test::KeptFrames s = sunFrames();
     const Frame first = s.next();
-    CHECK(virtualStat(first, "cache_drawn_pages") == virtualStat(first, "requested_pages"));
-    CHECK(virtualStat(first, "requested_pages") > 4);
+    CHECK(test::stat(first.shadow, "cache_drawn_pages") == test::stat(first.shadow, "requested_pages"));
+    CHECK(test::stat(first.shadow, "requested_pages") > 4);
 
     // A still frame: every page is cached.
     const Frame still = s.next();
-    CHECK(virtualStat(still, "cache_drawn_pages") == 0);
-    CHECK(virtualStat(still, "cache_hit_percent") == 100.0);
+    CHECK(test::stat(still.shadow, "cache_drawn_pages") == 0);
+    CHECK(test::stat(still.shadow, "cache_hit_percent") == 100.0);
     CHECK(test::sameBytes(still.shadow.visibility, first.shadow.visibility));
 
     // The camera pans: some pages enter the view; the rest are kept and read as drawn.
@@ -88,8 +60,8 @@ TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what 
     camera.eye += glm::vec3(1.5f, 0.0f, 0.0f), camera.target += glm::vec3(1.5f, 0.0f, 0.0f);
     s.prepared.setCamera(camera);
     const Frame panned = s.next();
-    CHECK(virtualStat(panned, "cache_drawn_pages") > 0);
-    CHECK(virtualStat(panned, "cache_drawn_pages") < virtualStat(panned, "requested_pages"));
+    CHECK(test::stat(panned.shadow, "cache_drawn_pages") > 0);
+    CHECK(test::stat(panned.shadow, "cache_drawn_pages") < test::stat(panned.shadow, "requested_pages"));
     CHECK(test::sameBytes(panned.shadow.visibility, s.alone()));
 
     // The sun turns: every page is drawn again.
@@ -97,30 +69,26 @@ TEST_CASE("virtual-shadow-map: kept pages never change an answer, and only what 
     lights[0].direction = glm::normalize(lights[0].direction + glm::vec3(0.2f, 0.0f, 0.0f));
     s.prepared.setLights(lights);
     const Frame turned = s.next();
-    CHECK(virtualStat(turned, "cache_drawn_pages") == virtualStat(turned, "requested_pages"));
+    CHECK(test::stat(turned.shadow, "cache_drawn_pages") == test::stat(turned.shadow, "requested_pages"));
     CHECK(test::sameBytes(turned.shadow.visibility, s.alone()));
 }
 
 TEST_CASE("virtual-shadow-map: a moving caster re-renders the pages under it, and the kept ones stay right") {
-    Sequence s;
+    test::KeptFrames s = sunFrames();
     const Frame first = s.next();
     // The sphere (instance 1) slides 0.4 m along x.
-    const uint32_t sphere = 1;
-    const glm::mat4 moved = glm::translate(glm::mat4(1.0f), glm::vec3(0.4f, 0.0f, 0.0f)) *
-                            s.prepared.scene().instances[sphere].worldFromObject;
-    const InstancePlacement placement{sphere, moved};
-    REQUIRE(s.prepared.setInstanceTransforms({&placement, 1}) == 1);
+    s.move(1, glm::vec3(0.4f, 0.0f, 0.0f));
     const Frame after = s.next();
-    CHECK(virtualStat(after, "cache_invalidated_pages") > 0);
-    CHECK(virtualStat(after, "cache_drawn_pages") > 0);
-    CHECK(virtualStat(after, "cache_drawn_pages") < virtualStat(after, "requested_pages"));
+    CHECK(test::stat(after.shadow, "cache_invalidated_pages") > 0);
+    CHECK(test::stat(after.shadow, "cache_drawn_pages") > 0);
+    CHECK(test::stat(after.shadow, "cache_drawn_pages") < test::stat(after.shadow, "requested_pages"));
     CHECK(test::sameBytes(after.shadow.visibility, s.alone()));
     CHECK(!test::sameBytes(after.shadow.visibility, first.shadow.visibility));
 }
 
 TEST_CASE("virtual-shadow-map: a pool too small overflows into counted, lit pixels") {
     const test::HardScene s(sunScene320());
-    const ShadowOutputs out = s.run("virtual-shadow-map", smallMap({{"pool-pages", "2"}}));
+    const ShadowOutputs out = s.run("virtual-shadow-map", test::smallVirtualMap({{"pool-pages", "2"}}));
     CHECK(test::stat(out, "cache_overflowed_pages") > 0);
     CHECK(test::stat(out, "cache_missing_pixels") > 0);
     // A frame alone hits nothing in the cache: a page without memory is no hit.
