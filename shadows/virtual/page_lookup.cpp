@@ -3,15 +3,13 @@
 namespace shadowlab::vsm {
 
 float PageTexels::at(int level, int x, int y) const {
-    const PageKey key = pageOf(level, x, y);
-    const int32_t physical = table_.physical(key);
-    if (physical == kNoPhysicalPage || !table_.valid(key)) return kMissingTexel;
-    return pool_.at(physical, x - key.x * pageTexels_, y - key.y * pageTexels_);
+    Cursor cursor;
+    return at(level, x, y, cursor);
 }
 
 float PageTexels::at(int level, int x, int y, Cursor& cursor) const {
     const PageKey key = pageOf(level, x, y);
-    if (!(key == cursor.key)) {
+    if (key != cursor.key) {
         const int32_t physical = table_.physical(key);
         cursor.key = key;
         cursor.texels = physical == kNoPhysicalPage || !table_.valid(key)

@@ -122,7 +122,7 @@ std::vector<PageKey> PageTable::allocate() {
         if (!requestedNow_[s]) continue;
         Slot& slot = slots_[s];
         const PageKey key = windowPage(s);
-        if (slot.physical != kNoPhysicalPage && !(slot.key == key)) release(slot);   // a page the window left
+        if (slot.physical != kNoPhysicalPage && slot.key != key) release(slot);   // a page the window left
         slot.key = key;
         if (slot.physical != kNoPhysicalPage) lastRequested_[size_t(slot.physical)] = frame_;
     }
@@ -149,7 +149,7 @@ std::vector<PageKey> PageTable::allocate() {
 
 void PageTable::markRendered(const PageKey& key) {
     Slot& slot = slots_[slotIndex(key)];
-    if (slot.physical == kNoPhysicalPage || !(slot.key == key))
+    if (slot.physical == kNoPhysicalPage || slot.key != key)
         throw std::logic_error("PageTable::markRendered: the page has no memory");
     slot.valid = true;
 }
