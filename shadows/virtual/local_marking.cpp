@@ -40,6 +40,7 @@ void markLocalPages(const GBuffer& g, const Camera& camera, const Light& light, 
     const LightReach reaches(light);
     levels.assign(g.pixelCount(), PixelLevel{});
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        BoxRequests requests(table);
         for (int j = rows.begin(); j < rows.end(); ++j) {
             for (int i = 0; i < g.width; ++i) {
                 const size_t k = g.index(i, j);
@@ -52,9 +53,7 @@ void markLocalPages(const GBuffer& g, const Camera& camera, const Light& light, 
                 const int level = chain.levelOf(face, mip);
                 const glm::dvec2 texel = texelIn(texelFromWorld[size_t(level)], P);
                 levels[k] = {int8_t(level), texel};
-                const PageBox box = localPagesRead(chain, mip, texel, settings.reachTexels);
-                for (int32_t py = box.y0; py <= box.y1; ++py)
-                    for (int32_t px = box.x0; px <= box.x1; ++px) table.request({level, px, py});
+                requests.request(level, localPagesRead(chain, mip, texel, settings.reachTexels));
             }
         }
     });

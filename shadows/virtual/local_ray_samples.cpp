@@ -134,9 +134,7 @@ void markLocalRayPages(const GBuffer& g, const LocalRaySamples& samples, const s
                        PageTable& table) {
     const MipChain& chain = samples.chain();
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-        // A ray's next box is most often the one before: not requested again.
-        PageBox last{1, 1, 0, 0};   // none: x0 > x1
-        int lastLevel = -1;
+        BoxRequests requests(table);
         for (int j = rows.begin(); j < rows.end(); ++j) {
             for (int i = 0; i < g.width; ++i) {
                 const size_t k = g.index(i, j);
@@ -147,12 +145,7 @@ void markLocalRayPages(const GBuffer& g, const LocalRaySamples& samples, const s
                 samples.forEachRay(k, p, r, [&](LocalRaySamples::RayWalk& ray) {
                     LocalRaySample previous = origin;
                     ray.walk([&](const LocalRaySample& s) {
-                        const PageBox box = pagesBetween(chain, refinable(previous, s) ? previous : s, s);
-                        if (!(s.level == lastLevel && box == last)) {
-                            for (int32_t py = box.y0; py <= box.y1; ++py)
-                                for (int32_t px = box.x0; px <= box.x1; ++px) table.request({s.level, px, py});
-                            last = box, lastLevel = s.level;
-                        }
+                        requests.request(s.level, pagesBetween(chain, refinable(previous, s) ? previous : s, s));
                         previous = s;
                         return true;
                     });

@@ -47,22 +47,16 @@ struct LevelChoice {
     }
 };
 
-void requestBox(PageTable& table, int level, const PageBox& box) {
-    for (int32_t py = box.y0; py <= box.y1; ++py)
-        for (int32_t px = box.x0; px <= box.x1; ++px) table.request({level, px, py});
-}
-
 // The pages a pixel's rays read (RayReach): at every level from its own to the one its
 // highest sample reads whose window holds the box, and, where the last of those does not,
 // at the coarser one the rays then read (heldRayLevel).
-void markRays(PageTable& table, const ClipmapSettings& clipmap, const MarkingSettings& settings, int level,
-              const glm::dvec3& local) {
+void markRays(BoxRequests& requests, const std::vector<LevelWindow>& windows, const ClipmapSettings& clipmap,
+              const MarkingSettings& settings, int level, const glm::dvec3& local) {
     const double reach = rayBoxReach(settings);
-    const std::vector<LevelWindow>& windows = table.windows();
     const int top = rayLevel(clipmap, level, -local.z - settings.rays.zNear, settings.rays);
     const auto mark = [&](int l) {
         if (windowHoldsBox(clipmap, windows[size_t(l - clipmap.firstLevel)], local, reach))
-            requestBox(table, l, pagesRead(texelOf(clipmap, l, local), reach, clipmap.pageTexels));
+            requests.request(l, pagesRead(texelOf(clipmap, l, local), reach, clipmap.pageTexels));
     };
     for (int l = level; l <= top; ++l) mark(l);
     const int held = heldRayLevel(clipmap, windows, top, local, reach);
@@ -108,10 +102,7 @@ void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const L
     const LightReach reaches(sun);
     levels.assign(g.pixelCount(), PixelLevel{});
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-        // Neighbouring pixels mostly read the same pages: a box requested just before is not
-        // requested again (a request only sets a flag).
-        PageBox last{1, 1, 0, 0};   // no box: x0 > x1
-        int lastBoxLevel = 0;
+        BoxRequests requests(table);
         for (int j = rows.begin(); j < rows.end(); ++j) {
             for (int i = 0; i < g.width; ++i) {
                 const size_t k = g.index(i, j);
@@ -120,12 +111,10 @@ void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const L
                 levels[k] = chosen;
                 if (chosen.level == kNoLevel) continue;
                 const int level = clipmap.firstLevel + chosen.level;
-                const PageBox box = pagesRead(chosen.texel, settings.reachTexels, clipmap.pageTexels);
-                if (!(level == lastBoxLevel && box == last))
-                    requestBox(table, level, box);
-                last = box, lastBoxLevel = level;
+                requests.request(level, pagesRead(chosen.texel, settings.reachTexels, clipmap.pageTexels));
                 if (settings.rays.tanHalfAngle > 0.0)
-                    markRays(table, clipmap, settings, level, frame.local(glm::dvec3(g.position[k])));
+                    markRays(requests, table.windows(), clipmap, settings, level,
+                             frame.local(glm::dvec3(g.position[k])));
             }
         }
     });

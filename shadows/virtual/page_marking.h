@@ -106,4 +106,24 @@ struct PageBox {
 };
 PageBox pagesRead(const glm::dvec2& texel, double reachTexels, int pageTexels);
 
+// Requests every page of a box of one level (a table's levels: a clipmap's, or a mip chain's
+// mip * faces + face). A box just requested is not requested again: neighbouring pixels,
+// and a ray's next samples, mostly read the same pages, and a request only sets a flag, so
+// the table ends the same. One per task of rows.
+class BoxRequests {
+public:
+    explicit BoxRequests(PageTable& table) : table_(table) {}
+    void request(int level, const PageBox& box) {
+        if (level == lastLevel_ && box == last_) return;
+        for (int32_t py = box.y0; py <= box.y1; ++py)
+            for (int32_t px = box.x0; px <= box.x1; ++px) table_.request({level, px, py});
+        lastLevel_ = level, last_ = box;
+    }
+
+private:
+    PageTable& table_;
+    int lastLevel_ = 0;
+    PageBox last_{1, 1, 0, 0};   // none: x0 > x1
+};
+
 }  // namespace shadowlab::vsm
