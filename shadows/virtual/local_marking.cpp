@@ -3,11 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
-#include "shading/lights.h"
-
 namespace shadowlab::vsm {
 
 int matchingMip(const MipChain& chain, double footprint, double along, int lodBias) {
@@ -37,25 +32,16 @@ void markLocalPages(const GBuffer& g, const Camera& camera, const Light& light, 
     const PixelFootprint footprint(camera);
     std::vector<glm::dmat4> texelFromWorld;   // per level
     for (int level = 0; level < chain.levelCount(); ++level) texelFromWorld.push_back(chain.texelFromWorld(level));
-    const LightReach reaches(light);
-    levels.assign(g.pixelCount(), PixelLevel{});
-    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-        BoxRequests requests(table);
-        for (int j = rows.begin(); j < rows.end(); ++j) {
-            for (int i = 0; i < g.width; ++i) {
-                const size_t k = g.index(i, j);
-                if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
-                const glm::dvec3 P(g.position[k]);
-                const int face = chain.faceHolding(P);
-                if (face < 0) continue;
-                const double along = -(chain.faces[size_t(face)] * glm::dvec4(P, 1.0)).z;
-                const int mip = matchingMip(chain, footprint.at(P), along, settings.lodBias);
-                const int level = chain.levelOf(face, mip);
-                const glm::dvec2 texel = texelIn(texelFromWorld[size_t(level)], P);
-                levels[k] = {int8_t(level), texel};
-                requests.request(level, localPagesRead(chain, mip, texel, settings.reachTexels));
-            }
-        }
+    markEachPixel(g, light, table, levels, [&](size_t k, BoxRequests& requests) {
+        const glm::dvec3 P(g.position[k]);
+        const int face = chain.faceHolding(P);
+        if (face < 0) return PixelLevel{};
+        const double along = -(chain.faces[size_t(face)] * glm::dvec4(P, 1.0)).z;
+        const int mip = matchingMip(chain, footprint.at(P), along, settings.lodBias);
+        const int level = chain.levelOf(face, mip);
+        const glm::dvec2 texel = texelIn(texelFromWorld[size_t(level)], P);
+        requests.request(level, localPagesRead(chain, mip, texel, settings.reachTexels));
+        return PixelLevel{int8_t(level), texel};
     });
 }
 

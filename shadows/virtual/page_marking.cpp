@@ -3,11 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "scenes/camera.h"
-#include "shading/lights.h"
 
 namespace shadowlab::vsm {
 namespace {
@@ -99,24 +95,14 @@ void markPages(const GBuffer& g, const Camera& camera, const Light& sun, const L
                std::vector<PixelLevel>& levels) {
     LevelChoice choice{PixelFootprint(camera), clipmap, table.windows(), settings, {}};
     for (int l = clipmap.firstLevel; l <= clipmap.lastLevel; ++l) choice.texelsPerM.push_back(1.0 / clipmap.texelM(l));
-    const LightReach reaches(sun);
-    levels.assign(g.pixelCount(), PixelLevel{});
-    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-        BoxRequests requests(table);
-        for (int j = rows.begin(); j < rows.end(); ++j) {
-            for (int i = 0; i < g.width; ++i) {
-                const size_t k = g.index(i, j);
-                if (!g.hit[k] || !reaches(g.position[k], g.normal[k])) continue;
-                const PixelLevel chosen = choice.choose(glm::dvec3(g.position[k]), frame);
-                levels[k] = chosen;
-                if (chosen.level == kNoLevel) continue;
-                const int level = clipmap.firstLevel + chosen.level;
-                requests.request(level, pagesRead(chosen.texel, settings.reachTexels, clipmap.pageTexels));
-                if (settings.rays.tanHalfAngle > 0.0)
-                    markRays(requests, table.windows(), clipmap, settings, level,
-                             frame.local(glm::dvec3(g.position[k])));
-            }
-        }
+    markEachPixel(g, sun, table, levels, [&](size_t k, BoxRequests& requests) {
+        const PixelLevel chosen = choice.choose(glm::dvec3(g.position[k]), frame);
+        if (chosen.level == kNoLevel) return chosen;
+        const int level = clipmap.firstLevel + chosen.level;
+        requests.request(level, pagesRead(chosen.texel, settings.reachTexels, clipmap.pageTexels));
+        if (settings.rays.tanHalfAngle > 0.0)
+            markRays(requests, table.windows(), clipmap, settings, level, frame.local(glm::dvec3(g.position[k])));
+        return chosen;
     });
 }
 

@@ -20,8 +20,12 @@
 #include <limits>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shading/lights.h"
 #include "shadows/virtual/clipmap.h"
 #include "shadows/virtual/page_table.h"
 
@@ -125,5 +129,26 @@ private:
     int lastLevel_ = 0;
     PageBox last_{1, 1, 0, 0};   // none: x0 > x1
 };
+
+// The pass every marking of a virtual map makes over the pixels (the sun's, a local
+// light's), rows in parallel with one BoxRequests per task: `levels` is resized to the
+// pixels, a pixel without a surface or that `light` does not reach keeps kNoLevel, and
+// every other gets levels[k] = mark(k, requests), which requests its pages. The table ends
+// the same for any thread count.
+template <class Mark>
+void markEachPixel(const GBuffer& g, const Light& light, PageTable& table, std::vector<PixelLevel>& levels,
+                   const Mark& mark) {
+    const LightReach reaches(light);
+    levels.assign(g.pixelCount(), PixelLevel{});
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        BoxRequests requests(table);
+        for (int j = rows.begin(); j < rows.end(); ++j) {
+            for (int i = 0; i < g.width; ++i) {
+                const size_t k = g.index(i, j);
+                if (g.hit[k] && reaches(g.position[k], g.normal[k])) levels[k] = mark(k, requests);
+            }
+        }
+    });
+}
 
 }  // namespace shadowlab::vsm
