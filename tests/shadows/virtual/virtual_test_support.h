@@ -14,6 +14,7 @@
 #include "frame/registry.h"
 #include "frame/render.h"
 #include "scenes/prepared_scene.h"
+#include "tests/shadows/shadow_test_support.h"
 
 namespace shadowlab::test {
 
@@ -23,6 +24,16 @@ inline std::map<std::string, std::string> smallVirtualMap(std::map<std::string, 
     more.emplace("virtual-resolution", "4096");
     more.emplace("page-texels", "64");
     return more;
+}
+
+// A frame whose pool could not hold the pages it requested: some overflowed, their pixels
+// were counted, and each of those reads lit.
+inline void checkOverflowedIntoLitPixels(const ShadowOutputs& out) {
+    CHECK(stat(out, "cache_overflowed_pages") > 0);
+    CHECK(stat(out, "cache_missing_pixels") > 0);
+    size_t lit = 0;
+    for (float v : out.visibility) lit += v == 1.0f;
+    CHECK(lit >= size_t(stat(out, "cache_missing_pixels")));
 }
 
 // Frames of `virtual-shadow-map` with `params` over one prepared scene: next() continues the
