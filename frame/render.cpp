@@ -157,6 +157,8 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
     Frame frame;
     frame.output = technique.output;
     frame.gbuffer = renderGBuffer(prepared.world(), scene.camera, settings.simd);
+    const PreviousView* previous = settings.history ? settings.history->previousView() : nullptr;
+    if (previous) frame.gbuffer.motion = surfaceMotion(frame.gbuffer, prepared.world(), scene, *previous);
     const CasterLevel casters = prepareCasters(prepared, params, frame.preparation);
     if (technique.prepare) {
         for (TechniqueStat& s : technique.prepare(prepared, casters.casters, params)) frame.preparation.push_back(std::move(s));
@@ -183,7 +185,9 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
                                         .receiverLiftM = casters.instanceErrorM,
                                         .history = settings.history ? &settings.history->pass(prepared, technique,
                                                                                               settings.params, k)
-                                                                    : nullptr},
+                                                                    : nullptr,
+                                        .frameIndex = settings.history ? settings.history->frames() : 0,
+                                        .previous = previous},
                                        k, passCount));
         frame.techniqueMs += frame.passes.back().techniqueMs;
     }
@@ -199,6 +203,7 @@ Frame renderFrame(const PreparedScene& prepared, const Technique& technique, con
             throw std::logic_error(technique.name + ": a radiance technique returned no radiance image");
         frame.radiance = frame.shadow.radiance;
     }
+    if (settings.history) settings.history->endFrame(keepView(frame.gbuffer, scene));
     return frame;
 }
 

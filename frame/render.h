@@ -69,7 +69,9 @@ struct Frame {
 };
 
 // What a sequence of frames of one technique keeps from frame to frame: each light's
-// TechniqueHistory (shadows/technique_history.h). It belongs to the first frame's prepared
+// TechniqueHistory (shadows/technique_history.h), the view of the frame before (its camera,
+// instances and surfaces, which the next frame's motion vectors point into:
+// shading/motion_vectors.h) and how many frames it has seen. It belongs to the first frame's prepared
 // scene, technique and settings; a frame of another is a std::logic_error, since its states
 // would be read as the wrong ones. A copy is a snapshot (app/common/timing.h).
 class FrameHistory {
@@ -78,6 +80,16 @@ public:
     // (the settings as given) over `prepared`.
     TechniqueHistory& pass(const PreparedScene& prepared, const Technique& technique,
                            const std::map<std::string, std::string>& params, size_t light);
+
+    // Frames rendered with this history so far: the next frame's index (ShadowInputs::frameIndex).
+    uint64_t frames() const { return frames_; }
+    // The view of the last frame rendered; null before the first.
+    const PreviousView* previousView() const { return previous_ ? &*previous_ : nullptr; }
+    // Called by renderFrame once a frame is done: it becomes the frame before.
+    void endFrame(PreviousView view) {
+        previous_ = std::move(view);
+        ++frames_;
+    }
 
 private:
     struct Owner {
@@ -88,6 +100,8 @@ private:
     };
     std::optional<Owner> owner_;
     std::vector<TechniqueHistory> passes_;
+    std::optional<PreviousView> previous_;
+    uint64_t frames_ = 0;
 };
 
 struct FrameSettings {

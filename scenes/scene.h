@@ -150,6 +150,7 @@ struct Camera {
     float fovyDeg = 45.0f;
     int width = 1280, height = 800;
     float zNear = 0.1f, zFar = 100.0f;
+    bool operator==(const Camera&) const = default;
 };
 
 struct Environment {

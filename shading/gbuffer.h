@@ -13,6 +13,20 @@ namespace shadowlab {
 
 inline constexpr uint32_t kNoTriangle = 0xffffffffu;
 
+// Where each pixel's surface point was in the frame before of a sequence (a fly-through):
+// the point carried back with its instance's move, then seen by the previous camera
+// (shading/motion_vectors.h). Every array is empty in a frame without a frame before (a
+// single render, a sequence's frame 0), else width * height long, 0 where hit = 0.
+struct SurfaceMotion {
+    // The motion vector (conventions.md, "motion.x, motion.y"): the point's position in the
+    // previous image minus this pixel's centre, in pixels, x to the right and y down, so the
+    // point was at (i + 0.5, j + 0.5) + offset; infinite where the point was behind the
+    // previous camera.
+    std::vector<glm::vec2> pixelOffset;
+    std::vector<glm::vec3> previousPosition;   // the point where it was, world space
+    std::vector<glm::vec3> previousNormal;     // its geometric normal there: N turned with its instance
+};
+
 struct GBuffer {
     int width = 0, height = 0;
     std::vector<uint8_t> hit;            // 1 where a surface covers the pixel centre
@@ -25,6 +39,7 @@ struct GBuffer {
     // empty when the world has none (WorldGeometry::cornerUvs), 0 where hit = 0.
     std::vector<glm::vec2> uv;
     std::vector<float> depth;            // window depth as in the depth buffer (1 = background)
+    SurfaceMotion motion;                // empty without a frame before
 
     size_t pixelCount() const { return size_t(width) * size_t(height); }
     size_t index(int i, int j) const { return size_t(j) * size_t(width) + size_t(i); }

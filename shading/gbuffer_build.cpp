@@ -118,7 +118,11 @@ void requireConsistent(const GBuffer& g, const char* who) {
     const bool consistent = g.width >= 0 && g.height >= 0 && g.hit.size() == n && g.position.size() == n &&
                             g.normal.size() == n && g.shadingNormal.size() == n && g.material.size() == n && g.triangle.size() == n &&
                             (g.uv.empty() || g.uv.size() == n) && g.depth.size() == n;
-    if (!consistent) {
+    const SurfaceMotion& m = g.motion;
+    const bool motionConsistent = m.pixelOffset.size() == m.previousPosition.size() &&
+                                  m.pixelOffset.size() == m.previousNormal.size() &&
+                                  (m.pixelOffset.empty() || m.pixelOffset.size() == n);
+    if (!consistent || !motionConsistent) {
         throw std::invalid_argument(std::string(who) + ": G-buffer arrays do not all have " +
                                     std::to_string(g.width) + " x " + std::to_string(g.height) + " entries");
     }

@@ -34,7 +34,7 @@ GBuffer buildGBuffer(const WorldGeometry& world, const Camera& camera,
                      const std::vector<float>& depth);
 
 // Throws std::invalid_argument (starting with `who`) unless every per-pixel array of the
-// G-buffer has width * height entries (uv: or none); stages that read a G-buffer they did
+// G-buffer has width * height entries (uv and the motion arrays: or none); stages that read a G-buffer they did
 // not build call it first.
 void requireConsistent(const GBuffer& gbuffer, const char* who);
 

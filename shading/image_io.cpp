@@ -331,6 +331,12 @@ void setGBuffer(ImageChannels& image, const GBuffer& gbuffer) {
     setComponents(image, {channel::Nsx, channel::Nsy, channel::Nsz}, gbuffer.shadingNormal);
     image.set(channel::hit, std::vector<float>(gbuffer.hit.begin(), gbuffer.hit.end()));
     image.set(channel::depth, gbuffer.depth);
+    const std::vector<glm::vec2>& offset = gbuffer.motion.pixelOffset;
+    if (offset.empty()) return;
+    std::vector<float> x(offset.size()), y(offset.size());
+    for (size_t k = 0; k < offset.size(); ++k) x[k] = offset[k].x, y[k] = offset[k].y;
+    image.set(channel::motionX, std::move(x));
+    image.set(channel::motionY, std::move(y));
 }
 
 void writeExr(const fs::path& path, const ImageChannels& image) {

@@ -35,6 +35,8 @@ inline constexpr const char* Nsz = "Ns.z";
 inline constexpr const char* hit = "hit";
 inline constexpr const char* V = "V";
 inline constexpr const char* depth = "depth";
+inline constexpr const char* motionX = "motion.x";   // GBuffer::motion's pixel offset, pixels
+inline constexpr const char* motionY = "motion.y";
 inline constexpr const char* stencil = "stencil";
 inline constexpr const char* Y = "Y";   // one value: luminance of R, G, B, or a debug buffer
 }  // namespace channel
@@ -58,8 +60,9 @@ struct ImageChannels {
 
 // Radiance as channels R, G, B.
 void setRadiance(ImageChannels& image, const std::vector<glm::vec3>& radiance);
-// G-buffer as channels P.x P.y P.z N.x N.y N.z Ns.x Ns.y Ns.z hit depth. Sets the size from the G-buffer
-// when the image is still empty.
+// G-buffer as channels P.x P.y P.z N.x N.y N.z Ns.x Ns.y Ns.z hit depth, and motion.x motion.y
+// in a frame with a frame before (GBuffer::motion). Sets the size from the G-buffer when the
+// image is still empty.
 void setGBuffer(ImageChannels& image, const GBuffer& gbuffer);
 
 // One FLOAT channel per name, ZIP compression (lossless), scanlines top to bottom.

@@ -18,6 +18,7 @@
 #include "scenes/prepared_scene.h"
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shading/motion_vectors.h"
 #include "shadows/progress.h"
 #include "shadows/technique_history.h"
 #include "shadows/technique_params.h"
@@ -53,6 +54,13 @@ struct ShadowInputs {
     // caller's, one per light of its series; null: the frame stands alone, and kept() gives
     // it a history that ends with these inputs.
     TechniqueHistory* history = nullptr;
+    // The frame's place in its sequence: 0 for a frame that stands alone and a sequence's
+    // first, then one more each frame (what a per-frame noise pattern advances with).
+    uint64_t frameIndex = 0;
+    // The view of the frame before, which gbuffer.motion points into; null where frameIndex
+    // is 0. A temporal technique reprojects its own result of that frame with the two
+    // (shadows/temporal/reprojection.h).
+    const PreviousView* previous = nullptr;
 
     const Scene& scene() const { return prepared.scene(); }
     const WorldGeometry& receiverWorld() const { return prepared.world(); }
