@@ -2,13 +2,15 @@
 // 4th ed., section 7.6). Per camera pixel: the blocker search and the penumbra width of
 // eq. 7.6 (blocker_search.h), then percentage-closer filtering (RTR 7.5) over a rotated
 // Poisson disk of that width (pcf.h). Pixels are independent and rows run in parallel;
-// the only per-pixel randomness is the disk's rotation hashed from the pixel index, so V
+// the only per-pixel randomness is the disk's rotation hashed from the pixel index (or, with
+// rotation=ign, interleaved gradient noise at the frame: pcf.h), so V
 // is the same bytes for any thread count.
 #include <algorithm>
 #include <stdexcept>
 
 #include "shadows/debug_buffers.h"
 #include "shadows/filtered/pcss.h"
+#include "shadows/maps/shadow_map_settings.h"
 #include "shadows/filtered/soft_shadow_techniques.h"
 #include "shadows/maps/pcf.h"
 #include "shadows/maps/shadow_lookup.h"
@@ -94,7 +96,9 @@ const SettingsTable<PcssSettings>& pcssSettingsTable() {
             .include(member(&S::search), blockerSearchSettingsTable())
             .integer("filter-taps", member(&S::filterTaps), 1, 128, "PCF: Poisson taps over the eq. 7.6 width")
             .flag("min-max-hierarchy", member(&S::minMaxHierarchy),
-                  "skip the taps the map's min/max depth hierarchy proves lit or shadowed (same V)");
+                  "skip the taps the map's min/max depth hierarchy proves lit or shadowed (same V)")
+            .choice("rotation", member(&S::rotation), rotationNoiseChoices(),
+                    "what turns the search and filter disks per pixel");
     return table;
 }
 
@@ -113,7 +117,9 @@ PcssBuffers pcssPerPixel(const ShadowInputs& in, const SoftShadowMap& soft, cons
                          const std::optional<MinMaxHierarchy>& hierarchy) {
     const GBuffer& g = in.gbuffer;
     const PcfKernel searchDisk = makePcfKernel({FilterKind::Poisson, 3, settings.search.taps, 1.0});
-    const PcfKernel filterDisk = makePcfKernel({FilterKind::Poisson, 3, settings.filterTaps, 1.0});
+    // The lookup turns both disks by the filter's rotation.
+    const PcfKernel filterDisk =
+        makePcfKernel({FilterKind::Poisson, 3, settings.filterTaps, 1.0, settings.rotation}, in.frameIndex);
     const LookupPass pass(soft.map, soft.light,
                           {searchDisk, settings.search.region, filterDisk, soft.lightTexels,
                            hierarchy ? &hierarchy->forKernel() : nullptr},

@@ -9,6 +9,7 @@
 #include "shadows/filtered/blocker_search.h"
 #include "shadows/filtered/soft_shadow_map.h"
 #include "shadows/maps/min_max_hierarchy.h"
+#include "shadows/maps/pcf.h"
 #include "shadows/technique.h"
 
 namespace shadowlab {
@@ -18,9 +19,10 @@ struct PcssSettings {
     BlockerSearchSettings search;
     int filterTaps = 32;            // Poisson taps of the PCF over the eq. 7.6 width
     bool minMaxHierarchy = false;   // skip the taps the map's min/max hierarchy proves (same bits)
+    RotationNoise rotation = RotationNoise::Hash;   // what turns both disks per pixel (pcf.h)
 };
 
-// resolution, search-taps, search-region, filter-taps, min-max-hierarchy.
+// resolution, search-taps, search-region, filter-taps, min-max-hierarchy, rotation.
 const SettingsTable<PcssSettings>& pcssSettingsTable();
 
 // The map of the light's centre, its view wide enough for every receiver's blocker search.

@@ -87,7 +87,7 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     cm = renderCascades(in.light, in.camera(), in.gbuffer, in.casterWorld(), cs, depthMapSettings(s), in.simd, std::move(cm));
     timer.lap("cascades");
     ShadowLookup lookup = lookUpShadows(in.gbuffer, in.camera(), in.light, cm.maps,
-                                        CascadeSelector{cm, in.camera()}, s.bias, makePcfKernel(s.filter), in.simd,
+                                        CascadeSelector{cm, in.camera()}, s.bias, makePcfKernel(s.filter, in.frameIndex), in.simd,
                                         !in.debugDir.empty());
     timer.lap("lookup");
     addStats(out, cm, s.resolution, lookup);

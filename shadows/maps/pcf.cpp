@@ -44,8 +44,8 @@ std::vector<glm::dvec2> bestCandidateDisk(int taps) {
 
 }  // namespace
 
-PcfKernel makePcfKernel(const FilterSettings& settings) {
-    PcfKernel kernel{settings, {}};
+PcfKernel makePcfKernel(const FilterSettings& settings, uint64_t frame) {
+    PcfKernel kernel{settings, {}, frame};
     if (settings.kind == FilterKind::Poisson) kernel.disk = bestCandidateDisk(settings.poissonTaps);
     return kernel;
 }
@@ -79,10 +79,30 @@ double poissonRotationAngle(int index) { return 2.0 * std::numbers::pi * double(
 
 double poissonRotation(uint64_t pixel) { return poissonRotationAngle(poissonRotationIndex(pixel)); }
 
-glm::dvec2 poissonRotationCosSin(uint64_t pixel) {
+double interleavedGradientNoise(int i, int j, uint64_t frame) {
+    const double shift = 5.588238 * double(frame % 64);
+    const double x = i + 0.5 + shift, y = j + 0.5 + shift;
+    const double inner = 0.06711056 * x + 0.00583715 * y;
+    const double outer = 52.9829189 * (inner - std::floor(inner));
+    return outer - std::floor(outer);
+}
+
+int poissonRotationIndex(RotationNoise noise, uint64_t frame, int i, int j, int width) {
+    if (noise == RotationNoise::Hash) return poissonRotationIndex(uint64_t(j) * uint64_t(width) + uint64_t(i));
+    const int index = int(interleavedGradientNoise(i, j, frame) * kPoissonRotations);
+    return std::min(index, kPoissonRotations - 1);
+}
+
+glm::dvec2 poissonRotationCosSin(int index) {
     // Rounded to float as shadow_lookup.cpp's table holds them, so both turn a disk alike.
-    const double angle = poissonRotation(pixel);
+    const double angle = poissonRotationAngle(index);
     return {double(float(portable::cos(angle))), double(float(portable::sin(angle)))};
+}
+
+glm::dvec2 kernelRotation(const PcfKernel& kernel, size_t pixel, int width) {
+    if (kernel.settings.kind != FilterKind::Poisson) return {1.0, 0.0};
+    const int i = int(pixel % size_t(width)), j = int(pixel / size_t(width));
+    return poissonRotationCosSin(poissonRotationIndex(kernel.settings.rotation, kernel.frame, i, j, width));
 }
 
 }  // namespace shadowlab

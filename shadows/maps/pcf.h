@@ -12,7 +12,9 @@
 //             fixed), scaled to a radius in texels and rotated per pixel by one of 1024
 //             angles hashed from the pixel index (Figure 7.23, middle right: aliasing
 //             becomes noise). The hash is a pure function of the index, so no random state is
-//             shared between threads and the result does not depend on them.
+//             shared between threads and the result does not depend on them. Or, for a
+//             filter a temporal resolve averages over frames (docs/temporal.md), one of the
+//             1024 angles picked by interleaved gradient noise, which moves with the frame.
 #pragma once
 
 #include <cmath>
@@ -28,20 +30,29 @@ namespace shadowlab {
 
 enum class FilterKind { Nearest, Bilinear, Grid, Poisson };
 
+// What turns the Poisson disk from pixel to pixel.
+enum class RotationNoise {
+    Hash,                  // a hash of the pixel index: the same noise every frame
+    InterleavedGradient,   // interleaved gradient noise at the frame (Jimenez 2014)
+};
+
 struct FilterSettings {
     FilterKind kind = FilterKind::Nearest;
     int gridSize = 3;                  // grid: taps per side
     int poissonTaps = 16;              // poisson: taps
     double poissonRadiusTexels = 1.5;  // poisson: radius of the disk
+    RotationNoise rotation = RotationNoise::Hash;   // poisson
 };
 
-// A filter ready to use: the settings and, for poisson, its taps on the unit disk.
+// A filter ready to use: the settings, for poisson its taps on the unit disk, and the frame
+// of a sequence it filters (what interleaved gradient noise moves with).
 struct PcfKernel {
     FilterSettings settings;
     std::vector<glm::dvec2> disk;
+    uint64_t frame = 0;
 };
 
-PcfKernel makePcfKernel(const FilterSettings& settings);
+PcfKernel makePcfKernel(const FilterSettings& settings, uint64_t frame = 0);
 
 // How far (texels) from the receiver the kernel reaches, for fitting margins.
 double kernelRadiusTexels(const FilterSettings& settings);
@@ -59,12 +70,26 @@ double tapReachTexels(const FilterSettings& settings);
 // than the spacing of 16 taps, so the noise looks the same.
 inline constexpr int kPoissonRotations = 1024;
 int poissonRotationIndex(uint64_t pixel);
+// Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
+// Advanced Warfare", slide "Interleaved Gradient Noise"): fract(52.9829189 fract(0.06711056 x
+// + 0.00583715 y)) at the pixel centre (x, y) = (i + 0.5, j + 0.5), shifted by 5.588238 pixels
+// along both axes per frame, frame modulo 64 (the talk's temporal variant). Neighbouring
+// pixels get angles far apart in a pattern a 3x3 neighbourhood averages well, and a pixel
+// walks through well-spread angles over frames. In double: the same bits on every CPU.
+double interleavedGradientNoise(int i, int j, uint64_t frame);
+// The rotation of pixel (i, j) of a row-major image `width` pixels wide at a sequence's
+// `frame`: the noise picks one of the kPoissonRotations angles.
+int poissonRotationIndex(RotationNoise noise, uint64_t frame, int i, int j, int width);
 // Radians in [0, 2 pi): 2 pi poissonRotationIndex(pixel) / kPoissonRotations.
 double poissonRotation(uint64_t pixel);
 double poissonRotationAngle(int index);
 
-// The pixel's (cos, sin) of poissonRotation, as the shadow maps' lookup tabulates them.
-glm::dvec2 poissonRotationCosSin(uint64_t pixel);
+// The (cos, sin) of angle `index` (poissonRotationAngle), as the shadow maps' lookup
+// tabulates them.
+glm::dvec2 poissonRotationCosSin(int index);
+// The (cos, sin) `kernel` turns its disk by at pixel `pixel` of a row-major image `width`
+// pixels wide: its noise's angle for a poisson kernel, (1, 0) for the others.
+glm::dvec2 kernelRotation(const PcfKernel& kernel, size_t pixel, int width);
 
 // Offset (texels) of unit-disk tap d rotated by (cos, sin) = rotation and scaled by
 // radiusTexels per axis (an ellipse where a map's texels are not square in the world).

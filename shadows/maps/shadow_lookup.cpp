@@ -60,6 +60,8 @@ struct LookupPass::Tables {
     int width = 1;
     bool rotated = false;     // the filter turns a Poisson disk per pixel
     std::vector<float> rotationCos, rotationSin;   // rotated: per angle of pcf.h, its cosine and sine
+    RotationNoise rotationNoise = RotationNoise::Hash;   // rotated: which angle a pixel takes
+    uint64_t frame = 0;                                  // the kernel's frame, for that noise
     bool soft = false;        // pcss, chs, blocker search: it reads the receivers' distance, writes d_o
     bool penumbra = false;    // pcss, chs: it writes the penumbra's width too
     bool proving = false;     // pcss with a hierarchy: it writes the known taps too
@@ -102,6 +104,7 @@ LookupPass::Tables::Tables(std::span<const DepthMap> depthMaps, const Light& lig
     rotated = filterIndex == kLookupPoisson || filterIndex == kLookupPcss || filterIndex == kLookupBlockerSearch;
     penumbra = filterIndex == kLookupPcss || filterIndex == kLookupChs;
     soft = penumbra || filterIndex == kLookupBlockerSearch;
+    rotationNoise = kernel.settings.rotation, frame = kernel.frame;
     for (int a = 0; rotated && a < kPoissonRotations; ++a) {
         rotationCos.push_back(float(portable::cos(poissonRotationAngle(a))));
         rotationSin.push_back(float(portable::sin(poissonRotationAngle(a))));
@@ -167,9 +170,9 @@ void LookupPass::lookUpRow(const GBuffer& g, int j, Scratch& scratch, const Outp
     if (t.chs && !out.searchLevel) throw std::invalid_argument("shadow lookup: a chs pass writes the search level");
     const int count = g.width;
     if (t.rotated) {
-        // The per-pixel rotation of the Poisson disk, a hash of the pixel index (pcf.h).
+        // The per-pixel rotation of the Poisson disk, the kernel's noise (pcf.h).
         for (int i = 0; i < count; ++i) {
-            const int a = poissonRotationIndex(g.index(i, j));
+            const int a = poissonRotationIndex(t.rotationNoise, t.frame, i, j, g.width);
             scratch.rotationCos[size_t(i)] = t.rotationCos[size_t(a)], scratch.rotationSin[size_t(i)] = t.rotationSin[size_t(a)];
         }
     }

@@ -104,7 +104,7 @@ struct CubeFace {
 };
 
 ShadowLookup lookUp(const ShadowInputs& in, const Light& light, const LightMaps& lm, const ShadowMapSettings& s) {
-    const PcfKernel kernel = makePcfKernel(s.filter);
+    const PcfKernel kernel = makePcfKernel(s.filter, in.frameIndex);
     const Camera& camera = in.camera();
     const bool everyPixelDensity = !in.debugDir.empty();
     if (lm.cube) return lookUpShadows(in.gbuffer, camera, light, lm.maps, CubeFace{lm.maps}, s.bias, kernel, in.simd,

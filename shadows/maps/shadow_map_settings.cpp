@@ -22,6 +22,13 @@ const SettingsTable<BiasSettings>& biasSettingsTable() {
     return table;
 }
 
+const std::vector<Choice<RotationNoise>>& rotationNoiseChoices() {
+    static const std::vector<Choice<RotationNoise>> choices = {
+        {"hash", RotationNoise::Hash, "hashed from the pixel, the same every frame"},
+        {"ign", RotationNoise::InterleavedGradient, "interleaved gradient noise moving with the frame (for temporal=on)"}};
+    return choices;
+}
+
 const SettingsTable<FilterSettings>& filterSettingsTable() {
     using S = FilterSettings;
     static const auto table =
@@ -33,7 +40,9 @@ const SettingsTable<FilterSettings>& filterSettingsTable() {
                      {"poisson", FilterKind::Poisson, "rotated Poisson disk PCF"}})
             .integer("grid-size", member(&S::gridSize), 2, 15, "grid: taps per side")
             .integer("poisson-taps", member(&S::poissonTaps), 1, 64, "poisson: taps")
-            .real("poisson-radius", member(&S::poissonRadiusTexels), 0.0, 64.0, "poisson: radius in texels");
+            .real("poisson-radius", member(&S::poissonRadiusTexels), 0.0, 64.0, "poisson: radius in texels")
+            .choice("poisson-rotation", member(&S::rotation), rotationNoiseChoices(),
+                    "poisson: what turns the disk per pixel");
     return table;
 }
 

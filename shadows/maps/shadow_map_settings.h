@@ -25,6 +25,8 @@ const SettingsTable<BiasSettings>& biasSettingsTable();
 // The PCF rows (`filter`, `grid-size`, `poisson-taps`, `poisson-radius`), which every
 // technique filtering a map's compares shares.
 const SettingsTable<FilterSettings>& filterSettingsTable();
+// The choices of a Poisson disk's per-pixel rotation (pcf.h, RotationNoise): hash, ign.
+const std::vector<Choice<RotationNoise>>& rotationNoiseChoices();
 
 // Its parameters (docs/shadow-maps.md), each bound to its member; the defaults above.
 const SettingsTable<ShadowMapSettings>& shadowMapSettingsTable();

@@ -10,7 +10,6 @@ LookupResult lookUpLocalPages(const GBuffer& g, const Light& light, const MipCha
                               const PagePool& pool) {
     const std::vector<DepthMap> maps = levelMaps(chain);
     const PageTexels texels(chain.pageTexels, table, pool);
-    const bool rotated = filter.settings.kind == FilterKind::Poisson;
     return lookUpEachPixel(g, light, levels, [&](size_t k, const PixelLevel& p, bool& missing) {
         const DepthMap& map = maps[size_t(p.level)];
         const MapReceiver r =
@@ -23,7 +22,7 @@ LookupResult lookUpLocalPages(const GBuffer& g, const Light& light, const MipCha
             missing |= stored == PageTexels::kMissingTexel;
             return stored == PageTexels::kMissingTexel || r.litByStored(stored, x, y);
         };
-        const glm::dvec2 rotation = rotated ? poissonRotationCosSin(k) : glm::dvec2(1.0, 0.0);
+        const glm::dvec2 rotation = kernelRotation(filter, k, g.width);
         return float(pcfLitFraction(filter, r.texel, rotation, litAt));
     });
 }

@@ -99,7 +99,7 @@ ShadowOutputs runLocalVirtualMap(const ShadowInputs& in, const LocalMapSettings&
     if (samples)
         rays = traceLocalShadowMapRays(in.gbuffer, in.light, *samples, s.smrt, state.levels, table, state.pool);
     else
-        rays.lookup = lookUpLocalPages(in.gbuffer, in.light, chain, s.bias, makePcfKernel(s.filter), state.levels,
+        rays.lookup = lookUpLocalPages(in.gbuffer, in.light, chain, s.bias, makePcfKernel(s.filter, in.frameIndex), state.levels,
                                        table, state.pool);
     LookupResult& lookup = rays.lookup;
     timer.lap("lookup");

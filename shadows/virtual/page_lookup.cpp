@@ -40,7 +40,6 @@ LookupResult lookUpPages(const GBuffer& g, const Light& sun, const LightFrame& f
     const std::vector<DepthMap> maps = levelMaps(frame, clipmap, range);
     const PageTexels texels(clipmap.pageTexels, table, pool);
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(sun.direction));
-    const bool rotated = filter.settings.kind == FilterKind::Poisson;
     return lookUpEachPixel(g, sun, levels, [&](size_t k, const PixelLevel& p, bool& missing) {
         const MapReceiver r = mapReceiver(maps[size_t(p.level)], glm::dvec3(g.position[k]), glm::dvec3(g.normal[k]),
                                           towardsLight, bias);
@@ -51,7 +50,7 @@ LookupResult lookUpPages(const GBuffer& g, const Light& sun, const LightFrame& f
             missing |= stored == PageTexels::kMissingTexel;
             return stored == PageTexels::kMissingTexel || r.litByStored(stored, x, y);
         };
-        const glm::dvec2 rotation = rotated ? poissonRotationCosSin(k) : glm::dvec2(1.0, 0.0);
+        const glm::dvec2 rotation = kernelRotation(filter, k, g.width);
         return float(pcfLitFraction(filter, r.texel, rotation, litAt));
     });
 }

@@ -160,7 +160,7 @@ ShadowOutputs runVirtualShadowMap(const ShadowInputs& in) {
                                   table, state.pool);
     else
         rays.lookup = lookUpPages(in.gbuffer, in.light, frame, s.clipmap, state.range, s.bias,
-                                  makePcfKernel(s.filter), levels, table, state.pool);
+                                  makePcfKernel(s.filter, in.frameIndex), levels, table, state.pool);
     LookupResult& lookup = rays.lookup;
     timer.lap("lookup");
     ShadowOutputs out;

@@ -133,7 +133,7 @@ TEST_CASE("virtual pages: every texel a PCF lookup reads, with its bias, lies in
                 const MapReceiver r = mapReceiver(maps[size_t(p.level)], glm::dvec3(view.gbuffer.position[k]),
                                                   glm::dvec3(view.gbuffer.normal[k]),
                                                   glm::normalize(glm::dvec3(view.sun().direction)), bias);
-                pcfLitFraction(kernel, r.texel, poissonRotationCosSin(k), [&](int x, int y) {
+                pcfLitFraction(kernel, r.texel, poissonRotationCosSin(poissonRotationIndex(k)), [&](int x, int y) {
                     const PageKey key{level, int32_t(std::floor(x / double(c.pageTexels))),
                                       int32_t(std::floor(y / double(c.pageTexels)))};
                     ++taps, misses += table.physical(key) == kNoPhysicalPage;
