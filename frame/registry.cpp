@@ -16,6 +16,7 @@
 #include "shadows/projected/projected_texture.h"
 #include "shadows/reference/reference_techniques.h"
 #include "shadows/screen/contact_shadows.h"
+#include "shadows/temporal/temporal_accumulation.h"
 #include "shadows/virtual/virtual_shadow_map.h"
 #include "shadows/volumes/shadow_volume.h"
 #include "shadows/wedges/soft_shadow_volumes.h"
@@ -28,7 +29,7 @@ const std::vector<Technique>& techniques() {
         unshadowedTechnique(),
         referenceTechnique(),
         softReferenceTechnique(),
-        withCasterLod(shadowMapTechnique()),
+        withCasterLod(withTemporalAccumulation(shadowMapTechnique())),
         withCasterLod(cascadedShadowMapTechnique()),
         withCasterLod(virtualShadowMapTechnique()),
         withCasterLod(irregularZBufferTechnique()),
@@ -36,7 +37,7 @@ const std::vector<Technique>& techniques() {
         withCasterLod(shadowVolumeTechnique()),
         withCasterLod(planarTechnique()),
         withCasterLod(projectedTextureTechnique()),
-        withCasterLod(pcssTechnique()),
+        withCasterLod(withTemporalAccumulation(pcssTechnique())),
         withCasterLod(contactHardeningTechnique()),
         withCasterLod(izbPcssTechnique()),
         withCasterLod(filteredShadowMapTechnique(MomentKind::Variance)),
