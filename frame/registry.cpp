@@ -16,6 +16,7 @@
 #include "shadows/projected/projected_texture.h"
 #include "shadows/reference/reference_techniques.h"
 #include "shadows/screen/contact_shadows.h"
+#include "shadows/temporal/confidence_reprojection.h"
 #include "shadows/temporal/temporal_accumulation.h"
 #include "shadows/virtual/virtual_shadow_map.h"
 #include "shadows/volumes/shadow_volume.h"
@@ -30,6 +31,7 @@ const std::vector<Technique>& techniques() {
         referenceTechnique(),
         softReferenceTechnique(),
         withCasterLod(withTemporalAccumulation(shadowMapTechnique())),
+        withCasterLod(confidenceReprojectionTechnique()),
         withCasterLod(cascadedShadowMapTechnique()),
         withCasterLod(virtualShadowMapTechnique()),
         withCasterLod(irregularZBufferTechnique()),

@@ -108,6 +108,11 @@ struct Technique {
     // techniques; `reference-soft`, the visible fraction of an area light, for soft ones.
     std::string referenceName = "reference";
     TechniqueOutput output = TechniqueOutput::Visibility;
+    // Whether, at its default settings, a frame of a sequence depends on the frames before
+    // (it reads its own past results, or its noise moves with the frame: docs/temporal.md),
+    // so that only a sequence's first frame is a frame alone. False: what it keeps between
+    // frames is memory and caches, and every frame gives the bytes of a frame alone.
+    bool temporal = false;
     // Scene preparation the technique reads with these settings (the casters' edge
     // adjacency, an environment's tables): the frame calls it with the scene and its casters
     // (ShadowInputs::casters) before the technique's time starts (frame/render.h), so that

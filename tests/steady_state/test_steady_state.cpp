@@ -125,19 +125,29 @@ std::vector<std::pair<Kept, int>> keptTechniquesAtThreads() {
     return out;
 }
 
-// Frames 1 to 3 of a still view with a history; the third checked against a frame alone.
-void checkThirdFrame(const PreparedScene& prepared, const Technique& technique,
-                     const std::map<std::string, std::string>& params) {
+// Frames 1 to 3 of a still view with a history; the third checked against a frame alone. A
+// temporal technique's frames depend on the ones before by design (Technique::temporal): its
+// first frame is checked against a frame alone, and its third against another sequence's.
+std::vector<Frame> firstThreeFrames(const PreparedScene& prepared, const Technique& technique,
+                                    const std::map<std::string, std::string>& params) {
     FrameHistory history;
     FrameSettings settings;
     settings.params = params;
     settings.history = &history;
-    renderFrame(prepared, technique, settings);
-    renderFrame(prepared, technique, settings);
-    const Frame third = renderFrame(prepared, technique, settings);
+    std::vector<Frame> frames;
+    for (int f = 0; f < 3; ++f) frames.push_back(renderFrame(prepared, technique, settings));
+    return frames;
+}
+
+void checkThirdFrame(const PreparedScene& prepared, const Technique& technique,
+                     const std::map<std::string, std::string>& params) {
+    const std::vector<Frame> frames = firstThreeFrames(prepared, technique, params);
     FrameSettings alone;
     alone.params = params;
-    checkSameFrame(third, renderFrame(prepared, technique, alone));
+    const Frame single = renderFrame(prepared, technique, alone);
+    if (!technique.temporal) return checkSameFrame(frames[2], single);
+    checkSameFrame(frames[0], single);
+    checkSameFrame(frames[2], firstThreeFrames(prepared, technique, params)[2]);
 }
 
 }  // namespace
