@@ -14,6 +14,7 @@
 #include "shadows/maps/shadow_map_techniques.h"
 #include "shadows/planar/planar.h"
 #include "shadows/projected/projected_texture.h"
+#include "shadows/raytraced/ray_traced.h"
 #include "shadows/reference/reference_techniques.h"
 #include "shadows/screen/contact_shadows.h"
 #include "shadows/virtual/virtual_shadow_map.h"
@@ -28,6 +29,7 @@ const std::vector<Technique>& techniques() {
         unshadowedTechnique(),
         referenceTechnique(),
         softReferenceTechnique(),
+        withCasterLod(rayTracedTechnique()),
         withCasterLod(shadowMapTechnique()),
         withCasterLod(cascadedShadowMapTechnique()),
         withCasterLod(virtualShadowMapTechnique()),
