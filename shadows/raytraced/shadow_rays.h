@@ -9,10 +9,11 @@
 // frame's samples estimate again, which is what a temporal filter or a denoiser averages.
 //
 // Beside V it returns what a denoiser reads: the distance from P to the first occluder,
-// averaged over the pixel's occluded rays (SIGMA's "hit distance" input, NVIDIA's NRD
-// documentation; the "ray hit distance" AMD FidelityFX's shadow denoiser sizes its filter
-// by), how many rays were occluded, and the light's angular size from P, which with the
-// distance gives the penumbra's width.
+// averaged over the pixel's occluded rays, and the light's angular size from P, from which
+// SIGMA's documented penumbra input is made (NVIDIA's NRD README: IN_PENUMBRA, the distance
+// times the tangent of the light's angular radius, halved); how many rays were occluded
+// (at one ray per pixel, the hit mask AMD FidelityFX's shadow denoiser documents as its
+// input).
 #pragma once
 
 #include <cstdint>
