@@ -299,21 +299,19 @@ struct ReferenceVisibility::RayBatch::Samples {
     uint64_t count = 0;                  // rays traced
 
     void clear() {
-        lights.clear(), occluders.clear(), rays.clear(), sampleOfRay.clear();
+        lights.clear(), rays.clear(), sampleOfRay.clear();
     }
-    void addKnown(const glm::vec3& light) {
-        lights.push_back(light);
-        occluders.push_back(glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
-    }
+    void addKnown(const glm::vec3& light) { lights.push_back(light); }
     void addRay(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
         rays.push_back(shadowRay(origin, direction, tFar, uint32_t(rays.size())));
         sampleOfRay.push_back(uint32_t(lights.size()));
-        addKnown(glm::vec3(0.0f));
+        lights.push_back(glm::vec3(0.0f));
     }
 
     // Fills in the light of every ray's sample; with `closest`, the casters' triangles, the
     // rays are closest-hit queries and each sample's first occluder is filled in too.
     void trace(RTCScene scene, const CasterTransmission* transmission, RayQueries queries, const Triangles* closest) {
+        if (closest) occluders.assign(lights.size(), glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
         if (rays.empty()) return;
         TransmissionContext context{{}, transmission, &crossed};
         rtcInitIntersectContext(&context.base);
