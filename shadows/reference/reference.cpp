@@ -325,6 +325,10 @@ struct ReferenceVisibility::RayBatch::Samples {
             for (RTCRay& ray : rays) rtcOccluded1(scene, &context.base, &ray);
         }
         count += rays.size();
+        if (!transmission && !closest) {   // opaque casters: no crossings to share out
+            for (uint32_t k = 0; k < rays.size(); ++k) lights[sampleOfRay[k]] = lightOfRay(rays[k], nullptr, {});
+            return;
+        }
         if (transmission) std::ranges::sort(crossed, crossingOrder);   // opaque casters: none
         auto first = crossed.begin();
         for (uint32_t k = 0; k < rays.size(); ++k) {
