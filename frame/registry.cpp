@@ -14,6 +14,7 @@
 #include "shadows/maps/shadow_map_techniques.h"
 #include "shadows/planar/planar.h"
 #include "shadows/projected/projected_texture.h"
+#include "shadows/raytraced/ray_traced.h"
 #include "shadows/reference/reference_techniques.h"
 #include "shadows/screen/contact_shadows.h"
 #include "shadows/temporal/confidence_reprojection.h"
@@ -30,6 +31,7 @@ const std::vector<Technique>& techniques() {
         unshadowedTechnique(),
         referenceTechnique(),
         softReferenceTechnique(),
+        withCasterLod(withTemporalAccumulation(rayTracedTechnique())),
         withCasterLod(withTemporalAccumulation(shadowMapTechnique())),
         withCasterLod(confidenceReprojectionTechnique()),
         withCasterLod(cascadedShadowMapTechnique()),

@@ -173,7 +173,7 @@ namespace shadowlab {
 
 void AreaLightPoints::jitter(int n, Pcg32& rng) {
     const size_t count = size_t(n) * size_t(n);
-    u_.resize(count), points_.resize(count);
+    u_.resize(count);
     for (int b = 0; b < n; ++b) {
         for (int a = 0; a < n; ++a) u_[size_t(a) + size_t(n) * size_t(b)] = jitteredSample(a, b, n, rng);
     }
@@ -199,8 +199,8 @@ void AreaLightPoints::squaresToDisk() {
     }
 }
 
-void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
-    jitter(n, rng);
+void AreaLightPoints::place(const AreaLightFrame& frame) {
+    points_.resize(u_.size());
     if (frame.disk) {
         squaresToDisk();
     } else {
@@ -209,10 +209,30 @@ void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
     for (size_t k = 0; k < u_.size(); ++k) points_[k] = lightPointAt(frame, u_[k]);
 }
 
-void AreaLightPoints::fill(const SunCap& cap, int n, Pcg32& rng) {
-    jitter(n, rng);
+void AreaLightPoints::place(const SunCap& cap) {
+    points_.resize(u_.size());
     squaresToDisk();
     for (size_t k = 0; k < u_.size(); ++k) points_[k] = sunCapDirection(cap, u_[k]);
+}
+
+void AreaLightPoints::fill(const AreaLightFrame& frame, int n, Pcg32& rng) {
+    jitter(n, rng);
+    place(frame);
+}
+
+void AreaLightPoints::fill(const SunCap& cap, int n, Pcg32& rng) {
+    jitter(n, rng);
+    place(cap);
+}
+
+void AreaLightPoints::fill(const AreaLightFrame& frame, std::span<const glm::dvec2> u) {
+    u_.assign(u.begin(), u.end());
+    place(frame);
+}
+
+void AreaLightPoints::fill(const SunCap& cap, std::span<const glm::dvec2> u) {
+    u_.assign(u.begin(), u.end());
+    place(cap);
 }
 
 }  // namespace shadowlab

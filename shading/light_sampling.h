@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -107,11 +108,17 @@ public:
     // A sun's: points() are then the unit directions sunCapDirection(cap,
     // concentricSquareToDisk(jitteredSample(a, b, n, rng))), in the same order and draws.
     void fill(const SunCap& cap, int n, Pcg32& rng);
+    // The same maps of given samples u in [0, 1)^2 instead of the strata's, in their order
+    // (a pixel's samples of a frame, pixel_sequence.h).
+    void fill(const AreaLightFrame& frame, std::span<const glm::dvec2> u);
+    void fill(const SunCap& cap, std::span<const glm::dvec2> u);
     const std::vector<glm::dvec3>& points() const { return points_; }
 
 private:
     void jitter(int n, Pcg32& rng);   // u_: the strata's samples
     void squaresToDisk();             // u_: concentricSquareToDisk of each
+    void place(const AreaLightFrame& frame);   // points_ of the samples u_
+    void place(const SunCap& cap);
     std::vector<glm::dvec3> points_;
     std::vector<glm::dvec2> u_;   // per stratum: the sample, then the point in [-1, 1]^2 or the disk
     std::vector<uint8_t> centre_;   // the disk's: the square's centre, the disk's

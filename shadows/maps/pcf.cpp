@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "raster/portable_math.h"
+#include "shading/pixel_sequence.h"
 
 namespace shadowlab {
 namespace {
@@ -79,17 +80,14 @@ double poissonRotationAngle(int index) { return 2.0 * std::numbers::pi * double(
 
 double poissonRotation(uint64_t pixel) { return poissonRotationAngle(poissonRotationIndex(pixel)); }
 
-double interleavedGradientNoise(int i, int j, uint64_t frame) {
+double frameGradientNoise(int i, int j, uint64_t frame) {
     const double shift = 5.588238 * double(frame % 64);
-    const double x = i + 0.5 + shift, y = j + 0.5 + shift;
-    const double inner = 0.06711056 * x + 0.00583715 * y;
-    const double outer = 52.9829189 * (inner - std::floor(inner));
-    return outer - std::floor(outer);
+    return interleavedGradientNoise(i + 0.5 + shift, j + 0.5 + shift);
 }
 
 int poissonRotationIndex(RotationNoise noise, uint64_t frame, int i, int j, int width) {
     if (noise == RotationNoise::Hash) return poissonRotationIndex(uint64_t(j) * uint64_t(width) + uint64_t(i));
-    const int index = int(interleavedGradientNoise(i, j, frame) * kPoissonRotations);
+    const int index = int(frameGradientNoise(i, j, frame) * kPoissonRotations);
     return std::min(index, kPoissonRotations - 1);
 }
 

@@ -71,12 +71,11 @@ double tapReachTexels(const FilterSettings& settings);
 inline constexpr int kPoissonRotations = 1024;
 int poissonRotationIndex(uint64_t pixel);
 // Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
-// Advanced Warfare", slide "Interleaved Gradient Noise"): fract(52.9829189 fract(0.06711056 x
-// + 0.00583715 y)) at the pixel centre (x, y) = (i + 0.5, j + 0.5), shifted by 5.588238 pixels
-// along both axes per frame, frame modulo 64 (the talk's temporal variant). Neighbouring
-// pixels get angles far apart in a pattern a 3x3 neighbourhood averages well, and a pixel
-// walks through well-spread angles over frames. In double: the same bits on every CPU.
-double interleavedGradientNoise(int i, int j, uint64_t frame);
+// Advanced Warfare": shading/pixel_sequence.h) at the pixel centre (i + 0.5, j + 0.5) shifted
+// by 5.588238 pixels along both axes per frame, frame modulo 64 (the talk's temporal
+// variant). Neighbouring pixels get angles far apart in a pattern a 3x3 neighbourhood
+// averages well, and a pixel walks through well-spread angles over frames.
+double frameGradientNoise(int i, int j, uint64_t frame);
 // The rotation of pixel (i, j) of a row-major image `width` pixels wide at a sequence's
 // `frame`: the noise picks one of the kPoissonRotations angles.
 int poissonRotationIndex(RotationNoise noise, uint64_t frame, int i, int j, int width);

@@ -10,6 +10,7 @@
 #include "shadows/reference/reference.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -36,10 +37,20 @@ double ReferenceVisibility::shadowRayOffset(const glm::vec3& P) const {
     return shadowlab::shadowRayOffset(P, sceneDiagonal_);
 }
 
+// The casters' triangles as Embree keeps them (its buffers, alive with the scene): where a
+// closest-hit query reports a triangle, the distance to its plane is computed from these.
+namespace reference_rays {
+struct Triangles {
+    const glm::vec3* vertices = nullptr;
+    const glm::uvec3* indices = nullptr;
+};
+}  // namespace reference_rays
+
 // ---- Embree scene ----------------------------------------------------------------------
 struct ReferenceVisibility::Embree {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
+    reference_rays::Triangles triangles;   // Embree's copy, read where a closest hit lands
     ~Embree() {
         if (scene) rtcReleaseScene(scene);
         if (device) rtcReleaseDevice(device);
@@ -80,7 +91,7 @@ void commitScene(RTCScene scene) {
 #endif
 }
 
-void attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& world, bool filtered) {
+reference_rays::Triangles attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& world, bool filtered) {
     static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::uvec3) == 3 * sizeof(unsigned));
     // Released on every path, including the throw below.
     const std::unique_ptr<RTCGeometryTy, decltype(&rtcReleaseGeometry)> geometry(
@@ -93,9 +104,13 @@ void attachTriangles(RTCDevice device, RTCScene scene, const WorldGeometry& worl
     throwIfEmbreeError(device, "allocating the triangle buffers");
     std::memcpy(vertices, world.positions.data(), world.positions.size() * sizeof(glm::vec3));
     std::memcpy(indices, world.triangles.data(), world.triangles.size() * sizeof(glm::uvec3));
-    if (filtered) rtcSetGeometryOccludedFilterFunction(geometry.get(), transmissionFilter);
+    if (filtered) {   // the same filter for occlusion and closest-hit queries
+        rtcSetGeometryOccludedFilterFunction(geometry.get(), transmissionFilter);
+        rtcSetGeometryIntersectFilterFunction(geometry.get(), transmissionFilter);
+    }
     rtcCommitGeometry(geometry.get());
     rtcAttachGeometry(scene, geometry.get());
+    return {static_cast<const glm::vec3*>(vertices), static_cast<const glm::uvec3*>(indices)};
 }
 
 
@@ -114,6 +129,7 @@ struct Crossing {
 };
 }  // namespace reference_rays
 using reference_rays::Crossing;
+using reference_rays::Triangles;
 
 namespace {
 
@@ -123,8 +139,9 @@ struct TransmissionContext {
     std::vector<Crossing>* crossed;
 };
 
-// The occlusion filter (rtcSetGeometryOccludedFilterFunction): a hit on a solid point
-// stays valid and ends the query; any other is rejected, and a translucent one noted. A
+// The filter of occlusion and closest-hit queries: a hit on a solid point stays valid (it
+// ends an occlusion query, and is a candidate for the closest hit); any other is
+// rejected, and a translucent one noted. A
 // stream may hand it packets of any size and order (Embree's rtcOccluded1M), so each lane
 // names its ray by id.
 void transmissionFilter(const RTCFilterFunctionNArguments* args) {
@@ -211,6 +228,31 @@ bool crossingOrder(const Crossing& a, const Crossing& b) {
     return a.t != b.t ? a.t < b.t : a.triangle < b.triangle;
 }
 
+// The t (a fraction of the ray's direction) where the ray meets the plane of `triangle`,
+// in double from its vertices, so that a distance does not depend on how Embree's
+// intersector rounded at its SIMD width; Embree's own t for a ray in the plane.
+double planeT(const Triangles& triangles, const RTCRay& ray, uint32_t triangle, float embreeT) {
+    const glm::uvec3 v = triangles.indices[triangle];
+    const glm::dvec3 a(triangles.vertices[v.x]), b(triangles.vertices[v.y]), c(triangles.vertices[v.z]);
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const glm::dvec3 origin(ray.org_x, ray.org_y, ray.org_z), direction(ray.dir_x, ray.dir_y, ray.dir_z);
+    const double along = glm::dot(direction, n);
+    return along != 0.0 ? glm::dot(a - origin, n) / along : double(embreeT);
+}
+
+// Where a closest-hit query's ray meets its first occluder: the nearer of its solid hit and
+// its nearest translucent crossing (a cut-out's hole is never noted); NaN for none.
+glm::dvec3 firstOccluder(const Triangles& triangles, const RTCRayHit& traced, std::span<const Crossing> crossed) {
+    double nearest = std::numeric_limits<double>::infinity();
+    if (traced.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+        nearest = planeT(triangles, traced.ray, traced.hit.primID, traced.ray.tfar);
+    }
+    for (const Crossing& c : crossed) nearest = std::min(nearest, planeT(triangles, traced.ray, c.triangle, c.t));
+    if (std::isinf(nearest)) return glm::dvec3(std::numeric_limits<double>::quiet_NaN());
+    const glm::dvec3 origin(traced.ray.org_x, traced.ray.org_y, traced.ray.org_z);
+    return origin + nearest * glm::dvec3(traced.ray.dir_x, traced.ray.dir_y, traced.ray.dir_z);
+}
+
 // One ray traced alone (rtcOccluded1), with nothing allocated unless it crosses a
 // translucent surface: for callers that ask about one point at a time.
 glm::vec3 tracedAlone(RTCScene scene, const CasterTransmission* transmission, RTCRay ray) {
@@ -240,12 +282,19 @@ std::optional<glm::vec3> knownLight(double tFar) {
 // the plain twin, one rtcOccluded1 each. Both run the same robust traversal and the same
 // filter, and an occlusion query's answer does not depend on which hit ends it, so they
 // give the same bytes (tests/shadows/reference/test_reference_packets.cpp holds them to it).
+// Traced for their first occluders instead, the rays are closest-hit queries
+// (rtcIntersect1M or rtcIntersect1): the same light, since a solid hit found anywhere on
+// the segment darkens it either way and the filter notes the same crossings where there
+// is none, and where each first occluder is (firstOccluder).
 struct ReferenceVisibility::RayBatch::Samples {
     std::vector<glm::vec3> lights;       // per sample
+    std::vector<glm::dvec3> occluders;   // per sample, traced for them: where its first occluder is, NaN for none
     std::vector<RTCRay> rays;            // ray k's id is k
+    std::vector<RTCRayHit> traced;       // closest-hit queries' rays and hits
     std::vector<uint32_t> sampleOfRay;
     std::vector<Crossing> crossed;
     AreaLightPoints lightPoints;         // an area light's, or a sun's directions, for the receiver
+    std::vector<glm::dvec2> sequence;    // a pixel's samples of its sequence (pixel_sequence.h)
     std::vector<double> segmentEnds;     // per light point
     uint64_t count = 0;                  // rays traced
 
@@ -259,29 +308,54 @@ struct ReferenceVisibility::RayBatch::Samples {
         lights.push_back(glm::vec3(0.0f));
     }
 
-    // Fills in the light of every ray's sample.
-    void trace(RTCScene scene, const CasterTransmission* transmission, RayQueries queries) {
+    // Fills in the light of every ray's sample; with `closest`, the casters' triangles, the
+    // rays are closest-hit queries and each sample's first occluder is filled in too.
+    void trace(RTCScene scene, const CasterTransmission* transmission, RayQueries queries, const Triangles* closest) {
+        if (closest) occluders.assign(lights.size(), glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
         if (rays.empty()) return;
         TransmissionContext context{{}, transmission, &crossed};
         rtcInitIntersectContext(&context.base);
+        if (queries == RayQueries::Stream) context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
         crossed.clear();
-        if (queries == RayQueries::Stream) {
-            context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        if (closest) {
+            intersect(scene, context.base, queries);
+        } else if (queries == RayQueries::Stream) {
             rtcOccluded1M(scene, &context.base, rays.data(), unsigned(rays.size()), sizeof(RTCRay));
         } else {
             for (RTCRay& ray : rays) rtcOccluded1(scene, &context.base, &ray);
         }
         count += rays.size();
-        if (!transmission) {   // opaque casters: no crossings to share out
+        if (!transmission && !closest) {   // opaque casters: no crossings to share out
             for (uint32_t k = 0; k < rays.size(); ++k) lights[sampleOfRay[k]] = lightOfRay(rays[k], nullptr, {});
             return;
         }
-        std::ranges::sort(crossed, crossingOrder);
+        if (transmission) std::ranges::sort(crossed, crossingOrder);   // opaque casters: none
         auto first = crossed.begin();
         for (uint32_t k = 0; k < rays.size(); ++k) {
             const auto last = std::find_if(first, crossed.end(), [k](const Crossing& c) { return c.ray != k; });
             lights[sampleOfRay[k]] = lightOfRay(rays[k], transmission, {first, last});
+            if (closest) occluders[sampleOfRay[k]] = firstOccluder(*closest, traced[k], {first, last});
             first = last;
+        }
+    }
+
+private:
+    // The rays as closest-hit queries; a ray that hit something solid is then marked as
+    // rtcOccluded marks it (tfar -inf), for lightOfRay.
+    void intersect(RTCScene scene, RTCIntersectContext& context, RayQueries queries) {
+        traced.resize(rays.size());
+        for (size_t k = 0; k < rays.size(); ++k) {
+            traced[k].ray = rays[k];
+            traced[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            traced[k].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        }
+        if (queries == RayQueries::Stream) {
+            rtcIntersect1M(scene, &context, traced.data(), unsigned(traced.size()), sizeof(RTCRayHit));
+        } else {
+            for (RTCRayHit& t : traced) rtcIntersect1(scene, &context, &t);
+        }
+        for (size_t k = 0; k < rays.size(); ++k) {
+            if (traced[k].hit.geomID != RTC_INVALID_GEOMETRY_ID) rays[k].tfar = -std::numeric_limits<float>::infinity();
         }
     }
 };
@@ -333,22 +407,38 @@ void addDirectionSample(Samples& samples, const Receiver& r, const glm::dvec3& t
     samples.addRay(r.origin, glm::vec3(towardsLight), std::numeric_limits<float>::infinity());
 }
 
-// Queues n x n stratified samples of an area light. The jitter is drawn for every stratum,
-// so sample positions never depend on geometry.
-void addAreaSamples(Samples& samples, const Receiver& r, const AreaLightFrame& frame, int n, Pcg32 rng) {
-    samples.lightPoints.fill(frame, n, rng);
+// A pixel of the image: its column, row and index.
+struct PixelAt {
+    int x, y;
+    uint64_t index;
+};
+
+// Fills samples.lightPoints with the points of an area light (or a sun's directions, for a
+// SunCap) a pixel samples: n x n jittered strata from its own PCG32 stream, or its
+// sequence's points for the frame. Drawn for every stratum or sample, so sample positions
+// never depend on geometry.
+template <class Shape>
+void fillLightPoints(Samples& samples, const Shape& shape, const ReferenceOptions& options, const PixelAt& at) {
+    if (options.sequence) {
+        pixelSamples(*options.sequence, at.x, at.y, at.index, samples.sequence);
+        return samples.lightPoints.fill(shape, samples.sequence);
+    }
+    Pcg32 rng(options.seed, at.index);
+    samples.lightPoints.fill(shape, options.areaSamplesPerAxis, rng);
+}
+
+// Queues the samples of an area light at samples.lightPoints.
+void addAreaSamples(Samples& samples, const Receiver& r) {
     const std::vector<glm::dvec3>& targets = samples.lightPoints.points();
     samples.segmentEnds.resize(targets.size());
     for (size_t k = 0; k < targets.size(); ++k) samples.segmentEnds[k] = segmentEnd(r, targets[k]);   // vectorised
     for (size_t k = 0; k < targets.size(); ++k) addPointSample(samples, r, targets[k], samples.segmentEnds[k]);
 }
 
-// Queues n x n stratified directions towards a sun with an angular size, in its cap
-// (light_sampling.h, sunCapDirection): like an area light's points, drawn for every
-// stratum, and a direction below the surface's horizon is dark, as an area light's point
-// behind it is.
-void addSunSamples(Samples& samples, const Receiver& r, const SunCap& cap, int n, Pcg32 rng) {
-    samples.lightPoints.fill(cap, n, rng);
+// Queues the directions towards a sun with an angular size at samples.lightPoints, in its
+// cap (light_sampling.h, sunCapDirection): a direction below the surface's horizon is
+// dark, as an area light's point behind it is.
+void addSunSamples(Samples& samples, const Receiver& r) {
     for (const glm::dvec3& direction : samples.lightPoints.points()) addDirectionSample(samples, r, direction);
 }
 
@@ -377,7 +467,7 @@ struct LightQuery {
     ReferenceOptions options;
 };
 
-void addPixelSamples(Samples& samples, const LightQuery& q, const Receiver& r, uint64_t pixel) {
+void addPixelSamples(Samples& samples, const LightQuery& q, const Receiver& r, const PixelAt& at) {
     switch (q.light.type) {
         case LightType::Point:
             return addPointSample(samples, r, glm::dvec3(q.light.position));
@@ -385,11 +475,13 @@ void addPixelSamples(Samples& samples, const LightQuery& q, const Receiver& r, u
             if (!insideSpotCone(q.light, glm::vec3(r.P))) return samples.addKnown(glm::vec3(0.0f));
             return addPointSample(samples, r, glm::dvec3(q.light.position));
         case LightType::Directional:
-            if (q.sun) return addSunSamples(samples, r, *q.sun, q.options.areaSamplesPerAxis, Pcg32(q.options.seed, pixel));
-            return addDirectionSample(samples, r, glm::dvec3(q.light.direction));
+            if (!q.sun) return addDirectionSample(samples, r, glm::dvec3(q.light.direction));
+            fillLightPoints(samples, *q.sun, q.options, at);
+            return addSunSamples(samples, r);
         case LightType::Disk:
         case LightType::Rectangle:
-            return addAreaSamples(samples, r, q.frame, q.options.areaSamplesPerAxis, Pcg32(q.options.seed, pixel));
+            fillLightPoints(samples, q.frame, q.options, at);
+            return addAreaSamples(samples, r);
     }
 }
 
@@ -411,7 +503,7 @@ ReferenceVisibility::ReferenceVisibility(const WorldGeometry& world, const Caste
     rtcSetSceneFlags(embree_->scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(embree_->scene, RTC_BUILD_QUALITY_HIGH);
     if (!world.triangles.empty()) {
-        attachTriangles(embree_->device, embree_->scene, world, transmission_ != nullptr);
+        embree_->triangles = attachTriangles(embree_->device, embree_->scene, world, transmission_ != nullptr);
     }
     commitScene(embree_->scene);
     throwIfEmbreeError(embree_->device, "building the scene");
@@ -433,7 +525,7 @@ std::span<const glm::vec3> ReferenceVisibility::directionsPassed(const glm::vec3
     samples.clear();
     const Receiver r = receiverAt(P, N, sceneDiagonal_);
     for (const glm::dvec3& direction : directions) addDirectionSample(samples, r, direction);
-    samples.trace(embree_->scene, transmission_, batch.queries_);
+    samples.trace(embree_->scene, transmission_, batch.queries_, nullptr);
     return samples.lights;
 }
 
@@ -447,31 +539,67 @@ bool ReferenceVisibility::pointVisible(const glm::vec3& P, const glm::vec3& N, c
     return glm::any(glm::greaterThan(light, glm::vec3(0.0f)));
 }
 
+namespace {
+
+// The mean distance from P to the first occluders of the samples [first, end) that have
+// one, summed in their order, and how many have one.
+struct OccluderMean {
+    float distance = 0.0f;
+    uint32_t rays = 0;
+};
+OccluderMean occluderMean(const Samples& samples, size_t first, size_t end, const glm::vec3& P) {
+    double sum = 0.0;
+    uint32_t rays = 0;
+    for (size_t s = first; s < end; ++s) {
+        if (std::isnan(samples.occluders[s].x)) continue;
+        sum += glm::length(samples.occluders[s] - glm::dvec3(P)), ++rays;
+    }
+    return {rays ? float(sum / double(rays)) : 0.0f, rays};
+}
+
+void requireSamples(const Light& light, const ReferenceOptions& options) {
+    const bool sized = light.type == LightType::Disk || light.type == LightType::Rectangle ||
+                       (light.type == LightType::Directional && light.angularDiameterDeg > 0.0f);
+    if (sized && options.sequence && options.sequence->count < 1) {
+        throw std::invalid_argument("ReferenceVisibility: a pixel sequence's count must be >= 1");
+    }
+    if (sized && !options.sequence && options.areaSamplesPerAxis < 1) {
+        throw std::invalid_argument("ReferenceVisibility: areaSamplesPerAxis must be >= 1");
+    }
+}
+
+}  // namespace
+
 ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, const Light& light,
                                                         const ReferenceOptions& options) const {
     requireConsistent(gbuffer, "ReferenceVisibility::visibility");
+    requireSamples(light, options);
     const bool area = light.type == LightType::Disk || light.type == LightType::Rectangle;
     const bool sun = light.type == LightType::Directional && light.angularDiameterDeg > 0.0f;
-    if ((area || sun) && options.areaSamplesPerAxis < 1) {
-        throw std::invalid_argument("ReferenceVisibility: areaSamplesPerAxis must be >= 1");
-    }
     const LightQuery query{light, area ? areaLightFrame(light) : AreaLightFrame{},
                            sun ? std::optional(sunCap(light)) : std::nullopt, options};
+    const Triangles* closest = options.occluderDistance ? &embree_->triangles : nullptr;
     Passed out;
     out.visibility.assign(gbuffer.pixelCount(), 0.0f);
     if (transmission_) out.coloured.assign(gbuffer.pixelCount(), glm::vec3(0.0f));
+    if (closest) out.occluderDistance.assign(gbuffer.pixelCount(), 0.0f), out.occludedRays.assign(gbuffer.pixelCount(), 0);
+    std::atomic<uint64_t> cast{0};
     const ProgressStage progress(options.progress, "reference rays: row", uint64_t(gbuffer.height));
     tbb::parallel_for(tbb::blocked_range<int>(0, gbuffer.height), [&](const tbb::blocked_range<int>& rows) {
         Samples samples;   // a batch's, its buffers reused
         std::vector<QueuedPixel> queued;
         const auto traceQueued = [&] {
-            samples.trace(embree_->scene, transmission_, options.queries);
+            samples.trace(embree_->scene, transmission_, options.queries, closest);
             for (size_t q = 0; q < queued.size(); ++q) {
+                const size_t pixel = queued[q].pixel, first = queued[q].firstSample;
                 const size_t end = q + 1 < queued.size() ? queued[q + 1].firstSample : samples.lights.size();
-                const glm::vec3 passed = meanLight(samples, queued[q].firstSample, end);
+                const glm::vec3 passed = meanLight(samples, first, end);
                 // Opaque casters pass the same value in every channel: V is that value.
-                out.visibility[queued[q].pixel] = transmission_ ? luminance(passed) : passed.x;
-                if (transmission_) out.coloured[queued[q].pixel] = passed;
+                out.visibility[pixel] = transmission_ ? luminance(passed) : passed.x;
+                if (transmission_) out.coloured[pixel] = passed;
+                if (!closest) continue;
+                const OccluderMean occluders = occluderMean(samples, first, end, gbuffer.position[pixel]);
+                out.occluderDistance[pixel] = occluders.distance, out.occludedRays[pixel] = occluders.rays;
             }
             samples.clear(), queued.clear();
         };
@@ -482,14 +610,17 @@ ReferenceVisibility::Passed ReferenceVisibility::passed(const GBuffer& gbuffer, 
                     continue;
                 }
                 queued.push_back({k, samples.lights.size()});
-                addPixelSamples(samples, query, receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_), k);
+                addPixelSamples(samples, query, receiverAt(gbuffer.position[k], gbuffer.normal[k], sceneDiagonal_),
+                                {i, j, k});
                 if (samples.rays.size() >= kBatchRays) traceQueued();
             }
             traceQueued();
             progress.advance();
         }
-        raysCast_ += samples.count;  // integer sum: the total is the same in any order
+        raysCast_ += samples.count;  // integer sums: the totals are the same in any order
+        cast += samples.count;
     });
+    out.raysCast = cast.load();
     return out;
 }
 

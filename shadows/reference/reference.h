@@ -21,14 +21,14 @@
 // luminance of that product.
 //
 // Each pixel depends only on its own G-buffer entry and, for area lights and suns with a
-// size, on a random
-// stream seeded by (options.seed, pixel index), so V is the same bytes for any number of
-// threads.
+// size, on a random stream seeded by (options.seed, pixel index), or on its place in its
+// sequence (options.sequence), so V is the same bytes for any number of threads.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -36,6 +36,7 @@
 
 #include "scenes/scene.h"
 #include "shading/gbuffer.h"
+#include "shading/pixel_sequence.h"
 #include "shadows/caster_transmission.h"
 #include "shadows/progress.h"
 #include "shadows/ray_offset.h"
@@ -52,6 +53,14 @@ struct ReferenceOptions {
     uint64_t seed = 0x5eed5eed5eedull;  // jitter; pixel k uses PCG32 stream k
     Progress* progress = nullptr;       // counts the rows done; null: reports nothing
     RayQueries queries = RayQueries::Stream;
+    // Instead of n x n jittered strata, the samples of an area light or a sun with a size
+    // are the pixel's points of a sequence that moves on from frame to frame
+    // (shading/pixel_sequence.h): the few noisy rays of a real-time tracer
+    // (shadows/raytraced/). A light without a size still has its one ray.
+    std::optional<PixelSequence> sequence = std::nullopt;
+    // Trace each ray for its first occluder (a closest-hit query, rtcIntersect) instead of
+    // asking only whether one exists, and report where it is (Passed::occluderDistance).
+    bool occluderDistance = false;
 };
 
 class ReferenceVisibility {
@@ -69,15 +78,25 @@ public:
     ReferenceVisibility& operator=(const ReferenceVisibility&) = delete;
 
     // V per pixel (see the header comment). Throws std::invalid_argument if the G-buffer's
-    // arrays are not all width * height long, or options.areaSamplesPerAxis < 1 for an
-    // area light or a sun with a size.
+    // arrays are not all width * height long, or options.areaSamplesPerAxis (or the
+    // sequence's count) < 1 for an area light or a sun with a size.
     std::vector<float> visibility(const GBuffer& gbuffer, const Light& light,
                                   const ReferenceOptions& options = {}) const;
     // V and, through casters that are not opaque, the light passed per channel (the mean
     // over an area light's samples), V its luminance; `coloured` is empty with opaque ones.
+    // With options.occluderDistance, per pixel: the distance (m) from P to the first
+    // occluder along each ray that has one, averaged over those rays, and their count (0
+    // and 0 where no ray has one, or the pixel is empty). An occluder is the nearest surface
+    // that takes light from the ray: a solid one, or a translucent one, which the ray
+    // passes with what it lets through (a cut-out's hole is no occluder, nor a density
+    // volume, which has no surface); the distance is measured to the surface's plane, in
+    // double, from the triangle's vertices, so it does not depend on Embree's SIMD width.
     struct Passed {
         std::vector<float> visibility;
         std::vector<glm::vec3> coloured;
+        std::vector<float> occluderDistance;
+        std::vector<uint32_t> occludedRays;
+        uint64_t raysCast = 0;   // by this call
     };
     Passed passed(const GBuffer& gbuffer, const Light& light, const ReferenceOptions& options = {}) const;
 

@@ -25,7 +25,7 @@ using test::sunScene;
 
 TEST_CASE("every technique's stat names are snake_case and end in a unit (docs/architecture.md)") {
     const std::regex rule("[a-z][a-z0-9]*(_[a-z0-9]+)*_(ms|m|texels|pixels|triangles|edges|fragments|fragments_per_pixel|"
-                          "texels_per_pixel|receivers|pages|percent|count|flag|ratio|radiance|bytes)");
+                          "texels_per_pixel|per_pixel|receivers|pages|percent|count|flag|ratio|radiance|bytes)");
     const test::TechniqueScenes scenes;
     std::set<std::string> seen;
     for (const Technique& t : techniques()) {

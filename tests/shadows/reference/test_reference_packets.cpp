@@ -4,7 +4,8 @@
 // through casters that are not opaque, whose occlusion filter then runs on packets
 // (RTCFilterFunctionNArguments with N > 1): cut-out cards, a tinted glass, hair and smoke.
 // A broken lane bookkeeping in the filter (a crossing credited to another ray) or a
-// packet path that lets a ray slip through a seam changes the bytes.
+// packet path that lets a ray slip through a seam changes the bytes. Closest-hit queries
+// likewise, and their light is the occlusion queries'.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -67,6 +68,24 @@ void checkSameAsSingleRays(const PacketScene& s, const Light& light) {
     CHECK(test::sameBytes(a.coloured, b.coloured));
 }
 
+// Traced for their first occluders, a pixel sequence's rays (shadows/raytraced/) bring the
+// light occlusion queries of the same samples bring, and a stream and single rays find the
+// same occluders: the closest-hit filter's bookkeeping and the distances' planes.
+void checkClosestHitsSameAsSingleRays(const PacketScene& s, const Light& light) {
+    const ReferenceOptions occlusion{.queries = RayQueries::Stream, .sequence = PixelSequence{.count = 4, .frame = 3}};
+    ReferenceOptions stream = occlusion, single = occlusion;
+    stream.occluderDistance = single.occluderDistance = true;
+    single.queries = RayQueries::Single;
+    const ReferenceVisibility::Passed a = s.reference.passed(s.gbuffer, light, occlusion);
+    const ReferenceVisibility::Passed b = s.reference.passed(s.gbuffer, light, stream);
+    const ReferenceVisibility::Passed c = s.reference.passed(s.gbuffer, light, single);
+    CHECK(test::sameBytes(a.visibility, b.visibility));
+    CHECK(test::sameBytes(a.coloured, b.coloured));
+    CHECK(test::sameBytes(b.visibility, c.visibility));
+    CHECK(test::sameBytes(b.occluderDistance, c.occluderDistance));
+    CHECK(test::sameBytes(b.occludedRays, c.occludedRays));
+}
+
 }  // namespace
 
 TEST_CASE("reference: the stream of rays gives the bytes of single rays, every light kind, opaque and not") {
@@ -84,10 +103,12 @@ TEST_CASE("reference: the stream of rays gives the bytes of single rays, every l
         const float size = 0.05f * float(sceneDiagonal(s.world));
         CAPTURE(name);
         checkSameAsSingleRays(s, own);
+        checkClosestHitsSameAsSingleRays(s, own);
         const Light anchor{.position = own.type == LightType::Directional ? 10.0f * own.direction : own.position};
         for (const Light& light : everyKind(anchor, size)) {
             CAPTURE(int(light.type));
             checkSameAsSingleRays(s, light);
+            checkClosestHitsSameAsSingleRays(s, light);
         }
     }
 }
