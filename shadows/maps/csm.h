@@ -13,16 +13,32 @@
 namespace shadowlab {
 
 struct CascadedMaps {
-    std::vector<Cascade> cascades;
-    std::vector<DepthMap> maps;     // one per cascade; size 0 where it has no receivers
+    std::vector<Cascade> cascades;  // this frame's fit: its splits choose a receiver's cascade
+    // One per cascade, each with the view it was drawn with (map.view, texelFromWorld), which
+    // is an earlier frame's where stepped updates kept it; size 0 where it has no receivers.
+    std::vector<DepthMap> maps;
+    std::vector<uint8_t> drawnNow;  // per cascade: its map was drawn this frame
+    uint64_t frame = 0;             // frames drawn into these maps: the stepped updates' clock
+    glm::dvec3 towardsLight{0.0};   // the sun the maps were drawn for
     KeptRasterizer rasterizer;      // what draws them, its buffers kept with the maps
 };
 
+// Stepped updates (as engines update far cascades less often, e.g. Unity HDRP's per-cascade
+// RequestSubShadowMapRendering): with updateEvery = k, cascade 0 is drawn every frame and
+// cascade i > 0 on the frames where (frame + i) % k == 0, staggered so that about one k-th
+// of the far cascades is drawn a frame; the others keep their last map and the view it was
+// drawn with, so a lookup lands where that map's casters were. A first frame, a sun that
+// turned and a cascade without a map draw all that need one. A stale map misses what moved
+// since it was drawn, and covers the slice it had then: a camera that moves far within k
+// frames reads beyond it (border texels).
+bool cascadeDue(const CascadedMaps& kept, size_t cascade, int updateEvery);
+
 // The cascades' maps, drawn in `memory`'s (last frame's, when csm keeps them between frames:
-// technique_history.h), reallocated only where a map grows.
+// technique_history.h), reallocated only where a map grows; with updateEvery > 1, only the
+// cascades due this frame (above).
 CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffer& receivers, const WorldGeometry& world,
                             const CascadeSettings& cascades, const DepthMapSettings& maps, raster::SimdLevel simd,
-                            CascadedMaps memory = {});
+                            CascadedMaps memory = {}, int updateEvery = 1);
 
 // The map selector of cascades: the cascade by the receiver's distance along the camera's
 // view axis, -1 where that cascade has no map.
