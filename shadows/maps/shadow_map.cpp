@@ -154,9 +154,25 @@ void addStats(ShadowOutputs& out, const LightMaps& lm, const ShadowMapSettings& 
     out.stats.push_back({"cache_dynamic_instances_count", double(c.dynamicInstances)});
 }
 
+// cache=static's buffers: the static casters' map as kept, and the texels this frame drew
+// (1 where the static map was drawn again, 0.5 where the dynamic casters were drawn over it).
+void writeCacheDebug(const DebugBuffers& debug, const StaticMapCache& cache, const CachedMapStats& stats) {
+    writeDepthMap(debug, "static-depth", cache.staticMap);
+    const int n = cache.staticMap.size;
+    std::vector<float> drawn(size_t(n) * size_t(n), 0.0f);
+    for (const auto& [rect, value] : {std::pair{stats.dynamic, 0.5f}, std::pair{stats.redrawn, 1.0f}}) {
+        for (int y = rect.y0; y < rect.y1; ++y) {
+            std::fill(drawn.begin() + std::ptrdiff_t(size_t(y) * size_t(n) + size_t(rect.x0)),
+                      drawn.begin() + std::ptrdiff_t(size_t(y) * size_t(n) + size_t(rect.x1)), value);
+        }
+    }
+    debug.write("cache-drawn", n, n, drawn, 0.0f, 1.0f);
+}
+
 void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSettings& s, const ShadowLookup& lookup) {
     const DebugBuffers debug(in.debugDir, "shadow-map");
     if (!debug.enabled()) return;
+    if (lm.cached) writeCacheDebug(debug, in.kept().state<StaticMapCache>(), lm.cacheStats);
     for (size_t k = 0; k < lm.maps.size(); ++k) {
         if (lm.maps[k].size == 0) continue;
         const std::string suffix = lm.cube ? std::string("-face-") + kCubeFaceNames[k] : "";

@@ -71,9 +71,10 @@ void mergeWindow(const DepthMap& window, glm::ivec2 corner, const MapRect& rect,
 }
 
 // The static map drawn again where the leaving instances were (or whole, on a new view);
-// returns the texels drawn.
+// returns the texels drawn, and where in stats.redrawn.
 int64_t updateStaticMap(const PreparedScene& casters, const std::vector<Aabb>& leaving, const LightView& view,
-                        const DepthMapSettings& settings, raster::SimdLevel simd, StaticMapCache& cache) {
+                        const DepthMapSettings& settings, raster::SimdLevel simd, StaticMapCache& cache,
+                        CachedMapStats& stats) {
     DepthMap& map = cache.staticMap;
     if (!cache.valid || map.size != settings.size || !sameView(map.view, view)) {
         if (cache.dynamicTriangles.empty())   // every triangle: the prepared scene's grouped draws
@@ -82,7 +83,8 @@ int64_t updateStaticMap(const PreparedScene& casters, const std::vector<Aabb>& l
             map = renderDepthMap(casters.world(), cache.staticTriangles, view, settings, simd, std::move(map),
                                  &cache.rasterizer.at(simd));
         cache.valid = true;
-        return int64_t(map.size) * map.size;
+        stats.redrawn = {0, 0, map.size, map.size};
+        return stats.redrawn.area();
     }
     int64_t drawn = 0;
     for (const Aabb& box : leaving) {
@@ -91,6 +93,7 @@ int64_t updateStaticMap(const PreparedScene& casters, const std::vector<Aabb>& l
         const glm::ivec2 corner = drawWindow(casters.world(), cache.staticTriangles, view, settings, rect, simd, cache);
         mergeWindow(cache.window, corner, rect, [](float, float drawnNow) { return drawnNow; }, map);
         drawn += rect.area();
+        stats.redrawn = unite(stats.redrawn, rect);
     }
     return drawn;
 }
@@ -138,7 +141,7 @@ CachedMapStats drawCachedMap(const PreparedScene& casters, uint64_t geometryVers
         throw std::invalid_argument("cache=static: the midpoint layer averages two layers, not a minimum to cache");
     CachedMapStats stats;
     const std::vector<Aabb> leaving = learnDynamic(casters, geometryVersion, cache);
-    stats.redrawnTexels = updateStaticMap(casters, leaving, view, settings, simd, cache);
+    stats.redrawnTexels = updateStaticMap(casters, leaving, view, settings, simd, cache, stats);
     if (stats.redrawnTexels) stats.staticTriangles = cache.staticTriangles.size();
     copyStaticMap(cache.staticMap, out);
     MapRect moving;
@@ -148,6 +151,7 @@ CachedMapStats drawCachedMap(const PreparedScene& casters, uint64_t geometryVers
     if (moving.empty() || cache.dynamicTriangles.empty()) return stats;
     const glm::ivec2 corner = drawWindow(casters.world(), cache.dynamicTriangles, view, settings, moving, simd, cache);
     mergeWindow(cache.window, corner, moving, [](float kept, float drawn) { return std::min(kept, drawn); }, out);
+    stats.dynamic = moving;
     stats.dynamicTexels = moving.area();
     stats.dynamicTriangles = cache.dynamicTriangles.size();
     return stats;

@@ -70,6 +70,7 @@ struct CachedMapStats {
     size_t staticTriangles = 0;     // static triangles drawn (0 in a frame that redrew nothing)
     size_t dynamicTriangles = 0;    // dynamic triangles drawn
     size_t dynamicInstances = 0;
+    MapRect redrawn, dynamic;       // where they were drawn (the union of the static map's redrawn rectangles)
 };
 
 // The frame's map of `casters` in `view` into `out`'s memory: the static map, updated as
