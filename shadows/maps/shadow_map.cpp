@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -122,24 +123,33 @@ struct CubeFace {
     }
 };
 
+// The frame's maps: lm.maps, or with cache=static the cache's frame map (the static map
+// itself while no caster moves).
+std::span<const DepthMap> frameMaps(const ShadowInputs& in, const LightMaps& lm) {
+    if (!lm.cached) return lm.maps;
+    return {&cachedFrameMap(in.kept().state<StaticMapCache>(), lm.maps[0]), 1};
+}
+
 ShadowLookup lookUp(const ShadowInputs& in, const Light& light, const LightMaps& lm, const ShadowMapSettings& s) {
     const PcfKernel kernel = makePcfKernel(s.filter, in.frameIndex);
     const Camera& camera = in.camera();
     const bool everyPixelDensity = !in.debugDir.empty();
     if (lm.cube) return lookUpShadows(in.gbuffer, camera, light, lm.maps, CubeFace{lm.maps}, s.bias, kernel, in.simd,
                                          everyPixelDensity);
-    return lookUpShadows(in.gbuffer, camera, light, lm.maps, OneMap{}, s.bias, kernel, in.simd, everyPixelDensity);
+    return lookUpShadows(in.gbuffer, camera, light, frameMaps(in, lm), OneMap{}, s.bias, kernel, in.simd,
+                         everyPixelDensity);
 }
 
-void addStats(ShadowOutputs& out, const LightMaps& lm, const ShadowMapSettings& s, const ShadowLookup& lookup) {
+void addStats(ShadowOutputs& out, std::span<const DepthMap> maps, const LightMaps& lm, const ShadowMapSettings& s,
+              const ShadowLookup& lookup) {
     double zNear = std::numeric_limits<double>::infinity(), zFar = 0.0;
-    int maps = 0;
-    for (const DepthMap& m : lm.maps) {
+    int drawn = 0;
+    for (const DepthMap& m : maps) {
         if (m.size == 0) continue;
-        ++maps, zNear = std::min(zNear, m.view.zNear), zFar = std::max(zFar, m.view.zFar);
+        ++drawn, zNear = std::min(zNear, m.view.zNear), zFar = std::max(zFar, m.view.zFar);
     }
     out.stats = {{"resolution_texels", double(s.resolution)},
-                 {"maps_count", double(maps)},
+                 {"maps_count", double(drawn)},
                  {"median_texels_per_pixel", medianTexelDensity(lookup)},
                  {"light_near_m", zNear},
                  {"light_far_m", zFar}};
@@ -173,17 +183,18 @@ void writeDebug(const ShadowInputs& in, const LightMaps& lm, const ShadowMapSett
     const DebugBuffers debug(in.debugDir, "shadow-map");
     if (!debug.enabled()) return;
     if (lm.cached) writeCacheDebug(debug, in.kept().state<StaticMapCache>(), lm.cacheStats);
-    for (size_t k = 0; k < lm.maps.size(); ++k) {
-        if (lm.maps[k].size == 0) continue;
+    const std::span<const DepthMap> maps = frameMaps(in, lm);
+    for (size_t k = 0; k < maps.size(); ++k) {
+        if (maps[k].size == 0) continue;
         const std::string suffix = lm.cube ? std::string("-face-") + kCubeFaceNames[k] : "";
-        writeDepthMap(debug, "depth" + suffix, lm.maps[k]);
+        writeDepthMap(debug, "depth" + suffix, maps[k]);
         if (s.layer == DepthLayer::Midpoint) {
             // The two layers the midpoint averages, drawn again only for this picture.
             for (DepthLayer layer : {DepthLayer::First, DepthLayer::Second}) {
                 DepthMapSettings one = depthMapSettings(s);
                 one.layer = layer;
                 writeDepthMap(debug, (layer == DepthLayer::First ? "depth-first" : "depth-second") + suffix,
-                              renderDepthMap(in.casters(), lm.maps[k].view, one, in.simd));
+                              renderDepthMap(in.casters(), maps[k].view, one, in.simd));
             }
         }
     }
@@ -238,7 +249,7 @@ ShadowOutputs runShadowMap(const ShadowInputs& in, const ShadowMapTechniqueSetti
     drawLightMaps(in, light, settings, timer, lm);
     ShadowLookup lookup = lookUp(in, light, lm, s);
     timer.lap("lookup");
-    addStats(out, lm, s, lookup);
+    addStats(out, frameMaps(in, lm), lm, s, lookup);
     timer.appendTo(out.stats);
     writeDebug(in, lm, s, lookup);
     out.visibility = std::move(lookup.visibility);   // the last use

@@ -143,12 +143,13 @@ CachedMapStats drawCachedMap(const PreparedScene& casters, uint64_t geometryVers
     const std::vector<Aabb> leaving = learnDynamic(casters, geometryVersion, cache);
     stats.redrawnTexels = updateStaticMap(casters, leaving, view, settings, simd, cache, stats);
     if (stats.redrawnTexels) stats.staticTriangles = cache.staticTriangles.size();
+    if (cache.dynamicTriangles.empty()) return stats;   // the static map is the frame's
     copyStaticMap(cache.staticMap, out);
     MapRect moving;
     for (size_t i = 0; i < cache.dynamic.size(); ++i) {
         if (cache.dynamic[i]) moving = unite(moving, texelsUnder(cache.bounds[i], out)), ++stats.dynamicInstances;
     }
-    if (moving.empty() || cache.dynamicTriangles.empty()) return stats;
+    if (moving.empty()) return stats;
     const glm::ivec2 corner = drawWindow(casters.world(), cache.dynamicTriangles, view, settings, moving, simd, cache);
     mergeWindow(cache.window, corner, moving, [](float kept, float drawn) { return std::min(kept, drawn); }, out);
     stats.dynamic = moving;

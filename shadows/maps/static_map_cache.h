@@ -73,12 +73,18 @@ struct CachedMapStats {
     MapRect redrawn, dynamic;       // where they were drawn (the union of the static map's redrawn rectangles)
 };
 
-// The frame's map of `casters` in `view` into `out`'s memory: the static map, updated as
-// above, copied, with the dynamic casters drawn over the copy. `geometryVersion` is the
-// prepared scene's (the camera's scene, whose moves the casters follow). Throws
-// std::invalid_argument for the midpoint layer.
+// The frame's map of `casters` in `view`: the static map, updated as above, then, where
+// some caster is dynamic, copied into `out`'s memory with the dynamic casters drawn over the
+// copy (cachedFrameMap says which). `geometryVersion` is the prepared scene's (the camera's
+// scene, whose moves the casters follow). Throws std::invalid_argument for the midpoint layer.
 CachedMapStats drawCachedMap(const PreparedScene& casters, uint64_t geometryVersion, const LightView& view,
                              const DepthMapSettings& settings, raster::SimdLevel simd, StaticMapCache& cache,
                              DepthMap& out);
+
+// The frame's map drawCachedMap made: `out`, or the static map itself while no caster is
+// dynamic (no copy is made then).
+inline const DepthMap& cachedFrameMap(const StaticMapCache& cache, const DepthMap& out) {
+    return cache.dynamicTriangles.empty() ? cache.staticMap : out;
+}
 
 }  // namespace shadowlab
