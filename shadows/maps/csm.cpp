@@ -17,6 +17,7 @@
 #include "shadows/maps/shadow_map_debug.h"
 #include "shadows/maps/shadow_map_settings.h"
 #include "shadows/maps/shadow_map_techniques.h"
+#include "shadows/maps/static_map_cache.h"
 #include "shadows/stage_timer.h"
 
 namespace shadowlab {
@@ -26,6 +27,7 @@ struct CsmSettings {
     ShadowMapSettings map;
     CascadeSettings cascades;   // its resolution and margin follow from the map's (read())
     int updateEvery = 1;        // stepped updates: far cascades drawn every k-th frame (csm.h)
+    bool redrawMoved = true;    // ... and a stale cascade a moved caster touches drawn anyway
 };
 
 const SettingsTable<CsmSettings>& csmSettingsTable() {
@@ -46,7 +48,11 @@ const SettingsTable<CsmSettings>& csmSettingsTable() {
             .flag("snap", member(&S::cascades, &CascadeSettings::snap),
                   "snap each cascade to whole texels so shadows do not shimmer")
             .integer("update-every", member(&S::updateEvery), 1, 16,
-                     "stepped updates: cascade 0 every frame, the others every k-th frame, staggered");
+                     "stepped updates: cascade 0 every frame, the others every k-th frame, staggered")
+            .choice("moved-casters", member(&S::redrawMoved),
+                    {{"redraw", true, "a stale cascade a moved caster's bounds touch is drawn anyway"},
+                     {"keep", false, "stale cascades keep moved casters where they were"}},
+                    "update-every > 1");
     return table;
 }
 
@@ -92,8 +98,11 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
     ShadowOutputs out;
     StageTimer timer;
     CascadedMaps& cm = in.kept().state<CascadedMaps>();   // last frame's, whose memory the maps reuse
+    const std::vector<Aabb> moved = settings.updateEvery > 1 && settings.redrawMoved
+                                        ? movedCasters(in.casters(), in.prepared.geometryVersion(), cm)
+                                        : std::vector<Aabb>{};
     cm = renderCascades(in.light, in.camera(), in.gbuffer, in.casterWorld(), cs, depthMapSettings(s), in.simd, std::move(cm),
-                        settings.updateEvery);
+                        settings.updateEvery, moved);
     timer.lap("cascades");
     ShadowLookup lookup = lookUpShadows(in.gbuffer, in.camera(), in.light, cm.maps,
                                         CascadeSelector{cm, in.camera()}, s.bias, makePcfKernel(s.filter, in.frameIndex), in.simd,
@@ -113,13 +122,27 @@ ShadowOutputs runCsm(const ShadowInputs& in) {
 
 }  // namespace
 
-bool cascadeDue(const CascadedMaps& kept, size_t cascade, int updateEvery) {
-    return cascade == 0 || (kept.frame + cascade) % uint64_t(updateEvery) == 0;
+bool cascadeDue(const CascadedMaps& kept, size_t cascade, int updateEvery, std::span<const Aabb> moved) {
+    if (cascade == 0 || (kept.frame + cascade) % uint64_t(updateEvery) == 0) return true;
+    return std::any_of(moved.begin(), moved.end(),
+                       [&](const Aabb& box) { return !texelsUnder(box, kept.maps[cascade]).empty(); });
+}
+
+std::vector<Aabb> movedCasters(const PreparedScene& casters, uint64_t geometryVersion, CascadedMaps& kept) {
+    std::vector<Aabb> moved;
+    if (!kept.casterBoxes.empty() && kept.geometryVersion == geometryVersion) return moved;
+    std::vector<Aabb> boxes = instanceBounds(casters.scene(), casters.world());
+    for (size_t i = 0; i < boxes.size() && boxes.size() == kept.casterBoxes.size(); ++i) {
+        const Aabb &was = kept.casterBoxes[i], &is = boxes[i];
+        if (was.min != is.min || was.max != is.max) moved.push_back(was), moved.push_back(is);
+    }
+    kept.casterBoxes = std::move(boxes), kept.geometryVersion = geometryVersion;
+    return moved;
 }
 
 CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffer& receivers, const WorldGeometry& world,
                             const CascadeSettings& cascades, const DepthMapSettings& maps, raster::SimdLevel simd,
-                            CascadedMaps memory, int updateEvery) {
+                            CascadedMaps memory, int updateEvery, std::span<const Aabb> moved) {
     CascadedMaps out = std::move(memory);
     const glm::dvec3 towardsLight = glm::normalize(glm::dvec3(sun.direction));
     // What the kept maps cannot serve: no frame before, another sun, another cascade count.
@@ -132,7 +155,7 @@ CascadedMaps renderCascades(const Light& sun, const Camera& camera, const GBuffe
         DepthMap& map = out.maps[k];
         if (!out.cascades[k].hasReceivers) {
             map.size = 0;   // not drawn; its memory kept for a later frame
-        } else if (all || map.size != maps.size || cascadeDue(out, k, updateEvery)) {
+        } else if (all || map.size != maps.size || cascadeDue(out, k, updateEvery, moved)) {
             map = renderDepthMap(world, out.cascades[k].view, maps, simd, std::move(map), &out.rasterizer.at(simd));
             out.drawnNow[k] = 1;
         }

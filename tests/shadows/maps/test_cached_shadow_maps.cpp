@@ -52,9 +52,10 @@ struct CachedMapFixture {
         const CachedMapStats stats =
             drawCachedMap(prepared, prepared.geometryVersion(), v, settings, raster::bestSimdLevel(), cache, out);
         const DepthMap fresh = renderDepthMap(prepared, v, settings, raster::bestSimdLevel());
-        CHECK(out.size == fresh.size);
-        CHECK(out.texelFromWorld == fresh.texelFromWorld);
-        CHECK(sameBytes(out.image(), fresh.image()));
+        const DepthMap& map = cachedFrameMap(cache, out);
+        CHECK(map.size == fresh.size);
+        CHECK(map.texelFromWorld == fresh.texelFromWorld);
+        CHECK(sameBytes(map.image(), fresh.image()));
         return stats;
     }
     int64_t texels() const { return int64_t(settings.size) * settings.size; }
@@ -77,9 +78,9 @@ TEST_CASE("cached map: a moved instance turns dynamic, redraws only its former b
     CachedMapFixture f;
     f.frame();
     const Aabb before = instanceBounds(f.prepared.scene(), f.prepared.world())[kSphere];
-    const MapRect under = texelsUnder(before, f.out);
+    const MapRect under = texelsUnder(before, f.cache.staticMap);
     move(f.prepared, kSphere, {1.0f, 0.0f, 0.0f});
-    REQUIRE(f.view().clipFromWorld() == f.out.view.clipFromWorld());   // the world's box, so the view, stayed
+    REQUIRE(f.view().clipFromWorld() == f.cache.staticMap.view.clipFromWorld());   // the world's box, so the view, stayed
     const CachedMapStats moved = f.frame();
     CHECK(moved.dynamicInstances == 1);
     CHECK(moved.redrawnTexels == under.area());   // the sphere's former bounds, no more
@@ -115,11 +116,12 @@ TEST_CASE("cached map: the light moving redraws the whole static map") {
 TEST_CASE("cached map: texelsUnder covers a box's projection and is the whole map across a perspective apex") {
     CachedMapFixture f;
     f.frame();
-    const MapRect whole = texelsUnder({glm::dvec3(-100.0), glm::dvec3(100.0)}, f.out);
+    const DepthMap& map = f.cache.staticMap;
+    const MapRect whole = texelsUnder({glm::dvec3(-100.0), glm::dvec3(100.0)}, map);
     CHECK(whole.area() == f.texels());
     const glm::dvec3 light(f.prepared.scene().lights[0].position);
-    CHECK(texelsUnder({light - 0.1, light + 0.1}, f.out).area() == f.texels());   // the apex inside the box
-    const MapRect box = texelsUnder({glm::dvec3(1.5, 0.0, -1.5), glm::dvec3(2.5, 1.5, -0.5)}, f.out);
+    CHECK(texelsUnder({light - 0.1, light + 0.1}, map).area() == f.texels());   // the apex inside the box
+    const MapRect box = texelsUnder({glm::dvec3(1.5, 0.0, -1.5), glm::dvec3(2.5, 1.5, -0.5)}, map);
     CHECK(box.area() > 0);
     CHECK(box.area() < f.texels() / 4);
 }
@@ -220,4 +222,24 @@ TEST_CASE("csm update-every=4 on the avenue: the far cascades' stale frames are 
         stale += now, expected += rule;
     }
     CHECK(stale > expected / 2);
+}
+
+TEST_CASE("csm update-every=4 with a sliding sphere under a still sun: V equals k = 1's when moved casters redraw") {
+    // The camera and the sun stay: only the sphere moves, and a stale cascade its bounds touch
+    // is drawn anyway, so every frame equals k = 1's; kept stale, the sphere's shadow lags.
+    PathFrames path("sliding-sphere-still-sun", 160, 100);
+    const std::map<std::string, std::string> every{{"resolution", "512"}};
+    std::map<std::string, std::string> redraw = every, keep = every;
+    redraw["update-every"] = keep["update-every"] = "4";
+    keep["moved-casters"] = "keep";
+    FrameHistory redrawHistory, keepHistory;
+    int differing = 0;
+    for (int frame = 0; frame < path.frames(); ++frame) {
+        CAPTURE(frame);
+        path.place(frame, path.frames());
+        const std::vector<float> fresh = path.run("csm", every, nullptr).shadow.visibility;
+        CHECK(sameBytes(path.run("csm", redraw, &redrawHistory).shadow.visibility, fresh));
+        differing += !sameBytes(path.run("csm", keep, &keepHistory).shadow.visibility, fresh);
+    }
+    CHECK(differing > 0);
 }
