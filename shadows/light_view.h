@@ -36,6 +36,8 @@ struct LightView {
 struct LightViewScratch {
     std::vector<double> depth;
     std::vector<uint8_t> insideBits;
+    GBuffer everyVertex;        // fitLightViewToWorld's receivers: every vertex of the world
+    WorldGeometry worldBox;     // ... and the world's box, the geometry its near plane is fitted to
 };
 
 struct LightFitOptions {
