@@ -220,7 +220,7 @@ const SettingsTable<ShadowMapTechniqueSettings>& shadowMapTechniqueSettingsTable
                     {{"none", false}, {"lispsm", true, "light space perspective shadow map"}}, "directional lights")
             .choice("fit", member(&S::fitWorld),
                     {{"receivers", false, "the visible receivers: follows the camera"},
-                     {"scene", true, "the world's bounding box: stays while the camera moves"}},
+                     {"scene", true, "every vertex and the world's box: stays while the camera moves"}},
                     "one frustum's view")
             .choice("cache", member(&S::cacheStatic),
                     {{"off", false},
