@@ -273,6 +273,26 @@ LightView fitLightView(const Light& light, const GBuffer& receivers, const World
     return view;
 }
 
+LightView fitLightViewToWorld(const Light& light, const WorldGeometry& world, const LightFitOptions& options) {
+    LightViewScratch own;
+    LightViewScratch& scratch = options.scratch ? *options.scratch : own;
+    // Every vertex a receiver: the sides hold the world's outermost vertices.
+    GBuffer& everyVertex = scratch.everyVertex;
+    everyVertex.width = int(world.positions.size()), everyVertex.height = 1;
+    everyVertex.hit.assign(world.positions.size(), 1);
+    everyVertex.position.assign(world.positions.begin(), world.positions.end());
+    // The near plane at the world's box (its nearest point inside the sides), which holds every
+    // vertex: a caster that moves inside the box does not move it.
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : world.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    WorldGeometry& box = scratch.worldBox;
+    box.positions.clear();
+    for (int c = 0; c < 8; ++c) box.positions.push_back({c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z});
+    box.triangles.assign({{0, 2, 6}, {0, 6, 4}, {1, 5, 7}, {1, 7, 3}, {0, 1, 5}, {0, 5, 4},
+                          {2, 6, 7}, {2, 7, 3}, {0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}});   // two per face
+    return fitLightView(light, everyVertex, box, options);
+}
+
 glm::dmat4 cubeFaceViewFromWorld(const glm::dvec3& apex, int face) {
     static const glm::dvec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     static const glm::dvec3 kUps[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};

@@ -36,6 +36,8 @@ struct LightView {
 struct LightViewScratch {
     std::vector<double> depth;
     std::vector<uint8_t> insideBits;
+    GBuffer everyVertex;        // fitLightViewToWorld's receivers: every vertex of the world
+    WorldGeometry worldBox;     // ... and the world's box, the geometry its near plane is fitted to
 };
 
 struct LightFitOptions {
@@ -62,6 +64,14 @@ struct LightFitOptions {
 // (pass pointLightFor(light)), or a point light's receivers span more than a hemisphere.
 LightView fitLightView(const Light& light, const GBuffer& receivers, const WorldGeometry& world,
                        const LightFitOptions& options = {});
+
+// The same view fitted to the whole world instead of the visible receivers: its sides hold
+// every vertex and its near plane is the nearest point of the world's bounding box inside
+// them. It does not follow the camera, and stays while the outermost vertices and the box
+// do (a caster moving inside the world leaves it), which is what a map kept across frames
+// needs (cache=static, maps/static_map_cache.h); its depth range is wider than a fit to
+// the receivers. Throws as fitLightView does (a point light among the world's vertices).
+LightView fitLightViewToWorld(const Light& light, const WorldGeometry& world, const LightFitOptions& options = {});
 
 // Face k (0..5: +x, -x, +y, -y, +z, -z) of a cube around a point light: a 90-degree
 // square frustum, with near and far fitted to the receivers and geometry inside it.

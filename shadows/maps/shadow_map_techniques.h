@@ -15,9 +15,11 @@ struct ShadowMapTechniqueSettings {
     bool alwaysCube = false;   // `cube=always`: six faces for a point light even where one frustum would do
     bool cullCubeFaces = true; // `cube-faces=all`: false, draw even the faces no visible receiver lies in
     bool lispsm = false;       // `warp=lispsm`: LiSPSM for a directional light
+    bool fitWorld = false;     // `fit=scene`: the view fitted to the world's box, not the visible receivers
+    bool cacheStatic = false;  // `cache=static`: the static casters' map kept across frames (static_map_cache.h)
 };
 
-// Its parameters: the map's, then `cube`, `cube-faces` and `warp`.
+// Its parameters: the map's, then `cube`, `cube-faces`, `warp`, `fit` and `cache`.
 const SettingsTable<ShadowMapTechniqueSettings>& shadowMapTechniqueSettingsTable();
 
 // `shadow-map` with typed settings, as another technique runs it per light (the environment

@@ -94,6 +94,7 @@ const std::vector<Kept>& keptTechniques() {
         {"shadow-map", "sphere-box.json", {}},
         {"shadow-map", "hard/sun.json", {{"warp", "lispsm"}}},
         {"csm", "hard/sun.json", {}},
+        {"shadow-map", "sphere-box.json", {{"cache", "static"}, {"fit", "scene"}}},   // the static map read in place
         {"virtual-shadow-map", "hard/sun.json", {}},
         {"virtual-shadow-map", "sphere-box.json", {}},   // the disk light's centre: six faces' mip chains
         {"projected-texture", "sphere-box.json", {}},
