@@ -172,6 +172,9 @@ if [ "$rc" -eq 0 ] && grep -q "light2_technique_ms" "$out" && grep -q "^light 2:
 else fail "a three-light render printed no per-light time or figures (rc $rc): $(head -c 300 "$out")"; fi
 run compare "$scratch/three.exr" "$scratch/three.exr" --channel light2.V
 if [ "$rc" -eq 0 ]; then pass; else fail "the three-light EXR has no light2.V: $(cat "$err")"; fi
+# Both EXRs have R, G, B: compare prints FLIP of the shaded images too, 0 for a file against itself.
+if grep -Eq "^  FLIP mean +0$" "$out"; then pass
+else fail "compare of an EXR against itself printed no FLIP mean of 0: $(cat "$out")"; fi
 # Its sweep: each light's figures in the JSON are render --json's, for the same technique
 # and settings (a coarse map, which errs); the CSV has each light's columns.
 run render "$three" --technique shadow-map --param resolution=64 "${tiny[@]}" --error-map "$scratch/three64.png" \
