@@ -25,7 +25,10 @@ glm::vec3 reinhard(const glm::vec3& c) {
 }  // namespace
 
 glm::vec3 toneMap(const glm::vec3& radiance, const ToneMapOptions& options) {
-    const glm::vec3 exposed = radiance * float(portable::exp2(options.exposureStops));
+    // 2^0 is exactly 1: the default exposure skips the exponential, which costs more than the
+    // rest of the operator (FLIP tone maps every pixel of two images per scored frame).
+    const float scale = options.exposureStops == 0.0f ? 1.0f : float(portable::exp2(options.exposureStops));
+    const glm::vec3 exposed = radiance * scale;
     const glm::vec3 mapped = options.op == ToneOperator::Reinhard ? reinhard(exposed) : exposed;
     return glm::clamp(mapped, 0.0f, 1.0f);
 }
