@@ -20,11 +20,13 @@ struct Plane {
     Plane(int w, int h) : width(w), height(h), values(size_t(w) * size_t(h)) {}
 };
 
-// An odd number of taps, 2r + 1; tap k weighs the pixel k - r away.
+// An odd number of taps, 2r + 1; tap k weighs the pixel k - r away. Even (kernel[k] =
+// kernel[2r - k]) or odd (kernel[k] = -kernel[2r - k]), as Gaussians and their derivatives
+// are: the convolutions throw std::invalid_argument for another.
 using Kernel = std::vector<float>;
 
-// out(x, y) = sum over k in order of kernel[k] in(clamp(x + k - r), y), rows in parallel: each
-// pixel's sum runs in the same order on every thread count and vector width.
+// out(x, y) = sum over k of kernel[k] in(clamp(x + k - r), y), rows in parallel: each pixel's
+// sum runs in the same order on every thread count and vector width.
 void convolveRows(const Plane& in, const Kernel& kernel, Plane& out);
 // The same down the columns: out(x, y) = sum over k of kernel[k] in(x, clamp(y + k - r)).
 void convolveColumns(const Plane& in, const Kernel& kernel, Plane& out);
