@@ -13,7 +13,9 @@
 #include "raster/bin.h"
 #include "raster/rasterizer.h"
 #include "raster/setup.h"
+#include "frame/registry.h"
 #include "frame/render.h"
+#include "frame/score.h"
 #include "scenes/scene_file.h"
 #include "shading/lights.h"
 #include "shadows/izb/izb.h"
@@ -290,6 +292,28 @@ void fillRateSizes(benchmark::internal::Benchmark* b) {
 
 }  // namespace
 
+// FLIP (frame/score.h, flipFigure: both shaded images tone mapped, the map, its mean over the
+// hit pixels) of `shadow-map`'s frame of sphere-box at 640 x 400 against the reference's, on
+// range(0) threads: the cost of scoring a frame perceptually, beside the frame's own time.
+void BM_Flip(benchmark::State& state) {
+    static const auto frames = [] {
+        Scene scene = loadScene("sphere-box");
+        SceneOverrides size;
+        size.width = 640, size.height = 400;
+        applyOverrides(scene, size);
+        const PreparedScene prepared(std::move(scene));
+        return std::pair{renderFrame(prepared, findTechnique("reference"), {}),
+                         renderFrame(prepared, findTechnique("shadow-map"), {})};
+    }();
+    const auto& [reference, test] = frames;
+    const ImageChannels scored = scoredImage(reference);
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(flipFigure(reference.radiance, test.radiance, reference.gbuffer.width,
+                                            reference.gbuffer.height, scored.at(channel::hit)));
+    state.SetLabel(std::to_string(state.range(0)) + " threads, 640 x 400");
+}
+
 BENCHMARK(BM_VertexStage)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Setup)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Binning)->Unit(benchmark::kMillisecond);
@@ -298,6 +322,7 @@ BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadowLookup)->Apply(lookupCases)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LightView)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IrregularZBuffer)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Flip)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 // As the shadowlab program (app/main.cpp): freed memory is kept for reuse, so a frame's
 // fresh buffers do not pay page faults in every timed run.
 int main(int argc, char** argv) {
