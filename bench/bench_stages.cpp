@@ -292,20 +292,33 @@ void fillRateSizes(benchmark::internal::Benchmark* b) {
 
 }  // namespace
 
-// FLIP (frame/score.h, flipFigure: both shaded images tone mapped, the map, its mean over the
-// hit pixels) of `shadow-map`'s frame of sphere-box at 640 x 400 against the reference's, on
-// range(0) threads: the cost of scoring a frame perceptually, beside the frame's own time.
-void BM_Flip(benchmark::State& state) {
-    static const auto frames = [] {
+// sphere-box at 640 x 400, prepared once: the scene FLIP is timed on and its frame beside it.
+const PreparedScene& smallSphereBox() {
+    static const PreparedScene prepared = [] {
         Scene scene = loadScene("sphere-box");
         SceneOverrides size;
         size.width = 640, size.height = 400;
         applyOverrides(scene, size);
-        const PreparedScene prepared(std::move(scene));
-        return std::pair{renderFrame(prepared, findTechnique("reference"), {}),
-                         renderFrame(prepared, findTechnique("shadow-map"), {})};
+        return PreparedScene(std::move(scene));
     }();
-    const auto& [reference, test] = frames;
+    return prepared;
+}
+
+// A whole `shadow-map` frame of it (G-buffer, technique, shading) on range(0) threads: what
+// BM_Flip's cost is a share of.
+void BM_ShadowMapFrame(benchmark::State& state) {
+    const PreparedScene& prepared = smallSphereBox();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    for (auto _ : state) benchmark::DoNotOptimize(renderFrame(prepared, findTechnique("shadow-map"), {}).radiance.data());
+    state.SetLabel(std::to_string(state.range(0)) + " threads, 640 x 400");
+}
+
+// FLIP (frame/score.h, flipFigure: both shaded images tone mapped, the map, its mean over the
+// hit pixels) of that frame against the reference's, on range(0) threads: the cost of scoring
+// a frame perceptually.
+void BM_Flip(benchmark::State& state) {
+    static const Frame reference = renderFrame(smallSphereBox(), findTechnique("reference"), {});
+    static const Frame test = renderFrame(smallSphereBox(), findTechnique("shadow-map"), {});
     const ImageChannels scored = scoredImage(reference);
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
     for (auto _ : state)
@@ -322,6 +335,7 @@ BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadowLookup)->Apply(lookupCases)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LightView)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IrregularZBuffer)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShadowMapFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Flip)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 // As the shadowlab program (app/main.cpp): freed memory is kept for reuse, so a frame's
 // fresh buffers do not pay page faults in every timed run.
