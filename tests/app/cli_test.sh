@@ -193,7 +193,7 @@ assert row["errors"] == render["errors"], "the overall figures differ"
 assert row["errors"]["misclassified"] == sum(l["misclassified"] for l in lights) > 0, "no sum, or no error to compare"
 PY
 then pass; else fail "the sweep's per-light figures are not render's"; fi
-if head -1 "$scratch/three-sweep/three-lights-shadow-map.csv" | grep -q ",reference,light0_misclassified_percent,light0_rms,"; then pass
+if head -1 "$scratch/three-sweep/three-lights-shadow-map.csv" | grep -q ",reference,flip_mean,light0_misclassified_percent,light0_rms,"; then pass
 else fail "the three-light sweep's CSV has no per-light columns: $(head -c 400 "$scratch/three-sweep/three-lights-shadow-map.csv")"; fi
 expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
 maps=$(dirname "${BASH_SOURCE[0]}")/../../assets/environments
