@@ -265,6 +265,12 @@ TEST_CASE("sweep SVG: well-formed, one point per row, the Pareto front ringed") 
     CHECK(parsePlotErrorAxis("rms") == PlotErrorAxis::Rms);
     CHECK(parsePlotErrorAxis("umbra") == PlotErrorAxis::Umbra);
     CHECK(parsePlotErrorAxis("rms-display") == PlotErrorAxis::RmsDisplay);
+    CHECK(parsePlotErrorAxis("flip") == PlotErrorAxis::Flip);
+    CHECK(wellFormedXml(formatSweepSvg(results, PlotErrorAxis::Flip)));
+    CHECK(plottedError(results.rows[0], PlotErrorAxis::Flip) == *results.rows[0].errors.flipMean);
+    SweepRow older = results.rows[0];
+    older.errors.flipMean.reset();
+    CHECK_THROWS_AS(requirePlottable({older}, PlotErrorAxis::Flip), std::invalid_argument);
     SweepRow shaded, visibility;
     shaded.technique = "env-additive", visibility.technique = "shadow-map";
     shaded.errors.rms = 0.5, shaded.errors.rmsDisplay = 0.25;
