@@ -13,7 +13,9 @@
 #include "raster/bin.h"
 #include "raster/rasterizer.h"
 #include "raster/setup.h"
+#include "frame/registry.h"
 #include "frame/render.h"
+#include "frame/score.h"
 #include "scenes/scene_file.h"
 #include "shading/lights.h"
 #include "shadows/izb/izb.h"
@@ -290,6 +292,41 @@ void fillRateSizes(benchmark::internal::Benchmark* b) {
 
 }  // namespace
 
+// sphere-box at 640 x 400, prepared once: the scene FLIP is timed on and its frame beside it.
+const PreparedScene& smallSphereBox() {
+    static const PreparedScene prepared = [] {
+        Scene scene = loadScene("sphere-box");
+        SceneOverrides size;
+        size.width = 640, size.height = 400;
+        applyOverrides(scene, size);
+        return PreparedScene(std::move(scene));
+    }();
+    return prepared;
+}
+
+// A whole `shadow-map` frame of it (G-buffer, technique, shading) on range(0) threads: what
+// BM_Flip's cost is a share of.
+void BM_ShadowMapFrame(benchmark::State& state) {
+    const PreparedScene& prepared = smallSphereBox();
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    for (auto _ : state) benchmark::DoNotOptimize(renderFrame(prepared, findTechnique("shadow-map"), {}).radiance.data());
+    state.SetLabel(std::to_string(state.range(0)) + " threads, 640 x 400");
+}
+
+// FLIP (frame/score.h, flipFigure: both shaded images tone mapped, the map, its mean over the
+// hit pixels) of that frame against the reference's, on range(0) threads: the cost of scoring
+// a frame perceptually.
+void BM_Flip(benchmark::State& state) {
+    static const Frame reference = renderFrame(smallSphereBox(), findTechnique("reference"), {});
+    static const Frame test = renderFrame(smallSphereBox(), findTechnique("shadow-map"), {});
+    const ImageChannels scored = scoredImage(reference);
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(flipFigure(reference.radiance, test.radiance, reference.gbuffer.width,
+                                            reference.gbuffer.height, scored.at(channel::hit)));
+    state.SetLabel(std::to_string(state.range(0)) + " threads, 640 x 400");
+}
+
 BENCHMARK(BM_VertexStage)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Setup)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Binning)->Unit(benchmark::kMillisecond);
@@ -298,6 +335,8 @@ BENCHMARK(BM_FillRate)->Apply(fillRateSizes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShadowLookup)->Apply(lookupCases)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LightView)->Apply(simdLevels)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IrregularZBuffer)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShadowMapFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Flip)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 // As the shadowlab program (app/main.cpp): freed memory is kept for reuse, so a frame's
 // fresh buffers do not pay page faults in every timed run.
 int main(int argc, char** argv) {

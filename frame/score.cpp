@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "frame/registry.h"
+#include "shading/flip.h"
 #include "shading/luminance.h"
 #include "shading/tonemap.h"
 
@@ -129,6 +130,32 @@ std::vector<ErrorFigures> scoreLights(const ImageChannels& reference, const Imag
 
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame) {
     return scoreImage(reference, scoredImage(frame), frame.output);
+}
+
+std::vector<glm::vec3> displayedImage(const std::vector<glm::vec3>& radiance) {
+    std::vector<glm::vec3> displayed(radiance.size());
+    for (size_t k = 0; k < radiance.size(); ++k) displayed[k] = toneMap(radiance[k], {});
+    return displayed;
+}
+
+double flipFigure(const std::vector<glm::vec3>& referenceShaded, const std::vector<glm::vec3>& testShaded, int width,
+                  int height, const std::vector<float>& hit) {
+    if (hit.size() != referenceShaded.size())
+        throw std::invalid_argument("FLIP: the reference's hit channel and its shaded image differ in size");
+    const FlipErrorMap map =
+        flipErrorMap(displayedImage(referenceShaded), displayedImage(testShaded), width, height);
+    std::vector<float> mask(hit.size());
+    for (size_t k = 0; k < hit.size(); ++k) mask[k] = hit[k] == 1.0f ? 1.0f : 0.0f;
+    return flipMean(map, mask);
+}
+
+ScoredReference scoredReference(const Frame& frame) { return {scoredImage(frame), frame.radiance}; }
+
+ErrorFigures scoreFrame(const ScoredReference& reference, const ImageChannels& scored, const Frame& frame) {
+    ErrorFigures figures = scoreImage(reference.scored, scored, frame.output);
+    figures.flipMean = flipFigure(reference.shaded, frame.radiance, frame.gbuffer.width, frame.gbuffer.height,
+                                  reference.scored.at(channel::hit));
+    return figures;
 }
 
 std::vector<uint8_t> errorMapImage(const ImageChannels& reference, const ImageChannels& test,

@@ -58,6 +58,28 @@ std::vector<ErrorFigures> scoreLights(const ImageChannels& reference, const Imag
 // scoreImage() of the frame's scoredImage(), for a caller that needs no more of it.
 ErrorFigures scoreFrame(const ImageChannels& reference, const Frame& frame);
 
+// FLIP (shading/flip.h, Andersson et al. 2020) of a technique's shaded image against the
+// reference's (both linear radiance, width x height), each tone mapped for display as
+// kDisplayLuminance is (Reinhard at exposure 0), at kFlipPixelsPerDegree: the mean of the
+// error map over the pixels where `hit` (the reference's) is 1, as every figure here; 0 if
+// there are none. The same bits for any thread count. Throws std::invalid_argument if a size
+// differs.
+double flipFigure(const std::vector<glm::vec3>& referenceShaded, const std::vector<glm::vec3>& testShaded, int width,
+                  int height, const std::vector<float>& hit);
+// Linear radiance as it is displayed: toneMap() with the default options (Reinhard at
+// exposure 0), each channel in [0, 1]. FLIP's input, and kDisplayLuminance's.
+std::vector<glm::vec3> displayedImage(const std::vector<glm::vec3>& radiance);
+// A reference's figures and its shaded image (Frame::radiance) beside them: what a technique's
+// frame is scored against, FLIP included.
+struct ScoredReference {
+    ImageChannels scored;                // scoredImage()
+    std::vector<glm::vec3> shaded;       // linear radiance
+};
+ScoredReference scoredReference(const Frame& frame);
+// scoreImage() of the frame's scoredImage() (passed in, `scored`, to be kept by the caller),
+// with flipMean set from the shaded images.
+ErrorFigures scoreFrame(const ScoredReference& reference, const ImageChannels& scored, const Frame& frame);
+
 // Error-map colours, 8-bit sRGB. Red and blue as in `shadowlab compare`'s heat map, at
 // full saturation so that they stand out from the grey underneath.
 inline constexpr std::array<uint8_t, 3> kFalseShadowColour{255, 0, 0};    // acne

@@ -116,6 +116,7 @@ std::string formatText(const ErrorFigures& f) {
                        " pixels with hit = 1 in the reference" + (f.binary ? " (binary values)" : "") + "\n";
     text += formatLine("RMS error", f.rms);
     if (f.rmsDisplay) text += formatLine("RMS, display", *f.rmsDisplay);
+    if (f.flipMean) text += formatLine("FLIP mean", *f.flipMean);
     text += formatLine("mean |error|", f.meanAbs);
     text += formatLine("max |error|", f.maxAbs);
     text += formatCount("misclassified", f.misclassified(), f.percentOfPixels(f.misclassified()), "");
@@ -144,6 +145,7 @@ std::string formatJson(const ErrorFigures& f) {
     j["pixels"] = f.pixels;
     j["rms"] = f.rms;
     if (f.rmsDisplay) j["rms_display"] = *f.rmsDisplay;
+    if (f.flipMean) j["flip_mean"] = *f.flipMean;
     j["mean_abs"] = f.meanAbs;
     j["max_abs"] = f.maxAbs;
     j["binary"] = f.binary;

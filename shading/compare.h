@@ -47,6 +47,11 @@ struct ErrorFigures {
     // tone mapped for display (shading/tonemap.h, Reinhard at exposure 0), as an image's
     // error is seen (the RMS DeCoro and Rusinkiewicz report); empty for V.
     std::optional<double> rmsDisplay;
+    // FLIP (shading/flip.h) of the test's shaded image against the reference's, both tone
+    // mapped for display as rmsDisplay's luminance is, at 67 pixels per degree: the mean of its
+    // error map over the reference's hit pixels, in [0, 1] (frame/score.h, flipFigure()).
+    // Empty where the shaded images were not at hand (compare of EXR files without R, G, B).
+    std::optional<double> flipMean;
     // True if every compared value of both images is exactly 0 or 1 (hard shadows), where
     // the classification below is the natural figure; it is computed in any case.
     bool binary = true;
@@ -84,7 +89,7 @@ ErrorFigures compareFiles(const std::filesystem::path& reference, const std::fil
                           const CompareOptions& options = {});
 
 // Human-readable, several lines, and a JSON object with the same figures:
-// {"channel","pixels","rms","mean_abs","max_abs","binary","misclassified",
+// {"channel","pixels","rms","rms_display" and "flip_mean" (if set),"mean_abs","max_abs","binary","misclassified",
 //  "misclassified_percent","false_shadow","false_shadow_percent","false_light",
 //  "false_light_percent","umbra_pixels","lit_pixels","umbra_lit","umbra_lit_percent",
 //  "umbra_over","umbra_over_percent","lit_shadowed","lit_shadowed_percent","umbra_errors",

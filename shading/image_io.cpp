@@ -321,6 +321,14 @@ void setRadiance(ImageChannels& image, const std::vector<glm::vec3>& radiance) {
     setComponents(image, {channel::R, channel::G, channel::B}, radiance);
 }
 
+std::optional<std::vector<glm::vec3>> radianceOf(const ImageChannels& image) {
+    const std::vector<float>*r = image.find(channel::R), *g = image.find(channel::G), *b = image.find(channel::B);
+    if (!r || !g || !b) return std::nullopt;
+    std::vector<glm::vec3> radiance(r->size());
+    for (size_t k = 0; k < radiance.size(); ++k) radiance[k] = {(*r)[k], (*g)[k], (*b)[k]};
+    return radiance;
+}
+
 void setGBuffer(ImageChannels& image, const GBuffer& gbuffer) {
     if (image.names.empty()) {
         image.width = gbuffer.width;

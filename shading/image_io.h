@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,6 +61,8 @@ struct ImageChannels {
 
 // Radiance as channels R, G, B.
 void setRadiance(ImageChannels& image, const std::vector<glm::vec3>& radiance);
+// The radiance of an image with channels R, G and B; nullopt if one is missing.
+std::optional<std::vector<glm::vec3>> radianceOf(const ImageChannels& image);
 // G-buffer as channels P.x P.y P.z N.x N.y N.z Ns.x Ns.y Ns.z hit depth, and motion.x motion.y
 // in a frame with a frame before (GBuffer::motion). Sets the size from the G-buffer when the
 // image is still empty.

@@ -26,6 +26,13 @@ glm::vec3 toneMap(const glm::vec3& radiance, const ToneMapOptions& options);
 // [0, 1]: 12.92 c for c <= 0.0031308, else 1.055 c^(1/2.4) - 0.055.
 double srgbEncode(double linear);
 
+// Its inverse (IEC 61966-2-1, section 5.2), for an encoded value in [0, 1]: c / 12.92 for
+// c <= 0.04045, else ((c + 0.055) / 1.055)^2.4.
+double srgbDecode(double encoded);
+// 8-bit sRGB codes, R G B interleaved, to linear colours in [0, 1], one per pixel (a PNG as
+// the display shows it, for FLIP).
+std::vector<glm::vec3> linearFromSrgb8(const std::vector<uint8_t>& rgb);
+
 // Linear [0, 1] -> sRGB-encoded 8-bit code, round to nearest. Values outside [0, 1] are
 // clamped first; NaN maps to 0.
 uint8_t toSrgb8(float linear);

@@ -1,5 +1,6 @@
 // `shadowlab compare`: the error figures of a test image against a reference, both EXR
-// (docs/conventions.md), and a heat map of their difference.
+// (docs/conventions.md), FLIP of their shaded images where both have R, G and B, and a heat
+// map of their difference.
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -8,6 +9,7 @@
 
 #include "app/commands/commands.h"
 #include "app/common/output_files.h"
+#include "frame/score.h"
 #include "scenes/write_file.h"
 #include "shading/compare.h"
 #include "shading/image_io.h"
@@ -24,7 +26,11 @@ void runCompare(const CompareArgs& a) {
     options.channel = a.channel;
     requireOutputDirectories({&a.heatmap, &a.json});
     const ImageChannels reference = readExr(a.reference), test = readExr(a.test);
-    const ErrorFigures figures = compareImages(reference, test, options);
+    ErrorFigures figures = compareImages(reference, test, options);
+    const auto referenceShaded = radianceOf(reference), testShaded = radianceOf(test);
+    if (referenceShaded && testShaded)
+        figures.flipMean =
+            flipFigure(*referenceShaded, *testShaded, reference.width, reference.height, reference.at(channel::hit));
     std::cout << formatText(figures);
     const std::string heatmap = a.heatmap.empty() ? std::filesystem::path(a.test).replace_extension("").string() + "-diff.png" : a.heatmap;
     writePng(heatmap, reference.width, reference.height, errorHeatMap(reference, test, options));

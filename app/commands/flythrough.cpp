@@ -43,7 +43,8 @@ void runFlythroughCommand(FlythroughArgs a) {
                     formatFlythroughSvg(results, FlythroughPlot::Flicker));
     for (const auto& [suffix, plot] :
          {std::pair{"-time.svg", FlythroughPlot::Time}, {"-error.svg", FlythroughPlot::Error},
-          {"-pages.svg", FlythroughPlot::DrawnPages}, {"-hits.svg", FlythroughPlot::CacheHits}})
+          {"-flip.svg", FlythroughPlot::Flip}, {"-pages.svg", FlythroughPlot::DrawnPages},
+          {"-hits.svg", FlythroughPlot::CacheHits}})
         if (hasFlythroughPlot(results, plot)) writeTextFile(stem.string() + suffix, formatFlythroughSvg(results, plot));
     commitAndList(outputs);
 }

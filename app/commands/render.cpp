@@ -70,9 +70,10 @@ void writeErrorMap(const RenderArgs& a, const PreparedScene& prepared, const Tec
     const Scene& scene = prepared.scene();
     const std::string& referenceName = a.reference.empty() ? technique.referenceName : a.reference;
     const Frame referenceFrame = renderReferenceFrame(prepared, settings.simd, referenceName, settings.progress);
-    const ImageChannels reference = scoredImage(referenceFrame);
+    const ScoredReference scored = scoredReference(referenceFrame);
+    const ImageChannels& reference = scored.scored;
     const ImageChannels test = scoredImage(frame);
-    const ErrorFigures figures = scoreImage(reference, test, frame.output);
+    const ErrorFigures figures = scoreFrame(scored, test, frame);
     writePng(a.errorMap, scene.camera.width, scene.camera.height,
              errorMapImage(reference, test, frame.radiance, scoredChannel(frame.output)));
     const bool severalLights = frame.passes.size() > 1;

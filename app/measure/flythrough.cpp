@@ -58,7 +58,7 @@ struct SeriesState {
     FrameHistory history = {};           // what the frames before left the technique (timeFrames)
 };
 
-FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels& reference,
+FlythroughFrame measureFrame(const PreparedScene& prepared, const ScoredReference& reference,
                              const ImageChannels* previousReference, SeriesState& state,
                              const FlythroughOptions& options, const ProgressStage& progress) {
     const FrameSettings settings{options.simd, state.series.settings, {}, nullptr, &state.history};
@@ -68,15 +68,15 @@ FlythroughFrame measureFrame(const PreparedScene& prepared, const ImageChannels&
     frame.medianMs = timed.timing.medianMs;
     frame.minMs = timed.timing.minMs;
     ImageChannels scored = scoredImage(timed.last);
-    frame.errors = scoreImage(reference, scored, timed.last.output);
+    frame.errors = scoreFrame(reference, scored, timed.last);
     frame.stats = timed.last.shadow.stats;
     if (!state.picturesDir.empty()) {
         const std::string number = text::format("%04d", int(state.series.frames.size()));
-        writeFramePictures(state.picturesDir, state.picturesDir, number, timed.last, &reference);
+        writeFramePictures(state.picturesDir, state.picturesDir, number, timed.last, &reference.scored);
     }
     if (previousReference)
         frame.flicker =
-            flickerFigures(*previousReference, reference, state.previous, scored, channel::V, options.stableTolerance);
+            flickerFigures(*previousReference, reference.scored, state.previous, scored, channel::V, options.stableTolerance);
     state.previous = std::move(scored);
     return frame;
 }
@@ -118,17 +118,18 @@ std::vector<SeriesState> seriesStates(const std::vector<SweepPlan>& plans, const
 
 // One frame of the path for every series; each reference rendered once. Returns the
 // references, which the next frame's flicker is measured against.
-std::map<std::string, ImageChannels> renderPathFrame(const PreparedScene& prepared, const PathSample& sample, int f,
-                                                     const std::map<std::string, ImageChannels>& previousReferences,
+std::map<std::string, ScoredReference> renderPathFrame(const PreparedScene& prepared, const PathSample& sample, int f,
+                                                     const std::map<std::string, ScoredReference>& previousReferences,
                                                      std::vector<SeriesState>& states, const FlythroughOptions& options,
                                                      const ProgressStage& progress) {
-    std::map<std::string, ImageChannels> references;
+    std::map<std::string, ScoredReference> references;
     for (SeriesState& state : states) {
         const std::string& name = state.series.reference;
-        if (!references.contains(name)) references.emplace(name, renderReferenceImage(prepared, options.simd, name));
+        if (!references.contains(name))
+            references.emplace(name, scoredReference(renderReferenceFrame(prepared, options.simd, name)));
         const auto previous = previousReferences.find(name);
         FlythroughFrame frame = measureFrame(prepared, references.at(name),
-                                             previous == previousReferences.end() ? nullptr : &previous->second,
+                                             previous == previousReferences.end() ? nullptr : &previous->second.scored,
                                              state, options, progress);
         frame.frame = f;
         frame.time = sample.time;
@@ -160,6 +161,7 @@ PathFigures pathFigures(const FlythroughSeries& series) {
     for (const FlythroughFrame& frame : series.frames) {
         ms.push_back(frame.medianMs);
         figures.meanRms += frame.errors.rms / double(series.frames.size());
+        figures.meanFlip += frame.errors.flipMean.value_or(0.0) / double(series.frames.size());
         figures.meanMisclassifiedPercent +=
             frame.errors.percentOfPixels(frame.errors.misclassified()) / double(series.frames.size());
         if (!frame.flicker || frame.flicker->stablePixels == 0) continue;
@@ -201,7 +203,7 @@ FlythroughResults runFlythrough(const FlythroughOptions& options) {
     const uint64_t framesToRender =
         uint64_t(results.frames) * states.size() * uint64_t(options.warmupRuns + options.runs);
     const ProgressStage progress(options.progress, "flythrough: frame", framesToRender);
-    std::map<std::string, ImageChannels> previousReferences;
+    std::map<std::string, ScoredReference> previousReferences;
     for (int f = 0; f < results.frames; ++f) {
         prepared.setCamera(placed[f].camera);
         prepared.setLights(placed[f].lights);

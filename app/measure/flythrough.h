@@ -64,12 +64,12 @@ struct FlythroughSeries {
     std::string label() const;                     // "csm snap=off", or the technique alone
 };
 
-// A series' figures over the path: the median of the frames' times, the mean of their RMS
-// and misclassified share, the mean change over every stable pixel of every frame pair (each
+// A series' figures over the path: the median of the frames' times, the mean of their RMS,
+// FLIP (ErrorFigures::flipMean) and misclassified share, the mean change over every stable pixel of every frame pair (each
 // pair weighted by its stable pixels) and the mean of the 99th percentiles of the pairs that
 // have stable pixels.
 struct PathFigures {
-    double medianMs = 0.0, meanRms = 0.0, meanMisclassifiedPercent = 0.0;
+    double medianMs = 0.0, meanRms = 0.0, meanFlip = 0.0, meanMisclassifiedPercent = 0.0;
     double flickerMean = 0.0, flickerP99 = 0.0;
 };
 PathFigures pathFigures(const FlythroughSeries& series);

@@ -38,7 +38,7 @@ Json seriesJson(const FlythroughSeries& s) {
     Json frames = Json::array();
     for (const FlythroughFrame& f : s.frames) frames.push_back(frameJson(f));
     return {{"technique", s.technique}, {"reference", s.reference}, {"settings", s.settings},
-            {"path_figures", {{"median_ms", p.medianMs}, {"mean_rms", p.meanRms},
+            {"path_figures", {{"median_ms", p.medianMs}, {"mean_rms", p.meanRms}, {"mean_flip", p.meanFlip},
                               {"mean_misclassified_percent", p.meanMisclassifiedPercent},
                               {"flicker_mean", p.flickerMean}, {"flicker_p99", p.flickerP99}}},
             {"frames", frames}};
@@ -62,12 +62,12 @@ std::string formatFlythroughText(const FlythroughResults& results) {
     std::string text = format("%s: %d frames of path %s, %d threads, median of %d runs after %d warm-up\n",
                               results.scene.c_str(), results.frames, results.path.c_str(), results.threads,
                               results.runs, results.warmupRuns);
-    text += format("%-36s %10s %10s %8s %13s %12s\n", "series", "median ms", "mean RMS", "miscl %", "flicker mean",
-                   "flicker p99");
+    text += format("%-36s %10s %10s %10s %8s %13s %12s\n", "series", "median ms", "mean RMS", "mean FLIP", "miscl %",
+                   "flicker mean", "flicker p99");
     for (const FlythroughSeries& s : results.series) {
         const PathFigures p = pathFigures(s);
-        text += format("%-36s %10.3f %10.5f %8.3f %13.6f %12.5f\n", s.label().c_str(), p.medianMs, p.meanRms,
-                       p.meanMisclassifiedPercent, p.flickerMean, p.flickerP99);
+        text += format("%-36s %10.3f %10.5f %10.5f %8.3f %13.6f %12.5f\n", s.label().c_str(), p.medianMs, p.meanRms,
+                       p.meanFlip, p.meanMisclassifiedPercent, p.flickerMean, p.flickerP99);
     }
     return text;
 }
@@ -77,7 +77,7 @@ std::string formatFlythroughCsv(const FlythroughResults& results) {
     std::vector<std::string> header{"technique", "settings", "frame", "time", "eye_x", "eye_y", "eye_z", "target_x",
                                     "target_y", "target_z", "light_x", "light_y", "light_z", "median_ms", "min_ms", "rms",
                                     "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
-                                    "flicker_mean", "flicker_p99", "flicker_stable_percent"};
+                                    "flip_mean", "flicker_mean", "flicker_p99", "flicker_stable_percent"};
     header.insert(header.end(), stats.begin(), stats.end());
     std::string csv = csvLine(header);
     for (const FlythroughSeries& s : results.series) {
@@ -92,6 +92,7 @@ std::string formatFlythroughCsv(const FlythroughResults& results) {
             for (double x : {f.medianMs, f.minMs, e.rms, e.maxAbs, e.percentOfPixels(e.misclassified()),
                              e.percentOfPixels(e.falseShadow), e.percentOfPixels(e.falseLight)})
                 fields.push_back(csvNumber(x));
+            fields.push_back(e.flipMean ? csvNumber(*e.flipMean) : "");
             if (!f.flicker) fields.insert(fields.end(), 3, "");   // frame 0 has nothing to differ from
             else
                 for (double x : {f.flicker->mean, f.flicker->p99, f.flicker->stablePercent()})

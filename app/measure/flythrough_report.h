@@ -8,19 +8,19 @@
 
 namespace shadowlab {
 
-// Per series: its label and PathFigures.
+// Per series: its label and PathFigures (mean RMS, mean FLIP, ...).
 std::string formatFlythroughText(const FlythroughResults& results);
 
 // One row per series and frame. Columns: technique, settings, frame, time, eye_x, eye_y,
 // eye_z, target_x, target_y, target_z, light_x, light_y, light_z (empty if the path does
 // not move the light), median_ms, min_ms, rms, max_abs, misclassified_percent,
-// false_shadow_percent, false_light_percent, flicker_mean, flicker_p99,
+// false_shadow_percent, false_light_percent, flip_mean (ErrorFigures::flipMean), flicker_mean, flicker_p99,
 // flicker_stable_percent (the three empty on frame 0).
 std::string formatFlythroughCsv(const FlythroughResults& results);
 
 // {"scene", "path", "frames", "threads", "warmup", "runs", "stable_tolerance", "series":
 //  [{"technique", "reference", "settings", "path_figures": {"median_ms", "mean_rms",
-//  "mean_misclassified_percent", "flicker_mean", "flicker_p99"}, "frames": [{"frame",
+//  "mean_flip", "mean_misclassified_percent", "flicker_mean", "flicker_p99"}, "frames": [{"frame",
 //  "time", "eye", "target", "light" (if moved), "median_ms", "min_ms", "errors":
 //  formatJson(...), "flicker": {"mean", "p99", "pixels", "stable_pixels"} or null}]}]}.
 // NaN is written as null.

@@ -49,7 +49,7 @@ const std::string& referenceFor(const Technique& technique, const SweepOptions& 
 }
 
 // Errors and stats come from the last measured frame, its stage times medians (timeFrames).
-SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference, const Technique& technique,
+SweepRow measure(const PreparedScene& prepared, const ScoredReference& reference, const Technique& technique,
                  const FrameSettings& settings, const SweepOptions& options, const ProgressStage& frames) {
     const TimedFrames timed = timeFrames(prepared, technique, settings, options.warmupRuns, options.runs, frames);
     SweepRow row;
@@ -59,8 +59,8 @@ SweepRow measure(const PreparedScene& prepared, const ImageChannels& reference, 
     row.medianMs = timed.timing.medianMs;
     row.minMs = timed.timing.minMs;
     const ImageChannels scored = scoredImage(timed.last);
-    row.errors = scoreImage(reference, scored, timed.last.output);
-    if (timed.last.passes.size() > 1) row.lightErrors = scoreLights(reference, scored);
+    row.errors = scoreFrame(reference, scored, timed.last);
+    if (timed.last.passes.size() > 1) row.lightErrors = scoreLights(reference.scored, scored);
     row.stats = timed.last.shadow.stats;
     return row;
 }
@@ -91,10 +91,12 @@ std::string errorColumns(const ErrorFigures& e) {
     char fullUmbraLit[32] = "not recorded";
     if (const std::optional<double> percent = e.fullUmbraLitPercent())
         std::snprintf(fullUmbraLit, sizeof fullUmbraLit, "%.4f", *percent);
+    char flip[32] = "";   // a light of several has none: FLIP is of the whole shaded image
+    if (e.flipMean) std::snprintf(flip, sizeof flip, "%.5f", *e.flipMean);
     char line[256];
-    std::snprintf(line, sizeof line, "%14.4f %10.5f %10.5f %11.4f %16s %12.4f %13.4f\n",
+    std::snprintf(line, sizeof line, "%14.4f %10.5f %10.5f %11.4f %16s %12.4f %13.4f %10s\n",
                   e.percentOfPixels(e.misclassified()), e.rms, e.maxAbs, e.percentOfPixels(e.umbraLit), fullUmbraLit,
-                  e.percentOfPixels(e.umbraOver), e.percentOfPixels(e.litShadowed));
+                  e.percentOfPixels(e.umbraOver), e.percentOfPixels(e.litShadowed), flip);
     return line;
 }
 
@@ -104,8 +106,7 @@ std::string statValue(const SweepRow& row, const std::string& name) {
 }
 
 // A reference as the settings are scored against it, and its pictures (with imagesOutDir).
-struct RenderedReference {
-    ImageChannels scored;
+struct RenderedReference : ScoredReference {
     FrameImages images;
 };
 
@@ -122,7 +123,7 @@ std::map<std::string, RenderedReference> renderReferences(const PreparedScene& p
         const Frame frame = renderReferenceFrame(prepared, options.simd, name, options.progress);
         FrameImages images;
         if (!folder.empty()) images = writeFramePictures(options.imagesOutDir, folder, name, frame, nullptr);
-        references.emplace(name, RenderedReference{scoredImage(frame), std::move(images)});
+        references.emplace(name, RenderedReference{scoredReference(frame), std::move(images)});
     }
     return references;
 }
@@ -199,7 +200,7 @@ SweepResults runSweep(const SweepOptions& options) {
             const size_t first = results.rows.size();
             for (int n : threads) {
                 SweepRow row = withThreads(n, [&] {
-                    return measure(prepared, reference.scored, *plan.technique, {options.simd, setting.params, {}},
+                    return measure(prepared, reference, *plan.technique, {options.simd, setting.params, {}},
                                    options, frames);
                 });
                 row.setting = setting.index;
@@ -248,9 +249,9 @@ std::string sweepImagesFolder(const SweepResults& results) { return sweepFileSte
 std::string formatSweepText(const SweepResults& results) {
     std::string text = results.scene + (results.shard.count > 1 ? ", shard " + results.shard.name() : "") + "\n";
     char line[512];
-    std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s %14s %10s %10s %11s %16s %12s %13s\n", "technique",
+    std::snprintf(line, sizeof line, "%-16s %-40s %7s %10s %10s %14s %10s %10s %11s %16s %12s %13s %10s\n", "technique",
                   "settings", "threads", "median ms", "min ms", "misclassified%", "RMS", "max", "umbra lit%",
-                  "umbra lit 0.02%", "umbra over%", "lit shadowed%");
+                  "umbra lit 0.02%", "umbra over%", "lit shadowed%", "FLIP");
     text += line;
     for (const SweepRow& r : results.rows) {
         std::snprintf(line, sizeof line, "%-16s %-40s %7d %10.3f %10.3f ", r.technique.c_str(),
@@ -270,7 +271,7 @@ std::string formatSweepCsv(const SweepResults& results) {
     std::vector<std::string> header = {"technique", "settings", "threads", "median_ms", "min_ms", "rms", "rms_display", "mean_abs",
                                        "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
                                        "umbra_lit_percent", "full_umbra_lit_percent", "umbra_over_percent",
-                                       "lit_shadowed_percent", "reference"};
+                                       "lit_shadowed_percent", "reference", "flip_mean"};
     const size_t lights = results.lightCount();
     for (size_t k = 0; k < lights; ++k)
         for (const LightCsvFigure& figure : kLightCsvFigures)
@@ -288,7 +289,7 @@ std::string formatSweepCsv(const SweepResults& results) {
                                            e.fullUmbraRecorded ? csvNumber(*e.fullUmbraLitPercent()) : "",
                                            csvNumber(e.percentOfPixels(e.umbraOver)),
                                            csvNumber(e.percentOfPixels(e.litShadowed)),
-                                           r.reference};
+                                           r.reference, e.flipMean ? csvNumber(*e.flipMean) : ""};
         for (size_t k = 0; k < lights; ++k)
             for (const LightCsvFigure& figure : kLightCsvFigures)
                 fields.push_back(k < r.lightErrors.size() ? csvNumber(figure.value(r.lightErrors[k])) : "");

@@ -134,7 +134,8 @@ std::string formatSweepText(const SweepResults& results);
 // One row per SweepRow. CSV columns: technique, settings, threads, median_ms, min_ms, rms,
 // rms_display, mean_abs, max_abs, misclassified_percent, false_shadow_percent,
 // false_light_percent, umbra_lit_percent, full_umbra_lit_percent, umbra_over_percent,
-// lit_shadowed_percent, reference; for a sweep of several lights then each light's
+// lit_shadowed_percent, reference, flip_mean (FLIP of the shaded images, ErrorFigures::flipMean;
+// empty in a row read from JSON written before it); for a sweep of several lights then each light's
 // headline figures, lightK_misclassified_percent, lightK_rms and lightK_umbra_lit_percent
 // for K from 0 (empty where a row has none); then one column per
 // technique stat (empty where a row does not report it).

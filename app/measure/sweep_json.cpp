@@ -96,6 +96,7 @@ ErrorFigures readErrors(const Json& j) {
     e.pixels = j.at("pixels").get<uint64_t>();
     e.rms = number(j.at("rms"));
     if (j.contains("rms_display")) e.rmsDisplay = number(j.at("rms_display"));
+    if (j.contains("flip_mean")) e.flipMean = number(j.at("flip_mean"));   // absent before FLIP was scored
     e.meanAbs = number(j.at("mean_abs"));
     e.maxAbs = number(j.at("max_abs"));
     e.binary = j.at("binary").get<bool>();

@@ -23,6 +23,7 @@ std::optional<double> plotted(const FlythroughFrame& frame, FlythroughPlot plot)
         case FlythroughPlot::Flicker: return frame.flicker ? std::optional(frame.flicker->mean) : std::nullopt;
         case FlythroughPlot::DrawnPages: return stat(frame, "cache_drawn_pages");
         case FlythroughPlot::CacheHits: return stat(frame, "cache_hit_percent");
+        case FlythroughPlot::Flip: return frame.errors.flipMean;
     }
     return std::nullopt;
 }
@@ -38,7 +39,8 @@ bool hasFlythroughPlot(const FlythroughResults& results, FlythroughPlot plot) {
 std::string formatFlythroughSvg(const FlythroughResults& results, FlythroughPlot plot) {
     static constexpr const char* kTitles[] = {"technique time (median ms)", "RMS of V against the reference",
                                               "flicker: mean |V_t - V_t-1| where the reference is unchanged",
-                                              "pages drawn (cache_drawn_pages)", "cache hits (% of requested pages)"};
+                                              "pages drawn (cache_drawn_pages)", "cache hits (% of requested pages)",
+                                              "FLIP of the shaded image against the reference (mean)"};
     const char* yTitle = kTitles[int(plot)];
     LinePlot linePlot{results.scene + ": " + yTitle + " along the path", "frame", yTitle, {}};
     for (const FlythroughSeries& s : results.series) {

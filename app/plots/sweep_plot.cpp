@@ -70,6 +70,7 @@ const char* axisTitle(PlotErrorAxis axis) {
         case PlotErrorAxis::Rms: return "RMS error (V, or Y of a shaded image)";
         case PlotErrorAxis::RmsDisplay: return "RMS error of the displayed luminance";
         case PlotErrorAxis::Umbra: return "umbra errors, both ways (% of pixels)";
+        case PlotErrorAxis::Flip: return "FLIP of the shaded image (mean)";
         case PlotErrorAxis::Auto:   // resolved before (resolvedPlotAxis)
         case PlotErrorAxis::Misclassified: break;
     }
@@ -176,7 +177,8 @@ PlotErrorAxis parsePlotErrorAxis(const std::string& name) {
     if (name == "rms") return PlotErrorAxis::Rms;
     if (name == "umbra") return PlotErrorAxis::Umbra;
     if (name == "rms-display") return PlotErrorAxis::RmsDisplay;
-    throw std::invalid_argument("plot axis must be auto, misclassified, rms, umbra or rms-display, got '" + name + "'");
+    if (name == "flip") return PlotErrorAxis::Flip;
+    throw std::invalid_argument("plot axis must be auto, misclassified, rms, umbra, rms-display or flip, got '" + name + "'");
 }
 
 PlotErrorAxis resolvedPlotAxis(PlotErrorAxis asked, const std::vector<SweepRow>& rows) {
@@ -192,6 +194,8 @@ void requirePlottable(const std::vector<SweepRow>& rows, PlotErrorAxis axis) {
         if (axis == PlotErrorAxis::RmsDisplay && !row.errors.rmsDisplay)
             throw std::invalid_argument("--plot-y rms-display: " + row.technique +
                                         " is scored on V, which has no displayed luminance");
+        if (axis == PlotErrorAxis::Flip && !row.errors.flipMean)
+            throw std::invalid_argument("--plot-y flip: " + row.technique + " has no FLIP figure (JSON written before it)");
     }
 }
 
@@ -201,6 +205,7 @@ double plottedError(const SweepRow& row, PlotErrorAxis axis) {
         case PlotErrorAxis::Rms: return e.rms;
         case PlotErrorAxis::RmsDisplay: return e.rmsDisplay.value();   // requirePlottable first
         case PlotErrorAxis::Umbra: return e.percentOfPixels(e.umbraErrors());
+        case PlotErrorAxis::Flip: return e.flipMean.value();   // requirePlottable first
         case PlotErrorAxis::Auto:   // a row alone cannot choose: callers resolve (resolvedPlotAxis)
         case PlotErrorAxis::Misclassified: break;
     }

@@ -18,10 +18,11 @@ enum class PlotErrorAxis {
     Rms,             // RMS error of V, or of the luminance Y of a shaded image
     Umbra,           // umbra errors both ways (soft shadows), % of the hit pixels
     RmsDisplay,      // RMS error of a shaded image's displayed luminance (ErrorFigures::rmsDisplay)
+    Flip,            // FLIP of the shaded images (ErrorFigures::flipMean)
 };
 
-// Throws std::invalid_argument for a name other than "auto", "misclassified", "rms", "umbra"
-// or "rms-display".
+// Throws std::invalid_argument for a name other than "auto", "misclassified", "rms", "umbra",
+// "rms-display" or "flip".
 PlotErrorAxis parsePlotErrorAxis(const std::string& name);
 
 // The axis a plot of `rows` draws: `asked`, or for Auto, Rms when every row is scored against
@@ -31,7 +32,8 @@ PlotErrorAxis parsePlotErrorAxis(const std::string& name);
 PlotErrorAxis resolvedPlotAxis(PlotErrorAxis asked, const std::vector<SweepRow>& rows);
 
 // Throws std::invalid_argument naming a row the axis has no figure for (rms-display of a
-// technique scored on V), before anything is drawn.
+// technique scored on V, flip of a row read from JSON written before FLIP), before anything
+// is drawn.
 void requirePlottable(const std::vector<SweepRow>& rows, PlotErrorAxis axis);
 
 double plottedError(const SweepRow& row, PlotErrorAxis axis);

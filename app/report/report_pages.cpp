@@ -236,6 +236,8 @@ std::string errorsTable(const SweepRow& row) {
         figureRow("lit shadowed %", columns, "%.4f", percent(&ErrorFigures::litShadowed));
     if (e.rmsDisplay)
         rows += figureRow("RMS as displayed", columns, "%.6f", [](const ErrorFigures& f) { return f.rmsDisplay; });
+    if (e.flipMean)
+        rows += figureRow("FLIP mean", columns, "%.5f", [](const ErrorFigures& f) { return f.flipMean; });
     return "<h2>Error against " + escape(row.reference) + " (on " + escape(e.channel) +
            ")</h2>\n<table class=\"figures-table\">\n" + header + "<tbody>\n" + rows + "</tbody>\n</table>\n";
 }

@@ -172,6 +172,9 @@ if [ "$rc" -eq 0 ] && grep -q "light2_technique_ms" "$out" && grep -q "^light 2:
 else fail "a three-light render printed no per-light time or figures (rc $rc): $(head -c 300 "$out")"; fi
 run compare "$scratch/three.exr" "$scratch/three.exr" --channel light2.V
 if [ "$rc" -eq 0 ]; then pass; else fail "the three-light EXR has no light2.V: $(cat "$err")"; fi
+# Both EXRs have R, G, B: compare prints FLIP of the shaded images too, 0 for a file against itself.
+if grep -Eq "^  FLIP mean +0$" "$out"; then pass
+else fail "compare of an EXR against itself printed no FLIP mean of 0: $(cat "$out")"; fi
 # Its sweep: each light's figures in the JSON are render --json's, for the same technique
 # and settings (a coarse map, which errs); the CSV has each light's columns.
 run render "$three" --technique shadow-map --param resolution=64 "${tiny[@]}" --error-map "$scratch/three64.png" \
@@ -190,7 +193,7 @@ assert row["errors"] == render["errors"], "the overall figures differ"
 assert row["errors"]["misclassified"] == sum(l["misclassified"] for l in lights) > 0, "no sum, or no error to compare"
 PY
 then pass; else fail "the sweep's per-light figures are not render's"; fi
-if head -1 "$scratch/three-sweep/three-lights-shadow-map.csv" | grep -q ",reference,light0_misclassified_percent,light0_rms,"; then pass
+if head -1 "$scratch/three-sweep/three-lights-shadow-map.csv" | grep -q ",reference,flip_mean,light0_misclassified_percent,light0_rms,"; then pass
 else fail "the three-light sweep's CSV has no per-light columns: $(head -c 400 "$scratch/three-sweep/three-lights-shadow-map.csv")"; fi
 expect_error "compare of missing files" compare "$scratch/none1.exr" "$scratch/none2.exr"
 maps=$(dirname "${BASH_SOURCE[0]}")/../../assets/environments

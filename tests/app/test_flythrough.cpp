@@ -78,6 +78,7 @@ TEST_CASE("a static camera gives zero flicker for every technique") {
                 CHECK(flicker.mean == 0.0);
                 CHECK(flicker.p99 == 0.0);
                 CHECK(series.frames[f].errors.rms == series.frames[0].errors.rms);
+                CHECK(series.frames[f].errors.flipMean == series.frames[0].errors.flipMean);
             }
             CHECK(pathFigures(series).flickerMean == 0.0);
         }
@@ -163,17 +164,27 @@ TEST_CASE("a fly-through follows the scene's path and writes its table, JSON, pl
     REQUIRE(series.frames[1].flicker);
     CHECK(series.frames[1].flicker->stablePixels < series.frames[1].flicker->pixels);
     CHECK(series.frames[1].errors.rms != series.frames[0].errors.rms);
+    // FLIP beside the RMS on every frame: a shadow map's errors are small, seen, and under 1.
+    for (const FlythroughFrame& frame : series.frames) {
+        REQUIRE(frame.errors.flipMean.has_value());
+        CHECK(*frame.errors.flipMean > 0.0);
+        CHECK(*frame.errors.flipMean < 0.5);
+    }
 
     const std::string csv = formatFlythroughCsv(results);
     CHECK(std::count(csv.begin(), csv.end(), '\n') == 5);
     CHECK(csv.rfind("technique,settings,frame,time,eye_x", 0) == 0);
+    CHECK(csv.substr(0, csv.find('\n')).find(",false_light_percent,flip_mean,flicker_mean,") != std::string::npos);
     const nlohmann::json json = nlohmann::json::parse(formatFlythroughJson(results));
     CHECK(json["frames"] == 4);
     CHECK(json["series"][0]["frames"][0]["flicker"].is_null());
     CHECK(json["series"][0]["frames"][2]["flicker"]["stable_pixels"].get<uint64_t>() ==
           series.frames[2].flicker->stablePixels);
     CHECK(json["series"][0]["path_figures"]["flicker_mean"].get<double>() == pathFigures(series).flickerMean);
-    for (FlythroughPlot plot : {FlythroughPlot::Time, FlythroughPlot::Error, FlythroughPlot::Flicker})
+    CHECK(json["series"][0]["path_figures"]["mean_flip"].get<double>() == pathFigures(series).meanFlip);
+    CHECK(json["series"][0]["frames"][3]["errors"]["flip_mean"].get<double>() == *series.frames[3].errors.flipMean);
+    CHECK(hasFlythroughPlot(results, FlythroughPlot::Flip));
+    for (FlythroughPlot plot : {FlythroughPlot::Time, FlythroughPlot::Error, FlythroughPlot::Flicker, FlythroughPlot::Flip})
         CHECK(formatFlythroughSvg(results, plot).find("shadow-map") != std::string::npos);
     // A shadow map caches no pages: no cache plots.
     CHECK_FALSE(hasFlythroughPlot(results, FlythroughPlot::DrawnPages));

@@ -186,7 +186,7 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
     std::string line;
     std::getline(csv, line);
     const std::vector<std::string> header = splitCsvLine(line);
-    REQUIRE(header.size() == 19);   // 17 columns, then the reference's stage times
+    REQUIRE(header.size() == 20);   // 18 columns, then the reference's stage times
     CHECK(header[0] == "technique");
     CHECK(header[6] == "rms_display");
     CHECK(header[9] == "misclassified_percent");
@@ -194,8 +194,9 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
     CHECK(header[13] == "full_umbra_lit_percent");
     CHECK(header[14] == "umbra_over_percent");
     CHECK(header[16] == "reference");
-    CHECK(header[17] == "bvh_ms");
-    CHECK(header[18] == "rays_ms");
+    CHECK(header[17] == "flip_mean");
+    CHECK(header[18] == "bvh_ms");
+    CHECK(header[19] == "rays_ms");
     for (const SweepRow& row : results.rows) {
         REQUIRE(std::getline(csv, line));
         const std::vector<std::string> fields = splitCsvLine(line);
@@ -211,6 +212,16 @@ TEST_CASE("sweep CSV: a header and one line per row, figures that parse back") {
         CHECK(std::stod(fields[13]) ==
               doctest::Approx(row.errors.percentOfPixels(row.errors.fullUmbraLit)).epsilon(1e-8));
         CHECK(fields[16] == "reference");
+        // FLIP of the shaded images: 0 for the reference scored against itself, between 0 and 1
+        // for `none`, which lights the sun's shadows (its misclassified pixels are > 0 too).
+        REQUIRE(row.errors.flipMean.has_value());
+        CHECK(std::stod(fields[17]) == doctest::Approx(*row.errors.flipMean).epsilon(1e-8));
+        if (row.technique == "none") {
+            CHECK(*row.errors.flipMean > 0.01);
+            CHECK(*row.errors.flipMean < 1.0);
+        } else {
+            CHECK(*row.errors.flipMean == 0.0);
+        }
     }
     CHECK_FALSE(std::getline(csv, line));
 }
@@ -234,6 +245,7 @@ TEST_CASE("sweep JSON: rows with settings, times and error figures") {
         CHECK(row["settings"].size() == results.rows[k].settings.size());
         CHECK(row["median_ms"].get<double>() == results.rows[k].medianMs);
         CHECK(row["errors"]["false_light"].get<uint64_t>() == results.rows[k].errors.falseLight);
+        CHECK(row["errors"]["flip_mean"].get<double>() == results.rows[k].errors.flipMean.value());
         CHECK(row["stats"].is_object());
         CHECK_FALSE(row.contains("lights"));   // one light: the row's figures are its own
     }
@@ -253,6 +265,12 @@ TEST_CASE("sweep SVG: well-formed, one point per row, the Pareto front ringed") 
     CHECK(parsePlotErrorAxis("rms") == PlotErrorAxis::Rms);
     CHECK(parsePlotErrorAxis("umbra") == PlotErrorAxis::Umbra);
     CHECK(parsePlotErrorAxis("rms-display") == PlotErrorAxis::RmsDisplay);
+    CHECK(parsePlotErrorAxis("flip") == PlotErrorAxis::Flip);
+    CHECK(wellFormedXml(formatSweepSvg(results, PlotErrorAxis::Flip)));
+    CHECK(plottedError(results.rows[0], PlotErrorAxis::Flip) == *results.rows[0].errors.flipMean);
+    SweepRow older = results.rows[0];
+    older.errors.flipMean.reset();
+    CHECK_THROWS_AS(requirePlottable({older}, PlotErrorAxis::Flip), std::invalid_argument);
     SweepRow shaded, visibility;
     shaded.technique = "env-additive", visibility.technique = "shadow-map";
     shaded.errors.rms = 0.5, shaded.errors.rmsDisplay = 0.25;

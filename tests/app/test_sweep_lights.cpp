@@ -161,21 +161,25 @@ TEST_CASE("sweep CSV and text of several lights: each light's headline figures i
     std::string line;
     std::getline(csv, line);
     const std::vector<std::string> header = splitCsvLine(line);
-    REQUIRE(header.size() > 26);
+    REQUIRE(header.size() > 27);
     CHECK(header[16] == "reference");
+    CHECK(header[17] == "flip_mean");
     const std::vector<std::string> figures = {"misclassified_percent", "rms", "umbra_lit_percent"};
     for (size_t light = 0; light < 3; ++light)
         for (size_t f = 0; f < figures.size(); ++f)
-            CHECK(header[17 + 3 * light + f] == "light" + std::to_string(light) + "_" + figures[f]);
-    CHECK(header[26] == "light0_technique_ms");   // then the stats, as before
+            CHECK(header[18 + 3 * light + f] == "light" + std::to_string(light) + "_" + figures[f]);
+    CHECK(header[27] == "light0_technique_ms");   // then the stats, as before
     for (const SweepRow& row : results.rows) {
         REQUIRE(std::getline(csv, line));
         const std::vector<std::string> fields = splitCsvLine(line);
+        REQUIRE(row.errors.flipMean.has_value());
+        CHECK(std::stod(fields[17]) == doctest::Approx(*row.errors.flipMean).epsilon(1e-8));
         for (size_t light = 0; light < 3; ++light) {
             const ErrorFigures& e = row.lightErrors[light];
-            CHECK(std::stod(fields[17 + 3 * light]) == doctest::Approx(e.percentOfPixels(e.misclassified())).epsilon(1e-8));
-            CHECK(std::stod(fields[18 + 3 * light]) == doctest::Approx(e.rms).epsilon(1e-8));
-            CHECK(std::stod(fields[19 + 3 * light]) == doctest::Approx(e.percentOfPixels(e.umbraLit)).epsilon(1e-8));
+            CHECK(std::stod(fields[18 + 3 * light]) == doctest::Approx(e.percentOfPixels(e.misclassified())).epsilon(1e-8));
+            CHECK(std::stod(fields[19 + 3 * light]) == doctest::Approx(e.rms).epsilon(1e-8));
+            CHECK(std::stod(fields[20 + 3 * light]) == doctest::Approx(e.percentOfPixels(e.umbraLit)).epsilon(1e-8));
+            CHECK_FALSE(e.flipMean.has_value());   // FLIP is of the whole shaded image, every light at once
         }
     }
     const std::string text = formatSweepText(results);

@@ -76,6 +76,26 @@ TEST_CASE("portable sin, cos, tan, exp, log, log2, exp2, pow, atan, acos are wit
     CHECK(ulps(portable::hypot(3.0, 4.0), 5.0) == 0.0);
 }
 
+TEST_CASE("portable powFloat rounds to within one float ulp of libm's double pow") {
+    // FLIP's uses: HyAB^0.7 (HyAB up to about 250), and a difference in [0, 1] to a power in [0, 1].
+    for (const float b : {0.7f, 0.5f, 1.0f / 3.0f, 0.05f, 1.0f, 2.4f}) {
+        double worst = 0.0;
+        for (int i = 1; i <= 200000; ++i) {
+            const float a = float(i) * 0.00125f;
+            const float got = portable::powFloat(a, b), expected = float(std::pow(double(a), double(b)));
+            worst = std::max(worst, std::abs(double(got) - double(expected)) / double(std::nextafter(expected, INFINITY) - expected));
+        }
+        CAPTURE(b);
+        CHECK(worst <= 1.0);
+    }
+    CHECK(portable::powFloat(0.0f, 0.5f) == 0.0f);
+    CHECK(portable::powFloat(0.0f, 0.0f) == 1.0f);
+    CHECK(portable::powFloat(1.0f, 0.3f) == 1.0f);
+    CHECK(portable::powFloat(4.0f, 0.5f) == 2.0f);
+    CHECK(std::isnan(portable::powFloat(-1.0f, 0.5f)));
+    CHECK(portable::powFloat(1e-30f, 0.5f) == doctest::Approx(1e-15f));
+}
+
 TEST_CASE("portable atan2 is within a few ulps of libm in every quadrant, with libm's signed zeros and axes") {
     double worst = 0.0;
     for (int k = 0; k < 100000; ++k) {

@@ -9,15 +9,6 @@
 
 using namespace shadowlab;
 
-namespace {
-
-// The standard's decoding function (EOTF), the inverse of the encoding.
-double srgbDecode(double encoded) {
-    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
-
-}  // namespace
-
 TEST_CASE("sRGB encoding at known points") {
     CHECK(srgbEncode(0.0) == 0.0);
     CHECK(srgbEncode(1.0) == doctest::Approx(1.0).epsilon(1e-15));
@@ -36,6 +27,17 @@ TEST_CASE("sRGB encoding at known points") {
     CHECK(toSrgb8(7.0f) == 255);    // clamped
     CHECK(toSrgb8(-1.0f) == 0);
     CHECK(toSrgb8(std::numeric_limits<float>::quiet_NaN()) == 0);
+}
+
+TEST_CASE("sRGB decoding is the standard's EOTF, and 8-bit images decode code by code") {
+    CHECK(srgbDecode(0.0) == 0.0);
+    CHECK(srgbDecode(0.04) == doctest::Approx(0.04 / 12.92).epsilon(1e-15));   // linear segment
+    CHECK(srgbDecode(0.5) == doctest::Approx(std::pow(0.555 / 1.055, 2.4)).epsilon(1e-14));
+    CHECK(srgbDecode(1.0) == doctest::Approx(1.0).epsilon(1e-14));
+    const std::vector<glm::vec3> linear = linearFromSrgb8({0, 128, 255, 255, 0, 0});
+    REQUIRE(linear.size() == 2);
+    CHECK(linear[0] == glm::vec3(0.0f, float(srgbDecode(128.0 / 255.0)), float(srgbDecode(1.0))));
+    CHECK(linear[1].r == float(srgbDecode(1.0)));
 }
 
 TEST_CASE("every 8-bit code round-trips through the sRGB decoding") {
