@@ -86,7 +86,19 @@ struct PathFrame {
     PathSample sample;
     Camera camera;
     std::vector<Light> lights;
+    bool moved = false;   // anything differs from the frame before (FlythroughFrame::moved)
 };
+
+bool samePlace(const PathSample& a, const PathSample& b) {
+    if (a.eye != b.eye || a.target != b.target || a.light != b.light || a.placements.size() != b.placements.size())
+        return false;
+    for (size_t k = 0; k < a.placements.size(); ++k) {
+        if (a.placements[k].instance != b.placements[k].instance ||
+            a.placements[k].worldFromObject != b.placements[k].worldFromObject)
+            return false;
+    }
+    return true;
+}
 
 // Every frame placed before any is rendered: an undefined view half way fails first.
 std::vector<PathFrame> placeWholePath(const CameraPath& path, int frames, const Camera& baseCamera,
@@ -95,6 +107,7 @@ std::vector<PathFrame> placeWholePath(const CameraPath& path, int frames, const 
     for (int f = 0; f < frames; ++f) {
         PathFrame& frame = placed.emplace_back(PathFrame{samplePath(path, f, frames), baseCamera, baseLights});
         placeOnPath(frame.sample, f, frame.camera, frame.lights);
+        frame.moved = f > 0 && !samePlace(frame.sample, placed[size_t(f) - 1].sample);
     }
     return placed;
 }
@@ -118,7 +131,7 @@ std::vector<SeriesState> seriesStates(const std::vector<SweepPlan>& plans, const
 
 // One frame of the path for every series; each reference rendered once. Returns the
 // references, which the next frame's flicker is measured against.
-std::map<std::string, ScoredReference> renderPathFrame(const PreparedScene& prepared, const PathSample& sample, int f,
+std::map<std::string, ScoredReference> renderPathFrame(const PreparedScene& prepared, const PathFrame& placed, int f,
                                                      const std::map<std::string, ScoredReference>& previousReferences,
                                                      std::vector<SeriesState>& states, const FlythroughOptions& options,
                                                      const ProgressStage& progress) {
@@ -132,10 +145,11 @@ std::map<std::string, ScoredReference> renderPathFrame(const PreparedScene& prep
                                              previous == previousReferences.end() ? nullptr : &previous->second.scored,
                                              state, options, progress);
         frame.frame = f;
-        frame.time = sample.time;
-        frame.eye = sample.eye;
-        frame.target = sample.target;
-        frame.light = sample.light;
+        frame.time = placed.sample.time;
+        frame.eye = placed.sample.eye;
+        frame.target = placed.sample.target;
+        frame.light = placed.sample.light;
+        frame.moved = placed.moved;
         state.series.frames.push_back(std::move(frame));
     }
     return references;
@@ -152,6 +166,25 @@ std::string flythroughFileStem(const std::string& scene, const std::vector<const
 std::string FlythroughSeries::label() const {
     return settings.empty() ? technique : technique + " " + settingsLabel(settings);
 }
+
+namespace {
+
+// PathFigures::settleFrames and ghosting (flythrough.h).
+void settleFigures(const std::vector<FlythroughFrame>& frames, PathFigures& figures) {
+    const auto lastMove = std::find_if(frames.rbegin(), frames.rend(), [](const FlythroughFrame& f) { return f.moved; });
+    if (lastMove == frames.rend() || lastMove == frames.rbegin()) return;   // never moves, or moves to the end
+    const size_t first = size_t(frames.rend() - lastMove) - 1;
+    const double settled = frames.back().errors.rms;
+    const auto within = [&](const FlythroughFrame& f) { return std::abs(f.errors.rms - settled) <= 0.05 * settled + 1e-4; };
+    size_t settledFrom = frames.size() - 1;
+    while (settledFrom > first && within(frames[settledFrom - 1])) --settledFrom;
+    figures.settleFrames = int(settledFrom - first);
+    double excess = 0.0;
+    for (size_t t = first; t < frames.size(); ++t) excess += std::max(0.0, frames[t].errors.rms - settled);
+    figures.ghosting = excess;
+}
+
+}  // namespace
 
 PathFigures pathFigures(const FlythroughSeries& series) {
     PathFigures figures;
@@ -173,6 +206,7 @@ PathFigures pathFigures(const FlythroughSeries& series) {
     figures.medianMs = ms.empty() ? 0.0 : summarizeTimes(ms).medianMs;
     figures.flickerMean = stable > 0.0 ? changeSum / stable : 0.0;
     figures.flickerP99 = pairs > 0 ? p99Sum / pairs : 0.0;
+    settleFigures(series.frames, figures);
     return figures;
 }
 
@@ -211,7 +245,7 @@ FlythroughResults runFlythrough(const FlythroughOptions& options) {
         prepared.setInstanceTransforms(placed[f].sample.placements);
         withThreads(results.threads, [&] {
             previousReferences =
-                renderPathFrame(prepared, placed[f].sample, f, previousReferences, states, options, progress);
+                renderPathFrame(prepared, placed[f], f, previousReferences, states, options, progress);
         });
     }
     for (SeriesState& state : states) results.series.push_back(std::move(state.series));

@@ -47,6 +47,7 @@ struct FlythroughFrame {
     double time = 0.0;                       // the path's time of the frame
     glm::vec3 eye{0.0f}, target{0.0f};
     std::optional<glm::vec3> light;          // where the path put the first light, if it moves it
+    bool moved = false;                      // the camera, the light or an instance differs from the frame before
     double medianMs = 0.0, minMs = 0.0;
     ErrorFigures errors;
     std::optional<FlickerFigures> flicker;   // against the frame before: none for frame 0
@@ -68,9 +69,19 @@ struct FlythroughSeries {
 // FLIP (ErrorFigures::flipMean) and misclassified share, the mean change over every stable pixel of every frame pair (each
 // pair weighted by its stable pixels) and the mean of the 99th percentiles of the pairs that
 // have stable pixels.
+//
+// Over a path that ends still (frames after its last move, FlythroughFrame::moved), how a
+// technique settles once the motion stops (docs/temporal.md): settleFrames, the frames after
+// the last move until every later frame's RMS is within 5% (and 1e-4) of the last frame's,
+// and ghosting, the RMS above the last frame's summed over the frames from the last move on
+// (RMS x frames: the error a technique's history drags behind the motion). A technique
+// without history settles at once (0 frames, ghosting near 0). None on a path that moves to
+// its last frame or never moves.
 struct PathFigures {
     double medianMs = 0.0, meanRms = 0.0, meanFlip = 0.0, meanMisclassifiedPercent = 0.0;
     double flickerMean = 0.0, flickerP99 = 0.0;
+    std::optional<int> settleFrames;
+    std::optional<double> ghosting;
 };
 PathFigures pathFigures(const FlythroughSeries& series);
 

@@ -23,6 +23,7 @@ Json frameJson(const FlythroughFrame& f) {
     if (f.light) frame["light"] = xyz(*f.light);
     frame["median_ms"] = f.medianMs;
     frame["min_ms"] = f.minMs;
+    frame["moved"] = f.moved;
     frame["errors"] = Json::parse(formatJson(f.errors));
     Json stats = Json::object();
     for (const TechniqueStat& stat : f.stats) stats[stat.name] = stat.value;
@@ -40,7 +41,9 @@ Json seriesJson(const FlythroughSeries& s) {
     return {{"technique", s.technique}, {"reference", s.reference}, {"settings", s.settings},
             {"path_figures", {{"median_ms", p.medianMs}, {"mean_rms", p.meanRms}, {"mean_flip", p.meanFlip},
                               {"mean_misclassified_percent", p.meanMisclassifiedPercent},
-                              {"flicker_mean", p.flickerMean}, {"flicker_p99", p.flickerP99}}},
+                              {"flicker_mean", p.flickerMean}, {"flicker_p99", p.flickerP99},
+                              {"settle_frames", p.settleFrames ? Json(*p.settleFrames) : Json(nullptr)},
+                              {"ghosting_rms_frames", p.ghosting ? Json(*p.ghosting) : Json(nullptr)}}},
             {"frames", frames}};
 }
 
@@ -62,12 +65,15 @@ std::string formatFlythroughText(const FlythroughResults& results) {
     std::string text = format("%s: %d frames of path %s, %d threads, median of %d runs after %d warm-up\n",
                               results.scene.c_str(), results.frames, results.path.c_str(), results.threads,
                               results.runs, results.warmupRuns);
-    text += format("%-36s %10s %10s %10s %8s %13s %12s\n", "series", "median ms", "mean RMS", "mean FLIP", "miscl %",
-                   "flicker mean", "flicker p99");
+    text += format("%-36s %10s %10s %10s %8s %13s %12s %7s %9s\n", "series", "median ms", "mean RMS", "mean FLIP",
+                   "miscl %", "flicker mean", "flicker p99", "settle", "ghosting");
     for (const FlythroughSeries& s : results.series) {
         const PathFigures p = pathFigures(s);
-        text += format("%-36s %10.3f %10.5f %10.5f %8.3f %13.6f %12.5f\n", s.label().c_str(), p.medianMs, p.meanRms,
-                       p.meanFlip, p.meanMisclassifiedPercent, p.flickerMean, p.flickerP99);
+        const std::string settle = p.settleFrames ? std::to_string(*p.settleFrames) : "-";
+        const std::string ghosting = p.ghosting ? format("%.5f", *p.ghosting) : "-";
+        text += format("%-36s %10.3f %10.5f %10.5f %8.3f %13.6f %12.5f %7s %9s\n", s.label().c_str(), p.medianMs,
+                       p.meanRms, p.meanFlip, p.meanMisclassifiedPercent, p.flickerMean, p.flickerP99, settle.c_str(),
+                       ghosting.c_str());
     }
     return text;
 }
@@ -77,7 +83,7 @@ std::string formatFlythroughCsv(const FlythroughResults& results) {
     std::vector<std::string> header{"technique", "settings", "frame", "time", "eye_x", "eye_y", "eye_z", "target_x",
                                     "target_y", "target_z", "light_x", "light_y", "light_z", "median_ms", "min_ms", "rms",
                                     "max_abs", "misclassified_percent", "false_shadow_percent", "false_light_percent",
-                                    "flip_mean", "flicker_mean", "flicker_p99", "flicker_stable_percent"};
+                                    "flip_mean", "flicker_mean", "flicker_p99", "flicker_stable_percent", "moved"};
     header.insert(header.end(), stats.begin(), stats.end());
     std::string csv = csvLine(header);
     for (const FlythroughSeries& s : results.series) {
@@ -97,6 +103,7 @@ std::string formatFlythroughCsv(const FlythroughResults& results) {
             else
                 for (double x : {f.flicker->mean, f.flicker->p99, f.flicker->stablePercent()})
                     fields.push_back(csvNumber(x));
+            fields.push_back(f.moved ? "1" : "0");
             for (const std::string& name : stats) {
                 const auto stat = std::ranges::find(f.stats, name, &TechniqueStat::name);
                 fields.push_back(stat == f.stats.end() ? "" : csvNumber(stat->value));
