@@ -33,7 +33,9 @@ struct DenoiseLight {
 struct DenoiseInputs {
     const GBuffer& gbuffer;
     std::span<const float> visibility;         // this frame's noisy V per pixel, in [0, 1]
-    std::span<const float> occluderDistance;   // to the first occluder along a blocked ray; +inf: no ray blocked
+    // To the first occluder, over the pixel's blocked rays; 0 or +inf: no ray blocked (0 is
+    // the ray-traced technique's sentinel: no occluder lies at 0, a ray starts above P).
+    std::span<const float> occluderDistance;
     DenoiseView view;
     DenoiseLight light;
     const Reprojection* reprojection = nullptr;   // null: no frame before; every history starts afresh

@@ -16,7 +16,8 @@ float nearbyOccluderDistance(const DenoiseInputs& in, int i, int j, int radius) 
     for (int y = std::max(j - radius, 0); y <= std::min(j + radius, g.height - 1); ++y) {
         for (int x = std::max(i - radius, 0); x <= std::min(i + radius, g.width - 1); ++x) {
             const size_t q = g.index(x, y);
-            if (g.hit[q] && std::isfinite(in.occluderDistance[q])) sum += in.occluderDistance[q], ++count;
+            const float d = in.occluderDistance[q];
+            if (g.hit[q] && d > 0.0f && std::isfinite(d)) sum += d, ++count;
         }
     }
     return count ? sum / float(count) : INFINITY;
