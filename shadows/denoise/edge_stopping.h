@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 
 struct EdgeStopping {
@@ -20,19 +22,22 @@ struct EdgeStopping {
 
 inline constexpr float kEdgeEpsilon = 1e-6f;   // keeps eqs. 3 and 5 finite where the scale is 0
 
+// exp and pow are the portable ones (raster/portable_math.h): libm's differ in the last bit
+// from one x86 CPU to another, and every weight reaches the output.
+
 // eq. 3: exp(-|z(p) - z(q)| / (sigma_z |grad z(p) . (p - q)| + eps)).
 inline float depthWeight(float zp, float zq, glm::vec2 gradient, glm::vec2 offset, float sigma) {
-    return std::exp(-std::abs(zp - zq) / (sigma * std::abs(glm::dot(gradient, offset)) + kEdgeEpsilon));
+    return float(portable::exp(-std::abs(zp - zq) / (sigma * std::abs(glm::dot(gradient, offset)) + kEdgeEpsilon)));
 }
 
 // eq. 4: max(0, n(p) . n(q))^sigma_n.
 inline float normalWeight(const glm::vec3& np, const glm::vec3& nq, float sigma) {
-    return std::pow(std::max(0.0f, glm::dot(np, nq)), sigma);
+    return float(portable::pow(std::max(0.0f, glm::dot(np, nq)), sigma));
 }
 
 // eq. 5: exp(-|l(p) - l(q)| / (sigma_l sqrt(variance(p)) + eps)), the variance prefiltered.
 inline float signalWeight(float vp, float vq, float variance, float sigma) {
-    return std::exp(-std::abs(vp - vq) / (sigma * std::sqrt(std::max(variance, 0.0f)) + kEdgeEpsilon));
+    return float(portable::exp(-std::abs(vp - vq) / (sigma * std::sqrt(std::max(variance, 0.0f)) + kEdgeEpsilon)));
 }
 
 }  // namespace shadowlab

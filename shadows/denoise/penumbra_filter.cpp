@@ -6,6 +6,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "raster/portable_math.h"
+
 namespace shadowlab {
 namespace {
 
@@ -15,7 +17,7 @@ std::array<glm::vec2, kMaxPenumbraTaps> spiral(int n) {
     std::array<glm::vec2, kMaxPenumbraTaps> taps{};
     for (int t = 0; t < n; ++t) {
         const double r = std::sqrt((t + 0.5) / n), a = kGoldenAngle * t;
-        taps[size_t(t)] = glm::vec2(float(r * std::cos(a)), float(r * std::sin(a)));
+        taps[size_t(t)] = glm::vec2(float(r * portable::cos(a)), float(r * portable::sin(a)));
     }
     return taps;
 }
@@ -31,7 +33,7 @@ float filterAtRadius(std::span<const float> v, const GBuffer& g, const SurfaceFe
         const size_t q = g.index(x, y);
         if (!g.hit[q]) continue;
         const glm::vec2 d(float(x - i), float(y - j));
-        const float w = std::exp(-2.0f * glm::dot(d, d) / (radius * radius)) *
+        const float w = float(portable::exp(-2.0f * glm::dot(d, d) / (radius * radius))) *
                         depthWeight(f.depth[p], f.depth[q], f.depthGradient[p], d, e.sigmaDepth) *
                         normalWeight(g.shadingNormal[p], g.shadingNormal[q], e.sigmaNormal);
         weights += w, sum += w * v[q];
