@@ -24,6 +24,7 @@
 
 using namespace shadowlab;
 using namespace shadowlab::denoise_test;
+using shadowlab::temporal_test::meanChange;
 
 namespace {
 
@@ -101,13 +102,6 @@ struct NoisyCase {
         return d;
     }
 };
-
-// Mean |a - b| over the pixels: the flicker from one frame to the next.
-double meanChange(const std::vector<float>& a, const std::vector<float>& b) {
-    double sum = 0.0;
-    for (size_t k = 0; k < a.size(); ++k) sum += std::abs(double(a[k]) - double(b[k]));
-    return sum / double(a.size());
-}
 
 }  // namespace
 
@@ -283,4 +277,30 @@ TEST_CASE("the denoisers refuse bad settings and buffers of the wrong size") {
     CHECK_THROWS_AS(tiled.run(v, c.distance(v)), std::invalid_argument);
     CHECK_THROWS_AS(penumbra.run(v, {}), std::invalid_argument);   // SIGMA's input: the distances
     CHECK_THROWS_AS(c.denoiser(Denoiser::Svgf).run({1.0f}, {}), std::invalid_argument);
+}
+
+// docs/denoisers.md's figures, run on request only: test_shadows -tc="the denoisers' figures"
+// --no-skip writes them to ./denoiser-figures (320 x 200; frame 0's buffers, frames 0 and
+// 15's output) and holds the RMS factors quoted there.
+TEST_CASE("the denoisers' figures" * doctest::skip()) {
+    const StillView still("soft/square-over-plane.json", 320, 200, "reference-soft", {{"samples-per-axis", "16"}});
+    const std::vector<float>& exact = still.frame.shadow.visibility;
+    const GBuffer& g = still.frame.gbuffer;
+    const DebugBuffers debug("denoiser-figures", "square");
+    debug.write("exact", g.width, g.height, exact, 0.0f, 1.0f);
+    debug.write("input", g.width, g.height, bernoulli(exact, 0, 7), 0.0f, 1.0f);
+    for (Denoiser::Kind kind : kKinds) {
+        Denoiser d(kind, still);
+        d.light = rectangleAsDisk(still.scene.lights[0]);
+        for (int f = 0; f < 16; ++f) {
+            const std::vector<float> v = bernoulli(exact, uint32_t(f), 7);
+            const std::vector<float> out =
+                d.run(v, occluderDistances(g, still.scene.lights[0], v), f == 0 ? &debug : nullptr);
+            if (f != 0 && f != 15) continue;
+            debug.write(nameOf(kind) + "-output-frame-" + std::to_string(f), g.width, g.height, out, 0.0f, 1.0f);
+            MESSAGE(nameOf(kind) << " frame " << f << ": RMS " << rms(g, v, exact) << " to " << rms(g, out, exact)
+                                 << ", tiles skipped " << d.skippedShare);
+            CHECK(rms(g, v, exact) / rms(g, out, exact) > 3.0);
+        }
+    }
 }
