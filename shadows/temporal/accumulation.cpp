@@ -32,7 +32,11 @@ HistoryRange neighbourhoodRange(std::span<const float> current, const GBuffer& g
     if (s.clamp == HistoryClamp::MinMax) return {low, high};
     const double mean = sum / count;
     const double sigma = std::sqrt(std::max(0.0, squares / count - mean * mean));
-    return {float(mean - s.varianceGamma * sigma), float(mean + s.varianceGamma * sigma)};
+    // The box widened to hold the pixel's own value: one that left it out (a hard edge's
+    // pixel among the other side's) would pull a history that equals it, and never changes,
+    // off towards the neighbours' mean.
+    const float own = current[g.index(i, j)];
+    return {std::min(own, float(mean - s.varianceGamma * sigma)), std::max(own, float(mean + s.varianceGamma * sigma))};
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ namespace shadowlab {
 enum class HistoryClamp {
     Off,        // the history as reprojected
     MinMax,     // into [min, max] of the 3x3 neighbourhood's values this frame
-    Variance,   // into mean +- gamma sigma of the 3x3 neighbourhood (Salvi 2016)
+    Variance,   // into mean +- gamma sigma of the 3x3 neighbourhood (Salvi 2016), widened to hold this frame's own value
 };
 
 struct AccumulationSettings {

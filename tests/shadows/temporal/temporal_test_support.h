@@ -1,6 +1,7 @@
 // Scenes and frame sequences the temporal tests share.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,13 @@ inline void placeAtPathFrame(PreparedScene& prepared, const Scene& base, int f, 
     prepared.setCamera(camera);
     prepared.setLights(lights);
     prepared.setInstanceTransforms(sample.placements);
+}
+
+// Mean |a - b| over the pixels: the flicker from one frame to the next.
+inline double meanChange(const std::vector<float>& a, const std::vector<float>& b) {
+    double sum = 0.0;
+    for (size_t k = 0; k < a.size(); ++k) sum += std::abs(double(a[k]) - double(b[k]));
+    return sum / double(a.size());
 }
 
 }  // namespace shadowlab::temporal_test

@@ -39,13 +39,6 @@ Params with(Params p, const Params& more) {
     return p;
 }
 
-// Mean |a - b| over the pixels.
-double meanChange(const std::vector<float>& a, const std::vector<float>& b) {
-    double sum = 0.0;
-    for (size_t k = 0; k < a.size(); ++k) sum += std::abs(double(a[k]) - double(b[k]));
-    return sum / double(a.size());
-}
-
 struct TemporalCase {
     const char* scene;
     const char* technique;
