@@ -72,7 +72,8 @@ struct FlythroughSeries {
 //
 // Over a path that ends still (frames after its last move, FlythroughFrame::moved), how a
 // technique settles once the motion stops (docs/temporal.md): settleFrames, the frames after
-// the last move until every later frame's RMS is within 5% (and 1e-4) of the last frame's,
+// the last move until every later frame's RMS is within 10% (and 1e-4) of the last frame's
+// (as many as the path holds still: not settled by its end),
 // and ghosting, the RMS above the last frame's summed over the frames from the last move on
 // (RMS x frames: the error a technique's history drags behind the motion). A technique
 // without history settles at once (0 frames, ghosting near 0). None on a path that moves to

@@ -1,9 +1,11 @@
 #include "shadows/raytraced/ray_traced.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
 #include "shadows/debug_buffers.h"
+#include "shadows/raytraced/ray_denoising.h"
 #include "shadows/raytraced/shadow_rays.h"
 #include "shadows/reference/scene_rays.h"
 #include "shadows/settings_table.h"
@@ -14,12 +16,22 @@ namespace {
 
 struct RayTracedSettings {
     int rays = 1;
+    ShadowDenoiser denoiser = ShadowDenoiser::None;
 };
 
 const SettingsTable<RayTracedSettings>& rayTracedSettingsTable() {
-    static const auto table = SettingsTable<RayTracedSettings>().integer(
-        "rays", member(&RayTracedSettings::rays), 1, 1024,
-        "N: rays per pixel (towards an area light or a sun with a size, N samples of its area, new each frame)");
+    using S = RayTracedSettings;
+    static const auto table =
+        SettingsTable<S>()
+            .integer("rays", member(&S::rays), 1, 1024,
+                     "N: rays per pixel (towards an area light or a sun with a size, N samples of its area, new "
+                     "each frame)")
+            .choice("denoiser", member(&S::denoiser),
+                    {{"none", ShadowDenoiser::None},
+                     {"svgf", ShadowDenoiser::Svgf, "spatiotemporal variance-guided filtering (Schied et al. 2017)"},
+                     {"tiled", ShadowDenoiser::Tiled, "tile-classified, after AMD FidelityFX's shadow denoiser"},
+                     {"penumbra", ShadowDenoiser::Penumbra, "penumbra-driven, after NVIDIA SIGMA's inputs"}},
+                    "the filter the noisy V goes through (docs/denoisers.md)");
     return table;
 }
 
@@ -48,6 +60,14 @@ ShadowOutputs rayTraced(const ShadowInputs& in) {
     out.stats = {{"rays_per_pixel", double(settings.rays)},
                  {"rays_cast_count", double(buffers.raysCast)},
                  {"frame_count", double(frame)}};
+    if (settings.denoiser != ShadowDenoiser::None) {
+        if (!buffers.coloured.empty())
+            throw std::invalid_argument("ray-traced: denoising tinted casters' coloured V is not built; give denoiser=none");
+        DenoisedRays denoised = denoiseRays(in, settings.denoiser, buffers, in.kept().state<DenoiserHistory>());
+        timer.lap("denoise");
+        buffers.visibility = std::move(denoised.visibility);
+        if (denoised.skippedTilesShare) out.stats.push_back({"denoise_skipped_tiles_percent", 100.0 * *denoised.skippedTilesShare});
+    }
     timer.appendTo(out.stats);
     out.visibility = std::move(buffers.visibility);
     out.colouredVisibility = std::move(buffers.coloured);

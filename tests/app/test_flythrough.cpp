@@ -262,3 +262,30 @@ TEST_CASE("a path that moves an object and turns the sun renders, and shadow-map
         }
     }
 }
+
+TEST_CASE("a path that ends still measures how long a technique's history takes to settle, and its ghosting") {
+    // sphere-stops: the sphere moves over frames 1 to 9 of 24, then stays. shadow-map keeps no
+    // result from frame to frame: settled at once, no error above its last frame's. With
+    // temporal accumulation its shadow lags the sphere (the history clamped to a neighbourhood
+    // that spans the moving edge) and decays over the still frames: it takes frames to settle,
+    // and its ghosting is many times larger.
+    FlythroughOptions options = smallRun(builtinSceneDir() + "/flythrough/sphere-stops.json", {"shadow-map"}, 0);
+    options.axes = {{"filter", {"poisson"}}, {"poisson-rotation", {"ign"}}, {"temporal", {"off", "on"}}};
+    const FlythroughResults results = runFlythrough(options);
+    REQUIRE(results.series.size() == 2);
+    const FlythroughSeries& series = results.series[1];
+    REQUIRE(series.frames.size() == 24);
+    CHECK_FALSE(series.frames[0].moved);
+    CHECK(series.frames[1].moved);
+    CHECK(series.frames[9].moved);   // time 9/23 is past the stop at 0.35, frame 8's is not
+    CHECK_FALSE(series.frames[10].moved);
+    const PathFigures off = pathFigures(results.series[0]), on = pathFigures(series);
+    REQUIRE(off.settleFrames);
+    REQUIRE(on.settleFrames);
+    MESSAGE("settle frames off ", *off.settleFrames, ", on ", *on.settleFrames, "; ghosting off ", *off.ghosting,
+            ", on ", *on.ghosting);
+    CHECK(*off.settleFrames == 0);
+    CHECK(*off.ghosting < 0.02);   // the rotated disk's noise moves each frame's RMS a little
+    CHECK(*on.settleFrames >= 2);
+    CHECK(*on.ghosting > 10.0 * *off.ghosting);
+}
