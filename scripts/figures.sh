@@ -12,7 +12,7 @@
 # fifteen for the technique-standard sweeps and twelve for the virtual map's; run nothing
 # else meanwhile (times are medians, but a busy machine still moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|lights|suite|standard|virtual|report ...]
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|temporal|lights|suite|standard|virtual|report ...]
 #        (default: all twenty-one, report last; suite needs the packages scripts/suite_models.sh installs)
 set -eu
 cd "$(dirname "$0")/.."
@@ -20,7 +20,7 @@ app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough lights suite standard virtual report}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough temporal lights suite standard virtual report}
 
 for part in $parts; do
   case $part in
@@ -342,6 +342,28 @@ EOF
     for buffer in blend-weight izb pcss blocker-distance; do
       cp $s/branch/izb-pcss-$buffer.png docs/images/hybrid-branch-$buffer.png
     done
+    ;;
+  temporal)
+    # Shadows over time (docs/temporal.md): temporal accumulation, confidence reprojection,
+    # ray-traced shadows raw and denoised, cached maps, along a moving sphere that stops, a
+    # turning sun that stops and sphere-box's camera arc, at 320 x 200, one run per frame.
+    # The tables: scripts/flythrough_table.py --settle out/figures/temporal/*.json
+    # out/figures/temporal/cached/*.json.
+    f=$out/temporal
+    fly="$app flythrough --width 320 --height 200 --runs 1 --warmup 0 --threads 2 --out $f"
+    cached="$app flythrough --width 320 --height 200 --runs 1 --warmup 0 --threads 2 --out $f/cached"
+    for path in assets/scenes/flythrough/sphere-stops.json sphere-box; do
+      $fly $path --technique shadow-map --param filter=poisson --param poisson-rotation=ign --param temporal=off,on > /dev/null
+      $fly $path --technique pcss --param rotation=ign --param temporal=off,on > /dev/null
+      $fly $path --technique confidence-reprojection --param resolution=512 > /dev/null
+      $fly $path --technique ray-traced --param rays=1,4 --param denoiser=none,svgf,tiled,penumbra > /dev/null
+    done
+    $cached assets/scenes/flythrough/sphere-stops.json --technique shadow-map --param cache=off,static \
+      --param fit=receivers,scene > /dev/null
+    $fly assets/scenes/flythrough/sun-turns-stops.json --technique shadow-map --param filter=poisson \
+      --param poisson-rotation=ign --param temporal=off,on > /dev/null
+    $fly assets/scenes/flythrough/sun-turns-stops.json --technique confidence-reprojection --param resolution=512 > /dev/null
+    $fly assets/scenes/flythrough/sun-turns-stops.json --technique csm --param update-every=1,4 > /dev/null
     ;;
   flythrough)
     # Shadows in motion (docs/flythrough.md): per-frame time, error and flicker along the

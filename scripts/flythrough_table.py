@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Prints the flicker table of docs/performance.md and docs/flythrough.md (Markdown) from `shadowlab flythrough` JSON files:
 one row per series with its path's median time, mean RMS and misclassified share, and
-its flicker mean and 99th percentile (docs/conventions.md, "Flicker").
-usage: scripts/flythrough_table.py FLYTHROUGH.json [...]"""
+its flicker mean and 99th percentile (docs/conventions.md, "Flicker"). With --settle (the
+tables of docs/temporal.md), also the mean FLIP and, on a path that ends still, the frames
+to settle and the ghosting (docs/flythrough.md).
+usage: scripts/flythrough_table.py [--settle] FLYTHROUGH.json [...]"""
 import json
 import sys
 
@@ -15,17 +17,28 @@ def rows(path):
         label = " ".join([s["technique"]] + [k + "=" + v for k, v in s["settings"].items()])
         p = s["path_figures"]
         yield (where, run["frames"], label, p["median_ms"], p["mean_rms"], p["mean_misclassified_percent"],
-               p["flicker_mean"], p["flicker_p99"])
+               p["flicker_mean"], p["flicker_p99"], p.get("mean_flip"), p.get("settle_frames"),
+               p.get("ghosting_rms_frames"))
 
 
-def main(files):
+def figure(x, form):
+    return "-" if x is None else format(x, form)
+
+
+def main(args):
+    settle = "--settle" in args
+    files = [a for a in args if a != "--settle"]
     if not files:
         sys.exit(__doc__)
-    print("| path | frames | technique | median ms | mean RMS | misclassified % | flicker mean | flicker p99 |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    more = " mean FLIP | settle frames | ghosting |" if settle else ""
+    print("| path | frames | technique | median ms | mean RMS | misclassified % | flicker mean | flicker p99 |" + more)
+    print("| --- " * (11 if settle else 8) + "|")
     for path in files:
-        for where, frames, label, ms, rms, miscl, mean, p99 in rows(path):
-            print(f"| {where} | {frames} | {label} | {ms:.3g} | {rms:.4f} | {miscl:.3f} | {mean:.2g} | {p99:.3g} |")
+        for where, frames, label, ms, rms, miscl, mean, p99, flip, frames_to_settle, ghosting in rows(path):
+            line = f"| {where} | {frames} | {label} | {ms:.3g} | {rms:.4f} | {miscl:.3f} | {mean:.2g} | {p99:.3g} |"
+            if settle:
+                line += f" {figure(flip, '.4f')} | {figure(frames_to_settle, 'd')} | {figure(ghosting, '.3f')} |"
+            print(line)
 
 
 if __name__ == "__main__":
