@@ -35,10 +35,26 @@ struct RenderArgs {
     std::optional<std::string> casterLod;   // given, even empty, or not
     std::vector<std::string> params;
     int threads = 0;
+    int frames = 1;   // the frame of a still view's sequence to write (docs/temporal.md)
     float exposure = 0.0f;
     SceneOverrides overrides;
     bool progress = false;
 };
+
+// Frame `a.frames` of a still view's sequence: the frames before it render with the same
+// history (what a temporal technique accumulates, a cache it fills) and write nothing; the
+// last writes the technique's buffers and is the one returned.
+Frame renderLastFrame(const PreparedScene& prepared, const Technique& technique, const RenderArgs& a,
+                      const FrameSettings& settings) {
+    if (a.frames == 1) return renderFrame(prepared, technique, settings);
+    FrameHistory history;
+    FrameSettings sequence = settings;
+    sequence.history = &history;
+    FrameSettings before = sequence;
+    before.debugDir.clear();
+    for (int f = 1; f < a.frames; ++f) renderFrame(prepared, technique, before);
+    return renderFrame(prepared, technique, sequence);
+}
 
 // The pictures the JSON of --error-map names, relative to it, for `shadowlab report`: the
 // -o image, the error map, the technique's debug buffers and the reference's image, written
@@ -105,7 +121,7 @@ void runRender(const RenderArgs& a) {
     FrameSettings settings{raster::parseSimdLevel(a.simd), {}, a.debugDir, progressIfWanted(progress, a.progress)};
     for (const std::string& p : a.params) parseParamAssignment(p, settings.params);
     if (a.casterLod) settings.params["caster-lod"] = *a.casterLod;
-    const Frame frame = renderFrame(prepared, technique, settings);
+    const Frame frame = renderLastFrame(prepared, technique, a, settings);
     const Scene& scene = prepared.scene();
     std::printf("%s: %s in %.2f ms\n", scene.name.c_str(), technique.name.c_str(), frame.techniqueMs);
     for (const TechniqueStat& s : frame.shadow.stats) std::printf("  %-28s %.6g\n", s.name.c_str(), s.value);
@@ -150,6 +166,11 @@ void addRenderCommand(CLI::App& command) {
     r->add_option("--param", a.params, "technique setting name=value (repeatable; see `shadowlab techniques`)");
     addOptionalText(r, "--caster-lod", a.casterLod, "share of the casters' triangles kept, 0.001..1: --param caster-lod=R");
     r->add_option("--debug-buffers", a.debugDir, "directory for the technique's intermediate buffers");
+    r->add_option("--frames", a.frames,
+                  "write frame N of a still view's sequence, the frames before it rendered with the same "
+                  "history (temporal techniques: docs/temporal.md)")
+        ->check(CLI::Range(1, 10000))
+        ->capture_default_str();
     r->add_option("--exposure", a.exposure, "exposure in stops for the PNG")->capture_default_str();
     CLI::Option* errorMap = r->add_option("--error-map", a.errorMap,
         "also render the exact reference; PNG of false shadow (red) and false light (blue) over the dimmed image");

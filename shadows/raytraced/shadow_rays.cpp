@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "raster/portable_math.h"
 
 namespace shadowlab {
 
@@ -30,7 +31,10 @@ float lightAngularDiameter(const Light& light, const glm::vec3& P) {
         }
     }
     const double distance = glm::length(glm::dvec3(light.position) - glm::dvec3(P));
-    return distance <= radius ? float(std::numbers::pi) : float(2.0 * std::asin(radius / distance));
+    // asin(x) = atan(x / sqrt(1 - x^2)) through the portable atan: libm's asin is dispatched
+    // at run time, and its last bit differs between CPUs.
+    const double x = radius / distance;
+    return distance <= radius ? float(std::numbers::pi) : float(2.0 * portable::atan(x / std::sqrt(1.0 - x * x)));
 }
 
 ShadowRayBuffers traceShadowRays(const ReferenceVisibility& rays, const GBuffer& g, const Light& light,

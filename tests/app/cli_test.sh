@@ -126,6 +126,7 @@ expect_error "unknown technique" render sphere-box --technique no-such-technique
 expect_error "bad --param value" render sphere-box --technique shadow-map --param resolution=abc "${tiny[@]}" -o "$scratch/x.png"
 expect_error "unknown --param name" render sphere-box --technique shadow-map --param no-such=1 "${tiny[@]}" -o "$scratch/x.png"
 expect_error "--caster-lod out of range" render sphere-box --technique shadow-map --caster-lod 0 "${tiny[@]}" -o "$scratch/x.png"
+expect_error "--frames out of range" render sphere-box --technique shadow-map --frames 0 "${tiny[@]}" -o "$scratch/x.png"
 # An empty or malformed level of detail is an error, not the option left out.
 expect_error "empty --caster-lod" render sphere-box --technique shadow-map --caster-lod '' "${tiny[@]}" -o "$scratch/x.png"
 expect_no_file "$scratch/x.png"
