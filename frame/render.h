@@ -109,7 +109,9 @@ struct FrameSettings {
     std::map<std::string, std::string> params;   // the technique's --param settings
     std::filesystem::path debugDir;              // empty: no intermediate buffers (lightDebugFolder())
     Progress* progress = nullptr;                // passed to the technique (ShadowInputs)
-    // The sequence this frame continues (FrameHistory); null: it stands alone.
+    // The sequence this frame continues (FrameHistory); null: it stands alone. A frame that
+    // throws leaves the history unusable (the lights whose passes ran have moved on, the view
+    // has not): start a new one.
     FrameHistory* history = nullptr;
 };
 

@@ -17,8 +17,16 @@ def rows(path):
         label = " ".join([s["technique"]] + [k + "=" + v for k, v in s["settings"].items()])
         p = s["path_figures"]
         yield (where, run["frames"], label, p["median_ms"], p["mean_rms"], p["mean_misclassified_percent"],
-               p["flicker_mean"], p["flicker_p99"], p.get("mean_flip"), p.get("settle_frames"),
+               p["flicker_mean"], p["flicker_p99"], p.get("mean_flip"), settle_text(p),
                p.get("ghosting_rms_frames"))
+
+
+def settle_text(p):
+    """Frames to settle; "13+" where still converging at the path's end; None off a path that ends still."""
+    frames = p.get("settle_frames")
+    if frames is None:
+        return None
+    return str(frames) + ("" if p.get("settled") else "+")
 
 
 def figure(x, form):
@@ -37,7 +45,7 @@ def main(args):
         for where, frames, label, ms, rms, miscl, mean, p99, flip, frames_to_settle, ghosting in rows(path):
             line = f"| {where} | {frames} | {label} | {ms:.3g} | {rms:.4f} | {miscl:.3f} | {mean:.2g} | {p99:.3g} |"
             if settle:
-                line += f" {figure(flip, '.4f')} | {figure(frames_to_settle, 'd')} | {figure(ghosting, '.3f')} |"
+                line += f" {figure(flip, '.4f')} | {frames_to_settle or '-'} | {figure(ghosting, '.3f')} |"
             print(line)
 
 

@@ -35,15 +35,16 @@ struct RenderArgs {
     std::optional<std::string> casterLod;   // given, even empty, or not
     std::vector<std::string> params;
     int threads = 0;
-    int frames = 1;   // the frame of a still view's sequence to write (docs/temporal.md)
+    int frames = 1;   // frames of a still view's sequence to render; the last is written (docs/temporal.md)
     float exposure = 0.0f;
     SceneOverrides overrides;
     bool progress = false;
 };
 
-// Frame `a.frames` of a still view's sequence: the frames before it render with the same
-// history (what a temporal technique accumulates, a cache it fills) and write nothing; the
-// last writes the technique's buffers and is the one returned.
+// The last of `a.frames` frames of a still view's sequence (frame a.frames - 1, counted from
+// 0): the frames before it render with the same history (what a temporal technique
+// accumulates, a cache it fills) and write nothing; the last writes the technique's buffers
+// and is the one returned.
 Frame renderLastFrame(const PreparedScene& prepared, const Technique& technique, const RenderArgs& a,
                       const FrameSettings& settings) {
     if (a.frames == 1) return renderFrame(prepared, technique, settings);
@@ -167,8 +168,8 @@ void addRenderCommand(CLI::App& command) {
     addOptionalText(r, "--caster-lod", a.casterLod, "share of the casters' triangles kept, 0.001..1: --param caster-lod=R");
     r->add_option("--debug-buffers", a.debugDir, "directory for the technique's intermediate buffers");
     r->add_option("--frames", a.frames,
-                  "write frame N of a still view's sequence, the frames before it rendered with the same "
-                  "history (temporal techniques: docs/temporal.md)")
+                  "render N frames of a still view's sequence with one history and write the last "
+                  "(frame N - 1; temporal techniques: docs/temporal.md)")
         ->check(CLI::Range(1, 10000))
         ->capture_default_str();
     r->add_option("--exposure", a.exposure, "exposure in stops for the PNG")->capture_default_str();

@@ -169,17 +169,23 @@ std::string FlythroughSeries::label() const {
 
 namespace {
 
-// PathFigures::settleFrames and ghosting (flythrough.h).
+// PathFigures::settleFrames, settled and ghosting (flythrough.h).
 void settleFigures(const std::vector<FlythroughFrame>& frames, PathFigures& figures) {
     const auto lastMove = std::find_if(frames.rbegin(), frames.rend(), [](const FlythroughFrame& f) { return f.moved; });
-    if (lastMove == frames.rend() || lastMove == frames.rbegin()) return;   // never moves, or moves to the end
+    if (lastMove == frames.rend()) return;   // never moves
     const size_t first = size_t(frames.rend() - lastMove) - 1;
-    const double settled = frames.back().errors.rms;
+    if (frames.size() - 1 - first < kSettledFrames) return;   // too few still frames to tell
+    // The settled level: the mean RMS of the last frames, steadier than one noisy frame.
+    double settled = 0.0;
+    for (size_t t = frames.size() - kSettledFrames; t < frames.size(); ++t) settled += frames[t].errors.rms;
+    settled /= double(kSettledFrames);
     // 10%: a noisy technique's whole-image RMS moves a few per cent from frame to frame.
     const auto within = [&](const FlythroughFrame& f) { return std::abs(f.errors.rms - settled) <= 0.1 * settled + 1e-4; };
-    size_t settledFrom = frames.size() - 1;
+    size_t settledFrom = frames.size();
     while (settledFrom > first && within(frames[settledFrom - 1])) --settledFrom;
     figures.settleFrames = int(settledFrom - first);
+    // Settled only if it held the level for longer than the frames that define it.
+    figures.settled = settledFrom + kSettledFrames < frames.size();
     double excess = 0.0;
     for (size_t t = first; t < frames.size(); ++t) excess += std::max(0.0, frames[t].errors.rms - settled);
     figures.ghosting = excess;

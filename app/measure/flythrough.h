@@ -70,18 +70,22 @@ struct FlythroughSeries {
 // pair weighted by its stable pixels) and the mean of the 99th percentiles of the pairs that
 // have stable pixels.
 //
-// Over a path that ends still (frames after its last move, FlythroughFrame::moved), how a
-// technique settles once the motion stops (docs/temporal.md): settleFrames, the frames after
-// the last move until every later frame's RMS is within 10% (and 1e-4) of the last frame's
-// (as many as the path holds still: not settled by its end),
-// and ghosting, the RMS above the last frame's summed over the frames from the last move on
-// (RMS x frames: the error a technique's history drags behind the motion). A technique
-// without history settles at once (0 frames, ghosting near 0). None on a path that moves to
-// its last frame or never moves.
+// Over a path that ends still (at least kSettledFrames frames after its last move,
+// FlythroughFrame::moved), how a technique settles once the motion stops (docs/temporal.md),
+// against its settled level, the mean RMS of the path's last kSettledFrames frames:
+// settleFrames, the frames after the last move until every later frame's RMS is within 10%
+// (and 1e-4) of that level; settled, whether it then held the level for more frames than
+// those that define it (false: still converging at the path's end, settleFrames a lower
+// bound); and ghosting, the RMS above that level summed over the frames from the last move
+// on (RMS x frames: the error a technique's history drags behind the motion). A technique
+// without history settles at once (0 frames, ghosting near 0). None on a path that never
+// moves or holds still for fewer frames.
+inline constexpr size_t kSettledFrames = 4;
 struct PathFigures {
     double medianMs = 0.0, meanRms = 0.0, meanFlip = 0.0, meanMisclassifiedPercent = 0.0;
     double flickerMean = 0.0, flickerP99 = 0.0;
     std::optional<int> settleFrames;
+    bool settled = false;
     std::optional<double> ghosting;
 };
 PathFigures pathFigures(const FlythroughSeries& series);

@@ -43,6 +43,7 @@ Json seriesJson(const FlythroughSeries& s) {
                               {"mean_misclassified_percent", p.meanMisclassifiedPercent},
                               {"flicker_mean", p.flickerMean}, {"flicker_p99", p.flickerP99},
                               {"settle_frames", p.settleFrames ? Json(*p.settleFrames) : Json(nullptr)},
+                              {"settled", p.settleFrames ? Json(p.settled) : Json(nullptr)},
                               {"ghosting_rms_frames", p.ghosting ? Json(*p.ghosting) : Json(nullptr)}}},
             {"frames", frames}};
 }
@@ -69,7 +70,9 @@ std::string formatFlythroughText(const FlythroughResults& results) {
                    "miscl %", "flicker mean", "flicker p99", "settle", "ghosting");
     for (const FlythroughSeries& s : results.series) {
         const PathFigures p = pathFigures(s);
-        const std::string settle = p.settleFrames ? std::to_string(*p.settleFrames) : "-";
+        // "13+": still converging at the path's end.
+        const std::string settle =
+            p.settleFrames ? std::to_string(*p.settleFrames) + (p.settled ? "" : "+") : std::string("-");
         const std::string ghosting = p.ghosting ? format("%.5f", *p.ghosting) : "-";
         text += format("%-36s %10.3f %10.5f %10.5f %8.3f %13.6f %12.5f %7s %9s\n", s.label().c_str(), p.medianMs,
                        p.meanRms, p.meanFlip, p.meanMisclassifiedPercent, p.flickerMean, p.flickerP99, settle.c_str(),

@@ -22,7 +22,7 @@ std::string formatFlythroughCsv(const FlythroughResults& results);
 // {"scene", "path", "frames", "threads", "warmup", "runs", "stable_tolerance", "series":
 //  [{"technique", "reference", "settings", "path_figures": {"median_ms", "mean_rms",
 //  "mean_flip", "mean_misclassified_percent", "flicker_mean", "flicker_p99", "settle_frames",
-//  "ghosting_rms_frames" (PathFigures; null where the path does not end still)}, "frames":
+//  "settled", "ghosting_rms_frames" (PathFigures; null where the path does not end still)}, "frames":
 //  [{"frame", "time", "eye", "target", "light" (if moved), "median_ms", "min_ms", "moved", "errors":
 //  formatJson(...), "flicker": {"mean", "p99", "pixels", "stable_pixels"} or null}]}]}.
 // NaN is written as null.

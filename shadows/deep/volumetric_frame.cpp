@@ -60,7 +60,7 @@ VolumetricFrame beginVolumetricFrame(const ShadowInputs& in, const Light& light,
     timer.lap("layers");
     // The opaque map read in place, the one map of the lookup.
     ShadowLookup opaque = lookUpShadows(in.gbuffer, in.camera(), light, std::span(&frame.layers.opaque, 1),
-                                        ServedBy{views, v}, settings.map.bias, makePcfKernel(settings.map.filter),
+                                        ServedBy{views, v}, settings.map.bias, makePcfKernel(settings.map.filter, in.frameIndex),
                                         in.simd);
     frame.opaqueV = std::move(opaque.visibility);
     frame.served = std::move(opaque.mapIndex);

@@ -48,6 +48,10 @@ void accumulate(std::span<const float> current, const GBuffer& g, const Reprojec
         throw std::invalid_argument("temporal accumulation: the frame cap must be in 1..65535 and gamma > 0");
     const size_t n = g.pixelCount();
     if (current.size() != n) throw std::invalid_argument("temporal accumulation: values not of the G-buffer's size");
+    if (reprojection) {
+        requireHistoryOf(*reprojection, before.value.size(), "temporal accumulation");
+        requireHistoryOf(*reprojection, before.frames.size(), "temporal accumulation");
+    }
     after.width = g.width, after.height = g.height;
     after.value.assign(n, 0.0f);
     after.frames.assign(n, 0.0f);

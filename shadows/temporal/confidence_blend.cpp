@@ -9,6 +9,7 @@ namespace shadowlab {
 void blendByConfidence(std::span<const float> tests, std::span<const float> confidence, double exponent,
                        const GBuffer& g, const Reprojection* reprojection, std::span<const float> before,
                        std::vector<float>& after) {
+    if (reprojection) requireHistoryOf(*reprojection, before.size(), "confidence blend");
     after.assign(g.pixelCount(), 0.0f);
     tbb::parallel_for(0, g.height, [&](int j) {
         for (int i = 0; i < g.width; ++i) {
@@ -21,7 +22,7 @@ void blendByConfidence(std::span<const float> tests, std::span<const float> conf
             const float history = reprojection->resample(before, k);
             // c^m by the portable pow: the same bits on every CPU.
             const double c = confidence[k];
-            const double weight = c > 0.0 ? portable::pow(c, exponent) : 0.0;
+            const double weight = exponent == 0.0 ? 1.0 : c > 0.0 ? portable::pow(c, exponent) : 0.0;
             after[k] = float(history + weight * (double(tests[k]) - history));
         }
     });

@@ -45,9 +45,13 @@ glm::dvec2 frameJitter(uint64_t frame) {
 
 ShadowOutputs run(const ShadowInputs& in) {
     const ConfidenceReprojectionSettings s = confidenceReprojectionSettingsTable().read(in.params);
-    if (!anyReachable(in.gbuffer, in.light)) return unlitOutputs(in.gbuffer);
-    StageTimer timer;
     ConfidenceHistory& history = in.kept().state<ConfidenceHistory>();
+    if (!anyReachable(in.gbuffer, in.light)) {
+        ShadowOutputs unlit = unlitOutputs(in.gbuffer);
+        history.last = unlit.visibility;   // this frame's result: the next frame reprojects it, not an older one
+        return unlit;
+    }
+    StageTimer timer;
     const Light light = pointLightFor(in.light);
     LightFitOptions fit;
     fit.resolution = s.map.resolution;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <tbb/parallel_for.h>
 
@@ -32,7 +33,7 @@ Reprojection reproject(const GBuffer& g, const PreviousView& previous, const Rep
         throw std::invalid_argument("reproject: the plane tolerance must be > 0 and the normal cosine in [-1, 1]");
     const size_t n = g.pixelCount();
     Reprojection r{std::vector<glm::uvec4>(n, glm::uvec4(0)), std::vector<glm::vec4>(n, glm::vec4(0.0f)),
-                   std::vector<uint8_t>(n, 0), 0};
+                   std::vector<uint8_t>(n, 0), 0, previous.hit.size()};
     const glm::dvec3 eye(previous.camera.eye);
     tbb::parallel_for(0, g.height, [&](int j) {
         for (int i = 0; i < g.width; ++i) {
@@ -61,6 +62,13 @@ Reprojection reproject(const GBuffer& g, const PreviousView& previous, const Rep
     });
     for (size_t k = 0; k < n; ++k) r.rejectedPixels += g.hit[k] && !r.kept[k];
     return r;
+}
+
+void requireHistoryOf(const Reprojection& reprojection, size_t historyPixels, const char* who) {
+    if (historyPixels != reprojection.previousPixels)
+        throw std::logic_error(std::string(who) + ": a history of " + std::to_string(historyPixels) +
+                               " pixels read through a reprojection into " +
+                               std::to_string(reprojection.previousPixels));
 }
 
 }  // namespace shadowlab

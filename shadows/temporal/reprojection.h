@@ -37,6 +37,7 @@ struct Reprojection {
     std::vector<glm::vec4> weights;   // theirs, summing to 1 over the kept texels; all 0: rejected
     std::vector<uint8_t> kept;        // 1 where some texel was kept (hit pixels only)
     size_t rejectedPixels = 0;        // hit pixels whose history was rejected
+    size_t previousPixels = 0;        // the previous image's pixel count, which a history must have
 
     // The previous frame's values (indexed like PreviousView) resampled at `pixel`; a kept
     // pixel only.
@@ -51,5 +52,10 @@ struct Reprojection {
 // std::invalid_argument if the G-buffer has no motion (a frame without a frame before) or
 // the settings are outside planeTolerance > 0, minNormalCos in [-1, 1].
 Reprojection reproject(const GBuffer& gbuffer, const PreviousView& previous, const ReprojectionSettings& settings);
+
+// Throws std::logic_error (naming `who`) unless `history` has the previous image's pixel
+// count: a history from another view (an older frame's, another size) read through this
+// frame's motion would be read at the wrong places.
+void requireHistoryOf(const Reprojection& reprojection, size_t historyPixels, const char* who);
 
 }  // namespace shadowlab

@@ -287,5 +287,7 @@ TEST_CASE("a path that ends still measures how long a technique's history takes 
     CHECK(*off.settleFrames == 0);
     CHECK(*off.ghosting < 0.02);   // the rotated disk's noise moves each frame's RMS a little
     CHECK(*on.settleFrames >= 2);
+    CHECK(on.settled);                // within the 14 still frames
+    CHECK(off.settled);
     CHECK(*on.ghosting > 10.0 * *off.ghosting);
 }

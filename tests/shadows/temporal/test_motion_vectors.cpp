@@ -71,6 +71,7 @@ TEST_CASE("a moving sphere's points are carried back onto the sphere where it wa
     placeAtPathFrame(prepared, base, 3, 12);
     const uint32_t sphere = 1;
     const glm::vec3 centreBefore = glm::vec3(prepared.scene().instances[sphere].worldFromObject[3]);
+    const std::vector<glm::vec3> positionsBefore = prepared.world().positions;
     const PreviousView before = keepView(viewOf(prepared), prepared.scene());
     placeAtPathFrame(prepared, base, 4, 12);
     GBuffer g = viewOf(prepared);
@@ -82,6 +83,12 @@ TEST_CASE("a moving sphere's points are carried back onto the sphere where it wa
             // The uv-sphere's facets lie within 0.2% of its radius 1 of the centre.
             REQUIRE(glm::length(g.motion.previousPosition[k] - centreBefore) == doctest::Approx(1.0).epsilon(3e-3));
             REQUIRE(glm::length(g.motion.previousNormal[k]) == doctest::Approx(1.0).epsilon(1e-5));
+            // Turned with the sphere: the normal of the same triangle where it was the frame
+            // before (an unturned one is 8 degrees off: the sphere turns 90 degrees in 11 frames).
+            const glm::uvec3 tri = prepared.world().triangles[g.triangle[k]];
+            const glm::dvec3 a(positionsBefore[tri.x]), b(positionsBefore[tri.y]), c(positionsBefore[tri.z]);
+            const glm::dvec3 facet = glm::normalize(glm::cross(b - a, c - a));
+            REQUIRE(std::abs(glm::dot(glm::dvec3(g.motion.previousNormal[k]), facet)) > 1.0 - 1e-5);
             ++onSphere;
         } else {
             REQUIRE(g.motion.previousPosition[k] == g.position[k]);   // the ground and the box stay

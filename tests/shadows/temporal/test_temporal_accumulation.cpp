@@ -125,6 +125,13 @@ TEST_CASE("temporal=off is the technique as it was, and temporal=on starts disoc
         // The reprojection the technique ran, again: each rejected pixel is this frame's own V.
         const Reprojection r = reproject(temporal.gbuffer, *before, {});
         CHECK(r.rejectedPixels > 10);   // the sphere moves 0.5 m a frame: ground uncovered behind it
+        size_t hits = 0, keptChanged = 0;
+        for (size_t k = 0; k < temporal.gbuffer.pixelCount(); ++k) {
+            hits += temporal.gbuffer.hit[k];
+            keptChanged += r.kept[k] && temporal.shadow.visibility[k] != plain.shadow.visibility[k];
+        }
+        CHECK(double(r.rejectedPixels) < 0.2 * double(hits));   // the rest of the view keeps its history
+        CHECK(keptChanged > 100);                               // and blends it in
         double stat = -1.0;
         for (const TechniqueStat& s : temporal.shadow.stats)
             if (s.name == "history_rejected_pixels") stat = s.value;
