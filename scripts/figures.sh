@@ -348,15 +348,17 @@ EOF
     # ray-traced shadows raw and denoised, cached maps, along a moving sphere that stops, a
     # turning sun that stops and sphere-box's camera arc, at 320 x 200, one run per frame.
     # The tables: scripts/flythrough_table.py --settle out/figures/temporal/*.json
-    # out/figures/temporal/cached/*.json.
+    # out/figures/temporal/cached/*.json out/figures/temporal/accumulated/*.json.
     f=$out/temporal
     fly="$app flythrough --width 320 --height 200 --runs 1 --warmup 0 --threads 2 --out $f"
     cached="$app flythrough --width 320 --height 200 --runs 1 --warmup 0 --threads 2 --out $f/cached"
+    accumulated="$app flythrough --width 320 --height 200 --runs 1 --warmup 0 --threads 2 --out $f/accumulated"
     for path in assets/scenes/flythrough/sphere-stops.json sphere-box; do
       $fly $path --technique shadow-map --param filter=poisson --param poisson-rotation=ign --param temporal=off,on > /dev/null
       $fly $path --technique pcss --param rotation=ign --param temporal=off,on > /dev/null
       $fly $path --technique confidence-reprojection --param resolution=512 > /dev/null
       $fly $path --technique ray-traced --param rays=1,4 --param denoiser=none,svgf,tiled,penumbra > /dev/null
+      $accumulated $path --technique ray-traced --param rays=1 --param temporal=on > /dev/null
     done
     $cached assets/scenes/flythrough/sphere-stops.json --technique shadow-map --param cache=off,static \
       --param fit=receivers,scene > /dev/null
