@@ -1,4 +1,4 @@
-// Cached shadow maps of static casters (issue 39; docs/cached-shadow-maps.md): a map of the
+// Cached shadow maps of static casters (docs/cached-shadow-maps.md): a map of the
 // casters that never moved is kept across frames, and each frame's map is a copy of it with
 // the casters that move drawn over the copy, as engines cache shadows (Unity HDRP's cached
 // shadows with "Always Draw Dynamic": the static casters' map rendered on demand, the dynamic

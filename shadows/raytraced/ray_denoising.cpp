@@ -37,10 +37,9 @@ DenoisedRays denoiseRays(const ShadowInputs& in, ShadowDenoiser which, const Sha
     const DenoiseView view{camera.eye, float(camera.height / (2.0 * portable::tan(glm::radians(double(camera.fovyDeg)) / 2.0)))};
     const size_t lastSize = which == ShadowDenoiser::Penumbra ? history.stabilised.value.size()
                                                               : history.moments.signal.value.size();
-    const bool continues = in.previous && lastSize == in.previous->hit.size();
-    const Reprojection reprojection = continues ? reproject(in.gbuffer, *in.previous, {}) : Reprojection{};
+    const std::optional<Reprojection> reprojection = reprojectHistory(in.gbuffer, in.previous, lastSize, {});
     const DenoiseInputs inputs{in.gbuffer, rays.visibility, rays.occluderDistance, view, denoiseLightOf(in.light),
-                               continues ? &reprojection : nullptr};
+                               reprojection ? &*reprojection : nullptr};
     const DebugBuffers debug(in.debugDir, "ray-traced");
     const DebugBuffers* shown = debug.enabled() ? &debug : nullptr;
     DenoisedRays out;

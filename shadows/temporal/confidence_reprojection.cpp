@@ -70,9 +70,9 @@ ShadowOutputs run(const ShadowInputs& in) {
     timer.lap("lookup");
     const std::vector<float> confidence = shadowTestConfidence(in.gbuffer, history.map, light, s.map.bias);
     timer.lap("confidence");
-    const bool continues = in.previous && history.last.size() == in.previous->hit.size();
-    const Reprojection reprojection = continues ? reproject(in.gbuffer, *in.previous, s.reprojection) : Reprojection{};
-    blendByConfidence(tests.visibility, confidence, s.exponent, in.gbuffer, continues ? &reprojection : nullptr,
+    const std::optional<Reprojection> reprojection =
+        reprojectHistory(in.gbuffer, in.previous, history.last.size(), s.reprojection);
+    blendByConfidence(tests.visibility, confidence, s.exponent, in.gbuffer, reprojection ? &*reprojection : nullptr,
                       history.last, history.next);
     std::swap(history.last, history.next);
     timer.lap("history");
@@ -85,7 +85,7 @@ ShadowOutputs run(const ShadowInputs& in) {
     out.stats = {{"resolution_texels", double(s.map.resolution)},
                  {"jitter_x_texels", offset.x},
                  {"jitter_y_texels", offset.y},
-                 {"history_rejected_pixels", double(reprojection.rejectedPixels)}};
+                 {"history_rejected_pixels", reprojection ? double(reprojection->rejectedPixels) : 0.0}};
     timer.appendTo(out.stats);
     return out;
 }

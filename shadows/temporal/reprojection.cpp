@@ -64,6 +64,12 @@ Reprojection reproject(const GBuffer& g, const PreviousView& previous, const Rep
     return r;
 }
 
+std::optional<Reprojection> reprojectHistory(const GBuffer& g, const PreviousView* previous, size_t historyPixels,
+                                             const ReprojectionSettings& s) {
+    if (!previous || historyPixels != previous->hit.size()) return std::nullopt;
+    return reproject(g, *previous, s);
+}
+
 void requireHistoryOf(const Reprojection& reprojection, size_t historyPixels, const char* who) {
     if (historyPixels != reprojection.previousPixels)
         throw std::logic_error(std::string(who) + ": a history of " + std::to_string(historyPixels) +

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -52,6 +53,12 @@ struct Reprojection {
 // std::invalid_argument if the G-buffer has no motion (a frame without a frame before) or
 // the settings are outside planeTolerance > 0, minNormalCos in [-1, 1].
 Reprojection reproject(const GBuffer& gbuffer, const PreviousView& previous, const ReprojectionSettings& settings);
+
+// reproject() where the frame has a frame before and the history kept is of its size
+// (historyPixels: a history written in another view cannot be read through this one's
+// motion); none otherwise, and every pixel starts afresh.
+std::optional<Reprojection> reprojectHistory(const GBuffer& gbuffer, const PreviousView* previous,
+                                             size_t historyPixels, const ReprojectionSettings& settings);
 
 // Throws std::logic_error (naming `who`) unless `history` has the previous image's pixel
 // count: a history from another view (an older frame's, another size) read through this

@@ -54,12 +54,10 @@ Technique withTemporalAccumulation(Technique technique) {
                                                "give temporal=off");
         StageTimer timer;
         AccumulationHistory& history = in.kept().state<AccumulationHistory>();
-        // A history from a view of another size cannot be read through this one's motion.
-        const bool continues = in.previous && history.last.value.size() == in.previous->hit.size();
-        const Reprojection reprojection =
-            continues ? reproject(in.gbuffer, *in.previous, s.reprojection) : Reprojection{};
+        const std::optional<Reprojection> reprojection =
+            reprojectHistory(in.gbuffer, in.previous, history.last.value.size(), s.reprojection);
         AccumulationBuffers buffers;
-        accumulate(out.visibility, in.gbuffer, continues ? &reprojection : nullptr, history.last, s.accumulation,
+        accumulate(out.visibility, in.gbuffer, reprojection ? &*reprojection : nullptr, history.last, s.accumulation,
                    history.next, in.debugDir.empty() ? nullptr : &buffers);
         if (!in.debugDir.empty())
             writeBuffers(in, name, history.next, buffers, out.visibility, float(s.accumulation.maxFrames));
@@ -71,7 +69,7 @@ Technique withTemporalAccumulation(Technique technique) {
         for (size_t k = 0; k < in.gbuffer.pixelCount(); ++k) {
             if (in.gbuffer.hit[k]) frames += history.last.frames[k], ++hits;
         }
-        out.stats.push_back({"history_rejected_pixels", double(reprojection.rejectedPixels)});
+        out.stats.push_back({"history_rejected_pixels", reprojection ? double(reprojection->rejectedPixels) : 0.0});
         out.stats.push_back({"history_frames_mean_count", hits ? frames / double(hits) : 0.0});
         timer.appendTo(out.stats);
         return out;

@@ -1,4 +1,4 @@
-// Cached shadow maps (issue 39, docs/cached-shadow-maps.md): shadow-map's cache=static keeps
+// Cached shadow maps (docs/cached-shadow-maps.md): shadow-map's cache=static keeps
 // the static casters' map and draws the moving ones over a copy; csm's update-every draws
 // far cascades every k-th frame. A cached map must equal a fresh one bit for bit, and redraw
 // only what a move or the light invalidates.
