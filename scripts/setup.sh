@@ -24,7 +24,8 @@ if [[ $mode == all ]]; then
              chromium                         # the report's browser test (tests/report)
              imagemagick librsvg2-bin         # the lessons' crops, contrast stretches and plots (scripts/lessons/)
              assimp-testmodels                # the Khronos glTF sample models the glTF reader's tests load (tests/scenes)
-             assimp-utils)                    # `assimp export`: the suite's house from IFC to glTF (scripts/suite_models.sh)
+             assimp-utils                     # `assimp export`: the suite's house from IFC to glTF (scripts/suite_models.sh)
+             pybind11-dev python3-dev python3-numpy python3-pytest)   # the Python module and its tests (python/, tests/python)
   # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
   command -v node > /dev/null || packages+=(nodejs npm)
 fi
@@ -43,5 +44,8 @@ fi
 step "playwright-core (npm ci)" bash -c "cd tests/report && npm ci --no-audit --no-fund --silent"
 
 source scripts/ccache.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_BUILD_TESTS=ON "${ccache_launcher[@]}"
+# The Python module is built for Debian's interpreter, whose numpy and pytest apt installs
+# (a python3 earlier in PATH, e.g. pyenv's, may have neither).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSHADOWLAB_BUILD_TESTS=ON -DPython3_EXECUTABLE=/usr/bin/python3 \
+    "${ccache_launcher[@]}"
 step "build: GCC Release, every target" cmake --build build -j"$(nproc)"

@@ -53,7 +53,7 @@ build_onetbb() {
 }
 [[ -f $tbb/install/lib/cmake/TBB/TBBConfig.cmake ]] || step "build: oneTBB for TSan (Debian's source)" build_onetbb
 
-CC=clang-14 CXX=clang++-14 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+CC=clang-14 CXX=clang++-14 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_BUILD_PYTHON=OFF \
     -DCMAKE_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
     -DTBB_DIR="$tbb/install/lib/cmake/TBB" "${ccache_launcher[@]}"
