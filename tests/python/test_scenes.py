@@ -48,7 +48,8 @@ def test_overrides_act_as_the_commands():
     scene = shadowlab.load_scene("sphere-box")
     scene.apply_overrides(width=20, height=10, eye=(0, 3, 7), fovy_deg=50, light_position=(2, 6, 1), light_radius=0.3)
     assert (scene.camera.width, scene.camera.height, scene.camera.fovy_deg) == (20, 10, 50)
-    assert scene.camera.eye == (0, 3, 7) and scene.lights[0].position == (2, 6, 1) and scene.lights[0].radius == np.float32(0.3)   # a float32 field
+    assert scene.camera.eye == (0, 3, 7) and scene.lights[0].position == (2, 6, 1)
+    assert scene.lights[0].radius == np.float32(0.3)   # a float32 field
 
 
 def test_moving_a_prepared_scenes_camera_and_light_renders_as_preparing_it_moved():
