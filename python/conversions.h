@@ -43,6 +43,12 @@ struct type_caster<glm::vec3> {
 
 namespace shadowlab::python {
 
+// A 4 x 4 matrix as numpy writes it, row by row (A[r][c], acting on column vectors: A @ p),
+// from any nested sequence or array of 4 x 4 real numbers; TypeError for another shape.
+glm::mat4 matrixOf(const pybind11::handle& matrix);
+// The other way: a (4, 4) float32 array, a copy.
+pybind11::object matrixArray(const glm::mat4& matrix);
+
 // A technique's settings as the command's --param NAME=VALUE texts: a dict (or None: none)
 // from names to str (as given), bool ("on"/"off"), int or float (settingText(), the shortest
 // text that reads back as the same double). Throws TypeError for another key or value type.
