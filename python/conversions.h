@@ -14,7 +14,43 @@
 #include "scenes/scene.h"
 #include "shadows/technique.h"
 
+namespace shadowlab::python {
+
+// A Python argument taken as it is, for the function to check and convert (with a one-line
+// TypeError of its own, where pybind11's would list every overload), named in signatures and
+// the API reference by Tag::name, the types it accepts.
+template <class Tag>
+struct Argument {
+    pybind11::object object;
+};
+struct TechniqueTag {
+    static constexpr auto name = pybind11::detail::const_name("Technique | str");
+};
+struct ParamsTag {
+    static constexpr auto name = pybind11::detail::const_name("dict[str, str | int | float | bool] | None");
+};
+struct SimdTag {
+    static constexpr auto name = pybind11::detail::const_name("str | None");
+};
+using TechniqueArgument = Argument<TechniqueTag>;   // techniqueOf()
+using ParamsArgument = Argument<ParamsTag>;         // paramSettings()
+using SimdArgument = Argument<SimdTag>;             // simdLevel()
+
+}  // namespace shadowlab::python
+
 namespace pybind11::detail {
+
+template <class Tag>
+struct type_caster<shadowlab::python::Argument<Tag>> {
+    PYBIND11_TYPE_CASTER(shadowlab::python::Argument<Tag>, Tag::name);
+    bool load(handle source, bool) {
+        value.object = reinterpret_borrow<object>(source);
+        return true;
+    }
+    static handle cast(const shadowlab::python::Argument<Tag>& argument, return_value_policy, handle) {
+        return argument.object.inc_ref();
+    }
+};
 
 // glm::vec3 as a tuple (x, y, z) of floats; any sequence of three real numbers converts to
 // one (a list, a tuple, a numpy array), anything else is a TypeError.
