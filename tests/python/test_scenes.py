@@ -101,3 +101,11 @@ def test_moving_an_instance_renders_as_preparing_it_moved():
     assert np.array_equal(shadowlab.render(again, "shadow-map", {"resolution": 64}).visibility, moved.visibility)
     unmoved = shadowlab.render(shadowlab.prepare(tiny_scene()), "shadow-map", {"resolution": 64})
     assert not np.array_equal(unmoved.visibility, moved.visibility)
+
+
+def test_gltf_files_load_by_path():
+    corpus = pathlib.Path(__file__).resolve().parents[1] / "fuzz" / "corpus" / "gltf_file"
+    text, binary = shadowlab.load_scene(corpus / "lit_mask.gltf"), shadowlab.load_scene(str(corpus / "lit_mask.glb"))
+    assert len(text.instance_names) == len(binary.instance_names) == 2   # named after their file's nodes
+    assert text.triangle_count == binary.triangle_count and len(text.lights) == len(binary.lights) == 2
+    assert text.camera == binary.camera
