@@ -10,8 +10,8 @@
 # (slurmd's user, as in CI's chroot; no systemd needed).
 #
 # slurm-wlm and munge are installed here, not by scripts/setup.sh: on a machine with systemd
-# their packages enable and start a system munged, slurmctld and slurmd, which only this
-# test wants, and it runs none of them.
+# their packages enable system services (munged starts at once) that only this test would
+# want, and it uses none of them.
 #
 #   scripts/slurm_sweep_test.sh [SHADOWLAB]   SHADOWLAB: the command (default build/app/shadowlab)
 #
