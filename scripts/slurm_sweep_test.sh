@@ -28,7 +28,7 @@ install_missing slurm-wlm munge python3
 tmp=$(mktemp -d /tmp/shadowlab-slurm.XXXXXX)
 chmod 0755 "$tmp"   # munged requires its socket's directories searchable by all
 export SLURM_CONF=$tmp/slurm.conf
-names=() pids=()   # the daemons started, in order
+names=() pids=() logs=()   # the daemons started, in order
 job=""             # the job array, once submitted
 fail() { echo "slurm_sweep_test: $*" >&2; exit 1; }
 
@@ -69,7 +69,7 @@ start() {
   local name=$1 log=$2
   shift 2
   "$@" >> "$log" 2>&1 &
-  names+=("$name") pids+=($!)
+  names+=("$name") pids+=($!) logs+=("$log")
 }
 # wait_for WHAT SECONDS LOG COMMAND...: COMMAND every half second until it succeeds, while
 # every daemon lives; a one-line error naming WHAT (or the daemon gone) and its log otherwise.
@@ -78,7 +78,7 @@ wait_for() {
   shift 3
   for ((k = 0; k < 2 * seconds; ++k)); do
     for d in "${!pids[@]}"; do
-      kill -0 "${pids[d]}" 2>/dev/null || fail "${names[d]} exited while waiting for $what (log: $log)"
+      kill -0 "${pids[d]}" 2>/dev/null || fail "${names[d]} exited while waiting for $what (log: ${logs[d]})"
     done
     "$@" > /dev/null 2>&1 && return 0
     sleep 0.5
