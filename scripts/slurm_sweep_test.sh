@@ -7,7 +7,7 @@
 # checks that the merged files equal the unsharded sweep's in everything but the measured
 # times and that a merge missing a shard is refused. Every wait is bounded; on any exit the
 # job is cancelled, every daemon it started stopped and the directory removed. Runs as root
-# (slurmd's user, as in CI's chroot; no systemd needed).
+# (slurmd's user, as in CI's chroot; no systemd, and no /sys, needed).
 #
 # slurm-wlm and munge are installed here, not by scripts/setup.sh: on a machine with systemd
 # their packages enable system services (munged starts at once) that only this test would
@@ -17,13 +17,28 @@
 #
 # scripts/test.sh --cluster runs it.
 set -euo pipefail
+shadowlab=${1:+$(realpath -m "$1")}
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-shadowlab=$(realpath -m "${1:-build/app/shadowlab}")
+shadowlab=${shadowlab:-$PWD/build/app/shadowlab}
 blank_times=$PWD/tests/app/blank_times.py
 [[ -x $shadowlab ]] || { echo "slurm_sweep_test: no $shadowlab (build it: scripts/setup.sh)" >&2; exit 2; }
 [[ $(id -u) -eq 0 ]] || { echo "slurm_sweep_test: run it as root (slurmd's user)" >&2; exit 2; }
 source scripts/install_missing.sh
 install_missing slurm-wlm munge python3
+
+# slurmd will not start without a cgroup file system it knows at /sys/fs/cgroup, though with
+# proctrack/linuxproc and task/none it puts nothing there; a chroot may have none, and on a
+# cgroup v2 host slurmd would want systemd (a scope for its steps). So the rest runs in a
+# mount namespace of its own, where /sys/fs/cgroup is a tmpfs holding only a named v1
+# hierarchy (systemd's, where the host has one; nothing is put in it), all of it gone with
+# the namespace.
+if [[ -z ${SHADOWLAB_SLURM_NAMESPACE:-} ]]; then
+  SHADOWLAB_SLURM_NAMESPACE=1 exec unshare --mount --propagation private "$PWD/scripts/slurm_sweep_test.sh" "$shadowlab"
+fi
+[[ -d /sys/fs/cgroup ]] || { mount -t tmpfs sysfs-stand-in /sys; mkdir -p /sys/fs/cgroup; }
+mount -t tmpfs cgroup-stand-in /sys/fs/cgroup
+mkdir /sys/fs/cgroup/systemd
+mount -t cgroup -o none,name=systemd cgroup /sys/fs/cgroup/systemd
 
 tmp=$(mktemp -d /tmp/shadowlab-slurm.XXXXXX)
 chmod 0755 "$tmp"   # munged requires its socket's directories searchable by all
@@ -43,6 +58,7 @@ stop() {
 cleanup() {
   local status=$? k log
   trap - EXIT
+  set +e; trap '' PIPE   # nothing may stop the cleaning up: a failing kill, a reader gone
   # The job's tasks first, while slurmctld and slurmd can end them: slurmstepd and the
   # tasks it runs outlive slurmd by design.
   if [[ -n $job ]] && ((${#pids[@]} == 3)); then
