@@ -25,11 +25,11 @@ if [[ $mode == all ]]; then
              imagemagick librsvg2-bin         # the lessons' crops, contrast stretches and plots (scripts/lessons/)
              assimp-testmodels                # the Khronos glTF sample models the glTF reader's tests load (tests/scenes)
              assimp-utils)                    # `assimp export`: the suite's house from IFC to glTF (scripts/suite_models.sh)
+  # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
+  command -v node > /dev/null || packages+=(nodejs npm)
   # Not slurm-wlm and munge: scripts/slurm_sweep_test.sh (test.sh --cluster) installs them, so
   # that their system services (munged starts at once) are not enabled on every developer's
   # machine (docs/building.md).
-  # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
-  command -v node > /dev/null || packages+=(nodejs npm)
 fi
 source scripts/install_missing.sh
 source scripts/steps.sh
