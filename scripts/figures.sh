@@ -5,22 +5,22 @@
 # caster level of detail, differential rendering into photographs, and every technique's
 # stages to one standard (the Figure 3 table is scripts/figure3.sh, about an hour on its own),
 # and the virtual shadow map against cascades and shadow maps at equal memory
-# (docs/virtual-shadow-maps.md).
+# (docs/virtual-shadow-maps.md), and the settings a node sweeps per hour (docs/scale.md).
 # Writes CSV, JSON and SVG under out/figures, copies the plots and images the docs show into
 # docs/images, and prints docs/performance.md's tables. Takes about 10 minutes on 2 cores,
 # more for the sweeps' pictures (docs/report.md), ten minutes for the fly-throughs, about
 # fifteen for the technique-standard sweeps and twelve for the virtual map's; run nothing
 # else meanwhile (times are medians, but a busy machine still moves them).
 # Last, the HTML report of every sweep (each run with --images): out/report/index.html.
-# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|temporal|lights|suite|standard|virtual|report ...]
-#        (default: all twenty-one, report last; suite needs the packages scripts/suite_models.sh installs)
+# usage: scripts/figures.sh [hard|cases|bias|models|soft|torus|views|scaling|bench|environment|lod|differential|screen|volumetric|cutouts|flythrough|temporal|lights|suite|standard|virtual|scale|report ...]
+#        (default: all twenty-three, report last; suite needs the packages scripts/suite_models.sh installs)
 set -eu
 cd "$(dirname "$0")/.."
 app=build/app/shadowlab
 out=out/figures
 table=scripts/sweep_table.py
 mkdir -p "$out"
-parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough temporal lights suite standard virtual report}
+parts=${*:-hard cases bias models soft torus views scaling bench environment lod differential screen volumetric cutouts flythrough temporal lights suite standard virtual scale report}
 
 for part in $parts; do
   case $part in
@@ -553,6 +553,11 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
       cp $v/buffers/virtual-shadow-map-$buffer.png docs/images/virtual-buffer-$buffer.png
     done
     ;;
+  scale)
+    # docs/scale.md's settings per node per hour and each set's reference, built-in scenes
+    # on 2 threads (18 minutes on a busy machine). Into out/scale: timings for a table, not the report's.
+    python3 scripts/scale_table.py --app $app --threads 2 --out out/scale
+    ;;
   report)
     # Every sweep's JSON under out/figures (the files with a grid of reference fingerprints;
     # bench and composite JSON are not sweeps) as one site: a page per scene and per setting.
@@ -560,6 +565,6 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     $app report $sweeps --out out/report
     ;;
   *) echo "figures.sh: unknown part '$part' (hard, cases, bias, models, soft, torus, views, scaling, bench," \
-       "environment, lod, differential, screen, volumetric, cutouts, flythrough, lights, suite, standard, virtual, report)" >&2; exit 2 ;;
+       "environment, lod, differential, screen, volumetric, cutouts, flythrough, lights, suite, standard, virtual, scale, report)" >&2; exit 2 ;;
   esac
 done

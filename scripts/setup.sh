@@ -28,6 +28,9 @@ if [[ $mode == all ]]; then
              pybind11-dev python3-dev python3-numpy python3-pytest)   # the Python module and its tests (python/, tests/python)
   # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
   command -v node > /dev/null || packages+=(nodejs npm)
+  # Not slurm-wlm and munge: scripts/slurm_sweep_test.sh (test.sh --cluster) installs them, so
+  # that their system services (munged starts at once) are not enabled on every developer's
+  # machine (docs/building.md).
 fi
 source scripts/install_missing.sh
 source scripts/steps.sh
