@@ -174,14 +174,15 @@ SweepShard parseSweepShard(const std::string& text) {
     return shard;
 }
 
-SweepResults runSweep(const SweepOptions& options) {
+SweepResults runSweep(const SweepOptions& options) { return runSweep(loadScene(options.scene), options); }
+
+SweepResults runSweep(Scene scene, const SweepOptions& options) {
     if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
     if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
     if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
     const std::vector<SweepPlan> grid = planSweep(options.techniques, options.axes);
     const std::vector<SweepPlan> plans = shardOf(grid, options.shard);
     const std::vector<int> threads = threadCounts(options);
-    Scene scene = loadScene(options.scene);
     applyOverrides(scene, options.overrides);
     const PreparedScene prepared(std::move(scene));
     checkSettings(prepared, plans, options.simd, options.progress, "sweep");
