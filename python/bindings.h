@@ -9,4 +9,7 @@ namespace shadowlab::python {
 // scene file that is missing as FileNotFoundError, ...
 void bindErrors(pybind11::module_& m);
 
+// Sweeps and fly-throughs, their results and a sweep's JSON (measure_bindings.cpp).
+void bindMeasure(pybind11::module_& m);
+
 }  // namespace shadowlab::python

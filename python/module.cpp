@@ -9,4 +9,5 @@ PYBIND11_MODULE(_shadowlab, m) {
     m.doc() = "shadowlab's library: scenes, shadow techniques, frames and their scores, sweeps and fly-throughs";
     m.attr("__version__") = SHADOWLAB_VERSION;
     shadowlab::python::bindErrors(m);
+    shadowlab::python::bindMeasure(m);
 }
