@@ -173,6 +173,9 @@ def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, ref
     settings = _shadowlab._sweep_settings(names, call["axes"])
     if shards is None:
         shards = max(1, min(len(client.scheduler_info()["workers"]), settings))
+    if not 1 <= shards <= settings:   # the library's rule (sweep.cpp), checked before the cluster works
+        raise ValueError(f"sweep: shards={shards}: the sweep has only {settings} settings, so some shards would "
+                         f"have none (use 1 to {settings} shards)")
     futures = [client.submit(_run_shard, call, i, shards, pure=False) for i in range(1, shards + 1)]
     return merge_sweeps([SweepResults.from_json(text) for text in client.gather(futures)])
 

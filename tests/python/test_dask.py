@@ -1,0 +1,48 @@
+"""sweep(client=...) on a Dask cluster of two worker processes (which import shadowlab from
+PYTHONPATH, as a cluster's would from its installation): the shards' merge equals the sweep
+run here in everything but the measured times, as merge-sweep's does."""
+import json
+
+import pytest
+
+import shadowlab
+
+distributed = pytest.importorskip("distributed")
+
+SMALL = {"threads": 1, "runs": 1, "warmup": 0, "width": 64, "height": 48}
+PARAMS = {"resolution": [64, 128, 256]}
+
+
+def without_times(text):
+    def strip(value):
+        if isinstance(value, dict):
+            return {k: strip(v) for k, v in value.items() if not k.endswith("_ms")}
+        return [strip(v) for v in value] if isinstance(value, list) else value
+    return strip(json.loads(text))
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    client = distributed.Client(cluster)
+    yield client
+    client.close()
+    cluster.close()
+
+
+def test_the_clusters_merge_is_the_sweep_run_here(client):
+    here = shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], PARAMS, **SMALL)
+    # Default: one shard per worker.
+    spread = shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], PARAMS, client=client, **SMALL)
+    assert spread.shard == (1, 1) and len(spread.rows) == 6
+    assert without_times(spread.to_json()) == without_times(here.to_json())
+    # More shards than workers.
+    three = shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], PARAMS, client=client, shards=3, **SMALL)
+    assert without_times(three.to_json()) == without_times(here.to_json())
+
+
+def test_a_bad_sweep_fails_before_the_cluster_runs_it(client):
+    with pytest.raises(ValueError, match="only 6 settings"):
+        shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], PARAMS, client=client, shards=7, **SMALL)
+    with pytest.raises(ValueError, match="either shard"):
+        shadowlab.sweep("sphere-box", "shadow-map", client=client, shard=(1, 2), **SMALL)
