@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
-#include <variant>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -17,24 +16,16 @@
 #include "app/measure/sweep.h"
 #include "app/measure/sweep_json.h"
 #include "app/measure/sweep_merge.h"
+#include "app/plots/sweep_plot.h"
 #include "frame/overrides_json.h"
 #include "frame/registry.h"
 #include "python/bindings.h"
+#include "python/conversions.h"
 
 namespace py = pybind11;
 
 namespace shadowlab::python {
 namespace {
-
-// A scene as the Python layer hands it over: a built-in name or a file's path, or a Scene
-// it loaded (from a dict, or the user's own).
-using SceneSource = std::variant<std::string, Scene>;
-using Vec3 = std::optional<std::array<float, 3>>;
-
-std::optional<glm::vec3> vec3(const Vec3& v) {
-    if (!v) return std::nullopt;
-    return glm::vec3((*v)[0], (*v)[1], (*v)[2]);
-}
 
 // Sweep axes in the order given: (name, values as the command's --param text).
 std::vector<SweepAxis> axesOf(const std::vector<std::pair<std::string, std::vector<std::string>>>& axes) {
@@ -49,11 +40,9 @@ std::vector<const Technique*> techniquesOf(const std::vector<std::string>& names
     return techniques;
 }
 
-raster::SimdLevel simdOf(const std::optional<std::string>& simd) {
-    return simd ? raster::parseSimdLevel(*simd) : raster::bestSimdLevel();
-}
-
-py::dict statsDict(const std::vector<TechniqueStat>& stats) {
+// A technique's stats as {name: value}, in their order. (frame_bindings.cpp has the same as
+// statsDict; one shared in conversions.h would serve both.)
+py::dict namedStats(const std::vector<TechniqueStat>& stats) {
     py::dict d;
     for (const TechniqueStat& s : stats) d[py::str(s.name)] = s.value;
     return d;
@@ -76,22 +65,16 @@ py::dict gridDict(const SweepGrid& g) {
     return d;
 }
 
-template <class Result, class Options, class Run>
-Result runReleased(const SceneSource& scene, Options& options, Run run) {
-    py::gil_scoped_release release;
-    if (const std::string* name = std::get_if<std::string>(&scene)) {
-        options.scene = *name;
-        return run(options);
-    }
-    return run(std::get<Scene>(scene), options);
-}
-
-SweepResults sweep(const SceneSource& scene, const std::vector<std::string>& techniques,
+// The scene comes loaded (load_scene() in the package, which finds the built-in scenes where
+// the package is installed); the library records the overrides in the grid, so they are
+// passed on, not applied here.
+SweepResults sweep(const Scene& scene, const std::vector<std::string>& techniques,
                    const std::vector<std::pair<std::string, std::vector<std::string>>>& axes,
                    const std::vector<int>& threads, int runs, int warmup, const std::string& reference,
-                   std::pair<int, int> shard, const std::optional<std::string>& simd, std::optional<int> light,
-                   std::optional<int> width, std::optional<int> height, const Vec3& eye, const Vec3& target,
-                   std::optional<float> fovy, const Vec3& lightPosition, std::optional<float> lightRadius) {
+                   std::pair<int, int> shard, const py::object& simd, std::optional<int> light,
+                   std::optional<int> width, std::optional<int> height, std::optional<glm::vec3> eye,
+                   std::optional<glm::vec3> target, std::optional<float> fovyDeg,
+                   std::optional<glm::vec3> lightPosition, std::optional<float> lightRadius) {
     SweepOptions options;
     options.techniques = techniquesOf(techniques);
     options.axes = axesOf(axes);
@@ -101,15 +84,16 @@ SweepResults sweep(const SceneSource& scene, const std::vector<std::string>& tec
     options.reference = reference;
     options.shard = {shard.first, shard.second};
     if (!options.shard.valid()) throw std::invalid_argument("shard " + options.shard.name() + ": expected (i, n) with 1 <= i <= n");
-    options.simd = simdOf(simd);
-    options.overrides = {light, width, height, vec3(eye), vec3(target), vec3(lightPosition), fovy, lightRadius};
-    return runReleased<SweepResults>(scene, options, [](auto&&... a) { return runSweep(a...); });
+    options.simd = simdLevel(simd);
+    options.overrides = {light, width, height, eye, target, lightPosition, fovyDeg, lightRadius};
+    py::gil_scoped_release release;
+    return runSweep(scene, options);
 }
 
-FlythroughResults flythrough(const SceneSource& scene, const std::vector<std::string>& techniques,
+FlythroughResults flythrough(const Scene& scene, const std::vector<std::string>& techniques,
                              const std::vector<std::pair<std::string, std::vector<std::string>>>& axes,
                              const std::string& path, int frames, int threads, int runs, int warmup,
-                             std::optional<float> stableTolerance, const std::optional<std::string>& simd,
+                             std::optional<float> stableTolerance, const py::object& simd,
                              std::optional<int> light, std::optional<int> width, std::optional<int> height) {
     FlythroughOptions options;
     options.techniques = techniquesOf(techniques);
@@ -120,11 +104,12 @@ FlythroughResults flythrough(const SceneSource& scene, const std::vector<std::st
     options.runs = runs;
     options.warmupRuns = warmup;
     if (stableTolerance) options.stableTolerance = *stableTolerance;
-    options.simd = simdOf(simd);
+    options.simd = simdLevel(simd);
     options.overrides.light = light;
     options.overrides.width = width;
     options.overrides.height = height;
-    return runReleased<FlythroughResults>(scene, options, [](auto&&... a) { return runFlythrough(a...); });
+    py::gil_scoped_release release;
+    return runFlythrough(scene, options);
 }
 
 // The library reports a sweep's JSON or shards that do not fit as std::runtime_error, as a
@@ -158,7 +143,7 @@ void bindSweep(py::module_& m) {
         .def_readonly("errors", &SweepRow::errors, "ErrorFigures over every light of the scene (the last measured frame's)")
         .def_readonly("light_errors", &SweepRow::lightErrors,
                       "each light's ErrorFigures, in the scene's order, for a scene of several lights; [] for one")
-        .def_property_readonly("stats", [](const SweepRow& r) { return statsDict(r.stats); },
+        .def_property_readonly("stats", [](const SweepRow& r) { return namedStats(r.stats); },
                                "the technique's stats of the last measured frame, {name: value} (stage times: medians)")
         .def("__repr__", [](const SweepRow& r) {
             return "<SweepRow " + r.technique + " " + r.settingsLabel() + " threads=" + std::to_string(r.threads) + ">";
@@ -180,6 +165,14 @@ void bindSweep(py::module_& m) {
         .def("to_json", &formatSweepJson, "The sweep's JSON: the bytes `shadowlab sweep` writes (UTF-8), as str.")
         .def("to_csv", &formatSweepCsv, "The sweep's CSV: the bytes `shadowlab sweep` writes, as str.")
         .def("to_text", &formatSweepText, "The table `shadowlab sweep` prints.")
+        .def("to_svg", [](const SweepResults& r, const std::string& plotY) {
+            const PlotErrorAxis axis = parsePlotErrorAxis(plotY);
+            requirePlottable(r.rows, axis);
+            return formatSweepSvg(r, axis);
+        }, py::arg("plot_y") = "auto",
+             "The speed-against-error plot `shadowlab sweep` writes (SVG text, no plotting library): plot_y is its "
+             "--plot-y, auto, misclassified, rms, umbra, rms-display or flip; ValueError for an axis a row has no "
+             "figure for.")
         .def_static("from_json", [](const std::string& text) { return asValueError([&] { return parseSweepJson(text, "JSON text"); }); },
                     py::arg("text"),
                     "A sweep's JSON text (to_json(), or a file `shadowlab sweep` wrote) back into results that write "
@@ -191,7 +184,7 @@ void bindSweep(py::module_& m) {
 
     m.def("_sweep", &sweep, py::arg("scene"), py::arg("techniques"), py::arg("axes"), py::arg("threads"),
           py::arg("runs"), py::arg("warmup"), py::arg("reference"), py::arg("shard"), py::arg("simd"),
-          py::arg("light"), py::arg("width"), py::arg("height"), py::arg("eye"), py::arg("target"), py::arg("fovy"),
+          py::arg("light"), py::arg("width"), py::arg("height"), py::arg("eye"), py::arg("target"), py::arg("fovy_deg"),
           py::arg("light_position"), py::arg("light_radius"),
           "runSweep with the GIL released; shadowlab.sweep is its front end.");
     m.def("_sweep_settings", [](const std::vector<std::string>& techniques, const std::vector<std::pair<std::string, std::vector<std::string>>>& axes) {
@@ -247,7 +240,7 @@ void bindFlythrough(py::module_& m) {
         .def_readonly("errors", &FlythroughFrame::errors, "ErrorFigures against the frame's exact reference")
         .def_property_readonly("flicker", [](const FlythroughFrame& f) { return flickerDict(f.flicker); },
                                "against the frame before: {mean, p99, pixels, stable_pixels}; {} for frame 0")
-        .def_property_readonly("stats", [](const FlythroughFrame& f) { return statsDict(f.stats); },
+        .def_property_readonly("stats", [](const FlythroughFrame& f) { return namedStats(f.stats); },
                                "the technique's stats for the frame, {name: value}");
 
     py::class_<FlythroughSeries>(m, "FlythroughSeries", "One technique setting along the whole path.")

@@ -8,6 +8,14 @@
 PYBIND11_MODULE(_shadowlab, m) {
     m.doc() = "shadowlab's library: scenes, shadow techniques, frames and their scores, sweeps and fly-throughs";
     m.attr("__version__") = SHADOWLAB_VERSION;
-    shadowlab::python::bindErrors(m);
-    shadowlab::python::bindMeasure(m);
+    using namespace shadowlab::python;
+    bindErrors(m);
+    bindView(m);
+    bindScene(m);
+    bindPrepared(m);
+    bindTechniques(m);
+    bindFrame(m);
+    bindRender(m);
+    bindScore(m);
+    bindMeasure(m);
 }

@@ -12,7 +12,7 @@
 namespace shadowlab {
 
 // The size of the regular file at `path` (a symbolic link is followed). Throws SceneError
-// naming the file for a missing one, a directory, a FIFO, a socket or a device, or one
+// naming the file for a missing one (MissingFileError), a directory, a FIFO, a socket or a device, or one
 // larger than `maxBytes` (by default kMaxFileBytes, scene_limits.h).
 uint64_t regularFileSize(const std::string& path, uint64_t maxBytes = kMaxFileBytes);
 

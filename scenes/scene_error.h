@@ -14,4 +14,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A file the user named that does not exist (regularFileSize, read_file.h): a SceneError whose
+// type says so, for a caller that tells it apart (the Python module's FileNotFoundError).
+class MissingFileError : public SceneError {
+public:
+    using SceneError::SceneError;
+};
+
 }  // namespace shadowlab

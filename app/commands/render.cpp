@@ -12,6 +12,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/options.h"
 #include "app/common/output_files.h"
+#include "frame/aov_image.h"
 #include "frame/frame_images.h"
 #include "frame/registry.h"
 #include "frame/render.h"
@@ -129,20 +130,7 @@ void runRender(const RenderArgs& a) {
     for (const TechniqueStat& s : frame.preparation) std::printf("  %-28s %.6g (scene preparation)\n", s.name.c_str(), s.value);
     const int w = scene.camera.width, h = scene.camera.height;
     if (!a.png.empty()) writePng(a.png, w, h, toSrgb8Image(frame.radiance, {a.exposure, ToneOperator::Reinhard}));
-    if (!a.aov.empty()) {
-        ImageChannels aov;
-        aov.width = w, aov.height = h;
-        setRadiance(aov, frame.radiance);
-        setGBuffer(aov, frame.gbuffer);
-        if (frame.output == TechniqueOutput::Visibility) {
-            for (const LightPass& pass : frame.passes)
-                aov.set(visibilityChannel(pass.light, frame.passes.size()), pass.shadow.visibility);
-        }
-        // One light's stencil: a frame of several keeps V per light, within the channels
-        // an EXR reader accepts (conventions.md).
-        if (frame.passes.size() == 1 && !frame.shadow.stencil.empty()) aov.set(channel::stencil, frame.shadow.stencil);
-        writeExr(a.aov, aov);
-    }
+    if (!a.aov.empty()) writeExr(a.aov, aovImage(frame));
     if (!a.errorMap.empty()) writeErrorMap(a, prepared, technique, settings, frame);
 }
 

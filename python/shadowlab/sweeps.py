@@ -60,22 +60,17 @@ def _looks_like_path(text):
     return text.endswith((".json", ".gltf", ".glb")) or "/" in text
 
 
-def _scene_source(scene, base_dir, portable):
-    """What _shadowlab takes: a name or path (str), or a Scene. With portable (for another
-    process), a path made absolute and a dict kept as a dict with an absolute base_dir."""
+def _portable_scene(scene, base_dir):
+    """The scene as another process loads it: a name, an absolute path, or a dict with an
+    absolute base_dir. A Scene object is not sent (nothing of C++ is pickled)."""
     if isinstance(scene, os.PathLike):
         scene = os.fspath(scene)
     if isinstance(scene, str):
-        return os.path.abspath(scene) if portable and _looks_like_path(scene) else scene
+        return {"source": os.path.abspath(scene) if _looks_like_path(scene) else scene, "base_dir": None}
     if isinstance(scene, dict):
-        base = os.path.abspath(base_dir if base_dir is not None else os.getcwd())
-        return {"dict": scene, "base_dir": base} if portable else _shadowlab.load_scene(scene, base_dir=base)
-    if portable:
-        raise TypeError("sweep(client=...): give the scene as a name, a path or a dict, which the workers load; "
-                        "a Scene object is not sent to them")
-    if isinstance(scene, _shadowlab.Scene):
-        return scene
-    raise TypeError(f"scene: expected a name, a path, a dict or a Scene, got {type(scene).__name__}")
+        return {"source": scene, "base_dir": os.path.abspath(base_dir if base_dir is not None else os.getcwd())}
+    raise TypeError("sweep(client=...): give the scene as a name, a path or a dict, which the workers load; "
+                    f"a {type(scene).__name__} is not sent to them")
 
 
 def _shard_pair(shard):
@@ -100,9 +95,8 @@ def _thread_list(threads):
 
 def _run(call, shard):
     """One sweep (or shard) in this process; call holds the arguments as plain values."""
-    scene = call["scene"]
-    if isinstance(scene, dict):   # a dict scene sent to a worker
-        scene = _shadowlab.load_scene(scene["dict"], base_dir=scene["base_dir"])
+    from . import load_scene
+    scene = load_scene(call["scene"]["source"], base_dir=call["scene"]["base_dir"])
     return _shadowlab._sweep(scene, call["techniques"], call["axes"], call["threads"], call["runs"],
                              call["warmup"], call["reference"], shard, call["simd"], **call["overrides"])
 
@@ -113,7 +107,7 @@ def _run_shard(call, index, count):
 
 
 def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, reference=None, shard=None,
-          simd=None, light=None, width=None, height=None, eye=None, target=None, fovy=None,
+          simd=None, light=None, width=None, height=None, eye=None, target=None, fovy_deg=None,
           light_position=None, light_radius=None, base_dir=None, client=None, shards=None):
     """Speed against error over a grid of technique settings: `shadowlab sweep` as a function.
 
@@ -134,8 +128,8 @@ def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, ref
         reference: score every technique against this one (default: each its own).
         shard: (i, n) or "i/n": run only the settings k with k mod n == i - 1 (i from 1).
         simd: "scalar", "avx2", "avx512" or "auto"; None: the best this CPU runs.
-        light, width, height, eye, target, fovy, light_position, light_radius: the scene's
-            overrides, as the command's --light, --width, ... (the JSON "overrides" names).
+        light, width, height, eye, target, fovy_deg, light_position, light_radius: the
+            scene's overrides, as the command's --light, --width, ... and Scene.apply_overrides.
         client: a dask.distributed Client: the sweep is split into `shards` shards (default:
             the client's workers, at most the sweep's settings), each run by a worker, and
             merged (merge_sweeps). The workers import shadowlab themselves and load the scene
@@ -161,15 +155,15 @@ def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, ref
     call = {"techniques": names, "axes": _axes(params), "threads": _thread_list(threads), "runs": runs,
             "warmup": warmup, "reference": reference or "", "simd": simd,
             "overrides": {"light": light, "width": width, "height": height, "eye": eye, "target": target,
-                          "fovy": fovy, "light_position": light_position, "light_radius": light_radius}}
+                          "fovy_deg": fovy_deg, "light_position": light_position, "light_radius": light_radius}}
     if client is None:
         if shards is not None:
             raise ValueError("sweep: shards= splits the sweep over a client; give client= too (or shard= for one part)")
-        call["scene"] = _scene_source(scene, base_dir, portable=False)
+        call["scene"] = {"source": scene, "base_dir": base_dir}
         return _run(call, _shard_pair(shard))
     if shard is not None:
         raise ValueError("sweep: give either shard= (one part, here) or client= (every part, on the cluster)")
-    call["scene"] = _scene_source(scene, base_dir, portable=True)
+    call["scene"] = _portable_scene(scene, base_dir)
     settings = _shadowlab._sweep_settings(names, call["axes"])
     if shards is None:
         shards = max(1, min(len(client.scheduler_info()["workers"]), settings))
@@ -211,8 +205,9 @@ def flythrough(scene, techniques, params=None, *, path=None, frames=0, threads=0
         ValueError: an unknown technique or parameter, a technique that shades, a scene of
             several lights without light=, a scene without a path and no path=.
     """
+    from . import load_scene
     path_file = "" if path is None else os.fspath(path)
-    return _shadowlab._flythrough(_scene_source(scene, base_dir, portable=False), _technique_names(techniques),
+    return _shadowlab._flythrough(load_scene(scene, base_dir=base_dir), _technique_names(techniques),
                                   _axes(params), path_file, frames, threads, runs, warmup, stable_tolerance, simd,
                                   light, width, height)
 

@@ -1,0 +1,68 @@
+#include "python/conversions.h"
+
+#include <filesystem>
+
+#include "frame/registry.h"
+#include "scenes/scene_file.h"
+#include "shadows/technique_params.h"
+
+namespace py = pybind11;
+
+namespace shadowlab::python {
+namespace {
+
+// One setting's value as --param would give it; bool before int, since a bool is an int.
+std::string settingOf(const std::string& name, const py::handle& value) {
+    if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+    if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "on" : "off";
+    if (py::isinstance<py::int_>(value)) return py::str(value).cast<std::string>();
+    if (py::isinstance<py::float_>(value)) return settingText(value.cast<double>());
+    throw py::type_error("params: " + name + " must be a str, int, float or bool, not " +
+                         std::string(py::str(value.get_type().attr("__name__"))));
+}
+
+}  // namespace
+
+std::map<std::string, std::string> paramSettings(const py::handle& params) {
+    std::map<std::string, std::string> settings;
+    if (params.is_none()) return settings;
+    if (!py::isinstance<py::dict>(params)) throw py::type_error("params must be a dict of names to values");
+    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(params)) {
+        if (!py::isinstance<py::str>(key)) throw py::type_error("params: every name must be a str");
+        const std::string name = key.cast<std::string>();
+        settings[name] = settingOf(name, value);
+    }
+    return settings;
+}
+
+raster::SimdLevel simdLevel(const py::handle& simd) {
+    if (simd.is_none()) return raster::bestSimdLevel();
+    if (!py::isinstance<py::str>(simd)) throw py::type_error("simd must be a str (scalar, avx2, avx512, auto) or None");
+    return raster::parseSimdLevel(simd.cast<std::string>());
+}
+
+const Technique& techniqueOf(const py::handle& technique) {
+    if (py::isinstance<py::str>(technique)) return findTechnique(technique.cast<std::string>());
+    if (py::isinstance<Technique>(technique)) return findTechnique(technique.cast<const Technique&>().name);
+    throw py::type_error("technique must be a Technique or a technique's name");
+}
+
+Scene sceneFromSource(const py::handle& source, const py::handle& baseDir, const std::string& sceneDir) {
+    if (py::isinstance<Scene>(source)) return source.cast<Scene>();
+    const py::module_ os = py::module_::import("os");
+    if (py::isinstance<py::dict>(source)) {
+        // The dict as the JSON text of a scene file in baseDir, named "<dict>" in errors.
+        const std::string text = py::module_::import("json").attr("dumps")(source).cast<std::string>();
+        const std::string base = baseDir.is_none() ? std::string() : os.attr("fspath")(baseDir).cast<std::string>();
+        return parseScene(text, (std::filesystem::path(base) / "<dict>").string());
+    }
+    if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
+        const py::object path = os.attr("fspath")(source);
+        if (!py::isinstance<py::str>(path)) throw py::type_error("a scene path must be a str path, not bytes");
+        return loadScene(path.cast<std::string>(), sceneDir);
+    }
+    throw py::type_error("a scene is a Scene, a built-in scene's name, a path (str or os.PathLike) or a dict, not " +
+                         std::string(py::str(source.get_type().attr("__name__"))));
+}
+
+}  // namespace shadowlab::python

@@ -1,0 +1,65 @@
+// How the extension's files turn Python values into the library's, and back: a position as
+// a tuple of three floats, technique settings as the command's --param text, a SIMD level,
+// a technique by name or object, and a scene from whatever load_scene() takes.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "raster/tile_kernels.h"
+#include "scenes/scene.h"
+#include "shadows/technique.h"
+
+namespace pybind11::detail {
+
+// glm::vec3 as a tuple (x, y, z) of floats; any sequence of three real numbers converts to
+// one (a list, a tuple, a numpy array), anything else is a TypeError.
+template <>
+struct type_caster<glm::vec3> {
+    PYBIND11_TYPE_CASTER(glm::vec3, const_name("tuple[float, float, float]"));
+
+    bool load(handle source, bool convert) {
+        if (!isinstance<sequence>(source) || isinstance<str>(source)) return false;
+        const sequence items = reinterpret_borrow<sequence>(source);
+        if (items.size() != 3) return false;
+        for (size_t k = 0; k < 3; ++k) {
+            make_caster<float> component;
+            if (!component.load(items[k], convert)) return false;
+            value[int(k)] = cast_op<float>(component);
+        }
+        return true;
+    }
+
+    static handle cast(const glm::vec3& v, return_value_policy, handle) {
+        return make_tuple(v.x, v.y, v.z).release();
+    }
+};
+
+}  // namespace pybind11::detail
+
+namespace shadowlab::python {
+
+// A technique's settings as the command's --param NAME=VALUE texts: a dict (or None: none)
+// from names to str (as given), bool ("on"/"off"), int or float (settingText(), the shortest
+// text that reads back as the same double). Throws TypeError for another key or value type.
+std::map<std::string, std::string> paramSettings(const pybind11::handle& params);
+
+// None: the best level of this CPU; a str: "scalar", "avx2", "avx512" or "auto"
+// (raster::parseSimdLevel, which throws std::invalid_argument for another).
+raster::SimdLevel simdLevel(const pybind11::handle& simd);
+
+// A Technique object, or a technique's name (findTechnique, std::invalid_argument naming the
+// known ones for another); the registry's own, which lives as long as the program.
+const Technique& techniqueOf(const pybind11::handle& technique);
+
+// What load_scene() takes: a Scene (copied), a built-in name or a path (str or os.PathLike;
+// loadScene() against sceneDir), or a dict in the scene format's shape whose mesh paths are
+// relative to baseDir (None: the working directory). Throws TypeError for anything else, and
+// the loader's SceneError (MissingFileError for a file that does not exist).
+Scene sceneFromSource(const pybind11::handle& source, const pybind11::handle& baseDir, const std::string& sceneDir);
+
+}  // namespace shadowlab::python

@@ -1,0 +1,84 @@
+// PreparedScene: a scene made ready for frames (scenes/prepared_scene.h), shared by whatever
+// renders it. Its camera and lights change between frames without preparing it again, as the
+// fly-through moves them (app/measure/flythrough.cpp: PreparedScene::setCamera, setLights).
+#include <memory>
+#include <mutex>
+#include <shared_mutex>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "frame/render.h"
+#include "python/bindings.h"
+#include "python/conversions.h"
+#include "python/handles.h"
+
+namespace py = pybind11;
+
+namespace shadowlab::python {
+namespace {
+
+// The checks of a camera that a scene file or the command's options would make:
+// applyOverrides()'s (size, field of view, a view frame) and the file's near < far.
+void checkCamera(const Camera& camera) {
+    Scene probe;
+    probe.camera = camera;
+    applyOverrides(probe, {});
+    if (!(camera.zNear > 0.0f && camera.zFar > camera.zNear))
+        throw std::invalid_argument("the camera's near must be > 0 and less than its far");
+}
+
+std::shared_ptr<PreparedHandle> prepare(Scene scene) {
+    checkCamera(scene.camera);
+    py::gil_scoped_release release;
+    return std::make_shared<PreparedHandle>(std::move(scene));
+}
+
+// A change between frames: waits (without the GIL) for the frames rendering to finish.
+template <class Change>
+void change(PreparedHandle& handle, Change&& apply) {
+    py::gil_scoped_release release;
+    const std::unique_lock lock(handle.mutex);
+    apply(handle.prepared);
+}
+
+template <class Read>
+auto read(PreparedHandle& handle, Read&& get) {
+    const std::shared_lock lock(handle.mutex);
+    return get(handle.prepared);
+}
+
+}  // namespace
+
+void bindPrepared(py::module_& m) {
+    py::class_<PreparedHandle, std::shared_ptr<PreparedHandle>>(
+        m, "PreparedScene",
+        "A scene made ready for frames (flattened once; what techniques derive from it built on first use). "
+        "Shared: a FrameHistory keeps it alive, and Frames do not need it. Its camera and lights may change "
+        "between frames; a change waits for the frames rendering.")
+        .def(py::init(&prepare), py::arg("scene"), "prepare(scene): checks its camera (ValueError) and prepares a copy.")
+        .def_property_readonly(
+            "scene", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.scene(); }); },
+            "a copy of its Scene, with the current camera and lights")
+        .def_property(
+            "camera", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.scene().camera; }); },
+            [](PreparedHandle& h, const Camera& camera) {
+                checkCamera(camera);
+                change(h, [&](PreparedScene& p) { p.setCamera(camera); });
+            },
+            "a copy of its camera; assign one to move it (checked as prepare() checks it)")
+        .def_property(
+            "lights", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.scene().lights; }); },
+            [](PreparedHandle& h, std::vector<Light> lights) {
+                change(h, [&](PreparedScene& p) { p.setLights(std::move(lights)); });
+            },
+            "copies of its lights; assign a list to change them (their number too)")
+        .def_property_readonly(
+            "geometry_version", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.geometryVersion(); }); },
+            "how many times its instances have moved");
+    m.def("prepare", &prepare, py::arg("scene"),
+          "A PreparedScene of a copy of the scene: checks its camera (ValueError), then flattens it with the GIL "
+          "released.");
+}
+
+}  // namespace shadowlab::python
