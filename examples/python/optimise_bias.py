@@ -61,7 +61,7 @@ def minimise(objective, low, high, evaluations):
     best = min(range(scan), key=lambda k: (objective(xs[k]), k))
     a, b = xs[max(best - 1, 0)], xs[min(best + 1, scan - 1)]
     c, d = b - GOLDEN * (b - a), a + GOLDEN * (b - a)
-    for _ in range(evaluations - scan):
+    for _ in range(max(evaluations - scan - 1, 0)):   # the first step scores c and d, each next one more
         if objective(c) <= objective(d):
             b, d = d, c
             c = b - GOLDEN * (b - a)
