@@ -2,6 +2,7 @@
 PYTHONPATH, as a cluster's would from its installation): the shards' merge equals the sweep
 run here in everything but the measured times, as merge-sweep's does."""
 import json
+import os
 
 import pytest
 
@@ -36,9 +37,20 @@ def test_the_clusters_merge_is_the_sweep_run_here(client):
     spread = shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], PARAMS, client=client, **SMALL)
     assert spread.shard == (1, 1) and len(spread.rows) == 6
     assert without_times(spread.to_json()) == without_times(here.to_json())
-    # More shards than workers.
-    three = shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], PARAMS, client=client, shards=3, **SMALL)
+    # More shards than workers; a scene file's path, made absolute for the workers.
+    path = os.path.relpath(os.path.join(shadowlab.scene_dir(), "sphere-box.json"))
+    three = shadowlab.sweep(path, ["shadow-map", "pcss"], PARAMS, client=client, shards=3, **SMALL)
     assert without_times(three.to_json()) == without_times(here.to_json())
+
+
+def test_a_dict_scene_is_sent_as_a_dict(client):
+    with open(os.path.join(shadowlab.scene_dir(), "sphere-box.json")) as f:
+        scene = json.load(f)
+    here = shadowlab.sweep(scene, "shadow-map", PARAMS, **SMALL)
+    spread = shadowlab.sweep(scene, "shadow-map", PARAMS, client=client, **SMALL)
+    assert without_times(spread.to_json()) == without_times(here.to_json())
+    with pytest.raises(TypeError, match="not sent"):
+        shadowlab.sweep(shadowlab.load_scene(scene), "shadow-map", PARAMS, client=client, **SMALL)
 
 
 def test_a_bad_sweep_fails_before_the_cluster_runs_it(client):

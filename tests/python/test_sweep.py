@@ -3,7 +3,10 @@ times, the same bytes back from from_json, shards that merge into the whole swee
 exceptions (not crashes) for bad input."""
 import json
 import os
+import pathlib
 import subprocess
+import sys
+import threading
 
 import pytest
 
@@ -131,3 +134,55 @@ def test_a_flythrough_is_the_commands_but_for_its_times(tmp_path):
     assert len(frame) == 6 and list(frame.columns[:3]) == ["technique", "settings", "frame"]
     with pytest.raises(ValueError, match="shaded image"):
         shadowlab.flythrough("sphere-box", "env-subtractive", **args)
+
+
+def sphere_box_dict():
+    with open(os.path.join(shadowlab.scene_dir(), "sphere-box.json")) as f:
+        return json.load(f)
+
+
+def test_every_scene_form_sweeps_alike(two_techniques):
+    params = {"resolution": [64, 256], "filter": ["nearest", "grid"]}
+    want = without_times(two_techniques.to_json())
+    scene = shadowlab.load_scene("sphere-box")
+    path = os.path.join(shadowlab.scene_dir(), "sphere-box.json")
+    for form in (scene, path, pathlib.Path(path)):
+        got = shadowlab.sweep(form, ["shadow-map", "pcss"], params, **SMALL)
+        assert without_times(got.to_json()) == want
+    # A dict is a scene of another name; its figures are the file's.
+    from_dict = shadowlab.sweep(sphere_box_dict(), ["shadow-map", "pcss"], params, **SMALL)
+    assert {**without_times(from_dict.to_json()), "scene": "sphere-box"} == want
+    with pytest.raises(FileNotFoundError):
+        shadowlab.sweep("no/such/scene.json", "shadow-map", **SMALL)
+    with pytest.raises(TypeError):
+        shadowlab.sweep(42, "shadow-map", **SMALL)
+
+
+def test_two_threads_sweep_at_once(two_techniques):
+    """Two sweeps at once in one process cap each other's threads (sweep()'s docstring), and
+    still give the figures of one alone."""
+    params = {"resolution": [64, 256], "filter": ["nearest", "grid"]}
+    results = [None, None]
+
+    def run(k):
+        results[k] = shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], params, **{**SMALL, "threads": 2})
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in (0, 1)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    want = without_times(two_techniques.to_json())
+    for r in results:
+        got = without_times(r.to_json())
+        assert got["grid"]["threads"] == [2]
+        got["grid"]["threads"] = [1]
+        for row in got["rows"]:
+            row["threads"] = 1
+        assert got == want
+
+
+def test_without_pandas_to_dataframe_says_so(two_techniques, monkeypatch):
+    monkeypatch.setitem(sys.modules, "pandas", None)
+    with pytest.raises(ImportError, match="needs pandas"):
+        two_techniques.to_dataframe()
