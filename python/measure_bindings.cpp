@@ -3,6 +3,7 @@
 // and a sweep's JSON both ways, so that shards run anywhere (the Dask path of
 // shadowlab/sweeps.py) travel as the command's text and merge as merge-sweep merges them.
 #include <array>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -27,11 +28,38 @@ namespace py = pybind11;
 namespace shadowlab::python {
 namespace {
 
-// Sweep axes in the order given: (name, values as the command's --param text).
-std::vector<SweepAxis> axesOf(const std::vector<std::pair<std::string, std::vector<std::string>>>& axes) {
-    std::vector<SweepAxis> out;
-    for (const auto& [name, values] : axes) out.push_back({name, values});
-    return out;
+// {name: value or list of values} -> the sweep's axes, in the dict's order; each value as
+// render()'s params read it (paramSettings: str as given, bool on/off, the shortest float).
+std::vector<SweepAxis> axesOf(const py::handle& params) {
+    std::vector<SweepAxis> axes;
+    if (params.is_none()) return axes;
+    if (!py::isinstance<py::dict>(params)) throw py::type_error("params must be a dict of names to a value or a list of values");
+    for (const auto& [name, values] : py::reinterpret_borrow<py::dict>(params)) {
+        const bool several = py::isinstance<py::list>(values) || py::isinstance<py::tuple>(values) ||
+                             py::isinstance(values, py::module_::import("builtins").attr("range"));
+        SweepAxis axis;
+        const py::iterable each = several ? py::reinterpret_borrow<py::iterable>(values) : py::iterable(py::make_tuple(values));
+        for (const py::handle value : each) {
+            py::dict one;
+            one[name] = value;
+            const std::map<std::string, std::string> setting = paramSettings(one);
+            axis.name = setting.begin()->first;
+            axis.values.push_back(setting.begin()->second);
+        }
+        if (axis.values.empty()) throw std::invalid_argument("params: " + py::str(name).cast<std::string>() + " has no values");
+        axes.push_back(std::move(axis));
+    }
+    return axes;
+}
+
+// None: the whole sweep; "i/n" as --shard reads it; (i, n).
+SweepShard shardOf(const py::object& shard) {
+    if (shard.is_none()) return {};
+    if (py::isinstance<py::str>(shard)) return parseSweepShard(shard.cast<std::string>());
+    const auto [index, count] = shard.cast<std::pair<int, int>>();
+    const SweepShard parsed{index, count};
+    if (!parsed.valid()) throw std::invalid_argument("shard " + parsed.name() + ": expected (i, n) with 1 <= i <= n");
+    return parsed;
 }
 
 std::vector<const Technique*> techniquesOf(const std::vector<std::string>& names) {
@@ -69,21 +97,20 @@ py::dict gridDict(const SweepGrid& g) {
 // the package is installed); the library records the overrides in the grid, so they are
 // passed on, not applied here.
 SweepResults sweep(const Scene& scene, const std::vector<std::string>& techniques,
-                   const std::vector<std::pair<std::string, std::vector<std::string>>>& axes,
+                   const py::object& params,
                    const std::vector<int>& threads, int runs, int warmup, const std::string& reference,
-                   std::pair<int, int> shard, const py::object& simd, std::optional<int> light,
+                   const py::object& shard, const py::object& simd, std::optional<int> light,
                    std::optional<int> width, std::optional<int> height, std::optional<glm::vec3> eye,
                    std::optional<glm::vec3> target, std::optional<float> fovyDeg,
                    std::optional<glm::vec3> lightPosition, std::optional<float> lightRadius) {
     SweepOptions options;
     options.techniques = techniquesOf(techniques);
-    options.axes = axesOf(axes);
+    options.axes = axesOf(params);
     options.threads = threads;
     options.runs = runs;
     options.warmupRuns = warmup;
     options.reference = reference;
-    options.shard = {shard.first, shard.second};
-    if (!options.shard.valid()) throw std::invalid_argument("shard " + options.shard.name() + ": expected (i, n) with 1 <= i <= n");
+    options.shard = shardOf(shard);
     options.simd = simdLevel(simd);
     options.overrides = {light, width, height, eye, target, lightPosition, fovyDeg, lightRadius};
     py::gil_scoped_release release;
@@ -91,13 +118,13 @@ SweepResults sweep(const Scene& scene, const std::vector<std::string>& technique
 }
 
 FlythroughResults flythrough(const Scene& scene, const std::vector<std::string>& techniques,
-                             const std::vector<std::pair<std::string, std::vector<std::string>>>& axes,
+                             const py::object& params,
                              const std::string& path, int frames, int threads, int runs, int warmup,
                              std::optional<float> stableTolerance, const py::object& simd,
                              std::optional<int> light, std::optional<int> width, std::optional<int> height) {
     FlythroughOptions options;
     options.techniques = techniquesOf(techniques);
-    options.axes = axesOf(axes);
+    options.axes = axesOf(params);
     options.pathFile = path;
     options.frames = frames;
     options.threads = threads;
@@ -182,14 +209,14 @@ void bindSweep(py::module_& m) {
                    " rows>";
         });
 
-    m.def("_sweep", &sweep, py::arg("scene"), py::arg("techniques"), py::arg("axes"), py::arg("threads"),
+    m.def("_sweep", &sweep, py::arg("scene"), py::arg("techniques"), py::arg("params"), py::arg("threads"),
           py::arg("runs"), py::arg("warmup"), py::arg("reference"), py::arg("shard"), py::arg("simd"),
           py::arg("light"), py::arg("width"), py::arg("height"), py::arg("eye"), py::arg("target"), py::arg("fovy_deg"),
           py::arg("light_position"), py::arg("light_radius"),
           "runSweep with the GIL released; shadowlab.sweep is its front end.");
-    m.def("_sweep_settings", [](const std::vector<std::string>& techniques, const std::vector<std::pair<std::string, std::vector<std::string>>>& axes) {
-        return settingCount(planSweep(techniquesOf(techniques), axesOf(axes)));
-    }, py::arg("techniques"), py::arg("axes"), "The settings a sweep of these techniques and axes runs, all shards' (planSweep's checks).");
+    m.def("_sweep_settings", [](const std::vector<std::string>& techniques, const py::object& params) {
+        return settingCount(planSweep(techniquesOf(techniques), axesOf(params)));
+    }, py::arg("techniques"), py::arg("params"), "The settings a sweep of these techniques and axes runs, all shards' (planSweep's checks).");
     m.def("merge_sweeps", &mergeSweeps, py::arg("shards"),
           "The SweepResults of every shard of one sweep joined into the whole sweep's, as `shadowlab merge-sweep` "
           "joins their files: ValueError unless they are parts of one sweep (same scene, techniques and grid), "
@@ -268,7 +295,7 @@ void bindFlythrough(py::module_& m) {
         .def("to_csv", &formatFlythroughCsv, "The fly-through's CSV: the bytes `shadowlab flythrough` writes, as str.")
         .def("to_text", &formatFlythroughText, "The summary `shadowlab flythrough` prints.");
 
-    m.def("_flythrough", &flythrough, py::arg("scene"), py::arg("techniques"), py::arg("axes"), py::arg("path"),
+    m.def("_flythrough", &flythrough, py::arg("scene"), py::arg("techniques"), py::arg("params"), py::arg("path"),
           py::arg("frames"), py::arg("threads"), py::arg("runs"), py::arg("warmup"), py::arg("stable_tolerance"),
           py::arg("simd"), py::arg("light"), py::arg("width"), py::arg("height"),
           "runFlythrough with the GIL released; shadowlab.flythrough is its front end.");

@@ -16,32 +16,6 @@ __all__ = ["sweep", "flythrough", "merge_sweeps", "SweepResults", "SweepRow", "F
            "FlythroughSeries", "FlythroughFrame"]
 
 
-def _param_text(name, value):
-    """One parameter value as the command's --param text: on/off for a bool."""
-    if isinstance(value, bool):
-        return "on" if value else "off"
-    if isinstance(value, (int, float, str)):
-        return value if isinstance(value, str) else repr(value)
-    raise TypeError(f"parameter {name}: expected str, int, float or bool, got {type(value).__name__}")
-
-
-def _axes(params):
-    """{name: value or [values]} -> [(name, [texts])], in the dict's order."""
-    if params is None:
-        return []
-    if not isinstance(params, dict):
-        raise TypeError(f"params: expected a dict {{name: value or list of values}}, got {type(params).__name__}")
-    axes = []
-    for name, values in params.items():
-        if not isinstance(name, str):
-            raise TypeError(f"params: a parameter's name must be str, got {type(name).__name__}")
-        if isinstance(values, (list, tuple, range)):
-            axes.append((name, [_param_text(name, v) for v in values]))
-        else:
-            axes.append((name, [_param_text(name, values)]))
-    return axes
-
-
 def _technique_names(techniques):
     """A name, a Technique or a list of either -> [names]."""
     if isinstance(techniques, str) or hasattr(techniques, "name"):
@@ -73,18 +47,6 @@ def _portable_scene(scene, base_dir):
                     f"a {type(scene).__name__} is not sent to them")
 
 
-def _shard_pair(shard):
-    if shard is None:
-        return (1, 1)
-    if isinstance(shard, str):
-        index, slash, count = shard.partition("/")
-        if not slash or not index.isdigit() or not count.isdigit():
-            raise ValueError(f"shard {shard}: expected I/N with 1 <= I <= N")
-        return (int(index), int(count))
-    index, count = shard
-    return (int(index), int(count))
-
-
 def _thread_list(threads):
     if threads is None:
         return []
@@ -97,7 +59,7 @@ def _run(call, shard):
     """One sweep (or shard) in this process; call holds the arguments as plain values."""
     from . import load_scene
     scene = load_scene(call["scene"]["source"], base_dir=call["scene"]["base_dir"])
-    return _shadowlab._sweep(scene, call["techniques"], call["axes"], call["threads"], call["runs"],
+    return _shadowlab._sweep(scene, call["techniques"], call["params"], call["threads"], call["runs"],
                              call["warmup"], call["reference"], shard, call["simd"], **call["overrides"])
 
 
@@ -152,7 +114,7 @@ def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, ref
     the Dask path does).
     """
     names = _technique_names(techniques)
-    call = {"techniques": names, "axes": _axes(params), "threads": _thread_list(threads), "runs": runs,
+    call = {"techniques": names, "params": params, "threads": _thread_list(threads), "runs": runs,
             "warmup": warmup, "reference": reference or "", "simd": simd,
             "overrides": {"light": light, "width": width, "height": height, "eye": eye, "target": target,
                           "fovy_deg": fovy_deg, "light_position": light_position, "light_radius": light_radius}}
@@ -160,11 +122,11 @@ def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, ref
         if shards is not None:
             raise ValueError("sweep: shards= splits the sweep over a client; give client= too (or shard= for one part)")
         call["scene"] = {"source": scene, "base_dir": base_dir}
-        return _run(call, _shard_pair(shard))
+        return _run(call, shard)
     if shard is not None:
         raise ValueError("sweep: give either shard= (one part, here) or client= (every part, on the cluster)")
     call["scene"] = _portable_scene(scene, base_dir)
-    settings = _shadowlab._sweep_settings(names, call["axes"])
+    settings = _shadowlab._sweep_settings(names, params)
     if shards is None:
         shards = max(1, min(len(client.scheduler_info()["workers"]), settings))
     if not 1 <= shards <= settings:   # the library's rule (sweep.cpp), checked before the cluster works
@@ -208,7 +170,7 @@ def flythrough(scene, techniques, params=None, *, path=None, frames=0, threads=0
     from . import load_scene
     path_file = "" if path is None else os.fspath(path)
     return _shadowlab._flythrough(load_scene(scene, base_dir=base_dir), _technique_names(techniques),
-                                  _axes(params), path_file, frames, threads, runs, warmup, stable_tolerance, simd,
+                                  params, path_file, frames, threads, runs, warmup, stable_tolerance, simd,
                                   light, width, height)
 
 
