@@ -100,12 +100,15 @@ void bindFrame(py::module_& m) {
     view("radiance", [](Frame& f) -> auto& { return f.radiance; }, "the shaded image, linear (H, W, 3) float32");
     view("position", [](Frame& f) -> auto& { return f.gbuffer.position; }, "P, world space (H, W, 3); 0 where hit = 0");
     view("normal", [](Frame& f) -> auto& { return f.gbuffer.normal; }, "N, the geometric normal facing the camera (H, W, 3)");
-    view("shading_normal", [](Frame& f) -> auto& { return f.gbuffer.shadingNormal; }, "Ns, the smooth shading normal (H, W, 3)");
+    view("shading_normal", [](Frame& f) -> auto& { return f.gbuffer.shadingNormal; },
+         "Ns, the smooth shading normal (H, W, 3)");
     view("depth", [](Frame& f) -> auto& { return f.gbuffer.depth; }, "window depth (H, W) float32; 1 is the background");
     view("hit", [](Frame& f) -> auto& { return f.gbuffer.hit; }, "1 where a surface covers the pixel centre (H, W) uint8");
     view("material", [](Frame& f) -> auto& { return f.gbuffer.material; }, "the scene's material index (H, W) uint32");
-    view("triangle", [](Frame& f) -> auto& { return f.gbuffer.triangle; }, "the world triangle index (H, W) uint32; 0xffffffff for none");
-    view("stencil", [](Frame& f) -> auto& { return f.shadow.stencil; }, "the first light's stencil (H, W); None if the technique has none");
+    view("triangle", [](Frame& f) -> auto& { return f.gbuffer.triangle; },
+         "the world triangle index (H, W) uint32; 0xffffffff for none");
+    view("stencil", [](Frame& f) -> auto& { return f.shadow.stencil; },
+         "the first light's stencil (H, W); None if the technique has none");
     view("coloured_visibility", [](Frame& f) -> auto& { return f.shadow.colouredVisibility; },
          "the first light's light passed per channel (H, W, 3); None where no caster is tinted");
     view("motion", [](Frame& f) -> auto& { return f.gbuffer.motion.pixelOffset; },

@@ -33,6 +33,12 @@ std::vector<std::string> instanceNames(const Scene& scene) {
     return names;
 }
 
+size_t triangleCount(const Scene& scene) {
+    size_t count = 0;
+    for (const MeshInstance& instance : scene.instances) count += scene.meshes[instance.mesh].triangles.size();
+    return count;
+}
+
 }  // namespace
 
 void bindScene(py::module_& m) {
@@ -43,12 +49,11 @@ void bindScene(py::module_& m) {
         .def_readwrite("camera", &Scene::camera,
                        "its Camera, live: scene.camera.width = 64 changes the scene (checked by prepare())")
         .def_property(
-            "lights", [](const Scene& s) { return s.lights; }, [](Scene& s, std::vector<Light> l) { s.lights = std::move(l); },
+            "lights", [](const Scene& s) { return s.lights; },
+            [](Scene& s, std::vector<Light> lights) { s.lights = std::move(lights); },
             "its lights: a list of copies; assign a list to change them")
         .def_property_readonly("instance_names", &instanceNames, "the names of its mesh instances, in order")
-        .def_property_readonly(
-            "triangle_count", [](const Scene& s) { size_t n = 0; for (const MeshInstance& i : s.instances) n += s.meshes[i.mesh].triangles.size(); return n; },
-            "triangles over every instance")
+        .def_property_readonly("triangle_count", &triangleCount, "triangles over every instance")
         .def_readonly("notes", &Scene::notes, "what the loader supplied or left out, one line each (glTF files)")
         .def("apply_overrides", &applyOverridesTo, py::kw_only(), py::arg("light") = py::none(),
              py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("eye") = py::none(),

@@ -119,6 +119,11 @@ void JsonField::fail(const std::string& problem) const {
     throw SceneError(located(file_, path_, problem));
 }
 
+void JsonField::fail(const SceneError& cause) const {
+    if (dynamic_cast<const MissingFileError*>(&cause)) throw MissingFileError(located(file_, path_, cause.what()));
+    fail(cause.what());
+}
+
 void JsonField::failType(const char* expected) const {
     fail(std::string("must be ") + expected + ", got " + excerpt(*value_));
 }

@@ -15,6 +15,8 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "scenes/scene_error.h"
+
 namespace shadowlab {
 
 // An allowed range for a number; it both checks the value and words the error message.
@@ -45,6 +47,9 @@ public:
     JsonField(const nlohmann::json& value, std::string file, std::string path);
 
     [[noreturn]] void fail(const std::string& problem) const;
+    // A file's error met reading this field (a mesh, a texture), located at it; a
+    // MissingFileError stays one.
+    [[noreturn]] void fail(const SceneError& cause) const;
     const nlohmann::json& raw() const { return *value_; }
 
     float number(Interval range = kAnyNumber) const;   // finite, representable as float

@@ -27,7 +27,8 @@ const char* kindOf(std::filesystem::file_type type) {
 uint64_t regularFileSize(const std::string& path, uint64_t maxBytes) {
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(path, error);
-    if (status.type() == std::filesystem::file_type::not_found) throw MissingFileError(path + ": cannot open: " + error.message());
+    if (status.type() == std::filesystem::file_type::not_found)
+        throw MissingFileError(path + ": cannot open: " + error.message());
     if (error) throw SceneError(path + ": cannot open: " + error.message());
     if (status.type() != std::filesystem::file_type::regular)
         throw SceneError(path + ": is " + kindOf(status.type()) + ", not a file");

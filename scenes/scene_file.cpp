@@ -47,7 +47,7 @@ int textureIndex(const JsonField& field, const std::string& directory, std::vect
     try {
         textures.push_back(read(path));
     } catch (const SceneError& error) {
-        field.fail(error.what());
+        field.fail(error);
     }
     return int(textures.size()) - 1;
 }
@@ -128,7 +128,7 @@ Environment readEnvironment(const JsonField& field, const std::string& directory
         try {
             regularFileSize(environment.map);   // read when a technique needs it; checked now
         } catch (const SceneError& error) {
-            map->fail(error.what());
+            map->fail(error);
         }
     }
     if (const auto rotation = object.optional("rotation")) {

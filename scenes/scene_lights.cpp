@@ -94,7 +94,7 @@ std::shared_ptr<const LightCookie> readCookie(const JsonField& field, const std:
         const std::filesystem::path path = std::filesystem::path(directory) / field.string();
         return std::make_shared<const LightCookie>(readLightCookie(path.string()));
     } catch (const SceneError& error) {
-        field.fail(error.what());
+        field.fail(error);
     }
 }
 

@@ -102,7 +102,7 @@ Mesh readMeshFile(const JsonObject& object, const std::string& directory) {
     try {
         return extension == ".obj" ? readObj(path) : readPly(path);
     } catch (const SceneError& error) {
-        field.fail(error.what());
+        field.fail(error);
     }
 }
 

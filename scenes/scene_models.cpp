@@ -29,7 +29,7 @@ void readModel(const JsonField& field, const std::string& directory, const Scene
     try {
         appendGltfModel(readGltfModel(path), placement, material, name, scene);
     } catch (const SceneError& error) {
-        fileField.fail(error.what());
+        fileField.fail(error);
     }
 }
 

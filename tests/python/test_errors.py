@@ -1,0 +1,86 @@
+"""Bad input is a Python exception of the right type with the library's one-line message, never
+a crash: ValueError for a bad setting or scene content, FileNotFoundError for a missing file,
+TypeError for a value of the wrong Python type."""
+import pathlib
+
+import pytest
+
+import shadowlab
+
+
+def one_line(error):
+    text = str(error.value)
+    assert text and "\n" not in text
+    return text
+
+
+@pytest.mark.parametrize("params, message", [
+    ({"resolution": 3}, "shadow-map: parameter resolution=3: must be an integer in 16..8192"),
+    ({"bogus": 1}, "technique 'shadow-map' has no parameter 'bogus'"),
+    ({"filter": "blurry"}, "filter"),
+])
+def test_a_bad_setting_is_a_value_error(prepared, params, message):
+    with pytest.raises(ValueError) as error:
+        shadowlab.render(prepared, "shadow-map", params)
+    assert message in one_line(error)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda p: shadowlab.render(p, "no-such-technique"), "unknown technique 'no-such-technique'"),
+    (lambda p: shadowlab.render(p, "shadow-map", threads=-1), "threads must be within 0..1024"),
+    (lambda p: shadowlab.render(p, "shadow-map", simd="neon"), "unknown SIMD level 'neon'"),
+    (lambda p: shadowlab.load_scene("no-such-scene"), "unknown scene \"no-such-scene\""),
+    (lambda p: shadowlab.load_scene({"meshes": []}), "<dict>: missing required field"),
+    (lambda p: shadowlab.load_scene("sphere-box").apply_overrides(fovy_deg=200), "--fovy must be in (0, 180)"),
+    (lambda p: shadowlab.load_scene("sphere-box").apply_overrides(light=3), "light"),
+    (lambda p: setattr(p, "camera", shadowlab.Camera.__new__(shadowlab.Camera) if False else bad_camera()), "eye"),
+])
+def test_bad_values_are_value_errors(prepared, call, message):
+    with pytest.raises(ValueError) as error:
+        call(prepared)
+    assert message in one_line(error)
+
+
+def bad_camera():
+    camera = shadowlab.Camera()
+    camera.target = camera.eye
+    return camera
+
+
+def test_a_missing_file_is_file_not_found(tmp_path):
+    for source in [str(tmp_path / "missing.json"), tmp_path / "missing.json"]:
+        with pytest.raises(FileNotFoundError) as error:
+            shadowlab.load_scene(source)
+        assert one_line(error).startswith(str(tmp_path / "missing.json") + ": ")
+
+
+def test_a_missing_mesh_is_file_not_found(tmp_path):
+    scene = {"meshes": [{"name": "m", "file": "nowhere.obj"}], "materials": [{"name": "grey"}],
+             "instances": [{"mesh": "m", "material": "grey"}],
+             "lights": [{"type": "point", "position": [0, 5, 0]}],
+             "camera": {"eye": [0, 1, 5], "target": [0, 0, 0], "fovy": 45, "width": 8, "height": 8}}
+    with pytest.raises(FileNotFoundError) as error:
+        shadowlab.load_scene(scene, base_dir=tmp_path)
+    assert "nowhere.obj" in one_line(error)
+
+
+@pytest.mark.parametrize("call", [
+    lambda p: shadowlab.load_scene(42),
+    lambda p: shadowlab.render(p, "shadow-map", {"resolution": [64]}),
+    lambda p: shadowlab.render(p, "shadow-map", {1: 64}),
+    lambda p: shadowlab.render(p, 7),
+    lambda p: shadowlab.render(None, "shadow-map"),
+    lambda p: shadowlab.render(p, "shadow-map", simd=2),
+    lambda p: shadowlab.score(None, None),
+    lambda p: setattr(p, "camera", "front"),
+    lambda p: setattr(shadowlab.Light(), "position", (1, 2)),
+])
+def test_wrong_types_are_type_errors(prepared, call):
+    with pytest.raises(TypeError):
+        call(prepared)
+
+
+def test_scoring_against_the_other_output_is_a_value_error(prepared):
+    frame = shadowlab.render(prepared, "shadow-map", {"resolution": 64})
+    with pytest.raises(ValueError):
+        shadowlab.score(frame, shadowlab.render(prepared, "env-additive"))

@@ -1,0 +1,60 @@
+"""Frame's buffers are numpy views of the library's buffers, without a copy: two reads share
+memory, a write shows through, each view's base chain ends at its Frame, and a view outlives
+the Python name of its Frame. .srgb() and .debug are copies, as documented."""
+import gc
+import weakref
+
+import numpy as np
+
+import shadowlab
+
+VIEWS = ["visibility", "radiance", "position", "normal", "shading_normal", "depth", "hit", "material", "triangle"]
+
+
+def base_chain_ends_at(array, owner):
+    while isinstance(array, np.ndarray):
+        array = array.base
+    return array is owner
+
+
+def test_buffers_are_views_of_the_frame(prepared):
+    frame = shadowlab.render(prepared, "shadow-map", {"resolution": 64})
+    for name in VIEWS:
+        first, second = getattr(frame, name), getattr(frame, name)
+        assert np.shares_memory(first, second), name
+        assert base_chain_ends_at(first, frame), name
+        assert first.flags.c_contiguous and first.flags.writeable, name
+    pass_view = frame.passes[0].visibility
+    assert np.shares_memory(pass_view, frame.passes[0].visibility)
+    assert not np.shares_memory(frame.srgb(), frame.srgb())
+
+
+def test_a_write_through_a_view_reads_back(prepared):
+    frame = shadowlab.render(prepared, "shadow-map", {"resolution": 64})
+    frame.visibility[3, 5] = 0.25
+    frame.radiance[1, 2, 1] = 7.0
+    assert frame.visibility[3, 5] == np.float32(0.25)
+    assert frame.radiance[1, 2, 1] == np.float32(7.0)
+
+
+def test_a_view_keeps_its_frame_alive(prepared):
+    frame = shadowlab.render(prepared, "shadow-map", {"resolution": 64})
+    expected = frame.visibility.copy()
+    view, light_view = frame.visibility, frame.passes[0].visibility
+    alive = weakref.ref(frame)
+    del frame
+    gc.collect()
+    assert alive() is not None   # the views hold it
+    garbage = [np.full(expected.shape, 9.0, np.float32) for _ in range(50)]   # reuse freed memory, if any were
+    assert np.array_equal(view, expected) and np.array_equal(light_view, expected)
+    del view, light_view, garbage
+    gc.collect()
+    assert alive() is None   # and no more than that
+
+
+def test_debug_buffers_are_copies_read_back(prepared):
+    frame = shadowlab.render(prepared, "shadow-map", {"resolution": 64}, debug=True)
+    debug = frame.debug
+    assert debug["shadow-map-depth"].shape == (64, 64) and debug["shadow-map-depth"].dtype == np.float32
+    assert not np.shares_memory(debug["shadow-map-depth"], frame.debug["shadow-map-depth"])
+    assert shadowlab.render(prepared, "shadow-map", {"resolution": 64}).debug == {}
