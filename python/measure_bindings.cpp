@@ -52,14 +52,12 @@ std::vector<SweepAxis> axesOf(const py::handle& params) {
     return axes;
 }
 
-// None: the whole sweep; "i/n" as --shard reads it; (i, n).
+// None: the whole sweep; "i/n" or (i, n), read and checked as --shard i/n is.
 SweepShard shardOf(const py::object& shard) {
     if (shard.is_none()) return {};
     if (py::isinstance<py::str>(shard)) return parseSweepShard(shard.cast<std::string>());
-    const auto [index, count] = shard.cast<std::pair<int, int>>();
-    const SweepShard parsed{index, count};
-    if (!parsed.valid()) throw std::invalid_argument("shard " + parsed.name() + ": expected (i, n) with 1 <= i <= n");
-    return parsed;
+    const std::pair<int, int> pair = shard.cast<std::pair<int, int>>();
+    return parseSweepShard(std::to_string(pair.first) + "/" + std::to_string(pair.second));
 }
 
 std::vector<const Technique*> techniquesOf(const std::vector<std::string>& names) {
