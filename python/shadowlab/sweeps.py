@@ -95,7 +95,9 @@ def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, ref
         client: a dask.distributed Client: the sweep is split into `shards` shards (default:
             the client's workers, at most the sweep's settings), each run by a worker, and
             merged (merge_sweeps). The workers import shadowlab themselves and load the scene
-            by its name, path or dict: a path must be readable where they run.
+            by its name, path or dict: a path must be readable where they run. Give threads=
+            too: None is each worker's own core count, and shards of different counts do not
+            merge.
         shards: the number of shards with a client.
 
     Returns:
