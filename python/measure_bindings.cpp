@@ -176,7 +176,7 @@ void bindSweep(py::module_& m) {
 
     py::class_<SweepResults>(m, "SweepResults",
                              "A sweep's results (shadowlab.sweep, or a sweep's JSON read back): its grid and rows, "
-                             "written as the command writes them.")
+                             "written as the command writes them; pickled as that JSON text.")
         .def_readonly("scene", &SweepResults::scene, "the scene's name")
         .def_readonly("techniques", &SweepResults::techniques, "the techniques' names, in the order given")
         .def_property_readonly("grid", [](const SweepResults& r) { return gridDict(r.grid); },
@@ -202,6 +202,8 @@ void bindSweep(py::module_& m) {
                     py::arg("text"),
                     "A sweep's JSON text (to_json(), or a file `shadowlab sweep` wrote) back into results that write "
                     "the same bytes; ValueError for text that is not a sweep's JSON.")
+        .def(py::pickle([](const SweepResults& r) { return formatSweepJson(r); },
+                        [](const std::string& text) { return parseSweepJson(text, "a pickled SweepResults"); }))
         .def("__repr__", [](const SweepResults& r) {
             return "<SweepResults " + r.scene + " shard " + r.shard.name() + ", " + std::to_string(r.rows.size()) +
                    " rows>";
@@ -269,6 +271,9 @@ void bindFlythrough(py::module_& m) {
                                "the technique's stats for the frame, {name: value}");
 
     py::class_<FlythroughSeries>(m, "FlythroughSeries", "One technique setting along the whole path.")
+        .def("__repr__", [](const FlythroughSeries& s) {
+            return "<FlythroughSeries " + s.label() + ", " + std::to_string(s.frames.size()) + " frames>";
+        })
         .def_readonly("technique", &FlythroughSeries::technique, "the technique's name")
         .def_readonly("reference", &FlythroughSeries::reference, "the reference it was scored against")
         .def_readonly("settings", &FlythroughSeries::settings, "its axis values as text, {name: value}")
@@ -291,7 +296,11 @@ void bindFlythrough(py::module_& m) {
         .def_readonly("series", &FlythroughResults::series, "list of FlythroughSeries, per technique and setting (a copy)")
         .def("to_json", &formatFlythroughJson, "The fly-through's JSON: the bytes `shadowlab flythrough` writes, as str.")
         .def("to_csv", &formatFlythroughCsv, "The fly-through's CSV: the bytes `shadowlab flythrough` writes, as str.")
-        .def("to_text", &formatFlythroughText, "The summary `shadowlab flythrough` prints.");
+        .def("to_text", &formatFlythroughText, "The summary `shadowlab flythrough` prints.")
+        .def("__repr__", [](const FlythroughResults& r) {
+            return "<FlythroughResults " + r.scene + ", " + std::to_string(r.series.size()) + " series of " +
+                   std::to_string(r.frames) + " frames>";
+        });
 
     m.def("_flythrough", &flythrough, py::arg("scene"), py::arg("techniques"), py::arg("params"), py::arg("path"),
           py::arg("frames"), py::arg("threads"), py::arg("runs"), py::arg("warmup"), py::arg("stable_tolerance"),

@@ -4,6 +4,7 @@ exceptions (not crashes) for bad input."""
 import json
 import os
 import pathlib
+import pickle
 import subprocess
 import sys
 import threading
@@ -45,8 +46,9 @@ def test_a_sweep_is_the_commands_but_for_its_times(tmp_path, two_techniques):
                         "resolution=64,256", "--param", "filter=nearest,grid", "--threads", "1", "--runs", "1",
                         "--warmup", "0", "--width", "64", "--height", "48")
     assert without_times(two_techniques.to_json()) == without_times(text)
-    # Read back, the command's file writes the same bytes again; so does its CSV.
+    # Read back, the command's file writes the same bytes again; so does a pickled copy (as its JSON).
     assert shadowlab.SweepResults.from_json(text).to_json() == text
+    assert pickle.loads(pickle.dumps(two_techniques)).to_json() == two_techniques.to_json()
 
 
 def test_rows_are_objects_with_the_jsons_figures(two_techniques):
