@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include <pybind11/numpy.h>
+
 #include "frame/registry.h"
 #include "scenes/scene_file.h"
 #include "shadows/technique_params.h"
@@ -22,6 +24,24 @@ std::string settingOf(const std::string& name, const py::handle& value) {
 }
 
 }  // namespace
+
+glm::mat4 matrixOf(const py::handle& matrix) {
+    const py::array_t<float, py::array::c_style | py::array::forcecast> rows =
+        py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(matrix);
+    if (!rows || rows.ndim() != 2 || rows.shape(0) != 4 || rows.shape(1) != 4)
+        throw py::type_error("a transform must be a 4 x 4 matrix of numbers (row by row, as numpy writes it)");
+    glm::mat4 m;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) m[c][r] = rows.at(r, c);   // glm: m[column][row]
+    return m;
+}
+
+py::object matrixArray(const glm::mat4& m) {
+    py::array_t<float> rows({4, 4});
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) rows.mutable_at(r, c) = m[c][r];
+    return rows;
+}
 
 std::map<std::string, std::string> paramSettings(const py::handle& params) {
     std::map<std::string, std::string> settings;

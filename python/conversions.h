@@ -14,7 +14,43 @@
 #include "scenes/scene.h"
 #include "shadows/technique.h"
 
+namespace shadowlab::python {
+
+// A Python argument taken as it is, for the function to check and convert (with a one-line
+// TypeError of its own, where pybind11's would list every overload), named in signatures and
+// the API reference by Tag::name, the types it accepts.
+template <class Tag>
+struct Argument {
+    pybind11::object object;
+};
+struct TechniqueTag {
+    static constexpr auto name = pybind11::detail::const_name("Technique | str");
+};
+struct ParamsTag {
+    static constexpr auto name = pybind11::detail::const_name("dict[str, str | int | float | bool] | None");
+};
+struct SimdTag {
+    static constexpr auto name = pybind11::detail::const_name("str | None");
+};
+using TechniqueArgument = Argument<TechniqueTag>;   // techniqueOf()
+using ParamsArgument = Argument<ParamsTag>;         // paramSettings()
+using SimdArgument = Argument<SimdTag>;             // simdLevel()
+
+}  // namespace shadowlab::python
+
 namespace pybind11::detail {
+
+template <class Tag>
+struct type_caster<shadowlab::python::Argument<Tag>> {
+    PYBIND11_TYPE_CASTER(shadowlab::python::Argument<Tag>, Tag::name);
+    bool load(handle source, bool) {
+        value.object = reinterpret_borrow<object>(source);
+        return true;
+    }
+    static handle cast(const shadowlab::python::Argument<Tag>& argument, return_value_policy, handle) {
+        return argument.object.inc_ref();
+    }
+};
 
 // glm::vec3 as a tuple (x, y, z) of floats; any sequence of three real numbers converts to
 // one (a list, a tuple, a numpy array), anything else is a TypeError.
@@ -42,6 +78,12 @@ struct type_caster<glm::vec3> {
 }  // namespace pybind11::detail
 
 namespace shadowlab::python {
+
+// A 4 x 4 matrix as numpy writes it, row by row (A[r][c], acting on column vectors: A @ p),
+// from any nested sequence or array of 4 x 4 real numbers; TypeError for another shape.
+glm::mat4 matrixOf(const pybind11::handle& matrix);
+// The other way: a (4, 4) float32 array, a copy.
+pybind11::object matrixArray(const glm::mat4& matrix);
 
 // A technique's settings as the command's --param NAME=VALUE texts: a dict (or None: none)
 // from names to str (as given), bool ("on"/"off"), int or float (settingText(), the shortest

@@ -1,6 +1,7 @@
 // PreparedScene: a scene made ready for frames (scenes/prepared_scene.h), shared by whatever
 // renders it. Its camera and lights change between frames without preparing it again, as the
 // fly-through moves them (app/measure/flythrough.cpp: PreparedScene::setCamera, setLights).
+#include <algorithm>
 #include <memory>
 #include <mutex>
 #include <shared_mutex>
@@ -26,6 +27,31 @@ void checkCamera(const Camera& camera) {
     applyOverrides(probe, {});
     if (!(camera.zNear > 0.0f && camera.zFar > camera.zNear))
         throw std::invalid_argument("the camera's near must be > 0 and less than its far");
+}
+
+// Placements from {instance: matrix}, an instance by its index or its name.
+std::vector<InstancePlacement> placementsOf(const Scene& scene, const py::dict& transforms) {
+    std::vector<InstancePlacement> placements;
+    for (const auto& [key, matrix] : transforms) {
+        uint32_t index = 0;
+        if (py::isinstance<py::int_>(key) && !py::isinstance<py::bool_>(key)) {
+            const long long k = key.cast<long long>();
+            if (k < 0 || k >= (long long)scene.instances.size())
+                throw std::invalid_argument("instance " + std::to_string(k) + " out of range (the scene has " +
+                                            std::to_string(scene.instances.size()) + ")");
+            index = uint32_t(k);
+        } else if (py::isinstance<py::str>(key)) {
+            const std::string name = key.cast<std::string>();
+            const auto found = std::find_if(scene.instances.begin(), scene.instances.end(),
+                                            [&](const MeshInstance& i) { return i.name == name; });
+            if (found == scene.instances.end()) throw std::invalid_argument("no instance is named \"" + name + "\"");
+            index = uint32_t(found - scene.instances.begin());
+        } else {
+            throw py::type_error("an instance is its index (int) or its name (str)");
+        }
+        placements.push_back({index, matrixOf(matrix)});
+    }
+    return placements;
 }
 
 std::shared_ptr<PreparedHandle> prepare(Scene scene) {
@@ -73,6 +99,20 @@ void bindPrepared(py::module_& m) {
                 change(h, [&](PreparedScene& p) { p.setLights(std::move(lights)); });
             },
             "copies of its lights; assign a list to change them (their number too)")
+        .def(
+            "set_instance_transforms",
+            [](PreparedHandle& h, const py::dict& transforms) {
+                const std::vector<InstancePlacement> placements =
+                    read(h, [&](const PreparedScene& p) { return placementsOf(p.scene(), transforms); });
+                size_t moved = 0;
+                change(h, [&](PreparedScene& p) { moved = p.setInstanceTransforms(placements); });
+                return moved;
+            },
+            py::arg("transforms"),
+            "Moves instances between frames, as a fly-through does: {instance (index or name): 4 x 4 "
+            "world-from-object matrix}. The world is placed again in place, and what techniques derived from "
+            "the geometry is built again. ValueError, changing nothing, for an unknown instance, one given twice, "
+            "a matrix that is not affine or a vertex outside the world's limits. Returns how many moved.")
         .def_property_readonly(
             "geometry_version", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.geometryVersion(); }); },
             "how many times its instances have moved");

@@ -43,15 +43,15 @@ Frame renderWithDebug(const PreparedScene& prepared, const Technique& technique,
     return frame;
 }
 
-std::shared_ptr<RenderedFrame> render(const std::shared_ptr<PreparedHandle>& prepared, const py::handle& techniqueArg,
-                                      const py::handle& params, int threads, const py::handle& simd, bool debug,
-                                      const std::shared_ptr<HistoryHandle>& history) {
+std::shared_ptr<RenderedFrame> render(const std::shared_ptr<PreparedHandle>& prepared,
+                                      const TechniqueArgument& techniqueArg, const ParamsArgument& params, int threads,
+                                      const SimdArgument& simd, bool debug, const std::shared_ptr<HistoryHandle>& history) {
     if (!prepared) throw py::type_error("render() needs a PreparedScene, not None");
     checkThreads(threads);
-    const Technique& technique = techniqueOf(techniqueArg);
+    const Technique& technique = techniqueOf(techniqueArg.object);
     FrameSettings settings;
-    settings.simd = simdLevel(simd);
-    settings.params = paramSettings(params);
+    settings.simd = simdLevel(simd.object);
+    settings.params = paramSettings(params.object);
     auto result = std::make_shared<RenderedFrame>();
     result->technique = technique.name;
     result->settings = TechniqueParams(technique.name, technique.params, settings.params).values();
@@ -68,11 +68,11 @@ std::shared_ptr<RenderedFrame> render(const std::shared_ptr<PreparedHandle>& pre
 }
 
 std::shared_ptr<RenderedFrame> reference(const std::shared_ptr<PreparedHandle>& prepared, const std::string& name,
-                                         int threads, const py::handle& simd) {
+                                         int threads, const SimdArgument& simd) {
     if (!prepared) throw py::type_error("reference() needs a PreparedScene, not None");
     checkThreads(threads);
     const Technique& technique = techniqueOf(py::str(name));
-    const raster::SimdLevel level = simdLevel(simd);
+    const raster::SimdLevel level = simdLevel(simd.object);
     auto result = std::make_shared<RenderedFrame>();
     result->technique = technique.name;
     result->settings = TechniqueParams(technique.name, technique.params, {}).values();

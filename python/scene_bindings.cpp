@@ -54,6 +54,15 @@ void bindScene(py::module_& m) {
             "its lights: a list of copies; assign a list to change them")
         .def_property_readonly("instance_names", &instanceNames, "the names of its mesh instances, in order")
         .def_property_readonly("triangle_count", &triangleCount, "triangles over every instance")
+        .def_property_readonly(
+            "instance_transforms",
+            [](const Scene& s) {
+                py::dict transforms;
+                for (const MeshInstance& instance : s.instances)
+                    transforms[py::str(instance.name)] = matrixArray(instance.worldFromObject);
+                return transforms;
+            },
+            "each instance's world-from-object matrix by name, (4, 4) float32 copies acting on column vectors")
         .def_readonly("notes", &Scene::notes, "what the loader supplied or left out, one line each (glTF files)")
         .def("apply_overrides", &applyOverridesTo, py::kw_only(), py::arg("light") = py::none(),
              py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("eye") = py::none(),

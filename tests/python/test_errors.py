@@ -1,11 +1,12 @@
 """Bad input is a Python exception of the right type with the library's one-line message, never
 a crash: ValueError for a bad setting or scene content, FileNotFoundError for a missing file,
 TypeError for a value of the wrong Python type."""
-import pathlib
+import os
 
 import pytest
 
 import shadowlab
+from conftest import tiny_scene
 
 
 def one_line(error):
@@ -80,7 +81,13 @@ def test_wrong_types_are_type_errors(prepared, call):
         call(prepared)
 
 
-def test_scoring_against_the_other_output_is_a_value_error(prepared):
-    frame = shadowlab.render(prepared, "shadow-map", {"resolution": 64})
-    with pytest.raises(ValueError):
-        shadowlab.score(frame, shadowlab.render(prepared, "env-additive"))
+def test_scoring_against_the_other_output_is_a_value_error():
+    """A radiance frame (an environment technique) against a visibility reference of its size."""
+    sky = shadowlab.load_scene(os.path.join(shadowlab.scene_dir(), "environment", "sphere-sky.json"))
+    sky.apply_overrides(width=16, height=10)
+    radiance = shadowlab.render(shadowlab.prepare(sky), "env-additive")
+    assert radiance.output == "radiance" and radiance.visibility is None
+    visibility = shadowlab.reference(shadowlab.prepare(tiny_scene(width=16, height=10)))
+    with pytest.raises(ValueError) as error:
+        shadowlab.score(visibility, radiance)
+    one_line(error)

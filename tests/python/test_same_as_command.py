@@ -53,3 +53,12 @@ def test_a_frame_has_the_exr_channels(prepared, tmp_path):
     assert frame.motion is None and frame.stencil is None
     assert [p.light for p in frame.passes] == [0]
     assert np.array_equal(frame.passes[0].visibility, frame.visibility)
+
+
+def test_every_simd_level_and_thread_count_gives_the_same_bytes(prepared):
+    """The library's determinism holds through the module: simd= and threads= change no bit."""
+    frames = [shadowlab.render(prepared, "pcss", simd=simd, threads=threads)
+              for simd, threads in ((None, 0), ("scalar", 1), ("auto", 3))]
+    for frame in frames[1:]:
+        assert np.array_equal(frame.radiance, frames[0].radiance)
+        assert np.array_equal(frame.visibility, frames[0].visibility)

@@ -77,3 +77,35 @@ def test_techniques_carry_typed_parameters():
     assert isinstance(params["constant-bias"].default, float) and params["filter"].min is None
     assert shadowlab.technique("pcss").reference == "reference-soft"
     assert any(t.output == "radiance" for t in shadowlab.techniques())
+
+
+def test_moving_an_instance_renders_as_preparing_it_moved():
+    scene = tiny_scene()
+    name = scene.instance_names[-1]
+    transform = scene.instance_transforms[name]
+    transform[:3, 3] += np.float32([0.5, 0.0, -0.25])   # translated, acting on column vectors
+    prepared = shadowlab.prepare(scene)
+    shadowlab.render(prepared, "shadow-map", {"resolution": 64})   # a frame before the move
+    assert prepared.set_instance_transforms({name: transform}) == 1
+    assert prepared.geometry_version == 1
+    assert np.array_equal(prepared.scene.instance_transforms[name], transform)
+    moved = shadowlab.render(prepared, "shadow-map", {"resolution": 64})
+    with pytest.raises(ValueError):
+        prepared.set_instance_transforms({"no-such-instance": transform})
+    with pytest.raises(TypeError):
+        prepared.set_instance_transforms({name: [[1, 0], [0, 1]]})
+
+    # The same move before any frame: nothing derived from the old place survives it.
+    again = shadowlab.prepare(tiny_scene())
+    again.set_instance_transforms({name: transform})
+    assert np.array_equal(shadowlab.render(again, "shadow-map", {"resolution": 64}).visibility, moved.visibility)
+    unmoved = shadowlab.render(shadowlab.prepare(tiny_scene()), "shadow-map", {"resolution": 64})
+    assert not np.array_equal(unmoved.visibility, moved.visibility)
+
+
+def test_gltf_files_load_by_path():
+    corpus = pathlib.Path(__file__).resolve().parents[1] / "fuzz" / "corpus" / "gltf_file"
+    text, binary = shadowlab.load_scene(corpus / "lit_mask.gltf"), shadowlab.load_scene(str(corpus / "lit_mask.glb"))
+    assert len(text.instance_names) == len(binary.instance_names) == 2   # named after their file's nodes
+    assert text.triangle_count == binary.triangle_count and len(text.lights) == len(binary.lights) == 2
+    assert text.camera == binary.camera

@@ -2,6 +2,7 @@
 memory, a write shows through, each view's base chain ends at its Frame, and a view outlives
 the Python name of its Frame. .srgb() and .debug are copies, as documented."""
 import gc
+import os
 import weakref
 
 import numpy as np
@@ -58,3 +59,17 @@ def test_debug_buffers_are_copies_read_back(prepared):
     assert debug["shadow-map-depth"].shape == (64, 64) and debug["shadow-map-depth"].dtype == np.float32
     assert not np.shares_memory(debug["shadow-map-depth"], frame.debug["shadow-map-depth"])
     assert shadowlab.render(prepared, "shadow-map", {"resolution": 64}).debug == {}
+
+
+def test_a_frame_of_several_lights_has_a_pass_per_light():
+    scene = shadowlab.load_scene(os.path.join(shadowlab.scene_dir(), "many-lights", "three-lights.json"))
+    scene.apply_overrides(width=24, height=16)
+    prepared = shadowlab.prepare(scene)
+    frame = shadowlab.render(prepared, "shadow-map", {"resolution": 32}, debug=True)
+    assert [p.light for p in frame.passes] == [0, 1, 2]
+    assert np.array_equal(frame.visibility, frame.passes[0].visibility)
+    assert not np.shares_memory(frame.passes[1].visibility, frame.passes[2].visibility)
+    assert "light0_resolution_texels" in frame.stats and "resolution_texels" in frame.passes[1].stats
+    assert {name.split("/")[0] for name in frame.debug} == {"light0", "light1", "light2"}
+    per_light = shadowlab.score_lights(shadowlab.reference(prepared), frame)
+    assert [f.channel for f in per_light] == ["light0.V", "light1.V", "light2.V"]
