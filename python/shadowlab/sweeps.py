@@ -109,11 +109,11 @@ def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, ref
         FileNotFoundError: a scene file that does not exist.
         TypeError: an argument of the wrong type.
 
-    Threads: the GIL is released while the library runs. A sweep sets its thread counts with
-    a process-wide TBB limit (raster/thread_count.h): two sweeps running at once in one
-    process cap each other's threads to the smaller count; their results are the same bytes,
-    but their times are of fewer threads. Run concurrent sweeps in separate processes (as
-    the Dask path does).
+    Threads: the GIL is released while the library runs, and each thread count runs in a TBB
+    arena of its own, so sweeps and renders in other Python threads keep their counts. More
+    threads than the machine has cores need a process-wide TBB limit raised
+    (raster/thread_count.h): two such sweeps at once cap each other at the smaller count
+    (the same bytes, but times of fewer threads than they say).
     """
     names = _technique_names(techniques)
     call = {"techniques": names, "params": params, "threads": _thread_list(threads), "runs": runs,

@@ -162,8 +162,8 @@ def test_every_scene_form_sweeps_alike(two_techniques):
 
 
 def test_two_threads_sweep_at_once(two_techniques):
-    """Two sweeps at once in one process cap each other's threads (sweep()'s docstring), and
-    still give the figures of one alone."""
+    """Two sweeps at once in one process, each in its own arena (sweep()'s docstring), give
+    the figures of one alone."""
     params = {"resolution": [64, 256], "filter": ["nearest", "grid"]}
     results = [None, None]
 
