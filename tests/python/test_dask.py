@@ -53,8 +53,10 @@ def test_a_dict_scene_is_sent_as_a_dict(client):
         shadowlab.sweep(shadowlab.load_scene(scene), "shadow-map", PARAMS, client=client, **SMALL)
 
 
-def test_a_bad_sweep_fails_before_the_cluster_runs_it(client):
+def test_a_bad_sweep_fails_with_the_librarys_error(client):
     with pytest.raises(ValueError, match="only 6 settings"):
         shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], PARAMS, client=client, shards=7, **SMALL)
+    with pytest.raises(ValueError, match="resolution"):   # found by the workers' checking frames
+        shadowlab.sweep("sphere-box", "shadow-map", {"resolution": [3, 64]}, client=client, **SMALL)
     with pytest.raises(ValueError, match="either shard"):
         shadowlab.sweep("sphere-box", "shadow-map", client=client, shard=(1, 2), **SMALL)
