@@ -9,7 +9,7 @@ merged as `shadowlab merge-sweep` merges their files.
 import io
 import os
 
-from . import _shadowlab
+from . import _shadowlab, load_scene   # the package imports this module after defining load_scene
 from ._shadowlab import FlythroughFrame, FlythroughResults, FlythroughSeries, SweepResults, SweepRow, merge_sweeps
 
 __all__ = ["sweep", "flythrough", "merge_sweeps", "SweepResults", "SweepRow", "FlythroughResults",
@@ -57,7 +57,6 @@ def _thread_list(threads):
 
 def _run(call, shard):
     """One sweep (or shard) in this process; call holds the arguments as plain values."""
-    from . import load_scene
     scene = load_scene(call["scene"]["source"], base_dir=call["scene"]["base_dir"])
     return _shadowlab._sweep(scene, call["techniques"], call["params"], call["threads"], call["runs"],
                              call["warmup"], call["reference"], shard, call["simd"], **call["overrides"])
@@ -169,7 +168,6 @@ def flythrough(scene, techniques, params=None, *, path=None, frames=0, threads=0
         ValueError: an unknown technique or parameter, a technique that shades, a scene of
             several lights without light=, a scene without a path and no path=.
     """
-    from . import load_scene
     path_file = "" if path is None else os.fspath(path)
     return _shadowlab._flythrough(load_scene(scene, base_dir=base_dir), _technique_names(techniques),
                                   params, path_file, frames, threads, runs, warmup, stable_tolerance, simd,
