@@ -48,14 +48,11 @@ def split_pybind_doc(name, doc):
 
 
 def signature_and_doc(name, obj):
-    doc = inspect.getdoc(obj) if not isinstance(obj, types.BuiltinFunctionType) else obj.__doc__
+    """A Python function's signature from inspect; a pybind11 function's from its docstring."""
     if isinstance(obj, (types.FunctionType, types.MethodType)):
-        signature = str(inspect.signature(obj))
-        return f"{name}{signature}", inspect.getdoc(obj)
+        return f"{name}{inspect.signature(obj)}", inspect.getdoc(obj)
     signature, rest = split_pybind_doc(name, obj.__doc__)
-    if signature:
-        return signature, rest
-    return f"{name}(...)", doc
+    return (signature, rest) if signature else (f"{name}(...)", obj.__doc__)
 
 
 def function_section(prefix, name, obj, level):
@@ -83,9 +80,8 @@ def class_section(name, cls):
         out.append("\n".join(properties) + "\n")
     methods = [(n, m) for n, m in class_members(cls) if not isinstance(m, property)]
     for member_name, member in methods:
-        function = member.__func__ if isinstance(member, (staticmethod, classmethod)) else member
-        static = "static " if isinstance(member, staticmethod) or type(member).__name__ == "builtin_function_or_method" else ""
-        signature, doc = signature_and_doc(member_name, function)
+        static = "static " if isinstance(member, staticmethod) else ""
+        signature, doc = signature_and_doc(member_name, member.__func__ if static else member)
         out.append(f"#### {static}`{name}.{signature}`\n\n" + docstring_block(doc))
     return "\n".join(out)
 
@@ -105,7 +101,8 @@ def reference(package):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("doc", nargs="?", default=str(pathlib.Path(__file__).resolve().parents[1] / "docs" / "python.md"))
+    default = pathlib.Path(__file__).resolve().parents[1] / "docs" / "python.md"
+    parser.add_argument("doc", nargs="?", default=str(default))
     parser.add_argument("--check", action="store_true", help="exit 1 if DOC's reference is not the generated one")
     args = parser.parse_args()
     import shadowlab

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Sweep one parameter of a shadow technique and plot its speed against its error.
 
-    python3 examples/python/speed_against_error.py [--scene sphere-box] [--technique shadow-map]
+    python3 examples/python/speed_against_error.py [--scene sphere-box] [--technique shadow-map[,pcss...]]
         [--param resolution=256,512,1024,2048] [--size 640 400] [--runs 5] [--out out/python]
         [--svg]
 
@@ -27,10 +27,13 @@ def parse_axis(text):
     return {name: values.split(",")}
 
 
-def error_of(row):
-    """The figure the command's plot draws by default: misclassified pixels (%) against the
-    hard reference, the RMS of V against a soft one."""
-    return row.errors.misclassified_percent if row.reference == "reference" else row.errors.rms
+def error_axis(results):
+    """The figure the command's plot draws by default (--plot-y auto): misclassified pixels (%)
+    if any row is scored against the hard reference, else the RMS (of V, or of the luminance
+    of a shaded image), as (name, label)."""
+    if any(row.reference == "reference" for row in results.rows):
+        return "misclassified_percent", "misclassified pixels, %"
+    return "rms", "RMS error"
 
 
 def plot_with_matplotlib(results, path):
@@ -38,17 +41,18 @@ def plot_with_matplotlib(results, path):
     matplotlib.use("Agg")   # no display needed
     import matplotlib.pyplot as plt
 
+    figure_name, label = error_axis(results)
     figure, axes = plt.subplots(figsize=(7, 4.5))
     for technique in results.techniques:
         rows = [row for row in results.rows if row.technique == technique]
-        axes.plot([row.median_ms for row in rows], [error_of(row) for row in rows], "o-", label=technique)
-        for row in rows:
-            axes.annotate(row.settings_label, (row.median_ms, error_of(row)), fontsize=8,
-                          textcoords="offset points", xytext=(4, 4))
+        errors = [getattr(row.errors, figure_name) for row in rows]
+        axes.plot([row.median_ms for row in rows], errors, "o-", label=technique)
+        for row, error in zip(rows, errors):
+            axes.annotate(row.settings_label, (row.median_ms, error), fontsize=8, textcoords="offset points",
+                          xytext=(4, 4))
     axes.set_xscale("log")
     axes.set_xlabel("technique time, median ms")
-    rows = results.rows
-    axes.set_ylabel("misclassified pixels, %" if rows[0].reference == "reference" else "RMS error of V")
+    axes.set_ylabel(label)
     axes.set_title(f"{results.scene}: speed against error")
     axes.legend()
     figure.tight_layout()
@@ -58,7 +62,7 @@ def plot_with_matplotlib(results, path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scene", default="sphere-box")
-    parser.add_argument("--technique", default="shadow-map")
+    parser.add_argument("--technique", default="shadow-map", help="techniques, comma-separated")
     parser.add_argument("--param", type=parse_axis, default={"resolution": ["256", "512", "1024", "2048"]})
     parser.add_argument("--size", type=int, nargs=2, default=(640, 400), metavar=("W", "H"))
     parser.add_argument("--runs", type=int, default=5)
@@ -67,14 +71,16 @@ def main():
     parser.add_argument("--svg", action="store_true", help="draw the library's SVG plot even if matplotlib is there")
     args = parser.parse_args()
 
-    results = shadowlab.sweep(args.scene, args.technique, args.param, runs=args.runs, threads=args.threads,
-                              width=args.size[0], height=args.size[1])
+    results = shadowlab.sweep(args.scene, args.technique.split(","), args.param, runs=args.runs,
+                              threads=args.threads, width=args.size[0], height=args.size[1])
     os.makedirs(args.out, exist_ok=True)
     stem = os.path.join(args.out, "speed-against-error")
     with open(stem + ".csv", "w") as csv:
         csv.write(results.to_csv())
+    figure_name, _ = error_axis(results)
     for row in results.rows:
-        print(f"{row.technique} {row.settings_label}: {row.median_ms:.3f} ms, error {error_of(row):.5f}")
+        print(f"{row.technique} {row.settings_label}: {row.median_ms:.3f} ms, "
+              f"{figure_name} {getattr(row.errors, figure_name):.5f}")
 
     if not args.svg and importlib.util.find_spec("matplotlib"):
         plot_with_matplotlib(results, stem + ".png")

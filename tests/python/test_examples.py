@@ -26,7 +26,7 @@ def test_speed_against_error_plots_every_setting(tmp_path, library_plot):
     assert [row["settings"] for row in rows] == ["resolution=64", "resolution=256"]
     # The bigger map misclassifies fewer pixels: the printed errors are the CSV's.
     assert float(rows[1]["misclassified_percent"]) < float(rows[0]["misclassified_percent"])
-    assert f"error {float(rows[1]['misclassified_percent']):.5f}" in out.stdout
+    assert f"misclassified_percent {float(rows[1]['misclassified_percent']):.5f}" in out.stdout
     if library_plot or not (tmp_path / "speed-against-error.png").exists():
         svg = (tmp_path / "speed-against-error.svg").read_text()
         assert svg.count('class="point"') == 2

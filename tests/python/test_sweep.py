@@ -37,8 +37,8 @@ def command_json(tmp_path, *args):
 
 @pytest.fixture(scope="module")
 def two_techniques():
-    return shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], {"resolution": [64, 256], "filter": ["nearest", "grid"]},
-                           **SMALL)
+    params = {"resolution": [64, 256], "filter": ["nearest", "grid"]}
+    return shadowlab.sweep("sphere-box", ["shadow-map", "pcss"], params, **SMALL)
 
 
 def test_a_sweep_is_the_commands_but_for_its_times(tmp_path, two_techniques):
