@@ -23,4 +23,7 @@ void bindRender(pybind11::module_& m);
 // ErrorFigures, score() and score_lights() (score_bindings.cpp).
 void bindScore(pybind11::module_& m);
 
+// Sweeps and fly-throughs, their results and a sweep's JSON (measure_bindings.cpp).
+void bindMeasure(pybind11::module_& m);
+
 }  // namespace shadowlab::python

@@ -17,4 +17,5 @@ PYBIND11_MODULE(_shadowlab, m) {
     bindFrame(m);
     bindRender(m);
     bindScore(m);
+    bindMeasure(m);
 }

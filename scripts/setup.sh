@@ -25,7 +25,8 @@ if [[ $mode == all ]]; then
              imagemagick librsvg2-bin         # the lessons' crops, contrast stretches and plots (scripts/lessons/)
              assimp-testmodels                # the Khronos glTF sample models the glTF reader's tests load (tests/scenes)
              assimp-utils                     # `assimp export`: the suite's house from IFC to glTF (scripts/suite_models.sh)
-             pybind11-dev python3-dev python3-numpy python3-pytest)   # the Python module and its tests (python/, tests/python)
+             pybind11-dev python3-dev python3-numpy python3-pytest   # the Python module and its tests (python/, tests/python)
+             python3-distributed python3-pandas)   # sweep(client=) on Dask and to_dataframe(), which tests/python tests
   # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
   command -v node > /dev/null || packages+=(nodejs npm)
   # Not slurm-wlm and munge: scripts/slurm_sweep_test.sh (test.sh --cluster) installs them, so

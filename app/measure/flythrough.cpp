@@ -219,8 +219,12 @@ PathFigures pathFigures(const FlythroughSeries& series) {
 
 FlythroughResults runFlythrough(const FlythroughOptions& options) {
     checkOptions(options);
+    return runFlythrough(loadScene(options.scene), options);
+}
+
+FlythroughResults runFlythrough(Scene scene, const FlythroughOptions& options) {
+    checkOptions(options);
     const std::vector<SweepPlan> plans = planSweep(options.techniques, options.axes);
-    Scene scene = loadScene(options.scene);
     applyOverrides(scene, options.overrides);
     // Flicker is measured on one light's V, and a path moves one light.
     if (scene.lights.size() > 1)

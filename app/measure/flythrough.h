@@ -105,5 +105,8 @@ std::string flythroughFileStem(const std::string& scene, const std::vector<const
 // checks every technique setting with one frame, then renders the path. Throws
 // std::invalid_argument (or SceneError) naming the problem, before the long part where it can.
 FlythroughResults runFlythrough(const FlythroughOptions& options);
+// The same on a scene already loaded, e.g. one a program built (the Python module's);
+// FlythroughOptions::scene is not read.
+FlythroughResults runFlythrough(Scene scene, const FlythroughOptions& options);
 
 }  // namespace shadowlab

@@ -154,6 +154,21 @@ SweepGrid describeGrid(const std::vector<SweepPlan>& plans, const std::vector<in
     return grid;
 }
 
+// What a sweep's options ask for, checked before anything renders: the whole grid, the
+// shard's part of it and the thread counts.
+struct SweepWork {
+    std::vector<SweepPlan> grid, plans;
+    std::vector<int> threads;
+};
+SweepWork planWork(const SweepOptions& options) {
+    if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
+    if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
+    if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
+    std::vector<SweepPlan> grid = planSweep(options.techniques, options.axes);
+    std::vector<SweepPlan> plans = shardOf(grid, options.shard);
+    return {std::move(grid), std::move(plans), threadCounts(options)};
+}
+
 }  // namespace
 
 std::string SweepRow::settingsLabel() const { return shadowlab::settingsLabel(settings); }
@@ -175,13 +190,15 @@ SweepShard parseSweepShard(const std::string& text) {
 }
 
 SweepResults runSweep(const SweepOptions& options) {
-    if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
-    if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
-    if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
-    const std::vector<SweepPlan> grid = planSweep(options.techniques, options.axes);
-    const std::vector<SweepPlan> plans = shardOf(grid, options.shard);
-    const std::vector<int> threads = threadCounts(options);
-    Scene scene = loadScene(options.scene);
+    planWork(options);   // a mistake in the options is reported before the scene file is read
+    return runSweep(loadScene(options.scene), options);
+}
+
+SweepResults runSweep(Scene scene, const SweepOptions& options) {
+    const SweepWork work = planWork(options);
+    const std::vector<SweepPlan>& grid = work.grid;
+    const std::vector<SweepPlan>& plans = work.plans;
+    const std::vector<int>& threads = work.threads;
     applyOverrides(scene, options.overrides);
     const PreparedScene prepared(std::move(scene));
     checkSettings(prepared, plans, options.simd, options.progress, "sweep");

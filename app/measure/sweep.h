@@ -115,6 +115,9 @@ struct SweepResults {
 // rejects fails there, before any measurement); throws std::invalid_argument (or
 // SceneError for the scene).
 SweepResults runSweep(const SweepOptions& options);
+// The same on a scene already loaded, e.g. one a program built (the Python module's);
+// SweepOptions::scene is not read.
+SweepResults runSweep(Scene scene, const SweepOptions& options);
 
 // FNV-1a (64 bit) of a reference's scored channels, names and float bytes, as 16 hex
 // digits: shards whose references differ (another scene file, light or build) are not

@@ -40,3 +40,7 @@ def load_scene(source, *, base_dir=None):
     invalid one (the library's one-line message: the file, the field, the problem),
     TypeError for another type."""
     return _shadowlab._load_scene(source, base_dir, scene_dir())
+
+
+from .sweeps import (FlythroughFrame, FlythroughResults, FlythroughSeries, SweepResults, SweepRow,  # noqa: E402,F401
+                     flythrough, merge_sweeps, sweep)
