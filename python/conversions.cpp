@@ -85,4 +85,10 @@ Scene sceneFromSource(const py::handle& source, const py::handle& baseDir, const
                          std::string(py::str(source.get_type().attr("__name__"))));
 }
 
+py::dict statsDict(const std::vector<TechniqueStat>& stats) {
+    py::dict d;
+    for (const TechniqueStat& s : stats) d[py::str(s.name)] = s.value;
+    return d;
+}
+
 }  // namespace shadowlab::python

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <pybind11/pybind11.h>
@@ -103,5 +104,8 @@ const Technique& techniqueOf(const pybind11::handle& technique);
 // relative to baseDir (None: the working directory). Throws TypeError for anything else, and
 // the loader's SceneError (MissingFileError for a file that does not exist).
 Scene sceneFromSource(const pybind11::handle& source, const pybind11::handle& baseDir, const std::string& sceneDir);
+
+// A technique's stats (or a frame's preparation) as {name: value}, in their order.
+pybind11::dict statsDict(const std::vector<TechniqueStat>& stats);
 
 }  // namespace shadowlab::python

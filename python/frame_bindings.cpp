@@ -10,6 +10,7 @@
 #include "frame/aov_image.h"
 #include "python/array_views.h"
 #include "python/bindings.h"
+#include "python/conversions.h"
 #include "python/handles.h"
 #include "shading/tonemap.h"
 
@@ -17,12 +18,6 @@ namespace py = pybind11;
 
 namespace shadowlab::python {
 namespace {
-
-py::dict statsDict(const std::vector<TechniqueStat>& stats) {
-    py::dict d;
-    for (const TechniqueStat& s : stats) d[py::str(s.name)] = s.value;
-    return d;
-}
 
 // Copies (the buffers' files are gone): floats (H, W) for a buffer of one channel, (H, W, 3)
 // for R G B; uint8 (H, W, 3) for a picture.

@@ -66,14 +66,6 @@ std::vector<const Technique*> techniquesOf(const std::vector<std::string>& names
     return techniques;
 }
 
-// A technique's stats as {name: value}, in their order. (frame_bindings.cpp has the same as
-// statsDict; one shared in conversions.h would serve both.)
-py::dict namedStats(const std::vector<TechniqueStat>& stats) {
-    py::dict d;
-    for (const TechniqueStat& s : stats) d[py::str(s.name)] = s.value;
-    return d;
-}
-
 py::object jsonValue(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
 py::dict gridDict(const SweepGrid& g) {
@@ -168,7 +160,7 @@ void bindSweep(py::module_& m) {
         .def_readonly("errors", &SweepRow::errors, "ErrorFigures over every light of the scene (the last measured frame's)")
         .def_readonly("light_errors", &SweepRow::lightErrors,
                       "each light's ErrorFigures, in the scene's order, for a scene of several lights; [] for one")
-        .def_property_readonly("stats", [](const SweepRow& r) { return namedStats(r.stats); },
+        .def_property_readonly("stats", [](const SweepRow& r) { return statsDict(r.stats); },
                                "the technique's stats of the last measured frame, {name: value} (stage times: medians)")
         .def("__repr__", [](const SweepRow& r) {
             return "<SweepRow " + r.technique + " " + r.settingsLabel() + " threads=" + std::to_string(r.threads) + ">";
@@ -267,7 +259,7 @@ void bindFlythrough(py::module_& m) {
         .def_readonly("errors", &FlythroughFrame::errors, "ErrorFigures against the frame's exact reference")
         .def_property_readonly("flicker", [](const FlythroughFrame& f) { return flickerDict(f.flicker); },
                                "against the frame before: {mean, p99, pixels, stable_pixels}; {} for frame 0")
-        .def_property_readonly("stats", [](const FlythroughFrame& f) { return namedStats(f.stats); },
+        .def_property_readonly("stats", [](const FlythroughFrame& f) { return statsDict(f.stats); },
                                "the technique's stats for the frame, {name: value}");
 
     py::class_<FlythroughSeries>(m, "FlythroughSeries", "One technique setting along the whole path.")

@@ -14,7 +14,6 @@
 #include "python/conversions.h"
 #include "python/debug_readback.h"
 #include "python/handles.h"
-#include "python/threads.h"
 #include "raster/thread_count.h"
 
 namespace py = pybind11;
@@ -30,11 +29,11 @@ void checkThreads(int threads) {
 // The frame, into a temporary debug directory read back if `debug`; the caller holds no GIL.
 Frame renderWithDebug(const PreparedScene& prepared, const Technique& technique, FrameSettings settings, int threads,
                       bool debug, DebugReadback& readback) {
-    if (!debug) return onThreads(threads, [&] { return renderFrame(prepared, technique, settings); });
+    if (!debug) return withThreads(threads, [&] { return renderFrame(prepared, technique, settings); });
     settings.debugDir = makeTemporaryDirectory();
     Frame frame;
     try {
-        frame = onThreads(threads, [&] { return renderFrame(prepared, technique, settings); });
+        frame = withThreads(threads, [&] { return renderFrame(prepared, technique, settings); });
     } catch (...) {
         std::filesystem::remove_all(settings.debugDir);
         throw;
@@ -78,7 +77,7 @@ std::shared_ptr<RenderedFrame> reference(const std::shared_ptr<PreparedHandle>& 
     result->settings = TechniqueParams(technique.name, technique.params, {}).values();
     py::gil_scoped_release release;
     const std::shared_lock lock(prepared->mutex);
-    result->frame = onThreads(threads, [&] { return renderReferenceFrame(prepared->prepared, level, name); });
+    result->frame = withThreads(threads, [&] { return renderReferenceFrame(prepared->prepared, level, name); });
     return result;
 }
 
@@ -103,7 +102,7 @@ void bindRender(py::module_& m) {
           py::arg("history") = py::none(),
           "A Frame of the prepared scene with the technique (a Technique or its name) and params (a dict: str, "
           "int, float or bool values, as --param NAME=VALUE gives them), on `threads` of the library's worker "
-          "threads (0: every core; at most the machine's cores run at once), with the GIL released. simd: None "
+          "threads (0: every core; raster/thread_count.h's withThreads, as a sweep's), with the GIL released. simd: None "
           "(the best), \"scalar\", \"avx2\" or \"avx512\". debug: also keep the technique's intermediate buffers "
           "(Frame.debug). history: a FrameHistory this frame continues. ValueError for a bad setting.");
     m.def("reference", &reference, py::arg("prepared"), py::arg("name") = "reference", py::kw_only(),

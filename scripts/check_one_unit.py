@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Every target's sources compile as one translation unit.
 
-    scripts/check_one_unit.py SOURCE_DIR SCRATCH_DIR [CXX_COMPILER]
+    scripts/check_one_unit.py SOURCE_DIR SCRATCH_DIR [CXX_COMPILER [PYTHON3]]
+
+CXX_COMPILER and PYTHON3 are those of the calling build (the Python module is built for the
+interpreter it was configured with, which need not be the first python3 in PATH).
 
 The build compiles each target's files in batches of eight (CMake's unity build, docs/building.md,
 "Build time"), so the names a file keeps to itself, in its unnamed namespace, share a unit
@@ -37,6 +40,7 @@ def syntax_only(entry):
 def main():
     source, scratch = sys.argv[1], sys.argv[2]
     compiler = [f"-DCMAKE_CXX_COMPILER={sys.argv[3]}"] if len(sys.argv) > 3 else []
+    compiler += [f"-DPython3_EXECUTABLE={sys.argv[4]}"] if len(sys.argv) > 4 else []
     subprocess.run(["cmake", "-S", source, "-B", scratch, "-DCMAKE_BUILD_TYPE=Release", *compiler,
                     "-DCMAKE_UNITY_BUILD=ON", "-DCMAKE_UNITY_BUILD_BATCH_SIZE=0",
                     "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON"], check=True, stdout=subprocess.DEVNULL)
