@@ -29,7 +29,7 @@ if [[ $mode == all ]]; then
              python3-distributed python3-pandas)   # sweep(client=) on Dask and to_dataframe(), which tests/python tests
   # Node and npm drive that browser; Debian's nodejs npm only if the machine has no node.
   command -v node > /dev/null || packages+=(nodejs npm)
-  # Not slurm-wlm and munge: scripts/slurm_sweep_test.sh (test.sh --cluster) installs them, so
+  # Not slurm-wlm and munge: scripts/slurm_sweep_test.sh (run by test.sh) installs them, so
   # that their system services (munged starts at once) are not enabled on every developer's
   # machine (docs/building.md).
 fi

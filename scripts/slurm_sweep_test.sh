@@ -15,7 +15,7 @@
 #
 #   scripts/slurm_sweep_test.sh [SHADOWLAB]   SHADOWLAB: the command (default build/app/shadowlab)
 #
-# scripts/test.sh --cluster runs it.
+# scripts/test.sh runs it (and CI); --no-cluster leaves it out.
 set -euo pipefail
 shadowlab=${1:+$(realpath -m "$1")}
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
