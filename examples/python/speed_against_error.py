@@ -50,7 +50,9 @@ def plot_with_matplotlib(results, path):
         for row, error in zip(rows, errors):
             axes.annotate(row.settings_label, (row.median_ms, error), fontsize=8, textcoords="offset points",
                           xytext=(4, 4))
-    axes.set_xscale("log")
+    times = [row.median_ms for row in results.rows]
+    if max(times) > 10 * min(times):   # a log axis only where the times span a decade or more
+        axes.set_xscale("log")
     axes.set_xlabel("technique time, median ms")
     axes.set_ylabel(label)
     axes.set_title(f"{results.scene}: speed against error")
