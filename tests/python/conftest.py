@@ -3,6 +3,9 @@ reader (the command's PNGs decoded with zlib alone, so that no imaging package i
 import os
 import struct
 import subprocess
+import sys
+import threading
+import time
 import zlib
 
 import numpy as np
@@ -72,3 +75,30 @@ def read_png(path):
             out[x] = (line[x] + predictor) & 255
         rows[y] = out
     return rows.astype(np.uint8).reshape(height, width, channels)
+
+
+def ticks_while(work):
+    """Ticks of this thread while another runs work(): the proof that the library releases the
+    GIL, counted, never timed. With a switch interval too long to ever expire, no thread is made
+    to give up the GIL: this one waits in start() until the worker releases it, and the worker,
+    once done, waits for this one's sleep. Work that held the GIL would run to its end first
+    and leave 0 ticks; work that releases it leaves at least 1."""
+    done = threading.Event()
+    ticks = 0
+
+    def worker():
+        work()
+        done.set()
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
+    try:
+        thread = threading.Thread(target=worker)
+        thread.start()
+        while not done.is_set():
+            ticks += 1
+            time.sleep(1e-4)   # hands the GIL to the worker once it is done
+        thread.join()
+    finally:
+        sys.setswitchinterval(interval)
+    return ticks

@@ -8,11 +8,11 @@ import pickle
 import subprocess
 import sys
 import threading
-import time
 
 import pytest
 
 import shadowlab
+from conftest import ticks_while
 
 COMMAND = os.environ["SHADOWLAB_COMMAND"]
 SIZE = {"width": 64, "height": 48}
@@ -192,24 +192,5 @@ def test_without_pandas_to_dataframe_says_so(two_techniques, monkeypatch):
 
 
 def test_python_runs_while_a_sweep_does():
-    """The GIL is released while the library sweeps: under a switch interval that never
-    expires, the main thread ticks only if the sweeping thread let go of the GIL (0 if the
-    sweep held it: Thread.start() hands it the GIL until it is done)."""
-    done, ticks = threading.Event(), 0
-
-    def sweeper():
-        shadowlab.sweep("sphere-box", "shadow-map", {"resolution": [64, 128]}, **SMALL)
-        done.set()
-
-    interval = sys.getswitchinterval()
-    sys.setswitchinterval(1000.0)
-    try:
-        thread = threading.Thread(target=sweeper)
-        thread.start()
-        while not done.is_set():
-            ticks += 1
-            time.sleep(1e-4)
-        thread.join()
-    finally:
-        sys.setswitchinterval(interval)
-    assert ticks > 0
+    """The GIL is released while the library sweeps (conftest.ticks_while)."""
+    assert ticks_while(lambda: shadowlab.sweep("sphere-box", "shadow-map", {"resolution": [64, 128]}, **SMALL)) > 0
