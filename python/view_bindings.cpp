@@ -3,6 +3,7 @@
 // (docs/scene-format.md), in snake_case, and checked by the scene format's rules
 // (scenes/view_rules.h) wherever one is made.
 #include <array>
+#include <memory>
 #include <string>
 
 #include <pybind11/pybind11.h>

@@ -8,10 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "raster/fixed_point.h"
 #include "scenes/albedo_texture.h"
 #include "scenes/alpha_texture.h"
-#include "scenes/camera.h"
 #include "scenes/camera_path.h"
 #include "scenes/error_text.h"
 #include "scenes/gltf_scene.h"

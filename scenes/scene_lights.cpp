@@ -1,6 +1,5 @@
 // The "lights" array of a scene file (conventions.md, "Lights"; scene.h, Light).
 #include <array>
-#include <cmath>
 #include <filesystem>
 
 #include "scenes/light_cookie.h"
