@@ -13,21 +13,12 @@
 #include "python/bindings.h"
 #include "python/conversions.h"
 #include "python/handles.h"
+#include "python/view_values.h"
 
 namespace py = pybind11;
 
 namespace shadowlab::python {
 namespace {
-
-// The checks of a camera that a scene file or the command's options would make:
-// applyOverrides()'s (size, field of view, a view frame) and the file's near < far.
-void checkCamera(const Camera& camera) {
-    Scene probe;
-    probe.camera = camera;
-    applyOverrides(probe, {});
-    if (!(camera.zNear > 0.0f && camera.zFar > camera.zNear))
-        throw std::invalid_argument("the camera's near must be > 0 and less than its far");
-}
 
 // Placements from {instance: matrix}, an instance by its index or its name.
 std::vector<InstancePlacement> placementsOf(const Scene& scene, const py::dict& transforms) {
@@ -55,7 +46,10 @@ std::vector<InstancePlacement> placementsOf(const Scene& scene, const py::dict& 
 }
 
 std::shared_ptr<PreparedHandle> prepare(Scene scene) {
-    checkCamera(scene.camera);
+    // A scene's camera and lights as the scene format's rules have them (view_rules.h): a scene
+    // changed in C++ or loaded past them never reaches the renderer.
+    requireValid(scene.camera);
+    requireValid(scene.lights);
     py::gil_scoped_release release;
     return std::make_shared<PreparedHandle>(std::move(scene));
 }
@@ -82,23 +76,22 @@ void bindPrepared(py::module_& m) {
         "A scene made ready for frames (flattened once; what techniques derive from it built on first use). "
         "Shared: a FrameHistory keeps it alive, and Frames do not need it. Its camera and lights may change "
         "between frames; a change waits for the frames rendering.")
-        .def(py::init(&prepare), py::arg("scene"), "prepare(scene): checks its camera (ValueError) and prepares a copy.")
+        .def(py::init(&prepare), py::arg("scene"), "prepare(scene): checks its camera and lights (ValueError) and prepares a copy.")
         .def_property_readonly(
             "scene", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.scene(); }); },
             "a copy of its Scene, with the current camera and lights")
         .def_property(
             "camera", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.scene().camera; }); },
-            [](PreparedHandle& h, const Camera& camera) {
-                checkCamera(camera);
-                change(h, [&](PreparedScene& p) { p.setCamera(camera); });
-            },
-            "a copy of its camera; assign one to move it (checked as prepare() checks it)")
+            [](PreparedHandle& h, const Camera& camera) { change(h, [&](PreparedScene& p) { p.setCamera(camera); }); },
+            "its Camera (a value, checked where it was made); assign one to move it: "
+            "prepared.camera = prepared.camera.replace(width=64)")
         .def_property(
             "lights", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.scene().lights; }); },
             [](PreparedHandle& h, std::vector<Light> lights) {
+                requireValid(lights);
                 change(h, [&](PreparedScene& p) { p.setLights(std::move(lights)); });
             },
-            "copies of its lights; assign a list to change them (their number too)")
+            "its Lights (values), a list; assign a list to change them (their number too, at most 16)")
         .def(
             "set_instance_transforms",
             [](PreparedHandle& h, const py::dict& transforms) {
@@ -117,8 +110,8 @@ void bindPrepared(py::module_& m) {
             "geometry_version", [](PreparedHandle& h) { return read(h, [](const PreparedScene& p) { return p.geometryVersion(); }); },
             "how many times its instances have moved");
     m.def("prepare", &prepare, py::arg("scene"),
-          "A PreparedScene of a copy of the scene: checks its camera (ValueError), then flattens it with the GIL "
-          "released.");
+          "A PreparedScene of a copy of the scene: checks its camera and lights by the scene format's rules "
+          "(ValueError), then flattens it with the GIL released.");
 }
 
 }  // namespace shadowlab::python

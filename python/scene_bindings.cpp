@@ -10,6 +10,7 @@
 #include "frame/render.h"
 #include "python/bindings.h"
 #include "python/conversions.h"
+#include "python/view_values.h"
 #include "scenes/scene.h"
 #include "scenes/scene_file.h"
 
@@ -46,12 +47,17 @@ void bindScene(py::module_& m) {
                       "A scene (a value: the library's Scene, copied where it is passed). Make one with "
                       "load_scene(); prepare() makes it ready for frames.")
         .def_readwrite("name", &Scene::name, "its name: a file's stem or a built-in scene's name")
-        .def_readwrite("camera", &Scene::camera,
-                       "its Camera, live: scene.camera.width = 64 changes the scene (checked by prepare())")
+        .def_property(
+            "camera", [](const Scene& s) { return s.camera; }, [](Scene& s, const Camera& camera) { s.camera = camera; },
+            "its Camera (a value); assign one to change it: scene.camera = scene.camera.replace(width=64)")
         .def_property(
             "lights", [](const Scene& s) { return s.lights; },
-            [](Scene& s, std::vector<Light> lights) { s.lights = std::move(lights); },
-            "its lights: a list of copies; assign a list to change them")
+            [](Scene& s, std::vector<Light> lights) {
+                requireValid(lights);
+                s.lights = std::move(lights);
+            },
+            "its Lights (values), a list; assign a list to change them (their number too, at most 16): "
+            "scene.lights = [l.replace(radius=0.5) for l in scene.lights]")
         .def_property_readonly("instance_names", &instanceNames, "the names of its mesh instances, in order")
         .def_property_readonly("triangle_count", &triangleCount, "triangles over every instance")
         .def_property_readonly(

@@ -17,12 +17,6 @@ std::string located(const std::string& file, const std::string& path, const std:
     return file + ": " + (path.empty() ? "" : path + ": ") + problem;
 }
 
-std::string formatNumber(double x) {
-    std::ostringstream out;
-    out << x;
-    return out.str();
-}
-
 std::string joinNames(const std::vector<std::string_view>& names) {
     std::string joined;
     for (std::string_view name : names) {
@@ -98,6 +92,12 @@ nlohmann::json parseJson(const std::string& text, const std::string& file) {
     } catch (const nlohmann::json::exception& error) {
         throw SceneError(located(file, tracker.path(), std::string("invalid JSON: ") + error.what()));
     }
+}
+
+std::string formatNumber(double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
 }
 
 bool Interval::contains(double x) const {

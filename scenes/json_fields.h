@@ -29,6 +29,9 @@ struct Interval {
     std::string describe() const;   // "> 0", "in (0, 90]"
 };
 
+// A number as error messages show it: the shortest of printf's %g.
+std::string formatNumber(double x);
+
 inline constexpr Interval kAnyNumber{};
 inline constexpr Interval kPositive{0.0, std::numeric_limits<double>::infinity(), true, true};
 inline constexpr Interval kNonNegative{0.0, std::numeric_limits<double>::infinity(), false, true};

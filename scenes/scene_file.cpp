@@ -8,10 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "raster/fixed_point.h"
 #include "scenes/albedo_texture.h"
 #include "scenes/alpha_texture.h"
-#include "scenes/camera.h"
 #include "scenes/camera_path.h"
 #include "scenes/error_text.h"
 #include "scenes/gltf_scene.h"
@@ -28,10 +26,6 @@ constexpr std::array<std::pair<std::string_view, MaterialModel>, 4> kMaterialMod
     {"lambert", MaterialModel::Lambert}, {"blinn-phong", MaterialModel::BlinnPhong}, {"phong", MaterialModel::Phong},
     {"ggx", MaterialModel::Ggx}}};
 constexpr Interval kRoughness{0.0, 1.0, true, false};
-
-constexpr Interval kFovyDeg{0.0, 180.0, true, true};
-// The rasterizer's viewport limit: a scene that loads can be rendered.
-constexpr Interval kImageSize{1.0, double(raster::kMaxViewport), false, false};
 
 constexpr Interval kCutoff{0.0, 1.0, true, false};
 
@@ -109,11 +103,12 @@ Camera readCamera(const JsonField& field) {
     camera.height = object["height"].integer(kImageSize);
     if (const auto zNear = object.optional("near")) camera.zNear = zNear->number(kPositive);
     if (const auto zFar = object.optional("far")) camera.zFar = zFar->number(kPositive);
-    if (!(camera.zFar > camera.zNear))
-        (object.has("far") ? object["far"] : object["near"])
-            .fail("near must be less than far, got near " + std::to_string(camera.zNear) + ", far " +
-                  std::to_string(camera.zFar));
-    checkViewFrame(object, camera);
+    // The rules that join fields (view_rules.h): near < far, and a view frame.
+    if (const auto problem = cameraProblem(camera)) {
+        // With far left at its default, the near given is what is at fault.
+        const char* field = std::string_view(problem->field) == "far" && !object.has("far") ? "near" : problem->field;
+        (object.has(field) ? object[field] : object.field()).fail(problem->problem);
+    }
     return camera;
 }
 
@@ -228,13 +223,8 @@ std::string scenePath(const std::string& nameOrPath, const std::string& sceneDir
 }  // namespace
 
 void checkViewFrame(const JsonObject& object, const Camera& camera) {
-    switch (viewFrameProblem(camera)) {
-        case ViewFrameProblem::EyeAtTarget:
-            (object.has("target") ? object["target"] : object.field()).fail("the camera's eye and target must differ");
-        case ViewFrameProblem::UpParallel:
-            (object.has("up") ? object["up"] : object.field()).fail("up must not be zero or parallel to the viewing direction");
-        case ViewFrameProblem::None: break;
-    }
+    if (const auto problem = viewFrameFieldProblem(camera))
+        (object.has(problem->field) ? object[problem->field] : object.field()).fail(problem->problem);
 }
 
 std::string findBuiltinDataDir(const std::string& compiledDir) {

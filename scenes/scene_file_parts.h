@@ -9,17 +9,12 @@
 #include "scenes/json_fields.h"
 #include "scenes/scene.h"
 #include "scenes/scene_limits.h"
+#include "scenes/view_rules.h"
 
 namespace shadowlab {
 
 // A procedural mesh's or volume's seed (procedural_casters.h, unitHash).
 inline constexpr Interval kSeed{0.0, 2147483647.0, false, false};
-
-// A world-space position (scene_limits.h, kMaxCoordinate).
-inline constexpr Interval kCoordinate{-kMaxCoordinate, kMaxCoordinate, false, false};
-inline bool withinWorld(const glm::vec3& p) {
-    return kCoordinate.contains(p.x) && kCoordinate.contains(p.y) && kCoordinate.contains(p.z);
-}
 
 // The names the file gives to meshes and materials, parallel to Scene::meshes and
 // Scene::materials; instances refer to them by name. And the parts of each placement the

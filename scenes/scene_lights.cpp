@@ -1,6 +1,5 @@
 // The "lights" array of a scene file (conventions.md, "Lights"; scene.h, Light).
 #include <array>
-#include <cmath>
 #include <filesystem>
 
 #include "scenes/light_cookie.h"
@@ -17,17 +16,6 @@ constexpr std::array<std::pair<std::string_view, LightType>, 5> kLightTypes{{
     {"disk", LightType::Disk},
     {"rectangle", LightType::Rectangle}}};
 
-// A spot's half-angle: beyond 90 degrees it would no longer be a cone in front of it.
-constexpr Interval kConeAngleDeg{0.0, 90.0, true, false};
-
-// A sun's angular diameter: below 180 degrees its disk on the sky is a cap smaller than a
-// hemisphere, whose directions the soft reference samples (shading/light_sampling.h, sunCap).
-constexpr Interval kAngularDiameterDeg{0.0, 180.0, false, true};
-
-// Two vectors count as perpendicular when the cosine of their angle is below this; it
-// allows for the rounding of hand-typed decimals such as 0.7071.
-constexpr double kPerpendicularCosine = 1e-4;
-
 std::vector<std::string_view> keysFor(LightType type) {
     switch (type) {
         case LightType::Point: return {"type", "position", "color", "power", "range"};
@@ -40,48 +28,42 @@ std::vector<std::string_view> keysFor(LightType type) {
     return {};   // unreachable: every enumerator is handled above
 }
 
-// Normalised in double: a tiny but non-zero vector would underflow in float.
-glm::vec3 unitDirection(const JsonField& field) {
-    const glm::dvec3 v(field.vec3());
-    const double length = glm::length(v);
-    if (!(length > 0.0)) field.fail("must not be the zero vector");
-    return glm::vec3(v / length);
+// A zero direction is left for lightProblem to report.
+glm::vec3 directionOf(const JsonField& field) {
+    const glm::vec3 v = field.vec3();
+    return unitDirection(v).value_or(v);
 }
 
+// Its half-edges; lightProblem checks that they span a rectangle.
 void readRectangle(const JsonObject& object, Light& light) {
     light.halfEdgeU = object["halfEdgeU"].vec3(kCoordinate);
     light.halfEdgeV = object["halfEdgeV"].vec3(kCoordinate);
-    const glm::dvec3 u(light.halfEdgeU), v(light.halfEdgeV);
-    if (!(glm::length(glm::cross(u, v)) > 0.0))
-        object["halfEdgeV"].fail("the rectangle has zero area (a half-edge is zero or they are parallel)");
-    if (std::abs(glm::dot(u, v)) > kPerpendicularCosine * glm::length(u) * glm::length(v))
-        object["halfEdgeV"].fail("must be perpendicular to halfEdgeU");
 }
 
 // A point or spot light's range and a spot's inner cone, as KHR_lights_punctual's (shading/lights.h,
-// conventions.md "Lights"); absent: unbounded, and a hard cone.
+// conventions.md "Lights"); absent: unbounded, and a hard cone. lightProblem checks the inner
+// cone against the cone.
 void readPunctualFalloff(const JsonObject& object, Light& light) {
     if (const auto range = object.optional("range")) light.range = float(range->number(kPositive));
     if (light.type != LightType::Spot) return;
-    if (const auto inner = object.optional("innerConeAngle"))
-        light.innerConeAngleDeg = float(inner->number(Interval{0.0, double(light.coneAngleDeg), false, true}));
+    if (const auto inner = object.optional("innerConeAngle")) light.innerConeAngleDeg = inner->number();
 }
 
 void readShape(const JsonObject& object, Light& light) {
     switch (light.type) {
         case LightType::Point: readPunctualFalloff(object, light); break;
         case LightType::Spot:
-            light.direction = unitDirection(object["direction"]);
+            light.direction = directionOf(object["direction"]);
             light.coneAngleDeg = object["coneAngle"].number(kConeAngleDeg);
             readPunctualFalloff(object, light);
             break;
         case LightType::Directional:
-            light.direction = unitDirection(object["direction"]);
+            light.direction = directionOf(object["direction"]);
             if (const auto angle = object.optional("angularDiameter"))
                 light.angularDiameterDeg = float(angle->number(kAngularDiameterDeg));
             break;
         case LightType::Disk:
-            light.direction = unitDirection(object["normal"]);
+            light.direction = directionOf(object["normal"]);
             light.radius = object["radius"].number(kPositive);
             break;
         case LightType::Rectangle: readRectangle(object, light); break;
@@ -112,7 +94,9 @@ Light readLight(const JsonField& field, const std::string& directory) {
     readShape(object, light);
     const glm::vec3 color = object.has("color") ? object["color"].vec3(kNonNegative) : glm::vec3(1.0f);
     light.intensity = color * object["power"].number(kNonNegative);
-    if (glm::any(glm::isinf(light.intensity))) object["power"].fail("color * power overflows float");
+    // The rules that join fields (view_rules.h): a rectangle's edges, a spot's inner cone, the
+    // product color * power; the rest are checked above where they are read, with the value given.
+    if (const auto problem = lightProblem(light)) object[problem->field].fail(problem->problem);
     if (const auto cookie = object.optional("cookie")) light.cookie = readCookie(*cookie, directory);
     return light;
 }

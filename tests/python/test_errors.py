@@ -34,18 +34,13 @@ def test_a_bad_setting_is_a_value_error(prepared, params, message):
     (lambda p: shadowlab.load_scene({"meshes": []}), "<dict>: missing required field"),
     (lambda p: shadowlab.load_scene("sphere-box").apply_overrides(fovy_deg=200), "--fovy must be in (0, 180)"),
     (lambda p: shadowlab.load_scene("sphere-box").apply_overrides(light=3), "light"),
-    (lambda p: setattr(p, "camera", shadowlab.Camera.__new__(shadowlab.Camera) if False else bad_camera()), "eye"),
+    (lambda p: shadowlab.Camera().replace(target=(0.0, 4.0, 9.0)), "Camera.target: the camera's eye and target"),
+    (lambda p: shadowlab.Light(type="disk", radius=-1.0), "Light.radius: must be > 0, got -1"),
 ])
 def test_bad_values_are_value_errors(prepared, call, message):
     with pytest.raises(ValueError) as error:
         call(prepared)
     assert message in one_line(error)
-
-
-def bad_camera():
-    camera = shadowlab.Camera()
-    camera.target = camera.eye
-    return camera
 
 
 def test_a_missing_file_is_file_not_found(tmp_path):
@@ -74,7 +69,8 @@ def test_a_missing_mesh_is_file_not_found(tmp_path):
     lambda p: shadowlab.render(p, "shadow-map", simd=2),
     lambda p: shadowlab.score(None, None),
     lambda p: setattr(p, "camera", "front"),
-    lambda p: setattr(shadowlab.Light(), "position", (1, 2)),
+    lambda p: shadowlab.Light(position=(1, 2)),
+    lambda p: shadowlab.Light(positon=(1, 2, 3)),
 ])
 def test_wrong_types_are_type_errors(prepared, call):
     with pytest.raises(TypeError):

@@ -30,17 +30,14 @@ def test_a_path_a_pathlike_and_a_dict_give_the_same_scene(tmp_path):
     assert shadowlab.load_scene(by_path) is not by_path   # a Scene is copied
 
 
-def test_the_camera_is_live_and_lights_are_copies():
+def test_the_camera_and_lights_are_values_assigned_whole():
     scene = shadowlab.load_scene("sphere-box")
-    scene.camera.width = 33
+    scene.camera = scene.camera.replace(width=33)
     assert scene.camera.width == 33
-    lights = scene.lights
-    lights[0].position = (1.0, 9.0, 2.0)
-    assert scene.lights[0].position != (1.0, 9.0, 2.0)
-    scene.lights = lights
+    scene.lights = [light.replace(position=(1.0, 9.0, 2.0)) for light in scene.lights]
     assert scene.lights[0].position == (1.0, 9.0, 2.0)
     other = copy.copy(scene)
-    other.camera.width = 12
+    other.camera = other.camera.replace(width=12)
     assert scene.camera.width == 33
 
 

@@ -44,8 +44,7 @@ def test_moving_the_camera_waits_for_the_frames_rendering():
     """A camera set from one thread while another renders: each frame sees one camera whole."""
     prepared = shadowlab.prepare(tiny_scene())
     near = prepared.camera
-    far = prepared.camera
-    far.eye = (0.0, 6.0, 14.0)
+    far = near.replace(eye=(0.0, 6.0, 14.0))
     expected = {}
     for name, camera in (("near", near), ("far", far)):
         prepared.camera = camera
