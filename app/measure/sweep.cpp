@@ -38,8 +38,15 @@ std::vector<SweepPlan> shardOf(std::vector<SweepPlan> plans, const SweepShard& s
 
 std::vector<int> threadCounts(const SweepOptions& options) {
     if (options.threads.empty()) return {tbb::info::default_concurrency()};
-    for (int n : options.threads)
-        if (n < 1) throw std::invalid_argument("thread counts must be at least 1, got " + std::to_string(n));
+    // The command's --threads range, and each count once, as a sweep's JSON must have them
+    // (sweep_json.cpp): a library caller (Python) has no CLI check before this one.
+    for (auto n = options.threads.begin(); n != options.threads.end(); ++n) {
+        if (*n < 1 || *n > kMaxThreads)
+            throw std::invalid_argument("thread counts must be within 1.." + std::to_string(kMaxThreads) + ", got " +
+                                        std::to_string(*n));
+        if (std::find(options.threads.begin(), n, *n) != n)
+            throw std::invalid_argument("thread count " + std::to_string(*n) + " is given twice");
+    }
     return options.threads;
 }
 

@@ -102,6 +102,12 @@ def test_bad_input_raises(two_techniques):
         shadowlab.sweep("sphere-box", "shadow-map", shard="1/2", **SMALL)
     with pytest.raises(ValueError, match="thread"):
         shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": 0})
+    with pytest.raises(ValueError, match="within 1..1024"):   # TBB crashed on a billion threads
+        shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": 10**9})
+    with pytest.raises(ValueError, match="given twice"):   # rows whose JSON from_json refused
+        shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": [1, 1]})
+    with pytest.raises(ValueError, match="within 0..1024"):   # hung making a million threads
+        shadowlab.flythrough("sphere-box", "shadow-map", frames=2, runs=1, **{**SIZE, "threads": 10**6})
     with pytest.raises(ValueError):
         shadowlab.sweep("sphere-box", "shadow-map", simd="sse9", **SMALL)
     with pytest.raises(ValueError, match="light"):
