@@ -133,8 +133,8 @@ void bindFrame(py::module_& m) {
         .def("srgb", &srgb, py::arg("exposure") = 0.0f,
              "The image as the command's PNG has it: (H, W, 3) uint8 sRGB, tone mapped (Reinhard, exposure in "
              "stops); a copy.")
-        .def("write_exr", [](const RenderedFrame& f, const std::string& path) { writeExr(path, aovImage(f.frame)); },
-             py::arg("path"), "Writes the EXR `shadowlab render --aov` writes of this frame (the same bytes).")
+        .def("write_exr", [](const RenderedFrame& f, const py::object& path) { writeExr(filePath(path), aovImage(f.frame)); },
+             py::arg("path"), "Writes (path: str or os.PathLike) the EXR `shadowlab render --aov` writes of this frame (the same bytes).")
         .def("__repr__", [](const RenderedFrame& f) {
             return "<Frame " + f.technique + " " + std::to_string(f.frame.gbuffer.width) + " x " +
                    std::to_string(f.frame.gbuffer.height) + ">";

@@ -109,13 +109,13 @@ SweepResults sweep(const Scene& scene, const std::vector<std::string>& technique
 
 FlythroughResults flythrough(const Scene& scene, const std::vector<std::string>& techniques,
                              const py::object& params,
-                             const std::string& path, int frames, int threads, int runs, int warmup,
+                             const py::object& path, int frames, int threads, int runs, int warmup,
                              std::optional<float> stableTolerance, const py::object& simd,
                              std::optional<int> light, std::optional<int> width, std::optional<int> height) {
     FlythroughOptions options;
     options.techniques = techniquesOf(techniques);
     options.axes = axesOf(params);
-    options.pathFile = path;
+    options.pathFile = filePath(path);
     options.frames = frames;
     options.threads = threads;
     options.runs = runs;
