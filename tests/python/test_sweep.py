@@ -116,6 +116,9 @@ def test_bad_input_raises(two_techniques):
         shadowlab.sweep("sphere-box", "shadow-map", {"resolution": [object()]}, **SMALL)
     with pytest.raises(TypeError):
         shadowlab.sweep("sphere-box", "shadow-map", eye="up", **SMALL)
+    for threads in ("12", [1.7], 2.0):   # were the counts [1, 2], [1] and [2]
+        with pytest.raises(TypeError):
+            shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": threads})
     with pytest.raises(ValueError, match="JSON"):
         shadowlab.SweepResults.from_json('{"scene": 1}')
     with pytest.raises(ValueError, match="JSON"):
