@@ -169,7 +169,10 @@ struct SweepWork {
 };
 SweepWork planWork(const SweepOptions& options) {
     if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
-    if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
+    // The command's ranges, which a sweep's JSON is held to (sweep_json.cpp).
+    if (options.runs < 1 || options.runs > kMaxRuns || options.warmupRuns < 0 || options.warmupRuns > kMaxWarmupRuns)
+        throw std::invalid_argument("sweep: runs must be within 1.." + std::to_string(kMaxRuns) + ", warm-up runs 0.." +
+                                    std::to_string(kMaxWarmupRuns));
     if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
     std::vector<SweepPlan> grid = planSweep(options.techniques, options.axes);
     std::vector<SweepPlan> plans = shardOf(grid, options.shard);

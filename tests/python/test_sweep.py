@@ -104,6 +104,8 @@ def test_bad_input_raises(two_techniques):
         shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": 0})
     with pytest.raises(ValueError, match="within 1..1024"):   # TBB crashed on a billion threads
         shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": 10**9})
+    with pytest.raises(ValueError, match="warm-up runs 0..1000"):   # results its own JSON refused
+        shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "warmup": 1001})
     with pytest.raises(ValueError, match="given twice"):   # rows whose JSON from_json refused
         shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": [1, 1]})
     with pytest.raises(ValueError, match="within 0..1024"):   # hung making a million threads
