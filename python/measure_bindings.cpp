@@ -40,6 +40,9 @@ std::vector<SweepAxis> axesOf(const py::handle& params) {
         SweepAxis axis;
         const py::iterable each = several ? py::reinterpret_borrow<py::iterable>(values) : py::iterable(py::make_tuple(values));
         for (const py::handle value : each) {
+            if (axis.values.size() == kMaxSweepSettings)   // planSweep's limit, before a huge axis fills the memory
+                throw std::invalid_argument("params: " + py::str(name).cast<std::string>() + " has more than " +
+                                            std::to_string(kMaxSweepSettings) + " values");
             py::dict one;
             one[name] = value;
             const std::map<std::string, std::string> setting = paramSettings(one);

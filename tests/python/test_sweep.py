@@ -104,6 +104,10 @@ def test_bad_input_raises(two_techniques):
         shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": 0})
     with pytest.raises(ValueError, match="within 1..1024"):   # TBB crashed on a billion threads
         shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": 10**9})
+    with pytest.raises(ValueError, match="more than 1048576 settings"):   # filled the memory planning it
+        shadowlab.sweep("sphere-box", "shadow-map", {"resolution": range(16, 8192), "slope-factor": range(1000)}, **SMALL)
+    with pytest.raises(ValueError, match="more than 1048576 values"):
+        shadowlab.sweep("sphere-box", "shadow-map", {"slope-factor": range(10**12)}, **SMALL)
     with pytest.raises(ValueError, match="warm-up runs 0..1000"):   # results its own JSON refused
         shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "warmup": 1001})
     with pytest.raises(ValueError, match="given twice"):   # rows whose JSON from_json refused
