@@ -106,3 +106,13 @@ def test_a_path_with_a_nul_is_refused_not_cut(prepared, tmp_path):
     assert (tmp_path / "a").read_text() == "{}"
     frame.write_exr(tmp_path / "path-like.exr")   # an os.PathLike, as load_scene takes one
     assert (tmp_path / "path-like.exr").stat().st_size > 0
+
+
+@pytest.mark.parametrize("call, error_type, escaped", [
+    (lambda p: shadowlab.render(p, "shadow-map", {"resolution": "5\n12"}), ValueError, "5\\n12"),
+    (lambda p: shadowlab.load_scene("/no-such-dir/a\nb.json"), FileNotFoundError, "a\\nb.json"),
+])
+def test_a_message_quoting_a_control_character_stays_one_line(prepared, call, error_type, escaped):
+    with pytest.raises(error_type) as error:
+        call(prepared)
+    assert escaped in one_line(error)
