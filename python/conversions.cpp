@@ -67,20 +67,23 @@ const Technique& techniqueOf(const py::handle& technique) {
     throw py::type_error("technique must be a Technique or a technique's name");
 }
 
+std::string filePath(const py::handle& path) {
+    const py::object text = py::module_::import("os").attr("fspath")(path);
+    if (!py::isinstance<py::str>(text)) throw py::type_error("a path must be a str or os.PathLike of str, not bytes");
+    std::string name = text.cast<std::string>();
+    if (name.find('\0') != std::string::npos) throw py::value_error("a path must not contain a NUL character");
+    return name;
+}
+
 Scene sceneFromSource(const py::handle& source, const py::handle& baseDir, const std::string& sceneDir) {
     if (py::isinstance<Scene>(source)) return source.cast<Scene>();
-    const py::module_ os = py::module_::import("os");
     if (py::isinstance<py::dict>(source)) {
         // The dict as the JSON text of a scene file in baseDir, named "<dict>" in errors.
         const std::string text = py::module_::import("json").attr("dumps")(source).cast<std::string>();
-        const std::string base = baseDir.is_none() ? std::string() : os.attr("fspath")(baseDir).cast<std::string>();
+        const std::string base = baseDir.is_none() ? std::string() : filePath(baseDir);
         return parseScene(text, (std::filesystem::path(base) / "<dict>").string());
     }
-    if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
-        const py::object path = os.attr("fspath")(source);
-        if (!py::isinstance<py::str>(path)) throw py::type_error("a scene path must be a str path, not bytes");
-        return loadScene(path.cast<std::string>(), sceneDir);
-    }
+    if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) return loadScene(filePath(source), sceneDir);
     throw py::type_error("a scene is a Scene, a built-in scene's name, a path (str or os.PathLike) or a dict, not " +
                          std::string(py::str(source.get_type().attr("__name__"))));
 }

@@ -99,6 +99,11 @@ raster::SimdLevel simdLevel(const pybind11::handle& simd);
 // known ones for another); the registry's own, which lives as long as the program.
 const Technique& techniqueOf(const pybind11::handle& technique);
 
+// A file path from Python (str or os.PathLike) as the library takes it: TypeError for bytes,
+// ValueError for a NUL character, at which the C library would cut the path and open another
+// file (open() refuses it so too).
+std::string filePath(const pybind11::handle& path);
+
 // What load_scene() takes: a Scene (copied), a built-in name or a path (str or os.PathLike;
 // loadScene() against sceneDir), or a dict in the scene format's shape whose mesh paths are
 // relative to baseDir (None: the working directory). Throws TypeError for anything else, and

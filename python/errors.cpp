@@ -3,10 +3,14 @@
 // (SceneError) a ValueError too, a file that does not exist (MissingFileError) a
 // FileNotFoundError, std::out_of_range an IndexError, a misuse of an object's
 // order (std::logic_error) a RuntimeError; pybind11 maps the rest (std::runtime_error:
-// RuntimeError, std::bad_alloc: MemoryError).
+// RuntimeError, std::bad_alloc: MemoryError). The messages quote what the caller gave (a
+// value, a path), so control characters are escaped as the command's printer escapes them
+// (scenes/error_text.h): a newline in a value would split the message (a NUL still ends
+// it: what() is a C string).
 #include <stdexcept>
 
 #include "python/bindings.h"
+#include "scenes/error_text.h"
 #include "scenes/scene_error.h"
 
 namespace shadowlab::python {
@@ -17,11 +21,11 @@ void bindErrors(pybind11::module_& m) {
         try {
             if (error) std::rethrow_exception(error);
         } catch (const MissingFileError& e) {
-            PyErr_SetString(PyExc_FileNotFoundError, e.what());
+            PyErr_SetString(PyExc_FileNotFoundError, oneLine(e.what()).c_str());
         } catch (const SceneError& e) {
-            PyErr_SetString(PyExc_ValueError, e.what());
+            PyErr_SetString(PyExc_ValueError, oneLine(e.what()).c_str());
         } catch (const std::invalid_argument& e) {
-            PyErr_SetString(PyExc_ValueError, e.what());
+            PyErr_SetString(PyExc_ValueError, oneLine(e.what()).c_str());
         }
     });
     (void)m;

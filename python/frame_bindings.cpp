@@ -90,7 +90,9 @@ void bindFrame(py::module_& m) {
         frame.def_property_readonly(
             name, [select](py::object self) { return frameView(self, self.cast<RenderedFrame&>(), select); }, doc);
     };
-    view("visibility", [](Frame& f) -> auto& { return f.shadow.visibility; },
+    // The first pass's V, not Frame::shadow's copy of it: score() and write_exr() read the
+    // passes, so a write through this view must land there.
+    view("visibility", [](Frame& f) -> auto& { return f.passes.empty() ? f.shadow.visibility : f.passes[0].shadow.visibility; },
          "V (H, W) float32 of the first light (passes: every light's); None for a radiance technique");
     view("radiance", [](Frame& f) -> auto& { return f.radiance; }, "the shaded image, linear (H, W, 3) float32");
     view("position", [](Frame& f) -> auto& { return f.gbuffer.position; }, "P, world space (H, W, 3); 0 where hit = 0");
@@ -133,8 +135,8 @@ void bindFrame(py::module_& m) {
         .def("srgb", &srgb, py::arg("exposure") = 0.0f,
              "The image as the command's PNG has it: (H, W, 3) uint8 sRGB, tone mapped (Reinhard, exposure in "
              "stops); a copy.")
-        .def("write_exr", [](const RenderedFrame& f, const std::string& path) { writeExr(path, aovImage(f.frame)); },
-             py::arg("path"), "Writes the EXR `shadowlab render --aov` writes of this frame (the same bytes).")
+        .def("write_exr", [](const RenderedFrame& f, const py::object& path) { writeExr(filePath(path), aovImage(f.frame)); },
+             py::arg("path"), "Writes (path: str or os.PathLike) the EXR `shadowlab render --aov` writes of this frame (the same bytes).")
         .def("__repr__", [](const RenderedFrame& f) {
             return "<Frame " + f.technique + " " + std::to_string(f.frame.gbuffer.width) + " x " +
                    std::to_string(f.frame.gbuffer.height) + ">";

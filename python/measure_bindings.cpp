@@ -40,6 +40,9 @@ std::vector<SweepAxis> axesOf(const py::handle& params) {
         SweepAxis axis;
         const py::iterable each = several ? py::reinterpret_borrow<py::iterable>(values) : py::iterable(py::make_tuple(values));
         for (const py::handle value : each) {
+            if (axis.values.size() == kMaxSweepSettings)   // planSweep's limit, before a huge axis fills the memory
+                throw std::invalid_argument("params: " + py::str(name).cast<std::string>() + " has more than " +
+                                            std::to_string(kMaxSweepSettings) + " values");
             py::dict one;
             one[name] = value;
             const std::map<std::string, std::string> setting = paramSettings(one);
@@ -109,13 +112,13 @@ SweepResults sweep(const Scene& scene, const std::vector<std::string>& technique
 
 FlythroughResults flythrough(const Scene& scene, const std::vector<std::string>& techniques,
                              const py::object& params,
-                             const std::string& path, int frames, int threads, int runs, int warmup,
+                             const py::object& path, int frames, int threads, int runs, int warmup,
                              std::optional<float> stableTolerance, const py::object& simd,
                              std::optional<int> light, std::optional<int> width, std::optional<int> height) {
     FlythroughOptions options;
     options.techniques = techniquesOf(techniques);
     options.axes = axesOf(params);
-    options.pathFile = path;
+    options.pathFile = filePath(path);
     options.frames = frames;
     options.threads = threads;
     options.runs = runs;

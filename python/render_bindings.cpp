@@ -58,11 +58,13 @@ std::shared_ptr<RenderedFrame> render(const std::shared_ptr<PreparedHandle>& pre
     std::unique_lock<std::mutex> sequence;
     if (history) {
         sequence = std::unique_lock(history->mutex);
-        if (!history->prepared) history->prepared = prepared;
         settings.history = &history->history;
     }
     const std::shared_lock lock(prepared->mutex);
     result->frame = renderWithDebug(prepared->prepared, technique, settings, threads, debug, result->debug);
+    // Only once a frame is in the history: a first frame that failed leaves it to the next
+    // frame's scene, which it must then keep alive, not the failed one's.
+    if (history && !history->prepared) history->prepared = prepared;
     return result;
 }
 

@@ -25,6 +25,9 @@ void checkOptions(const FlythroughOptions& options) {
     if (options.techniques.empty()) throw std::invalid_argument("flythrough: give at least one technique");
     if (options.runs < 1 || options.warmupRuns < 0)
         throw std::invalid_argument("flythrough: runs must be >= 1, warm-up runs >= 0");
+    if (options.threads < 0 || options.threads > kMaxThreads)
+        throw std::invalid_argument("flythrough: threads must be within 0.." + std::to_string(kMaxThreads) +
+                                    " (0: every core), got " + std::to_string(options.threads));
     if (options.frames < 0 || options.frames > kMaxPathFrames)
         throw std::invalid_argument("flythrough: frames must be in 2.." + std::to_string(kMaxPathFrames) +
                                     " (0: the path's own)");

@@ -38,8 +38,15 @@ std::vector<SweepPlan> shardOf(std::vector<SweepPlan> plans, const SweepShard& s
 
 std::vector<int> threadCounts(const SweepOptions& options) {
     if (options.threads.empty()) return {tbb::info::default_concurrency()};
-    for (int n : options.threads)
-        if (n < 1) throw std::invalid_argument("thread counts must be at least 1, got " + std::to_string(n));
+    // The command's --threads range, and each count once, as a sweep's JSON must have them
+    // (sweep_json.cpp): a library caller (Python) has no CLI check before this one.
+    for (auto n = options.threads.begin(); n != options.threads.end(); ++n) {
+        if (*n < 1 || *n > kMaxThreads)
+            throw std::invalid_argument("thread counts must be within 1.." + std::to_string(kMaxThreads) + ", got " +
+                                        std::to_string(*n));
+        if (std::find(options.threads.begin(), n, *n) != n)
+            throw std::invalid_argument("thread count " + std::to_string(*n) + " is given twice");
+    }
     return options.threads;
 }
 
@@ -162,7 +169,10 @@ struct SweepWork {
 };
 SweepWork planWork(const SweepOptions& options) {
     if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
-    if (options.runs < 1 || options.warmupRuns < 0) throw std::invalid_argument("sweep: runs must be >= 1, warm-up runs >= 0");
+    // The command's ranges, which a sweep's JSON is held to (sweep_json.cpp).
+    if (options.runs < 1 || options.runs > kMaxRuns || options.warmupRuns < 0 || options.warmupRuns > kMaxWarmupRuns)
+        throw std::invalid_argument("sweep: runs must be within 1.." + std::to_string(kMaxRuns) + ", warm-up runs 0.." +
+                                    std::to_string(kMaxWarmupRuns));
     if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
     std::vector<SweepPlan> grid = planSweep(options.techniques, options.axes);
     std::vector<SweepPlan> plans = shardOf(grid, options.shard);

@@ -60,6 +60,12 @@ std::vector<SweepPlan> planSweep(const std::vector<const Technique*>& techniques
         std::vector<SweepAxis> own;
         std::ranges::copy_if(axes, std::back_inserter(own),
                              [&](const SweepAxis& a) { return hasParam(*technique, a.name); });
+        uint64_t combinations = 1;   // saturated past the limit, so that it cannot overflow
+        for (const SweepAxis& axis : own)
+            combinations = std::min<uint64_t>(combinations * axis.values.size(), kMaxSweepSettings + 1);
+        if (index + combinations > kMaxSweepSettings)
+            throw std::invalid_argument("sweep: the grid has more than " + std::to_string(kMaxSweepSettings) +
+                                        " settings; split it into several sweeps");
         SweepPlan& plan = plans.emplace_back(SweepPlan{technique, {}});
         for (Settings& params : crossProduct(own)) plan.settings.push_back({index++, std::move(params)});
     }

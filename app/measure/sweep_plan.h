@@ -37,8 +37,14 @@ struct SweepPlan {
 // A setting's values as "a=1 b=2", or "defaults" for none.
 std::string settingsLabel(const std::map<std::string, std::string>& params);
 
+// The most settings a sweep plans. Every shard holds the whole plan, a few hundred bytes a
+// setting, and at a second a setting a million are 12 node-days; a grid that asks for more
+// (one Python range() asks for billions) filled the memory before the sweep began.
+inline constexpr uint64_t kMaxSweepSettings = uint64_t(1) << 20;
+
 // Each technique with the cross product of the axes it has. Throws std::invalid_argument
-// for a technique listed twice, an axis given twice, or an axis no technique has (a typo).
+// for a technique listed twice, an axis given twice, an axis no technique has (a typo), or
+// more than kMaxSweepSettings settings in all (checked before any is made).
 std::vector<SweepPlan> planSweep(const std::vector<const Technique*>& techniques, const std::vector<SweepAxis>& axes);
 
 uint64_t settingCount(const std::vector<SweepPlan>& plans);

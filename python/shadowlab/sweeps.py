@@ -7,6 +7,7 @@ merged as `shadowlab merge-sweep` merges their files.
 """
 
 import io
+import operator
 import os
 
 from . import _shadowlab, load_scene   # the package imports this module after defining load_scene
@@ -48,11 +49,15 @@ def _portable_scene(scene, base_dir):
 
 
 def _thread_list(threads):
+    """None, a count or a list of counts -> [counts]. operator.index, not int(): threads="12"
+    was the counts 1 and 2, and 1.7 was 1."""
     if threads is None:
         return []
-    if isinstance(threads, int):
-        return [threads]
-    return [int(n) for n in threads]
+    if isinstance(threads, (str, bytes)):
+        raise TypeError(f"threads: expected an int or a list of ints, got {type(threads).__name__}")
+    if not hasattr(threads, "__iter__"):
+        return [operator.index(threads)]
+    return [operator.index(n) for n in threads]
 
 
 def _run(call, shard):

@@ -87,3 +87,28 @@ def test_scoring_against_the_other_output_is_a_value_error():
     with pytest.raises(ValueError) as error:
         shadowlab.score(visibility, radiance)
     one_line(error)
+
+
+def test_a_path_with_a_nul_is_refused_not_cut(prepared, tmp_path):
+    # The C library stops a path at its NUL: "a\0b.json" opened "a", and write_exr wrote "a".
+    (tmp_path / "a").write_text("{}")
+    frame = shadowlab.render(prepared, "shadow-map", threads=1)
+    for call in (lambda: shadowlab.load_scene(str(tmp_path / "a\0b.json")),
+                 lambda: frame.write_exr(str(tmp_path / "a\0b.exr")),
+                 lambda: shadowlab.flythrough("sphere-box", "shadow-map", path=str(tmp_path / "a\0b.csv"), frames=2)):
+        with pytest.raises(ValueError) as error:
+            call()
+        assert one_line(error) == "a path must not contain a NUL character"
+    assert (tmp_path / "a").read_text() == "{}"
+    frame.write_exr(tmp_path / "path-like.exr")   # an os.PathLike, as load_scene takes one
+    assert (tmp_path / "path-like.exr").stat().st_size > 0
+
+
+@pytest.mark.parametrize("call, error_type, escaped", [
+    (lambda p: shadowlab.render(p, "shadow-map", {"resolution": "5\n12"}), ValueError, "5\\n12"),
+    (lambda p: shadowlab.load_scene("/no-such-dir/a\nb.json"), FileNotFoundError, "a\\nb.json"),
+])
+def test_a_message_quoting_a_control_character_stays_one_line(prepared, call, error_type, escaped):
+    with pytest.raises(error_type) as error:
+        call(prepared)
+    assert escaped in one_line(error)

@@ -88,3 +88,17 @@ def test_a_history_belongs_to_one_series():
         raise AssertionError("a history took a frame of another scene")
     except RuntimeError as error:
         assert "keep one history per series" in str(error)
+
+
+def test_a_history_keeps_the_scene_of_its_frames_not_of_a_failed_first():
+    failed = shadowlab.prepare(tiny_scene(width=8, height=8))
+    history = shadowlab.FrameHistory()
+    try:   # sphere-box has no environment map: the first frame fails
+        shadowlab.render(failed, "env-additive", history=history)
+        raise AssertionError("env-additive rendered a scene without an environment map")
+    except ValueError:
+        pass
+    assert history.frames == 0 and history.prepared is None
+    prepared = shadowlab.prepare(tiny_scene(width=8, height=8))
+    shadowlab.render(prepared, "shadow-map", {"resolution": 16}, history=history)
+    assert history.prepared is prepared   # was `failed`, and nothing kept `prepared` alive

@@ -102,6 +102,18 @@ def test_bad_input_raises(two_techniques):
         shadowlab.sweep("sphere-box", "shadow-map", shard="1/2", **SMALL)
     with pytest.raises(ValueError, match="thread"):
         shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": 0})
+    with pytest.raises(ValueError, match="within 1..1024"):   # TBB crashed on a billion threads
+        shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": 10**9})
+    with pytest.raises(ValueError, match="more than 1048576 settings"):   # filled the memory planning it
+        shadowlab.sweep("sphere-box", "shadow-map", {"resolution": range(16, 8192), "slope-factor": range(1000)}, **SMALL)
+    with pytest.raises(ValueError, match="more than 1048576 values"):
+        shadowlab.sweep("sphere-box", "shadow-map", {"slope-factor": range(10**12)}, **SMALL)
+    with pytest.raises(ValueError, match="warm-up runs 0..1000"):   # results its own JSON refused
+        shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "warmup": 1001})
+    with pytest.raises(ValueError, match="given twice"):   # rows whose JSON from_json refused
+        shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": [1, 1]})
+    with pytest.raises(ValueError, match="within 0..1024"):   # hung making a million threads
+        shadowlab.flythrough("sphere-box", "shadow-map", frames=2, runs=1, **{**SIZE, "threads": 10**6})
     with pytest.raises(ValueError):
         shadowlab.sweep("sphere-box", "shadow-map", simd="sse9", **SMALL)
     with pytest.raises(ValueError, match="light"):
@@ -110,6 +122,9 @@ def test_bad_input_raises(two_techniques):
         shadowlab.sweep("sphere-box", "shadow-map", {"resolution": [object()]}, **SMALL)
     with pytest.raises(TypeError):
         shadowlab.sweep("sphere-box", "shadow-map", eye="up", **SMALL)
+    for threads in ("12", [1.7], 2.0):   # were the counts [1, 2], [1] and [2]
+        with pytest.raises(TypeError):
+            shadowlab.sweep("sphere-box", "shadow-map", **{**SMALL, "threads": threads})
     with pytest.raises(ValueError, match="JSON"):
         shadowlab.SweepResults.from_json('{"scene": 1}')
     with pytest.raises(ValueError, match="JSON"):

@@ -38,6 +38,17 @@ def test_a_write_through_a_view_reads_back(prepared):
     assert frame.radiance[1, 2, 1] == np.float32(7.0)
 
 
+def test_a_write_to_the_frames_v_is_what_score_reads(prepared):
+    # Frame.visibility was the library's copy of the first pass's V, which score() does not
+    # read: writing to it changed nothing that was scored or written.
+    frame = shadowlab.render(prepared, "shadow-map", {"resolution": 64})
+    reference = shadowlab.reference(prepared)
+    assert np.shares_memory(frame.visibility, frame.passes[0].visibility)
+    before = shadowlab.score(frame, reference).rms
+    frame.visibility[...] = 1.0 - reference.visibility
+    assert shadowlab.score(frame, reference).rms > before + 0.5
+
+
 def test_a_view_keeps_its_frame_alive(prepared):
     frame = shadowlab.render(prepared, "shadow-map", {"resolution": 64})
     expected = frame.visibility.copy()
