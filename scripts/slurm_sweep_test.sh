@@ -27,18 +27,30 @@ source scripts/install_missing.sh
 install_missing slurm-wlm munge python3
 
 # slurmd will not start without a cgroup file system it knows at /sys/fs/cgroup, though with
-# proctrack/linuxproc and task/none it puts nothing there; a chroot may have none, and on a
-# cgroup v2 host slurmd would want systemd (a scope for its steps). So the rest runs in a
-# mount namespace of its own, where /sys/fs/cgroup is a tmpfs holding only a named v1
-# hierarchy (systemd's, where the host has one; nothing is put in it), all of it gone with
-# the namespace.
-if [[ -z ${SHADOWLAB_SLURM_NAMESPACE:-} ]]; then
-  SHADOWLAB_SLURM_NAMESPACE=1 exec unshare --mount --propagation private "$PWD/scripts/slurm_sweep_test.sh" "$shadowlab"
+# proctrack/linuxproc and task/none it puts nothing there. Where the host has a cgroup v1
+# hierarchy named systemd (a Debian VM with cgroup v1, as here) slurmd takes it as it is.
+# Elsewhere (a chroot, which may have no cgroup mounted; a cgroup v2 host, where slurmd would
+# want systemd, a scope for its steps) the rest runs in a mount namespace of its own, where
+# /sys/fs/cgroup is a tmpfs holding only a named v1 hierarchy (nothing is put in it), all of it
+# gone with the namespace. Its mounts are private, so that none reaches the host: the whole
+# tree's where / is a mount point; in a chroot, whose root is none, /sys's, made private
+# inside the namespace (and the chroot must have /sys mounted).
+if [[ -z ${SHADOWLAB_SLURM_NAMESPACE:-} ]] && ! mountpoint -q /sys/fs/cgroup/systemd; then
+  propagation=private
+  mountpoint -q / || propagation=unchanged
+  SHADOWLAB_SLURM_NAMESPACE=$propagation exec unshare --mount --propagation "$propagation" \
+      "$PWD/scripts/slurm_sweep_test.sh" "$shadowlab"
 fi
-[[ -d /sys/fs/cgroup ]] || { mount -t tmpfs sysfs-stand-in /sys; mkdir -p /sys/fs/cgroup; }
-mount -t tmpfs cgroup-stand-in /sys/fs/cgroup
-mkdir /sys/fs/cgroup/systemd
-mount -t cgroup -o none,name=systemd cgroup /sys/fs/cgroup/systemd
+if [[ -n ${SHADOWLAB_SLURM_NAMESPACE:-} ]]; then
+  if [[ $SHADOWLAB_SLURM_NAMESPACE == unchanged ]]; then
+    mountpoint -q /sys || { echo "slurm_sweep_test: no cgroup file system for slurmd, and /sys is not mounted in this chroot: mount it (mount --bind /sys CHROOT/sys)" >&2; exit 1; }
+    mount --make-rprivate /sys
+  fi
+  [[ -d /sys/fs/cgroup ]] || { mount -t tmpfs sysfs-stand-in /sys; mkdir -p /sys/fs/cgroup; }
+  mount -t tmpfs cgroup-stand-in /sys/fs/cgroup
+  mkdir /sys/fs/cgroup/systemd
+  mount -t cgroup -o none,name=systemd cgroup /sys/fs/cgroup/systemd
+fi
 
 tmp=$(mktemp -d /tmp/shadowlab-slurm.XXXXXX)
 chmod 0755 "$tmp"   # munged requires its socket's directories searchable by all
