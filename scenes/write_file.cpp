@@ -35,14 +35,37 @@ fs::path temporaryPathFor(const fs::path& path) {
     throw std::runtime_error("cannot make a temporary file: 64 random names were taken");
 }
 
+// The file the bytes are for: through a symbolic link to the file it names (renaming over
+// the link would replace the link with a file of its own), the link kept where that file does
+// not exist yet.
+fs::path fileNamedBy(const fs::path& path) {
+    std::error_code error;
+    if (!fs::is_symlink(fs::symlink_status(path, error))) return path;
+    const fs::path target = fs::canonical(path, error);
+    return error ? path : target;
+}
+
+// Whether the destination is written in place: a device or a pipe (/dev/null, /dev/stdout, a
+// FIFO), which no rename may replace and which has no half-written state to hide. A directory
+// is refused.
+bool writtenInPlace(const fs::path& path) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (!fs::exists(status)) return false;
+    if (fs::is_directory(status)) throw std::runtime_error("it is a directory");
+    return !fs::is_regular_file(status);
+}
+
 }  // namespace
 
 void writeFileAtomically(const fs::path& path, const std::function<void(const fs::path&)>& write) {
     fs::path temporary;
     try {
-        temporary = temporaryPathFor(path);
+        const fs::path destination = fileNamedBy(path);
+        if (writtenInPlace(destination)) return write(destination);
+        temporary = temporaryPathFor(destination);
         write(temporary);
-        fs::rename(temporary, path);
+        fs::rename(temporary, destination);
     } catch (const std::exception& e) {
         std::error_code ignored;   // the temporary may not exist; nothing more to report
         fs::remove(temporary, ignored);

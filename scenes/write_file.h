@@ -4,7 +4,9 @@
 // failed write leaves none behind (a process killed mid-write can leave a hidden temporary
 // ".sl-XXXXXXXX", never a partial file). The temporary's name is short, so that any name a
 // folder can hold (255 bytes) can be written, and its mode is a new file's (0666 less the
-// umask), which the rename keeps. Errors are std::runtime_error naming the file.
+// umask), which the rename keeps. Through a symbolic link it writes the file the link names;
+// a device or a pipe (/dev/null, a FIFO) it writes in place, since no rename may replace it.
+// Errors are std::runtime_error naming the file.
 #pragma once
 
 #include <filesystem>

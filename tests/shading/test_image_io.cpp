@@ -1,5 +1,6 @@
 // EXR round trip (bit-exact, every conventions.md channel name), PNG round trip, atomic
 // writes and the errors for unreadable files, missing channels and size mismatches.
+#include <algorithm>
 #include <doctest/doctest.h>
 
 #include <fstream>
@@ -128,6 +129,30 @@ TEST_CASE("a failed write leaves neither the file nor a temporary") {
         CHECK(std::string(e.what()).find(nowhere.string()) != std::string::npos);
     }
     CHECK_FALSE(fs::exists(dir.path / "missing"));
+}
+
+// The rename replaced what it renamed over: a link with a file, and (as root) /dev/full with a
+// regular file that then took every write.
+TEST_CASE("a write through a symbolic link writes the file it names, and a device is written in place") {
+    ScratchDirectory dir("atomic-link");
+    const fs::path file = dir.path / "target.json", link = dir.path / "link.json";
+    writeTextFile(file, "old");
+    fs::create_symlink(file.filename(), link);
+    writeTextFile(link, "new");
+    CHECK(fs::is_symlink(fs::symlink_status(link)));
+    std::ifstream in(file);
+    CHECK(std::string(std::istreambuf_iterator<char>(in), {}) == "new");
+    std::vector<std::string> entries = dir.entries();
+    std::sort(entries.begin(), entries.end());
+    CHECK(entries == std::vector<std::string>{"link.json", "target.json"});   // no temporary left
+
+    writeTextFile("/dev/null", "discarded");
+    CHECK(fs::is_character_file("/dev/null"));
+    if (fs::exists("/dev/full")) {
+        CHECK_THROWS_AS(writeTextFile("/dev/full", std::string(1 << 16, 'x')), std::runtime_error);
+        CHECK(fs::is_character_file("/dev/full"));
+    }
+    CHECK_THROWS_WITH_AS(writeTextFile(dir.path, "x"), doctest::Contains("is a directory"), std::runtime_error);
 }
 
 // The rename keeps the temporary's mode: it must be a new file's, as a file written in
