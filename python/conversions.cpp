@@ -94,4 +94,10 @@ py::dict statsDict(const std::vector<TechniqueStat>& stats) {
     return d;
 }
 
+std::vector<std::string> instanceNames(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const MeshInstance& instance : scene.instances) names.push_back(instance.name);
+    return names;
+}
+
 }  // namespace shadowlab::python

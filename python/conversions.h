@@ -110,6 +110,9 @@ std::string filePath(const pybind11::handle& path);
 // the loader's SceneError (MissingFileError for a file that does not exist).
 Scene sceneFromSource(const pybind11::handle& source, const pybind11::handle& baseDir, const std::string& sceneDir);
 
+// The names of a scene's instances, in order.
+std::vector<std::string> instanceNames(const Scene& scene);
+
 // A technique's stats (or a frame's preparation) as {name: value}, in their order.
 pybind11::dict statsDict(const std::vector<TechniqueStat>& stats);
 

@@ -20,23 +20,23 @@ namespace py = pybind11;
 namespace shadowlab::python {
 namespace {
 
-// Placements from {instance: matrix}, an instance by its index or its name.
-std::vector<InstancePlacement> placementsOf(const Scene& scene, const py::dict& transforms) {
+// Placements from {instance: matrix}, an instance by its index or its name (`names`, the
+// scene's instances in order).
+std::vector<InstancePlacement> placementsOf(const std::vector<std::string>& names, const py::dict& transforms) {
     std::vector<InstancePlacement> placements;
     for (const auto& [key, matrix] : transforms) {
         uint32_t index = 0;
         if (py::isinstance<py::int_>(key) && !py::isinstance<py::bool_>(key)) {
             const long long k = key.cast<long long>();
-            if (k < 0 || k >= (long long)scene.instances.size())
+            if (k < 0 || k >= (long long)names.size())
                 throw std::invalid_argument("instance " + std::to_string(k) + " out of range (the scene has " +
-                                            std::to_string(scene.instances.size()) + ")");
+                                            std::to_string(names.size()) + ")");
             index = uint32_t(k);
         } else if (py::isinstance<py::str>(key)) {
             const std::string name = key.cast<std::string>();
-            const auto found = std::find_if(scene.instances.begin(), scene.instances.end(),
-                                            [&](const MeshInstance& i) { return i.name == name; });
-            if (found == scene.instances.end()) throw std::invalid_argument("no instance is named \"" + name + "\"");
-            index = uint32_t(found - scene.instances.begin());
+            const auto found = std::find(names.begin(), names.end(), name);
+            if (found == names.end()) throw std::invalid_argument("no instance is named \"" + name + "\"");
+            index = uint32_t(found - names.begin());
         } else {
             throw py::type_error("an instance is its index (int) or its name (str)");
         }
@@ -62,8 +62,11 @@ void change(PreparedHandle& handle, Change&& apply) {
     apply(handle.prepared);
 }
 
+// A read between frames: waits (without the GIL, so that other Python threads run while a
+// change holds the lock) and reads C++ values only.
 template <class Read>
 auto read(PreparedHandle& handle, Read&& get) {
+    py::gil_scoped_release release;
     const std::shared_lock lock(handle.mutex);
     return get(handle.prepared);
 }
@@ -96,7 +99,7 @@ void bindPrepared(py::module_& m) {
             "set_instance_transforms",
             [](PreparedHandle& h, const py::dict& transforms) {
                 const std::vector<InstancePlacement> placements =
-                    read(h, [&](const PreparedScene& p) { return placementsOf(p.scene(), transforms); });
+                    placementsOf(read(h, [](const PreparedScene& p) { return instanceNames(p.scene()); }), transforms);
                 size_t moved = 0;
                 change(h, [&](PreparedScene& p) { moved = p.setInstanceTransforms(placements); });
                 return moved;

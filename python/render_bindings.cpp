@@ -94,10 +94,20 @@ void bindRender(py::module_& m) {
         "PreparedScene alive. Its frames render one at a time.")
         .def(py::init([] { return std::make_shared<HistoryHandle>(); }), "An empty history: the next frame is a sequence's first.")
         .def_property_readonly(
-            "frames", [](HistoryHandle& h) { const std::lock_guard lock(h.mutex); return h.history.frames(); },
+            "frames",
+            [](HistoryHandle& h) {
+                const py::gil_scoped_release release;   // a frame of the sequence may hold the lock
+                const std::lock_guard lock(h.mutex);
+                return h.history.frames();
+            },
             "frames rendered with it so far: the next frame's index")
         .def_property_readonly(
-            "prepared", [](HistoryHandle& h) { const std::lock_guard lock(h.mutex); return h.prepared; },
+            "prepared",
+            [](HistoryHandle& h) {
+                const py::gil_scoped_release release;
+                const std::lock_guard lock(h.mutex);
+                return h.prepared;
+            },
             "the PreparedScene its frames are of, which it keeps alive; None before its first frame");
     m.def("render", &render, py::arg("prepared"), py::arg("technique"), py::arg("params") = py::none(), py::kw_only(),
           py::arg("threads") = 0, py::arg("simd") = py::none(), py::arg("debug") = false,

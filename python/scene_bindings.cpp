@@ -28,12 +28,6 @@ void applyOverridesTo(Scene& scene, std::optional<int> light, std::optional<int>
                            .lightPosition = lightPosition, .fovyDeg = fovyDeg, .lightRadius = lightRadius});
 }
 
-std::vector<std::string> instanceNames(const Scene& scene) {
-    std::vector<std::string> names;
-    for (const MeshInstance& instance : scene.instances) names.push_back(instance.name);
-    return names;
-}
-
 size_t triangleCount(const Scene& scene) {
     size_t count = 0;
     for (const MeshInstance& instance : scene.instances) count += scene.meshes[instance.mesh].triangles.size();
