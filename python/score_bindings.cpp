@@ -26,8 +26,19 @@ std::shared_ptr<RenderedFrame> required(const std::shared_ptr<RenderedFrame>& fr
     return frame;
 }
 
+// Two frames of one view: a reference of another size is a wrong argument (ValueError), not
+// the data error of two image files that differ (compareImages' runtime_error).
+void requireOneSize(const RenderedFrame& reference, const RenderedFrame& frame) {
+    const GBuffer &r = reference.frame.gbuffer, &f = frame.frame.gbuffer;
+    if (r.width != f.width || r.height != f.height)
+        throw std::invalid_argument("score(): the reference is " + std::to_string(r.width) + " x " +
+                                    std::to_string(r.height) + " and the frame " + std::to_string(f.width) + " x " +
+                                    std::to_string(f.height) + ": render both of the same view");
+}
+
 ErrorFigures score(const std::shared_ptr<RenderedFrame>& referenceArg, const std::shared_ptr<RenderedFrame>& frameArg) {
     const std::shared_ptr<RenderedFrame> reference = required(referenceArg, "reference"), frame = required(frameArg, "frame");
+    requireOneSize(*reference, *frame);
     py::gil_scoped_release release;
     const ScoredReference scored = scoredReference(reference->frame);
     return scoreFrame(scored, scoredImage(frame->frame), frame->frame);
@@ -35,9 +46,10 @@ ErrorFigures score(const std::shared_ptr<RenderedFrame>& referenceArg, const std
 
 std::vector<ErrorFigures> scoreEachLight(const std::shared_ptr<RenderedFrame>& reference,
                                          const std::shared_ptr<RenderedFrame>& frame) {
-    const ImageChannels test = scoredImage(required(frame, "frame")->frame);
+    requireOneSize(*required(reference, "reference"), *required(frame, "frame"));
+    const ImageChannels test = scoredImage(frame->frame);
     py::gil_scoped_release release;
-    return scoreLights(scoredImage(required(reference, "reference")->frame), test);
+    return scoreLights(scoredImage(reference->frame), test);
 }
 
 }  // namespace
@@ -66,7 +78,7 @@ void bindScore(py::module_& m) {
     m.def("score", &score, py::arg("reference"), py::arg("frame"),
           "The frame's ErrorFigures against the reference's Frame (reference()), over the reference's hit pixels: "
           "on V for a visibility technique, on luminance for a radiance one; with several lights, over every "
-          "light (score_lights gives each its own). ValueError if the two are of different outputs.");
+          "light (score_lights gives each its own). ValueError if the two are of different outputs or sizes.");
     m.def("score_lights", &scoreEachLight, py::arg("reference"), py::arg("frame"),
           "Each light's ErrorFigures (V against V), in the order of the lights.");
 }

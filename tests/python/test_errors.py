@@ -89,6 +89,13 @@ def test_scoring_against_the_other_output_is_a_value_error():
     one_line(error)
 
 
+@pytest.mark.parametrize("score", [shadowlab.score, shadowlab.score_lights])
+def test_scoring_against_a_reference_of_another_size_is_a_value_error(prepared, score):
+    other = shadowlab.reference(shadowlab.prepare(tiny_scene(width=16, height=10)))
+    with pytest.raises(ValueError, match=r"the reference is 16 x 10 and the frame \d+ x \d+"):
+        score(other, shadowlab.render(prepared, "shadow-map"))
+
+
 def test_a_path_with_a_nul_is_refused_not_cut(prepared, tmp_path):
     # The C library stops a path at its NUL: "a\0b.json" opened "a", and write_exr wrote "a".
     (tmp_path / "a").write_text("{}")
