@@ -198,7 +198,9 @@ void bindSweep(py::module_& m) {
                     "A sweep's JSON text (to_json(), or a file `shadowlab sweep` wrote) back into results that write "
                     "the same bytes; ValueError for text that is not a sweep's JSON.")
         .def(py::pickle([](const SweepResults& r) { return formatSweepJson(r); },
-                        [](const std::string& text) { return parseSweepJson(text, "a pickled SweepResults"); }))
+                        [](const std::string& text) {
+                            return asValueError([&] { return parseSweepJson(text, "a pickled SweepResults"); });
+                        }))
         .def("__repr__", [](const SweepResults& r) {
             return "<SweepResults " + r.scene + " shard " + r.shard.name() + ", " + std::to_string(r.rows.size()) +
                    " rows>";

@@ -49,6 +49,10 @@ def test_a_sweep_is_the_commands_but_for_its_times(tmp_path, two_techniques):
     # Read back, the command's file writes the same bytes again; so does a pickled copy (as its JSON).
     assert shadowlab.SweepResults.from_json(text).to_json() == text
     assert pickle.loads(pickle.dumps(two_techniques)).to_json() == two_techniques.to_json()
+    # A pickle whose text is not a sweep's is a bad value, as from_json's is.
+    broken = pickle.dumps(two_techniques).replace(b'"grid"', b'"gird"')
+    with pytest.raises(ValueError, match="a pickled SweepResults"):
+        pickle.loads(broken)
 
 
 def test_rows_are_objects_with_the_jsons_figures(two_techniques):
