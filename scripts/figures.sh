@@ -555,7 +555,7 @@ print(sys.argv[2], visible["maps_count"], "faces, %.1f ms culled, %.1f ms all si
     ;;
   scale)
     # docs/scale.md's settings per node per hour and each set's reference, built-in scenes
-    # on 2 threads (18 minutes on a busy machine). Into out/scale: timings for a table, not the report's.
+    # on 2 threads (8 minutes on the quiet 2-core VM). Into out/scale: timings for a table, not the report's.
     python3 scripts/scale_table.py --app $app --threads 2 --out out/scale
     ;;
   report)
