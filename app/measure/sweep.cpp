@@ -38,14 +38,12 @@ std::vector<SweepPlan> shardOf(std::vector<SweepPlan> plans, const SweepShard& s
 
 std::vector<int> threadCounts(const SweepOptions& options) {
     if (options.threads.empty()) return {tbb::info::default_concurrency()};
-    // The command's --threads range, and each count once, as a sweep's JSON must have them
-    // (sweep_json.cpp): a library caller (Python) has no CLI check before this one.
-    for (auto n = options.threads.begin(); n != options.threads.end(); ++n) {
+    // A library caller (Python) has no CLI check before this one.
+    if (const std::optional<int> n = badThreadCount(options.threads)) {
         if (*n < 1 || *n > kMaxThreads)
             throw std::invalid_argument("thread counts must be within 1.." + std::to_string(kMaxThreads) + ", got " +
                                         std::to_string(*n));
-        if (std::find(options.threads.begin(), n, *n) != n)
-            throw std::invalid_argument("thread count " + std::to_string(*n) + " is given twice");
+        throw std::invalid_argument("thread count " + std::to_string(*n) + " is given twice");
     }
     return options.threads;
 }
@@ -169,8 +167,7 @@ struct SweepWork {
 };
 SweepWork planWork(const SweepOptions& options) {
     if (options.techniques.empty()) throw std::invalid_argument("sweep: give at least one technique");
-    // The command's ranges, which a sweep's JSON is held to (sweep_json.cpp).
-    if (options.runs < 1 || options.runs > kMaxRuns || options.warmupRuns < 0 || options.warmupRuns > kMaxWarmupRuns)
+    if (!runsInRange(options.runs, options.warmupRuns))
         throw std::invalid_argument("sweep: runs must be within 1.." + std::to_string(kMaxRuns) + ", warm-up runs 0.." +
                                     std::to_string(kMaxWarmupRuns));
     if (!options.reference.empty()) findTechnique(options.reference);   // a typo fails before the long part
@@ -180,6 +177,16 @@ SweepWork planWork(const SweepOptions& options) {
 }
 
 }  // namespace
+
+std::optional<int> badThreadCount(const std::vector<int>& threads) {
+    for (auto n = threads.begin(); n != threads.end(); ++n)
+        if (*n < 1 || *n > kMaxThreads || std::find(threads.begin(), n, *n) != n) return *n;
+    return std::nullopt;
+}
+
+bool runsInRange(int runs, int warmupRuns) {
+    return runs >= 1 && runs <= kMaxRuns && warmupRuns >= 0 && warmupRuns <= kMaxWarmupRuns;
+}
 
 std::string SweepRow::settingsLabel() const { return shadowlab::settingsLabel(settings); }
 
@@ -199,13 +206,10 @@ SweepShard parseSweepShard(const std::string& text) {
     return shard;
 }
 
-SweepResults runSweep(const SweepOptions& options) {
-    planWork(options);   // a mistake in the options is reported before the scene file is read
-    return runSweep(loadScene(options.scene), options);
-}
+namespace {
 
-SweepResults runSweep(Scene scene, const SweepOptions& options) {
-    const SweepWork work = planWork(options);
+// The sweep of `work` (planWork(options)), planned once by either entry point.
+SweepResults runPlannedSweep(Scene scene, const SweepOptions& options, const SweepWork& work) {
     const std::vector<SweepPlan>& grid = work.grid;
     const std::vector<SweepPlan>& plans = work.plans;
     const std::vector<int>& threads = work.threads;
@@ -241,6 +245,18 @@ SweepResults runSweep(Scene scene, const SweepOptions& options) {
         }
     }
     return results;
+}
+
+}  // namespace
+
+SweepResults runSweep(const SweepOptions& options) {
+    // A mistake in the options is reported before the scene file is read.
+    const SweepWork work = planWork(options);
+    return runPlannedSweep(loadScene(options.scene), options, work);
+}
+
+SweepResults runSweep(Scene scene, const SweepOptions& options) {
+    return runPlannedSweep(std::move(scene), options, planWork(options));
 }
 
 std::string referenceFingerprint(const ImageChannels& reference) {

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,13 @@ SweepShard parseSweepShard(const std::string& text);
 // The most measured and warm-up frames per row: the bounds of `--runs` and `--warmup`, to
 // which a sweep's JSON is held when read back.
 inline constexpr int kMaxRuns = 10000, kMaxWarmupRuns = 1000;
+
+// The thread counts and runs a sweep takes (`--threads`, `--runs`, `--warmup`), to which its
+// JSON is held when read back: each count within 1..kMaxThreads and given once, runs within
+// 1..kMaxRuns, warm-up runs within 0..kMaxWarmupRuns. The first count that breaks the rule
+// (out of range, or a repeat), if any.
+std::optional<int> badThreadCount(const std::vector<int>& threads);
+bool runsInRange(int runs, int warmupRuns);
 
 struct SweepOptions {
     std::string scene;                      // built-in name or .json path

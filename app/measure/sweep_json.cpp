@@ -196,11 +196,9 @@ void checkCounts(const SweepResults& r) {
         fail("grid.settings " + std::to_string(g.settings) + " must be at least 1 and the shards' count " +
              std::to_string(r.shard.count));
     if (g.threads.empty()) fail("grid.threads lists no thread count");
-    for (size_t k = 0; k < g.threads.size(); ++k) {
-        if (g.threads[k] < 1 || g.threads[k] > kMaxThreads || std::count(g.threads.begin(), g.threads.begin() + long(k), g.threads[k]))
-            fail("grid.threads: each must be 1.." + std::to_string(kMaxThreads) + " and given once, got " + std::to_string(g.threads[k]));
-    }
-    if (g.runs < 1 || g.runs > kMaxRuns || g.warmupRuns < 0 || g.warmupRuns > kMaxWarmupRuns)
+    if (const std::optional<int> n = badThreadCount(g.threads))
+        fail("grid.threads: each must be 1.." + std::to_string(kMaxThreads) + " and given once, got " + std::to_string(*n));
+    if (!runsInRange(g.runs, g.warmupRuns))
         fail("grid.runs must be 1.." + std::to_string(kMaxRuns) + " and grid.warmup 0.." + std::to_string(kMaxWarmupRuns));
     const uint64_t held = r.shard.heldOf(g.settings);
     if (held > r.rows.size() || held * g.threads.size() != r.rows.size())
