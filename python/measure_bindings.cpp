@@ -214,6 +214,8 @@ void bindSweep(py::module_& m) {
     m.def("_sweep_settings", [](const std::vector<std::string>& techniques, const py::object& params) {
         return settingCount(planSweep(techniquesOf(techniques), axesOf(params)));
     }, py::arg("techniques"), py::arg("params"), "The settings a sweep of these techniques and axes runs, all shards' (planSweep's checks).");
+    m.def("_check_shard_count", &checkShardCount, py::arg("count"), py::arg("settings"),
+          "ValueError unless a sweep of `settings` settings splits into `count` shards that each hold one.");
     m.def("merge_sweeps", &mergeSweeps, py::arg("shards"),
           "The SweepResults of every shard of one sweep joined into the whole sweep's, as `shadowlab merge-sweep` "
           "joins their files: ValueError unless they are parts of one sweep (same scene, techniques and grid), "

@@ -80,6 +80,8 @@ void bindScene(py::module_& m) {
 
     m.def("_load_scene", &sceneFromSource, py::arg("source"), py::arg("base_dir"), py::arg("scene_dir"),
           "load_scene() against the built-in scene directory scene_dir");
+    m.def("_looks_like_path", &looksLikePath, py::arg("name_or_path"),
+          "whether load_scene() reads a str as a path (it ends in .json, .gltf or .glb or has a '/') or as a name");
     m.def("_scene_names", &sceneNamesIn, py::arg("scene_dir"), "the stems of the scene files in scene_dir, sorted");
     m.attr("_compiled_data_dir") = SHADOWLAB_DATA_DIR;
     m.attr("_data_dir_from_package") = SHADOWLAB_DATA_DIR_FROM_PACKAGE;

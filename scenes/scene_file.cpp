@@ -200,11 +200,6 @@ Scene readScene(const JsonField& root, const std::string& directory, const std::
     return scene;
 }
 
-bool looksLikePath(const std::string& nameOrPath) {
-    return nameOrPath.find('/') != std::string::npos || fs::path(nameOrPath).extension() == ".json" ||
-           isGltfPath(nameOrPath);
-}
-
 std::string joinedNames(const std::vector<std::string>& names) {
     std::string joined;
     for (const std::string& name : names) joined += (joined.empty() ? "" : ", ") + name;
@@ -221,6 +216,11 @@ std::string scenePath(const std::string& nameOrPath, const std::string& sceneDir
 }
 
 }  // namespace
+
+bool looksLikePath(const std::string& nameOrPath) {
+    return nameOrPath.find('/') != std::string::npos || fs::path(nameOrPath).extension() == ".json" ||
+           isGltfPath(nameOrPath);
+}
 
 void checkViewFrame(const JsonObject& object, const Camera& camera) {
     if (const auto problem = viewFrameFieldProblem(camera))

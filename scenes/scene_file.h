@@ -13,6 +13,8 @@ namespace shadowlab {
 // otherwise the stem of a scene file in sceneDir. A .gltf or .glb file is read as a glTF
 // scene (scenes/gltf_scene.h), anything else as a scene file. Throws SceneError for every invalid or unreadable input.
 Scene loadScene(const std::string& nameOrPath, const std::string& sceneDir);
+// That rule: whether loadScene reads nameOrPath as a path rather than a built-in scene's name.
+bool looksLikePath(const std::string& nameOrPath);
 
 // A scene file's text already in memory; `path` names it in errors, and the meshes it names
 // are found relative to its directory.

@@ -23,15 +23,10 @@ namespace {
 
 const char* const kShardRule = "expected I/N with 1 <= I <= N (I counts from 1, as SLURM_ARRAY_TASK_ID with --array=1-N)";
 
-// The plans with only the shard's settings. N may not exceed the sweep's settings: a shard
-// without any is a mistake in N, and merge-sweep would wait for N files.
+// The plans with only the shard's settings.
 std::vector<SweepPlan> shardOf(std::vector<SweepPlan> plans, const SweepShard& shard) {
     if (!shard.valid()) throw std::invalid_argument("shard " + shard.name() + ": " + kShardRule);
-    const uint64_t all = settingCount(plans);
-    if (uint64_t(shard.count) > all)
-        throw std::invalid_argument("--shard " + shard.name() + ": the sweep has only " + std::to_string(all) +
-                                    " settings, so some shards would have none (use at most " + std::to_string(all) +
-                                    " shards)");
+    checkShardCount(shard.count, settingCount(plans));
     for (SweepPlan& plan : plans) std::erase_if(plan.settings, [&](const PlannedSetting& s) { return !shard.holds(s.index); });
     return plans;
 }
@@ -177,6 +172,13 @@ SweepWork planWork(const SweepOptions& options) {
 }
 
 }  // namespace
+
+void checkShardCount(int64_t count, uint64_t settings) {
+    if (count < 1 || uint64_t(count) > settings)
+        throw std::invalid_argument(std::to_string(count) + " shards: the sweep has only " + std::to_string(settings) +
+                                    " settings, so some shards would have none (use 1 to " + std::to_string(settings) +
+                                    " shards)");
+}
 
 std::optional<int> badThreadCount(const std::vector<int>& threads) {
     for (auto n = threads.begin(); n != threads.end(); ++n)

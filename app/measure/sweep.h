@@ -49,6 +49,11 @@ struct SweepShard {
 // "i/n" with 1 <= i <= n -> shard; throws std::invalid_argument for anything else.
 SweepShard parseSweepShard(const std::string& text);
 
+// Throws std::invalid_argument unless a sweep of `settings` settings splits into `count`
+// shards that each hold one (1 <= count <= settings): a shard without any is a mistake in
+// the count, and merge-sweep would wait for its file.
+void checkShardCount(int64_t count, uint64_t settings);
+
 // The most measured and warm-up frames per row: the bounds of `--runs` and `--warmup`, to
 // which a sweep's JSON is held when read back.
 inline constexpr int kMaxRuns = 10000, kMaxWarmupRuns = 1000;

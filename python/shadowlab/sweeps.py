@@ -30,18 +30,13 @@ def _technique_names(techniques):
     return names
 
 
-def _looks_like_path(text):
-    # loadScene's rule (scenes/scene_file.h): a path ends in .json, .gltf or .glb or has a '/'.
-    return text.endswith((".json", ".gltf", ".glb")) or "/" in text
-
-
 def _portable_scene(scene, base_dir):
     """The scene as another process loads it: a name, an absolute path, or a dict with an
     absolute base_dir. A Scene object is not sent (nothing of C++ is pickled)."""
     if isinstance(scene, os.PathLike):
         scene = os.fspath(scene)
     if isinstance(scene, str):
-        return {"source": os.path.abspath(scene) if _looks_like_path(scene) else scene, "base_dir": None}
+        return {"source": os.path.abspath(scene) if _shadowlab._looks_like_path(scene) else scene, "base_dir": None}
     if isinstance(scene, dict):
         return {"source": scene, "base_dir": os.path.abspath(base_dir if base_dir is not None else os.getcwd())}
     raise TypeError("sweep(client=...): give the scene as a name, a path or a dict, which the workers load; "
@@ -135,9 +130,7 @@ def sweep(scene, techniques, params=None, *, threads=None, runs=5, warmup=1, ref
     settings = _shadowlab._sweep_settings(names, params)
     if shards is None:
         shards = max(1, min(len(client.scheduler_info()["workers"]), settings))
-    if not 1 <= shards <= settings:   # the library's rule (sweep.cpp), checked before the cluster works
-        raise ValueError(f"sweep: shards={shards}: the sweep has only {settings} settings, so some shards would "
-                         f"have none (use 1 to {settings} shards)")
+    _shadowlab._check_shard_count(operator.index(shards), settings)   # before the cluster works
     futures = [client.submit(_run_shard, call, i, shards, pure=False) for i in range(1, shards + 1)]
     return merge_sweeps([SweepResults.from_json(text) for text in client.gather(futures)])
 
