@@ -2,7 +2,6 @@
 // (value_type.h) with their fields named as the scene format names them
 // (docs/scene-format.md), in snake_case, and checked by the scene format's rules
 // (scenes/view_rules.h) wherever one is made.
-#include <array>
 #include <memory>
 #include <string>
 
@@ -19,12 +18,17 @@ namespace py = pybind11;
 namespace shadowlab::python {
 namespace {
 
-constexpr std::array<const char*, 5> kLightTypes = {"point", "spot", "directional", "disk", "rectangle"};
-
+// The scene format's names of the light types (view_rules.h, kLightTypes), both ways.
 LightType lightType(const std::string& name) {
-    for (size_t k = 0; k < kLightTypes.size(); ++k)
-        if (name == kLightTypes[k]) return LightType(k);
+    for (const auto& [typeName, type] : kLightTypes)
+        if (name == typeName) return type;
     throw std::invalid_argument("unknown light type \"" + name + "\" (point, spot, directional, disk, rectangle)");
+}
+
+std::string lightTypeName(LightType type) {
+    for (const auto& [typeName, each] : kLightTypes)
+        if (each == type) return std::string(typeName);
+    return "unknown";   // unreachable: the table names every type
 }
 
 std::shared_ptr<const ValueType<Camera>> cameraValueType() {
@@ -58,7 +62,7 @@ std::shared_ptr<const ValueType<Light>> lightValueType() {
     static const auto type = std::make_shared<const ValueType<Light>>(ValueType<Light>{
         .name = "Light",
         .fields = {{"type", "type", "\"point\", \"spot\", \"directional\", \"disk\" or \"rectangle\"",
-                    [](const Light& l) { return py::cast(std::string(kLightTypes[size_t(l.type)])); },
+                    [](const Light& l) { return py::cast(lightTypeName(l.type)); },
                     [](Light& l, py::handle given) { l.type = lightType(given.cast<std::string>()); }},
                    memberField("position", "position", &Light::position,
                                "point, spot; the centre of a disk or rectangle; within the world's limits"),

@@ -9,13 +9,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, LightType>, 5> kLightTypes{{
-    {"point", LightType::Point},
-    {"spot", LightType::Spot},
-    {"directional", LightType::Directional},
-    {"disk", LightType::Disk},
-    {"rectangle", LightType::Rectangle}}};
-
 std::vector<std::string_view> keysFor(LightType type) {
     switch (type) {
         case LightType::Point: return {"type", "position", "color", "power", "range"};

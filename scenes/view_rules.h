@@ -5,8 +5,11 @@
 // error does: "must be in (0, 90], got 95".
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "raster/fixed_point.h"
 #include "scenes/json_fields.h"
@@ -14,6 +17,14 @@
 #include "scenes/scene_limits.h"
 
 namespace shadowlab {
+
+// The light types as the scene format names them ("type").
+inline constexpr std::array<std::pair<std::string_view, LightType>, 5> kLightTypes{{
+    {"point", LightType::Point},
+    {"spot", LightType::Spot},
+    {"directional", LightType::Directional},
+    {"disk", LightType::Disk},
+    {"rectangle", LightType::Rectangle}}};
 
 struct FieldProblem {
     const char* field;     // the scene format's key: "coneAngle", "far"
